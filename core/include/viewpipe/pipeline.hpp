@@ -1,0 +1,118 @@
+#pragma once
+
+// One description of a normalizing transformation, whichever convention the
+// scene's camera uses: its stages, their composite, and the homogeneous space
+// in which the canonical volume is tested and the divide is taken.
+
+#include <optional>
+#include <string>
+#include <variant>
+#include <vector>
+
+#include "viewpipe/foley.hpp"
+#include "viewpipe/gl.hpp"
+
+namespace viewpipe {
+
+enum class Convention { Foley, OpenGL };
+
+template <class T> using CameraSpec = std::variant<foley::ViewSpec<T>, gl::Camera<T>>;
+
+template <class U, class T> CameraSpec<U> castCamera(const CameraSpec<T>& camera)
+{
+    return std::visit([](const auto& c) -> CameraSpec<U> { return c.template cast<U>(); }, camera);
+}
+
+// The canonical volume in clip (homogeneous) coordinates, tested without
+// dividing: Foley's parallel volume -w <= x, y <= w, -w <= z <= 0 (Foley's
+// perspective volume is taken there by M), OpenGL's -w <= x, y, z <= w; w > 0.
+enum class ClipVolume { FoleyParallel, OpenGL };
+
+template <class T> struct Pipeline {
+    Convention convention = Convention::Foley;
+    std::string projection; // "perspective", "parallel", "frustum", "ortho"
+    std::vector<Stage<T>> stages;
+    Mat4<T> composite;                     // N_per, N_par, or P * V
+    std::optional<T> zmin;                 // Foley perspective only
+    std::optional<Mat4<T>> view;           // OpenGL: the lookAt matrix
+    std::optional<Mat4<T>> projectionMatrix; // OpenGL: glFrustum, glOrtho or gluPerspective
+    Mat4<T> toClip = Mat4<T>::Identity();  // after the composite, before the divide: Foley's M, or I
+    ClipVolume clipVolume = ClipVolume::FoleyParallel;
+};
+
+template <class T> Pipeline<T> buildPipeline(const foley::ViewSpec<T>& spec)
+{
+    Pipeline<T> p;
+    p.convention = Convention::Foley;
+    const bool perspective = spec.projection == foley::Projection::Perspective;
+    p.projection = perspective ? "perspective" : "parallel";
+    p.stages = foley::stages(spec);
+    p.composite = foley::normalizingMatrix(spec);
+    if (perspective) {
+        p.zmin = foley::zMin(spec);
+        p.toClip = foley::perspectiveToParallel(spec);
+    }
+    p.clipVolume = ClipVolume::FoleyParallel;
+    return p;
+}
+
+template <class T> Pipeline<T> buildPipeline(const gl::Camera<T>& camera)
+{
+    Pipeline<T> p;
+    p.convention = Convention::OpenGL;
+    p.projection = gl::projectionName(camera.projection);
+    p.stages = gl::stages(camera);
+    p.view = gl::lookAt(camera.lookAt);
+    p.projectionMatrix = gl::projectionMatrix(camera.projection);
+    p.composite = *p.projectionMatrix * *p.view;
+    p.clipVolume = ClipVolume::OpenGL;
+    return p;
+}
+
+template <class T> Pipeline<T> buildPipeline(const CameraSpec<T>& camera)
+{
+    return std::visit([](const auto& c) { return buildPipeline(c); }, camera);
+}
+
+template <class T> bool insideClipVolume(const Vec4<T>& clip, ClipVolume volume)
+{
+    const T& w = clip.w();
+    if (!(w > T(0)))
+        return false; // behind the eye or on the eye plane: outside, no divide needed
+    const bool xyInside = -w <= clip.x() && clip.x() <= w && -w <= clip.y() && clip.y() <= w;
+    const T zHigh = volume == ClipVolume::FoleyParallel ? T(0) : w;
+    return xyInside && -w <= clip.z() && clip.z() <= zHigh;
+}
+
+template <class T> struct PointTrace {
+    std::vector<Vec4<T>> afterStage; // homogeneous point after each stage
+    Vec4<T> clip;                    // before the divide (after Foley's M for perspective)
+    std::optional<Vec3<T>> divided;  // absent where w = 0
+    bool inside = false;
+};
+
+template <class T> PointTrace<T> tracePoint(const Pipeline<T>& pipeline, const Vec3<T>& point)
+{
+    PointTrace<T> trace;
+    Vec4<T> p(point.x(), point.y(), point.z(), T(1));
+    for (const Stage<T>& stage : pipeline.stages) {
+        p = stage.matrix * p;
+        trace.afterStage.push_back(p);
+    }
+    trace.clip = pipeline.toClip * p;
+    if (trace.clip.w() != T(0))
+        trace.divided = trace.clip.template head<3>() / trace.clip.w();
+    trace.inside = insideClipVolume(trace.clip, pipeline.clipVolume);
+    return trace;
+}
+
+} // namespace viewpipe
+
+namespace viewpipe {
+extern template Pipeline<float> buildPipeline(const CameraSpec<float>&);
+extern template Pipeline<double> buildPipeline(const CameraSpec<double>&);
+extern template Pipeline<long double> buildPipeline(const CameraSpec<long double>&);
+extern template PointTrace<float> tracePoint(const Pipeline<float>&, const Vec3<float>&);
+extern template PointTrace<double> tracePoint(const Pipeline<double>&, const Vec3<double>&);
+extern template PointTrace<long double> tracePoint(const Pipeline<long double>&, const Vec3<long double>&);
+} // namespace viewpipe

@@ -1,0 +1,44 @@
+#pragma once
+
+// Scene files (JSON, see docs/scene-format.md): a camera in Foley's or
+// OpenGL's terms, the objects to draw, and the effects to simulate. Parsing
+// refuses unknown keys, wrong types and invalid cameras with an InputError
+// naming the field path ("view.vup[2]", "objects[1].min"); "$" is the root.
+
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include "viewpipe/pipeline.hpp"
+
+namespace viewpipe {
+
+enum class ObjectType { House, Box, Mesh };
+
+struct SceneObject {
+    ObjectType type = ObjectType::House;
+    Vec3<double> min = Vec3<double>::Zero(); // box only
+    Vec3<double> max = Vec3<double>::Zero(); // box only
+    std::string path;                        // mesh only, as written in the file
+    std::filesystem::path resolvedPath;      // mesh only, relative to the scene file's folder
+};
+
+struct Scene {
+    std::string name;
+    CameraSpec<double> camera;
+    std::vector<SceneObject> objects;
+    std::filesystem::path file; // where it was loaded from; empty for a scene made in memory
+};
+
+// Parses and validates a scene; mesh paths are resolved against baseDir and
+// must name a readable .obj, .ply or .stl file.
+Scene parseScene(const std::string& text, const std::filesystem::path& baseDir);
+Scene loadScene(const std::filesystem::path& file);
+
+std::string sceneToJson(const Scene& scene);
+// Writes to a temporary file beside the target, then renames: a failed save
+// leaves the previous file untouched.
+void saveScene(const Scene& scene, const std::filesystem::path& file);
+void writeFileAtomically(const std::filesystem::path& file, const std::string& contents);
+
+} // namespace viewpipe

@@ -1,0 +1,362 @@
+#include "viewpipe/scene.hpp"
+
+#include <nlohmann/json.hpp>
+
+#include <algorithm>
+#include <cerrno>
+#include <cmath>
+#include <cstring>
+#include <fstream>
+#include <limits>
+#include <set>
+#include <sstream>
+#include <unistd.h>
+
+namespace viewpipe {
+namespace {
+
+using Json = nlohmann::json;
+
+std::string typeName(const Json& j)
+{
+    return j.type_name();
+}
+
+std::string child(const std::string& parent, const std::string& key)
+{
+    return parent.empty() ? key : parent + "." + key;
+}
+
+std::string element(const std::string& parent, std::size_t index)
+{
+    return parent + "[" + std::to_string(index) + "]";
+}
+
+void requireObject(const Json& j, const std::string& path, const std::set<std::string>& allowed,
+                   const std::set<std::string>& required)
+{
+    if (!j.is_object())
+        throw InputError(path.empty() ? "$" : path, "must be an object (got " + typeName(j) + ")");
+    for (const auto& item : j.items())
+        if (!allowed.count(item.key())) {
+            std::string known;
+            for (const std::string& k : allowed)
+                known += (known.empty() ? "" : ", ") + k;
+            throw InputError(child(path, item.key()), "unknown key (expected one of: " + known + ")");
+        }
+    for (const std::string& key : required)
+        if (!j.contains(key))
+            throw InputError(child(path, key), "is missing");
+}
+
+double readNumber(const Json& j, const std::string& path)
+{
+    if (!j.is_number())
+        throw InputError(path, "must be a number (got " + typeName(j) + ")");
+    const double x = j.get<double>();
+    if (!std::isfinite(x))
+        throw InputError(path, "must be a finite number");
+    return x;
+}
+
+// A depth that may be "infinity" (far plane of glFrustum and gluPerspective).
+double readFar(const Json& j, const std::string& path)
+{
+    if (j.is_string() && j.get<std::string>() == "infinity")
+        return std::numeric_limits<double>::infinity();
+    if (!j.is_number())
+        throw InputError(path, "must be a number or \"infinity\" (got " + typeName(j) + ")");
+    return readNumber(j, path);
+}
+
+std::vector<double> readNumbers(const Json& j, const std::string& path, std::size_t count)
+{
+    if (!j.is_array() || j.size() != count)
+        throw InputError(path, "must be an array of " + std::to_string(count) + " numbers");
+    std::vector<double> out;
+    for (std::size_t i = 0; i < count; ++i)
+        out.push_back(readNumber(j[i], element(path, i)));
+    return out;
+}
+
+Vec3<double> readVec3(const Json& j, const std::string& path)
+{
+    const std::vector<double> v = readNumbers(j, path, 3);
+    return {v[0], v[1], v[2]};
+}
+
+std::string readString(const Json& j, const std::string& path)
+{
+    if (!j.is_string())
+        throw InputError(path, "must be a string (got " + typeName(j) + ")");
+    return j.get<std::string>();
+}
+
+foley::ViewSpec<double> readView(const Json& j)
+{
+    const std::set<std::string> keys = {"projection", "vrp", "vpn", "vup", "prp", "window", "front", "back"};
+    requireObject(j, "view", keys, keys);
+    foley::ViewSpec<double> spec;
+    const std::string projection = readString(j["projection"], "view.projection");
+    if (projection == "perspective")
+        spec.projection = foley::Projection::Perspective;
+    else if (projection == "parallel")
+        spec.projection = foley::Projection::Parallel;
+    else
+        throw InputError("view.projection", "must be \"perspective\" or \"parallel\" (got \"" + projection + "\")");
+    spec.vrp = readVec3(j["vrp"], "view.vrp");
+    spec.vpn = readVec3(j["vpn"], "view.vpn");
+    spec.vup = readVec3(j["vup"], "view.vup");
+    spec.prp = readVec3(j["prp"], "view.prp");
+    const std::vector<double> w = readNumbers(j["window"], "view.window", 4);
+    spec.window = {w[0], w[1], w[2], w[3]};
+    spec.front = readNumber(j["front"], "view.front");
+    spec.back = readNumber(j["back"], "view.back");
+    foley::validate(spec);
+    return spec;
+}
+
+gl::ProjectionSpec<double> readGlProjection(const Json& j)
+{
+    const std::string path = "camera.projection";
+    if (!j.is_object())
+        throw InputError(path, "must be an object (got " + typeName(j) + ")");
+    if (!j.contains("type"))
+        throw InputError(path + ".type", "is missing");
+    const std::string type = readString(j["type"], path + ".type");
+    auto number = [&](const char* key) { return readNumber(j[key], path + "." + key); };
+    if (type == "perspective") {
+        const std::set<std::string> keys = {"type", "fovy_deg", "aspect", "near", "far"};
+        requireObject(j, path, keys, keys);
+        gl::Perspective<double> p{number("fovy_deg"), number("aspect"), number("near"),
+                                  readFar(j["far"], path + ".far")};
+        gl::validate(p);
+        return p;
+    }
+    const std::set<std::string> keys = {"type", "left", "right", "bottom", "top", "near", "far"};
+    if (type == "frustum") {
+        requireObject(j, path, keys, keys);
+        gl::Frustum<double> p{number("left"),  number("right"), number("bottom"),
+                              number("top"),   number("near"),  readFar(j["far"], path + ".far")};
+        gl::validate(p);
+        return p;
+    }
+    if (type == "ortho") {
+        requireObject(j, path, keys, keys);
+        gl::Ortho<double> p{number("left"), number("right"), number("bottom"),
+                            number("top"),  number("near"),  number("far")};
+        gl::validate(p);
+        return p;
+    }
+    throw InputError(path + ".type", "must be \"frustum\", \"ortho\" or \"perspective\" (got \"" + type + "\")");
+}
+
+gl::Camera<double> readCamera(const Json& j)
+{
+    requireObject(j, "camera", {"look_at", "projection"}, {"look_at", "projection"});
+    const std::set<std::string> lookKeys = {"eye", "center", "up"};
+    requireObject(j["look_at"], "camera.look_at", lookKeys, lookKeys);
+    gl::Camera<double> camera;
+    camera.lookAt = {readVec3(j["look_at"]["eye"], "camera.look_at.eye"),
+                     readVec3(j["look_at"]["center"], "camera.look_at.center"),
+                     readVec3(j["look_at"]["up"], "camera.look_at.up")};
+    gl::eyeBasis(camera.lookAt);
+    camera.projection = readGlProjection(j["projection"]);
+    return camera;
+}
+
+std::string lowercase(std::string s)
+{
+    std::transform(s.begin(), s.end(), s.begin(), [](unsigned char c) { return char(std::tolower(c)); });
+    return s;
+}
+
+SceneObject readObject(const Json& j, const std::string& path, const std::filesystem::path& baseDir)
+{
+    if (!j.is_object())
+        throw InputError(path, "must be an object (got " + typeName(j) + ")");
+    if (!j.contains("type"))
+        throw InputError(path + ".type", "is missing");
+    const std::string type = readString(j["type"], path + ".type");
+    SceneObject object;
+    if (type == "house") {
+        requireObject(j, path, {"type"}, {"type"});
+        object.type = ObjectType::House;
+    } else if (type == "box") {
+        requireObject(j, path, {"type", "min", "max"}, {"type", "min", "max"});
+        object.type = ObjectType::Box;
+        object.min = readVec3(j["min"], path + ".min");
+        object.max = readVec3(j["max"], path + ".max");
+        for (int axis = 0; axis < 3; ++axis)
+            if (!(object.min[axis] < object.max[axis]))
+                throw InputError(path + ".max", "must exceed min on every axis (axis " + std::to_string(axis) + ")");
+    } else if (type == "mesh") {
+        requireObject(j, path, {"type", "path"}, {"type", "path"});
+        object.type = ObjectType::Mesh;
+        object.path = readString(j["path"], path + ".path");
+        const std::string extension = lowercase(std::filesystem::path(object.path).extension().string());
+        if (extension != ".obj" && extension != ".ply" && extension != ".stl")
+            throw InputError(path + ".path", "must name an .obj, .ply or .stl file (got \"" + object.path + "\")");
+        object.resolvedPath = baseDir / object.path;
+        if (!std::ifstream(object.resolvedPath))
+            throw InputError(path + ".path", "cannot read \"" + object.resolvedPath.string() + "\": " +
+                                                 std::strerror(errno));
+    } else {
+        throw InputError(path + ".type", "must be \"house\", \"box\" or \"mesh\" (got \"" + type + "\")");
+    }
+    return object;
+}
+
+Json vec3Json(const Vec3<double>& v)
+{
+    return Json::array({v.x(), v.y(), v.z()});
+}
+
+Json farJson(double zFar)
+{
+    return std::isinf(zFar) ? Json("infinity") : Json(zFar);
+}
+
+Json cameraJson(const CameraSpec<double>& camera)
+{
+    if (const auto* spec = std::get_if<foley::ViewSpec<double>>(&camera)) {
+        return {{"view",
+                 {{"projection", spec->projection == foley::Projection::Perspective ? "perspective" : "parallel"},
+                  {"vrp", vec3Json(spec->vrp)},
+                  {"vpn", vec3Json(spec->vpn)},
+                  {"vup", vec3Json(spec->vup)},
+                  {"prp", vec3Json(spec->prp)},
+                  {"window", {spec->window.umin, spec->window.umax, spec->window.vmin, spec->window.vmax}},
+                  {"front", spec->front},
+                  {"back", spec->back}}}};
+    }
+    const auto& gl = std::get<gl::Camera<double>>(camera);
+    Json projection;
+    if (const auto* p = std::get_if<gl::Perspective<double>>(&gl.projection))
+        projection = {{"type", "perspective"},
+                      {"fovy_deg", p->fovyDegrees},
+                      {"aspect", p->aspect},
+                      {"near", p->zNear},
+                      {"far", farJson(p->zFar)}};
+    else if (const auto* p = std::get_if<gl::Frustum<double>>(&gl.projection))
+        projection = {{"type", "frustum"}, {"left", p->left},   {"right", p->right},        {"bottom", p->bottom},
+                      {"top", p->top},     {"near", p->zNear}, {"far", farJson(p->zFar)}};
+    else {
+        const auto& o = std::get<gl::Ortho<double>>(gl.projection);
+        projection = {{"type", "ortho"}, {"left", o.left},   {"right", o.right}, {"bottom", o.bottom},
+                      {"top", o.top},    {"near", o.zNear}, {"far", o.zFar}};
+    }
+    return {{"camera",
+             {{"look_at",
+               {{"eye", vec3Json(gl.lookAt.eye)}, {"center", vec3Json(gl.lookAt.center)}, {"up", vec3Json(gl.lookAt.up)}}},
+              {"projection", projection}}}};
+}
+
+} // namespace
+
+Scene parseScene(const std::string& text, const std::filesystem::path& baseDir)
+{
+    Json root;
+    try {
+        root = Json::parse(text);
+    } catch (const Json::exception& e) {
+        // nlohmann's messages read "[json.exception.parse_error.101] parse error at line 3, column 5: ...".
+        const std::string what = e.what();
+        const std::size_t start = what.find("] ");
+        throw InputError("$", "invalid JSON: " + (start == std::string::npos ? what : what.substr(start + 2)));
+    }
+    requireObject(root, "", {"name", "view", "camera", "objects", "effects"}, {});
+    if (root.contains("view") == root.contains("camera"))
+        throw InputError("$", "needs exactly one of \"view\" (Foley) or \"camera\" (OpenGL)");
+
+    Scene scene;
+    scene.name = root.contains("name") ? readString(root["name"], "name") : std::string();
+    if (root.contains("view"))
+        scene.camera = readView(root["view"]);
+    else
+        scene.camera = readCamera(root["camera"]);
+    if (root.contains("objects")) {
+        const Json& objects = root["objects"];
+        if (!objects.is_array())
+            throw InputError("objects", "must be an array (got " + typeName(objects) + ")");
+        for (std::size_t i = 0; i < objects.size(); ++i)
+            scene.objects.push_back(readObject(objects[i], element("objects", i), baseDir));
+    }
+    if (root.contains("effects")) {
+        const Json& effects = root["effects"];
+        if (!effects.is_array())
+            throw InputError("effects", "must be an array (got " + typeName(effects) + ")");
+        for (std::size_t i = 0; i < effects.size(); ++i) {
+            const Json& effect = effects[i];
+            const std::string name = effect.is_string() ? effect.get<std::string>()
+                                     : effect.is_object() && effect.size() == 1 ? effect.begin().key()
+                                                                                : std::string();
+            if (name.empty())
+                throw InputError(element("effects", i), "must be an effect name or {\"name\": {parameters}}");
+            throw InputError(element("effects", i), "unknown effect \"" + name + "\" (no effects are known yet)");
+        }
+    }
+    return scene;
+}
+
+Scene loadScene(const std::filesystem::path& file)
+{
+    std::ifstream in(file, std::ios::binary);
+    if (!in)
+        throw InputError("$", std::string("cannot read the scene file: ") + std::strerror(errno));
+    std::ostringstream text;
+    text << in.rdbuf();
+    Scene scene = parseScene(text.str(), file.parent_path());
+    scene.file = file;
+    if (scene.name.empty())
+        scene.name = file.stem().string();
+    return scene;
+}
+
+std::string sceneToJson(const Scene& scene)
+{
+    Json root = {{"name", scene.name}};
+    root.update(cameraJson(scene.camera));
+    Json objects = Json::array();
+    for (const SceneObject& object : scene.objects) {
+        switch (object.type) {
+        case ObjectType::House: objects.push_back({{"type", "house"}}); break;
+        case ObjectType::Box:
+            objects.push_back({{"type", "box"}, {"min", vec3Json(object.min)}, {"max", vec3Json(object.max)}});
+            break;
+        case ObjectType::Mesh: objects.push_back({{"type", "mesh"}, {"path", object.path}}); break;
+        }
+    }
+    root["objects"] = objects;
+    root["effects"] = Json::array();
+    return root.dump(2) + "\n";
+}
+
+void writeFileAtomically(const std::filesystem::path& file, const std::string& contents)
+{
+    std::filesystem::path temporary = file;
+    temporary += ".tmp-" + std::to_string(::getpid());
+    {
+        std::ofstream out(temporary, std::ios::binary | std::ios::trunc);
+        out << contents;
+        out.flush();
+        if (!out) {
+            std::error_code ignored;
+            std::filesystem::remove(temporary, ignored);
+            throw InputError(file.string(), std::string("cannot write: ") + std::strerror(errno));
+        }
+    }
+    std::error_code error;
+    std::filesystem::rename(temporary, file, error);
+    if (error) {
+        std::filesystem::remove(temporary, error);
+        throw InputError(file.string(), "cannot replace the file: " + error.message());
+    }
+}
+
+void saveScene(const Scene& scene, const std::filesystem::path& file)
+{
+    writeFileAtomically(file, sceneToJson(scene));
+}
+
+} // namespace viewpipe

@@ -1,0 +1,234 @@
+#include "report.hpp"
+
+#include <algorithm>
+#include <cstdio>
+#include <iomanip>
+#include <limits>
+#include <sstream>
+#include <type_traits>
+
+namespace viewpipe::cli {
+namespace {
+
+using Json = nlohmann::json;
+
+// Values wider than double go out as strings with all their digits.
+template <class T> Json number(const T& x)
+{
+    if constexpr (std::numeric_limits<T>::digits > std::numeric_limits<double>::digits) {
+        std::ostringstream out;
+        out << std::setprecision(std::numeric_limits<T>::max_digits10) << x;
+        return out.str();
+    } else {
+        return static_cast<double>(x);
+    }
+}
+
+template <class T> Json matrixJson(const Mat4<T>& m)
+{
+    Json rows = Json::array();
+    for (int r = 0; r < 4; ++r)
+        rows.push_back({number(m(r, 0)), number(m(r, 1)), number(m(r, 2)), number(m(r, 3))});
+    return rows;
+}
+
+template <class T, int N> Json vectorJson(const Eigen::Matrix<T, N, 1>& v)
+{
+    Json out = Json::array();
+    for (int i = 0; i < N; ++i)
+        out.push_back(number(v[i]));
+    return out;
+}
+
+template <class T> std::string shortNumber(const T& x)
+{
+    const T cleaned = (x == T(0)) ? T(0) : x; // print -0 as 0
+    char buffer[64];
+    std::snprintf(buffer, sizeof buffer, "%.6g", static_cast<double>(cleaned));
+    return buffer;
+}
+
+template <class T> std::vector<std::string> matrixLines(const Mat4<T>& m)
+{
+    std::size_t width = 0;
+    for (int r = 0; r < 4; ++r)
+        for (int c = 0; c < 4; ++c)
+            width = std::max(width, shortNumber(m(r, c)).size());
+    std::vector<std::string> lines;
+    for (int r = 0; r < 4; ++r) {
+        std::ostringstream line;
+        line << "[";
+        for (int c = 0; c < 4; ++c)
+            line << " " << std::setw(int(width)) << shortNumber(m(r, c));
+        line << " ]";
+        lines.push_back(line.str());
+    }
+    return lines;
+}
+
+void printSideBySide(std::ostream& out, const std::vector<std::string>& left, const std::vector<std::string>& right,
+                     const std::string& leftTitle, const std::string& rightTitle)
+{
+    std::size_t width = leftTitle.size();
+    for (const std::string& line : left)
+        width = std::max(width, line.size());
+    out << "    " << std::left << std::setw(int(width)) << leftTitle << "    " << rightTitle << "\n";
+    for (std::size_t i = 0; i < left.size(); ++i)
+        out << "    " << std::setw(int(width)) << left[i] << "    " << right[i] << "\n";
+    out << std::right;
+}
+
+std::string compositeName(const Pipeline<double>& p)
+{
+    if (p.convention == Convention::OpenGL)
+        return "P * V";
+    return p.projection == "perspective" ? "N_per" : "N_par";
+}
+
+template <class T> Pipeline<T> pipelineFor(const Scene& scene)
+{
+    return buildPipeline(castCamera<T>(scene.camera));
+}
+
+template <class F> auto withPrecision(Precision precision, F&& f)
+{
+    switch (precision) {
+    case Precision::Float: return f(float{});
+    case Precision::LongDouble: return f(static_cast<long double>(0));
+    case Precision::Double: break;
+    }
+    return f(double{});
+}
+
+std::string conventionName(Convention c)
+{
+    return c == Convention::Foley ? "foley" : "opengl";
+}
+
+} // namespace
+
+Precision parsePrecision(const std::string& name)
+{
+    if (name == "float")
+        return Precision::Float;
+    if (name == "double")
+        return Precision::Double;
+    if (name == "long-double")
+        return Precision::LongDouble;
+    throw InputError("--precision", "must be float, double or long-double (got \"" + name + "\")");
+}
+
+std::string precisionName(Precision precision)
+{
+    static const char* names[] = {"float", "double", "long-double"};
+    return names[static_cast<int>(precision)];
+}
+
+Json pipelineJson(const Scene& scene, Precision precision)
+{
+    return withPrecision(precision, [&](auto zero) {
+        using T = decltype(zero);
+        const Pipeline<T> p = pipelineFor<T>(scene);
+        const std::vector<Mat4<T>> cumulative = cumulativeProducts(p.stages);
+        Json out = {{"convention", conventionName(p.convention)},
+                    {"projection", p.projection},
+                    {"precision", precisionName(precision)}};
+        Json stages = Json::array();
+        for (std::size_t k = 0; k < p.stages.size(); ++k)
+            stages.push_back({{"symbol", p.stages[k].symbol},
+                              {"explanation", p.stages[k].explanation},
+                              {"matrix", matrixJson(p.stages[k].matrix)},
+                              {"cumulative", matrixJson(cumulative[k])}});
+        out["stages"] = stages;
+        out["composite"] = matrixJson(p.composite);
+        if (p.zmin)
+            out["zmin"] = number(*p.zmin);
+        if (p.view)
+            out["view"] = matrixJson(*p.view);
+        if (p.projectionMatrix)
+            out["projection_matrix"] = matrixJson(*p.projectionMatrix);
+        return out;
+    });
+}
+
+void printPipeline(std::ostream& out, const Scene& scene, Precision precision)
+{
+    withPrecision(precision, [&](auto zero) {
+        using T = decltype(zero);
+        const Pipeline<T> p = pipelineFor<T>(scene);
+        const Pipeline<double> names = pipelineFor<double>(scene);
+        const std::vector<Mat4<T>> cumulative = cumulativeProducts(p.stages);
+        out << scene.name << ": " << (p.convention == Convention::Foley ? "Foley" : "OpenGL") << ", "
+            << p.projection << ", " << precisionName(precision) << " precision\n"
+            << "Column vectors: p' = M p. Each stage's matrix, and the product of all stages so far.\n\n";
+        std::string product;
+        for (std::size_t k = 0; k < p.stages.size(); ++k) {
+            const Stage<T>& stage = p.stages[k];
+            out << k + 1 << ". " << stage.symbol << " - " << stage.explanation << "\n";
+            printSideBySide(out, matrixLines(stage.matrix), matrixLines(cumulative[k]), stage.symbol,
+                            "cumulative");
+            out << "\n";
+            product = stage.symbol + (product.empty() ? "" : " * " + product);
+        }
+        out << compositeName(names) << " = " << product << "\n";
+        for (const std::string& line : matrixLines(p.composite))
+            out << "    " << line << "\n";
+        if (p.zmin)
+            out << "\nz_min = " << shortNumber(*p.zmin)
+                << "  (canonical perspective volume: x = +-z, y = +-z, z = z_min, z = -1)\n";
+        if (p.view && p.projectionMatrix) {
+            out << "\n";
+            printSideBySide(out, matrixLines(*p.view), matrixLines(*p.projectionMatrix), "view (lookAt)",
+                            "projection (" + p.projection + ")");
+        }
+        return 0;
+    });
+}
+
+Json traceJson(const Scene& scene, const Vec3<double>& point, Precision precision)
+{
+    return withPrecision(precision, [&](auto zero) {
+        using T = decltype(zero);
+        const Pipeline<T> p = pipelineFor<T>(scene);
+        const PointTrace<T> trace = tracePoint(p, Vec3<T>(point.cast<T>()));
+        Json stages = Json::array();
+        for (std::size_t k = 0; k < p.stages.size(); ++k)
+            stages.push_back({{"symbol", p.stages[k].symbol}, {"point", vectorJson(trace.afterStage[k])}});
+        return Json{{"convention", conventionName(p.convention)},
+                    {"projection", p.projection},
+                    {"precision", precisionName(precision)},
+                    {"point", vectorJson(point)},
+                    {"stages", stages},
+                    {"clip", vectorJson(trace.clip)},
+                    {"divided", trace.divided ? vectorJson(*trace.divided) : Json(nullptr)},
+                    {"inside", trace.inside}};
+    });
+}
+
+void printTrace(std::ostream& out, const Scene& scene, const Vec3<double>& point, Precision precision)
+{
+    const Json t = traceJson(scene, point, precision);
+    auto show = [](const Json& v) {
+        std::string s = "(";
+        for (std::size_t i = 0; i < v.size(); ++i)
+            s += (i ? ", " : "") + (v[i].is_string() ? v[i].get<std::string>() : shortNumber(v[i].get<double>()));
+        return s + ")";
+    };
+    out << "Point " << show(t["point"]) << " through " << scene.name << " (" << t["projection"].get<std::string>()
+        << ", " << precisionName(precision) << " precision), homogeneous (x, y, z, w):\n";
+    std::size_t width = 0;
+    for (const Json& stage : t["stages"])
+        width = std::max(width, stage["symbol"].get<std::string>().size());
+    for (const Json& stage : t["stages"])
+        out << "  after " << std::left << std::setw(int(width)) << stage["symbol"].get<std::string>() << std::right
+            << "  " << show(stage["point"]) << "\n";
+    const bool foleyPerspective = t["convention"] == "foley" && t["projection"] == "perspective";
+    out << "  before the divide" << (foleyPerspective ? " (after Foley's M)" : "") << ": " << show(t["clip"]) << "\n";
+    if (t["divided"].is_null())
+        out << "  divide: w = 0, the point lies on the eye plane and has no image\n";
+    else
+        out << "  after the divide: " << show(t["divided"]) << "\n";
+    out << "  " << (t["inside"].get<bool>() ? "inside" : "outside") << " the canonical view volume\n";
+}
+
+} // namespace viewpipe::cli

@@ -1,0 +1,166 @@
+// The viewpipe CLI as scripts use it: subcommands, JSON shape, exit codes and
+// the one-line error "FILE: field.path: reason".
+
+#include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
+
+#include <array>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <string>
+#include <sys/wait.h>
+
+namespace {
+
+using Json = nlohmann::json;
+
+struct Result {
+    int exitCode = -1;
+    std::string out;
+    std::string err;
+};
+
+const std::string kHouse = std::string(VIEWPIPE_DATA_DIR) + "/scenes/house.json";
+
+Result run(const std::string& arguments)
+{
+    const std::string errFile = std::filesystem::temp_directory_path() / ("viewpipe-cli-" + std::to_string(::getpid()));
+    const std::string command = std::string(VIEWPIPE_EXE) + " " + arguments + " 2>" + errFile;
+    Result result;
+    FILE* pipe = ::popen(command.c_str(), "r");
+    std::array<char, 4096> buffer;
+    std::size_t n;
+    while ((n = std::fread(buffer.data(), 1, buffer.size(), pipe)) > 0)
+        result.out.append(buffer.data(), n);
+    const int status = ::pclose(pipe);
+    result.exitCode = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+    std::ifstream err(errFile);
+    result.err.assign(std::istreambuf_iterator<char>(err), {});
+    std::filesystem::remove(errFile);
+    return result;
+}
+
+std::string writeScene(const std::string& name, const std::string& text)
+{
+    const std::filesystem::path file = std::filesystem::temp_directory_path() / name;
+    std::ofstream(file) << text;
+    return file.string();
+}
+
+TEST(Cli, PipelinePrintsTheFiveStagesAndNper)
+{
+    const Result r = run("pipeline " + kHouse);
+    ASSERT_EQ(r.exitCode, 0) << r.err;
+    for (const char* symbol : {"1. T(-VRP)", "2. R", "3. T(-PRP)", "4. SH_per", "5. S_per"})
+        EXPECT_NE(r.out.find(symbol), std::string::npos) << symbol;
+    EXPECT_NE(r.out.find("N_per = S_per * SH_per * T(-PRP) * R * T(-VRP)"), std::string::npos) << r.out;
+    EXPECT_NE(r.out.find("z_min = -0.40678"), std::string::npos) << r.out;
+}
+
+TEST(Cli, PipelineJsonHasTheContractedShape)
+{
+    const Result r = run("pipeline " + kHouse + " --json");
+    ASSERT_EQ(r.exitCode, 0) << r.err;
+    const Json j = Json::parse(r.out);
+    EXPECT_EQ(j["convention"], "foley");
+    EXPECT_EQ(j["projection"], "perspective");
+    EXPECT_EQ(j["precision"], "double");
+    ASSERT_EQ(j["stages"].size(), 5u);
+    const std::array<std::string, 5> symbols = {"T(-VRP)", "R", "T(-PRP)", "SH_per", "S_per"};
+    for (std::size_t k = 0; k < 5; ++k) {
+        EXPECT_EQ(j["stages"][k]["symbol"], symbols[k]);
+        ASSERT_EQ(j["stages"][k]["matrix"].size(), 4u);
+        ASSERT_EQ(j["stages"][k]["cumulative"][3].size(), 4u);
+    }
+    EXPECT_EQ(j["stages"][4]["cumulative"], j["composite"]);
+    EXPECT_NEAR(j["composite"][0][2].get<double>(), -4.0 / 1475, 1e-15);
+    EXPECT_NEAR(j["composite"][2][3].get<double>(), -84.0 / 59, 1e-15);
+    EXPECT_NEAR(j["zmin"].get<double>(), -24.0 / 59, 1e-15);
+    EXPECT_FALSE(j.contains("view"));
+}
+
+TEST(Cli, PipelineJsonForParallelAndOpenGl)
+{
+    const std::string parallel = writeScene("viewpipe-parallel.json", R"({"view": {"projection": "parallel",
+        "vrp": [0, 0, 0], "vpn": [0, 0, 1], "vup": [0, 1, 0], "prp": [0, 0, 10], "window": [-1, 1, -1, 1],
+        "front": 1, "back": -1}})");
+    Json j = Json::parse(run("pipeline " + parallel + " --json").out);
+    ASSERT_EQ(j["stages"].size(), 5u);
+    EXPECT_EQ(j["stages"][2]["symbol"], "SH_par");
+    EXPECT_EQ(j["stages"][3]["symbol"], "T_par");
+    EXPECT_EQ(j["stages"][4]["symbol"], "S_par");
+    EXPECT_FALSE(j.contains("zmin"));
+
+    const std::string camera = writeScene("viewpipe-gl.json", R"({"camera": {"look_at": {"eye": [0, 0, 5],
+        "center": [0, 0, 0], "up": [0, 1, 0]}, "projection": {"type": "frustum", "left": -4, "right": 4,
+        "bottom": -3, "top": 3, "near": 5, "far": 80}}})");
+    j = Json::parse(run("pipeline " + camera + " --json").out);
+    EXPECT_EQ(j["convention"], "opengl");
+    EXPECT_EQ(j["projection"], "frustum");
+    EXPECT_NEAR(j["projection_matrix"][2][2].get<double>(), -85.0 / 75, 1e-15);
+    EXPECT_EQ(j["view"][2][3], -5.0);
+    EXPECT_EQ(j["stages"][0]["symbol"], "T(-eye)");
+}
+
+TEST(Cli, PrecisionsAgreeAndLongDoubleKeepsItsDigits)
+{
+    const Json f = Json::parse(run("pipeline " + kHouse + " --json --precision float").out);
+    const Json d = Json::parse(run("pipeline " + kHouse + " --json --precision double").out);
+    const Json l = Json::parse(run("pipeline " + kHouse + " --json --precision long-double").out);
+    EXPECT_EQ(f["precision"], "float");
+    EXPECT_NEAR(f["zmin"].get<double>(), d["zmin"].get<double>(), 1e-7);
+    ASSERT_TRUE(l["zmin"].is_string());
+    EXPECT_EQ(l["zmin"].get<std::string>().substr(0, 19), "-0.4067796610169491");
+}
+
+TEST(Cli, TraceFollowsAPoint)
+{
+    Result r = run("trace " + kHouse + " --point 16 10 54 --json");
+    ASSERT_EQ(r.exitCode, 0) << r.err;
+    Json j = Json::parse(r.out);
+    ASSERT_EQ(j["stages"].size(), 5u);
+    EXPECT_EQ(j["stages"][2]["symbol"], "T(-PRP)");
+    EXPECT_EQ(j["stages"][2]["point"], Json::parse("[8.0, 4.0, -30.0, 1.0]"));
+    EXPECT_TRUE(j["inside"].get<bool>());
+    // Behind the eye: outside, never divided into a false image.
+    j = Json::parse(run("trace " + kHouse + " --point 8 6 84 --json").out);
+    EXPECT_FALSE(j["inside"].get<bool>());
+    EXPECT_TRUE(j["divided"].is_null());
+    r = run("trace " + kHouse + " --point -100 0 40");
+    EXPECT_EQ(r.exitCode, 0) << r.err;
+    EXPECT_NE(r.out.find("outside the canonical view volume"), std::string::npos) << r.out;
+}
+
+TEST(Cli, CheckAndExitCodes)
+{
+    Result r = run("check " + kHouse);
+    EXPECT_EQ(r.exitCode, 0);
+    EXPECT_TRUE(r.out.empty());
+
+    const std::string bad = writeScene("viewpipe-bad.json", R"({"view": {"projection": "perspective",
+        "vrp": [0, 0, 0], "vpn": [0, 0, 1], "vup": [0, 0, 1], "prp": [8, 6, 84], "window": [-50, 50, -50, 50],
+        "front": 60, "back": 25}})");
+    for (const std::string command : {"check ", "pipeline ", "trace "}) {
+        r = run(command + bad + (command == "trace " ? " --point 0 0 0" : ""));
+        EXPECT_EQ(r.exitCode, 2) << command;
+        EXPECT_EQ(r.err.rfind(bad + ": view.vup: is parallel to view.vpn (angle 0 degrees", 0), 0u) << r.err;
+        EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
+    }
+    r = run("check /nonexistent/scene.json");
+    EXPECT_EQ(r.exitCode, 2);
+    EXPECT_EQ(r.err, "/nonexistent/scene.json: $: cannot read the scene file: No such file or directory\n");
+
+    EXPECT_EQ(run("pipeline").exitCode, 2);                             // missing SCENE
+    EXPECT_EQ(run("frobnicate " + kHouse).exitCode, 2);                 // unknown subcommand
+    EXPECT_EQ(run("pipeline " + kHouse + " --precision half").exitCode, 2);
+    EXPECT_EQ(run("trace " + kHouse + " --point 1 2").exitCode, 2);
+    r = run("--help");
+    EXPECT_EQ(r.exitCode, 0);
+    EXPECT_NE(r.out.find("pipeline"), std::string::npos);
+    r = run("--version");
+    EXPECT_EQ(r.exitCode, 0);
+    EXPECT_EQ(r.out.rfind("viewpipe ", 0), 0u);
+}
+
+} // namespace

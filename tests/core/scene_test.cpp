@@ -1,0 +1,111 @@
+// Scene files: the default scene, refusals naming the field path, round trips.
+
+#include "support.hpp"
+#include "viewpipe/scene.hpp"
+
+#include <fstream>
+
+namespace viewpipe {
+namespace {
+
+using test::expectRefused;
+
+const std::filesystem::path kData = VIEWPIPE_DATA_DIR;
+
+std::string withView(const std::string& view, const std::string& rest = "")
+{
+    return R"({"name": "t", "view": )" + view + rest + "}";
+}
+
+const std::string kHouseView = R"({"projection": "perspective", "vrp": [0, 0, 0], "vpn": [0, 0, 1],
+    "vup": [0, 1, 0], "prp": [8, 6, 84], "window": [-50, 50, -50, 50], "front": 60, "back": 25})";
+
+void refused(const std::string& text, const std::string& field, const std::string& reason)
+{
+    expectRefused([&] { parseScene(text, kData); }, field, reason);
+}
+
+TEST(Scene, DefaultSceneIsFoleysHouse)
+{
+    const Scene scene = loadScene(kData / "scenes" / "house.json");
+    const auto& spec = std::get<foley::ViewSpec<double>>(scene.camera);
+    EXPECT_EQ(spec.projection, foley::Projection::Perspective);
+    EXPECT_EQ(spec.prp, Vec3<double>(8, 6, 84));
+    EXPECT_EQ(spec.window.umin, -50);
+    EXPECT_EQ(spec.front, 60);
+    EXPECT_EQ(spec.back, 25);
+    ASSERT_EQ(scene.objects.size(), 1u);
+    EXPECT_EQ(scene.objects[0].type, ObjectType::House);
+}
+
+TEST(Scene, OpenGlCamera)
+{
+    const Scene scene = parseScene(R"({"camera": {"look_at": {"eye": [0, 0, 5], "center": [0, 0, 0], "up": [0, 1, 0]},
+        "projection": {"type": "perspective", "fovy_deg": 60, "aspect": 1.5, "near": 1, "far": "infinity"}},
+        "objects": [{"type": "box", "min": [-1, -1, -1], "max": [1, 1, 1]}]})",
+                                   kData);
+    const auto& camera = std::get<gl::Camera<double>>(scene.camera);
+    const auto& p = std::get<gl::Perspective<double>>(camera.projection);
+    EXPECT_EQ(p.fovyDegrees, 60);
+    EXPECT_TRUE(std::isinf(p.zFar));
+    EXPECT_EQ(scene.objects[0].type, ObjectType::Box);
+}
+
+TEST(Scene, RefusesWithTheFieldPath)
+{
+    refused("{", "$", "invalid JSON: parse error at line 1, column 2");
+    refused("[]", "$", "must be an object");
+    refused(R"({"name": "x"})", "$", "exactly one of");
+    refused(withView(kHouseView, R"(, "colour": 1)"), "colour", "unknown key");
+    refused(withView(R"({"projection": "perspective"})"), "view.back", "is missing");
+    refused(withView(R"({"projection": "fisheye", "vrp": [0, 0, 0], "vpn": [0, 0, 1], "vup": [0, 1, 0],
+        "prp": [8, 6, 84], "window": [-50, 50, -50, 50], "front": 60, "back": 25})"),
+            "view.projection", "\"perspective\" or \"parallel\"");
+    refused(withView(R"({"projection": "perspective", "vrp": [0, 0, 0], "vpn": [0, 0, 1], "vup": [0, 1, "z"],
+        "prp": [8, 6, 84], "window": [-50, 50, -50, 50], "front": 60, "back": 25})"),
+            "view.vup[2]", "must be a number (got string)");
+    refused(withView(R"({"projection": "perspective", "vrp": [0, 0], "vpn": [0, 0, 1], "vup": [0, 1, 0],
+        "prp": [8, 6, 84], "window": [-50, 50, -50, 50], "front": 60, "back": 25})"),
+            "view.vrp", "array of 3 numbers");
+    refused(withView(R"({"projection": "perspective", "vrp": [0, 0, 0], "vpn": [0, 0, 1], "vup": [0, 0, 1],
+        "prp": [8, 6, 84], "window": [-50, 50, -50, 50], "front": 60, "back": 25})"),
+            "view.vup", "parallel");
+    refused(withView(R"({"projection": "perspective", "vrp": [0, 0, 0], "vpn": [0, 0, 1], "vup": [0, 1, 0],
+        "prp": [8, 6, 84], "window": [-50, 50, -50, 50], "front": 1e999, "back": 25})"),
+            "$", "invalid JSON: number overflow parsing '1e999'");
+    refused(withView(kHouseView, R"(, "objects": [{"type": "teapot"}])"), "objects[0].type", "\"house\", \"box\"");
+    refused(withView(kHouseView, R"(, "objects": [{"type": "box", "min": [0, 0, 0], "max": [1, 0, 1]}])"),
+            "objects[0].max", "must exceed min");
+    refused(withView(kHouseView, R"(, "objects": [{"type": "mesh", "path": "nowhere.obj"}])"), "objects[0].path",
+            "cannot read");
+    refused(withView(kHouseView, R"(, "objects": [{"type": "mesh", "path": "scenes/house.json"}])"),
+            "objects[0].path", ".obj, .ply or .stl");
+    refused(withView(kHouseView, R"(, "effects": {})"), "effects", "must be an array");
+    refused(withView(kHouseView, R"(, "effects": ["sparkle"])"), "effects[0]", "unknown effect \"sparkle\"");
+    refused(R"({"camera": {"look_at": {"eye": [0, 0, 5], "center": [0, 0, 0], "up": [0, 1, 0]},
+        "projection": {"type": "frustum", "left": -1, "right": 1, "bottom": -1, "top": 1, "near": 0, "far": 9}}})",
+            "camera.projection.near", "greater than 0");
+    refused(R"({"camera": {"look_at": {"eye": [0, 0, 5], "center": [0, 0, 0], "up": [0, 1, 0], "roll": 0},
+        "projection": {"type": "ortho", "left": -1, "right": 1, "bottom": -1, "top": 1, "near": 0, "far": 9}}})",
+            "camera.look_at.roll", "unknown key");
+}
+
+TEST(Scene, SaveLoadRoundTripIsAtomic)
+{
+    const std::filesystem::path dir = std::filesystem::temp_directory_path() / "viewpipe-scene-test";
+    std::filesystem::create_directories(dir);
+    Scene scene = loadScene(kData / "scenes" / "house.json");
+    scene.objects.push_back({ObjectType::Box, {1, 2, 3}, {4, 5, 6}, "", ""});
+    const std::filesystem::path file = dir / "saved.json";
+    saveScene(scene, file);
+    const Scene again = loadScene(file);
+    EXPECT_EQ(sceneToJson(again), sceneToJson(scene));
+    for (const auto& entry : std::filesystem::directory_iterator(dir))
+        EXPECT_EQ(entry.path().filename(), "saved.json") << "temporary file left behind";
+    // A save into a folder that does not exist fails and leaves nothing behind.
+    EXPECT_THROW(saveScene(scene, dir / "missing" / "x.json"), InputError);
+    std::filesystem::remove_all(dir);
+}
+
+} // namespace
+} // namespace viewpipe
