@@ -1,6 +1,7 @@
 # The two commands: `make run` and `make test`. Both install what is missing
 # (Debian packages, scripts/install-deps.sh), then build.
 JOBS ?= $(shell nproc)
+MAKEFLAGS += --no-print-directory
 
 .PHONY: all deps build run test clean
 

@@ -4,7 +4,9 @@
 #include <CLI/CLI.hpp>
 
 #include <iostream>
+#include <sstream>
 
+#include "app/OpenCommand.h"
 #include "cli/report.hpp"
 #include "viewpipe/version.hpp"
 
@@ -53,6 +55,16 @@ int main(int argc, char** argv)
     CLI::App* check = app.add_subcommand("check", "Validate a scene file; print nothing and exit 0 if it is valid");
     check->add_option("SCENE", options.scene, "Scene file (JSON)")->required();
 
+    gui::OpenOptions open;
+    std::string size;
+    std::string theme;
+    CLI::App* openCommand = app.add_subcommand("open", "Open the app on a scene (default: the built-in house)");
+    openCommand->add_option("SCENE", open.scene, "Scene file (JSON)");
+    openCommand->add_option("--stage", open.stage, "Stage to show: 0 is the world, K after the K-th matrix");
+    openCommand->add_option("--screenshot", open.screenshot, "Save a PNG of the whole window and exit");
+    openCommand->add_option("--size", size, "Window size WxH (default 1600x950)");
+    openCommand->add_option("--theme", theme, "dark or light")->check(CLI::IsMember({"dark", "light"}));
+
     try {
         app.parse(argc, argv);
     } catch (const CLI::Success& e) {
@@ -60,6 +72,28 @@ int main(int argc, char** argv)
     } catch (const CLI::ParseError& e) {
         app.exit(e);
         return kExitBadInput;
+    }
+
+    if (*openCommand) {
+        try {
+            if (!size.empty()) {
+                char x = 0;
+                std::istringstream in(size);
+                if (!(in >> open.width >> x >> open.height) || x != 'x' || !in.eof() || open.width < 200 ||
+                    open.height < 150 || open.width > 8192 || open.height > 8192)
+                    throw InputError("--size", "must be WxH with 200 <= W, H <= 8192, e.g. 1600x950 (got \"" + size +
+                                                   "\")");
+            }
+            if (!theme.empty())
+                open.theme = theme;
+            return gui::runOpen(argc, argv, open);
+        } catch (const InputError& e) {
+            std::cerr << (open.scene.empty() ? std::string("viewpipe open") : open.scene) << ": " << e.what() << "\n";
+            return kExitBadInput;
+        } catch (const std::exception& e) {
+            std::cerr << "viewpipe: internal error: " << e.what() << "\n";
+            return kExitInternal;
+        }
     }
 
     try {

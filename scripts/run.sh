@@ -1,5 +1,22 @@
 #!/usr/bin/env bash
-# Shows the built-in default scene's normalizing pipeline.
+# Opens the app on the built-in default scene. With no display, says so and
+# saves a picture of every stage of the default scene instead.
 set -euo pipefail
 cd "$(dirname "$0")/.."
-exec build/bin/viewpipe pipeline data/scenes/house.json
+viewpipe=build/bin/viewpipe
+scene=data/scenes/house.json
+
+if [ -n "${DISPLAY:-}" ] || [ -n "${WAYLAND_DISPLAY:-}" ]; then
+  exec "$viewpipe" open "$scene"
+fi
+
+out=out/house-stages
+mkdir -p "$out"
+stages=$("$viewpipe" pipeline "$scene" --json | grep -o '"symbol"' | wc -l)
+echo "No display found (DISPLAY is not set): saving the default scene's stages to $out/ instead."
+for k in $(seq 0 "$stages"); do
+  xvfb-run -a -s "-screen 0 1920x1080x24" "$viewpipe" open "$scene" --stage "$k" \
+    --screenshot "$out/stage-$k.png" 2>/dev/null
+  echo "  $out/stage-$k.png"
+done
+echo "Open them with any image viewer, or run 'make run' where there is a display."

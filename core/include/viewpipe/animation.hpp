@@ -1,0 +1,51 @@
+#pragma once
+
+// In-between matrices for animating one stage: from the identity (t = 0) to
+// the stage's matrix (t = 1). A rotation turns (quaternion slerp) instead of
+// blending entries, which would shrink and skew what it moves; translations,
+// shears, scales and the perspective matrix blend linearly.
+
+#include <Eigen/Geometry>
+
+#include <algorithm>
+#include <cmath>
+#include <vector>
+
+#include "viewpipe/stage.hpp"
+
+namespace viewpipe {
+
+template <class T> bool isRotation(const Mat4<T>& m)
+{
+    const Mat3<T> r = m.template topLeftCorner<3, 3>();
+    const T tolerance = T(64) * epsilonOf<T>();
+    return m.template topRightCorner<3, 1>().isZero(T(0)) && m.template bottomLeftCorner<1, 3>().isZero(T(0)) &&
+           m(3, 3) == T(1) && (r * r.transpose()).isIdentity(tolerance) && r.determinant() > T(0);
+}
+
+template <class T> Mat4<T> interpolateStage(const Mat4<T>& stage, T t)
+{
+    if (isRotation(stage)) {
+        const Eigen::Quaternion<T> end(Mat3<T>(stage.template topLeftCorner<3, 3>()));
+        const Eigen::Quaternion<T> now = Eigen::Quaternion<T>::Identity().slerp(t, end);
+        return embedLinear(now.toRotationMatrix());
+    }
+    return Mat4<T>::Identity() + t * (stage - Mat4<T>::Identity());
+}
+
+// The cumulative matrix at a continuous position along the stages: 0 is the
+// world (identity), k is after stage k, and k + t is stage k+1 in progress.
+template <class T> Mat4<T> cumulativeAt(const std::vector<Stage<T>>& stages, double position)
+{
+    const double clamped = std::clamp(position, 0.0, double(stages.size()));
+    const std::size_t whole = static_cast<std::size_t>(std::floor(clamped));
+    Mat4<T> m = Mat4<T>::Identity();
+    for (std::size_t k = 0; k < whole; ++k)
+        m = stages[k].matrix * m;
+    const double t = clamped - double(whole);
+    if (whole < stages.size() && t > 0)
+        m = interpolateStage(stages[whole].matrix, T(t)) * m;
+    return m;
+}
+
+} // namespace viewpipe

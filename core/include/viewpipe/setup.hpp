@@ -1,0 +1,69 @@
+#pragma once
+
+// The elements of a viewing set-up that the app draws, in world coordinates:
+// the VRC (or eye) frame, the PRP (center of projection), the window and its
+// center CW, the direction of projection, the view volume, and where the
+// view volume ends up (the canonical volume).
+
+#include <array>
+
+#include "viewpipe/pipeline.hpp"
+
+namespace viewpipe {
+
+template <class T> struct ViewSetup {
+    Vec3<T> origin;                        // VRP, or the eye for OpenGL cameras
+    Basis<T> axes;                         // u, v, n (OpenGL: s, u, -f)
+    Vec3<T> prp;                           // center of projection; for parallel views, PRP as given
+    bool perspective = true;
+    std::array<Vec3<T>, 4> window;         // on the view plane (OpenGL: the near plane)
+    Vec3<T> windowCenter;                  // CW
+    std::array<Vec3<T>, 8> volume;         // front face, then back face
+    std::array<Vec3<T>, 8> canonical;      // the canonical volume's corners, after the composite and divide
+};
+
+template <class T> ViewSetup<T> viewSetup(const foley::ViewSpec<T>& spec)
+{
+    ViewSetup<T> s;
+    s.axes = foley::vrcBasis(spec);
+    s.origin = spec.vrp;
+    s.prp = foley::vrcToWorld(spec, s.axes, spec.prp);
+    s.perspective = spec.projection == foley::Projection::Perspective;
+    const std::array<std::array<T, 2>, 4> corners = {{{spec.window.umin, spec.window.vmin},
+                                                      {spec.window.umax, spec.window.vmin},
+                                                      {spec.window.umax, spec.window.vmax},
+                                                      {spec.window.umin, spec.window.vmax}}};
+    for (std::size_t k = 0; k < 4; ++k)
+        s.window[k] = foley::vrcToWorld(spec, s.axes, Vec3<T>(corners[k][0], corners[k][1], T(0)));
+    s.windowCenter = foley::vrcToWorld(spec, s.axes, foley::windowCenter(spec));
+    s.volume = foley::viewVolumeCorners(spec);
+    s.canonical = foley::canonicalCorners(spec);
+    return s;
+}
+
+template <class T> ViewSetup<T> viewSetup(const gl::Camera<T>& camera)
+{
+    ViewSetup<T> s;
+    s.axes = gl::eyeBasis(camera.lookAt);
+    s.origin = camera.lookAt.eye;
+    s.prp = camera.lookAt.eye;
+    s.perspective = !std::holds_alternative<gl::Ortho<T>>(camera.projection);
+    s.volume = gl::viewVolumeCorners(camera);
+    s.windowCenter = Vec3<T>::Zero();
+    for (std::size_t k = 0; k < 4; ++k) {
+        s.window[k] = s.volume[k];
+        s.windowCenter += s.volume[k] / T(4);
+    }
+    for (std::size_t k = 0; k < 8; ++k)
+        s.canonical[k] = Vec3<T>((k % 4 == 1 || k % 4 == 2) ? 1 : -1, k % 4 >= 2 ? 1 : -1, k < 4 ? -1 : 1);
+    if (!s.perspective) // an orthographic camera's projectors run along -f from the near-plane corners
+        s.prp = s.windowCenter + s.axes.n * (s.volume[4] - s.volume[0]).norm();
+    return s;
+}
+
+template <class T> ViewSetup<T> viewSetup(const CameraSpec<T>& camera)
+{
+    return std::visit([](const auto& c) { return viewSetup(c); }, camera);
+}
+
+} // namespace viewpipe

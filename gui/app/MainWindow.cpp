@@ -1,0 +1,576 @@
+#include "MainWindow.h"
+
+#include <QAction>
+#include <QActionGroup>
+#include <QApplication>
+#include <QCloseEvent>
+#include <QDir>
+#include <QDockWidget>
+#include <QFileDialog>
+#include <QFileInfo>
+#include <QHBoxLayout>
+#include <QLabel>
+#include <QListWidget>
+#include <QMenuBar>
+#include <QMessageBox>
+#include <QMimeData>
+#include <QPushButton>
+#include <QScrollArea>
+#include <QSettings>
+#include <QShortcut>
+#include <QSlider>
+#include <QSplitter>
+#include <QStatusBar>
+#include <QStyle>
+#include <QVariantAnimation>
+#include <QVBoxLayout>
+
+#include <QVTKOpenGLNativeWidget.h>
+#include <vtkCallbackCommand.h>
+#include <vtkCommand.h>
+#include <vtkGenericOpenGLRenderWindow.h>
+#include <vtkInteractorStyleTrackballCamera.h>
+#include <vtkRenderWindowInteractor.h>
+#include <vtkRenderer.h>
+
+#include "AppPaths.h"
+#include "MatrixPanel.h"
+#include "ParameterPanel.h"
+#include "Theme.h"
+
+namespace viewpipe::gui {
+namespace {
+
+constexpr int kStepMilliseconds = 1000;
+constexpr int kMaxRecent = 8;
+
+QString stageLabel(const Stage<double>& stage, int index)
+{
+    return QString("%1. %2 — %3").arg(index).arg(QString::fromStdString(stage.symbol),
+                                                   QString::fromStdString(stage.explanation));
+}
+
+} // namespace
+
+MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent), document_(new Document(this))
+{
+    setObjectName("ViewPipeMainWindow");
+    setAcceptDrops(true);
+    buildViews();
+    buildDocks();
+    buildMenus();
+
+    animation_ = new QVariantAnimation(this);
+    animation_->setStartValue(0.0);
+    animation_->setEndValue(1.0);
+    connect(animation_, &QVariantAnimation::valueChanged, this, [this](const QVariant& v) {
+        if (transition_) {
+            transition_->apply(v.toDouble());
+            renderNow();
+        }
+    });
+    connect(animation_, &QVariantAnimation::finished, this, [this] {
+        stage_ = transition_->to();
+        transition_.reset();
+        updateStageWidgets();
+        if (stage_ != target_)
+            startStep();
+        else
+            playButton_->setText(tr("Play"));
+    });
+
+    connect(document_, &Document::changed, this, &MainWindow::onDocumentChanged);
+    connect(document_, &Document::fileChanged, this, &MainWindow::updateTitle);
+    connect(parameters_, &ParameterPanel::cameraEdited, this, &MainWindow::onCameraEdited);
+    resize(1600, 950);
+}
+
+MainWindow::~MainWindow() = default;
+
+void MainWindow::buildViews()
+{
+    auto makeView = [](QVTKOpenGLNativeWidget*& widget, vtkGenericOpenGLRenderWindow*& window, vtkRenderer*& renderer) {
+        widget = new QVTKOpenGLNativeWidget;
+        auto renderWindow = vtkSmartPointer<vtkGenericOpenGLRenderWindow>::New();
+        widget->setRenderWindow(renderWindow);
+        auto r = vtkSmartPointer<vtkRenderer>::New();
+        renderWindow->AddRenderer(r);
+        window = renderWindow;
+        renderer = r;
+    };
+    makeView(worldWidget_, worldWindow_, worldRenderer_);
+    makeView(projectedWidget_, projectedWindow_, projectedRenderer_);
+    worldWidget_->setObjectName("worldView");
+    projectedWidget_->setObjectName("projectedView");
+    worldWidget_->setMinimumSize(300, 300);
+    projectedWidget_->setMinimumSize(200, 200);
+
+    auto style = vtkSmartPointer<vtkInteractorStyleTrackballCamera>::New();
+    worldWindow_->GetInteractor()->SetInteractorStyle(style);
+    // The projected view is a fixed picture: no camera interaction.
+    projectedWindow_->GetInteractor()->SetInteractorStyle(nullptr);
+
+    painter_ = std::make_unique<ScenePainter>(worldRenderer_, projectedRenderer_);
+
+    // A click (press and release without moving) picks a vertex to trace;
+    // a drag moves the camera, which framing then keeps.
+    auto onInteraction = vtkSmartPointer<vtkCallbackCommand>::New();
+    onInteraction->SetClientData(this);
+    onInteraction->SetCallback([](vtkObject* caller, unsigned long event, void* data, void*) {
+        auto* self = static_cast<MainWindow*>(data);
+        auto* interactor = static_cast<vtkRenderWindowInteractor*>(caller);
+        static int pressX = 0, pressY = 0;
+        int x, y;
+        interactor->GetEventPosition(x, y);
+        if (event == vtkCommand::LeftButtonPressEvent) {
+            pressX = x;
+            pressY = y;
+        } else if (event == vtkCommand::LeftButtonReleaseEvent && std::abs(x - pressX) + std::abs(y - pressY) < 3) {
+            self->pickAt(x, y);
+        } else if (event == vtkCommand::EndInteractionEvent) {
+            self->painter_->rememberUserCamera();
+        }
+    });
+    vtkRenderWindowInteractor* interactor = worldWindow_->GetInteractor();
+    interactor->AddObserver(vtkCommand::LeftButtonPressEvent, onInteraction, 1.0);
+    interactor->AddObserver(vtkCommand::LeftButtonReleaseEvent, onInteraction, 1.0);
+    style->AddObserver(vtkCommand::EndInteractionEvent, onInteraction);
+
+    auto* splitter = new QSplitter(Qt::Horizontal);
+    splitter->addWidget(worldWidget_);
+    splitter->addWidget(projectedWidget_);
+    splitter->setStretchFactor(0, 5);
+    splitter->setStretchFactor(1, 3);
+    splitter->setSizes({500, 300});
+    setCentralWidget(splitter);
+}
+
+void MainWindow::buildDocks()
+{
+    auto* stepper = new QWidget;
+    auto* v = new QVBoxLayout(stepper);
+    stageList_ = new QListWidget;
+    stageList_->setObjectName("stageList");
+    stageList_->setWordWrap(true);
+    v->addWidget(stageList_);
+    slider_ = new QSlider(Qt::Horizontal);
+    slider_->setObjectName("stageSlider");
+    slider_->setPageStep(1);
+    v->addWidget(slider_);
+    auto* buttons = new QHBoxLayout;
+    auto* previous = new QPushButton(tr("◀ Previous"));
+    playButton_ = new QPushButton(tr("Play"));
+    auto* next = new QPushButton(tr("Next ▶"));
+    previous->setToolTip(tr("Previous stage (Left arrow)"));
+    next->setToolTip(tr("Next stage (Right arrow)"));
+    buttons->addWidget(previous);
+    buttons->addWidget(playButton_);
+    buttons->addWidget(next);
+    v->addLayout(buttons);
+
+    connect(stageList_, &QListWidget::currentRowChanged, this, [this](int row) {
+        if (row >= 0 && row != target_)
+            goToStage(row);
+    });
+    connect(slider_, &QSlider::valueChanged, this, [this](int value) {
+        if (value != target_)
+            goToStage(value);
+    });
+    connect(previous, &QPushButton::clicked, this, [this] { goToStage(target_ - 1); });
+    connect(next, &QPushButton::clicked, this, [this] { goToStage(target_ + 1); });
+    connect(playButton_, &QPushButton::clicked, this, [this] {
+        if (isAnimating())
+            goToStage(transition_->to(), false);
+        else
+            play();
+    });
+    auto* left = new QShortcut(QKeySequence(Qt::Key_Left), this);
+    auto* right = new QShortcut(QKeySequence(Qt::Key_Right), this);
+    connect(left, &QShortcut::activated, this, [this] { goToStage(target_ - 1); });
+    connect(right, &QShortcut::activated, this, [this] { goToStage(target_ + 1); });
+
+    auto dock = [this](const QString& title, const QString& name, QWidget* content, Qt::DockWidgetArea area) {
+        auto* scroll = new QScrollArea;
+        scroll->setWidget(content);
+        scroll->setWidgetResizable(true);
+        auto* d = new QDockWidget(title, this);
+        d->setObjectName(name);
+        d->setWidget(scroll);
+        addDockWidget(area, d);
+        return d;
+    };
+    QDockWidget* stagesDock = dock(tr("Stages"), "stagesDock", stepper, Qt::LeftDockWidgetArea);
+    matrices_ = new MatrixPanel;
+    QDockWidget* matrixDock = dock(tr("Matrices"), "matricesDock", matrices_, Qt::RightDockWidgetArea);
+    parameters_ = new ParameterPanel;
+    QDockWidget* parametersDock = dock(tr("Parameters"), "parametersDock", parameters_, Qt::RightDockWidgetArea);
+    // The 3D view gets the room: parameters share the right side with the matrices.
+    tabifyDockWidget(matrixDock, parametersDock);
+    matrixDock->raise();
+    resizeDocks({stagesDock, matrixDock}, {280, 430}, Qt::Horizontal);
+}
+
+void MainWindow::buildMenus()
+{
+    QMenu* file = menuBar()->addMenu(tr("&File"));
+    file->addAction(tr("&Open…"), this, [this] {
+        if (!confirmDiscard())
+            return;
+        const QString path = QFileDialog::getOpenFileName(this, tr("Open scene"), QString(), tr("Scenes (*.json)"));
+        if (!path.isEmpty())
+            openScene(path);
+    }, QKeySequence::Open);
+    presetMenu_ = file->addMenu(tr("&Presets"));
+    recentMenu_ = file->addMenu(tr("Open &Recent"));
+    file->addAction(tr("&Save"), this, [this] {
+        if (document_->filePath().isEmpty())
+            return;
+        saveScene(document_->filePath());
+    }, QKeySequence::Save);
+    file->addAction(tr("Save &As…"), this, [this] {
+        const QString path = QFileDialog::getSaveFileName(this, tr("Save scene"), document_->filePath(),
+                                                          tr("Scenes (*.json)"));
+        if (!path.isEmpty())
+            saveScene(path);
+    }, QKeySequence::SaveAs);
+    file->addSeparator();
+    file->addAction(tr("&Import Mesh…"), this, [this] {
+        const QString path = QFileDialog::getOpenFileName(this, tr("Import mesh"), QString(),
+                                                          tr("Meshes (*.obj *.ply *.stl)"));
+        if (!path.isEmpty())
+            importMesh(path);
+    });
+    file->addSeparator();
+    file->addAction(tr("&Quit"), this, &QWidget::close, QKeySequence::Quit);
+    rebuildPresetMenu();
+    rebuildRecentMenu();
+
+    QMenu* edit = menuBar()->addMenu(tr("&Edit"));
+    QAction* undo = document_->undoStack()->createUndoAction(this, tr("&Undo"));
+    undo->setShortcut(QKeySequence::Undo);
+    QAction* redo = document_->undoStack()->createRedoAction(this, tr("&Redo"));
+    redo->setShortcut(QKeySequence::Redo);
+    edit->addAction(undo);
+    edit->addAction(redo);
+
+    QMenu* view = menuBar()->addMenu(tr("&View"));
+    projectedAction_ = view->addAction(tr("&Projected View"), this, &MainWindow::setProjectedViewVisible);
+    projectedAction_->setCheckable(true);
+    projectedAction_->setChecked(true);
+    projectedAction_->setShortcut(QKeySequence(Qt::Key_P));
+    view->addAction(tr("&Reset View"), this, [this] {
+        painter_->resetView();
+        renderNow();
+    }, QKeySequence(Qt::Key_R));
+    view->addSeparator();
+    auto* themes = new QActionGroup(this);
+    QAction* dark = view->addAction(tr("&Dark Theme (screen)"), this, [this] { setTheme(Theme::Dark); });
+    QAction* light = view->addAction(tr("&Light Theme (slides, print)"), this, [this] { setTheme(Theme::Light); });
+    for (QAction* a : {dark, light}) {
+        a->setCheckable(true);
+        themes->addAction(a);
+    }
+    dark->setChecked(true);
+    view->addSeparator();
+    view->addAction(tr("&Larger Text"), this, [this] { setFontSize(fontSize_ + 2); }, QKeySequence::ZoomIn);
+    view->addAction(tr("&Smaller Text"), this, [this] { setFontSize(fontSize_ - 2); }, QKeySequence::ZoomOut);
+
+    QMenu* help = menuBar()->addMenu(tr("&Help"));
+    help->addAction(tr("&About ViewPipe"), this, [this] {
+        QMessageBox::about(this, tr("About ViewPipe"),
+                           tr("<b>ViewPipe</b><p>Step through the 3D viewing pipeline: Foley &amp; van Dam's "
+                              "normalizing transformation and the OpenGL forms.</p>"));
+    });
+}
+
+bool MainWindow::openScene(const QString& path)
+{
+    try {
+        // Build the picture first: a scene the painter cannot show is not opened.
+        const Scene scene = loadScene(path.toStdString());
+        painter_->setScene(scene);
+        document_->load(path);
+        addRecent(QFileInfo(path).absoluteFilePath());
+        painter_->resetView();
+        goToStage(0, false);
+        return true;
+    } catch (const InputError& e) {
+        // Restore the picture of the scene that stays open.
+        if (!document_->filePath().isEmpty() || !document_->scene().objects.empty())
+            onDocumentChanged();
+        showMessage(tr("Cannot open %1: %2").arg(path, QString::fromStdString(e.what())));
+        return false;
+    }
+}
+
+bool MainWindow::saveScene(const QString& path)
+{
+    try {
+        document_->save(path);
+        addRecent(QFileInfo(path).absoluteFilePath());
+        statusBar()->showMessage(tr("Saved %1").arg(path), 4000);
+        return true;
+    } catch (const InputError& e) {
+        showMessage(tr("Cannot save: %1").arg(QString::fromStdString(e.what())));
+        return false;
+    }
+}
+
+void MainWindow::onDocumentChanged()
+{
+    try {
+        painter_->setScene(document_->scene());
+    } catch (const InputError& e) {
+        showMessage(QString::fromStdString(e.what()));
+        return;
+    }
+    parameters_->setCamera(document_->scene().camera);
+    const auto& stages = document_->pipeline().stages;
+    const QSignalBlocker blockList(stageList_);
+    const QSignalBlocker blockSlider(slider_);
+    stageList_->clear();
+    stageList_->addItem(tr("0. World — the scene in world coordinates"));
+    for (std::size_t k = 0; k < stages.size(); ++k)
+        stageList_->addItem(stageLabel(stages[k], int(k) + 1));
+    slider_->setRange(0, stageCount());
+    animation_->stop();
+    transition_.reset();
+    stage_ = target_ = std::min(stage_, stageCount());
+    showRestingStage();
+    updateStageWidgets();
+    updateTitle();
+}
+
+void MainWindow::onCameraEdited(const CameraSpec<double>& camera, const QString& field)
+{
+    try {
+        document_->setCamera(camera, tr("Edit %1").arg(field));
+        parameters_->clearErrors();
+    } catch (const InputError& e) {
+        // The last valid picture stays; the reason goes next to the field.
+        parameters_->showError(QString::fromStdString(e.field()), QString::fromStdString(e.reason()));
+    }
+}
+
+int MainWindow::stageCount() const
+{
+    return int(document_->pipeline().stages.size());
+}
+
+bool MainWindow::isAnimating() const
+{
+    return animation_->state() == QAbstractAnimation::Running;
+}
+
+void MainWindow::goToStage(int stage, bool animate)
+{
+    target_ = std::clamp(stage, 0, stageCount());
+    if (!animate) {
+        animation_->stop();
+        transition_.reset();
+        stage_ = target_;
+        playButton_->setText(tr("Play"));
+        showRestingStage();
+        updateStageWidgets();
+        return;
+    }
+    stepMilliseconds_ = std::abs(target_ - stage_) > 1 ? 600 : 1000;
+    if (!isAnimating() && target_ != stage_)
+        startStep(); // a running step carries on, then heads for the new target
+    updateStageWidgets();
+}
+
+void MainWindow::play()
+{
+    if (stage_ >= stageCount())
+        goToStage(0, false);
+    target_ = stageCount();
+    stepMilliseconds_ = 1000;
+    playButton_->setText(tr("Stop"));
+    startStep();
+    updateStageWidgets();
+}
+
+void MainWindow::startStep()
+{
+    const int next = stage_ + (target_ > stage_ ? 1 : -1);
+    transition_ = std::make_unique<StageTransition>(*painter_, document_->pipeline().stages, stage_, next);
+    animation_->setDuration(stepMilliseconds_);
+    animation_->start();
+}
+
+void MainWindow::showRestingStage()
+{
+    StageTransition::showStage(*painter_, document_->pipeline().stages, stage_);
+    renderNow();
+}
+
+void MainWindow::updateStageWidgets()
+{
+    const QSignalBlocker blockList(stageList_);
+    const QSignalBlocker blockSlider(slider_);
+    stageList_->setCurrentRow(target_);
+    slider_->setValue(target_);
+    const auto& stages = document_->pipeline().stages;
+    const QString shown = stage_ == 0 ? tr("World coordinates")
+                                      : tr("After %1").arg(QString::fromStdString(stages[std::size_t(stage_ - 1)].symbol));
+    painter_->setCaptions(shown.toStdString(), tr("What the camera sees").toStdString());
+    matrices_->showStage(document_->pipeline(), stage_);
+    matrices_->showTrace(document_->pipeline(), traced_, stage_);
+}
+
+void MainWindow::renderNow()
+{
+    worldWindow_->Render();
+    if (projectedWidget_->isVisible())
+        projectedWindow_->Render();
+    worldWidget_->update();
+    projectedWidget_->update();
+}
+
+void MainWindow::setTheme(Theme theme)
+{
+    painter_->setTheme(theme);
+    applyTheme(theme);
+    QSettings().setValue("theme", theme == Theme::Light ? "light" : "dark");
+    renderNow();
+}
+
+void MainWindow::setFontSize(int points)
+{
+    fontSize_ = std::clamp(points, 7, 40);
+    QFont font = QApplication::font();
+    font.setPointSize(fontSize_);
+    QApplication::setFont(font);
+    painter_->setFontSize(int(std::lround(fontSize_ * 1.6)));
+    QSettings().setValue("fontSize", fontSize_);
+    renderNow();
+}
+
+void MainWindow::setProjectedViewVisible(bool visible)
+{
+    projectedWidget_->setVisible(visible);
+    projectedAction_->setChecked(visible);
+    renderNow();
+}
+
+void MainWindow::updateTitle()
+{
+    const QString name = document_->filePath().isEmpty() ? tr("untitled") : QFileInfo(document_->filePath()).fileName();
+    setWindowTitle(QString("%1%2 — ViewPipe").arg(name, document_->isModified() ? "*" : ""));
+}
+
+void MainWindow::showMessage(const QString& text)
+{
+    statusBar()->showMessage(text, 10000);
+    if (isVisible() && !QApplication::arguments().contains("--screenshot"))
+        QMessageBox::warning(this, tr("ViewPipe"), text);
+}
+
+bool MainWindow::confirmDiscard()
+{
+    if (!document_->isModified())
+        return true;
+    const auto answer = QMessageBox::question(this, tr("Unsaved changes"),
+                                              tr("The scene has unsaved changes. Save them first?"),
+                                              QMessageBox::Save | QMessageBox::Discard | QMessageBox::Cancel);
+    if (answer == QMessageBox::Save)
+        return !document_->filePath().isEmpty() && saveScene(document_->filePath());
+    return answer == QMessageBox::Discard;
+}
+
+void MainWindow::closeEvent(QCloseEvent* event)
+{
+    if (confirmDiscard())
+        event->accept();
+    else
+        event->ignore();
+}
+
+void MainWindow::importMesh(const QString& path)
+{
+    SceneObject object;
+    object.type = ObjectType::Mesh;
+    object.resolvedPath = QFileInfo(path).absoluteFilePath().toStdString();
+    object.path = object.resolvedPath.string();
+    try {
+        Scene candidate = document_->scene();
+        candidate.objects.push_back(object);
+        painter_->setScene(candidate); // reads the mesh: refuses what VTK cannot read
+        document_->addObject(object, tr("Import %1").arg(QFileInfo(path).fileName()));
+    } catch (const InputError& e) {
+        onDocumentChanged();
+        showMessage(tr("Cannot import %1: %2").arg(path, QString::fromStdString(e.reason())));
+    }
+}
+
+void MainWindow::dragEnterEvent(QDragEnterEvent* event)
+{
+    if (event->mimeData()->hasUrls())
+        event->acceptProposedAction();
+}
+
+void MainWindow::dropEvent(QDropEvent* event)
+{
+    for (const QUrl& url : event->mimeData()->urls()) {
+        const QString path = url.toLocalFile();
+        const QString suffix = QFileInfo(path).suffix().toLower();
+        if (suffix == "json") {
+            if (confirmDiscard())
+                openScene(path);
+        } else if (suffix == "obj" || suffix == "ply" || suffix == "stl") {
+            importMesh(path);
+        }
+    }
+}
+
+void MainWindow::addRecent(const QString& path)
+{
+    QSettings settings;
+    QStringList recent = settings.value("recentFiles").toStringList();
+    recent.removeAll(path);
+    recent.prepend(path);
+    while (recent.size() > kMaxRecent)
+        recent.removeLast();
+    settings.setValue("recentFiles", recent);
+    rebuildRecentMenu();
+}
+
+void MainWindow::rebuildRecentMenu()
+{
+    recentMenu_->clear();
+    const QStringList recent = QSettings().value("recentFiles").toStringList();
+    for (const QString& path : recent)
+        recentMenu_->addAction(path, this, [this, path] {
+            if (confirmDiscard())
+                openScene(path);
+        });
+    recentMenu_->setEnabled(!recent.isEmpty());
+}
+
+void MainWindow::rebuildPresetMenu()
+{
+    presetMenu_->clear();
+    const QDir scenes(scenesDirectory());
+    for (const QFileInfo& info : scenes.entryInfoList({"*.json"}, QDir::Files, QDir::Name)) {
+        const QString path = info.absoluteFilePath();
+        QString title = info.completeBaseName();
+        try {
+            title = QString::fromStdString(loadScene(path.toStdString()).name);
+        } catch (const InputError&) {
+            continue; // a broken preset is not offered
+        }
+        presetMenu_->addAction(title, this, [this, path] {
+            if (confirmDiscard())
+                openScene(path);
+        });
+    }
+}
+
+void MainWindow::pickAt(int x, int y)
+{
+    traced_ = painter_->pickVertex(x, y);
+    matrices_->showTrace(document_->pipeline(), traced_, stage_);
+}
+
+} // namespace viewpipe::gui

@@ -1,0 +1,113 @@
+#pragma once
+
+// The main window: the world view and the projected view, the stage stepper,
+// the matrix panel and the parameter panel. Slots forward user intent to the
+// Document or the stepper and re-render; the math is in core.
+
+#include <QMainWindow>
+#include <QPointer>
+
+#include <memory>
+#include <optional>
+
+#include "Document.h"
+#include "painter/ScenePainter.h"
+#include "painter/StageTransition.h"
+
+class QAction;
+class QLabel;
+class QListWidget;
+class QMenu;
+class QPushButton;
+class QSlider;
+class QVariantAnimation;
+class QVTKOpenGLNativeWidget;
+class vtkGenericOpenGLRenderWindow;
+class vtkRenderer;
+
+namespace viewpipe::gui {
+
+class MatrixPanel;
+class ParameterPanel;
+
+class MainWindow : public QMainWindow {
+    Q_OBJECT
+public:
+    explicit MainWindow(QWidget* parent = nullptr);
+    ~MainWindow() override;
+
+    // Opens a scene file; on failure shows the reason and keeps the current scene.
+    bool openScene(const QString& path);
+    bool saveScene(const QString& path);
+
+    // Stage 0 is the world; stage k is after the k-th matrix. With
+    // animate = false the picture jumps there (screenshots, tests).
+    void goToStage(int stage, bool animate = true);
+    // Plays every stage from the current one (from the world at the end).
+    void play();
+    int stage() const { return stage_; }
+    int stageCount() const;
+    bool isAnimating() const;
+
+    void setTheme(Theme theme);
+    void setFontSize(int points);
+    void setProjectedViewVisible(bool visible);
+    void renderNow();
+
+    Document* document() { return document_; }
+    ParameterPanel* parameters() { return parameters_; }
+    MatrixPanel* matrices() { return matrices_; }
+    ScenePainter* painter() { return painter_.get(); }
+    QListWidget* stageList() { return stageList_; }
+
+protected:
+    void closeEvent(QCloseEvent* event) override;
+    void dragEnterEvent(QDragEnterEvent* event) override;
+    void dropEvent(QDropEvent* event) override;
+
+private:
+    void buildViews();
+    void buildDocks();
+    void buildMenus();
+    void onDocumentChanged();
+    void onCameraEdited(const CameraSpec<double>& camera, const QString& field);
+    void startStep();
+    void showRestingStage();
+    void updateStageWidgets();
+    void updateTitle();
+    void showMessage(const QString& text);
+    bool confirmDiscard();
+    void importMesh(const QString& path);
+    void addRecent(const QString& path);
+    void rebuildRecentMenu();
+    void rebuildPresetMenu();
+    void pickAt(int x, int y);
+
+    Document* document_;
+    std::unique_ptr<ScenePainter> painter_;
+    QVTKOpenGLNativeWidget* worldWidget_ = nullptr;
+    QVTKOpenGLNativeWidget* projectedWidget_ = nullptr;
+    vtkGenericOpenGLRenderWindow* worldWindow_ = nullptr;
+    vtkGenericOpenGLRenderWindow* projectedWindow_ = nullptr;
+    vtkRenderer* worldRenderer_ = nullptr;
+    vtkRenderer* projectedRenderer_ = nullptr;
+
+    QListWidget* stageList_ = nullptr;
+    QSlider* slider_ = nullptr;
+    QPushButton* playButton_ = nullptr;
+    MatrixPanel* matrices_ = nullptr;
+    ParameterPanel* parameters_ = nullptr;
+    QVariantAnimation* animation_ = nullptr;
+    QMenu* recentMenu_ = nullptr;
+    QMenu* presetMenu_ = nullptr;
+    QAction* projectedAction_ = nullptr;
+
+    int stage_ = 0;  // where the picture is, or where the running step started
+    int target_ = 0; // where the stepper is going
+    int stepMilliseconds_ = 1000;
+    std::unique_ptr<StageTransition> transition_;
+    std::optional<Vec3<double>> traced_;
+    int fontSize_ = 11;
+};
+
+} // namespace viewpipe::gui

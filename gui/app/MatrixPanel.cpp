@@ -1,0 +1,127 @@
+#include "MatrixPanel.h"
+
+#include <QLabel>
+#include <QScrollArea>
+#include <QVBoxLayout>
+
+#include "StageSymbols.h"
+
+namespace viewpipe::gui {
+namespace {
+
+QString number(double x)
+{
+    if (x == 0)
+        x = 0; // no "-0"
+    return QString::number(x, 'g', 5);
+}
+
+QString table(const QString& caption, const std::array<QString, 16>& cells, const std::array<bool, 16>& highlight = {})
+{
+    QString html = "<table cellspacing='0' cellpadding='3' style='margin-bottom:8px'><tr><td colspan='4'><b>" +
+                   caption + "</b></td></tr>";
+    for (int r = 0; r < 4; ++r) {
+        html += "<tr>";
+        for (int c = 0; c < 4; ++c) {
+            const bool h = highlight[std::size_t(r * 4 + c)];
+            html += QString("<td align='right' style='%1'>%2</td>")
+                        .arg(h ? "background-color:#f2c14e; color:black; font-weight:bold;" : "")
+                        .arg(cells[std::size_t(r * 4 + c)].toHtmlEscaped());
+        }
+        html += "</tr>";
+    }
+    return html + "</table>";
+}
+
+std::array<QString, 16> numbers(const Mat4<double>& m)
+{
+    std::array<QString, 16> cells;
+    for (int r = 0; r < 4; ++r)
+        for (int c = 0; c < 4; ++c)
+            cells[std::size_t(r * 4 + c)] = number(m(r, c));
+    return cells;
+}
+
+} // namespace
+
+MatrixPanel::MatrixPanel(QWidget* parent) : QWidget(parent)
+{
+    auto* layout = new QVBoxLayout(this);
+    title_ = new QLabel;
+    title_->setWordWrap(true);
+    title_->setObjectName("stageTitle");
+    matrices_ = new QLabel;
+    matrices_->setTextFormat(Qt::RichText);
+    matrices_->setObjectName("matrices");
+    trace_ = new QLabel(tr("Click a vertex of an object to trace it through the stages."));
+    trace_->setTextFormat(Qt::RichText);
+    trace_->setWordWrap(true);
+    trace_->setObjectName("trace");
+    layout->addWidget(title_);
+    layout->addWidget(matrices_);
+    layout->addWidget(trace_);
+    layout->addStretch();
+}
+
+void MatrixPanel::showStage(const Pipeline<double>& pipeline, int stage)
+{
+    const std::vector<Mat4<double>> cumulative = cumulativeProducts(pipeline.stages);
+    if (stage <= 0) {
+        title_->setText(tr("<b>World</b>: the scene in world coordinates (WRC), before any transformation."));
+        matrices_->setText(table(tr("Cumulative"), numbers(Mat4<double>::Identity())));
+        return;
+    }
+    const Stage<double>& s = pipeline.stages[std::size_t(stage - 1)];
+    title_->setText(QString("<b>%1. %2</b> — %3").arg(stage).arg(QString::fromStdString(s.symbol).toHtmlEscaped(),
+                                                                   QString::fromStdString(s.explanation)));
+    const Mat4<double>& now = cumulative[std::size_t(stage - 1)];
+    const Mat4<double> before = stage >= 2 ? cumulative[std::size_t(stage - 2)] : Mat4<double>::Identity();
+    std::array<bool, 16> changed{};
+    for (int r = 0; r < 4; ++r)
+        for (int c = 0; c < 4; ++c)
+            changed[std::size_t(r * 4 + c)] =
+                std::abs(now(r, c) - before(r, c)) > 1e-12 * std::max(1.0, std::abs(before(r, c)));
+    const QString symbol = QString::fromStdString(s.symbol);
+    QString html;
+    const SymbolicForm symbolic = symbolicMatrix(symbol);
+    if (!symbolic.cells[0].isEmpty()) {
+        html += table(symbol + tr(" (symbolic)"), symbolic.cells);
+        for (const QString& note : symbolic.notes)
+            html += "<div style='margin-bottom:4px'><i>" + note.toHtmlEscaped() + "</i></div>";
+    }
+    html += table(symbol, numbers(s.matrix));
+    html += table(tr("Cumulative (changed entries highlighted)"), numbers(now), changed);
+    matrices_->setText(html);
+}
+
+void MatrixPanel::showTrace(const Pipeline<double>& pipeline, const std::optional<Vec3<double>>& point, int stage)
+{
+    if (!point) {
+        trace_->setText(tr("Click a vertex of an object to trace it through the stages."));
+        return;
+    }
+    const PointTrace<double> t = tracePoint(pipeline, *point);
+    auto row = [](const QString& name, const Vec4<double>& p, bool current) {
+        return QString("<tr%1><td>%2</td><td align='right'>%3</td><td align='right'>%4</td><td align='right'>%5</td>"
+                       "<td align='right'>%6</td></tr>")
+            .arg(current ? " style='font-weight:bold'" : "", name.toHtmlEscaped(), number(p.x()), number(p.y()),
+                 number(p.z()), number(p.w()));
+    };
+    QString html = tr("<b>Traced vertex</b> (x, y, z, w):<table cellspacing='0' cellpadding='2'>");
+    html += row(tr("world"), point->homogeneous(), stage == 0);
+    for (std::size_t k = 0; k < pipeline.stages.size(); ++k)
+        html += row(QString::fromStdString(pipeline.stages[k].symbol), t.afterStage[k], int(k) + 1 == stage);
+    html += "</table>";
+    if (t.divided)
+        html += tr("After the divide: (%1, %2, %3); ").arg(number(t.divided->x()), number(t.divided->y()),
+                                                         number(t.divided->z()));
+    html += t.inside ? tr("inside the canonical volume.") : tr("outside the canonical volume.");
+    trace_->setText(html);
+}
+
+QString MatrixPanel::stageText() const
+{
+    return title_->text();
+}
+
+} // namespace viewpipe::gui

@@ -1,0 +1,34 @@
+#pragma once
+
+// The current stage's matrix, symbolic and in numbers, and the cumulative
+// matrix with the entries this stage changed highlighted; below, the point
+// tracer: a picked vertex's homogeneous coordinates after every stage.
+
+#include <QWidget>
+
+#include <optional>
+
+#include "viewpipe/pipeline.hpp"
+
+class QLabel;
+
+namespace viewpipe::gui {
+
+class MatrixPanel : public QWidget {
+    Q_OBJECT
+public:
+    explicit MatrixPanel(QWidget* parent = nullptr);
+
+    // stage 0 is the world (no matrix yet); stage k shows pipeline.stages[k-1].
+    void showStage(const Pipeline<double>& pipeline, int stage);
+    void showTrace(const Pipeline<double>& pipeline, const std::optional<Vec3<double>>& point, int stage);
+
+    QString stageText() const;
+
+private:
+    QLabel* title_;
+    QLabel* matrices_;
+    QLabel* trace_;
+};
+
+} // namespace viewpipe::gui

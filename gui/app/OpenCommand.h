@@ -1,0 +1,22 @@
+#pragma once
+
+// `viewpipe open`: the desktop app, or, with a screenshot file, one rendered
+// picture of the whole window at a given stage.
+
+#include <optional>
+#include <string>
+
+namespace viewpipe::gui {
+
+struct OpenOptions {
+    std::string scene;          // empty: the built-in default scene
+    int stage = 0;
+    std::string screenshot;     // empty: interactive
+    int width = 1600, height = 950;
+    std::optional<std::string> theme; // "dark" or "light"; default: the user's setting
+};
+
+// Returns the process exit code. Throws InputError for bad input.
+int runOpen(int argc, char** argv, const OpenOptions& options);
+
+} // namespace viewpipe::gui

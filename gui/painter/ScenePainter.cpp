@@ -1,0 +1,675 @@
+#include "ScenePainter.h"
+
+#include <vtkActor.h>
+#include <vtkBillboardTextActor3D.h>
+#include <vtkCallbackCommand.h>
+#include <vtkCamera.h>
+#include <vtkCellArray.h>
+#include <vtkCellData.h>
+#include <vtkCommand.h>
+#include <vtkConeSource.h>
+#include <vtkOBJReader.h>
+#include <vtkPLYReader.h>
+#include <vtkPointData.h>
+#include <vtkPointPicker.h>
+#include <vtkPolyDataAlgorithm.h>
+#include <vtkPoints.h>
+#include <vtkPolyData.h>
+#include <vtkPolyDataMapper.h>
+#include <vtkProperty.h>
+#include <vtkPropCollection.h>
+#include <vtkRenderer.h>
+#include <vtkSTLReader.h>
+#include <vtkSphereSource.h>
+#include <vtkTextActor.h>
+#include <vtkTextProperty.h>
+
+#include <algorithm>
+#include <cmath>
+
+#include "EigenVtk.h"
+#include "viewpipe/geometry.hpp"
+
+namespace viewpipe::gui {
+
+struct ScenePainter::Layer {
+    Element element;
+    bool surface;
+    double opacity;
+    vtkSmartPointer<vtkPolyData> original; // world coordinates
+    vtkSmartPointer<vtkPolyData> shown;    // through the cumulative matrix
+    vtkSmartPointer<vtkActor> actor;
+};
+
+struct ScenePainter::Label {
+    Element element;
+    Vec3<double> world;
+    vtkSmartPointer<vtkBillboardTextActor3D> actor;
+};
+
+namespace {
+
+using Segment = std::pair<Vec3<double>, Vec3<double>>;
+
+vtkSmartPointer<vtkPolyData> linesData(const std::vector<Segment>& segments)
+{
+    auto points = vtkSmartPointer<vtkPoints>::New();
+    points->SetDataTypeToDouble();
+    auto lines = vtkSmartPointer<vtkCellArray>::New();
+    for (const Segment& s : segments) {
+        const vtkIdType a = points->InsertNextPoint(s.first.data());
+        const vtkIdType b = points->InsertNextPoint(s.second.data());
+        const vtkIdType ids[2] = {a, b};
+        lines->InsertNextCell(2, ids);
+    }
+    auto data = vtkSmartPointer<vtkPolyData>::New();
+    data->SetPoints(points);
+    data->SetLines(lines);
+    return data;
+}
+
+vtkSmartPointer<vtkPolyData> facesData(const PolygonMesh& mesh)
+{
+    auto points = vtkSmartPointer<vtkPoints>::New();
+    points->SetDataTypeToDouble();
+    for (const Vec3<double>& v : mesh.vertices)
+        points->InsertNextPoint(v.data());
+    auto polys = vtkSmartPointer<vtkCellArray>::New();
+    for (const std::vector<int>& face : mesh.faces) {
+        std::vector<vtkIdType> ids(face.begin(), face.end());
+        polys->InsertNextCell(vtkIdType(ids.size()), ids.data());
+    }
+    auto data = vtkSmartPointer<vtkPolyData>::New();
+    data->SetPoints(points);
+    data->SetPolys(polys);
+    return data;
+}
+
+std::vector<Segment> meshEdges(const PolygonMesh& mesh)
+{
+    std::vector<Segment> edges;
+    std::vector<std::pair<int, int>> seen;
+    for (const std::vector<int>& face : mesh.faces)
+        for (std::size_t k = 0; k < face.size(); ++k) {
+            const int a = face[k], b = face[(k + 1) % face.size()];
+            const std::pair<int, int> key(std::min(a, b), std::max(a, b));
+            if (std::find(seen.begin(), seen.end(), key) != seen.end())
+                continue;
+            seen.push_back(key);
+            edges.emplace_back(mesh.vertices[a], mesh.vertices[b]);
+        }
+    return edges;
+}
+
+PolygonMesh quad(const Vec3<double>& a, const Vec3<double>& b, const Vec3<double>& c, const Vec3<double>& d)
+{
+    return {{a, b, c, d}, {{0, 1, 2, 3}}};
+}
+
+// The segment that spans collinear points.
+Segment span(const std::vector<Vec3<double>>& points)
+{
+    const Vec3<double> direction = (points.back() - points.front()).normalized();
+    auto along = [&](const Vec3<double>& p) { return (p - points.front()).dot(direction); };
+    const auto [lo, hi] = std::minmax_element(points.begin(), points.end(),
+                                              [&](const auto& a, const auto& b) { return along(a) < along(b); });
+    return {*lo, *hi};
+}
+
+vtkSmartPointer<vtkPolyData> readMesh(const SceneObject& object, std::size_t index)
+{
+    const std::string file = object.resolvedPath.string();
+    std::string extension = object.resolvedPath.extension().string();
+    std::transform(extension.begin(), extension.end(), extension.begin(), ::tolower);
+    vtkSmartPointer<vtkPolyDataAlgorithm> reader;
+    if (extension == ".obj") {
+        auto r = vtkSmartPointer<vtkOBJReader>::New();
+        r->SetFileName(file.c_str());
+        reader = r;
+    } else if (extension == ".ply") {
+        auto r = vtkSmartPointer<vtkPLYReader>::New();
+        r->SetFileName(file.c_str());
+        reader = r;
+    } else {
+        auto r = vtkSmartPointer<vtkSTLReader>::New();
+        r->SetFileName(file.c_str());
+        reader = r;
+    }
+    reader->SetGlobalWarningDisplay(0);
+    reader->Update();
+    vtkPolyData* output = reader->GetOutput();
+    if (!output || output->GetNumberOfPoints() == 0 || output->GetNumberOfCells() == 0)
+        throw InputError("objects[" + std::to_string(index) + "].path",
+                         "cannot be read as a mesh (\"" + file + "\" holds no polygons VTK can read)");
+    auto copy = vtkSmartPointer<vtkPolyData>::New();
+    copy->ShallowCopy(output);
+    // Drop data arrays (normals, texture coordinates): the painter moves points only.
+    copy->GetPointData()->Initialize();
+    copy->GetCellData()->Initialize();
+    auto points = vtkSmartPointer<vtkPoints>::New();
+    points->SetDataTypeToDouble();
+    points->DeepCopy(output->GetPoints());
+    copy->SetPoints(points);
+    for (vtkIdType i = 0; i < points->GetNumberOfPoints(); ++i) {
+        const double* p = points->GetPoint(i);
+        if (!std::isfinite(p[0]) || !std::isfinite(p[1]) || !std::isfinite(p[2]))
+            throw InputError("objects[" + std::to_string(index) + "].path",
+                             "the mesh has a vertex that is not finite (vertex " + std::to_string(i) + ")");
+    }
+    return copy;
+}
+
+// Calls `visit` with each point through `m` and the divide. Returns false,
+// stopping early, when a point has no image (behind the eye, on the eye
+// plane, or not finite): its element is then hidden, never drawn as NaN.
+std::optional<Vec3<double>> project(const Mat4<double>& m, const Vec3<double>& p)
+{
+    const Vec4<double> h = m * p.homogeneous();
+    if (!(h.w() > 1e-9 * h.head<3>().cwiseAbs().maxCoeff()) || !h.allFinite())
+        return std::nullopt;
+    return Vec3<double>(h.head<3>() / h.w());
+}
+
+template <class Visit> bool projectPoints(vtkPoints* points, const Mat4<double>& m, Visit&& visit)
+{
+    for (vtkIdType i = 0; i < points->GetNumberOfPoints(); ++i) {
+        const double* p = points->GetPoint(i);
+        const std::optional<Vec3<double>> q = project(m, Vec3<double>(p[0], p[1], p[2]));
+        if (!q)
+            return false;
+        visit(i, *q);
+    }
+    return true;
+}
+
+vtkSmartPointer<vtkPolyData> sourceOutput(vtkPolyDataAlgorithm* source)
+{
+    source->Update();
+    auto data = vtkSmartPointer<vtkPolyData>::New();
+    data->DeepCopy(source->GetOutput());
+    data->GetPointData()->Initialize();
+    auto points = vtkSmartPointer<vtkPoints>::New();
+    points->SetDataTypeToDouble();
+    points->DeepCopy(data->GetPoints());
+    data->SetPoints(points);
+    return data;
+}
+
+vtkSmartPointer<vtkPolyData> sphere(const Vec3<double>& center, double radius)
+{
+    auto source = vtkSmartPointer<vtkSphereSource>::New();
+    source->SetCenter(center.data());
+    source->SetRadius(radius);
+    source->SetThetaResolution(16);
+    source->SetPhiResolution(12);
+    return sourceOutput(source);
+}
+
+vtkSmartPointer<vtkPolyData> arrowHead(const Vec3<double>& tip, const Vec3<double>& direction, double length)
+{
+    auto source = vtkSmartPointer<vtkConeSource>::New();
+    const Vec3<double> d = direction.normalized();
+    const Vec3<double> center = tip - d * (length / 2);
+    source->SetCenter(center.data());
+    source->SetDirection(d.data());
+    source->SetHeight(length);
+    source->SetRadius(length * 0.3);
+    source->SetResolution(20);
+    return sourceOutput(source);
+}
+
+// Foley's canonical parallel volume (z in [-1, 0]) to OpenGL's NDC cube, so
+// that VTK's camera can show what a Foley view sees: z_gl = -2 z - w.
+Mat4<double> foleyToGlClip()
+{
+    Mat4<double> d = Mat4<double>::Identity();
+    d(2, 2) = -2;
+    d(2, 3) = -1;
+    return d;
+}
+
+} // namespace
+
+ScenePainter::ScenePainter(vtkRenderer* world, vtkRenderer* projected)
+    : world_(world), projected_(projected), worldCaption_(vtkSmartPointer<vtkTextActor>::New()),
+      projectedCaption_(vtkSmartPointer<vtkTextActor>::New())
+{
+    for (vtkTextActor* caption : {worldCaption_.GetPointer(), projectedCaption_.GetPointer()}) {
+        caption->GetPositionCoordinate()->SetCoordinateSystemToNormalizedViewport();
+        caption->SetPosition(0.02, 0.96);
+        caption->GetTextProperty()->SetVerticalJustificationToTop();
+        caption->GetTextProperty()->SetBold(true);
+        caption->SetPickable(false);
+    }
+    world_->AddActor2D(worldCaption_);
+    frameAxes_ = vtkSmartPointer<vtkActor>::New();
+    auto frameMapper = vtkSmartPointer<vtkPolyDataMapper>::New();
+    frameMapper->SetInputData(linesData({}));
+    frameAxes_->SetMapper(frameMapper);
+    frameAxes_->GetProperty()->LightingOff();
+    frameAxes_->SetPickable(false);
+    world_->AddActor(frameAxes_);
+    if (projected_)
+        projected_->AddActor2D(projectedCaption_);
+    applyStyle();
+}
+
+ScenePainter::~ScenePainter()
+{
+    clear();
+}
+
+Rgb ScenePainter::color(Element element, Theme theme)
+{
+    const bool dark = theme == Theme::Dark;
+    switch (element) {
+    case Element::Objects: return dark ? Rgb{0.92, 0.92, 0.95} : Rgb{0.10, 0.10, 0.15};
+    case Element::WorldAxes: return dark ? Rgb{0.75, 0.75, 0.75} : Rgb{0.35, 0.35, 0.35};
+    case Element::ViewAxes: return dark ? Rgb{1.00, 0.60, 0.10} : Rgb{0.85, 0.40, 0.00};
+    case Element::Prp: return dark ? Rgb{1.00, 0.85, 0.20} : Rgb{0.70, 0.50, 0.00};
+    case Element::Window: return dark ? Rgb{0.30, 0.75, 1.00} : Rgb{0.00, 0.40, 0.80};
+    case Element::Dop: return dark ? Rgb{1.00, 0.35, 0.35} : Rgb{0.80, 0.10, 0.10};
+    case Element::Volume: return dark ? Rgb{0.55, 0.65, 1.00} : Rgb{0.35, 0.45, 0.85};
+    case Element::FrontPlane: return dark ? Rgb{0.35, 0.90, 0.45} : Rgb{0.10, 0.60, 0.20};
+    case Element::BackPlane: return dark ? Rgb{0.95, 0.45, 0.75} : Rgb{0.75, 0.15, 0.50};
+    case Element::Projectors: return dark ? Rgb{0.60, 0.60, 0.65} : Rgb{0.55, 0.55, 0.60};
+    case Element::Canonical: return dark ? Rgb{1.00, 1.00, 1.00} : Rgb{0.00, 0.00, 0.00};
+    case Element::Frame: return dark ? Rgb{0.38, 0.40, 0.45} : Rgb{0.72, 0.72, 0.76};
+    }
+    return {1, 1, 1};
+}
+
+void ScenePainter::clear()
+{
+    for (const Layer& layer : layers_)
+        world_->RemoveActor(layer.actor);
+    for (const Label& label : labels_)
+        world_->RemoveActor(label.actor);
+    if (projected_)
+        for (const auto& actor : projectedActors_)
+            projected_->RemoveActor(actor);
+    layers_.clear();
+    labels_.clear();
+    projectedActors_.clear();
+}
+
+void ScenePainter::addLayer(Element element, vtkSmartPointer<vtkPolyData> geometry, bool surface, double opacity)
+{
+    Layer layer{element, surface, opacity, geometry, vtkSmartPointer<vtkPolyData>::New(), vtkSmartPointer<vtkActor>::New()};
+    layer.shown->DeepCopy(geometry);
+    auto mapper = vtkSmartPointer<vtkPolyDataMapper>::New();
+    mapper->SetInputData(layer.shown);
+    layer.actor->SetMapper(mapper);
+    layer.actor->GetProperty()->LightingOff();
+    layer.actor->SetPickable(element == Element::Objects);
+    world_->AddActor(layer.actor);
+    layers_.push_back(layer);
+}
+
+void ScenePainter::addLabel(Element element, const std::string& text, const Vec3<double>& world)
+{
+    Label label{element, world, vtkSmartPointer<vtkBillboardTextActor3D>::New()};
+    if (text.empty())
+        return;
+    label.actor->SetInput(text.c_str());
+    label.actor->SetPosition(world.x(), world.y(), world.z());
+    label.actor->SetPickable(false);
+    label.actor->GetTextProperty()->SetBold(true);
+    label.actor->GetTextProperty()->SetJustificationToLeft();
+    label.actor->GetTextProperty()->SetVerticalJustificationToBottom();
+    world_->AddActor(label.actor);
+    labels_.push_back(label);
+}
+
+void ScenePainter::setScene(const Scene& scene)
+{
+    const Pipeline<double> pipeline = buildPipeline(scene.camera);
+    const ViewSetup<double> setup = viewSetup(scene.camera);
+
+    // Read everything first: a mesh that fails leaves the previous picture.
+    std::vector<std::pair<vtkSmartPointer<vtkPolyData>, std::vector<Segment>>> objects;
+    for (std::size_t i = 0; i < scene.objects.size(); ++i) {
+        const SceneObject& object = scene.objects[i];
+        if (object.type == ObjectType::Mesh) {
+            objects.emplace_back(readMesh(object, i), std::vector<Segment>{});
+        } else {
+            const PolygonMesh mesh =
+                object.type == ObjectType::House ? houseMesh() : boxMesh(object.min, object.max);
+            objects.emplace_back(facesData(mesh), meshEdges(mesh));
+        }
+    }
+    clear();
+
+    // The size of the set-up, for axis lengths and markers.
+    Eigen::AlignedBox<double, 3> box;
+    for (const Vec3<double>& p : setup.volume)
+        box.extend(p);
+    box.extend(setup.prp);
+    box.extend(setup.origin);
+    for (const auto& object : objects) {
+        double b[6];
+        object.first->GetBounds(b);
+        box.extend(Vec3<double>(b[0], b[2], b[4]));
+        box.extend(Vec3<double>(b[1], b[3], b[5]));
+    }
+    const double size = box.diagonal().norm();
+    const double axis = 0.15 * size;
+    const double worldAxis = 1.5 * axis; // longer than the VRC axes, which may start at the same point
+    const double marker = 0.008 * size;
+
+    for (const auto& [faces, edges] : objects) {
+        addLayer(Element::Objects, faces, true, 0.35);
+        if (!edges.empty())
+            addLayer(Element::Objects, linesData(edges), false, 1.0);
+    }
+
+    const Vec3<double> o = Vec3<double>::Zero();
+    addLayer(Element::WorldAxes,
+             linesData({{o, Vec3<double>::UnitX() * worldAxis}, {o, Vec3<double>::UnitY() * worldAxis}, {o, Vec3<double>::UnitZ() * worldAxis}}),
+             false, 1.0);
+    addLabel(Element::WorldAxes, "x", Vec3<double>::UnitX() * worldAxis);
+    addLabel(Element::WorldAxes, "y", Vec3<double>::UnitY() * worldAxis);
+    addLabel(Element::WorldAxes, "z", Vec3<double>::UnitZ() * worldAxis);
+
+    const bool foley = pipeline.convention == Convention::Foley;
+    const Vec3<double>& vrp = setup.origin;
+    addLayer(Element::ViewAxes,
+             linesData({{vrp, vrp + setup.axes.u * axis}, {vrp, vrp + setup.axes.v * axis}, {vrp, vrp + setup.axes.n * axis}}),
+             false, 1.0);
+    addLabel(Element::ViewAxes, foley ? "u" : "s", vrp + setup.axes.u * axis);
+    addLabel(Element::ViewAxes, foley ? "v" : "u", vrp + setup.axes.v * axis);
+    addLabel(Element::ViewAxes, foley ? "n" : "-f", vrp + setup.axes.n * axis);
+    if (foley)
+        addLabel(Element::ViewAxes, "VRP", vrp);
+
+    const bool showCenter = setup.perspective;
+    if (showCenter) {
+        addLayer(Element::Prp, sphere(setup.prp, 1.6 * marker), true, 1.0);
+        addLabel(Element::Prp, foley ? "PRP" : "eye", setup.prp);
+    }
+
+    std::vector<Segment> window;
+    for (std::size_t k = 0; k < 4; ++k)
+        window.emplace_back(setup.window[k], setup.window[(k + 1) % 4]);
+    addLayer(Element::Window, linesData(window), false, 1.0);
+    addLayer(Element::Window, sphere(setup.windowCenter, marker), true, 1.0);
+    addLabel(Element::Window, "CW", setup.windowCenter);
+
+    const Vec3<double> dop = setup.windowCenter - setup.prp;
+    const double head = std::min(0.06 * size, 0.4 * dop.norm());
+    addLayer(Element::Dop, linesData({{setup.prp, setup.windowCenter - dop.normalized() * head}}), false, 1.0);
+    addLayer(Element::Dop, arrowHead(setup.windowCenter, dop, head), true, 1.0);
+    addLabel(Element::Dop, "DOP", setup.prp + 0.3 * dop);
+
+    const auto& v = setup.volume;
+    PolygonMesh sides;
+    sides.vertices.assign(v.begin(), v.end());
+    sides.faces = {{0, 1, 5, 4}, {1, 2, 6, 5}, {2, 3, 7, 6}, {3, 0, 4, 7}};
+    addLayer(Element::Volume, facesData(sides), true, 0.10);
+    std::vector<Segment> volumeEdges;
+    for (std::size_t k = 0; k < 4; ++k) {
+        volumeEdges.emplace_back(v[k], v[(k + 1) % 4]);
+        volumeEdges.emplace_back(v[k + 4], v[(k + 1) % 4 + 4]);
+        volumeEdges.emplace_back(v[k], v[k + 4]);
+    }
+    addLayer(Element::Volume, linesData(volumeEdges), false, 0.8);
+    addLayer(Element::FrontPlane, facesData(quad(v[0], v[1], v[2], v[3])), true, 0.22);
+    addLayer(Element::BackPlane, facesData(quad(v[4], v[5], v[6], v[7])), true, 0.22);
+    addLabel(Element::FrontPlane, foley ? "front (F)" : "near", v[3]);
+    addLabel(Element::BackPlane, foley ? "back (B)" : "far", v[7]);
+    addLabel(Element::Window, foley ? "window" : "", (setup.window[2] + setup.window[3]) / 2);
+
+    std::vector<Segment> projectors;
+    for (std::size_t k = 0; k < 4; ++k) {
+        std::vector<Vec3<double>> along = {setup.window[k], v[k], v[k + 4]};
+        if (setup.perspective)
+            along.push_back(setup.prp);
+        projectors.push_back(span(along));
+    }
+    addLayer(Element::Projectors, linesData(projectors), false, 0.7);
+
+    std::vector<Segment> canonical;
+    const auto& c = setup.canonical;
+    for (std::size_t k = 0; k < 4; ++k) {
+        canonical.emplace_back(c[k], c[(k + 1) % 4]);
+        canonical.emplace_back(c[k + 4], c[(k + 1) % 4 + 4]);
+        canonical.emplace_back(c[k], c[k + 4]);
+    }
+    addLayer(Element::Canonical, linesData(canonical), false, 1.0);
+
+    if (projected_) {
+        for (const auto& object : objects) {
+            for (bool surface : {true, false}) {
+                if (!surface && object.second.empty())
+                    continue;
+                auto mapper = vtkSmartPointer<vtkPolyDataMapper>::New();
+                mapper->SetInputData(surface ? object.first : linesData(object.second));
+                auto actor = vtkSmartPointer<vtkActor>::New();
+                actor->SetMapper(mapper);
+                actor->GetProperty()->LightingOff();
+                actor->GetProperty()->SetOpacity(surface ? 0.35 : 1.0);
+                actor->GetProperty()->SetLineWidth(2);
+                projectedActors_.push_back(actor);
+            }
+        }
+        // The window's outline, at mid depth so that no clipping plane cuts it.
+        std::vector<Segment> border;
+        for (std::size_t k = 0; k < 4; ++k)
+            border.emplace_back((v[k] + v[k + 4]) / 2, (v[(k + 1) % 4] + v[(k + 1) % 4 + 4]) / 2);
+        auto mapper = vtkSmartPointer<vtkPolyDataMapper>::New();
+        mapper->SetInputData(linesData(border));
+        auto actor = vtkSmartPointer<vtkActor>::New();
+        actor->SetMapper(mapper);
+        actor->GetProperty()->LightingOff();
+        actor->GetProperty()->SetLineWidth(2);
+        projectedActors_.push_back(actor);
+        for (const auto& a : projectedActors_)
+            projected_->AddActor(a);
+        setUpProjectedView(scene, pipeline);
+    }
+    applyStyle();
+    show(Mat4<double>::Identity(), 0);
+}
+
+void ScenePainter::setUpProjectedView(const Scene&, const Pipeline<double>& pipeline)
+{
+    Mat4<double> clip = pipeline.toClip * pipeline.composite;
+    if (pipeline.convention == Convention::Foley)
+        clip = foleyToGlClip() * clip;
+    vtkCamera* camera = projected_->GetActiveCamera();
+    camera->SetPosition(0, 0, 0);
+    camera->SetFocalPoint(0, 0, -1);
+    camera->SetViewUp(0, 1, 0);
+    camera->SetUseExplicitProjectionTransformMatrix(true);
+    // Keep the window square on screen whatever the viewport's shape.
+    auto update = vtkSmartPointer<vtkCallbackCommand>::New();
+    struct Context {
+        Mat4<double> clip;
+    };
+    auto* context = new Context{clip};
+    update->SetClientData(context);
+    update->SetClientDataDeleteCallback([](void* data) { delete static_cast<Context*>(data); });
+    update->SetCallback([](vtkObject* caller, unsigned long, void* data, void*) {
+        auto* renderer = static_cast<vtkRenderer*>(caller);
+        const double aspect = renderer->GetTiledAspectRatio();
+        Mat4<double> letterbox = Mat4<double>::Identity();
+        if (aspect > 1)
+            letterbox(0, 0) = 1 / aspect;
+        else
+            letterbox(1, 1) = aspect;
+        letterbox(0, 0) *= 0.92;
+        letterbox(1, 1) *= 0.92;
+        renderer->GetActiveCamera()->SetExplicitProjectionTransformMatrix(
+            toVtk(letterbox * static_cast<Context*>(data)->clip));
+    });
+    projected_->RemoveObservers(vtkCommand::StartEvent);
+    projected_->AddObserver(vtkCommand::StartEvent, update);
+}
+
+void ScenePainter::show(const Mat4<double>& cumulative, double canonicalOpacity)
+{
+    canonicalOpacity_ = canonicalOpacity;
+    shownMatrix_ = cumulative;
+    for (Layer& layer : layers_) {
+        if (layer.element == Element::Canonical) {
+            layer.actor->SetVisibility(canonicalOpacity > 0);
+            layer.actor->GetProperty()->SetOpacity(canonicalOpacity);
+            continue;
+        }
+        vtkPoints* to = layer.shown->GetPoints();
+        const bool visible = projectPoints(layer.original->GetPoints(), cumulative,
+                                           [to](vtkIdType i, const Vec3<double>& q) { to->SetPoint(i, q.data()); });
+        to->Modified();
+        layer.actor->SetVisibility(visible);
+    }
+    for (Label& label : labels_) {
+        const std::optional<Vec3<double>> q = project(cumulative, label.world);
+        label.actor->SetVisibility(q.has_value());
+        if (q)
+            label.actor->SetPosition(q->x(), q->y(), q->z());
+    }
+}
+
+ScenePainter::Framing ScenePainter::framingOf(const std::vector<Mat4<double>>& cumulatives, bool withCanonical) const
+{
+    Eigen::AlignedBox<double, 3> box;
+    for (const Layer& layer : layers_) {
+        const bool canonical = layer.element == Element::Canonical;
+        if (canonical && !withCanonical)
+            continue;
+        for (const Mat4<double>& m : cumulatives) {
+            Eigen::AlignedBox<double, 3> layerBox;
+            if (projectPoints(layer.original->GetPoints(), canonical ? Mat4<double>::Identity() : m,
+                              [&](vtkIdType, const Vec3<double>& q) { layerBox.extend(q); }))
+                box.extend(layerBox);
+        }
+    }
+    if (box.isEmpty())
+        return {};
+    return {box.center(), std::max(1e-9, 0.5 * box.diagonal().norm())};
+}
+
+void ScenePainter::frame()
+{
+    frameOn(framingOf({shownMatrix_}, canonicalOpacity_ > 0));
+}
+
+void ScenePainter::frameOn(const Framing& framing)
+{
+    vtkCamera* camera = world_->GetActiveCamera();
+    Vec3<double> direction;
+    camera->GetDirectionOfProjection(direction.data());
+    const double distance = userZoom_ * fitDistance(framing.radius);
+    const Vec3<double> focal = framing.center + userPan_ * framing.radius;
+    const Vec3<double> position = focal - direction * distance;
+    camera->SetFocalPoint(focal.data());
+    camera->SetPosition(position.data());
+    framed_ = framing;
+    // The fixed axes reach across everything in view.
+    const double reach = framing.center.norm() + 1.5 * framing.radius;
+    auto* mapper = static_cast<vtkPolyDataMapper*>(frameAxes_->GetMapper());
+    mapper->SetInputData(linesData({{-reach * Vec3<double>::UnitX(), reach * Vec3<double>::UnitX()},
+                                    {-reach * Vec3<double>::UnitY(), reach * Vec3<double>::UnitY()},
+                                    {-reach * Vec3<double>::UnitZ(), reach * Vec3<double>::UnitZ()}}));
+    world_->ResetCameraClippingRange();
+}
+
+double ScenePainter::fitDistance(double radius) const
+{
+    // Fit the bounding sphere in the narrower of the two view angles; it
+    // overstates what most directions see, so come a little closer.
+    const double halfVertical = world_->GetActiveCamera()->GetViewAngle() * M_PI / 360;
+    const double half = std::min(halfVertical, std::atan(std::tan(halfVertical) * world_->GetTiledAspectRatio()));
+    return 0.95 * radius / std::sin(half);
+}
+
+void ScenePainter::rememberUserCamera()
+{
+    vtkCamera* camera = world_->GetActiveCamera();
+    Vec3<double> focal;
+    camera->GetFocalPoint(focal.data());
+    userZoom_ = camera->GetDistance() / fitDistance(framed_.radius);
+    userPan_ = (focal - framed_.center) / framed_.radius;
+}
+
+void ScenePainter::resetView()
+{
+    vtkCamera* camera = world_->GetActiveCamera();
+    camera->SetFocalPoint(0, 0, 0);
+    camera->SetPosition(1.7, 0.9, 1.0); // from the +x side, above: depth (z) runs across the picture
+    camera->SetViewUp(0, 1, 0);
+    camera->SetViewAngle(30);
+    userZoom_ = 1;
+    userPan_.setZero();
+    frame();
+}
+
+std::optional<Vec3<double>> ScenePainter::pickVertex(int displayX, int displayY) const
+{
+    auto picker = vtkSmartPointer<vtkPointPicker>::New();
+    picker->SetTolerance(0.01);
+    if (!picker->Pick(displayX, displayY, 0, world_) || picker->GetPointId() < 0)
+        return std::nullopt;
+    for (const Layer& layer : layers_)
+        if (layer.actor.GetPointer() == picker->GetActor()) {
+            const double* p = layer.original->GetPoint(picker->GetPointId());
+            return Vec3<double>(p[0], p[1], p[2]);
+        }
+    return std::nullopt;
+}
+
+void ScenePainter::setCaptions(const std::string& world, const std::string& projected)
+{
+    worldCaption_->SetInput(world.c_str());
+    projectedCaption_->SetInput(projected.c_str());
+}
+
+void ScenePainter::setTheme(Theme theme)
+{
+    theme_ = theme;
+    applyStyle();
+}
+
+void ScenePainter::setFontSize(int points)
+{
+    fontSize_ = points;
+    applyStyle();
+}
+
+void ScenePainter::applyStyle()
+{
+    const bool dark = theme_ == Theme::Dark;
+    world_->SetBackground(dark ? 0.11 : 1.0, dark ? 0.12 : 1.0, dark ? 0.14 : 1.0);
+    if (projected_)
+        projected_->SetBackground(dark ? 0.07 : 0.96, dark ? 0.08 : 0.96, dark ? 0.10 : 0.97);
+    for (Layer& layer : layers_) {
+        const Rgb c = color(layer.element, theme_);
+        vtkProperty* p = layer.actor->GetProperty();
+        p->SetColor(c.r, c.g, c.b);
+        p->SetOpacity(layer.element == Element::Canonical ? canonicalOpacity_ : layer.opacity);
+        const bool emphasised = layer.element == Element::WorldAxes || layer.element == Element::ViewAxes ||
+                                layer.element == Element::Canonical || layer.element == Element::Dop;
+        p->SetLineWidth(layer.surface ? 1 : (emphasised ? 3.5 : 2.0));
+    }
+    for (Label& label : labels_) {
+        const Rgb c = color(label.element, theme_);
+        label.actor->GetTextProperty()->SetColor(c.r, c.g, c.b);
+        label.actor->GetTextProperty()->SetFontSize(fontSize_);
+    }
+    for (vtkTextActor* caption : {worldCaption_.GetPointer(), projectedCaption_.GetPointer()}) {
+        const Rgb c = color(Element::Objects, theme_);
+        caption->GetTextProperty()->SetColor(c.r, c.g, c.b);
+        caption->GetTextProperty()->SetFontSize(fontSize_);
+    }
+    const Rgb frame = color(Element::Frame, theme_);
+    frameAxes_->GetProperty()->SetColor(frame.r, frame.g, frame.b);
+    frameAxes_->GetProperty()->SetLineWidth(1.5);
+    const Rgb objects = color(Element::Objects, theme_);
+    const Rgb window = color(Element::Window, theme_);
+    for (std::size_t k = 0; k < projectedActors_.size(); ++k) {
+        const Rgb c = k + 1 == projectedActors_.size() ? window : objects;
+        projectedActors_[k]->GetProperty()->SetColor(c.r, c.g, c.b);
+    }
+}
+
+} // namespace viewpipe::gui

@@ -1,0 +1,112 @@
+#pragma once
+
+// Draws a viewing set-up with VTK (no Qt): the scene's objects, the WRC axes,
+// the VRC axes, the PRP, the window and CW, the direction of projection, the
+// view volume with its front and back planes, the projectors, and the
+// canonical volume. Every element is kept in world coordinates and shown
+// through one cumulative matrix (with the homogeneous divide), so everything
+// moves together. One painter serves the app, screenshots and exports.
+
+#include <vtkSmartPointer.h>
+
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "viewpipe/scene.hpp"
+#include "viewpipe/setup.hpp"
+
+class vtkActor;
+class vtkBillboardTextActor3D;
+class vtkPolyData;
+class vtkRenderer;
+class vtkTextActor;
+
+namespace viewpipe::gui {
+
+enum class Theme { Dark, Light };
+
+struct Rgb {
+    double r, g, b;
+};
+
+// Everything the painter draws, so that callers can style or look them up.
+// Frame: the axes of the coordinates the current stage maps into, fixed on
+// screen (not transformed), so that a stage's motion reads against them.
+enum class Element { Objects, WorldAxes, ViewAxes, Prp, Window, Dop, Volume, FrontPlane, BackPlane, Projectors, Canonical, Frame };
+
+class ScenePainter {
+public:
+    // `projected` may be null: then no projected view is drawn.
+    ScenePainter(vtkRenderer* world, vtkRenderer* projected);
+    ~ScenePainter();
+    ScenePainter(const ScenePainter&) = delete;
+    ScenePainter& operator=(const ScenePainter&) = delete;
+
+    // Builds the picture of a scene. Reads its meshes (throws InputError naming
+    // "objects[k].path" for one VTK cannot read; the previous picture stays).
+    void setScene(const Scene& scene);
+
+    // Shows every element through `cumulative`; the canonical volume's outline
+    // is drawn with the given opacity (0 hides it).
+    void show(const Mat4<double>& cumulative, double canonicalOpacity);
+
+    // Titles in the top-left corners of the two views.
+    void setCaptions(const std::string& world, const std::string& projected);
+
+    void setTheme(Theme theme);
+    void setFontSize(int points);
+    Theme theme() const { return theme_; }
+
+    // Where the world view's camera looks and how much it must see.
+    struct Framing {
+        Vec3<double> center = Vec3<double>::Zero();
+        double radius = 1;
+    };
+    // What framing shows every element as it would be through `cumulative`
+    // (the canonical outline included when `withCanonical`).
+    Framing framingOf(const std::vector<Mat4<double>>& cumulatives, bool withCanonical) const;
+    // Aims the world view's camera at a framing, keeping the user's
+    // direction, zoom and pan; frame() fits what is shown now; resetView()
+    // restores the default viewpoint.
+    void frameOn(const Framing& framing);
+    void frame();
+    void resetView();
+    // Call when the user has moved the camera, to keep that change in frame().
+    void rememberUserCamera();
+
+    // The original (world) coordinates of the object vertex under a display
+    // position of the world view, if any.
+    std::optional<Vec3<double>> pickVertex(int displayX, int displayY) const;
+
+    static Rgb color(Element element, Theme theme);
+
+private:
+    struct Layer;
+    struct Label;
+    void clear();
+    void addLayer(Element element, vtkSmartPointer<vtkPolyData> geometry, bool surface, double opacity);
+    void addLabel(Element element, const std::string& text, const Vec3<double>& world);
+    void applyStyle();
+    void setUpProjectedView(const Scene& scene, const Pipeline<double>& pipeline);
+    double fitDistance(double radius) const;
+
+    vtkRenderer* world_;
+    vtkRenderer* projected_;
+    vtkSmartPointer<vtkTextActor> worldCaption_;
+    vtkSmartPointer<vtkTextActor> projectedCaption_;
+    vtkSmartPointer<vtkActor> frameAxes_;
+    std::vector<Layer> layers_;
+    std::vector<Label> labels_;
+    std::vector<vtkSmartPointer<vtkActor>> projectedActors_;
+    Theme theme_ = Theme::Dark;
+    int fontSize_ = 18;
+    double canonicalOpacity_ = 0;
+    // The user's view relative to the automatic framing.
+    double userZoom_ = 1;
+    Vec3<double> userPan_ = Vec3<double>::Zero();
+    Framing framed_;                 // the last framing
+    Mat4<double> shownMatrix_ = Mat4<double>::Identity();
+};
+
+} // namespace viewpipe::gui

@@ -1,0 +1,36 @@
+#pragma once
+
+// One animated step between neighbouring stages, as a function of progress
+// s in [0, 1]: the camera first widens to take in the whole motion, the
+// picture then moves with the interpolated cumulative matrix under a still
+// camera (so the motion reads against the screen), and the camera finally
+// closes in on the result. Nothing jumps: every phase starts where the last
+// one ended.
+
+#include <vector>
+
+#include "ScenePainter.h"
+
+namespace viewpipe::gui {
+
+class StageTransition {
+public:
+    StageTransition(ScenePainter& painter, const std::vector<Stage<double>>& stages, int from, int to);
+
+    void apply(double s);
+    int from() const { return from_; }
+    int to() const { return to_; }
+
+    // The canonical outline fades in while the last stage is reached.
+    static double canonicalOpacity(double position, std::size_t stageCount);
+    // Shows a stage at rest, framed.
+    static void showStage(ScenePainter& painter, const std::vector<Stage<double>>& stages, int stage);
+
+private:
+    ScenePainter& painter_;
+    std::vector<Stage<double>> stages_;
+    int from_, to_;
+    ScenePainter::Framing start_, sweep_, end_;
+};
+
+} // namespace viewpipe::gui

@@ -1,0 +1,202 @@
+// The desktop app under Xvfb: the stepper, refused edits, undo and redo,
+// open and save, and the Eigen-VTK adapter.
+
+#include <QApplication>
+#include <QDoubleSpinBox>
+#include <QListWidget>
+#include <QSignalSpy>
+#include <QStandardPaths>
+#include <QSurfaceFormat>
+#include <QTemporaryDir>
+#include <QVTKOpenGLNativeWidget.h>
+#include <QtTest>
+
+#include <vtkMatrix4x4.h>
+
+#include "app/MainWindow.h"
+#include "app/MatrixPanel.h"
+#include "app/ParameterPanel.h"
+#include "painter/EigenVtk.h"
+
+using namespace viewpipe;
+using namespace viewpipe::gui;
+
+namespace {
+
+const QString kHouse = QString(VIEWPIPE_DATA_DIR) + "/scenes/house.json";
+
+QImage worldPicture(MainWindow& window)
+{
+    window.renderNow();
+    return window.findChild<QVTKOpenGLNativeWidget*>("worldView")->grabFramebuffer();
+}
+
+void waitForRest(MainWindow& window)
+{
+    QTRY_VERIFY_WITH_TIMEOUT(!window.isAnimating(), 20000);
+}
+
+} // namespace
+
+class AppTest : public QObject {
+    Q_OBJECT
+
+private slots:
+    void init()
+    {
+        window_ = std::make_unique<MainWindow>();
+        window_->resize(1280, 800);
+        window_->show();
+        QVERIFY(QTest::qWaitForWindowExposed(window_.get()));
+        window_->activateWindow();
+        QVERIFY(QTest::qWaitForWindowActive(window_.get()));
+        QVERIFY(window_->openScene(kHouse));
+    }
+
+    void cleanup()
+    {
+        window_->document()->undoStack()->setClean(); // no "save changes?" prompt
+        window_.reset();
+    }
+
+    void stepperWalksThroughTheStages()
+    {
+        MainWindow& w = *window_;
+        QCOMPARE(w.stageCount(), 5);
+        QCOMPARE(w.stage(), 0);
+        const QImage world = worldPicture(w);
+
+        QTest::keyClick(&w, Qt::Key_Right);
+        QVERIFY(w.isAnimating());
+        waitForRest(w);
+        QCOMPARE(w.stage(), 1);
+        QVERIFY(w.matrices()->stageText().contains("T(-VRP)"));
+
+        // Through the slider to the last stage: each step animates.
+        w.findChild<QSlider*>("stageSlider")->setValue(5);
+        waitForRest(w);
+        QCOMPARE(w.stage(), 5);
+        QVERIFY(w.matrices()->stageText().contains("S_per"));
+        QCOMPARE(w.stageList()->currentRow(), 5);
+        QVERIFY(worldPicture(w) != world);
+
+        QTest::keyClick(&w, Qt::Key_Left);
+        waitForRest(w);
+        QCOMPARE(w.stage(), 4);
+        w.goToStage(0, false);
+        QCOMPARE(w.stage(), 0);
+    }
+
+    void transitionsRunAtThirtyFramesPerSecond()
+    {
+        MainWindow& w = *window_;
+        int frames = 0;
+        QElapsedTimer clock;
+        QVariantAnimation* animation = w.findChild<QVariantAnimation*>();
+        QVERIFY(animation);
+        connect(animation, &QVariantAnimation::valueChanged, this, [&frames] { ++frames; });
+        clock.start();
+        w.goToStage(1);
+        waitForRest(w);
+        const double fps = frames / (clock.elapsed() / 1000.0);
+        qInfo("one step: %d frames in %lld ms (%.1f fps)", frames, clock.elapsed(), fps);
+        QVERIFY2(fps >= 30, qPrintable(QString("%1 fps").arg(fps)));
+        QVERIFY(clock.elapsed() >= 900 && clock.elapsed() < 4000);
+    }
+
+    void refusedEditKeepsThePicture()
+    {
+        MainWindow& w = *window_;
+        w.goToStage(3, false);
+        const QImage before = worldPicture(w);
+        const QString sceneBefore = QString::fromStdString(sceneToJson(w.document()->scene()));
+
+        QDoubleSpinBox* front = w.parameters()->spinBoxes("view.front").first();
+        front->setValue(10); // F = 10 < B = 25
+        QVERIFY(w.parameters()->errorText("view.front").contains("F (10) must be greater than B (25)"));
+        QCOMPARE(QString::fromStdString(sceneToJson(w.document()->scene())), sceneBefore);
+        QCOMPARE(worldPicture(w), before);
+        QVERIFY(!w.document()->undoStack()->canUndo());
+
+        QDoubleSpinBox* vupY = w.parameters()->spinBoxes("view.vup")[1];
+        vupY->setValue(0); // VUP = 0
+        QVERIFY(w.parameters()->errorText("view.vup").contains("zero vector"));
+        QCOMPARE(worldPicture(w), before);
+
+        vupY->setValue(1); // valid again: the message goes, the edit is taken
+        QVERIFY(w.parameters()->errorText("view.vup").isEmpty());
+    }
+
+    void undoAndRedoEveryEdit()
+    {
+        MainWindow& w = *window_;
+        QDoubleSpinBox* vrpX = w.parameters()->spinBoxes("view.vrp").first();
+        vrpX->setValue(5);
+        auto vrpOf = [&w] { return std::get<foley::ViewSpec<double>>(w.document()->scene().camera).vrp.x(); };
+        QCOMPARE(vrpOf(), 5.0);
+        QVERIFY(w.document()->isModified());
+        w.document()->undoStack()->undo();
+        QCOMPARE(vrpOf(), 0.0);
+        QCOMPARE(w.parameters()->spinBoxes("view.vrp").first()->value(), 0.0);
+        w.document()->undoStack()->redo();
+        QCOMPARE(vrpOf(), 5.0);
+        QCOMPARE(w.parameters()->spinBoxes("view.vrp").first()->value(), 5.0);
+    }
+
+    void openAndSaveRoundTrip()
+    {
+        MainWindow& w = *window_;
+        w.parameters()->spinBoxes("view.prp").last()->setValue(90);
+        QTemporaryDir dir;
+        const QString file = dir.filePath("saved.json");
+        QVERIFY(w.saveScene(file));
+        QVERIFY(!w.document()->isModified());
+        const std::string saved = sceneToJson(w.document()->scene());
+        QVERIFY(QDir(dir.path()).entryList(QDir::Files) == QStringList{"saved.json"});
+
+        MainWindow other;
+        QVERIFY(other.openScene(file));
+        QCOMPARE(sceneToJson(other.document()->scene()), saved);
+        QCOMPARE(std::get<foley::ViewSpec<double>>(other.document()->scene().camera).prp.z(), 90.0);
+
+        // A file that does not parse is refused and the open scene stays.
+        const QString broken = dir.filePath("broken.json");
+        QFile out(broken);
+        QVERIFY(out.open(QIODevice::WriteOnly));
+        out.write("{\"view\": 3}");
+        out.close();
+        QVERIFY(!other.openScene(broken));
+        QCOMPARE(sceneToJson(other.document()->scene()), saved);
+    }
+
+    void eigenVtkAdapterKeepsRowsAndColumns()
+    {
+        Mat4<double> m;
+        for (int r = 0; r < 4; ++r)
+            for (int c = 0; c < 4; ++c)
+                m(r, c) = 10 * r + c;
+        const auto v = toVtk(m);
+        QCOMPARE(v->GetElement(1, 3), 13.0);
+        QCOMPARE(v->GetElement(3, 1), 31.0);
+        double p[4] = {1, 2, 3, 1}, q[4];
+        v->MultiplyPoint(p, q);
+        const Vec4<double> expected = m * Vec4<double>(1, 2, 3, 1);
+        for (int i = 0; i < 4; ++i)
+            QCOMPARE(q[i], expected[i]);
+        QVERIFY(fromVtk(v) == m);
+    }
+
+private:
+    std::unique_ptr<MainWindow> window_;
+};
+
+int main(int argc, char** argv)
+{
+    QSurfaceFormat::setDefaultFormat(QVTKOpenGLNativeWidget::defaultFormat());
+    QStandardPaths::setTestModeEnabled(true);
+    QApplication app(argc, argv);
+    AppTest test;
+    return QTest::qExec(&test, argc, argv);
+}
+
+#include "app_test.moc"
