@@ -8,6 +8,7 @@
 
 #include "app/OpenCommand.h"
 #include "cli/report.hpp"
+#include "painter/ScenePainter.h"
 #include "viewpipe/version.hpp"
 
 namespace {
@@ -98,6 +99,8 @@ int main(int argc, char** argv)
 
     try {
         const Scene scene = loadScene(options.scene);
+        if (*check)
+            gui::checkMeshes(scene);
         const cli::Precision precision = cli::parsePrecision(options.precision);
         if (*pipeline) {
             if (options.json)

@@ -356,7 +356,13 @@ void writeFileAtomically(const std::filesystem::path& file, const std::string& c
 
 void saveScene(const Scene& scene, const std::filesystem::path& file)
 {
-    writeFileAtomically(file, sceneToJson(scene));
+    // Mesh paths are written relative to the folder the scene is saved in.
+    Scene saved = scene;
+    const std::filesystem::path folder = std::filesystem::absolute(file).parent_path();
+    for (SceneObject& object : saved.objects)
+        if (object.type == ObjectType::Mesh)
+            object.path = std::filesystem::proximate(std::filesystem::absolute(object.resolvedPath), folder).string();
+    writeFileAtomically(file, sceneToJson(saved));
 }
 
 } // namespace viewpipe

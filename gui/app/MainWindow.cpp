@@ -26,14 +26,12 @@
 #include <QVBoxLayout>
 
 #include <QVTKOpenGLNativeWidget.h>
-#include <vtkCallbackCommand.h>
-#include <vtkCommand.h>
 #include <vtkGenericOpenGLRenderWindow.h>
-#include <vtkInteractorStyleTrackballCamera.h>
 #include <vtkRenderWindowInteractor.h>
 #include <vtkRenderer.h>
 
 #include "AppPaths.h"
+#include "ClickStyle.h"
 #include "MatrixPanel.h"
 #include "ParameterPanel.h"
 #include "Theme.h"
@@ -105,36 +103,15 @@ void MainWindow::buildViews()
     worldWidget_->setMinimumSize(300, 300);
     projectedWidget_->setMinimumSize(200, 200);
 
-    auto style = vtkSmartPointer<vtkInteractorStyleTrackballCamera>::New();
+    // A click picks a vertex to trace; a camera move is kept by later framing.
+    auto style = vtkSmartPointer<ClickStyle>::New();
+    style->onClick = [this](int x, int y) { pickAt(x, y); };
+    style->onCameraMoved = [this] { painter_->rememberUserCamera(); };
     worldWindow_->GetInteractor()->SetInteractorStyle(style);
     // The projected view is a fixed picture: no camera interaction.
     projectedWindow_->GetInteractor()->SetInteractorStyle(nullptr);
 
     painter_ = std::make_unique<ScenePainter>(worldRenderer_, projectedRenderer_);
-
-    // A click (press and release without moving) picks a vertex to trace;
-    // a drag moves the camera, which framing then keeps.
-    auto onInteraction = vtkSmartPointer<vtkCallbackCommand>::New();
-    onInteraction->SetClientData(this);
-    onInteraction->SetCallback([](vtkObject* caller, unsigned long event, void* data, void*) {
-        auto* self = static_cast<MainWindow*>(data);
-        auto* interactor = static_cast<vtkRenderWindowInteractor*>(caller);
-        static int pressX = 0, pressY = 0;
-        int x, y;
-        interactor->GetEventPosition(x, y);
-        if (event == vtkCommand::LeftButtonPressEvent) {
-            pressX = x;
-            pressY = y;
-        } else if (event == vtkCommand::LeftButtonReleaseEvent && std::abs(x - pressX) + std::abs(y - pressY) < 3) {
-            self->pickAt(x, y);
-        } else if (event == vtkCommand::EndInteractionEvent) {
-            self->painter_->rememberUserCamera();
-        }
-    });
-    vtkRenderWindowInteractor* interactor = worldWindow_->GetInteractor();
-    interactor->AddObserver(vtkCommand::LeftButtonPressEvent, onInteraction, 1.0);
-    interactor->AddObserver(vtkCommand::LeftButtonReleaseEvent, onInteraction, 1.0);
-    style->AddObserver(vtkCommand::EndInteractionEvent, onInteraction);
 
     auto* splitter = new QSplitter(Qt::Horizontal);
     splitter->addWidget(worldWidget_);
@@ -463,8 +440,13 @@ void MainWindow::updateTitle()
 void MainWindow::showMessage(const QString& text)
 {
     statusBar()->showMessage(text, 10000);
-    if (isVisible() && !QApplication::arguments().contains("--screenshot"))
-        QMessageBox::warning(this, tr("ViewPipe"), text);
+    if (!isVisible() || QApplication::arguments().contains("--screenshot"))
+        return;
+    // Window-modal, not blocking: the event loop (and the picture) carry on.
+    auto* box = new QMessageBox(QMessageBox::Warning, tr("ViewPipe"), text, QMessageBox::Ok, this);
+    box->setObjectName("errorMessage");
+    box->setAttribute(Qt::WA_DeleteOnClose);
+    box->open();
 }
 
 bool MainWindow::confirmDiscard()
@@ -487,7 +469,7 @@ void MainWindow::closeEvent(QCloseEvent* event)
         event->ignore();
 }
 
-void MainWindow::importMesh(const QString& path)
+bool MainWindow::importMesh(const QString& path)
 {
     SceneObject object;
     object.type = ObjectType::Mesh;
@@ -496,11 +478,12 @@ void MainWindow::importMesh(const QString& path)
     try {
         Scene candidate = document_->scene();
         candidate.objects.push_back(object);
-        painter_->setScene(candidate); // reads the mesh: refuses what VTK cannot read
+        checkMeshes(candidate);
         document_->addObject(object, tr("Import %1").arg(QFileInfo(path).fileName()));
+        return true;
     } catch (const InputError& e) {
-        onDocumentChanged();
         showMessage(tr("Cannot import %1: %2").arg(path, QString::fromStdString(e.reason())));
+        return false;
     }
 }
 

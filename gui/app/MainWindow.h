@@ -49,6 +49,10 @@ public:
     int stageCount() const;
     bool isAnimating() const;
 
+    // Adds a mesh (OBJ, PLY, STL) to the scene as one undoable edit; a file
+    // VTK cannot read is refused with its reason and changes nothing.
+    bool importMesh(const QString& path);
+
     void setTheme(Theme theme);
     void setFontSize(int points);
     void setProjectedViewVisible(bool visible);
@@ -77,7 +81,6 @@ private:
     void updateTitle();
     void showMessage(const QString& text);
     bool confirmDiscard();
-    void importMesh(const QString& path);
     void addRecent(const QString& path);
     void rebuildRecentMenu();
     void rebuildPresetMenu();

@@ -119,6 +119,11 @@ void MatrixPanel::showTrace(const Pipeline<double>& pipeline, const std::optiona
     trace_->setText(html);
 }
 
+QString MatrixPanel::traceText() const
+{
+    return trace_->text();
+}
+
 QString MatrixPanel::stageText() const
 {
     return title_->text();

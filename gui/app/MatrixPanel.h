@@ -24,6 +24,7 @@ public:
     void showTrace(const Pipeline<double>& pipeline, const std::optional<Vec3<double>>& point, int stage);
 
     QString stageText() const;
+    QString traceText() const;
 
 private:
     QLabel* title_;

@@ -230,6 +230,13 @@ Mat4<double> foleyToGlClip()
 
 } // namespace
 
+void checkMeshes(const Scene& scene)
+{
+    for (std::size_t i = 0; i < scene.objects.size(); ++i)
+        if (scene.objects[i].type == ObjectType::Mesh)
+            readMesh(scene.objects[i], i);
+}
+
 ScenePainter::ScenePainter(vtkRenderer* world, vtkRenderer* projected)
     : world_(world), projected_(projected), worldCaption_(vtkSmartPointer<vtkTextActor>::New()),
       projectedCaption_(vtkSmartPointer<vtkTextActor>::New())

@@ -35,6 +35,10 @@ struct Rgb {
 // screen (not transformed), so that a stage's motion reads against them.
 enum class Element { Objects, WorldAxes, ViewAxes, Prp, Window, Dop, Volume, FrontPlane, BackPlane, Projectors, Canonical, Frame };
 
+// Reads every mesh of a scene with VTK's readers; throws InputError naming
+// "objects[k].path" for one that cannot be read.
+void checkMeshes(const Scene& scene);
+
 class ScenePainter {
 public:
     // `projected` may be null: then no projected view is drawn.

@@ -147,6 +147,15 @@ TEST(Cli, CheckAndExitCodes)
         EXPECT_EQ(r.err.rfind(bad + ": view.vup: is parallel to view.vpn (angle 0 degrees", 0), 0u) << r.err;
         EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
     }
+    // A mesh VTK cannot read is bad input too.
+    writeScene("viewpipe-junk.stl", "this is not a mesh");
+    const std::string junk = writeScene("viewpipe-junk-mesh.json", R"({"view": {"projection": "perspective",
+        "vrp": [0, 0, 0], "vpn": [0, 0, 1], "vup": [0, 1, 0], "prp": [8, 6, 84], "window": [-50, 50, -50, 50],
+        "front": 60, "back": 25}, "objects": [{"type": "mesh", "path": "viewpipe-junk.stl"}]})");
+    r = run("check " + junk);
+    EXPECT_EQ(r.exitCode, 2);
+    EXPECT_NE(r.err.find(junk + ": objects[0].path: cannot be read as a mesh"), std::string::npos) << r.err;
+
     r = run("check /nonexistent/scene.json");
     EXPECT_EQ(r.exitCode, 2);
     EXPECT_EQ(r.err, "/nonexistent/scene.json: $: cannot read the scene file: No such file or directory\n");

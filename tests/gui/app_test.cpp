@@ -12,6 +12,9 @@
 #include <QtTest>
 
 #include <vtkMatrix4x4.h>
+#include <vtkRenderWindow.h>
+#include <vtkRenderer.h>
+#include <vtkRendererCollection.h>
 
 #include "app/MainWindow.h"
 #include "app/MatrixPanel.h"
@@ -167,6 +170,58 @@ private slots:
         out.close();
         QVERIFY(!other.openScene(broken));
         QCOMPARE(sceneToJson(other.document()->scene()), saved);
+    }
+
+    void importMeshIsUndoableAndRefusesUnreadableFiles()
+    {
+        MainWindow& w = *window_;
+        QTemporaryDir dir;
+        const QString obj = dir.filePath("tetra.obj");
+        QFile out(obj);
+        QVERIFY(out.open(QIODevice::WriteOnly));
+        out.write("v 0 0 30\nv 10 0 30\nv 0 10 30\nv 0 0 40\nf 1 3 2\nf 1 2 4\nf 2 3 4\nf 3 1 4\n");
+        out.close();
+        QVERIFY(w.importMesh(obj));
+        QCOMPARE(w.document()->scene().objects.size(), std::size_t(2));
+        QCOMPARE(w.document()->scene().objects[1].type, ObjectType::Mesh);
+
+        // Saved elsewhere, the mesh path is written relative to the scene file.
+        const QString saved = dir.filePath("scene.json");
+        QVERIFY(w.saveScene(saved));
+        QVERIFY(QString::fromStdString(sceneToJson(loadScene(saved.toStdString()))).contains("\"path\": \"tetra.obj\""));
+
+        w.document()->undoStack()->undo();
+        QCOMPARE(w.document()->scene().objects.size(), std::size_t(1));
+
+        const QString junk = dir.filePath("junk.stl");
+        QFile bad(junk);
+        QVERIFY(bad.open(QIODevice::WriteOnly));
+        bad.write("this is not a mesh");
+        bad.close();
+        QVERIFY(!w.importMesh(junk));
+        QCOMPARE(w.document()->scene().objects.size(), std::size_t(1));
+    }
+
+    void clickTracesAVertex()
+    {
+        MainWindow& w = *window_;
+        w.goToStage(3, false);
+        // Where the house's vertex (16, 10, 54) is drawn at this stage.
+        auto* view = w.findChild<QVTKOpenGLNativeWidget*>("worldView");
+        vtkRenderer* renderer = view->renderWindow()->GetRenderers()->GetFirstRenderer();
+        const Vec4<double> p = w.document()->pipeline().stages[2].matrix * Vec4<double>(16, 10, 54, 1);
+        renderer->SetWorldPoint(p.x(), p.y(), p.z(), 1);
+        renderer->WorldToDisplay();
+        double display[3];
+        renderer->GetDisplayPoint(display);
+        const double ratio = view->devicePixelRatioF();
+        const QPoint at(int(std::lround(display[0] / ratio)), int(std::lround(view->height() - display[1] / ratio)));
+        QTest::mouseClick(view, Qt::LeftButton, Qt::NoModifier, at);
+        QTRY_VERIFY(w.matrices()->traceText().contains("Traced vertex"));
+        // After T(-PRP) the vertex is (16 - 8, 10 - 6, 54 - 84) = (8, 4, -30).
+        QVERIFY2(w.matrices()->traceText().contains("<td align='right'>8</td><td align='right'>4</td>"
+                                                    "<td align='right'>-30</td>"),
+                 qPrintable(w.matrices()->traceText()));
     }
 
     void eigenVtkAdapterKeepsRowsAndColumns()
