@@ -3,11 +3,17 @@
 
 #include <CLI/CLI.hpp>
 
+#include <atomic>
+#include <csignal>
+#include <cstdio>
 #include <iostream>
 #include <sstream>
+#include <unistd.h>
 
 #include "app/OpenCommand.h"
 #include "cli/report.hpp"
+#include "export/Exporter.h"
+#include "export/VirtualDisplay.h"
 #include "painter/ScenePainter.h"
 #include "viewpipe/version.hpp"
 
@@ -24,6 +30,24 @@ struct Options {
     std::string precision = "double";
     std::vector<double> point;
 };
+
+std::atomic<bool> interrupted{false};
+
+extern "C" void onInterrupt(int)
+{
+    interrupted = true;
+}
+
+// "WxH" -> (W, H); throws InputError naming the option.
+std::pair<int, int> parseSize(const std::string& text, const std::string& option)
+{
+    int width = 0, height = 0;
+    char x = 0;
+    std::istringstream in(text);
+    if (!(in >> width >> x >> height) || x != 'x' || !in.eof())
+        throw InputError(option, "must be WxH, e.g. 1280x720 (got \"" + text + "\")");
+    return {width, height};
+}
 
 void addPrecision(CLI::App* command, Options& options)
 {
@@ -66,6 +90,33 @@ int main(int argc, char** argv)
     openCommand->add_option("--size", size, "Window size WxH (default 1600x950)");
     openCommand->add_option("--theme", theme, "dark or light")->check(CLI::IsMember({"dark", "light"}));
 
+    std::string exportOut, exportSize = "1280x720", exportStages = "all", exportTheme = "light",
+                                  exportFormats = "png";
+    int exportScale = 1, exportFps = 30, exportDigits = 4;
+    bool exportTransparent = false, exportAnimate = false, exportQuiet = false;
+    std::string exportFraming = "fixed";
+    CLI::App* exportCommand =
+        app.add_subcommand("export", "Export every stage as images for slides, the matrices as LaTeX and JSON");
+    exportCommand->add_option("SCENE", options.scene, "Scene file (JSON)")->required();
+    exportCommand->add_option("--out", exportOut, "Folder for the files (created if missing)")->required();
+    exportCommand->add_option("--size", exportSize, "Picture size WxH")->capture_default_str();
+    exportCommand->add_option("--scale", exportScale, "Pixels per unit of size, 1 to 4 (2 for high-DPI)")
+        ->capture_default_str();
+    exportCommand->add_option("--stages", exportStages, "all, or a list such as 0,2,4-5")->capture_default_str();
+    exportCommand->add_option("--theme", exportTheme, "light or dark")
+        ->check(CLI::IsMember({"light", "dark"}))
+        ->capture_default_str();
+    exportCommand->add_flag("--transparent", exportTransparent, "Transparent background (PNG)");
+    exportCommand->add_option("--format", exportFormats, "png, svg, pdf, comma-separated")->capture_default_str();
+    exportCommand->add_flag("--animate", exportAnimate, "Also the animated transition, animation.mp4");
+    exportCommand->add_option("--fps", exportFps, "Frames per second of the animation")->capture_default_str();
+    exportCommand->add_option("--digits", exportDigits, "Significant digits of inexact entries in matrices.tex")
+        ->capture_default_str();
+    exportCommand->add_flag("--quiet", exportQuiet, "No progress bar, no list of files");
+    exportCommand->add_option("--framing", exportFraming, "fixed: one camera framing every stage; per-stage")
+        ->check(CLI::IsMember({"fixed", "per-stage"}))
+        ->capture_default_str();
+
     try {
         app.parse(argc, argv);
     } catch (const CLI::Success& e) {
@@ -78,12 +129,9 @@ int main(int argc, char** argv)
     if (*openCommand) {
         try {
             if (!size.empty()) {
-                char x = 0;
-                std::istringstream in(size);
-                if (!(in >> open.width >> x >> open.height) || x != 'x' || !in.eof() || open.width < 200 ||
-                    open.height < 150 || open.width > 8192 || open.height > 8192)
-                    throw InputError("--size", "must be WxH with 200 <= W, H <= 8192, e.g. 1600x950 (got \"" + size +
-                                                   "\")");
+                std::tie(open.width, open.height) = parseSize(size, "--size");
+                if (open.width < 200 || open.height < 150 || open.width > 8192 || open.height > 8192)
+                    throw InputError("--size", "must be WxH with 200 <= W <= 8192 and 150 <= H <= 8192");
             }
             if (!theme.empty())
                 open.theme = theme;
@@ -93,6 +141,61 @@ int main(int argc, char** argv)
             return kExitBadInput;
         } catch (const std::exception& e) {
             std::cerr << "viewpipe: internal error: " << e.what() << "\n";
+            return kExitInternal;
+        }
+    }
+
+    if (*exportCommand) {
+        try {
+            const Scene scene = loadScene(options.scene);
+            gui::checkMeshes(scene);
+            gui::ExportOptions o;
+            o.out = exportOut;
+            std::tie(o.width, o.height) = parseSize(exportSize, "--size");
+            o.scale = exportScale;
+            o.stages = gui::parseStages(exportStages, int(buildPipeline(scene.camera).stages.size()));
+            o.theme = exportTheme == "dark" ? gui::Theme::Dark : gui::Theme::Light;
+            o.transparent = exportTransparent;
+            std::istringstream formats(exportFormats);
+            o.formats.clear();
+            for (std::string f; std::getline(formats, f, ',');)
+                o.formats.insert(f);
+            o.animate = exportAnimate;
+            o.fps = exportFps;
+            o.digits = exportDigits;
+            o.framePerStage = exportFraming == "per-stage";
+
+            std::signal(SIGINT, onInterrupt);
+            std::signal(SIGTERM, onInterrupt);
+            const gui::VirtualDisplay display;
+            const bool bar = !exportQuiet;
+            const auto files = gui::exportStages(
+                scene, o,
+                [bar](int done, int total, const std::string& what) {
+                    if (!bar)
+                        return;
+                    const int width = 30, filled = width * done / total;
+                    std::fprintf(stderr, "\r[%s%s] %3d%%  %-50.50s", std::string(std::size_t(filled), '#').c_str(),
+                                 std::string(std::size_t(width - filled), ' ').c_str(), 100 * done / total,
+                                 what.c_str());
+                    std::fflush(stderr);
+                },
+                interrupted);
+            if (bar)
+                std::fprintf(stderr, "\n");
+            if (interrupted) {
+                std::cerr << "viewpipe export: interrupted; nothing was written\n";
+                return 130;
+            }
+            if (!exportQuiet)
+                for (const auto& file : files)
+                    std::cout << file.string() << "\n";
+            return 0;
+        } catch (const InputError& e) {
+            std::cerr << "\n" + options.scene << ": " << e.what() << "\n";
+            return kExitBadInput;
+        } catch (const std::exception& e) {
+            std::cerr << "\nviewpipe export: " << e.what() << "\n";
             return kExitInternal;
         }
     }

@@ -10,6 +10,7 @@ packages=(
   libboost-dev libmpfr-dev libglm-dev
   qtbase5-dev libvtk9-dev libvtk9-qt-dev
   xvfb xauth libgl1-mesa-dri fonts-dejavu-core
+  ffmpeg
 )
 
 missing=()

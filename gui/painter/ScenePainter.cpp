@@ -266,6 +266,12 @@ ScenePainter::~ScenePainter()
     clear();
 }
 
+// Object faces: a light tint under their dark (or light) edges.
+Rgb ScenePainter::faceColor(Theme theme)
+{
+    return theme == Theme::Dark ? Rgb{0.45, 0.55, 0.80} : Rgb{0.62, 0.70, 0.90};
+}
+
 Rgb ScenePainter::color(Element element, Theme theme)
 {
     const bool dark = theme == Theme::Dark;
@@ -625,6 +631,14 @@ std::optional<Vec3<double>> ScenePainter::pickVertex(int displayX, int displayY)
     return std::nullopt;
 }
 
+void ScenePainter::setTextVisible(bool visible)
+{
+    worldCaption_->SetVisibility(visible);
+    projectedCaption_->SetVisibility(visible);
+    for (Label& label : labels_)
+        label.actor->SetVisibility(visible && project(shownMatrix_, label.world).has_value());
+}
+
 void ScenePainter::setCaptions(const std::string& world, const std::string& projected)
 {
     worldCaption_->SetInput(world.c_str());
@@ -634,6 +648,12 @@ void ScenePainter::setCaptions(const std::string& world, const std::string& proj
 void ScenePainter::setTheme(Theme theme)
 {
     theme_ = theme;
+    applyStyle();
+}
+
+void ScenePainter::setLineScale(double scale)
+{
+    lineScale_ = scale;
     applyStyle();
 }
 
@@ -650,13 +670,13 @@ void ScenePainter::applyStyle()
     if (projected_)
         projected_->SetBackground(dark ? 0.07 : 0.96, dark ? 0.08 : 0.96, dark ? 0.10 : 0.97);
     for (Layer& layer : layers_) {
-        const Rgb c = color(layer.element, theme_);
+        const Rgb c = layer.element == Element::Objects && layer.surface ? faceColor(theme_) : color(layer.element, theme_);
         vtkProperty* p = layer.actor->GetProperty();
         p->SetColor(c.r, c.g, c.b);
         p->SetOpacity(layer.element == Element::Canonical ? canonicalOpacity_ : layer.opacity);
         const bool emphasised = layer.element == Element::WorldAxes || layer.element == Element::ViewAxes ||
                                 layer.element == Element::Canonical || layer.element == Element::Dop;
-        p->SetLineWidth(layer.surface ? 1 : (emphasised ? 3.5 : 2.0));
+        p->SetLineWidth(lineScale_ * (layer.surface ? 1 : (emphasised ? 3.5 : 2.0)));
     }
     for (Label& label : labels_) {
         const Rgb c = color(label.element, theme_);
@@ -670,11 +690,11 @@ void ScenePainter::applyStyle()
     }
     const Rgb frame = color(Element::Frame, theme_);
     frameAxes_->GetProperty()->SetColor(frame.r, frame.g, frame.b);
-    frameAxes_->GetProperty()->SetLineWidth(1.5);
-    const Rgb objects = color(Element::Objects, theme_);
-    const Rgb window = color(Element::Window, theme_);
+    frameAxes_->GetProperty()->SetLineWidth(1.5 * lineScale_);
     for (std::size_t k = 0; k < projectedActors_.size(); ++k) {
-        const Rgb c = k + 1 == projectedActors_.size() ? window : objects;
+        const bool border = k + 1 == projectedActors_.size();
+        const bool face = projectedActors_[k]->GetProperty()->GetOpacity() < 1;
+        const Rgb c = border ? color(Element::Window, theme_) : face ? faceColor(theme_) : color(Element::Objects, theme_);
         projectedActors_[k]->GetProperty()->SetColor(c.r, c.g, c.b);
     }
 }

@@ -55,11 +55,16 @@ public:
     // is drawn with the given opacity (0 hides it).
     void show(const Mat4<double>& cumulative, double canonicalOpacity);
 
+    // Shows or hides every text: labels and captions.
+    void setTextVisible(bool visible);
+
     // Titles in the top-left corners of the two views.
     void setCaptions(const std::string& world, const std::string& projected);
 
     void setTheme(Theme theme);
     void setFontSize(int points);
+    // Line widths are multiplied by this (2 for a picture at twice the pixels).
+    void setLineScale(double scale);
     Theme theme() const { return theme_; }
 
     // Where the world view's camera looks and how much it must see.
@@ -84,6 +89,7 @@ public:
     std::optional<Vec3<double>> pickVertex(int displayX, int displayY) const;
 
     static Rgb color(Element element, Theme theme);
+    static Rgb faceColor(Theme theme);
 
 private:
     struct Layer;
@@ -105,6 +111,7 @@ private:
     std::vector<vtkSmartPointer<vtkActor>> projectedActors_;
     Theme theme_ = Theme::Dark;
     int fontSize_ = 18;
+    double lineScale_ = 1;
     double canonicalOpacity_ = 0;
     // The user's view relative to the automatic framing.
     double userZoom_ = 1;

@@ -33,16 +33,23 @@ template <class T> struct ViewSpec {
     Window<T> window;      // on the view plane n = 0
     T front, back;         // F and B, n-coordinates in VRC
 
+    // Every number converted by `convert` (T to U).
+    template <class U, class F> ViewSpec<U> convert(F&& convert) const
+    {
+        auto v = [&](const Vec3<T>& x) { return Vec3<U>(convert(x.x()), convert(x.y()), convert(x.z())); };
+        return {projection,
+                v(vrp),
+                v(vpn),
+                v(vup),
+                v(prp),
+                {convert(window.umin), convert(window.umax), convert(window.vmin), convert(window.vmax)},
+                convert(front),
+                convert(back)};
+    }
+
     template <class U> ViewSpec<U> cast() const
     {
-        return {projection,
-                vrp.template cast<U>(),
-                vpn.template cast<U>(),
-                vup.template cast<U>(),
-                prp.template cast<U>(),
-                {U(window.umin), U(window.umax), U(window.vmin), U(window.vmax)},
-                U(front),
-                U(back)};
+        return convert<U>([](const T& x) { return U(x); });
     }
 };
 

@@ -38,22 +38,32 @@ template <class T> struct Camera {
     LookAt<T> lookAt;
     ProjectionSpec<T> projection;
 
-    template <class U> Camera<U> cast() const
+    // Every number converted by `convert` (T to U).
+    template <class U, class F> Camera<U> convert(F&& convert) const
     {
+        auto v = [&](const Vec3<T>& x) { return Vec3<U>(convert(x.x()), convert(x.y()), convert(x.z())); };
         Camera<U> out;
-        out.lookAt = {lookAt.eye.template cast<U>(), lookAt.center.template cast<U>(), lookAt.up.template cast<U>()};
+        out.lookAt = {v(lookAt.eye), v(lookAt.center), v(lookAt.up)};
         std::visit(
-            [&out](const auto& p) {
+            [&](const auto& p) {
                 using P = std::decay_t<decltype(p)>;
                 if constexpr (std::is_same_v<P, Perspective<T>>)
-                    out.projection = Perspective<U>{U(p.fovyDegrees), U(p.aspect), U(p.zNear), U(p.zFar)};
+                    out.projection =
+                        Perspective<U>{convert(p.fovyDegrees), convert(p.aspect), convert(p.zNear), convert(p.zFar)};
                 else if constexpr (std::is_same_v<P, Frustum<T>>)
-                    out.projection = Frustum<U>{U(p.left), U(p.right), U(p.bottom), U(p.top), U(p.zNear), U(p.zFar)};
+                    out.projection = Frustum<U>{convert(p.left), convert(p.right), convert(p.bottom),
+                                                convert(p.top),  convert(p.zNear), convert(p.zFar)};
                 else
-                    out.projection = Ortho<U>{U(p.left), U(p.right), U(p.bottom), U(p.top), U(p.zNear), U(p.zFar)};
+                    out.projection = Ortho<U>{convert(p.left), convert(p.right), convert(p.bottom),
+                                              convert(p.top),  convert(p.zNear), convert(p.zFar)};
             },
             projection);
         return out;
+    }
+
+    template <class U> Camera<U> cast() const
+    {
+        return convert<U>([](const T& x) { return U(x); });
     }
 };
 

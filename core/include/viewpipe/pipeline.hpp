@@ -23,6 +23,11 @@ template <class U, class T> CameraSpec<U> castCamera(const CameraSpec<T>& camera
     return std::visit([](const auto& c) -> CameraSpec<U> { return c.template cast<U>(); }, camera);
 }
 
+template <class U, class T, class F> CameraSpec<U> convertCamera(const CameraSpec<T>& camera, F&& convert)
+{
+    return std::visit([&](const auto& c) -> CameraSpec<U> { return c.template convert<U>(convert); }, camera);
+}
+
 // The canonical volume in clip (homogeneous) coordinates, tested without
 // dividing: Foley's parallel volume -w <= x, y <= w, -w <= z <= 0 (Foley's
 // perspective volume is taken there by M), OpenGL's -w <= x, y, z <= w; w > 0.

@@ -1,0 +1,132 @@
+#include "latex.hpp"
+
+#include <cmath>
+#include <cstdio>
+#include <sstream>
+
+#include "viewpipe/precision.hpp"
+
+namespace viewpipe::cli {
+namespace {
+
+using Exact = Mpfr100;
+
+constexpr long long kMaxDenominator = 1000000000;
+
+// The fraction p/q (q <= 10^9) that x equals to 60 digits, if any: the
+// convergents of x's continued fraction are the candidates.
+bool asFraction(const Exact& x, std::string& out)
+{
+    const Exact tolerance = Exact("1e-60") * (abs(x) > 1 ? abs(x) : Exact(1));
+    Exact remainder = x;
+    // Convergents h/k from the recurrence h_n = a_n h_{n-1} + h_{n-2}.
+    Exact h0 = 1, h1 = 0, k0 = 0, k1 = 1;
+    for (int step = 0; step < 60; ++step) {
+        const Exact a = floor(remainder);
+        const Exact h = a * h0 + h1, k = a * k0 + k1;
+        h1 = h0, h0 = h, k1 = k0, k0 = k;
+        if (k0 > Exact(kMaxDenominator))
+            return false;
+        if (abs(x - h0 / k0) <= tolerance) {
+            const std::string p = h0.str(0, std::ios_base::fixed), q = k0.str(0, std::ios_base::fixed);
+            const std::string numerator = p.substr(0, p.find('.')), denominator = q.substr(0, q.find('.'));
+            if (denominator == "1")
+                out = numerator == "-0" ? "0" : numerator;
+            else if (numerator[0] == '-')
+                out = "-\\frac{" + numerator.substr(1) + "}{" + denominator + "}";
+            else
+                out = "\\frac{" + numerator + "}{" + denominator + "}";
+            return true;
+        }
+        const Exact fraction = remainder - a;
+        if (fraction == 0)
+            return false;
+        remainder = 1 / fraction;
+    }
+    return false;
+}
+
+std::string decimal(const Exact& x, int digits)
+{
+    char buffer[64];
+    std::snprintf(buffer, sizeof buffer, "%.*g", digits, static_cast<double>(x));
+    std::string s = buffer;
+    if (s == "-0")
+        s = "0";
+    const std::size_t e = s.find('e');
+    if (e != std::string::npos) // 1.5e-07 -> 1.5 \times 10^{-7}
+        s = s.substr(0, e) + " \\times 10^{" + std::to_string(std::stoi(s.substr(e + 1))) + "}";
+    return s;
+}
+
+std::string bmatrix(const Mat4<Exact>& m, int digits)
+{
+    std::string out = "\\begin{bmatrix}\n";
+    for (int r = 0; r < 4; ++r) {
+        out += "  ";
+        for (int c = 0; c < 4; ++c) {
+            std::string cell;
+            if (!asFraction(m(r, c), cell))
+                cell = decimal(m(r, c), digits);
+            out += cell + (c < 3 ? " & " : (r < 3 ? " \\\\\n" : "\n"));
+        }
+    }
+    return out + "\\end{bmatrix}";
+}
+
+Pipeline<Exact> exactPipeline(const Scene& scene)
+{
+    return buildPipeline(convertCamera<Exact>(scene.camera, [](double x) { return fromDecimal<Exact>(x); }));
+}
+
+} // namespace
+
+std::string latexSymbol(const std::string& symbol)
+{
+    const std::size_t open = symbol.find("(-");
+    if (open != std::string::npos) // T(-VRP) -> T(-\mathit{VRP})
+        return symbol.substr(0, open) + "(-\\mathit{" + symbol.substr(open + 2, symbol.size() - open - 3) + "})";
+    const std::size_t underscore = symbol.find('_');
+    const std::string base = symbol.substr(0, underscore);
+    const std::string math = base.size() > 1 ? "\\mathit{" + base + "}" : base;
+    if (underscore == std::string::npos)
+        return math;
+    return math + "_{\\mathrm{" + symbol.substr(underscore + 1) + "}}";
+}
+
+std::string matricesLatex(const Scene& scene, int digits)
+{
+    const Pipeline<Exact> p = exactPipeline(scene);
+    std::ostringstream out;
+    out << "% " << scene.name << ": the stages of the normalizing transformation (column vectors, p' = M p).\n"
+        << "% Made by viewpipe; needs \\usepackage{amsmath}. Exact fractions where the entry is rational.\n\n";
+    std::string product;
+    for (std::size_t k = 0; k < p.stages.size(); ++k) {
+        const Stage<Exact>& stage = p.stages[k];
+        out << "% " << k + 1 << ". " << stage.symbol << ": " << stage.explanation << "\n"
+            << "\\[\n" << latexSymbol(stage.symbol) << " =\n" << bmatrix(stage.matrix, digits) << "\n\\]\n\n";
+        product = latexSymbol(stage.symbol) + (product.empty() ? "" : " \\, " + product);
+    }
+    const std::string name = p.convention == Convention::OpenGL ? "P \\, V"
+                             : p.projection == "perspective"    ? "N_{\\mathrm{per}}"
+                                                                : "N_{\\mathrm{par}}";
+    out << "% The composite\n\\[\n" << name << " = " << product << " =\n" << bmatrix(p.composite, digits)
+        << "\n\\]\n";
+    if (p.view && p.projectionMatrix)
+        out << "\n% The view (gluLookAt) and projection matrices\n\\[\nV =\n" << bmatrix(*p.view, digits)
+            << ", \\qquad P =\n" << bmatrix(*p.projectionMatrix, digits) << "\n\\]\n";
+    return out.str();
+}
+
+} // namespace viewpipe::cli
+
+namespace viewpipe::cli {
+
+std::string stageLatex(const Scene& scene, int stage, int digits)
+{
+    const Pipeline<Exact> p = exactPipeline(scene);
+    const Stage<Exact>& s = p.stages.at(std::size_t(stage - 1));
+    return latexSymbol(s.symbol) + " =\n" + bmatrix(s.matrix, digits);
+}
+
+} // namespace viewpipe::cli

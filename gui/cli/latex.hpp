@@ -1,0 +1,23 @@
+#pragma once
+
+// Stage matrices as LaTeX bmatrix environments, ready to paste into slides.
+// The scene's numbers are taken as the decimals written in the file and the
+// pipeline is evaluated with 100-digit MPFR; an entry that agrees with a
+// fraction of denominator at most 10^9 to 60 digits is printed as that exact
+// fraction (glOrtho's 1/25 and -3/2), any other entry as a decimal.
+
+#include <string>
+
+#include "viewpipe/scene.hpp"
+
+namespace viewpipe::cli {
+
+std::string matricesLatex(const Scene& scene, int digits);
+
+// One stage's matrix (stage >= 1) as "symbol = \begin{bmatrix}...\end{bmatrix}".
+std::string stageLatex(const Scene& scene, int stage, int digits);
+
+// A stage symbol as LaTeX math: "SH_per" -> "\mathit{SH}_{\mathrm{per}}".
+std::string latexSymbol(const std::string& symbol);
+
+} // namespace viewpipe::cli

@@ -1,0 +1,361 @@
+#include "Exporter.h"
+
+#include <vtkBase64Utilities.h>
+#include <vtkErrorCode.h>
+#include <vtkGL2PSExporter.h>
+#include <vtkNew.h>
+#include <vtkPNGWriter.h>
+#include <vtkRenderWindow.h>
+#include <vtkRenderer.h>
+#include <vtkUnsignedCharArray.h>
+#include <vtkWindowToImageFilter.h>
+
+#include <algorithm>
+#include <cctype>
+#include <cerrno>
+#include <fcntl.h>
+#include <sstream>
+#include <cmath>
+#include <cstdio>
+#include <fstream>
+#include <spawn.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include "cli/latex.hpp"
+#include "cli/report.hpp"
+#include "painter/StageTransition.h"
+#include "viewpipe/animation.hpp"
+
+extern char** environ;
+
+namespace viewpipe::gui {
+namespace fs = std::filesystem;
+
+namespace {
+
+constexpr int kBaseFontSize = 20;
+constexpr double kHoldSeconds = 0.6; // the animation rests this long at each stage
+
+struct Cancelled {};
+
+void writeText(const fs::path& file, const std::string& text)
+{
+    std::ofstream out(file, std::ios::binary);
+    out << text;
+    out.flush();
+    if (!out)
+        throw std::runtime_error("cannot write " + file.string() + " (disk full?)");
+}
+
+void writePng(vtkRenderWindow* window, bool transparent, const fs::path& file)
+{
+    vtkNew<vtkWindowToImageFilter> grab;
+    grab->SetInput(window);
+    grab->ReadFrontBufferOff();
+    if (transparent)
+        grab->SetInputBufferTypeToRGBA();
+    grab->Update();
+    vtkNew<vtkPNGWriter> writer;
+    writer->SetInputConnection(grab->GetOutputPort());
+    writer->SetFileName(file.c_str());
+    writer->Write();
+    std::error_code error;
+    if (writer->GetErrorCode() != vtkErrorCode::NoError || fs::file_size(file, error) == 0 || error)
+        throw std::runtime_error("cannot write " + file.string() + " (" +
+                                 vtkErrorCode::GetStringFromErrorCode(writer->GetErrorCode()) + ")");
+}
+
+// PDF and SVG through VTK's GL2PS exporter. On the OpenGL2 backend it writes
+// the text as vector primitives over a raster picture of the 3D props; Debian's
+// gl2ps cannot embed that picture in SVG, so for SVG the picture (drawn
+// without text) is embedded here as a PNG image under GL2PS's text.
+void writeVector(vtkRenderWindow* window, ScenePainter& painter, const fs::path& prefix, const std::string& format,
+                 const std::string& title)
+{
+    vtkNew<vtkGL2PSExporter> exporter;
+    exporter->SetRenderWindow(window);
+    exporter->SetFilePrefix(prefix.c_str());
+    exporter->SetTitle(title.c_str());
+    exporter->CompressOff();
+    exporter->SetSilent(1);
+    if (format == "svg")
+        exporter->SetFileFormatToSVG();
+    else
+        exporter->SetFileFormatToPDF();
+    exporter->Write();
+    const fs::path file = fs::path(prefix.string() + "." + format);
+    std::error_code error;
+    if (!fs::exists(file) || fs::file_size(file, error) == 0 || error)
+        throw std::runtime_error("cannot write " + file.string());
+    if (format != "svg")
+        return;
+
+    painter.setTextVisible(false);
+    window->Render();
+    vtkNew<vtkWindowToImageFilter> grab;
+    grab->SetInput(window);
+    grab->ReadFrontBufferOff();
+    vtkNew<vtkPNGWriter> png;
+    png->SetInputConnection(grab->GetOutputPort());
+    png->WriteToMemoryOn();
+    png->Write();
+    painter.setTextVisible(true);
+    window->Render();
+    vtkUnsignedCharArray* bytes = png->GetResult();
+    std::string encoded(std::size_t(bytes->GetNumberOfValues()) * 4 / 3 + 8, '\0');
+    const unsigned long length = vtkBase64Utilities::Encode(
+        bytes->GetPointer(0), bytes->GetNumberOfValues(), reinterpret_cast<unsigned char*>(encoded.data()), 0);
+    encoded.resize(length);
+
+    std::ifstream in(file);
+    std::string svg((std::istreambuf_iterator<char>(in)), {});
+    const std::size_t group = svg.find("<g>");
+    if (group == std::string::npos)
+        throw std::runtime_error("unexpected SVG from GL2PS in " + file.string());
+    const int* size = window->GetSize();
+    svg.insert(group + 3, "\n<image x=\"0\" y=\"0\" width=\"" + std::to_string(size[0]) + "\" height=\"" +
+                              std::to_string(size[1]) + "\" xlink:href=\"data:image/png;base64," + encoded + "\"/>");
+    writeText(file, svg);
+}
+
+// Runs a program with arguments (no shell); returns its exit status.
+int runProgram(const std::vector<std::string>& arguments)
+{
+    std::vector<char*> argv;
+    for (const std::string& a : arguments)
+        argv.push_back(const_cast<char*>(a.c_str()));
+    argv.push_back(nullptr);
+    pid_t child;
+    posix_spawn_file_actions_t actions;
+    posix_spawn_file_actions_init(&actions);
+    posix_spawn_file_actions_addopen(&actions, STDIN_FILENO, "/dev/null", O_RDONLY, 0);
+    const int spawned = posix_spawnp(&child, argv[0], &actions, nullptr, argv.data(), environ);
+    posix_spawn_file_actions_destroy(&actions);
+    if (spawned != 0)
+        return -1;
+    int status = 0;
+    while (::waitpid(child, &status, 0) < 0 && errno == EINTR) {
+    }
+    return WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status);
+}
+
+std::string stageCaption(const std::vector<Stage<double>>& stages, int k)
+{
+    if (k == 0)
+        return "0. World coordinates";
+    const Stage<double>& s = stages[std::size_t(k - 1)];
+    return std::to_string(k) + ". " + s.symbol + " - " + s.explanation;
+}
+
+void validate(const ExportOptions& o)
+{
+    if (o.width < 64 || o.height < 64 || o.width > 8192 || o.height > 8192)
+        throw InputError("--size", "must be WxH with 64 <= W, H <= 8192");
+    if (o.scale < 1 || o.scale > 4 || o.width * o.scale > 16384 || o.height * o.scale > 16384)
+        throw InputError("--scale", "must be 1 to 4, and size times scale at most 16384");
+    if (o.fps < 1 || o.fps > 120)
+        throw InputError("--fps", "must be 1 to 120");
+    if (o.digits < 1 || o.digits > 17)
+        throw InputError("--digits", "must be 1 to 17");
+    for (const std::string& f : o.formats)
+        if (f != "png" && f != "svg" && f != "pdf")
+            throw InputError("--format", "unknown format \"" + f + "\" (png, svg, pdf)");
+    if (o.formats.empty())
+        throw InputError("--format", "names no format");
+}
+
+} // namespace
+
+std::string slug(const std::string& symbol)
+{
+    std::string out;
+    for (char c : symbol) {
+        if (std::isalnum(static_cast<unsigned char>(c)))
+            out += char(std::tolower(static_cast<unsigned char>(c)));
+        else if (!out.empty() && out.back() != '-')
+            out += '-';
+    }
+    while (!out.empty() && out.back() == '-')
+        out.pop_back();
+    return out;
+}
+
+std::vector<int> parseStages(const std::string& text, int stageCount)
+{
+    std::vector<int> stages;
+    if (text == "all") {
+        for (int k = 0; k <= stageCount; ++k)
+            stages.push_back(k);
+        return stages;
+    }
+    std::istringstream in(text);
+    std::string item;
+    while (std::getline(in, item, ',')) {
+        int first = 0, last = 0;
+        char dash = 0;
+        std::istringstream range(item);
+        if (!(range >> first))
+            throw InputError("--stages", "must be \"all\" or a list such as 0,2,4-5 (got \"" + text + "\")");
+        last = first;
+        if (range >> dash && (dash != '-' || !(range >> last)))
+            throw InputError("--stages", "must be \"all\" or a list such as 0,2,4-5 (got \"" + text + "\")");
+        if (first < 0 || last > stageCount || first > last)
+            throw InputError("--stages", "stage numbers run from 0 (the world) to " + std::to_string(stageCount) +
+                                             " (got \"" + item + "\")");
+        for (int k = first; k <= last; ++k)
+            stages.push_back(k);
+    }
+    if (stages.empty())
+        throw InputError("--stages", "names no stage");
+    return stages;
+}
+
+std::vector<fs::path> exportStages(const Scene& scene, const ExportOptions& options, const ExportProgress& progress,
+                                   const std::atomic<bool>& cancel)
+{
+    validate(options);
+    const Pipeline<double> pipeline = buildPipeline(scene.camera);
+    const std::vector<Stage<double>>& stages = pipeline.stages;
+    const int n = int(stages.size());
+    std::vector<int> chosen = options.stages;
+    if (chosen.empty())
+        chosen = parseStages("all", n);
+    for (int k : chosen)
+        if (k < 0 || k > n)
+            throw InputError("--stages", "stage numbers run from 0 (the world) to " + std::to_string(n));
+
+    const int frameCount = options.animate ? int(std::lround(options.fps * (kHoldSeconds * (n + 1) + n))) : 0;
+    const int total = int(chosen.size() * options.formats.size()) + 2 + frameCount;
+    int done = 0;
+    auto step = [&](const std::string& what) {
+        if (cancel)
+            throw Cancelled{};
+        if (progress)
+            progress(++done, total, what);
+    };
+
+    std::error_code error;
+    const bool created = !fs::exists(options.out);
+    fs::create_directories(options.out, error);
+    if (error || !fs::is_directory(options.out))
+        throw InputError("--out", "cannot create the folder \"" + options.out.string() + "\": " + error.message());
+    const fs::path temporary = options.out / (".viewpipe-export-" + std::to_string(::getpid()));
+    fs::remove_all(temporary, error);
+    fs::create_directories(temporary);
+
+    auto cleanUp = [&] {
+        std::error_code ignored;
+        fs::remove_all(temporary, ignored);
+        if (created)
+            fs::remove(options.out, ignored); // only if still empty
+    };
+
+    try {
+        // One offscreen window, one painter, one camera framing every stage.
+        vtkNew<vtkRenderWindow> window;
+        window->SetOffScreenRendering(1);
+        window->SetSize(options.width * options.scale, options.height * options.scale);
+        window->SetAlphaBitPlanes(options.transparent ? 1 : 0);
+        window->SetMultiSamples(0);
+        vtkNew<vtkRenderer> renderer;
+        renderer->UseFXAAOn();
+        window->AddRenderer(renderer);
+        ScenePainter painter(renderer, nullptr);
+        painter.setTheme(options.theme);
+        painter.setFontSize(kBaseFontSize * options.scale);
+        painter.setLineScale(options.scale);
+        painter.setScene(scene);
+        if (options.transparent)
+            renderer->SetBackgroundAlpha(0);
+        window->Render(); // sizes the renderer before framing
+        painter.resetView();
+        std::vector<Mat4<double>> all;
+        for (int k = 0; k <= n; ++k)
+            all.push_back(cumulativeAt(stages, k));
+        const ScenePainter::Framing framing = painter.framingOf(all, true);
+
+        auto showAt = [&](double position, const std::string& caption) {
+            painter.show(cumulativeAt(stages, position), StageTransition::canonicalOpacity(position, stages.size()));
+            painter.setCaptions(caption, "");
+            if (options.framePerStage)
+                painter.frame();
+            else
+                painter.frameOn(framing);
+            window->Render();
+        };
+
+        for (int k : chosen) {
+            const std::string base = (k < 10 ? "0" : "") + std::to_string(k) + "-" +
+                                     (k == 0 ? std::string("world") : slug(stages[std::size_t(k - 1)].symbol));
+            showAt(k, stageCaption(stages, k));
+            for (const std::string& format : options.formats) {
+                step("stage " + std::to_string(k) + " of " + std::to_string(n) + ": " + base + "." + format);
+                if (format == "png")
+                    writePng(window, options.transparent, temporary / (base + ".png"));
+                else
+                    writeVector(window, painter, temporary / base, format, stageCaption(stages, k));
+            }
+        }
+
+        step("matrices.tex");
+        writeText(temporary / "matrices.tex", cli::matricesLatex(scene, options.digits));
+        step("matrices.json");
+        writeText(temporary / "matrices.json", cli::pipelineJson(scene, cli::Precision::Double).dump(2) + "\n");
+
+        if (options.animate) {
+            const fs::path frames = temporary / "frames";
+            fs::create_directories(frames);
+            int frame = 0;
+            auto emit = [&](double position, const std::string& caption) {
+                char name[32];
+                std::snprintf(name, sizeof name, "%05d.png", frame++);
+                step("frame " + std::to_string(frame) + " of " + std::to_string(frameCount));
+                showAt(position, caption);
+                writePng(window, false, frames / name);
+            };
+            const int hold = int(std::lround(options.fps * kHoldSeconds));
+            for (int k = 0; k <= n; ++k) {
+                if (k > 0)
+                    for (int f = 1; f <= options.fps; ++f) {
+                        const double u = double(f) / options.fps;
+                        emit(k - 1 + u * u * (3 - 2 * u), stageCaption(stages, k));
+                    }
+                for (int f = 0; f < hold; ++f)
+                    emit(k, stageCaption(stages, k));
+            }
+            // H.264 in MP4 with yuv420p plays in browsers and in slide software.
+            const int status = runProgram({"ffmpeg", "-hide_banner", "-loglevel", "error", "-y", "-framerate",
+                                           std::to_string(options.fps), "-i", (frames / "%05d.png").string(), "-vf",
+                                           "scale=trunc(iw/2)*2:trunc(ih/2)*2", "-c:v", "libx264", "-pix_fmt",
+                                           "yuv420p", "-movflags", "+faststart",
+                                           (temporary / "animation.mp4").string()});
+            if (cancel)
+                throw Cancelled{};
+            if (status == -1)
+                throw std::runtime_error("the animation needs ffmpeg (Debian package ffmpeg), which was not found");
+            if (status != 0)
+                throw std::runtime_error("ffmpeg failed to encode the animation (exit " + std::to_string(status) + ")");
+            fs::remove_all(frames);
+        }
+
+        // Everything is complete: move it into place, file by file (rename is atomic).
+        std::vector<fs::path> written;
+        for (const auto& entry : fs::directory_iterator(temporary)) {
+            const fs::path target = options.out / entry.path().filename();
+            fs::rename(entry.path(), target);
+            written.push_back(target);
+        }
+        fs::remove(temporary);
+        std::sort(written.begin(), written.end());
+        return written;
+    } catch (const Cancelled&) {
+        cleanUp();
+        return {};
+    } catch (...) {
+        cleanUp();
+        throw;
+    }
+}
+
+} // namespace viewpipe::gui

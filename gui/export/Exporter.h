@@ -1,0 +1,52 @@
+#pragma once
+
+// Exports the stages of a scene as images for slides: one picture per stage
+// drawn by the scene painter with one camera that frames every stage, vector
+// SVG/PDF through VTK's GL2PS exporter, the matrices as LaTeX and JSON, and
+// the animated transition as an MP4 video (H.264, encoded by ffmpeg). Files
+// are written into a temporary folder and moved into place only when all are
+// complete: a failed or cancelled export leaves nothing half-written.
+
+#include <atomic>
+#include <filesystem>
+#include <functional>
+#include <set>
+#include <string>
+#include <vector>
+
+#include "painter/ScenePainter.h"
+
+namespace viewpipe::gui {
+
+struct ExportOptions {
+    std::filesystem::path out;
+    int width = 1280, height = 720;
+    int scale = 1;               // pixels per size unit: 2 for high-DPI slides
+    std::vector<int> stages;     // empty: all, 0 (the world) to n
+    Theme theme = Theme::Light;
+    bool transparent = false;
+    std::set<std::string> formats = {"png"}; // png, svg, pdf
+    bool animate = false;
+    int fps = 30;
+    int digits = 4;              // decimals in matrices.tex
+    // One framing for every stage (consistent slides), or each stage framed on
+    // its own (readable when the scale changes a lot, as it does at S_per).
+    bool framePerStage = false;
+};
+
+// What an export is doing, for progress bars: `done` of `total` steps.
+using ExportProgress = std::function<void(int done, int total, const std::string& what)>;
+
+// Throws InputError for bad options and std::runtime_error for failures
+// (disk full, encoder missing). Returns the files written. Stops, cleaning
+// up, when `cancel` becomes true (then returns nothing).
+std::vector<std::filesystem::path> exportStages(const Scene& scene, const ExportOptions& options,
+                                                const ExportProgress& progress, const std::atomic<bool>& cancel);
+
+// "T(-VRP)" -> "t-vrp": the stage's part of its file names.
+std::string slug(const std::string& symbol);
+
+// Parses "all" or a list such as "0,2,4-5"; throws InputError naming --stages.
+std::vector<int> parseStages(const std::string& text, int stageCount);
+
+} // namespace viewpipe::gui
