@@ -94,7 +94,7 @@ int main(int argc, char** argv)
                                   exportFormats = "png";
     int exportScale = 1, exportFps = 30, exportDigits = 4;
     bool exportTransparent = false, exportAnimate = false, exportQuiet = false;
-    std::string exportFraming = "fixed";
+    std::string exportFraming = "per-stage";
     CLI::App* exportCommand =
         app.add_subcommand("export", "Export every stage as images for slides, the matrices as LaTeX and JSON");
     exportCommand->add_option("SCENE", options.scene, "Scene file (JSON)")->required();
@@ -113,7 +113,8 @@ int main(int argc, char** argv)
     exportCommand->add_option("--digits", exportDigits, "Significant digits of inexact entries in matrices.tex")
         ->capture_default_str();
     exportCommand->add_flag("--quiet", exportQuiet, "No progress bar, no list of files");
-    exportCommand->add_option("--framing", exportFraming, "fixed: one camera framing every stage; per-stage")
+    exportCommand->add_option("--framing", exportFraming,
+                              "per-stage: each picture framed on its stage; fixed: one framing for all")
         ->check(CLI::IsMember({"fixed", "per-stage"}))
         ->capture_default_str();
 
@@ -163,7 +164,7 @@ int main(int argc, char** argv)
             o.animate = exportAnimate;
             o.fps = exportFps;
             o.digits = exportDigits;
-            o.framePerStage = exportFraming == "per-stage";
+            o.fixedFraming = exportFraming == "fixed";
 
             std::signal(SIGINT, onInterrupt);
             std::signal(SIGTERM, onInterrupt);

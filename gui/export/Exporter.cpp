@@ -278,10 +278,10 @@ std::vector<fs::path> exportStages(const Scene& scene, const ExportOptions& opti
         auto showAt = [&](double position, const std::string& caption) {
             painter.show(cumulativeAt(stages, position), StageTransition::canonicalOpacity(position, stages.size()));
             painter.setCaptions(caption, "");
-            if (options.framePerStage)
-                painter.frame();
-            else
+            if (options.fixedFraming)
                 painter.frameOn(framing);
+            else
+                painter.frame();
             window->Render();
         };
 

@@ -29,9 +29,12 @@ struct ExportOptions {
     bool animate = false;
     int fps = 30;
     int digits = 4;              // decimals in matrices.tex
-    // One framing for every stage (consistent slides), or each stage framed on
-    // its own (readable when the scale changes a lot, as it does at S_per).
-    bool framePerStage = false;
+    // Every picture has the same camera direction, size and palette. By default
+    // each stage is framed on its own content: the scale stages shrink the
+    // scene (the default scene about 35 times at S_per), and one framing for
+    // all would leave those pictures nearly empty. fixedFraming uses one
+    // framing that holds every stage, for side-by-side comparison of sizes.
+    bool fixedFraming = false;
 };
 
 // What an export is doing, for progress bars: `done` of `total` steps.

@@ -1,0 +1,285 @@
+// Rendering through the viewpipe executable: screenshots of the app
+// (`viewpipe open --stage K --screenshot`) and exported stages (`viewpipe
+// export`) of the default scene against reviewed images, with a threshold for
+// rendering noise. A missing baseline is written to the build tree for review
+// and the test fails; copy it to tests/baselines/ only after looking at it.
+// Also the export's other outputs: SVG, PDF, LaTeX, JSON, the animation, and
+// its atomicity.
+
+#include <QCoreApplication>
+#include <QDir>
+#include <QImage>
+#include <QJsonDocument>
+#include <QProcess>
+#include <QStandardPaths>
+#include <QTemporaryDir>
+#include <QXmlStreamReader>
+#include <QtTest>
+
+#include <cmath>
+#include <csignal>
+
+namespace {
+
+// Share of pixels whose largest channel difference exceeds `tolerance`.
+double differingShare(const QImage& a, const QImage& b, int tolerance)
+{
+    const QImage x = a.convertToFormat(QImage::Format_RGB32), y = b.convertToFormat(QImage::Format_RGB32);
+    qint64 differing = 0;
+    for (int row = 0; row < x.height(); ++row) {
+        const QRgb* p = reinterpret_cast<const QRgb*>(x.constScanLine(row));
+        const QRgb* q = reinterpret_cast<const QRgb*>(y.constScanLine(row));
+        for (int col = 0; col < x.width(); ++col) {
+            const int d = std::max({std::abs(qRed(p[col]) - qRed(q[col])), std::abs(qGreen(p[col]) - qGreen(q[col])),
+                                    std::abs(qBlue(p[col]) - qBlue(q[col]))});
+            differing += d > tolerance;
+        }
+    }
+    return double(differing) / (double(x.width()) * x.height());
+}
+
+// Share of pixels that differ from the most common color: a blank or black
+// picture has almost none.
+double contentShare(const QImage& image)
+{
+    const QImage x = image.convertToFormat(QImage::Format_RGB32);
+    QHash<QRgb, qint64> counts;
+    for (int row = 0; row < x.height(); row += 2)
+        for (int col = 0; col < x.width(); col += 2)
+            ++counts[reinterpret_cast<const QRgb*>(x.constScanLine(row))[col]];
+    qint64 most = 0, all = 0;
+    for (qint64 c : counts) {
+        most = std::max(most, c);
+        all += c;
+    }
+    return 1.0 - double(most) / double(all);
+}
+
+struct Run {
+    int exitCode;
+    QString out, err;
+};
+
+Run viewpipe(const QStringList& arguments, const QProcessEnvironment& environment = QProcessEnvironment::systemEnvironment())
+{
+    QProcess process;
+    process.setProcessEnvironment(environment);
+    process.start(VIEWPIPE_EXE, arguments);
+    if (!process.waitForFinished(300000))
+        return {-1, "", "timed out"};
+    return {process.exitCode(), process.readAllStandardOutput(), process.readAllStandardError()};
+}
+
+const QString kHouse = QString(VIEWPIPE_DATA_DIR) + "/scenes/house.json";
+
+// Compares an image with tests/baselines/<name>; a missing baseline is written
+// to the build tree for review.
+void compareWithBaseline(const QString& file, const QString& name)
+{
+    const QImage image(file);
+    QVERIFY2(!image.isNull(), qPrintable("cannot read " + file));
+    QVERIFY2(contentShare(image) > 0.02, qPrintable(name + " is nearly blank"));
+    const QImage baseline(QString(VIEWPIPE_BASELINE_DIR) + "/" + name);
+    if (baseline.isNull()) {
+        const QString fresh = QString(VIEWPIPE_NEW_BASELINE_DIR) + "/" + name;
+        QDir().mkpath(QFileInfo(fresh).path());
+        QFile::remove(fresh);
+        QFile::copy(file, fresh);
+        QFAIL(qPrintable("no baseline: wrote " + fresh + "; look at it, then copy it to tests/baselines/"));
+    }
+    QCOMPARE(image.size(), baseline.size());
+    const double share = differingShare(image, baseline, 48);
+    qInfo("%s: %.4f%% of pixels differ", qPrintable(name), 100 * share);
+    QVERIFY2(share < 0.005, qPrintable(QString("%1% of pixels differ from %2").arg(100 * share).arg(name)));
+}
+
+QString readAll(const QString& file)
+{
+    QFile f(file);
+    return f.open(QIODevice::ReadOnly) ? QString::fromUtf8(f.readAll()) : QString();
+}
+
+QString writeScene(const QTemporaryDir& dir, const QString& name, const QByteArray& json)
+{
+    const QString file = dir.filePath(name);
+    QFile f(file);
+    f.open(QIODevice::WriteOnly);
+    f.write(json);
+    return file;
+}
+
+} // namespace
+
+class RenderingTest : public QObject {
+    Q_OBJECT
+
+private slots:
+    void appScreenshotMatchesBaseline_data()
+    {
+        QTest::addColumn<int>("stage");
+        for (int k = 0; k <= 5; ++k)
+            QTest::newRow(qPrintable(QString("stage %1").arg(k))) << k;
+    }
+
+    void appScreenshotMatchesBaseline()
+    {
+        QFETCH(int, stage);
+        QTemporaryDir dir;
+        const QString shot = dir.filePath("shot.png");
+        const Run r = viewpipe({"open", kHouse, "--stage", QString::number(stage), "--screenshot", shot, "--size",
+                                "1280x800"});
+        QVERIFY2(r.exitCode == 0, qPrintable(r.err));
+        QCOMPARE(QImage(shot).size(), QSize(1280, 800));
+        QVERIFY2(contentShare(QImage(shot)) > 0.2, "the screenshot is nearly blank");
+        compareWithBaseline(shot, QString("house-stage-%1.png").arg(stage));
+    }
+
+    // The default scene's export (PNG, 1280x720, light theme) against reviewed images.
+    void exportMatchesBaselines()
+    {
+        QTemporaryDir dir;
+        const QString out = dir.filePath("slides");
+        const Run r = viewpipe({"export", kHouse, "--out", out, "--quiet"});
+        QVERIFY2(r.exitCode == 0, qPrintable(r.err));
+        const QStringList expected = {"00-world.png", "01-t-vrp.png", "02-r.png",     "03-t-prp.png",
+                                      "04-sh-per.png", "05-s-per.png", "matrices.json", "matrices.tex"};
+        QCOMPARE(QDir(out).entryList(QDir::Files | QDir::Hidden, QDir::Name), expected);
+        for (const QString& name : expected.mid(0, 6)) {
+            QCOMPARE(QImage(out + "/" + name).size(), QSize(1280, 720));
+            compareWithBaseline(out + "/" + name, "export/house-" + name);
+        }
+        // matrices.json is the same object as `pipeline --json`.
+        const Run json = viewpipe({"pipeline", kHouse, "--json"});
+        QCOMPARE(QJsonDocument::fromJson(readAll(out + "/matrices.json").toUtf8()),
+                 QJsonDocument::fromJson(json.out.toUtf8()));
+    }
+
+    void exportWritesVectorFormats()
+    {
+        QTemporaryDir dir;
+        const QString out = dir.filePath("vector");
+        const Run r = viewpipe({"export", kHouse, "--out", out, "--stages", "4", "--format", "svg,pdf", "--quiet"});
+        QVERIFY2(r.exitCode == 0, qPrintable(r.err));
+
+        // SVG: well-formed XML, the 3D picture embedded, the labels as text.
+        QXmlStreamReader xml(readAll(out + "/04-sh-per.svg"));
+        QStringList texts;
+        bool picture = false;
+        while (!xml.atEnd()) {
+            if (xml.readNext() != QXmlStreamReader::StartElement)
+                continue;
+            if (xml.name() == QLatin1String("image"))
+                picture = xml.attributes().value("xlink:href").startsWith(QLatin1String("data:image/png;base64,"));
+            if (xml.name() == QLatin1String("text"))
+                texts << xml.readElementText();
+        }
+        QVERIFY2(!xml.hasError(), qPrintable(xml.errorString()));
+        QVERIFY(picture);
+        QVERIFY(texts.contains("PRP") && texts.contains("window") && texts.contains("front (F)"));
+        QVERIFY(texts.filter("SH_per").size() == 1);
+
+        // PDF: a complete file with the picture and the text.
+        const QByteArray pdf = [&] {
+            QFile f(out + "/04-sh-per.pdf");
+            f.open(QIODevice::ReadOnly);
+            return f.readAll();
+        }();
+        QVERIFY(pdf.startsWith("%PDF-"));
+        QVERIFY(pdf.trimmed().endsWith("%%EOF"));
+        QVERIFY(pdf.contains("/Subtype /Image"));
+        QVERIFY(pdf.contains("(PRP)") && pdf.contains("SH_per"));
+    }
+
+    // The seeds' glOrtho example (seed 001): entries 1/25, -1/5, 1/20, -3/2, -1/4.
+    void latexPrintsExactFractions()
+    {
+        QTemporaryDir dir;
+        const QString scene = writeScene(dir, "ortho.json", R"({"camera": {"look_at": {"eye": [0, 0, 0],
+            "center": [0, 0, -1], "up": [0, 1, 0]}, "projection": {"type": "ortho", "left": -20, "right": 30,
+            "bottom": 10, "top": 50, "near": 15, "far": -25}}})");
+        const Run r = viewpipe({"export", scene, "--out", dir.filePath("out"), "--stages", "0", "--quiet"});
+        QVERIFY2(r.exitCode == 0, qPrintable(r.err));
+        const QString tex = readAll(dir.filePath("out/matrices.tex"));
+        const QString projection = tex.mid(tex.indexOf("P =\n\\begin{bmatrix}"));
+        QVERIFY2(projection.contains("\\frac{1}{25} & 0 & 0 & -\\frac{1}{5} \\\\\n"), qPrintable(projection));
+        QVERIFY(projection.contains("0 & \\frac{1}{20} & 0 & -\\frac{3}{2} \\\\\n"));
+        QVERIFY(projection.contains("0 & 0 & \\frac{1}{20} & -\\frac{1}{4} \\\\\n"));
+
+        // An irrational entry (cos 45 degrees in R) is a decimal.
+        const QString oblique = writeScene(dir, "oblique.json", R"({"view": {"projection": "parallel",
+            "vrp": [0, 0, 0], "vpn": [1, 0, 1], "vup": [0, 1, 0], "prp": [0, 0, 10], "window": [-1, 1, -1, 1],
+            "front": 1, "back": -1}})");
+        QVERIFY(viewpipe({"export", oblique, "--out", dir.filePath("oblique"), "--stages", "0", "--quiet"}).exitCode == 0);
+        const QString rotation = readAll(dir.filePath("oblique/matrices.tex"));
+        QVERIFY2(rotation.contains("0.7071 & 0 & -0.7071 & 0"), qPrintable(rotation));
+
+        // Where TeX is installed, the file compiles.
+        const QString pdflatex = QStandardPaths::findExecutable("pdflatex");
+        if (pdflatex.isEmpty())
+            QSKIP("no TeX installation (pdflatex): matrices.tex was checked for content but not compiled");
+        QFile document(dir.filePath("check.tex"));
+        document.open(QIODevice::WriteOnly);
+        document.write("\\documentclass{article}\n\\usepackage{amsmath}\n\\begin{document}\n\\input{out/matrices.tex}\n"
+                       "\\input{oblique/matrices.tex}\n\\end{document}\n");
+        document.close();
+        QProcess tex2pdf;
+        tex2pdf.setWorkingDirectory(dir.path());
+        tex2pdf.start(pdflatex, {"-interaction=nonstopmode", "-halt-on-error", "check.tex"});
+        QVERIFY(tex2pdf.waitForFinished(120000));
+        QVERIFY2(tex2pdf.exitCode() == 0, tex2pdf.readAllStandardOutput().right(2000).constData());
+    }
+
+    void exportAnimates()
+    {
+        QTemporaryDir dir;
+        const Run r = viewpipe({"export", kHouse, "--out", dir.filePath("a"), "--stages", "5", "--animate", "--fps",
+                                "4", "--size", "320x180", "--quiet"});
+        QVERIFY2(r.exitCode == 0, qPrintable(r.err));
+        QFile video(dir.filePath("a/animation.mp4"));
+        QVERIFY(video.open(QIODevice::ReadOnly));
+        QVERIFY(video.read(12).mid(4, 4) == "ftyp"); // an MP4 container
+        QVERIFY(video.size() > 1000);
+        QVERIFY(!QDir(dir.filePath("a")).entryList(QDir::AllEntries | QDir::Hidden | QDir::NoDotAndDotDot).contains("frames"));
+    }
+
+    void exportWorksWithoutADisplay()
+    {
+        QTemporaryDir dir;
+        QProcessEnvironment environment = QProcessEnvironment::systemEnvironment();
+        environment.remove("DISPLAY");
+        const Run r = viewpipe({"export", kHouse, "--out", dir.filePath("headless"), "--stages", "1", "--quiet"},
+                               environment);
+        QVERIFY2(r.exitCode == 0, qPrintable(r.err));
+        QVERIFY(contentShare(QImage(dir.filePath("headless/01-t-vrp.png"))) > 0.02);
+    }
+
+    void exportIsAtomic()
+    {
+        QTemporaryDir dir;
+        // Bad options: exit 2, nothing created.
+        Run r = viewpipe({"export", kHouse, "--out", dir.filePath("bad"), "--format", "png,bmp"});
+        QCOMPARE(r.exitCode, 2);
+        QVERIFY(r.err.contains("--format: unknown format \"bmp\""));
+        QVERIFY(!QDir(dir.filePath("bad")).exists());
+
+        // An interrupted export leaves the previous files as they were and no partial ones.
+        const QString out = dir.filePath("slides");
+        QDir().mkpath(out);
+        QFile old(out + "/00-world.png");
+        old.open(QIODevice::WriteOnly);
+        old.write("previous");
+        old.close();
+        QProcess process;
+        process.start(VIEWPIPE_EXE, {"export", kHouse, "--out", out, "--animate", "--quiet"});
+        QVERIFY(process.waitForStarted());
+        QTest::qWait(2500);
+        ::kill(pid_t(process.processId()), SIGINT);
+        QVERIFY(process.waitForFinished(60000));
+        QCOMPARE(process.exitCode(), 130);
+        QCOMPARE(QDir(out).entryList(QDir::AllEntries | QDir::Hidden | QDir::NoDotAndDotDot), QStringList{"00-world.png"});
+        QCOMPARE(readAll(out + "/00-world.png"), QString("previous"));
+    }
+};
+
+QTEST_GUILESS_MAIN(RenderingTest)
+#include "rendering_test.moc"
