@@ -3,6 +3,7 @@
 #include <QAction>
 #include <QActionGroup>
 #include <QApplication>
+#include <QClipboard>
 #include <QCloseEvent>
 #include <QDir>
 #include <QDockWidget>
@@ -14,6 +15,7 @@
 #include <QMenuBar>
 #include <QMessageBox>
 #include <QMimeData>
+#include <QProgressDialog>
 #include <QPushButton>
 #include <QScrollArea>
 #include <QSettings>
@@ -32,6 +34,8 @@
 
 #include "AppPaths.h"
 #include "ClickStyle.h"
+#include "ExportDialog.h"
+#include "cli/latex.hpp"
 #include "MatrixPanel.h"
 #include "ParameterPanel.h"
 #include "Theme.h"
@@ -217,6 +221,21 @@ void MainWindow::buildMenus()
         if (!path.isEmpty())
             importMesh(path);
     });
+    file->addAction(tr("&Export Stages…"), this, [this] {
+        ExportDialog dialog(stageCount(), painter_->theme(), this);
+        if (dialog.exec() != QDialog::Accepted)
+            return;
+        try {
+            const auto files = exportStages(dialog.options());
+            if (!files.empty())
+                statusBar()->showMessage(tr("Exported %1 files to %2")
+                                             .arg(files.size())
+                                             .arg(QString::fromStdString(files.front().parent_path().string())),
+                                         8000);
+        } catch (const InputError& e) {
+            showMessage(QString::fromStdString(e.what()));
+        }
+    }, QKeySequence(Qt::CTRL | Qt::Key_E));
     file->addSeparator();
     file->addAction(tr("&Quit"), this, &QWidget::close, QKeySequence::Quit);
     rebuildPresetMenu();
@@ -229,6 +248,9 @@ void MainWindow::buildMenus()
     redo->setShortcut(QKeySequence::Redo);
     edit->addAction(undo);
     edit->addAction(redo);
+    edit->addSeparator();
+    edit->addAction(tr("Copy Matrix as &LaTeX"), this, &MainWindow::copyMatrixAsLatex, QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_C));
+    edit->addAction(tr("Copy View as &Image"), this, &MainWindow::copyViewAsImage, QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_I));
 
     QMenu* view = menuBar()->addMenu(tr("&View"));
     projectedAction_ = view->addAction(tr("&Projected View"), this, &MainWindow::setProjectedViewVisible);
@@ -548,6 +570,48 @@ void MainWindow::rebuildPresetMenu()
                 openScene(path);
         });
     }
+}
+
+std::vector<std::filesystem::path> MainWindow::exportStages(const ExportOptions& options)
+{
+    QProgressDialog progress(tr("Exporting stages…"), tr("Cancel"), 0, 100, this);
+    progress.setWindowModality(Qt::WindowModal);
+    progress.setMinimumDuration(0);
+    std::atomic<bool> cancel{false};
+    try {
+        auto files = gui::exportStages(
+            document_->scene(), options,
+            [&progress, &cancel](int done, int total, const std::string& what) {
+                progress.setMaximum(total);
+                progress.setValue(done);
+                progress.setLabelText(QString::fromStdString(what));
+                QApplication::processEvents(); // keeps the window alive and Cancel clickable
+                cancel = progress.wasCanceled();
+            },
+            cancel);
+        progress.setValue(progress.maximum());
+        return files;
+    } catch (const InputError&) {
+        throw;
+    } catch (const std::exception& e) {
+        showMessage(tr("Export failed; nothing was written: %1").arg(e.what()));
+        return {};
+    }
+}
+
+void MainWindow::copyMatrixAsLatex()
+{
+    const std::string latex = stage_ == 0 ? cli::matricesLatex(document_->scene(), 4)
+                                          : cli::stageLatex(document_->scene(), stage_, 4);
+    QApplication::clipboard()->setText(QString::fromStdString(latex));
+    statusBar()->showMessage(tr("Copied the matrix as LaTeX"), 4000);
+}
+
+void MainWindow::copyViewAsImage()
+{
+    renderNow();
+    QApplication::clipboard()->setImage(worldWidget_->grabFramebuffer());
+    statusBar()->showMessage(tr("Copied the view as an image"), 4000);
 }
 
 void MainWindow::pickAt(int x, int y)

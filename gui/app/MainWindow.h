@@ -11,6 +11,7 @@
 #include <optional>
 
 #include "Document.h"
+#include "export/Exporter.h"
 #include "painter/ScenePainter.h"
 #include "painter/StageTransition.h"
 
@@ -52,6 +53,14 @@ public:
     // Adds a mesh (OBJ, PLY, STL) to the scene as one undoable edit; a file
     // VTK cannot read is refused with its reason and changes nothing.
     bool importMesh(const QString& path);
+
+    // Exports with a progress dialog that can cancel; returns the files written
+    // (none when cancelled or failed, with the reason shown).
+    std::vector<std::filesystem::path> exportStages(const ExportOptions& options);
+    // Edit > Copy Matrix as LaTeX: the current stage's matrix (all of them at stage 0).
+    void copyMatrixAsLatex();
+    // Edit > Copy View as Image: the world view as it is on screen.
+    void copyViewAsImage();
 
     void setTheme(Theme theme);
     void setFontSize(int points);

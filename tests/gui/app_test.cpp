@@ -2,6 +2,9 @@
 // open and save, and the Eigen-VTK adapter.
 
 #include <QApplication>
+#include <QClipboard>
+#include <QProgressDialog>
+#include <QTimer>
 #include <QDoubleSpinBox>
 #include <QListWidget>
 #include <QSignalSpy>
@@ -222,6 +225,44 @@ private slots:
         QVERIFY2(w.matrices()->traceText().contains("<td align='right'>8</td><td align='right'>4</td>"
                                                     "<td align='right'>-30</td>"),
                  qPrintable(w.matrices()->traceText()));
+    }
+
+    void copiesMatrixAndViewToTheClipboard()
+    {
+        MainWindow& w = *window_;
+        w.goToStage(4, false);
+        w.copyMatrixAsLatex();
+        const QString latex = QApplication::clipboard()->text();
+        QVERIFY2(latex.startsWith("\\mathit{SH}_{\\mathrm{per}} =\n\\begin{bmatrix}"), qPrintable(latex));
+        QVERIFY(latex.contains("1 & 0 & -\\frac{2}{21} & 0"));
+        w.copyViewAsImage();
+        const QImage image = QApplication::clipboard()->image();
+        QCOMPARE(image.size(), w.findChild<QVTKOpenGLNativeWidget*>("worldView")->size());
+    }
+
+    void exportsFromTheAppAndCancels()
+    {
+        MainWindow& w = *window_;
+        QTemporaryDir dir;
+        ExportOptions options;
+        options.out = dir.filePath("slides").toStdString();
+        options.width = 320;
+        options.height = 180;
+        options.stages = {0, 5};
+        const auto files = w.exportStages(options);
+        QCOMPARE(files.size(), std::size_t(4)); // two pictures, matrices.tex, matrices.json
+        QVERIFY(QFile::exists(dir.filePath("slides/05-s-per.png")));
+
+        // Cancel as soon as the progress dialog shows: nothing is left behind.
+        QTimer::singleShot(0, [&w] {
+            if (auto* progress = w.findChild<QProgressDialog*>())
+                progress->cancel();
+        });
+        options.out = dir.filePath("cancelled").toStdString();
+        options.stages = {};
+        options.animate = true;
+        QVERIFY(w.exportStages(options).empty());
+        QVERIFY(!QDir(dir.filePath("cancelled")).exists());
     }
 
     void eigenVtkAdapterKeepsRowsAndColumns()

@@ -1,0 +1,41 @@
+#pragma once
+
+// File > Export Stages: the options of `viewpipe export`, in a dialog.
+
+#include <QDialog>
+
+#include "export/Exporter.h"
+
+class QCheckBox;
+class QComboBox;
+class QLineEdit;
+class QSpinBox;
+
+namespace viewpipe::gui {
+
+class ExportDialog : public QDialog {
+    Q_OBJECT
+public:
+    ExportDialog(int stageCount, Theme theme, QWidget* parent = nullptr);
+
+    // The options as entered; throws InputError for a bad stage list.
+    ExportOptions options() const;
+
+private:
+    int stageCount_;
+    QLineEdit* folder_;
+    QSpinBox* width_;
+    QSpinBox* height_;
+    QSpinBox* scale_;
+    QLineEdit* stages_;
+    QComboBox* theme_;
+    QComboBox* framing_;
+    QCheckBox* transparent_;
+    QCheckBox* png_;
+    QCheckBox* svg_;
+    QCheckBox* pdf_;
+    QCheckBox* animate_;
+    QSpinBox* fps_;
+};
+
+} // namespace viewpipe::gui
