@@ -12,7 +12,9 @@
 
 #include "app/OpenCommand.h"
 #include "cli/report.hpp"
+#include "export/AccuracyPlot.h"
 #include "export/Exporter.h"
+#include "cli/bench.hpp"
 #include "export/VirtualDisplay.h"
 #include "painter/ScenePainter.h"
 #include "viewpipe/version.hpp"
@@ -29,6 +31,7 @@ struct Options {
     bool json = false;
     std::string precision = "double";
     std::vector<double> point;
+    unsigned bits = 256;
 };
 
 std::atomic<bool> interrupted{false};
@@ -51,9 +54,10 @@ std::pair<int, int> parseSize(const std::string& text, const std::string& option
 
 void addPrecision(CLI::App* command, Options& options)
 {
-    command->add_option("--precision", options.precision, "float, double or long-double")
-        ->check(CLI::IsMember({"float", "double", "long-double"}))
+    command->add_option("--precision", options.precision, "float, double, long-double, float128 or mpfr")
+        ->check(CLI::IsMember({"float", "double", "long-double", "float128", "mpfr"}))
         ->capture_default_str();
+    command->add_option("--bits", options.bits, "Significand bits for --precision mpfr")->capture_default_str();
 }
 
 } // namespace
@@ -118,6 +122,17 @@ int main(int argc, char** argv)
         ->check(CLI::IsMember({"fixed", "per-stage"}))
         ->capture_default_str();
 
+    std::size_t benchVertices = 1000000;
+    std::string benchPlot, benchViewport;
+    CLI::App* benchCommand = app.add_subcommand(
+        "bench", "What each precision costs in time and buys in accuracy (default scene: the house)");
+    benchCommand->add_option("SCENE", options.scene, "Scene file (JSON)");
+    benchCommand->add_flag("--json", options.json, "One JSON object on stdout");
+    benchCommand->add_option("--plot", benchPlot, "Draw error against time (log-log) to this PNG");
+    benchCommand->add_option("--vertices", benchVertices, "Vertices timed per run")->capture_default_str();
+    benchCommand->add_option("--bits", options.bits, "Significand bits of the mpfr tier (default 160)");
+    benchCommand->add_option("--viewport", benchViewport, "Viewport WxH for pixel errors (default 1920x1080)");
+
     try {
         app.parse(argc, argv);
     } catch (const CLI::Success& e) {
@@ -142,6 +157,43 @@ int main(int argc, char** argv)
             return kExitBadInput;
         } catch (const std::exception& e) {
             std::cerr << "viewpipe: internal error: " << e.what() << "\n";
+            return kExitInternal;
+        }
+    }
+
+    if (*benchCommand) {
+        try {
+            const std::string file = options.scene.empty() ? std::string(VIEWPIPE_DATA_DIR) + "/scenes/house.json"
+                                                           : options.scene;
+            const Scene scene = loadScene(file);
+            cli::BenchOptions o;
+            o.vertices = benchVertices;
+            o.mpfrBits = options.bits == 256 ? 160 : options.bits;
+            if (!benchViewport.empty())
+                std::tie(o.viewport.width, o.viewport.height) = parseSize(benchViewport, "--viewport");
+            const cli::BenchResult result = cli::runBench(
+                scene, gui::objectVertices(scene), o, [&](int done, int total, const std::string& tier) {
+                    if (!options.json && !tier.empty())
+                        std::cerr << "[" << done + 1 << "/" << total << "] timing and measuring " << tier << "\n";
+                    return true;
+                });
+            if (options.json)
+                std::cout << cli::benchJson(result).dump() << "\n";
+            else
+                cli::printBench(std::cout, result);
+            if (!benchPlot.empty()) {
+                const gui::VirtualDisplay display;
+                gui::writeAccuracyPlot(result, benchPlot, gui::Theme::Light);
+                if (!options.json)
+                    std::cout << "\nPlot: " << benchPlot << "\n";
+            }
+            return 0;
+        } catch (const InputError& e) {
+            std::cerr << (options.scene.empty() ? std::string("viewpipe bench") : options.scene) << ": " << e.what()
+                      << "\n";
+            return kExitBadInput;
+        } catch (const std::exception& e) {
+            std::cerr << "viewpipe bench: " << e.what() << "\n";
             return kExitInternal;
         }
     }
@@ -205,7 +257,7 @@ int main(int argc, char** argv)
         const Scene scene = loadScene(options.scene);
         if (*check)
             gui::checkMeshes(scene);
-        const cli::Precision precision = cli::parsePrecision(options.precision);
+        const cli::PrecisionChoice precision = cli::parsePrecision(options.precision, options.bits);
         if (*pipeline) {
             if (options.json)
                 std::cout << cli::pipelineJson(scene, precision).dump() << "\n";

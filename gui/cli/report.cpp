@@ -5,7 +5,10 @@
 #include <iomanip>
 #include <limits>
 #include <sstream>
+#include <map>
 #include <type_traits>
+
+#include "viewpipe/accuracy.hpp"
 
 namespace viewpipe::cli {
 namespace {
@@ -15,12 +18,14 @@ using Json = nlohmann::json;
 // Values wider than double go out as strings with all their digits.
 template <class T> Json number(const T& x)
 {
-    if constexpr (std::numeric_limits<T>::digits > std::numeric_limits<double>::digits) {
+    if constexpr (std::is_same_v<T, float> || std::is_same_v<T, double>) {
+        return static_cast<double>(x);
+    } else if constexpr (std::is_same_v<T, long double>) {
         std::ostringstream out;
-        out << std::setprecision(std::numeric_limits<T>::max_digits10) << x;
+        out << std::setprecision(std::numeric_limits<long double>::max_digits10) << x;
         return out.str();
     } else {
-        return static_cast<double>(x);
+        return x.str(0, std::ios_base::scientific); // every digit the value has
     }
 }
 
@@ -90,11 +95,13 @@ template <class T> Pipeline<T> pipelineFor(const Scene& scene)
     return buildPipeline(castCamera<T>(scene.camera));
 }
 
-template <class F> auto withPrecision(Precision precision, F&& f)
+template <class F> auto withPrecision(const PrecisionChoice& precision, F&& f)
 {
-    switch (precision) {
+    switch (precision.type) {
     case Precision::Float: return f(float{});
     case Precision::LongDouble: return f(static_cast<long double>(0));
+    case Precision::Float128: return f(Float128{});
+    case Precision::Mpfr: setReferenceBits(precision.mpfrBits); return f(Mpfr{});
     case Precision::Double: break;
     }
     return f(double{});
@@ -107,24 +114,29 @@ std::string conventionName(Convention c)
 
 } // namespace
 
-Precision parsePrecision(const std::string& name)
+PrecisionChoice parsePrecision(const std::string& name, unsigned mpfrBits)
 {
-    if (name == "float")
-        return Precision::Float;
-    if (name == "double")
-        return Precision::Double;
-    if (name == "long-double")
-        return Precision::LongDouble;
-    throw InputError("--precision", "must be float, double or long-double (got \"" + name + "\")");
+    static const std::map<std::string, Precision> names = {{"float", Precision::Float},
+                                                           {"double", Precision::Double},
+                                                           {"long-double", Precision::LongDouble},
+                                                           {"float128", Precision::Float128},
+                                                           {"mpfr", Precision::Mpfr}};
+    const auto found = names.find(name);
+    if (found == names.end())
+        throw InputError("--precision", "must be float, double, long-double, float128 or mpfr (got \"" + name + "\")");
+    if (mpfrBits < 16 || mpfrBits > 4096)
+        throw InputError("--bits", "must be 16 to 4096 (got " + std::to_string(mpfrBits) + ")");
+    return {found->second, mpfrBits};
 }
 
-std::string precisionName(Precision precision)
+std::string precisionName(const PrecisionChoice& precision)
 {
-    static const char* names[] = {"float", "double", "long-double"};
-    return names[static_cast<int>(precision)];
+    static const char* names[] = {"float", "double", "long-double", "float128", "mpfr"};
+    const std::string name = names[static_cast<int>(precision.type)];
+    return precision.type == Precision::Mpfr ? name + "-" + std::to_string(precision.mpfrBits) : name;
 }
 
-Json pipelineJson(const Scene& scene, Precision precision)
+Json pipelineJson(const Scene& scene, const PrecisionChoice& precision)
 {
     return withPrecision(precision, [&](auto zero) {
         using T = decltype(zero);
@@ -151,7 +163,7 @@ Json pipelineJson(const Scene& scene, Precision precision)
     });
 }
 
-void printPipeline(std::ostream& out, const Scene& scene, Precision precision)
+void printPipeline(std::ostream& out, const Scene& scene, const PrecisionChoice& precision)
 {
     withPrecision(precision, [&](auto zero) {
         using T = decltype(zero);
@@ -185,7 +197,7 @@ void printPipeline(std::ostream& out, const Scene& scene, Precision precision)
     });
 }
 
-Json traceJson(const Scene& scene, const Vec3<double>& point, Precision precision)
+Json traceJson(const Scene& scene, const Vec3<double>& point, const PrecisionChoice& precision)
 {
     return withPrecision(precision, [&](auto zero) {
         using T = decltype(zero);
@@ -205,7 +217,7 @@ Json traceJson(const Scene& scene, const Vec3<double>& point, Precision precisio
     });
 }
 
-void printTrace(std::ostream& out, const Scene& scene, const Vec3<double>& point, Precision precision)
+void printTrace(std::ostream& out, const Scene& scene, const Vec3<double>& point, const PrecisionChoice& precision)
 {
     const Json t = traceJson(scene, point, precision);
     auto show = [](const Json& v) {

@@ -13,15 +13,21 @@
 
 namespace viewpipe::cli {
 
-enum class Precision { Float, Double, LongDouble };
+enum class Precision { Float, Double, LongDouble, Float128, Mpfr };
 
-Precision parsePrecision(const std::string& name);
-std::string precisionName(Precision precision);
+// "float", "double", "long-double", "float128", "mpfr" (with mpfrBits).
+struct PrecisionChoice {
+    Precision type = Precision::Double;
+    unsigned mpfrBits = 256;
+};
 
-nlohmann::json pipelineJson(const Scene& scene, Precision precision);
-void printPipeline(std::ostream& out, const Scene& scene, Precision precision);
+PrecisionChoice parsePrecision(const std::string& name, unsigned mpfrBits = 256);
+std::string precisionName(const PrecisionChoice& precision);
 
-nlohmann::json traceJson(const Scene& scene, const Vec3<double>& point, Precision precision);
-void printTrace(std::ostream& out, const Scene& scene, const Vec3<double>& point, Precision precision);
+nlohmann::json pipelineJson(const Scene& scene, const PrecisionChoice& precision);
+void printPipeline(std::ostream& out, const Scene& scene, const PrecisionChoice& precision);
+
+nlohmann::json traceJson(const Scene& scene, const Vec3<double>& point, const PrecisionChoice& precision);
+void printTrace(std::ostream& out, const Scene& scene, const Vec3<double>& point, const PrecisionChoice& precision);
 
 } // namespace viewpipe::cli

@@ -237,6 +237,25 @@ void checkMeshes(const Scene& scene)
             readMesh(scene.objects[i], i);
 }
 
+std::vector<Vec3<double>> objectVertices(const Scene& scene)
+{
+    std::vector<Vec3<double>> vertices;
+    for (std::size_t i = 0; i < scene.objects.size(); ++i) {
+        const SceneObject& object = scene.objects[i];
+        if (object.type == ObjectType::Mesh) {
+            vtkPoints* points = readMesh(object, i)->GetPoints();
+            for (vtkIdType k = 0; k < points->GetNumberOfPoints(); ++k) {
+                const double* p = points->GetPoint(k);
+                vertices.emplace_back(p[0], p[1], p[2]);
+            }
+        } else {
+            const PolygonMesh mesh = object.type == ObjectType::House ? houseMesh() : boxMesh(object.min, object.max);
+            vertices.insert(vertices.end(), mesh.vertices.begin(), mesh.vertices.end());
+        }
+    }
+    return vertices;
+}
+
 ScenePainter::ScenePainter(vtkRenderer* world, vtkRenderer* projected)
     : world_(world), projected_(projected), worldCaption_(vtkSmartPointer<vtkTextActor>::New()),
       projectedCaption_(vtkSmartPointer<vtkTextActor>::New())

@@ -39,6 +39,9 @@ enum class Element { Objects, WorldAxes, ViewAxes, Prp, Window, Dop, Volume, Fro
 // "objects[k].path" for one that cannot be read.
 void checkMeshes(const Scene& scene);
 
+// Every vertex of the scene's objects, in world coordinates (meshes read with VTK).
+std::vector<Vec3<double>> objectVertices(const Scene& scene);
+
 class ScenePainter {
 public:
     // `projected` may be null: then no projected view is drawn.

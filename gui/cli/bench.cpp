@@ -1,0 +1,221 @@
+#include "bench.hpp"
+
+#include <algorithm>
+#include <chrono>
+#include <cstdio>
+#include <iomanip>
+#include <random>
+#include <sstream>
+
+namespace viewpipe::cli {
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+template <class F> double nanoseconds(F&& f)
+{
+    const auto start = Clock::now();
+    f();
+    return std::chrono::duration<double, std::nano>(Clock::now() - start).count();
+}
+
+double median(std::vector<double> values)
+{
+    std::sort(values.begin(), values.end());
+    return values[values.size() / 2];
+}
+
+// Points inside the view volume (random convex combinations of its corners).
+std::vector<double> volumePoints(const ReferenceSolution& ref, std::size_t count)
+{
+    std::array<Vec3<double>, 8> corners;
+    for (std::size_t k = 0; k < 8; ++k)
+        corners[k] = Vec3<double>(static_cast<double>(ref.corners[k].x()), static_cast<double>(ref.corners[k].y()),
+                                  static_cast<double>(ref.corners[k].z()));
+    std::mt19937_64 rng(7);
+    std::uniform_real_distribution<double> unit(0.05, 1.0);
+    std::vector<double> points;
+    points.reserve(3 * count);
+    for (std::size_t i = 0; i < count; ++i) {
+        Vec3<double> p = Vec3<double>::Zero();
+        double total = 0;
+        for (const Vec3<double>& c : corners) {
+            const double w = unit(rng);
+            p += w * c;
+            total += w;
+        }
+        p /= total;
+        points.insert(points.end(), {p.x(), p.y(), p.z()});
+    }
+    return points;
+}
+
+// Repetitions: enough for a stable median, fewer for the slow wide types.
+int repeatsFor(int bits)
+{
+    return bits <= 64 ? 7 : 3;
+}
+
+template <class T> BenchRow timeTier(const std::string& name, int bits, const CameraSpec<double>& camera,
+                                     const std::vector<double>& points)
+{
+    BenchRow row;
+    row.precision = name;
+    row.bits = bits;
+    row.epsilon = std::ldexp(1.0, 1 - bits);
+    const int repeats = repeatsFor(bits);
+    const int builds = bits <= 64 ? 2000 : 200;
+    std::vector<double> buildTimes, vertexTimes;
+    for (int r = 0; r < repeats; ++r)
+        buildTimes.push_back(nanoseconds([&] {
+                                 for (int b = 0; b < builds; ++b) {
+                                     const Pipeline<T> p = buildPipeline(castCamera<T>(camera));
+                                     asm volatile("" : : "g"(&p) : "memory");
+                                 }
+                             }) /
+                             builds);
+    const Pipeline<T> p = buildPipeline(castCamera<T>(camera));
+    const Mat4<T> clip = p.toClip * p.composite;
+    const std::size_t count = points.size() / 3;
+    std::vector<T> in(points.begin(), points.end()), out(points.size());
+    for (int r = 0; r < repeats; ++r)
+        vertexTimes.push_back(nanoseconds([&] { transformPoints(clip, in.data(), out.data(), count); }) / double(count));
+    row.buildNs = median(buildTimes);
+    row.vertexNs = median(vertexTimes);
+    return row;
+}
+
+BenchRow timeDoubleDouble(const CameraSpec<double>& camera, const std::vector<double>& points)
+{
+    BenchRow row = timeTier<Float128>("double-double", 106, camera, {}); // built in binary128
+    row.precision = "double-double";
+    const Pipeline<Float128> p = buildPipeline(castCamera<Float128>(camera));
+    const Mat4DD clip = toDoubleDouble(Mat4<Float128>(p.toClip * p.composite));
+    const std::size_t count = points.size() / 3;
+    std::vector<double> hi(points.size()), lo(points.size());
+    std::vector<double> times;
+    for (int r = 0; r < repeatsFor(64); ++r)
+        times.push_back(nanoseconds([&] { transformPointsDoubleDouble(clip, points.data(), hi.data(), lo.data(), count); }) /
+                        double(count));
+    row.vertexNs = median(times);
+    return row;
+}
+
+std::string shortNumber(double x, int digits = 3)
+{
+    char buffer[32];
+    std::snprintf(buffer, sizeof buffer, "%.*g", digits, x);
+    return buffer;
+}
+
+} // namespace
+
+BenchResult runBench(const Scene& scene, const std::vector<Vec3<double>>& sceneVertices, const BenchOptions& options,
+                     const BenchProgress& progress)
+{
+    if (options.vertices < 1 || options.vertices > 100000000)
+        throw InputError("--vertices", "must be 1 to 100000000");
+    if (options.mpfrBits < 16 || options.mpfrBits > 4096)
+        throw InputError("--bits", "must be 16 to 4096");
+    BenchResult result;
+    result.vertices = options.vertices;
+    result.viewport = options.viewport;
+    const ReferenceSolution ref = makeReference(scene.camera, 256);
+    const double agreement = referenceAgreement(ref, makeReference(scene.camera, 512));
+    result.reference = "mpfr-256 (agrees with mpfr-512 to " + shortNumber(agreement, 2) + ")";
+    const std::vector<double> points = volumePoints(ref, options.vertices);
+    const int total = 6;
+    int done = 0;
+    auto next = [&](const std::string& tier) { return !progress || progress(done++, total, tier); };
+    const Viewport& vp = options.viewport;
+    const CameraSpec<double>& camera = scene.camera;
+
+    if (next("float")) {
+        result.rows.push_back(timeTier<float>("float", 24, camera, points));
+        result.rows.back().errors = measureAccuracy<float>(camera, sceneVertices, ref, vp);
+    }
+    if (next("double")) {
+        result.rows.push_back(timeTier<double>("double", 53, camera, points));
+        result.rows.back().errors = measureAccuracy<double>(camera, sceneVertices, ref, vp);
+    }
+    if (next("long-double")) {
+        result.rows.push_back(timeTier<long double>("long-double", 64, camera, points));
+        result.rows.back().errors = measureAccuracy<long double>(camera, sceneVertices, ref, vp);
+    }
+    if (next("double-double")) {
+        result.rows.push_back(timeDoubleDouble(camera, points));
+        result.rows.back().errors = measureDoubleDoubleAccuracy(camera, sceneVertices, ref, vp);
+    }
+    if (next("float128")) {
+        result.rows.push_back(timeTier<Float128>("float128", 113, camera, points));
+        result.rows.back().errors = measureAccuracy<Float128>(camera, sceneVertices, ref, vp);
+    }
+    if (next("mpfr")) {
+        setReferenceBits(options.mpfrBits);
+        // Mpfr values made now carry the chosen precision; the reference keeps its own.
+        result.rows.push_back(timeTier<Mpfr>("mpfr", int(options.mpfrBits), camera, points));
+        setReferenceBits(options.mpfrBits);
+        result.rows.back().errors = measureAccuracy<Mpfr>(camera, sceneVertices, ref, vp);
+    }
+    if (progress)
+        progress(total, total, "");
+    return result;
+}
+
+nlohmann::json benchJson(const BenchResult& result)
+{
+    nlohmann::json rows = nlohmann::json::array();
+    for (const BenchRow& r : result.rows) {
+        const AccuracyMetrics& e = r.errors;
+        rows.push_back({{"precision", r.precision},
+                        {"bits", r.bits},
+                        {"epsilon", r.epsilon},
+                        {"build_ns", r.buildNs},
+                        {"vertex_ns", r.vertexNs},
+                        {"max_rel_error", e.maxRelativeError},
+                        {"corner_error", e.cornerError},
+                        {"orthogonality_error", e.orthogonalityError},
+                        {"determinant_error", e.determinantError},
+                        {"roundtrip_error", e.roundtripError},
+                        {"ndc_max_error", e.ndcMaxError},
+                        {"ndc_rms_error", e.ndcRmsError},
+                        {"pixel_max_error", e.pixelMaxError},
+                        {"pixel_rms_error", e.pixelRmsError}});
+    }
+    return {{"reference", result.reference},
+            {"vertices", result.vertices},
+            {"viewport", {result.viewport.width, result.viewport.height}},
+            {"rows", rows}};
+}
+
+void printBench(std::ostream& out, const BenchResult& result)
+{
+    out << "Reference: " << result.reference << "; " << result.vertices << " vertices timed; pixel errors at "
+        << result.viewport.width << "x" << result.viewport.height << ".\n"
+        << "Errors are absolute, with units of the type's epsilon in brackets.\n\n";
+    const std::vector<std::string> head = {"precision", "bits", "build ns", "ns/vertex", "max rel. error",
+                                           "corner error", "|RR^T-I|", "|det R-1|", "round trip", "NDC max",
+                                           "NDC rms", "pixel max"};
+    std::vector<std::vector<std::string>> table = {head};
+    for (const BenchRow& r : result.rows) {
+        auto cell = [&r](double x) {
+            return shortNumber(x, 2) + " [" + shortNumber(x / r.epsilon, 2) + "]";
+        };
+        const AccuracyMetrics& e = r.errors;
+        table.push_back({r.precision, std::to_string(r.bits), shortNumber(r.buildNs), shortNumber(r.vertexNs),
+                         cell(e.maxRelativeError), cell(e.cornerError), cell(e.orthogonalityError),
+                         cell(e.determinantError), cell(e.roundtripError), cell(e.ndcMaxError), cell(e.ndcRmsError),
+                         shortNumber(e.pixelMaxError, 2)});
+    }
+    std::vector<std::size_t> width(head.size(), 0);
+    for (const auto& row : table)
+        for (std::size_t c = 0; c < row.size(); ++c)
+            width[c] = std::max(width[c], row[c].size());
+    for (const auto& row : table) {
+        for (std::size_t c = 0; c < row.size(); ++c)
+            out << (c ? "  " : "") << (c == 0 ? std::left : std::right) << std::setw(int(width[c])) << row[c];
+        out << std::right << "\n";
+    }
+}
+
+} // namespace viewpipe::cli

@@ -1,0 +1,23 @@
+#pragma once
+
+// Error against time, log-log, with VTK's charts: one panel for pushing
+// vertices (NDC error against ns per vertex), one for building the matrices
+// (largest relative error of N's entries against ns per build); one point
+// per precision, named in the legend.
+
+#include <filesystem>
+
+#include "cli/bench.hpp"
+#include "painter/ScenePainter.h"
+
+class vtkChartMatrix;
+
+namespace viewpipe::gui {
+
+// Fills a chart matrix (made by the caller, shown by a context view).
+void drawAccuracyCharts(vtkChartMatrix* charts, const cli::BenchResult& result, Theme theme);
+
+// Renders the charts offscreen to a PNG (needs a display; see VirtualDisplay).
+void writeAccuracyPlot(const cli::BenchResult& result, const std::filesystem::path& file, Theme theme);
+
+} // namespace viewpipe::gui
