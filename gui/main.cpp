@@ -93,6 +93,8 @@ int main(int argc, char** argv)
     openCommand->add_option("--screenshot", open.screenshot, "Save a PNG of the whole window and exit");
     openCommand->add_option("--size", size, "Window size WxH (default 1600x950)");
     openCommand->add_option("--theme", theme, "dark or light")->check(CLI::IsMember({"dark", "light"}));
+    openCommand->add_option("--panel", open.panel, "Dock in front: matrices, parameters or accuracy (measured)")
+        ->check(CLI::IsMember({"stages", "matrices", "parameters", "accuracy"}));
 
     std::string exportOut, exportSize = "1280x720", exportStages = "all", exportTheme = "light",
                                   exportFormats = "png";

@@ -32,6 +32,7 @@
 #include <vtkRenderWindowInteractor.h>
 #include <vtkRenderer.h>
 
+#include "AccuracyPanel.h"
 #include "AppPaths.h"
 #include "ClickStyle.h"
 #include "ExportDialog.h"
@@ -185,8 +186,12 @@ void MainWindow::buildDocks()
     QDockWidget* matrixDock = dock(tr("Matrices"), "matricesDock", matrices_, Qt::RightDockWidgetArea);
     parameters_ = new ParameterPanel;
     QDockWidget* parametersDock = dock(tr("Parameters"), "parametersDock", parameters_, Qt::RightDockWidgetArea);
-    // The 3D view gets the room: parameters share the right side with the matrices.
+    accuracy_ = new AccuracyPanel;
+    accuracy_->setSceneSource([this] { return document_->scene(); });
+    QDockWidget* accuracyDock = dock(tr("Accuracy"), "accuracyDock", accuracy_, Qt::RightDockWidgetArea);
+    // The 3D view gets the room: parameters and accuracy share the right side with the matrices.
     tabifyDockWidget(matrixDock, parametersDock);
+    tabifyDockWidget(matrixDock, accuracyDock);
     matrixDock->raise();
     resizeDocks({stagesDock, matrixDock}, {280, 430}, Qt::Horizontal);
 }
@@ -430,6 +435,7 @@ void MainWindow::renderNow()
 void MainWindow::setTheme(Theme theme)
 {
     painter_->setTheme(theme);
+    accuracy_->setTheme(theme);
     applyTheme(theme);
     QSettings().setValue("theme", theme == Theme::Light ? "light" : "dark");
     renderNow();
@@ -444,6 +450,12 @@ void MainWindow::setFontSize(int points)
     painter_->setFontSize(int(std::lround(fontSize_ * 1.6)));
     QSettings().setValue("fontSize", fontSize_);
     renderNow();
+}
+
+void MainWindow::showPanel(const QString& name)
+{
+    if (auto* dock = findChild<QDockWidget*>(name + "Dock"))
+        dock->raise();
 }
 
 void MainWindow::setProjectedViewVisible(bool visible)

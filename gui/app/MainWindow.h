@@ -28,6 +28,7 @@ class vtkRenderer;
 
 namespace viewpipe::gui {
 
+class AccuracyPanel;
 class MatrixPanel;
 class ParameterPanel;
 
@@ -65,11 +66,14 @@ public:
     void setTheme(Theme theme);
     void setFontSize(int points);
     void setProjectedViewVisible(bool visible);
+    // Brings a dock to the front: "stages", "matrices", "parameters" or "accuracy".
+    void showPanel(const QString& name);
     void renderNow();
 
     Document* document() { return document_; }
     ParameterPanel* parameters() { return parameters_; }
     MatrixPanel* matrices() { return matrices_; }
+    AccuracyPanel* accuracy() { return accuracy_; }
     ScenePainter* painter() { return painter_.get(); }
     QListWidget* stageList() { return stageList_; }
 
@@ -108,6 +112,7 @@ private:
     QSlider* slider_ = nullptr;
     QPushButton* playButton_ = nullptr;
     MatrixPanel* matrices_ = nullptr;
+    AccuracyPanel* accuracy_ = nullptr;
     ParameterPanel* parameters_ = nullptr;
     QVariantAnimation* animation_ = nullptr;
     QMenu* recentMenu_ = nullptr;

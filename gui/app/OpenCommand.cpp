@@ -3,6 +3,7 @@
 #include <QApplication>
 #include <QFile>
 #include <QDir>
+#include <QEventLoop>
 #include <QFileInfo>
 #include <QImage>
 #include <QSettings>
@@ -12,6 +13,7 @@
 
 #include <filesystem>
 
+#include "AccuracyPanel.h"
 #include "AppPaths.h"
 #include "MainWindow.h"
 #include "Theme.h"
@@ -50,8 +52,16 @@ int runOpen(int argc, char** argv, const OpenOptions& options)
     if (!window.openScene(scenePath))
         return 2;
     window.goToStage(options.stage, false);
+    if (!options.panel.empty())
+        window.showPanel(QString::fromStdString(options.panel));
     if (!screenshot)
         return app.exec();
+    if (options.panel == "accuracy") {
+        QEventLoop wait;
+        QObject::connect(window.accuracy(), &AccuracyPanel::finished, &wait, &QEventLoop::quit);
+        window.accuracy()->measure(window.document()->scene());
+        wait.exec();
+    }
 
     // Let the window reach its size and the GL views their first frames.
     for (int i = 0; i < 5; ++i) {

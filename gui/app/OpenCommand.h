@@ -14,6 +14,7 @@ struct OpenOptions {
     std::string screenshot;     // empty: interactive
     int width = 1600, height = 950;
     std::optional<std::string> theme; // "dark" or "light"; default: the user's setting
+    std::string panel;                // "matrices", "parameters" or "accuracy" (measured first): shown in front
 };
 
 // Returns the process exit code. Throws InputError for bad input.

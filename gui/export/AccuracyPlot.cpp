@@ -1,6 +1,7 @@
 #include "AccuracyPlot.h"
 
 #include <vtkAxis.h>
+#include <vtkBrush.h>
 #include <vtkChartLegend.h>
 #include <vtkChartMatrix.h>
 #include <vtkChartXY.h>
@@ -30,21 +31,21 @@ const unsigned char kColors[][3] = {{228, 26, 28}, {55, 126, 184}, {77, 175, 74}
 const int kMarkers[] = {vtkPlotPoints::CIRCLE, vtkPlotPoints::SQUARE, vtkPlotPoints::DIAMOND,
                         vtkPlotPoints::CROSS,  vtkPlotPoints::PLUS,   vtkPlotPoints::CIRCLE};
 
-// A log axis over [low, high] with whole decades at its ends and at most a
-// dozen labelled ticks, so that many decades stay readable.
+// VTK's charts hold points in single precision, where MPFR's errors (1e-50)
+// underflow: the points are plotted as log10 values on linear axes, labelled
+// in powers of ten, with a decade of margin and at most a dozen labels.
 void styleAxis(vtkAxis* axis, const std::string& title, bool dark, double low, double high)
 {
     axis->SetTitle(title);
-    axis->SetLogScale(true);
-    const int first = int(std::floor(std::log10(low))) - (low == high ? 1 : 0);
-    const int last = std::max(first + 1, int(std::ceil(std::log10(high))));
+    const int first = int(std::floor(std::log10(low))) - 1;
+    const int last = int(std::ceil(std::log10(high))) + 1;
     axis->SetBehavior(vtkAxis::FIXED);
-    axis->SetUnscaledRange(std::pow(10.0, first), std::pow(10.0, last));
+    axis->SetRange(first, last);
     const int step = std::max(1, (last - first + 11) / 12);
     vtkNew<vtkDoubleArray> ticks;
     vtkNew<vtkStringArray> labels;
     for (int e = first; e <= last; e += step) {
-        ticks->InsertNextValue(double(e)); // positions are in log10 units on a log axis
+        ticks->InsertNextValue(double(e));
         labels->InsertNextValue(e == 0 ? "1" : e == 1 ? "10" : "1e" + std::to_string(e));
     }
     axis->SetCustomTickPositions(ticks, labels);
@@ -65,6 +66,8 @@ void addPanel(vtkChartXY* chart, const cli::BenchResult& result, bool vertices, 
     chart->SetShowLegend(vertices);
     chart->GetLegend()->GetLabelProperties()->SetFontSize(14);
     chart->GetLegend()->GetLabelProperties()->SetColor(c, c, c);
+    const unsigned char legend = dark ? 40 : 255;
+    chart->GetLegend()->GetBrush()->SetColor(legend, legend, legend, 230);
     for (std::size_t i = 0; i < result.rows.size(); ++i) {
         const cli::BenchRow& row = result.rows[i];
         vtkNew<vtkTable> table;
@@ -72,8 +75,8 @@ void addPanel(vtkChartXY* chart, const cli::BenchResult& result, bool vertices, 
         x->SetName("time");
         y->SetName((row.precision + " (" + std::to_string(row.bits) + " bits)").c_str());
         const double error = vertices ? row.errors.ndcMaxError : row.errors.maxRelativeError;
-        x->InsertNextValue(vertices ? row.vertexNs : row.buildNs);
-        y->InsertNextValue(std::max(error, 1e-300)); // a log axis has no zero
+        x->InsertNextValue(std::log10(vertices ? row.vertexNs : row.buildNs));
+        y->InsertNextValue(std::log10(std::max(error, 1e-300))); // an exact result has no logarithm
         table->AddColumn(x);
         table->AddColumn(y);
         auto* plot = vtkPlotPoints::SafeDownCast(chart->AddPlot(vtkChart::POINTS));
@@ -97,13 +100,16 @@ void addPanel(vtkChartXY* chart, const cli::BenchResult& result, bool vertices, 
 
 } // namespace
 
-void drawAccuracyCharts(vtkChartMatrix* charts, const cli::BenchResult& result, Theme theme)
+void drawAccuracyCharts(vtkChartMatrix* charts, const cli::BenchResult& result, Theme theme, bool stacked)
 {
     const bool dark = theme == Theme::Dark;
-    charts->SetSize(vtkVector2i(2, 1));
-    charts->SetGutter(vtkVector2f(60, 30));
-    addPanel(vtkChartXY::SafeDownCast(charts->GetChart(vtkVector2i(0, 0))), result, true, dark);
-    addPanel(vtkChartXY::SafeDownCast(charts->GetChart(vtkVector2i(1, 0))), result, false, dark);
+    // vtkChartMatrix counts rows from the bottom: the vertex panel goes on top when stacked.
+    charts->SetSize(stacked ? vtkVector2i(1, 2) : vtkVector2i(2, 1));
+    charts->SetGutter(vtkVector2f(60, 60));
+    addPanel(vtkChartXY::SafeDownCast(charts->GetChart(stacked ? vtkVector2i(0, 1) : vtkVector2i(0, 0))), result, true,
+             dark);
+    addPanel(vtkChartXY::SafeDownCast(charts->GetChart(stacked ? vtkVector2i(0, 0) : vtkVector2i(1, 0))), result,
+             false, dark);
 }
 
 void writeAccuracyPlot(const cli::BenchResult& result, const std::filesystem::path& file, Theme theme)
@@ -115,7 +121,7 @@ void writeAccuracyPlot(const cli::BenchResult& result, const std::filesystem::pa
     view->GetRenderer()->SetBackground(bg, bg, bg);
     vtkNew<vtkChartMatrix> charts;
     view->GetScene()->AddItem(charts);
-    drawAccuracyCharts(charts, result, theme);
+    drawAccuracyCharts(charts, result, theme, false);
     view->GetRenderWindow()->Render();
     vtkNew<vtkWindowToImageFilter> grab;
     grab->SetInput(view->GetRenderWindow());

@@ -173,3 +173,44 @@ TEST(Cli, CheckAndExitCodes)
 }
 
 } // namespace
+
+namespace {
+
+TEST(Cli, WidePrecisionsPrintAllTheirDigits)
+{
+    const Json q = Json::parse(run("pipeline " + kHouse + " --json --precision float128").out);
+    EXPECT_EQ(q["precision"], "float128");
+    ASSERT_TRUE(q["zmin"].is_string());
+    // -24/59 = -0.40677966101694915254237288135593220338983050847457627118644...,
+    // correct to binary128's 33 digits.
+    EXPECT_EQ(q["zmin"].get<std::string>().substr(0, 35), "-4.06779661016949152542372881355932");
+    const Json m = Json::parse(run("pipeline " + kHouse + " --json --precision mpfr --bits 512").out);
+    EXPECT_EQ(m["precision"], "mpfr-512");
+    EXPECT_GT(m["zmin"].get<std::string>().size(), 150u);
+    EXPECT_EQ(m["zmin"].get<std::string>().substr(0, 62), "-4.06779661016949152542372881355932203389830508474576271186440");
+    EXPECT_EQ(run("pipeline " + kHouse + " --precision mpfr --bits 2").exitCode, 2);
+}
+
+TEST(Cli, BenchJsonHasEveryTier)
+{
+    const Result r = run("bench " + kHouse + " --json --vertices 2000");
+    ASSERT_EQ(r.exitCode, 0) << r.err;
+    const Json j = Json::parse(r.out);
+    EXPECT_EQ(j["reference"].get<std::string>().rfind("mpfr-256", 0), 0u);
+    ASSERT_EQ(j["rows"].size(), 6u);
+    const std::array<std::string, 6> tiers = {"float", "double", "long-double", "double-double", "float128", "mpfr"};
+    for (std::size_t i = 0; i < 6; ++i) {
+        const Json& row = j["rows"][i];
+        EXPECT_EQ(row["precision"], tiers[i]);
+        for (const char* key : {"bits", "build_ns", "vertex_ns", "max_rel_error", "corner_error",
+                                "orthogonality_error", "roundtrip_error"})
+            EXPECT_TRUE(row.contains(key)) << key;
+        // Each tier within a few of its own epsilon on the corners.
+        EXPECT_LE(row["corner_error"].get<double>(), 4 * row["epsilon"].get<double>()) << tiers[i];
+    }
+    // Wider is more accurate: double beats float, float128 beats double.
+    EXPECT_LT(j["rows"][1]["max_rel_error"].get<double>(), j["rows"][0]["max_rel_error"].get<double>());
+    EXPECT_LT(j["rows"][4]["max_rel_error"].get<double>(), 1e-30);
+}
+
+} // namespace

@@ -4,6 +4,7 @@
 #include <QApplication>
 #include <QClipboard>
 #include <QProgressDialog>
+#include <QTableWidget>
 #include <QTimer>
 #include <QDoubleSpinBox>
 #include <QListWidget>
@@ -19,6 +20,7 @@
 #include <vtkRenderer.h>
 #include <vtkRendererCollection.h>
 
+#include "app/AccuracyPanel.h"
 #include "app/MainWindow.h"
 #include "app/MatrixPanel.h"
 #include "app/ParameterPanel.h"
@@ -263,6 +265,23 @@ private slots:
         options.animate = true;
         QVERIFY(w.exportStages(options).empty());
         QVERIFY(!QDir(dir.filePath("cancelled")).exists());
+    }
+
+    void accuracyPanelMeasuresInTheBackground()
+    {
+        MainWindow& w = *window_;
+        QSignalSpy done(w.accuracy(), &AccuracyPanel::finished);
+        w.accuracy()->measure(w.document()->scene(), 20000);
+        QVERIFY(w.accuracy()->isRunning());
+        // The window keeps handling events while the worker measures.
+        QElapsedTimer clock;
+        clock.start();
+        QTest::keyClick(&w, Qt::Key_Right);
+        QVERIFY(clock.elapsed() < 500);
+        QVERIFY(done.wait(120000));
+        QCOMPARE(w.accuracy()->table()->rowCount(), 6);
+        QCOMPARE(w.accuracy()->table()->item(1, 0)->text(), QString("double"));
+        QVERIFY(w.accuracy()->table()->item(1, 5)->text().contains("e-16"));
     }
 
     void eigenVtkAdapterKeepsRowsAndColumns()

@@ -1,0 +1,170 @@
+#include "AccuracyPanel.h"
+
+#include <QHeaderView>
+#include <QLabel>
+#include <QProgressBar>
+#include <QPushButton>
+#include <QTableWidget>
+#include <QVBoxLayout>
+
+#include <QVTKOpenGLNativeWidget.h>
+#include <vtkChartMatrix.h>
+#include <vtkContextScene.h>
+#include <vtkContextView.h>
+#include <vtkGenericOpenGLRenderWindow.h>
+#include <vtkRenderer.h>
+
+#include "export/AccuracyPlot.h"
+#include "painter/ScenePainter.h"
+
+namespace viewpipe::gui {
+
+AccuracyPanel::AccuracyPanel(QWidget* parent) : QWidget(parent)
+{
+    auto* layout = new QVBoxLayout(this);
+    button_ = new QPushButton(tr("Measure the precisions for this scene"));
+    progress_ = new QProgressBar;
+    progress_->setRange(0, 6);
+    progress_->hide();
+    status_ = new QLabel(tr("Error against an MPFR-256 reference and time per build and per vertex, for float, "
+                            "double, long double, double-double, float128 and MPFR."));
+    status_->setWordWrap(true);
+    table_ = new QTableWidget(0, 10);
+    table_->setHorizontalHeaderLabels({tr("precision"), tr("bits"), tr("build ns"), tr("ns/vertex"),
+                                       tr("N entries"), tr("corners"), tr("|RRᵀ−I|"), tr("round trip"),
+                                       tr("NDC max"), tr("pixels max")});
+    table_->verticalHeader()->hide();
+    table_->setEditTriggers(QAbstractItemView::NoEditTriggers);
+    table_->horizontalHeader()->setSectionResizeMode(QHeaderView::ResizeToContents);
+    table_->setMinimumHeight(200);
+    chartWidget_ = new QVTKOpenGLNativeWidget;
+    chartWidget_->setMinimumHeight(520);
+    auto window = vtkSmartPointer<vtkGenericOpenGLRenderWindow>::New();
+    chartWidget_->setRenderWindow(window);
+    auto view = vtkSmartPointer<vtkContextView>::New();
+    view->SetRenderWindow(window);
+    view->Register(nullptr);
+    view_ = view;
+    auto charts = vtkSmartPointer<vtkChartMatrix>::New();
+    charts->Register(nullptr);
+    charts_ = charts;
+    view_->GetScene()->AddItem(charts_);
+    layout->addWidget(button_);
+    layout->addWidget(progress_);
+    layout->addWidget(status_);
+    layout->addWidget(table_);
+    layout->addWidget(chartWidget_, 1);
+    connect(button_, &QPushButton::clicked, this, [this] {
+        if (sceneSource_)
+            measure(sceneSource_());
+    });
+}
+
+AccuracyPanel::~AccuracyPanel()
+{
+    stop();
+    charts_->Delete();
+    view_->Delete();
+}
+
+void AccuracyPanel::stop()
+{
+    if (cancel_)
+        *cancel_ = true;
+    if (worker_.joinable())
+        worker_.join();
+    running_ = false;
+}
+
+void AccuracyPanel::measure(const Scene& scene, std::size_t vertices)
+{
+    stop();
+    running_ = true;
+    button_->setEnabled(false);
+    progress_->setValue(0);
+    progress_->show();
+    status_->setText(tr("Measuring…"));
+    cancel_ = std::make_shared<std::atomic<bool>>(false);
+    std::vector<Vec3<double>> objectPoints;
+    try {
+        objectPoints = objectVertices(scene);
+    } catch (const InputError& e) {
+        status_->setText(QString::fromStdString(e.what()));
+    }
+    // The worker owns copies of everything it reads; results come back queued.
+    worker_ = std::thread([this, scene, objectPoints, vertices, cancel = cancel_] {
+        cli::BenchOptions options;
+        options.vertices = vertices;
+        auto result = std::make_shared<cli::BenchResult>();
+        try {
+            *result = cli::runBench(scene, objectPoints, options, [this, cancel](int done, int, const std::string& tier) {
+                if (*cancel)
+                    return false;
+                QMetaObject::invokeMethod(this, [this, done, tier] {
+                    progress_->setValue(done);
+                    status_->setText(tr("Measuring %1…").arg(QString::fromStdString(tier)));
+                }, Qt::QueuedConnection);
+                return true;
+            });
+        } catch (const std::exception& e) {
+            const QString message = QString::fromStdString(e.what());
+            QMetaObject::invokeMethod(this, [this, message] { status_->setText(message); }, Qt::QueuedConnection);
+        }
+        if (*cancel)
+            return;
+        QMetaObject::invokeMethod(this, [this, result] {
+            if (worker_.joinable())
+                worker_.join();
+            running_ = false;
+            button_->setEnabled(true);
+            progress_->hide();
+            show(*result);
+            emit finished();
+        }, Qt::QueuedConnection);
+    });
+}
+
+void AccuracyPanel::show(const cli::BenchResult& result)
+{
+    last_ = std::make_unique<cli::BenchResult>(result);
+    status_->setText(tr("Reference: %1. %2 vertices timed; absolute errors, with units of each type's epsilon "
+                        "in brackets; pixels at %3×%4.")
+                         .arg(QString::fromStdString(result.reference))
+                         .arg(result.vertices)
+                         .arg(result.viewport.width)
+                         .arg(result.viewport.height));
+    table_->setRowCount(int(result.rows.size()));
+    for (int i = 0; i < int(result.rows.size()); ++i) {
+        const cli::BenchRow& r = result.rows[std::size_t(i)];
+        auto withEps = [&r](double x) {
+            return QString("%1 [%2]").arg(x, 0, 'g', 2).arg(x / r.epsilon, 0, 'g', 2);
+        };
+        const QStringList cells = {QString::fromStdString(r.precision),
+                                   QString::number(r.bits),
+                                   QString::number(r.buildNs, 'g', 3),
+                                   QString::number(r.vertexNs, 'g', 3),
+                                   withEps(r.errors.maxRelativeError),
+                                   withEps(r.errors.cornerError),
+                                   withEps(r.errors.orthogonalityError),
+                                   withEps(r.errors.roundtripError),
+                                   withEps(r.errors.ndcMaxError),
+                                   QString::number(r.errors.pixelMaxError, 'g', 2)};
+        for (int c = 0; c < cells.size(); ++c)
+            table_->setItem(i, c, new QTableWidgetItem(cells[c]));
+    }
+    charts_->ClearItems();
+    drawAccuracyCharts(charts_, result, theme_, true);
+    const double bg = theme_ == Theme::Dark ? 0.11 : 1.0;
+    view_->GetRenderer()->SetBackground(bg, bg, bg);
+    chartWidget_->renderWindow()->Render();
+    chartWidget_->update();
+}
+
+void AccuracyPanel::setTheme(Theme theme)
+{
+    theme_ = theme;
+    if (last_)
+        show(*last_);
+}
+
+} // namespace viewpipe::gui

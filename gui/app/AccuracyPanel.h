@@ -1,0 +1,64 @@
+#pragma once
+
+// The Accuracy panel: the precision ladder of `viewpipe bench` for the scene
+// on screen, computed on a worker thread (the window stays responsive), shown
+// as a table and as error-against-time charts.
+
+#include <QWidget>
+
+#include <atomic>
+#include <memory>
+#include <thread>
+
+#include "cli/bench.hpp"
+#include "painter/ScenePainter.h"
+
+class QLabel;
+class QProgressBar;
+class QPushButton;
+class QTableWidget;
+class QVTKOpenGLNativeWidget;
+class vtkChartMatrix;
+class vtkContextView;
+
+namespace viewpipe::gui {
+
+class AccuracyPanel : public QWidget {
+    Q_OBJECT
+public:
+    explicit AccuracyPanel(QWidget* parent = nullptr);
+    ~AccuracyPanel() override;
+
+    // Measures a scene in the background; a running measurement is abandoned.
+    void measure(const Scene& scene, std::size_t vertices = 1000000);
+    bool isRunning() const { return running_; }
+    void setTheme(Theme theme);
+    QTableWidget* table() { return table_; }
+
+signals:
+    void finished();
+
+private:
+    void show(const cli::BenchResult& result);
+    void stop();
+
+    QPushButton* button_;
+    QProgressBar* progress_;
+    QLabel* status_;
+    QTableWidget* table_;
+    QVTKOpenGLNativeWidget* chartWidget_;
+    vtkContextView* view_ = nullptr;
+    vtkChartMatrix* charts_ = nullptr;
+    std::thread worker_;
+    std::shared_ptr<std::atomic<bool>> cancel_;
+    bool running_ = false;
+    Theme theme_ = Theme::Dark;
+    std::unique_ptr<cli::BenchResult> last_;
+    std::function<Scene()> sceneSource_;
+
+public:
+    // Where the Measure button takes the scene from.
+    void setSceneSource(std::function<Scene()> source) { sceneSource_ = std::move(source); }
+};
+
+} // namespace viewpipe::gui
