@@ -15,6 +15,7 @@
 #include "export/AccuracyPlot.h"
 #include "export/Exporter.h"
 #include "cli/bench.hpp"
+#include "viewpipe/classical.hpp"
 #include "export/VirtualDisplay.h"
 #include "painter/ScenePainter.h"
 #include "viewpipe/version.hpp"
@@ -124,6 +125,30 @@ int main(int argc, char** argv)
         ->check(CLI::IsMember({"fixed", "per-stage"}))
         ->capture_default_str();
 
+    CLI::App* classifyCommand =
+        app.add_subcommand("classify", "Name the classical projection a scene's view realizes");
+    classifyCommand->add_option("SCENE", options.scene, "Scene file (JSON)")->required();
+    classifyCommand->add_flag("--json", options.json, "One JSON object on stdout");
+
+    std::string classicalKind, classicalObject = "house", classicalOut, classicalRatios;
+    ClassicalParameters classicalParameters;
+    double azimuth = 0, elevation = 0;
+    CLI::App* classicalCommand = app.add_subcommand(
+        "classical", "Print a scene that realizes a classical projection (front, top, side, isometric, dimetric, "
+                     "trimetric, cavalier, cabinet, oblique, one-point, two-point, three-point)");
+    classicalCommand->add_option("KIND", classicalKind, "The projection")->required();
+    classicalCommand->add_option("--object", classicalObject, "house or cube")
+        ->check(CLI::IsMember({"house", "cube"}))
+        ->capture_default_str();
+    CLI::Option* azimuthOption = classicalCommand->add_option("--azimuth", azimuth, "Axonometric: degrees about y");
+    CLI::Option* elevationOption = classicalCommand->add_option("--elevation", elevation, "Axonometric: degrees about x");
+    classicalCommand->add_option("--foreshortening", classicalRatios, "Axonometric: ratios fx,fy,fz (squares sum to 2)");
+    classicalCommand->add_option("--receding", classicalParameters.receding, "Oblique: receding-axis factor")
+        ->capture_default_str();
+    classicalCommand->add_option("--angle", classicalParameters.angleDegrees, "Oblique: receding axis angle, degrees")
+        ->capture_default_str();
+    classicalCommand->add_option("--out", classicalOut, "Write the scene here (atomically) instead of stdout");
+
     std::size_t benchVertices = 1000000;
     std::string benchPlot, benchViewport;
     CLI::App* benchCommand = app.add_subcommand(
@@ -160,6 +185,45 @@ int main(int argc, char** argv)
         } catch (const std::exception& e) {
             std::cerr << "viewpipe: internal error: " << e.what() << "\n";
             return kExitInternal;
+        }
+    }
+
+    if (*classicalCommand) {
+        try {
+            const auto kind = classicalKindNamed(classicalKind);
+            if (!kind)
+                throw InputError("KIND", "unknown classical projection \"" + classicalKind + "\"");
+            if (*azimuthOption)
+                classicalParameters.azimuthDegrees = azimuth;
+            if (*elevationOption)
+                classicalParameters.elevationDegrees = elevation;
+            if (!classicalRatios.empty()) {
+                std::array<double, 3> f{};
+                char comma1 = 0, comma2 = 0;
+                std::istringstream in(classicalRatios);
+                if (!(in >> f[0] >> comma1 >> f[1] >> comma2 >> f[2]) || comma1 != ',' || comma2 != ',')
+                    throw InputError("--foreshortening", "must be three numbers fx,fy,fz");
+                classicalParameters.foreshortening = f;
+            }
+            Scene scene;
+            scene.name = classicalObject + ", " + classicalName(*kind);
+            SceneObject object;
+            Vec3<double> lo(0, 0, 30), hi(16, 16, 54); // the house's bounds
+            if (classicalObject == "cube") {
+                object.type = ObjectType::Box;
+                object.min = lo = Vec3<double>(-5, -5, -5);
+                object.max = hi = Vec3<double>(5, 5, 5);
+            }
+            scene.objects.push_back(object);
+            scene.camera = classicalView(*kind, lo, hi, classicalParameters);
+            if (classicalOut.empty())
+                std::cout << sceneToJson(scene);
+            else
+                saveScene(scene, classicalOut);
+            return 0;
+        } catch (const InputError& e) {
+            std::cerr << "viewpipe classical: " << e.what() << "\n";
+            return kExitBadInput;
         }
     }
 
@@ -265,6 +329,11 @@ int main(int argc, char** argv)
                 std::cout << cli::pipelineJson(scene, precision).dump() << "\n";
             else
                 cli::printPipeline(std::cout, scene, precision);
+        } else if (*classifyCommand) {
+            if (options.json)
+                std::cout << cli::classifyJson(scene).dump() << "\n";
+            else
+                cli::printClassification(std::cout, scene);
         } else if (*trace) {
             const Vec3<double> point(options.point[0], options.point[1], options.point[2]);
             if (options.json)

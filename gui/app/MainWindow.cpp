@@ -34,6 +34,7 @@
 
 #include "AccuracyPanel.h"
 #include "AppPaths.h"
+#include "ClassicalDialog.h"
 #include "ClickStyle.h"
 #include "ExportDialog.h"
 #include "cli/latex.hpp"
@@ -266,6 +267,8 @@ void MainWindow::buildMenus()
         painter_->resetView();
         renderNow();
     }, QKeySequence(Qt::Key_R));
+    view->addAction(tr("&Classical Projection…"), this, &MainWindow::chooseClassicalProjection,
+                    QKeySequence(Qt::CTRL | Qt::Key_K));
     view->addSeparator();
     auto* themes = new QActionGroup(this);
     QAction* dark = view->addAction(tr("&Dark Theme (screen)"), this, [this] { setTheme(Theme::Dark); });
@@ -568,19 +571,42 @@ void MainWindow::rebuildRecentMenu()
 void MainWindow::rebuildPresetMenu()
 {
     presetMenu_->clear();
-    const QDir scenes(scenesDirectory());
-    for (const QFileInfo& info : scenes.entryInfoList({"*.json"}, QDir::Files, QDir::Name)) {
-        const QString path = info.absoluteFilePath();
-        QString title = info.completeBaseName();
-        try {
-            title = QString::fromStdString(loadScene(path.toStdString()).name);
-        } catch (const InputError&) {
-            continue; // a broken preset is not offered
+    auto addScenes = [this](QMenu* menu, const QDir& folder) {
+        for (const QFileInfo& info : folder.entryInfoList({"*.json"}, QDir::Files, QDir::Name)) {
+            const QString path = info.absoluteFilePath();
+            QString title = info.completeBaseName();
+            try {
+                title = QString::fromStdString(loadScene(path.toStdString()).name);
+            } catch (const InputError&) {
+                continue; // a broken preset is not offered
+            }
+            menu->addAction(title, this, [this, path] {
+                if (confirmDiscard())
+                    openScene(path);
+            });
         }
-        presetMenu_->addAction(title, this, [this, path] {
-            if (confirmDiscard())
-                openScene(path);
-        });
+    };
+    addScenes(presetMenu_, QDir(scenesDirectory()));
+    addScenes(presetMenu_->addMenu(tr("Classical projections")), QDir(scenesDirectory() + "/classical"));
+}
+
+void MainWindow::chooseClassicalProjection()
+{
+    Eigen::AlignedBox<double, 3> box;
+    try {
+        for (const Vec3<double>& p : objectVertices(document_->scene()))
+            box.extend(p);
+    } catch (const InputError&) {
+    }
+    if (box.isEmpty())
+        box = Eigen::AlignedBox<double, 3>(Vec3<double>(-1, -1, -1), Vec3<double>(1, 1, 1));
+    ClassicalDialog dialog(box.min(), box.max(), this);
+    if (dialog.exec() != QDialog::Accepted)
+        return;
+    try {
+        document_->setCamera(dialog.view(), tr("Classical projection: %1").arg(dialog.kindName()));
+    } catch (const InputError& e) {
+        showMessage(QString::fromStdString(e.what()));
     }
 }
 

@@ -62,6 +62,8 @@ public:
     void copyMatrixAsLatex();
     // Edit > Copy View as Image: the world view as it is on screen.
     void copyViewAsImage();
+    // View > Classical Projection: a class of seed 001 for the scene's objects, one undoable edit.
+    void chooseClassicalProjection();
 
     void setTheme(Theme theme);
     void setFontSize(int points);

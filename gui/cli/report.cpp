@@ -9,6 +9,7 @@
 #include <type_traits>
 
 #include "viewpipe/accuracy.hpp"
+#include "viewpipe/classical.hpp"
 
 namespace viewpipe::cli {
 namespace {
@@ -241,6 +242,45 @@ void printTrace(std::ostream& out, const Scene& scene, const Vec3<double>& point
     else
         out << "  after the divide: " << show(t["divided"]) << "\n";
     out << "  " << (t["inside"].get<bool>() ? "inside" : "outside") << " the canonical view volume\n";
+}
+
+Json classifyJson(const Scene& scene)
+{
+    const Classification c = classify(scene.camera);
+    static const char* axes[] = {"x", "y", "z"};
+    Json points = Json::array();
+    for (const VanishingPoint& vp : c.vanishingPoints)
+        points.push_back({{"axis", axes[vp.axis]},
+                          {"world", {vp.world.x(), vp.world.y(), vp.world.z()}},
+                          {"image", {vp.image.x(), vp.image.y()}}});
+    return {{"projection", c.projection},
+            {"family", c.family},
+            {"kind", c.kind},
+            {"description", c.description},
+            {"foreshortening", c.foreshortening ? Json(*c.foreshortening) : Json(nullptr)},
+            {"alpha_deg", c.alphaDegrees ? Json(*c.alphaDegrees) : Json(nullptr)},
+            {"vanishing_points", points}};
+}
+
+void printClassification(std::ostream& out, const Scene& scene)
+{
+    const Classification c = classify(scene.camera);
+    static const char* axes[] = {"x", "y", "z"};
+    out << c.description << "\n";
+    if (c.foreshortening)
+        out << "foreshortening: x " << shortNumber((*c.foreshortening)[0]) << ", y "
+            << shortNumber((*c.foreshortening)[1]) << ", z " << shortNumber((*c.foreshortening)[2]) << "\n";
+    if (c.projection == "perspective") {
+        out << "vanishing points (" << c.vanishingPoints.size() << " finite):\n";
+        for (const VanishingPoint& vp : c.vanishingPoints)
+            out << "  " << axes[vp.axis] << ": world (" << shortNumber(vp.world.x()) << ", " << shortNumber(vp.world.y())
+                << ", " << shortNumber(vp.world.z()) << "), picture (" << shortNumber(vp.image.x()) << ", "
+                << shortNumber(vp.image.y()) << ")\n";
+        for (int axis = 0; axis < 3; ++axis)
+            if (std::none_of(c.vanishingPoints.begin(), c.vanishingPoints.end(),
+                             [axis](const VanishingPoint& vp) { return vp.axis == axis; }))
+                out << "  " << axes[axis] << ": none (parallel to the view plane: such lines stay parallel)\n";
+    }
 }
 
 } // namespace viewpipe::cli

@@ -30,4 +30,8 @@ void printPipeline(std::ostream& out, const Scene& scene, const PrecisionChoice&
 nlohmann::json traceJson(const Scene& scene, const Vec3<double>& point, const PrecisionChoice& precision);
 void printTrace(std::ostream& out, const Scene& scene, const Vec3<double>& point, const PrecisionChoice& precision);
 
+// `viewpipe classify`: the classical projection a scene's camera realizes.
+nlohmann::json classifyJson(const Scene& scene);
+void printClassification(std::ostream& out, const Scene& scene);
+
 } // namespace viewpipe::cli

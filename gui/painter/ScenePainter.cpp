@@ -21,6 +21,10 @@
 #include <vtkRenderer.h>
 #include <vtkSTLReader.h>
 #include <vtkSphereSource.h>
+#include <vtkActor2D.h>
+#include <vtkCoordinate.h>
+#include <vtkPolyDataMapper2D.h>
+#include <vtkProperty2D.h>
 #include <vtkTextActor.h>
 #include <vtkTextProperty.h>
 
@@ -28,6 +32,7 @@
 #include <cmath>
 
 #include "EigenVtk.h"
+#include "viewpipe/classical.hpp"
 #include "viewpipe/geometry.hpp"
 
 namespace viewpipe::gui {
@@ -268,6 +273,16 @@ ScenePainter::ScenePainter(vtkRenderer* world, vtkRenderer* projected)
         caption->SetPickable(false);
     }
     world_->AddActor2D(worldCaption_);
+    vanishing_ = vtkSmartPointer<vtkActor2D>::New();
+    auto vanishingMapper = vtkSmartPointer<vtkPolyDataMapper2D>::New();
+    vtkNew<vtkCoordinate> viewCoordinates;
+    viewCoordinates->SetCoordinateSystemToView();
+    vanishingMapper->SetTransformCoordinate(viewCoordinates);
+    vanishingMapper->SetInputData(linesData({}));
+    vanishing_->SetMapper(vanishingMapper);
+    vanishing_->GetProperty()->SetLineWidth(1.5);
+    if (projected_)
+        projected_->AddActor2D(vanishing_);
     frameAxes_ = vtkSmartPointer<vtkActor>::New();
     auto frameMapper = vtkSmartPointer<vtkPolyDataMapper>::New();
     frameMapper->SetInputData(linesData({}));
@@ -503,7 +518,7 @@ void ScenePainter::setScene(const Scene& scene)
     show(Mat4<double>::Identity(), 0);
 }
 
-void ScenePainter::setUpProjectedView(const Scene&, const Pipeline<double>& pipeline)
+void ScenePainter::setUpProjectedView(const Scene& scene, const Pipeline<double>& pipeline)
 {
     Mat4<double> clip = pipeline.toClip * pipeline.composite;
     if (pipeline.convention == Convention::Foley)
@@ -513,16 +528,48 @@ void ScenePainter::setUpProjectedView(const Scene&, const Pipeline<double>& pipe
     camera->SetFocalPoint(0, 0, -1);
     camera->SetViewUp(0, 1, 0);
     camera->SetUseExplicitProjectionTransformMatrix(true);
+
+    // Vanishing points, and the scene's edges along each principal axis drawn
+    // on to theirs: 2D lines in the picture's coordinates (x, y in [-1, 1]).
+    std::vector<Vec2<double>> picture; // pairs of end points
+    const Mat4<double> image = pipeline.toClip * pipeline.composite;
+    for (int axis = 0; axis < 3; ++axis) {
+        const std::optional<VanishingPoint> vp = vanishingPoint(scene.camera, axis);
+        if (!vp)
+            continue;
+        const Vec2<double> target = vp->image.head<2>();
+        const double arm = 0.04;
+        picture.insert(picture.end(), {target - Vec2<double>(arm, 0), target + Vec2<double>(arm, 0),
+                                       target - Vec2<double>(0, arm), target + Vec2<double>(0, arm)});
+        for (const SceneObject& object : scene.objects) {
+            if (object.type == ObjectType::Mesh)
+                continue;
+            const PolygonMesh mesh = object.type == ObjectType::House ? houseMesh() : boxMesh(object.min, object.max);
+            for (const Segment& edge : meshEdges(mesh)) {
+                const Vec3<double> d = (edge.second - edge.first).normalized();
+                if (std::abs(std::abs(d[axis]) - 1) > 1e-9)
+                    continue;
+                const std::optional<Vec3<double>> a = project(image, edge.first), b = project(image, edge.second);
+                if (a && b)
+                    picture.insert(picture.end(), {a->head<2>(), target, b->head<2>(), target});
+            }
+        }
+    }
+    vanishing_->SetVisibility(!picture.empty());
+
     // Keep the window square on screen whatever the viewport's shape.
-    auto update = vtkSmartPointer<vtkCallbackCommand>::New();
     struct Context {
         Mat4<double> clip;
+        std::vector<Vec2<double>> picture;
+        vtkActor2D* vanishing;
     };
-    auto* context = new Context{clip};
+    auto* context = new Context{clip, picture, vanishing_};
+    auto update = vtkSmartPointer<vtkCallbackCommand>::New();
     update->SetClientData(context);
     update->SetClientDataDeleteCallback([](void* data) { delete static_cast<Context*>(data); });
     update->SetCallback([](vtkObject* caller, unsigned long, void* data, void*) {
         auto* renderer = static_cast<vtkRenderer*>(caller);
+        auto* c = static_cast<Context*>(data);
         const double aspect = renderer->GetTiledAspectRatio();
         Mat4<double> letterbox = Mat4<double>::Identity();
         if (aspect > 1)
@@ -531,11 +578,17 @@ void ScenePainter::setUpProjectedView(const Scene&, const Pipeline<double>& pipe
             letterbox(1, 1) = aspect;
         letterbox(0, 0) *= 0.92;
         letterbox(1, 1) *= 0.92;
-        renderer->GetActiveCamera()->SetExplicitProjectionTransformMatrix(
-            toVtk(letterbox * static_cast<Context*>(data)->clip));
+        renderer->GetActiveCamera()->SetExplicitProjectionTransformMatrix(toVtk(letterbox * c->clip));
+        std::vector<Segment> lines;
+        for (std::size_t i = 0; i + 1 < c->picture.size(); i += 2) {
+            auto place = [&](const Vec2<double>& q) { return Vec3<double>(q.x() * letterbox(0, 0), q.y() * letterbox(1, 1), 0); };
+            lines.emplace_back(place(c->picture[i]), place(c->picture[i + 1]));
+        }
+        static_cast<vtkPolyDataMapper2D*>(c->vanishing->GetMapper())->SetInputData(linesData(lines));
     });
     projected_->RemoveObservers(vtkCommand::StartEvent);
     projected_->AddObserver(vtkCommand::StartEvent, update);
+    update->Execute(projected_, vtkCommand::StartEvent, nullptr); // the first frame needs the matrix too
 }
 
 void ScenePainter::show(const Mat4<double>& cumulative, double canonicalOpacity)
@@ -707,6 +760,9 @@ void ScenePainter::applyStyle()
         caption->GetTextProperty()->SetColor(c.r, c.g, c.b);
         caption->GetTextProperty()->SetFontSize(fontSize_);
     }
+    const Rgb dop = color(Element::Dop, theme_);
+    vanishing_->GetProperty()->SetColor(dop.r, dop.g, dop.b);
+    vanishing_->GetProperty()->SetOpacity(0.7);
     const Rgb frame = color(Element::Frame, theme_);
     frameAxes_->GetProperty()->SetColor(frame.r, frame.g, frame.b);
     frameAxes_->GetProperty()->SetLineWidth(1.5 * lineScale_);

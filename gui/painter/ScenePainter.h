@@ -17,6 +17,7 @@
 #include "viewpipe/setup.hpp"
 
 class vtkActor;
+class vtkActor2D;
 class vtkBillboardTextActor3D;
 class vtkPolyData;
 class vtkRenderer;
@@ -109,6 +110,7 @@ private:
     vtkSmartPointer<vtkTextActor> worldCaption_;
     vtkSmartPointer<vtkTextActor> projectedCaption_;
     vtkSmartPointer<vtkActor> frameAxes_;
+    vtkSmartPointer<vtkActor2D> vanishing_; // vanishing points and the lines meeting there, projected view
     std::vector<Layer> layers_;
     std::vector<Label> labels_;
     std::vector<vtkSmartPointer<vtkActor>> projectedActors_;

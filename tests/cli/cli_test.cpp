@@ -214,3 +214,48 @@ TEST(Cli, BenchJsonHasEveryTier)
 }
 
 } // namespace
+
+namespace {
+
+TEST(Cli, ClassifyNamesThePresets)
+{
+    const std::string dir = std::string(VIEWPIPE_DATA_DIR) + "/scenes/classical/";
+    const std::vector<std::pair<std::string, std::string>> expected = {
+        {"house-front", "parallel, multiview orthographic, front"},
+        {"house-top", "parallel, multiview orthographic, top"},
+        {"house-side", "parallel, multiview orthographic, side"},
+        {"cube-isometric", "parallel, axonometric, isometric"},
+        {"cube-dimetric", "parallel, axonometric, dimetric"},
+        {"cube-trimetric", "parallel, axonometric, trimetric"},
+        {"cube-cavalier", "parallel, oblique, cavalier (alpha = 45.00 deg)"},
+        {"house-cabinet", "parallel, oblique, cabinet (alpha = 63.43 deg)"},
+        {"cube-oblique", "parallel, oblique, general (alpha = 53.13 deg)"},
+        {"cube-one-point", "perspective, one-point"},
+        {"cube-two-point", "perspective, two-point"},
+        {"house-three-point", "perspective, three-point"}};
+    for (const auto& [name, description] : expected) {
+        const Result r = run("classify " + dir + name + ".json");
+        ASSERT_EQ(r.exitCode, 0) << r.err;
+        EXPECT_EQ(r.out.substr(0, r.out.find('\n')), description) << name;
+    }
+    const Json j = Json::parse(run("classify " + dir + "cube-two-point.json --json").out);
+    EXPECT_EQ(j["kind"], "two-point");
+    EXPECT_EQ(j["vanishing_points"].size(), 2u);
+    EXPECT_TRUE(j["foreshortening"].is_null());
+    const Json iso = Json::parse(run("classify " + dir + "cube-isometric.json --json").out);
+    EXPECT_NEAR(iso["foreshortening"][1].get<double>(), std::sqrt(2.0 / 3), 1e-12);
+}
+
+TEST(Cli, ClassicalPrintsAViewThatClassifiesBack)
+{
+    const std::string file = (std::filesystem::temp_directory_path() / "viewpipe-classical.json").string();
+    Result r = run("classical trimetric --object cube --azimuth 20 --elevation 40 --out " + file);
+    ASSERT_EQ(r.exitCode, 0) << r.err;
+    EXPECT_EQ(run("classify " + file).out.substr(0, 33), "parallel, axonometric, trimetric\n");
+    r = run("classical dimetric --foreshortening 0.9,0.9,0.2");
+    EXPECT_EQ(r.exitCode, 2);
+    EXPECT_NE(r.err.find("foreshortening: the squares of the three ratios must sum to 2"), std::string::npos) << r.err;
+    EXPECT_EQ(run("classical fisheye").exitCode, 2);
+}
+
+} // namespace

@@ -21,6 +21,7 @@
 #include <vtkRendererCollection.h>
 
 #include "app/AccuracyPanel.h"
+#include "app/ClassicalDialog.h"
 #include "app/MainWindow.h"
 #include "app/MatrixPanel.h"
 #include "app/ParameterPanel.h"
@@ -282,6 +283,24 @@ private slots:
         QCOMPARE(w.accuracy()->table()->rowCount(), 6);
         QCOMPARE(w.accuracy()->table()->item(1, 0)->text(), QString("double"));
         QVERIFY(w.accuracy()->table()->item(1, 5)->text().contains("e-16"));
+    }
+
+    void classicalProjectionIsOneUndoableEdit()
+    {
+        MainWindow& w = *window_;
+        QTimer::singleShot(0, [&w] {
+            auto* dialog = w.findChild<ClassicalDialog*>();
+            QVERIFY(dialog);
+            dialog->setKind(ClassicalKind::Cabinet);
+            dialog->accept();
+        });
+        w.chooseClassicalProjection();
+        const auto& spec = std::get<foley::ViewSpec<double>>(w.document()->scene().camera);
+        QCOMPARE(classify(CameraSpec<double>(spec)).kind, std::string("cabinet"));
+        QCOMPARE(w.stageCount(), 5);
+        QCOMPARE(w.document()->pipeline().stages[2].symbol, std::string("SH_par"));
+        w.document()->undoStack()->undo();
+        QCOMPARE(std::get<foley::ViewSpec<double>>(w.document()->scene().camera).prp, Vec3<double>(8, 6, 84));
     }
 
     void eigenVtkAdapterKeepsRowsAndColumns()

@@ -16,6 +16,7 @@
 
 namespace viewpipe {
 
+template <class T> using Vec2 = Eigen::Matrix<T, 2, 1>;
 template <class T> using Vec3 = Eigen::Matrix<T, 3, 1>;
 template <class T> using Vec4 = Eigen::Matrix<T, 4, 1>;
 template <class T> using Mat3 = Eigen::Matrix<T, 3, 3>;
