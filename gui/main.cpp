@@ -149,6 +149,16 @@ int main(int argc, char** argv)
         ->capture_default_str();
     classicalCommand->add_option("--out", classicalOut, "Write the scene here (atomically) instead of stdout");
 
+    std::string sheetOut, sheetSize = "1600x1200", sheetTheme = "light";
+    CLI::App* sheetCommand = app.add_subcommand(
+        "sheet", "The CAD layout of a scene's objects: top, front, side and isometric views on one PNG");
+    sheetCommand->add_option("SCENE", options.scene, "Scene file (JSON)")->required();
+    sheetCommand->add_option("--out", sheetOut, "The PNG to write")->required();
+    sheetCommand->add_option("--size", sheetSize, "Sheet size WxH")->capture_default_str();
+    sheetCommand->add_option("--theme", sheetTheme, "light or dark")
+        ->check(CLI::IsMember({"light", "dark"}))
+        ->capture_default_str();
+
     std::size_t benchVertices = 1000000;
     std::string benchPlot, benchViewport;
     CLI::App* benchCommand = app.add_subcommand(
@@ -184,6 +194,22 @@ int main(int argc, char** argv)
             return kExitBadInput;
         } catch (const std::exception& e) {
             std::cerr << "viewpipe: internal error: " << e.what() << "\n";
+            return kExitInternal;
+        }
+    }
+
+    if (*sheetCommand) {
+        try {
+            const Scene scene = loadScene(options.scene);
+            const auto [width, height] = parseSize(sheetSize, "--size");
+            const gui::VirtualDisplay display;
+            gui::exportSheet(scene, sheetOut, width, height, sheetTheme == "dark" ? gui::Theme::Dark : gui::Theme::Light);
+            return 0;
+        } catch (const InputError& e) {
+            std::cerr << options.scene << ": " << e.what() << "\n";
+            return kExitBadInput;
+        } catch (const std::exception& e) {
+            std::cerr << "viewpipe sheet: " << e.what() << "\n";
             return kExitInternal;
         }
     }

@@ -242,6 +242,18 @@ void MainWindow::buildMenus()
             showMessage(QString::fromStdString(e.what()));
         }
     }, QKeySequence(Qt::CTRL | Qt::Key_E));
+    file->addAction(tr("Export CAD &Sheet…"), this, [this] {
+        const QString path = QFileDialog::getSaveFileName(this, tr("Export the CAD sheet"), "sheet.png",
+                                                          tr("PNG images (*.png)"));
+        if (path.isEmpty())
+            return;
+        try {
+            exportSheet(document_->scene(), path.toStdString(), 1600, 1200, painter_->theme());
+            statusBar()->showMessage(tr("Exported %1").arg(path), 6000);
+        } catch (const InputError& e) {
+            showMessage(QString::fromStdString(e.what()));
+        }
+    });
     file->addSeparator();
     file->addAction(tr("&Quit"), this, &QWidget::close, QKeySequence::Quit);
     rebuildPresetMenu();

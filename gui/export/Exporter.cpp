@@ -1,7 +1,10 @@
 #include "Exporter.h"
 
 #include <vtkBase64Utilities.h>
+#include <vtkCamera.h>
 #include <vtkErrorCode.h>
+#include <vtkTextActor.h>
+#include <vtkTextProperty.h>
 #include <vtkGL2PSExporter.h>
 #include <vtkNew.h>
 #include <vtkPNGWriter.h>
@@ -26,6 +29,7 @@
 #include "cli/report.hpp"
 #include "painter/StageTransition.h"
 #include "viewpipe/animation.hpp"
+#include "viewpipe/classical.hpp"
 
 extern char** environ;
 
@@ -166,6 +170,74 @@ void validate(const ExportOptions& o)
 }
 
 } // namespace
+
+void exportSheet(const Scene& scene, const fs::path& file, int width, int height, Theme theme)
+{
+    if (width < 128 || height < 128 || width > 8192 || height > 8192)
+        throw InputError("--size", "must be WxH with 128 <= W, H <= 8192");
+    Eigen::AlignedBox<double, 3> box;
+    for (const Vec3<double>& p : objectVertices(scene))
+        box.extend(p);
+    if (box.isEmpty())
+        throw InputError("objects", "the scene has no objects to draw");
+    struct Panel {
+        ClassicalKind kind;
+        const char* caption;
+        double x0, y0; // lower-left corner of the viewport
+    };
+    const Panel panels[] = {{ClassicalKind::Top, "Top", 0, 0.5},
+                            {ClassicalKind::Isometric, "Isometric", 0.5, 0.5},
+                            {ClassicalKind::Front, "Front", 0, 0},
+                            {ClassicalKind::Side, "Side (right)", 0.5, 0}};
+    vtkNew<vtkRenderWindow> window;
+    window->SetOffScreenRendering(1);
+    window->SetSize(width, height);
+    const double background = theme == Theme::Dark ? 0.11 : 1.0;
+    const Rgb ink = ScenePainter::color(Element::Objects, theme);
+    // One scale for the four views, as a drawing has: lengths compare across them.
+    double scale = 0;
+    for (const Panel& panel : panels) {
+        const foley::ViewSpec<double> view = classicalView(panel.kind, box.min(), box.max());
+        scale = std::max(scale, 0.5 * (view.window.vmax - view.window.vmin));
+    }
+    for (const Panel& panel : panels) {
+        // These views are orthographic (projectors along VPN): VTK's parallel
+        // camera, aimed along -VPN at the window's center, sees the window.
+        const foley::ViewSpec<double> view = classicalView(panel.kind, box.min(), box.max());
+        const Basis<double> b = foley::vrcBasis(view);
+        const Vec3<double> center = foley::vrcToWorld(view, b, foley::windowCenter(view));
+        vtkNew<vtkRenderer> renderer;
+        renderer->SetViewport(panel.x0, panel.y0, panel.x0 + 0.5, panel.y0 + 0.5);
+        renderer->SetBackground(background, background, background);
+        addObjectActors(renderer, scene, theme);
+        vtkCamera* camera = renderer->GetActiveCamera();
+        camera->ParallelProjectionOn();
+        camera->SetFocalPoint(center.data());
+        camera->SetPosition(Vec3<double>(center + (view.prp.z() - view.back) * b.n).data());
+        camera->SetViewUp(b.v.data());
+        camera->SetParallelScale(scale);
+        renderer->ResetCameraClippingRange();
+        vtkNew<vtkTextActor> caption;
+        caption->SetInput(panel.caption);
+        caption->GetPositionCoordinate()->SetCoordinateSystemToNormalizedViewport();
+        caption->SetPosition(0.03, 0.93);
+        caption->GetTextProperty()->SetFontSize(std::max(14, height / 40));
+        caption->GetTextProperty()->SetBold(true);
+        caption->GetTextProperty()->SetColor(ink.r, ink.g, ink.b);
+        renderer->AddActor2D(caption);
+        window->AddRenderer(renderer);
+    }
+    window->Render();
+    const fs::path temporary = file.string() + ".tmp-" + std::to_string(::getpid()) + ".png";
+    try {
+        writePng(window, false, temporary);
+        fs::rename(temporary, file);
+    } catch (const std::exception& e) {
+        std::error_code ignored;
+        fs::remove(temporary, ignored);
+        throw InputError("--out", std::string("cannot write the sheet: ") + e.what());
+    }
+}
 
 std::string slug(const std::string& symbol)
 {

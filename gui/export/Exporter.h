@@ -46,6 +46,12 @@ using ExportProgress = std::function<void(int done, int total, const std::string
 std::vector<std::filesystem::path> exportStages(const Scene& scene, const ExportOptions& options,
                                                 const ExportProgress& progress, const std::atomic<bool>& cancel);
 
+// The CAD layout of seed 001 for a scene's objects, as one PNG: the top view
+// above the front view, the (right) side view beside it, and the isometric
+// view in the remaining corner. Written atomically; throws InputError for a
+// bad size, a scene without objects or an unwritable file.
+void exportSheet(const Scene& scene, const std::filesystem::path& file, int width, int height, Theme theme);
+
 // "T(-VRP)" -> "t-vrp": the stage's part of its file names.
 std::string slug(const std::string& symbol);
 

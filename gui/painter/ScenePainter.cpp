@@ -261,6 +261,37 @@ std::vector<Vec3<double>> objectVertices(const Scene& scene)
     return vertices;
 }
 
+void addObjectActors(vtkRenderer* renderer, const Scene& scene, Theme theme)
+{
+    for (std::size_t i = 0; i < scene.objects.size(); ++i) {
+        const SceneObject& object = scene.objects[i];
+        vtkSmartPointer<vtkPolyData> faces;
+        std::vector<Segment> edges;
+        if (object.type == ObjectType::Mesh) {
+            faces = readMesh(object, i);
+        } else {
+            const PolygonMesh mesh = object.type == ObjectType::House ? houseMesh() : boxMesh(object.min, object.max);
+            faces = facesData(mesh);
+            edges = meshEdges(mesh);
+        }
+        for (bool surface : {true, false}) {
+            if (!surface && edges.empty())
+                continue;
+            auto mapper = vtkSmartPointer<vtkPolyDataMapper>::New();
+            mapper->SetInputData(surface ? faces : linesData(edges));
+            auto actor = vtkSmartPointer<vtkActor>::New();
+            actor->SetMapper(mapper);
+            vtkProperty* p = actor->GetProperty();
+            p->LightingOff();
+            p->SetOpacity(surface ? 0.35 : 1.0);
+            p->SetLineWidth(2);
+            const Rgb c = surface ? ScenePainter::faceColor(theme) : ScenePainter::color(Element::Objects, theme);
+            p->SetColor(c.r, c.g, c.b);
+            renderer->AddActor(actor);
+        }
+    }
+}
+
 ScenePainter::ScenePainter(vtkRenderer* world, vtkRenderer* projected)
     : world_(world), projected_(projected), worldCaption_(vtkSmartPointer<vtkTextActor>::New()),
       projectedCaption_(vtkSmartPointer<vtkTextActor>::New())

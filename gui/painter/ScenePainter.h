@@ -26,6 +26,7 @@ class vtkTextActor;
 namespace viewpipe::gui {
 
 enum class Theme { Dark, Light };
+class ScenePainter;
 
 struct Rgb {
     double r, g, b;
@@ -42,6 +43,10 @@ void checkMeshes(const Scene& scene);
 
 // Every vertex of the scene's objects, in world coordinates (meshes read with VTK).
 std::vector<Vec3<double>> objectVertices(const Scene& scene);
+
+// The scene's objects alone (faces and edges, as the painter styles them),
+// added to a renderer; for pictures that need no set-up around them.
+void addObjectActors(vtkRenderer* renderer, const Scene& scene, Theme theme);
 
 class ScenePainter {
 public:

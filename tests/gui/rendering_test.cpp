@@ -253,6 +253,31 @@ private slots:
         QVERIFY(contentShare(QImage(dir.filePath("headless/01-t-vrp.png"))) > 0.02);
     }
 
+    // The CAD sheet: four views, each quadrant drawn, one scale (the front and
+    // top views of the house are equally wide).
+    void cadSheetHasFourViewsAtOneScale()
+    {
+        QTemporaryDir dir;
+        const QString file = dir.filePath("sheet.png");
+        const Run r = viewpipe({"sheet", kHouse, "--out", file, "--size", "800x600"});
+        QVERIFY2(r.exitCode == 0, qPrintable(r.err));
+        const QImage sheet(file);
+        QCOMPARE(sheet.size(), QSize(800, 600));
+        auto width = [&sheet](int top) { // columns with ink in the left half, rows top..top+300
+            int first = 400, last = -1;
+            for (int y = top + 40; y < top + 290; ++y)
+                for (int x = 0; x < 400; ++x)
+                    if (qGray(sheet.pixel(x, y)) < 240)
+                        first = std::min(first, x), last = std::max(last, x);
+            return last - first;
+        };
+        for (const QRect& quadrant : {QRect(0, 0, 400, 300), QRect(400, 0, 400, 300), QRect(0, 300, 400, 300),
+                                      QRect(400, 300, 400, 300)})
+            QVERIFY(contentShare(sheet.copy(quadrant)) > 0.1);
+        QVERIFY(std::abs(width(0) - width(300)) <= 2);
+        QVERIFY(width(0) > 100);
+    }
+
     void exportIsAtomic()
     {
         QTemporaryDir dir;
