@@ -18,7 +18,6 @@
 #include <vtkPoints.h>
 
 #include <cstring>
-#include <random>
 #include <vector>
 
 #include "viewpipe/accuracy.hpp"
@@ -39,21 +38,9 @@ const gl::Camera<double>& camera()
 const std::vector<double>& points()
 {
     static const std::vector<double> p = [] {
-        const auto corners = gl::viewVolumeCorners(camera());
-        std::mt19937_64 rng(3);
-        std::uniform_real_distribution<double> unit(0.05, 1.0);
         std::vector<double> out;
-        for (std::size_t i = 0; i < kVertices; ++i) {
-            Vec3<double> q = Vec3<double>::Zero();
-            double total = 0;
-            for (const auto& c : corners) {
-                const double w = unit(rng);
-                q += w * c;
-                total += w;
-            }
-            q /= total;
+        for (const Vec3<double>& q : pointsInside(gl::viewVolumeCorners(camera()), kVertices, 3))
             out.insert(out.end(), {q.x(), q.y(), q.z()});
-        }
         return out;
     }();
     return p;

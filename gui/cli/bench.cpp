@@ -4,7 +4,6 @@
 #include <chrono>
 #include <cstdio>
 #include <iomanip>
-#include <random>
 #include <sstream>
 
 namespace viewpipe::cli {
@@ -25,28 +24,13 @@ double median(std::vector<double> values)
     return values[values.size() / 2];
 }
 
-// Points inside the view volume (random convex combinations of its corners).
+// Points inside the view volume, x, y, z interleaved.
 std::vector<double> volumePoints(const ReferenceSolution& ref, std::size_t count)
 {
-    std::array<Vec3<double>, 8> corners;
-    for (std::size_t k = 0; k < 8; ++k)
-        corners[k] = Vec3<double>(static_cast<double>(ref.corners[k].x()), static_cast<double>(ref.corners[k].y()),
-                                  static_cast<double>(ref.corners[k].z()));
-    std::mt19937_64 rng(7);
-    std::uniform_real_distribution<double> unit(0.05, 1.0);
     std::vector<double> points;
     points.reserve(3 * count);
-    for (std::size_t i = 0; i < count; ++i) {
-        Vec3<double> p = Vec3<double>::Zero();
-        double total = 0;
-        for (const Vec3<double>& c : corners) {
-            const double w = unit(rng);
-            p += w * c;
-            total += w;
-        }
-        p /= total;
+    for (const Vec3<double>& p : pointsInside(ref.corners, count, 7))
         points.insert(points.end(), {p.x(), p.y(), p.z()});
-    }
     return points;
 }
 

@@ -242,20 +242,53 @@ void checkMeshes(const Scene& scene)
             readMesh(scene.objects[i], i);
 }
 
+namespace {
+
+// An object's faces and, where it has them, its edges: the geometry every
+// picture of it starts from.
+using ObjectGeometry = std::pair<vtkSmartPointer<vtkPolyData>, std::vector<Segment>>;
+
+ObjectGeometry objectGeometry(const SceneObject& object, std::size_t index)
+{
+    if (object.type == ObjectType::Mesh)
+        return {readMesh(object, index), {}};
+    const PolygonMesh mesh = object.type == ObjectType::House ? houseMesh() : boxMesh(object.min, object.max);
+    return {facesData(mesh), meshEdges(mesh)};
+}
+
+// Flat-shaded actors for an object's faces (translucent) and edges, colored for a theme.
+std::vector<vtkSmartPointer<vtkActor>> objectActors(const ObjectGeometry& geometry, Theme theme)
+{
+    std::vector<vtkSmartPointer<vtkActor>> actors;
+    for (bool surface : {true, false}) {
+        if (!surface && geometry.second.empty())
+            continue;
+        auto mapper = vtkSmartPointer<vtkPolyDataMapper>::New();
+        mapper->SetInputData(surface ? geometry.first : linesData(geometry.second));
+        auto actor = vtkSmartPointer<vtkActor>::New();
+        actor->SetMapper(mapper);
+        vtkProperty* p = actor->GetProperty();
+        p->LightingOff();
+        p->SetOpacity(surface ? 0.35 : 1.0);
+        p->SetLineWidth(2);
+        const Rgb c = surface ? ScenePainter::faceColor(theme) : ScenePainter::color(Element::Objects, theme);
+        p->SetColor(c.r, c.g, c.b);
+        actors.push_back(actor);
+    }
+    return actors;
+}
+
+} // namespace
+
 std::vector<Vec3<double>> objectVertices(const Scene& scene)
 {
     std::vector<Vec3<double>> vertices;
     for (std::size_t i = 0; i < scene.objects.size(); ++i) {
-        const SceneObject& object = scene.objects[i];
-        if (object.type == ObjectType::Mesh) {
-            vtkPoints* points = readMesh(object, i)->GetPoints();
-            for (vtkIdType k = 0; k < points->GetNumberOfPoints(); ++k) {
-                const double* p = points->GetPoint(k);
-                vertices.emplace_back(p[0], p[1], p[2]);
-            }
-        } else {
-            const PolygonMesh mesh = object.type == ObjectType::House ? houseMesh() : boxMesh(object.min, object.max);
-            vertices.insert(vertices.end(), mesh.vertices.begin(), mesh.vertices.end());
+        const ObjectGeometry geometry = objectGeometry(scene.objects[i], i);
+        vtkPoints* points = geometry.first->GetPoints();
+        for (vtkIdType k = 0; k < points->GetNumberOfPoints(); ++k) {
+            const double* p = points->GetPoint(k);
+            vertices.emplace_back(p[0], p[1], p[2]);
         }
     }
     return vertices;
@@ -263,33 +296,9 @@ std::vector<Vec3<double>> objectVertices(const Scene& scene)
 
 void addObjectActors(vtkRenderer* renderer, const Scene& scene, Theme theme)
 {
-    for (std::size_t i = 0; i < scene.objects.size(); ++i) {
-        const SceneObject& object = scene.objects[i];
-        vtkSmartPointer<vtkPolyData> faces;
-        std::vector<Segment> edges;
-        if (object.type == ObjectType::Mesh) {
-            faces = readMesh(object, i);
-        } else {
-            const PolygonMesh mesh = object.type == ObjectType::House ? houseMesh() : boxMesh(object.min, object.max);
-            faces = facesData(mesh);
-            edges = meshEdges(mesh);
-        }
-        for (bool surface : {true, false}) {
-            if (!surface && edges.empty())
-                continue;
-            auto mapper = vtkSmartPointer<vtkPolyDataMapper>::New();
-            mapper->SetInputData(surface ? faces : linesData(edges));
-            auto actor = vtkSmartPointer<vtkActor>::New();
-            actor->SetMapper(mapper);
-            vtkProperty* p = actor->GetProperty();
-            p->LightingOff();
-            p->SetOpacity(surface ? 0.35 : 1.0);
-            p->SetLineWidth(2);
-            const Rgb c = surface ? ScenePainter::faceColor(theme) : ScenePainter::color(Element::Objects, theme);
-            p->SetColor(c.r, c.g, c.b);
+    for (std::size_t i = 0; i < scene.objects.size(); ++i)
+        for (const auto& actor : objectActors(objectGeometry(scene.objects[i], i), theme))
             renderer->AddActor(actor);
-        }
-    }
 }
 
 ScenePainter::ScenePainter(vtkRenderer* world, vtkRenderer* projected)
@@ -405,17 +414,9 @@ void ScenePainter::setScene(const Scene& scene)
     const ViewSetup<double> setup = viewSetup(scene.camera);
 
     // Read everything first: a mesh that fails leaves the previous picture.
-    std::vector<std::pair<vtkSmartPointer<vtkPolyData>, std::vector<Segment>>> objects;
-    for (std::size_t i = 0; i < scene.objects.size(); ++i) {
-        const SceneObject& object = scene.objects[i];
-        if (object.type == ObjectType::Mesh) {
-            objects.emplace_back(readMesh(object, i), std::vector<Segment>{});
-        } else {
-            const PolygonMesh mesh =
-                object.type == ObjectType::House ? houseMesh() : boxMesh(object.min, object.max);
-            objects.emplace_back(facesData(mesh), meshEdges(mesh));
-        }
-    }
+    std::vector<ObjectGeometry> objects;
+    for (std::size_t i = 0; i < scene.objects.size(); ++i)
+        objects.push_back(objectGeometry(scene.objects[i], i));
     clear();
 
     // The size of the set-up, for axis lengths and markers.
@@ -516,20 +517,9 @@ void ScenePainter::setScene(const Scene& scene)
     addLayer(Element::Canonical, linesData(canonical), false, 1.0);
 
     if (projected_) {
-        for (const auto& object : objects) {
-            for (bool surface : {true, false}) {
-                if (!surface && object.second.empty())
-                    continue;
-                auto mapper = vtkSmartPointer<vtkPolyDataMapper>::New();
-                mapper->SetInputData(surface ? object.first : linesData(object.second));
-                auto actor = vtkSmartPointer<vtkActor>::New();
-                actor->SetMapper(mapper);
-                actor->GetProperty()->LightingOff();
-                actor->GetProperty()->SetOpacity(surface ? 0.35 : 1.0);
-                actor->GetProperty()->SetLineWidth(2);
+        for (const ObjectGeometry& object : objects)
+            for (const auto& actor : objectActors(object, theme_))
                 projectedActors_.push_back(actor);
-            }
-        }
         // The window's outline, at mid depth so that no clipping plane cuts it.
         std::vector<Segment> border;
         for (std::size_t k = 0; k < 4; ++k)
@@ -572,11 +562,8 @@ void ScenePainter::setUpProjectedView(const Scene& scene, const Pipeline<double>
         const double arm = 0.04;
         picture.insert(picture.end(), {target - Vec2<double>(arm, 0), target + Vec2<double>(arm, 0),
                                        target - Vec2<double>(0, arm), target + Vec2<double>(0, arm)});
-        for (const SceneObject& object : scene.objects) {
-            if (object.type == ObjectType::Mesh)
-                continue;
-            const PolygonMesh mesh = object.type == ObjectType::House ? houseMesh() : boxMesh(object.min, object.max);
-            for (const Segment& edge : meshEdges(mesh)) {
+        for (std::size_t i = 0; i < scene.objects.size(); ++i) {
+            for (const Segment& edge : objectGeometry(scene.objects[i], i).second) { // meshes have none listed
                 const Vec3<double> d = (edge.second - edge.first).normalized();
                 if (std::abs(std::abs(d[axis]) - 1) > 1e-9)
                     continue;

@@ -57,6 +57,29 @@ struct ReferenceSolution {
     std::vector<Vec3<double>> interior;            // inside the view volume, exact in double
 };
 
+// Points inside a convex volume given by its corners: random convex
+// combinations (weights in [0.05, 1)), seeded, so every run sees the same points.
+template <class T>
+std::vector<Vec3<double>> pointsInside(const std::array<Vec3<T>, 8>& corners, std::size_t count, unsigned seed)
+{
+    std::mt19937_64 rng(seed);
+    std::uniform_real_distribution<double> unit(0.05, 1.0);
+    std::vector<Vec3<double>> points;
+    points.reserve(count);
+    for (std::size_t i = 0; i < count; ++i) {
+        Vec3<T> p = Vec3<T>::Zero();
+        T total = 0;
+        for (const Vec3<T>& corner : corners) {
+            const double weight = unit(rng);
+            p += T(weight) * corner;
+            total += T(weight);
+        }
+        p /= total;
+        points.emplace_back(static_cast<double>(p.x()), static_cast<double>(p.y()), static_cast<double>(p.z()));
+    }
+    return points;
+}
+
 inline unsigned digitsForBits(unsigned bits)
 {
     return unsigned(std::ceil(bits * 0.30102999566398120)) + 1;
@@ -89,20 +112,7 @@ inline ReferenceSolution makeReference(const CameraSpec<double>& camera, unsigne
             }
         },
         exact);
-    // Interior points: random convex combinations of the corners, rounded to double.
-    std::mt19937_64 rng(12345);
-    std::uniform_real_distribution<double> unit(0.05, 1.0);
-    for (std::size_t i = 0; i < interiorPoints; ++i) {
-        Vec3<Reference> p = Vec3<Reference>::Zero();
-        Reference total = 0;
-        for (const Vec3<Reference>& corner : ref.corners) {
-            const Reference weight = unit(rng);
-            p += weight * corner;
-            total += weight;
-        }
-        p /= total;
-        ref.interior.emplace_back(static_cast<double>(p.x()), static_cast<double>(p.y()), static_cast<double>(p.z()));
-    }
+    ref.interior = pointsInside(ref.corners, interiorPoints, 12345); // rounded to double
     return ref;
 }
 
