@@ -352,9 +352,9 @@ int main(int argc, char** argv)
         const cli::PrecisionChoice precision = cli::parsePrecision(options.precision, options.bits);
         if (*pipeline) {
             if (options.json)
-                std::cout << cli::pipelineJson(scene, precision).dump() << "\n";
+                std::cout << cli::pipelineJson(scene, precision, gui::objectMeshes(scene)).dump() << "\n";
             else
-                cli::printPipeline(std::cout, scene, precision);
+                cli::printPipeline(std::cout, scene, precision, gui::objectMeshes(scene));
         } else if (*classifyCommand) {
             if (options.json)
                 std::cout << cli::classifyJson(scene).dump() << "\n";

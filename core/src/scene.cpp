@@ -207,6 +207,39 @@ SceneObject readObject(const Json& j, const std::string& path, const std::filesy
     return object;
 }
 
+// One entry of "effects": a name, or {"name": {parameters}}.
+void readEffect(const Json& j, const std::string& path, EffectList& effects)
+{
+    std::string name;
+    const Json* parameters = nullptr;
+    if (j.is_string()) {
+        name = j.get<std::string>();
+    } else if (j.is_object() && j.size() == 1) {
+        name = j.begin().key();
+        parameters = &j.begin().value();
+    } else {
+        throw InputError(path, "must be an effect name or {\"name\": {parameters}}");
+    }
+    static const std::set<std::string> known = {"clip", "divide", "cull"};
+    static const std::set<std::string> later = {"depth", "raster"};
+    if (later.count(name))
+        throw InputError(path, "effect \"" + name + "\" is not available yet (available: clip, divide, cull)");
+    if (!known.count(name))
+        throw InputError(path, "unknown effect \"" + name + "\" (available: clip, divide, cull)");
+    if (std::find(effects.names.begin(), effects.names.end(), name) != effects.names.end())
+        throw InputError(path, "effect \"" + name + "\" is listed twice");
+    if (parameters) {
+        if (!parameters->is_object())
+            throw InputError(path + "." + name, "parameters must be an object (got " + typeName(*parameters) + ")");
+        for (const auto& item : parameters->items()) // none of these effects takes parameters
+            throw InputError(path + "." + name + "." + item.key(), "unknown parameter (\"" + name + "\" takes none)");
+    }
+    effects.names.push_back(name);
+    effects.clip = effects.clip || name == "clip";
+    effects.divide = effects.divide || name == "divide";
+    effects.cull = effects.cull || name == "cull";
+}
+
 Json vec3Json(const Vec3<double>& v)
 {
     return Json::array({v.x(), v.y(), v.z()});
@@ -286,15 +319,8 @@ Scene parseScene(const std::string& text, const std::filesystem::path& baseDir)
         const Json& effects = root["effects"];
         if (!effects.is_array())
             throw InputError("effects", "must be an array (got " + typeName(effects) + ")");
-        for (std::size_t i = 0; i < effects.size(); ++i) {
-            const Json& effect = effects[i];
-            const std::string name = effect.is_string() ? effect.get<std::string>()
-                                     : effect.is_object() && effect.size() == 1 ? effect.begin().key()
-                                                                                : std::string();
-            if (name.empty())
-                throw InputError(element("effects", i), "must be an effect name or {\"name\": {parameters}}");
-            throw InputError(element("effects", i), "unknown effect \"" + name + "\" (no effects are known yet)");
-        }
+        for (std::size_t i = 0; i < effects.size(); ++i)
+            readEffect(effects[i], element("effects", i), scene.effects);
     }
     return scene;
 }
@@ -328,7 +354,7 @@ std::string sceneToJson(const Scene& scene)
         }
     }
     root["objects"] = objects;
-    root["effects"] = Json::array();
+    root["effects"] = scene.effects.names;
     return root.dump(2) + "\n";
 }
 

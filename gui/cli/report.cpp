@@ -93,7 +93,32 @@ std::string compositeName(const Pipeline<double>& p)
 
 template <class T> Pipeline<T> pipelineFor(const Scene& scene)
 {
-    return buildPipeline(castCamera<T>(scene.camera));
+    return withEffectStages(buildPipeline(castCamera<T>(scene.camera)), scene.effects);
+}
+
+Json countsJson(const ClipCounts& c)
+{
+    return {{"inside", c.inside}, {"clipped", c.clipped}, {"outside", c.outside}};
+}
+
+// What each listed effect found, in double.
+Json effectsJson(const Scene& scene, const std::vector<PolygonMesh>& objects)
+{
+    const Pipeline<double> p = pipelineFor<double>(scene);
+    const EffectOutcomes outcomes = runEffects(p, objects, scene.effects);
+    Json out = Json::object();
+    if (outcomes.clip)
+        out["clip"] = {{"segments", countsJson(outcomes.clip->segments)},
+                       {"polygons", countsJson(outcomes.clip->polygons)}};
+    if (scene.effects.divide) {
+        const bool added = p.stages.back().symbol == "M" || p.stages.back().symbol == "divide";
+        out["divide"] = {{"stage", added ? Json(p.stages.back().symbol) : Json(nullptr)},
+                         {"note", added ? "appended after the last stage"
+                                        : "a parallel view needs no divide: its canonical volume is already parallel"}};
+    }
+    if (outcomes.cull)
+        out["cull"] = {{"faces", outcomes.cull->faces}, {"culled", outcomes.cull->culled}};
+    return out;
 }
 
 template <class F> auto withPrecision(const PrecisionChoice& precision, F&& f)
@@ -137,7 +162,7 @@ std::string precisionName(const PrecisionChoice& precision)
     return precision.type == Precision::Mpfr ? name + "-" + std::to_string(precision.mpfrBits) : name;
 }
 
-Json pipelineJson(const Scene& scene, const PrecisionChoice& precision)
+Json pipelineJson(const Scene& scene, const PrecisionChoice& precision, const std::vector<PolygonMesh>& objects)
 {
     return withPrecision(precision, [&](auto zero) {
         using T = decltype(zero);
@@ -160,11 +185,14 @@ Json pipelineJson(const Scene& scene, const PrecisionChoice& precision)
             out["view"] = matrixJson(*p.view);
         if (p.projectionMatrix)
             out["projection_matrix"] = matrixJson(*p.projectionMatrix);
+        if (!scene.effects.empty())
+            out["effects"] = effectsJson(scene, objects);
         return out;
     });
 }
 
-void printPipeline(std::ostream& out, const Scene& scene, const PrecisionChoice& precision)
+void printPipeline(std::ostream& out, const Scene& scene, const PrecisionChoice& precision,
+                   const std::vector<PolygonMesh>& objects)
 {
     withPrecision(precision, [&](auto zero) {
         using T = decltype(zero);
@@ -194,6 +222,12 @@ void printPipeline(std::ostream& out, const Scene& scene, const PrecisionChoice&
             printSideBySide(out, matrixLines(*p.view), matrixLines(*p.projectionMatrix), "view (lookAt)",
                             "projection (" + p.projection + ")");
         }
+        if (!scene.effects.empty()) {
+            const Json effects = effectsJson(scene, objects);
+            out << "\nEffects:\n";
+            for (const auto& item : effects.items())
+                out << "  " << item.key() << ": " << item.value().dump() << "\n";
+        }
         return 0;
     });
 }
@@ -207,19 +241,31 @@ Json traceJson(const Scene& scene, const Vec3<double>& point, const PrecisionCho
         Json stages = Json::array();
         for (std::size_t k = 0; k < p.stages.size(); ++k)
             stages.push_back({{"symbol", p.stages[k].symbol}, {"point", vectorJson(trace.afterStage[k])}});
-        return Json{{"convention", conventionName(p.convention)},
-                    {"projection", p.projection},
-                    {"precision", precisionName(precision)},
-                    {"point", vectorJson(point)},
-                    {"stages", stages},
-                    {"clip", vectorJson(trace.clip)},
-                    {"divided", trace.divided ? vectorJson(*trace.divided) : Json(nullptr)},
-                    {"inside", trace.inside}};
+        Json out{{"convention", conventionName(p.convention)},
+                 {"projection", p.projection},
+                 {"precision", precisionName(precision)},
+                 {"point", vectorJson(point)},
+                 {"stages", stages},
+                 {"clip", vectorJson(trace.clip)},
+                 {"divided", trace.divided ? vectorJson(*trace.divided) : Json(nullptr)},
+                 {"inside", trace.inside}};
+        if (scene.effects.clip) {
+            // Which clipping planes reject the point, decided before any divide.
+            const Vec4<double> h = trace.clip.template cast<double>();
+            const bool behind = !(h.w() > 0); // then every plane test fails: report that alone
+            out["clipping"] = {{"clipped", !trace.inside},
+                               {"behind_eye", behind},
+                               {"outside_planes", behind ? std::vector<std::string>{}
+                                                         : planeNames(outcode(h, p.clipVolume), p.convention)}};
+        }
+        return out;
     });
 }
 
 void printTrace(std::ostream& out, const Scene& scene, const Vec3<double>& point, const PrecisionChoice& precision)
 {
+    // A JSON number, or a wide one written as a string.
+    auto negative = [](const Json& x) { return x.is_string() ? x.get<std::string>().front() == '-' : x.get<double>() < 0; };
     const Json t = traceJson(scene, point, precision);
     auto show = [](const Json& v) {
         std::string s = "(";
@@ -240,8 +286,18 @@ void printTrace(std::ostream& out, const Scene& scene, const Vec3<double>& point
     if (t["divided"].is_null())
         out << "  divide: w = 0, the point lies on the eye plane and has no image\n";
     else
-        out << "  after the divide: " << show(t["divided"]) << "\n";
+        out << "  after the divide: " << show(t["divided"])
+            << (negative(t["clip"].back()) ? "  (w < 0: behind the eye, a false image)" : "") << "\n";
     out << "  " << (t["inside"].get<bool>() ? "inside" : "outside") << " the canonical view volume\n";
+    if (t.contains("clipping")) {
+        const Json& c = t["clipping"];
+        out << "  clip: " << (c["clipped"].get<bool>() ? "clipped away" : "kept");
+        if (c["behind_eye"].get<bool>())
+            out << ", behind the eye (w <= 0)";
+        for (const Json& plane : c["outside_planes"])
+            out << ", outside the " << plane.get<std::string>() << " plane";
+        out << "\n";
+    }
 }
 
 Json classifyJson(const Scene& scene)

@@ -24,8 +24,12 @@ struct PrecisionChoice {
 PrecisionChoice parsePrecision(const std::string& name, unsigned mpfrBits = 256);
 std::string precisionName(const PrecisionChoice& precision);
 
-nlohmann::json pipelineJson(const Scene& scene, const PrecisionChoice& precision);
-void printPipeline(std::ostream& out, const Scene& scene, const PrecisionChoice& precision);
+// `objects`: the scene's objects as polygon meshes (see gui::objectMeshes),
+// for the effects' outcomes; with effects listed, "effects" reports them.
+nlohmann::json pipelineJson(const Scene& scene, const PrecisionChoice& precision,
+                            const std::vector<PolygonMesh>& objects);
+void printPipeline(std::ostream& out, const Scene& scene, const PrecisionChoice& precision,
+                   const std::vector<PolygonMesh>& objects);
 
 nlohmann::json traceJson(const Scene& scene, const Vec3<double>& point, const PrecisionChoice& precision);
 void printTrace(std::ostream& out, const Scene& scene, const Vec3<double>& point, const PrecisionChoice& precision);

@@ -373,7 +373,7 @@ std::vector<fs::path> exportStages(const Scene& scene, const ExportOptions& opti
         step("matrices.tex");
         writeText(temporary / "matrices.tex", cli::matricesLatex(scene, options.digits));
         step("matrices.json");
-        writeText(temporary / "matrices.json", cli::pipelineJson(scene, cli::PrecisionChoice{}).dump(2) + "\n");
+        writeText(temporary / "matrices.json", cli::pipelineJson(scene, cli::PrecisionChoice{}, objectMeshes(scene)).dump(2) + "\n");
 
         if (options.animate) {
             const fs::path frames = temporary / "frames";

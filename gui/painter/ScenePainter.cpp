@@ -294,6 +294,28 @@ std::vector<Vec3<double>> objectVertices(const Scene& scene)
     return vertices;
 }
 
+std::vector<PolygonMesh> objectMeshes(const Scene& scene)
+{
+    std::vector<PolygonMesh> meshes;
+    for (std::size_t i = 0; i < scene.objects.size(); ++i) {
+        const ObjectGeometry geometry = objectGeometry(scene.objects[i], i);
+        PolygonMesh mesh;
+        vtkPoints* points = geometry.first->GetPoints();
+        for (vtkIdType k = 0; k < points->GetNumberOfPoints(); ++k) {
+            const double* p = points->GetPoint(k);
+            mesh.vertices.emplace_back(p[0], p[1], p[2]);
+        }
+        vtkCellArray* polys = geometry.first->GetPolys();
+        polys->InitTraversal();
+        vtkIdType count;
+        const vtkIdType* ids;
+        while (polys->GetNextCell(count, ids))
+            mesh.faces.emplace_back(ids, ids + count);
+        meshes.push_back(std::move(mesh));
+    }
+    return meshes;
+}
+
 void addObjectActors(vtkRenderer* renderer, const Scene& scene, Theme theme)
 {
     for (std::size_t i = 0; i < scene.objects.size(); ++i)

@@ -13,6 +13,7 @@
 #include <string>
 #include <vector>
 
+#include "viewpipe/geometry.hpp"
 #include "viewpipe/scene.hpp"
 #include "viewpipe/setup.hpp"
 
@@ -43,6 +44,9 @@ void checkMeshes(const Scene& scene);
 
 // Every vertex of the scene's objects, in world coordinates (meshes read with VTK).
 std::vector<Vec3<double>> objectVertices(const Scene& scene);
+
+// The scene's objects as polygon meshes (meshes read with VTK), for effects.
+std::vector<PolygonMesh> objectMeshes(const Scene& scene);
 
 // The scene's objects alone (faces and edges, as the painter styles them),
 // added to a renderer; for pictures that need no set-up around them.

@@ -259,3 +259,30 @@ TEST(Cli, ClassicalPrintsAViewThatClassifiesBack)
 }
 
 } // namespace
+
+namespace {
+
+TEST(Cli, EffectsInPipelineAndTrace)
+{
+    const std::string scene = std::string(VIEWPIPE_DATA_DIR) + "/scenes/clipping-eye-plane.json";
+    const Json j = Json::parse(run("pipeline " + scene + " --json").out);
+    ASSERT_TRUE(j.contains("effects"));
+    EXPECT_EQ(j["stages"].back()["symbol"], "divide");
+    const Json& clip = j["effects"]["clip"]["segments"];
+    EXPECT_EQ(clip["inside"].get<int>() + clip["clipped"].get<int>() + clip["outside"].get<int>(), 27); // 15 + 12 edges
+    EXPECT_GT(clip["clipped"].get<int>(), 0);
+    EXPECT_EQ(j["effects"]["cull"]["faces"], 13);
+    // The default scene lists no effects: no "effects" key, five stages as before.
+    const Json plain = Json::parse(run("pipeline " + kHouse + " --json").out);
+    EXPECT_FALSE(plain.contains("effects"));
+    EXPECT_EQ(plain["stages"].size(), 5u);
+    // Trace reports the clipping of the point.
+    const Json behind = Json::parse(run("trace " + scene + " --point 8 6 50 --json").out);
+    EXPECT_TRUE(behind["clipping"]["clipped"].get<bool>());
+    EXPECT_TRUE(behind["clipping"]["behind_eye"].get<bool>());
+    const Json beside = Json::parse(run("trace " + scene + " --point 200 6 20 --json").out);
+    EXPECT_FALSE(beside["clipping"]["behind_eye"].get<bool>());
+    EXPECT_EQ(beside["clipping"]["outside_planes"], Json::parse(R"(["right"])"));
+}
+
+} // namespace

@@ -9,6 +9,7 @@
 #include <string>
 #include <vector>
 
+#include "viewpipe/effects.hpp"
 #include "viewpipe/pipeline.hpp"
 
 namespace viewpipe {
@@ -27,6 +28,7 @@ struct Scene {
     std::string name;
     CameraSpec<double> camera;
     std::vector<SceneObject> objects;
+    EffectList effects;
     std::filesystem::path file; // where it was loaded from; empty for a scene made in memory
 };
 

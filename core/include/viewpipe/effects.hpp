@@ -1,0 +1,103 @@
+#pragma once
+
+// Scene effects: what happens after the normalizing transformation, computed
+// only when a scene asks for it. Each effect is a function of the pipeline and
+// the scene's geometry; `effectRuns` counts the calls so that tests can show
+// that an effect nobody asked for never ran.
+
+#include <array>
+#include <atomic>
+#include <map>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "viewpipe/geometry.hpp"
+#include "viewpipe/pipeline.hpp"
+
+namespace viewpipe {
+
+// The effects a scene lists, in its order, with their parameters.
+struct EffectList {
+    bool clip = false;   // clip segments and polygons against the view volume, homogeneously
+    bool divide = false; // append Foley's M (OpenGL: the divide into NDC) as a stage
+    bool cull = false;   // back faces in canonical space
+    std::vector<std::string> names; // as listed
+    bool empty() const { return names.empty(); }
+};
+
+// Calls of each effect's code since the start of the process (for tests).
+std::map<std::string, long> effectRuns();
+
+void countEffectRun(const std::string& effect);
+
+// The pipeline with the effects' stages: with "divide", Foley's M is appended
+// to a perspective view (symbol "M"), and an OpenGL camera gains "divide"
+// (the identity: the picture is divided by w at every stage already).
+template <class T> Pipeline<T> withEffectStages(Pipeline<T> p, const EffectList& effects)
+{
+    if (!effects.divide)
+        return p;
+    countEffectRun("divide");
+    if (p.convention == Convention::Foley && p.projection == "perspective") {
+        p.stages.push_back({"M",
+                            "map the canonical perspective volume onto the canonical parallel volume (the divide "
+                            "by w = -z follows)",
+                            p.toClip});
+        p.composite = p.toClip * p.composite;
+        p.toClip = Mat4<T>::Identity();
+    } else if (p.convention == Convention::OpenGL) {
+        p.stages.push_back(
+            {"divide", "divide by w: clip coordinates become normalized device coordinates", Mat4<T>::Identity()});
+    }
+    return p;
+}
+
+inline Pipeline<double> buildPipeline(const CameraSpec<double>& camera, const EffectList& effects)
+{
+    return withEffectStages(buildPipeline(camera), effects);
+}
+
+// Which side of each clipping plane a homogeneous point lies on: bit k set
+// when plane k (left, right, bottom, top, near, far) is violated.
+enum ClipPlane { Left = 1, Right = 2, Bottom = 4, Top = 8, Near = 16, Far = 32 };
+unsigned outcode(const Vec4<double>& clip, ClipVolume volume);
+std::vector<std::string> planeNames(unsigned code, Convention convention);
+
+// Liang-Barsky in homogeneous coordinates: the parameter interval [t0, t1] of
+// the segment a + t (b - a), t in [0, 1], inside the volume; empty if none.
+// Works before the divide, so a segment crossing w = 0 is handled exactly.
+std::optional<std::array<double, 2>> clipSegment(const Vec4<double>& a, const Vec4<double>& b, ClipVolume volume);
+
+// Sutherland-Hodgman against the six planes, in homogeneous coordinates.
+std::vector<Vec4<double>> clipPolygon(const std::vector<Vec4<double>>& polygon, ClipVolume volume);
+
+struct ClipCounts {
+    int inside = 0, clipped = 0, outside = 0;
+};
+
+struct ClipOutcome {
+    ClipCounts segments, polygons;
+    // Per object, per edge (in the order of meshEdges... see clipScene): the kept interval.
+    std::vector<std::vector<std::optional<std::array<double, 2>>>> keptEdges;
+};
+
+struct CullOutcome {
+    int faces = 0, culled = 0;
+    std::vector<std::vector<bool>> culledFaces; // per object, per face
+};
+
+struct EffectOutcomes {
+    std::optional<ClipOutcome> clip;
+    std::optional<CullOutcome> cull;
+};
+
+// The scene's built-in objects as polygon meshes (meshes from files are the
+// caller's: core reads no files).
+EffectOutcomes runEffects(const Pipeline<double>& pipeline, const std::vector<PolygonMesh>& objects,
+                          const EffectList& effects);
+
+// Every edge of a mesh once, as vertex index pairs in first-seen order.
+std::vector<std::array<int, 2>> meshEdgeIndices(const PolygonMesh& mesh);
+
+} // namespace viewpipe

@@ -1,0 +1,191 @@
+// Effects computed only when a scene lists them: homogeneous clipping,
+// Foley's M as a stage, back-face culling.
+
+#include "support.hpp"
+#include "viewpipe/effects.hpp"
+#include "viewpipe/scene.hpp"
+
+namespace viewpipe {
+namespace {
+
+Pipeline<double> house()
+{
+    return buildPipeline(
+        foley::ViewSpec<double>{foley::Projection::Perspective, {0, 0, 0}, {0, 0, 1}, {0, 1, 0}, {8, 6, 84}, {-50, 50, -50, 50}, 60, 25});
+}
+
+// In the OpenGL clip volume, by hand: the segment from (0, 0, 0, 1) to
+// (4, 0, 0, 1) leaves through x = w at t = 1/4 (Liang-Barsky: boundary
+// w - x goes from 1 to -3, crossing zero at 1/4).
+TEST(Clip, LiangBarskyByHand)
+{
+    const auto t = clipSegment({0, 0, 0, 1}, {4, 0, 0, 1}, ClipVolume::OpenGL);
+    ASSERT_TRUE(t);
+    EXPECT_DOUBLE_EQ((*t)[0], 0);
+    EXPECT_DOUBLE_EQ((*t)[1], 0.25);
+    // Entering through x = -w at t = 1/4 and leaving through y = w at t = 3/4:
+    // from (-2, -2, 0, 1) to (2, 2, 0, 1) ... the square corners: boundaries
+    // w + x: -1 -> 3 (t = 1/4), w - y: 3 -> -1 (t = 3/4).
+    const auto u = clipSegment({-2, -2, 0, 1}, {2, 2, 0, 1}, ClipVolume::OpenGL);
+    ASSERT_TRUE(u);
+    EXPECT_DOUBLE_EQ((*u)[0], 0.25);
+    EXPECT_DOUBLE_EQ((*u)[1], 0.75);
+    EXPECT_FALSE(clipSegment({2, 0, 0, 1}, {3, 5, 0, 1}, ClipVolume::OpenGL)); // both beyond x = w
+}
+
+TEST(Clip, IsSymmetric)
+{
+    test::SpecGenerator random(11);
+    for (int i = 0; i < 2000; ++i) {
+        const Vec4<double> a(random.uniform(-3, 3), random.uniform(-3, 3), random.uniform(-3, 3), random.uniform(-1, 3));
+        const Vec4<double> b(random.uniform(-3, 3), random.uniform(-3, 3), random.uniform(-3, 3), random.uniform(-1, 3));
+        for (ClipVolume v : {ClipVolume::OpenGL, ClipVolume::FoleyParallel}) {
+            const auto ab = clipSegment(a, b, v), ba = clipSegment(b, a, v);
+            ASSERT_EQ(ab.has_value(), ba.has_value());
+            if (ab) {
+                EXPECT_NEAR((*ab)[0], 1 - (*ba)[1], 1e-12);
+                EXPECT_NEAR((*ab)[1], 1 - (*ba)[0], 1e-12);
+            }
+        }
+    }
+}
+
+// A segment from a point in the volume to one behind the eye crosses w = 0;
+// clipped in homogeneous coordinates, what is kept has w > 0 and is inside,
+// where dividing first would have thrown the far end to the other side.
+TEST(Clip, SegmentCrossingTheEyePlane)
+{
+    const Vec4<double> inside(0.2, 0.1, 0.5, 1), behind(0.4, 0.2, 1.0, -1);
+    const auto t = clipSegment(inside, behind, ClipVolume::OpenGL);
+    ASSERT_TRUE(t);
+    EXPECT_DOUBLE_EQ((*t)[0], 0);
+    EXPECT_LT((*t)[1], 0.5); // w = 1 - 2t reaches 0 at t = 1/2
+    const Vec4<double> end = inside + (*t)[1] * (behind - inside);
+    EXPECT_GT(end.w(), 0);
+    EXPECT_TRUE(insideClipVolume(Vec4<double>(end * (1 - 1e-12) + inside * 1e-12), ClipVolume::OpenGL));
+    // A point behind the eye is outside without dividing, whatever x/w, y/w say.
+    EXPECT_NE(outcode({0.1, 0.1, 0.5, -1}, ClipVolume::OpenGL), 0u);
+}
+
+// Sutherland-Hodgman by hand: the square [-2, 2]^2 (z = 0, w = 1) cut to the
+// NDC square [-1, 1]^2.
+TEST(Clip, SutherlandHodgmanByHand)
+{
+    const std::vector<Vec4<double>> square = {{-2, -2, 0, 1}, {2, -2, 0, 1}, {2, 2, 0, 1}, {-2, 2, 0, 1}};
+    const std::vector<Vec4<double>> out = clipPolygon(square, ClipVolume::OpenGL);
+    ASSERT_EQ(out.size(), 4u);
+    for (const Vec4<double>& p : out) {
+        EXPECT_DOUBLE_EQ(std::abs(p.x()), 1);
+        EXPECT_DOUBLE_EQ(std::abs(p.y()), 1);
+    }
+    // A triangle with one corner outside x = w becomes a quadrilateral.
+    const std::vector<Vec4<double>> triangle = {{0, 0, 0, 1}, {3, 0, 0, 1}, {0, 0.5, 0, 1}};
+    EXPECT_EQ(clipPolygon(triangle, ClipVolume::OpenGL).size(), 4u);
+}
+
+TEST(Effects, DivideAppendsFoleysM)
+{
+    EffectList effects;
+    effects.divide = true;
+    effects.names = {"divide"};
+    const Pipeline<double> plain = house();
+    const Pipeline<double> p = withEffectStages(plain, effects);
+    ASSERT_EQ(p.stages.size(), 6u);
+    EXPECT_EQ(p.stages[4].symbol, "S_per");
+    EXPECT_EQ(p.stages[5].symbol, "M");
+    EXPECT_TRUE(p.stages[5].matrix.isApprox(plain.toClip));
+    EXPECT_TRUE(p.composite.isApprox(plain.toClip * plain.composite));
+    EXPECT_TRUE(p.toClip.isIdentity());
+    // The house vertex (16, 10, 54) lands where trace says, either way.
+    EXPECT_TRUE(tracePoint(p, {16, 10, 54}).divided->isApprox(*tracePoint(plain, {16, 10, 54}).divided));
+}
+
+TEST(Effects, OnlyRequestedEffectsRun)
+{
+    const Pipeline<double> p = house();
+    const std::vector<PolygonMesh> objects = {houseMesh()};
+    const auto before = effectRuns();
+    auto runs = [&](const char* name) {
+        const auto now = effectRuns();
+        const auto b = before.count(name) ? before.at(name) : 0;
+        return (now.count(name) ? now.at(name) : 0) - b;
+    };
+    EffectOutcomes none = runEffects(p, objects, EffectList{});
+    EXPECT_FALSE(none.clip);
+    EXPECT_FALSE(none.cull);
+    EXPECT_EQ(runs("clip"), 0);
+    EXPECT_EQ(runs("cull"), 0);
+    EffectList clipOnly;
+    clipOnly.clip = true;
+    clipOnly.names = {"clip"};
+    EffectOutcomes clipped = runEffects(p, objects, clipOnly);
+    EXPECT_TRUE(clipped.clip);
+    EXPECT_EQ(runs("clip"), 1);
+    EXPECT_EQ(runs("cull"), 0);
+    EXPECT_EQ(runs("divide"), 0);
+}
+
+// The house lies inside the default view volume: nothing is clipped. Moving
+// the front plane to n = 40 cuts the house (which spans n = 30 to 54).
+TEST(Effects, ClipCountsForTheHouse)
+{
+    EffectList clip;
+    clip.clip = true;
+    clip.names = {"clip"};
+    const std::vector<PolygonMesh> objects = {houseMesh()};
+    const EffectOutcomes all = runEffects(house(), objects, clip);
+    EXPECT_EQ(all.clip->segments.inside, 15);
+    EXPECT_EQ(all.clip->segments.clipped + all.clip->segments.outside, 0);
+    EXPECT_EQ(all.clip->polygons.inside, 7);
+    const Pipeline<double> cut = buildPipeline(
+        foley::ViewSpec<double>{foley::Projection::Perspective, {0, 0, 0}, {0, 0, 1}, {0, 1, 0}, {8, 6, 84}, {-50, 50, -50, 50}, 40, 25});
+    const EffectOutcomes part = runEffects(cut, objects, clip);
+    EXPECT_EQ(part.clip->segments.inside, 5);   // the back wall (z = 30)
+    EXPECT_EQ(part.clip->segments.clipped, 5);  // the five edges from z = 30 to z = 54
+    EXPECT_EQ(part.clip->segments.outside, 5);  // the front wall (z = 54)
+    EXPECT_EQ(part.clip->polygons.outside, 1);  // the front wall
+    EXPECT_EQ(part.clip->polygons.clipped, 5);  // the sides
+    EXPECT_EQ(part.clip->polygons.inside, 1);   // the back wall
+}
+
+// Seen from the PRP (8, 6, 84) in front of the house, the front wall faces
+// the viewer and the back wall does not; of the five sides, the viewer at
+// x = 8, y = 6 sees the ones whose outward normals point toward it.
+TEST(Effects, CullBackFaces)
+{
+    EffectList cull;
+    cull.cull = true;
+    cull.names = {"cull"};
+    const EffectOutcomes o = runEffects(house(), {houseMesh()}, cull);
+    ASSERT_TRUE(o.cull);
+    EXPECT_EQ(o.cull->faces, 7);
+    const std::vector<bool>& culled = o.cull->culledFaces[0];
+    EXPECT_FALSE(culled[0]); // front wall, normal +z toward the viewer
+    EXPECT_TRUE(culled[1]);  // back wall
+    EXPECT_TRUE(culled[2]);  // floor (y = 0, normal -y; the eye is above it at y = 6)
+    // From x = 8, between them, the walls x = 16 (normal +x) and x = 0
+    // (normal -x) both face away.
+    EXPECT_TRUE(culled[3]); // right wall x = 16
+    EXPECT_TRUE(culled[6]); // left wall x = 0
+}
+
+TEST(Effects, SceneListsAndRefuses)
+{
+    const std::string view = R"("view": {"projection": "perspective", "vrp": [0, 0, 0], "vpn": [0, 0, 1],
+        "vup": [0, 1, 0], "prp": [8, 6, 84], "window": [-50, 50, -50, 50], "front": 60, "back": 25})";
+    const Scene s = parseScene("{" + view + R"(, "effects": ["clip", {"divide": {}}, "cull"]})", ".");
+    EXPECT_TRUE(s.effects.clip && s.effects.divide && s.effects.cull);
+    EXPECT_EQ(s.effects.names, (std::vector<std::string>{"clip", "divide", "cull"}));
+    EXPECT_NE(sceneToJson(s).find("\"clip\""), std::string::npos);
+    auto refused = [&](const std::string& effects, const std::string& field, const std::string& reason) {
+        test::expectRefused([&] { parseScene("{" + view + ", \"effects\": " + effects + "}", "."); }, field, reason);
+    };
+    refused(R"(["glow"])", "effects[0]", "unknown effect \"glow\"");
+    refused(R"(["clip", "clip"])", "effects[1]", "listed twice");
+    refused(R"([{"clip": {"planes": 4}}])", "effects[0].clip.planes", "unknown parameter");
+    refused(R"([{"depth": {"bits": 16}}])", "effects[0]", "not available yet");
+    refused(R"([3])", "effects[0]", "effect name");
+}
+
+} // namespace
+} // namespace viewpipe
