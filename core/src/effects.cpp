@@ -1,6 +1,7 @@
 #include "viewpipe/effects.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <mutex>
 
 namespace viewpipe {
@@ -107,6 +108,146 @@ std::vector<std::array<int, 2>> meshEdgeIndices(const PolygonMesh& mesh)
     return edges;
 }
 
+double windowDepth(const Vec4<double>& clip, ClipVolume volume)
+{
+    const double z = clip.z() / clip.w();
+    return volume == ClipVolume::FoleyParallel ? -z : (z + 1) / 2;
+}
+
+double storedDepth(double depth, const DepthOptions& options)
+{
+    const double d = options.reversed ? 1 - depth : depth;
+    if (options.floating)
+        return double(float(d));
+    const double levels = std::ldexp(1.0, options.bits) - 1;
+    return std::nearbyint(std::clamp(d, 0.0, 1.0) * levels);
+}
+
+namespace {
+
+// The center line of the view volume in world coordinates, from the near
+// (front) face to the far (back) face: where the picture's center (0, 0) lies
+// at each depth.
+std::array<Vec3<double>, 2> centerLine(const Pipeline<double>& p)
+{
+    const Mat4<double> inverse = (p.toClip * p.composite).inverse();
+    const bool foley = p.clipVolume == ClipVolume::FoleyParallel;
+    auto world = [&inverse](double z) {
+        const Vec4<double> h = inverse * Vec4<double>(0, 0, z, 1);
+        return Vec3<double>(h.head<3>() / h.w());
+    };
+    return {world(foley ? 0 : -1), world(foley ? -1 : 1)};
+}
+
+DepthOutcome depthOutcome(const Pipeline<double>& p, const std::vector<PolygonMesh>& objects, const DepthOptions& options)
+{
+    const Mat4<double> clip = p.toClip * p.composite;
+    auto stored = [&](const Vec3<double>& world) {
+        return storedDepth(windowDepth(clip * world.homogeneous(), p.clipVolume), options);
+    };
+    DepthOutcome out;
+    out.options = options;
+    // Resolution along the center line, at 9 distances from the near face.
+    const auto [nearPoint, farPoint] = centerLine(p);
+    const double length = (farPoint - nearPoint).norm();
+    const Vec3<double> direction = (farPoint - nearPoint) / length;
+    // The next place after `from` (within `limit`) where the stored value changes.
+    auto nextChange = [&](double from, double limit) -> std::optional<double> {
+        const double value = stored(nearPoint + from * direction);
+        if (stored(nearPoint + limit * direction) == value)
+            return std::nullopt;
+        double lo = from, hi = limit;
+        for (int i = 0; i < 100 && hi - lo > 0; ++i) {
+            const double mid = (lo + hi) / 2;
+            if (mid == lo || mid == hi)
+                break;
+            (stored(nearPoint + mid * direction) == value ? lo : hi) = mid;
+        }
+        return hi;
+    };
+    for (int k = 0; k <= 8; ++k) {
+        const double s = length * k / 8.0 * 0.99;
+        // The width of the stored level that follows s: what the buffer can tell apart there.
+        const std::optional<double> first = nextChange(s, length);
+        const std::optional<double> second = first ? nextChange(*first, length) : std::nullopt;
+        out.resolution.push_back({s, second ? *second - *first : length - s});
+    }
+    // Distinct stored values among the vertices inside the volume.
+    std::vector<double> values;
+    for (const PolygonMesh& mesh : objects)
+        for (const Vec3<double>& v : mesh.vertices) {
+            const Vec4<double> h = clip * v.homogeneous();
+            if (!insideClipVolume(h, p.clipVolume))
+                continue;
+            ++out.vertices;
+            values.push_back(stored(v));
+        }
+    std::sort(values.begin(), values.end());
+    out.distinctValues = int(std::unique(values.begin(), values.end()) - values.begin());
+
+    // Z-fighting: sample each face (its centroid and points between it and the
+    // corners); where another face covers the same picture point, compare the
+    // two depths: different, but stored alike, is a fight.
+    struct Face {
+        int object, index;
+        std::vector<Vec3<double>> picture; // x, y, window depth
+    };
+    std::vector<Face> faces;
+    for (std::size_t o = 0; o < objects.size(); ++o)
+        for (std::size_t f = 0; f < objects[o].faces.size(); ++f) {
+            Face face{int(o), int(f), {}};
+            bool visible = true;
+            for (int i : objects[o].faces[f]) {
+                const Vec4<double> h = clip * objects[o].vertices[std::size_t(i)].homogeneous();
+                visible = visible && insideClipVolume(h, p.clipVolume);
+                face.picture.emplace_back(h.x() / h.w(), h.y() / h.w(), windowDepth(h, p.clipVolume));
+            }
+            if (visible && face.picture.size() >= 3)
+                faces.push_back(face);
+        }
+    auto depthAt = [](const Face& face, const Vec2<double>& q) -> std::optional<double> {
+        // Inside the (convex) projected face, and the depth of its plane there.
+        const auto& v = face.picture;
+        double sign = 0;
+        for (std::size_t k = 0; k < v.size(); ++k) {
+            const Vec2<double> a = v[k].head<2>(), b = v[(k + 1) % v.size()].head<2>();
+            const double cross = (b - a).x() * (q - a).y() - (b - a).y() * (q - a).x();
+            if (cross * sign < 0)
+                return std::nullopt;
+            if (cross != 0)
+                sign = cross;
+        }
+        const Vec3<double> n = (v[1] - v[0]).cross(v[2] - v[0]);
+        if (std::abs(n.z()) < 1e-300)
+            return std::nullopt; // seen edge-on
+        return v[0].z() - (n.x() * (q.x() - v[0].x()) + n.y() * (q.y() - v[0].y())) / n.z();
+    };
+    for (std::size_t a = 0; a < faces.size(); ++a) {
+        Vec3<double> centroid = Vec3<double>::Zero();
+        for (const Vec3<double>& q : faces[a].picture)
+            centroid += q / double(faces[a].picture.size());
+        std::vector<Vec3<double>> samples = {centroid};
+        for (const Vec3<double>& q : faces[a].picture)
+            samples.push_back(centroid + 0.8 * (q - centroid));
+        for (std::size_t b = a + 1; b < faces.size(); ++b) {
+            if (faces[a].object == faces[b].object)
+                continue; // an object's own faces meet only at edges
+            for (const Vec3<double>& sample : samples) {
+                const std::optional<double> other = depthAt(faces[b], sample.head<2>());
+                if (!other || *other == sample.z())
+                    continue;
+                if (storedDepth(*other, options) == storedDepth(sample.z(), options)) {
+                    out.zFighting.push_back({faces[a].object, faces[a].index, faces[b].object, faces[b].index});
+                    break;
+                }
+            }
+        }
+    }
+    return out;
+}
+
+} // namespace
+
 EffectOutcomes runEffects(const Pipeline<double>& pipeline, const std::vector<PolygonMesh>& objects,
                           const EffectList& effects)
 {
@@ -147,6 +288,10 @@ EffectOutcomes runEffects(const Pipeline<double>& pipeline, const std::vector<Po
             }
         }
         outcomes.clip = c;
+    }
+    if (effects.depth) {
+        countEffectRun("depth");
+        outcomes.depth = depthOutcome(pipeline, objects, *effects.depth);
     }
     if (effects.cull) {
         countEffectRun("cull");

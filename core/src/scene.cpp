@@ -220,19 +220,49 @@ void readEffect(const Json& j, const std::string& path, EffectList& effects)
     } else {
         throw InputError(path, "must be an effect name or {\"name\": {parameters}}");
     }
-    static const std::set<std::string> known = {"clip", "divide", "cull"};
-    static const std::set<std::string> later = {"depth", "raster"};
-    if (later.count(name))
-        throw InputError(path, "effect \"" + name + "\" is not available yet (available: clip, divide, cull)");
+    static const std::set<std::string> known = {"clip", "divide", "cull", "depth"};
+    if (name == "raster")
+        throw InputError(path, "effect \"raster\" is not available yet (available: clip, divide, cull, depth)");
     if (!known.count(name))
-        throw InputError(path, "unknown effect \"" + name + "\" (available: clip, divide, cull)");
+        throw InputError(path, "unknown effect \"" + name + "\" (available: clip, divide, cull, depth)");
     if (std::find(effects.names.begin(), effects.names.end(), name) != effects.names.end())
         throw InputError(path, "effect \"" + name + "\" is listed twice");
-    if (parameters) {
-        if (!parameters->is_object())
-            throw InputError(path + "." + name, "parameters must be an object (got " + typeName(*parameters) + ")");
-        for (const auto& item : parameters->items()) // none of these effects takes parameters
-            throw InputError(path + "." + name + "." + item.key(), "unknown parameter (\"" + name + "\" takes none)");
+    const std::string where = path + "." + name;
+    if (parameters && !parameters->is_object())
+        throw InputError(where, "parameters must be an object (got " + typeName(*parameters) + ")");
+    const std::set<std::string> accepted =
+        name == "depth" ? std::set<std::string>{"bits", "format", "reversed"} : std::set<std::string>{};
+    if (parameters)
+        for (const auto& item : parameters->items())
+            if (!accepted.count(item.key()))
+                throw InputError(where + "." + item.key(), accepted.empty() ? "unknown parameter (\"" + name + "\" takes none)"
+                                                                            : "unknown parameter (bits, format, reversed)");
+    if (name == "depth") {
+        DepthOptions depth;
+        if (parameters && parameters->contains("format")) {
+            const std::string format = readString((*parameters)["format"], where + ".format");
+            if (format != "unorm" && format != "float")
+                throw InputError(where + ".format", "must be \"unorm\" or \"float\" (got \"" + format + "\")");
+            depth.floating = format == "float";
+        }
+        if (parameters && parameters->contains("bits")) {
+            const Json& bits = (*parameters)["bits"];
+            if (!bits.is_number_integer())
+                throw InputError(where + ".bits", "must be 16, 24 or 32");
+            depth.bits = bits.get<int>();
+        } else if (depth.floating) {
+            depth.bits = 32;
+        }
+        if (depth.bits != 16 && depth.bits != 24 && depth.bits != 32)
+            throw InputError(where + ".bits", "must be 16, 24 or 32 (got " + std::to_string(depth.bits) + ")");
+        if (depth.floating && depth.bits != 32)
+            throw InputError(where + ".bits", "a float depth buffer has 32 bits");
+        if (parameters && parameters->contains("reversed")) {
+            if (!(*parameters)["reversed"].is_boolean())
+                throw InputError(where + ".reversed", "must be true or false");
+            depth.reversed = (*parameters)["reversed"].get<bool>();
+        }
+        effects.depth = depth;
     }
     effects.names.push_back(name);
     effects.clip = effects.clip || name == "clip";
@@ -354,7 +384,16 @@ std::string sceneToJson(const Scene& scene)
         }
     }
     root["objects"] = objects;
-    root["effects"] = scene.effects.names;
+    Json effects = Json::array();
+    for (const std::string& name : scene.effects.names) {
+        if (name == "depth" && scene.effects.depth) {
+            const DepthOptions& d = *scene.effects.depth;
+            effects.push_back({{"depth", {{"bits", d.bits}, {"format", d.floating ? "float" : "unorm"}, {"reversed", d.reversed}}}});
+        } else {
+            effects.push_back(name);
+        }
+    }
+    root["effects"] = effects;
     return root.dump(2) + "\n";
 }
 

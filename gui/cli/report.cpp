@@ -118,6 +118,22 @@ Json effectsJson(const Scene& scene, const std::vector<PolygonMesh>& objects)
     }
     if (outcomes.cull)
         out["cull"] = {{"faces", outcomes.cull->faces}, {"culled", outcomes.cull->culled}};
+    if (outcomes.depth) {
+        const DepthOutcome& d = *outcomes.depth;
+        Json resolution = Json::array();
+        for (const DepthSample& s : d.resolution)
+            resolution.push_back({{"distance", s.distance}, {"step", s.step}});
+        Json fights = Json::array();
+        for (const auto& f : d.zFighting)
+            fights.push_back({{"object", f[0]}, {"face", f[1]}, {"with_object", f[2]}, {"with_face", f[3]}});
+        out["depth"] = {{"bits", d.options.bits},
+                        {"format", d.options.floating ? "float" : "unorm"},
+                        {"reversed", d.options.reversed},
+                        {"resolution", resolution},
+                        {"vertices", d.vertices},
+                        {"distinct_values", d.distinctValues},
+                        {"z_fighting", fights}};
+    }
     return out;
 }
 

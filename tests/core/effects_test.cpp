@@ -183,8 +183,78 @@ TEST(Effects, SceneListsAndRefuses)
     refused(R"(["glow"])", "effects[0]", "unknown effect \"glow\"");
     refused(R"(["clip", "clip"])", "effects[1]", "listed twice");
     refused(R"([{"clip": {"planes": 4}}])", "effects[0].clip.planes", "unknown parameter");
-    refused(R"([{"depth": {"bits": 16}}])", "effects[0]", "not available yet");
+    refused(R"([{"raster": {}}])", "effects[0]", "not available yet");
+    refused(R"([{"depth": {"bits": 20}}])", "effects[0].depth.bits", "must be 16, 24 or 32");
+    refused(R"([{"depth": {"format": "float", "bits": 16}}])", "effects[0].depth.bits", "float depth buffer has 32 bits");
+    refused(R"([{"depth": {"format": "half"}}])", "effects[0].depth.format", "\"unorm\" or \"float\"");
+    refused(R"([{"depth": {"reversed": 1}}])", "effects[0].depth.reversed", "true or false");
+    const Scene depth = parseScene("{" + view + R"(, "effects": [{"depth": {"format": "float", "reversed": true}}]})", ".");
+    EXPECT_EQ(depth.effects.depth->bits, 32);
+    EXPECT_TRUE(depth.effects.depth->floating && depth.effects.depth->reversed);
     refused(R"([3])", "effects[0]", "effect name");
+}
+
+} // namespace
+} // namespace viewpipe
+
+namespace viewpipe {
+namespace {
+
+// The depth-resolution formula against measured quantization: for
+// gluPerspective, window depth d(s) = f (s - n) / ((f - n) s) at eye distance
+// s, so one level of a b-bit buffer spans ds = (f - n) s^2 / (f n (2^b - 1)).
+TEST(Depth, ResolutionFollowsTheFormula)
+{
+    const double n = 1, f = 1000;
+    const gl::Camera<double> camera{{{0, 0, 0}, {0, 0, -1}, {0, 1, 0}}, gl::Perspective<double>{60, 1, n, f}};
+    const Pipeline<double> p = buildPipeline(camera);
+    for (int bits : {16, 24}) {
+        EffectList effects;
+        effects.depth = DepthOptions{bits, false, false};
+        effects.names = {"depth"};
+        const DepthOutcome d = *runEffects(p, {}, effects).depth;
+        ASSERT_EQ(d.resolution.size(), 9u);
+        for (const DepthSample& sample : d.resolution) {
+            const double s = n + sample.distance;
+            const double formula = (f - n) * s * s / (f * n * (std::ldexp(1.0, bits) - 1));
+            if (formula > 0.5 * (f - s))
+                continue; // the level runs past the far plane
+            // First order in the level's width: a level of width ds changes s^2 by about 2 ds / s.
+            EXPECT_NEAR(sample.step / formula, 1, 0.01 + 3 * formula / s) << bits << " bits at " << s;
+        }
+    }
+    // A 32-bit float buffer, reversed, resolves the far range far better than 24-bit fixed point.
+    EffectList fixed, reversed;
+    fixed.depth = DepthOptions{24, false, false};
+    reversed.depth = DepthOptions{32, true, true};
+    const double fixedStep = runEffects(p, {}, fixed).depth->resolution[7].step;
+    const double floatStep = runEffects(p, {}, reversed).depth->resolution[7].step;
+    EXPECT_LT(floatStep, fixedStep / 100);
+}
+
+// Two walls 1 mm apart, 300 units away: a 16-bit buffer cannot order them; a
+// reversed 32-bit float buffer can.
+TEST(Depth, FlagsZFighting)
+{
+    const gl::Camera<double> camera{{{0, 0, 0}, {0, 0, -1}, {0, 1, 0}}, gl::Perspective<double>{60, 1, 0.1, 1000}};
+    const Pipeline<double> p = buildPipeline(camera);
+    const std::vector<PolygonMesh> walls = {boxMesh({-50, -50, -301}, {50, 50, -300}),
+                                            boxMesh({-20, -20, -300.001}, {20, 20, -299.001})};
+    EffectList effects;
+    effects.depth = DepthOptions{16, false, false};
+    EXPECT_FALSE(runEffects(p, walls, effects).depth->zFighting.empty());
+    effects.depth = DepthOptions{32, true, true};
+    EXPECT_TRUE(runEffects(p, walls, effects).depth->zFighting.empty());
+}
+
+TEST(Depth, StoredValues)
+{
+    EXPECT_EQ(storedDepth(0.5, {16, false, false}), std::nearbyint(0.5 * 65535));
+    EXPECT_EQ(storedDepth(0.25, {16, false, true}), std::nearbyint(0.75 * 65535));
+    EXPECT_EQ(storedDepth(1.0 / 3, {32, true, false}), double(float(1.0 / 3)));
+    EXPECT_EQ(windowDepth({0, 0, -1, 1}, ClipVolume::OpenGL), 0);   // near
+    EXPECT_EQ(windowDepth({0, 0, 0, 1}, ClipVolume::FoleyParallel), 0); // Foley's front
+    EXPECT_EQ(windowDepth({0, 0, -2, 2}, ClipVolume::FoleyParallel), 1); // Foley's back
 }
 
 } // namespace

@@ -17,11 +17,20 @@
 
 namespace viewpipe {
 
+// The depth buffer: fixed point with `bits` bits (16, 24, 32) or 32-bit
+// float, standard (near 0, far 1) or reversed (near 1, far 0).
+struct DepthOptions {
+    int bits = 24;
+    bool floating = false;
+    bool reversed = false;
+};
+
 // The effects a scene lists, in its order, with their parameters.
 struct EffectList {
     bool clip = false;   // clip segments and polygons against the view volume, homogeneously
     bool divide = false; // append Foley's M (OpenGL: the divide into NDC) as a stage
     bool cull = false;   // back faces in canonical space
+    std::optional<DepthOptions> depth;
     std::vector<std::string> names; // as listed
     bool empty() const { return names.empty(); }
 };
@@ -87,9 +96,30 @@ struct CullOutcome {
     std::vector<std::vector<bool>> culledFaces; // per object, per face
 };
 
+// Window depth in [0, 1] of a point in clip coordinates (after the divide;
+// near 0, far 1), and the value a depth buffer stores for it.
+double windowDepth(const Vec4<double>& clip, ClipVolume volume);
+double storedDepth(double depth, const DepthOptions& options);
+
+struct DepthSample {
+    double distance; // from the eye (OpenGL) or the PRP (Foley), along the view direction
+    double step;     // the smallest change of distance there that changes the stored value
+};
+
+struct DepthOutcome {
+    DepthOptions options;
+    std::vector<DepthSample> resolution; // from near to far
+    int distinctValues = 0;              // among the scene's vertices
+    int vertices = 0;
+    // Faces whose order the buffer cannot resolve somewhere they overlap:
+    // (object, face) pairs, found by sampling.
+    std::vector<std::array<int, 4>> zFighting;
+};
+
 struct EffectOutcomes {
     std::optional<ClipOutcome> clip;
     std::optional<CullOutcome> cull;
+    std::optional<DepthOutcome> depth;
 };
 
 // The scene's built-in objects as polygon meshes (meshes from files are the
