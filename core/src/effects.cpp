@@ -2,7 +2,9 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <mutex>
+#include <unordered_set>
 
 namespace viewpipe {
 namespace {
@@ -98,12 +100,13 @@ std::vector<Vec4<double>> clipPolygon(const std::vector<Vec4<double>>& polygon, 
 std::vector<std::array<int, 2>> meshEdgeIndices(const PolygonMesh& mesh)
 {
     std::vector<std::array<int, 2>> edges;
+    std::unordered_set<std::uint64_t> seen;
     for (const std::vector<int>& face : mesh.faces)
         for (std::size_t k = 0; k < face.size(); ++k) {
             const int a = face[k], b = face[(k + 1) % face.size()];
-            const std::array<int, 2> key = {std::min(a, b), std::max(a, b)};
-            if (std::find(edges.begin(), edges.end(), key) == edges.end())
-                edges.push_back(key);
+            const std::uint64_t key = (std::uint64_t(std::uint32_t(std::min(a, b))) << 32) | std::uint32_t(std::max(a, b));
+            if (seen.insert(key).second)
+                edges.push_back({std::min(a, b), std::max(a, b)});
         }
     return edges;
 }
@@ -124,6 +127,8 @@ double storedDepth(double depth, const DepthOptions& options)
 }
 
 namespace {
+
+constexpr std::size_t kMaxFightFaces = 4000;
 
 // The center line of the view volume in world coordinates, from the near
 // (front) face to the far (back) face: where the picture's center (0, 0) lies
@@ -222,7 +227,10 @@ DepthOutcome depthOutcome(const Pipeline<double>& p, const std::vector<PolygonMe
             return std::nullopt; // seen edge-on
         return v[0].z() - (n.x() * (q.x() - v[0].x()) + n.y() * (q.y() - v[0].y())) / n.z();
     };
-    for (std::size_t a = 0; a < faces.size(); ++a) {
+    // Every pair is compared: beyond kMaxFightFaces faces that would take too
+    // long, and the check is skipped (zFightingChecked says so).
+    out.zFightingChecked = faces.size() <= kMaxFightFaces;
+    for (std::size_t a = 0; a < faces.size() && out.zFightingChecked; ++a) {
         Vec3<double> centroid = Vec3<double>::Zero();
         for (const Vec3<double>& q : faces[a].picture)
             centroid += q / double(faces[a].picture.size());
@@ -247,6 +255,66 @@ DepthOutcome depthOutcome(const Pipeline<double>& p, const std::vector<PolygonMe
 }
 
 } // namespace
+
+RasterOutcome rasterize(const Pipeline<double>& pipeline, const std::vector<PolygonMesh>& objects,
+                        const RasterOptions& options, const std::vector<std::vector<bool>>* culled)
+{
+    RasterOutcome out;
+    out.width = options.width;
+    out.height = options.height;
+    const std::size_t pixels = std::size_t(options.width) * std::size_t(options.height);
+    out.object.assign(pixels, -1);
+    out.face.assign(pixels, -1);
+    out.depth.assign(pixels, 1.0);
+    const Mat4<double> clip = pipeline.toClip * pipeline.composite;
+    for (std::size_t o = 0; o < objects.size(); ++o) {
+        const PolygonMesh& mesh = objects[o];
+        for (std::size_t f = 0; f < mesh.faces.size(); ++f) {
+            if (culled && (*culled)[o][f])
+                continue;
+            std::vector<Vec4<double>> polygon;
+            for (int i : mesh.faces[f])
+                polygon.push_back(clip * mesh.vertices[std::size_t(i)].homogeneous());
+            polygon = clipPolygon(polygon, pipeline.clipVolume);
+            // To pixels: x, y in [0, width] x [0, height], and window depth.
+            std::vector<Vec3<double>> screen;
+            for (const Vec4<double>& h : polygon)
+                screen.emplace_back((h.x() / h.w() + 1) / 2 * options.width, (h.y() / h.w() + 1) / 2 * options.height,
+                                    windowDepth(h, pipeline.clipVolume));
+            for (std::size_t k = 1; k + 1 < screen.size(); ++k) {
+                const Vec3<double>& a = screen[0];
+                const Vec3<double>& b = screen[k];
+                const Vec3<double>& c = screen[k + 1];
+                const double area = (b.x() - a.x()) * (c.y() - a.y()) - (b.y() - a.y()) * (c.x() - a.x());
+                if (area == 0)
+                    continue;
+                const int x0 = std::max(0, int(std::floor(std::min({a.x(), b.x(), c.x()}))));
+                const int x1 = std::min(options.width - 1, int(std::ceil(std::max({a.x(), b.x(), c.x()}))));
+                const int y0 = std::max(0, int(std::floor(std::min({a.y(), b.y(), c.y()}))));
+                const int y1 = std::min(options.height - 1, int(std::ceil(std::max({a.y(), b.y(), c.y()}))));
+                for (int y = y0; y <= y1; ++y)
+                    for (int x = x0; x <= x1; ++x) {
+                        // Barycentric weights of the pixel's center; depth is affine on the screen.
+                        const double px = x + 0.5, py = y + 0.5;
+                        const double wa = ((b.x() - px) * (c.y() - py) - (b.y() - py) * (c.x() - px)) / area;
+                        const double wb = ((c.x() - px) * (a.y() - py) - (c.y() - py) * (a.x() - px)) / area;
+                        const double wc = 1 - wa - wb;
+                        if (wa < 0 || wb < 0 || wc < 0)
+                            continue;
+                        const double z = wa * a.z() + wb * b.z() + wc * c.z();
+                        const std::size_t i = std::size_t(y) * std::size_t(options.width) + std::size_t(x);
+                        if (z < out.depth[i]) {
+                            out.depth[i] = z;
+                            out.object[i] = int(o);
+                            out.face[i] = int(f);
+                        }
+                    }
+            }
+        }
+    }
+    out.covered = int(std::count_if(out.object.begin(), out.object.end(), [](int o) { return o >= 0; }));
+    return out;
+}
 
 EffectOutcomes runEffects(const Pipeline<double>& pipeline, const std::vector<PolygonMesh>& objects,
                           const EffectList& effects)
@@ -318,6 +386,11 @@ EffectOutcomes runEffects(const Pipeline<double>& pipeline, const std::vector<Po
             c.culledFaces.push_back(culled);
         }
         outcomes.cull = c;
+    }
+    if (effects.raster) {
+        countEffectRun("raster");
+        outcomes.raster = rasterize(pipeline, objects, *effects.raster,
+                                    outcomes.cull ? &outcomes.cull->culledFaces : nullptr);
     }
     return outcomes;
 }

@@ -220,23 +220,24 @@ void readEffect(const Json& j, const std::string& path, EffectList& effects)
     } else {
         throw InputError(path, "must be an effect name or {\"name\": {parameters}}");
     }
-    static const std::set<std::string> known = {"clip", "divide", "cull", "depth"};
-    if (name == "raster")
-        throw InputError(path, "effect \"raster\" is not available yet (available: clip, divide, cull, depth)");
+    static const std::set<std::string> known = {"clip", "divide", "cull", "depth", "raster"};
     if (!known.count(name))
-        throw InputError(path, "unknown effect \"" + name + "\" (available: clip, divide, cull, depth)");
+        throw InputError(path, "unknown effect \"" + name + "\" (known: clip, divide, depth, raster, cull)");
     if (std::find(effects.names.begin(), effects.names.end(), name) != effects.names.end())
         throw InputError(path, "effect \"" + name + "\" is listed twice");
     const std::string where = path + "." + name;
     if (parameters && !parameters->is_object())
         throw InputError(where, "parameters must be an object (got " + typeName(*parameters) + ")");
-    const std::set<std::string> accepted =
-        name == "depth" ? std::set<std::string>{"bits", "format", "reversed"} : std::set<std::string>{};
+    const std::set<std::string> accepted = name == "depth"    ? std::set<std::string>{"bits", "format", "reversed"}
+                                           : name == "raster" ? std::set<std::string>{"width", "height"}
+                                                              : std::set<std::string>{};
     if (parameters)
         for (const auto& item : parameters->items())
             if (!accepted.count(item.key()))
-                throw InputError(where + "." + item.key(), accepted.empty() ? "unknown parameter (\"" + name + "\" takes none)"
-                                                                            : "unknown parameter (bits, format, reversed)");
+                throw InputError(where + "." + item.key(),
+                                 accepted.empty() ? "unknown parameter (\"" + name + "\" takes none)"
+                                 : name == "depth" ? "unknown parameter (bits, format, reversed)"
+                                                   : "unknown parameter (width, height)");
     if (name == "depth") {
         DepthOptions depth;
         if (parameters && parameters->contains("format")) {
@@ -263,6 +264,17 @@ void readEffect(const Json& j, const std::string& path, EffectList& effects)
             depth.reversed = (*parameters)["reversed"].get<bool>();
         }
         effects.depth = depth;
+    }
+    if (name == "raster") {
+        RasterOptions raster;
+        for (const char* key : {"width", "height"})
+            if (parameters && parameters->contains(key)) {
+                const Json& value = (*parameters)[key];
+                if (!value.is_number_integer() || value.get<long>() < 1 || value.get<long>() > 4096)
+                    throw InputError(where + "." + key, "must be a whole number of pixels from 1 to 4096");
+                (std::string(key) == "width" ? raster.width : raster.height) = value.get<int>();
+            }
+        effects.raster = raster;
     }
     effects.names.push_back(name);
     effects.clip = effects.clip || name == "clip";
@@ -389,6 +401,8 @@ std::string sceneToJson(const Scene& scene)
         if (name == "depth" && scene.effects.depth) {
             const DepthOptions& d = *scene.effects.depth;
             effects.push_back({{"depth", {{"bits", d.bits}, {"format", d.floating ? "float" : "unorm"}, {"reversed", d.reversed}}}});
+        } else if (name == "raster" && scene.effects.raster) {
+            effects.push_back({{"raster", {{"width", scene.effects.raster->width}, {"height", scene.effects.raster->height}}}});
         } else {
             effects.push_back(name);
         }

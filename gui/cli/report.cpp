@@ -6,6 +6,7 @@
 #include <limits>
 #include <sstream>
 #include <map>
+#include <set>
 #include <type_traits>
 
 #include "viewpipe/accuracy.hpp"
@@ -132,7 +133,16 @@ Json effectsJson(const Scene& scene, const std::vector<PolygonMesh>& objects)
                         {"resolution", resolution},
                         {"vertices", d.vertices},
                         {"distinct_values", d.distinctValues},
-                        {"z_fighting", fights}};
+                        {"z_fighting", d.zFightingChecked ? fights : Json(nullptr)}};
+    }
+    if (outcomes.raster) {
+        const RasterOutcome& r = *outcomes.raster;
+        std::set<std::pair<int, int>> faces;
+        for (std::size_t i = 0; i < r.object.size(); ++i)
+            if (r.object[i] >= 0)
+                faces.insert({r.object[i], r.face[i]});
+        out["raster"] = {{"width", r.width}, {"height", r.height}, {"covered_pixels", r.covered},
+                         {"visible_faces", faces.size()}};
     }
     return out;
 }

@@ -183,7 +183,8 @@ TEST(Effects, SceneListsAndRefuses)
     refused(R"(["glow"])", "effects[0]", "unknown effect \"glow\"");
     refused(R"(["clip", "clip"])", "effects[1]", "listed twice");
     refused(R"([{"clip": {"planes": 4}}])", "effects[0].clip.planes", "unknown parameter");
-    refused(R"([{"raster": {}}])", "effects[0]", "not available yet");
+    refused(R"([{"raster": {"width": 0}}])", "effects[0].raster.width", "1 to 4096");
+    refused(R"([{"raster": {"dpi": 2}}])", "effects[0].raster.dpi", "unknown parameter (width, height)");
     refused(R"([{"depth": {"bits": 20}}])", "effects[0].depth.bits", "must be 16, 24 or 32");
     refused(R"([{"depth": {"format": "float", "bits": 16}}])", "effects[0].depth.bits", "float depth buffer has 32 bits");
     refused(R"([{"depth": {"format": "half"}}])", "effects[0].depth.format", "\"unorm\" or \"float\"");
@@ -255,6 +256,30 @@ TEST(Depth, StoredValues)
     EXPECT_EQ(windowDepth({0, 0, -1, 1}, ClipVolume::OpenGL), 0);   // near
     EXPECT_EQ(windowDepth({0, 0, 0, 1}, ClipVolume::FoleyParallel), 0); // Foley's front
     EXPECT_EQ(windowDepth({0, 0, -2, 2}, ClipVolume::FoleyParallel), 1); // Foley's back
+}
+
+} // namespace
+} // namespace viewpipe
+
+namespace viewpipe {
+namespace {
+
+// A square covering x, y in [-0.5, 0.5] of NDC covers the middle half of a
+// 64 x 48 image in each direction: 32 x 24 pixels, by hand.
+TEST(Raster, SquareByHand)
+{
+    const gl::Camera<double> camera{{{0, 0, 0}, {0, 0, -1}, {0, 1, 0}}, gl::Ortho<double>{-2, 2, -2, 2, 0.5, 10}};
+    const Pipeline<double> p = buildPipeline(camera);
+    const PolygonMesh square{{{-1, -1, -5}, {1, -1, -5}, {1, 1, -5}, {-1, 1, -5}}, {{0, 1, 2, 3}}};
+    const RasterOutcome r = rasterize(p, {square}, {64, 48});
+    EXPECT_EQ(r.covered, 32 * 24);
+    EXPECT_EQ(r.object[std::size_t(24 * 64 + 32)], 0);  // the center
+    EXPECT_EQ(r.object[0], -1);                          // a corner
+    // A nearer square in front hides the first where they overlap.
+    const PolygonMesh front{{{0, 0, -2}, {3, 0, -2}, {3, 3, -2}, {0, 3, -2}}, {{0, 1, 2, 3}}};
+    const RasterOutcome both = rasterize(p, {square, front}, {64, 48});
+    EXPECT_EQ(both.object[std::size_t(36 * 64 + 40)], 1); // upper right: the front square
+    EXPECT_EQ(both.object[std::size_t(18 * 64 + 24)], 0); // lower left: the first square
 }
 
 } // namespace

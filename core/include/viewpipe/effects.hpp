@@ -25,12 +25,18 @@ struct DepthOptions {
     bool reversed = false;
 };
 
+// Rasterization at a teaching size: pixels of the final image.
+struct RasterOptions {
+    int width = 64, height = 48;
+};
+
 // The effects a scene lists, in its order, with their parameters.
 struct EffectList {
     bool clip = false;   // clip segments and polygons against the view volume, homogeneously
     bool divide = false; // append Foley's M (OpenGL: the divide into NDC) as a stage
     bool cull = false;   // back faces in canonical space
     std::optional<DepthOptions> depth;
+    std::optional<RasterOptions> raster;
     std::vector<std::string> names; // as listed
     bool empty() const { return names.empty(); }
 };
@@ -114,12 +120,27 @@ struct DepthOutcome {
     // Faces whose order the buffer cannot resolve somewhere they overlap:
     // (object, face) pairs, found by sampling.
     std::vector<std::array<int, 4>> zFighting;
+    bool zFightingChecked = true; // false for scenes with too many faces to compare pairwise
 };
+
+// The final image through a z-buffer: for each pixel (row 0 at the bottom),
+// the object and face seen there, or -1; faces are clipped homogeneously
+// first, and culled when "cull" is listed.
+struct RasterOutcome {
+    int width = 0, height = 0;
+    std::vector<int> object, face;
+    std::vector<double> depth; // window depth, 1 where nothing is drawn
+    int covered = 0;
+};
+
+RasterOutcome rasterize(const Pipeline<double>& pipeline, const std::vector<PolygonMesh>& objects,
+                        const RasterOptions& options, const std::vector<std::vector<bool>>* culled = nullptr);
 
 struct EffectOutcomes {
     std::optional<ClipOutcome> clip;
     std::optional<CullOutcome> cull;
     std::optional<DepthOutcome> depth;
+    std::optional<RasterOutcome> raster;
 };
 
 // The scene's built-in objects as polygon meshes (meshes from files are the
