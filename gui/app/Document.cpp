@@ -30,7 +30,7 @@ Document::Document(QObject* parent) : QObject(parent)
 void Document::load(const QString& path)
 {
     Scene loaded = loadScene(path.toStdString());
-    Pipeline<double> pipeline = buildPipeline(loaded.camera);
+    Pipeline<double> pipeline = buildPipeline(loaded.camera, loaded.effects);
     scene_ = std::move(loaded);
     pipeline_ = std::move(pipeline);
     filePath_ = path;
@@ -55,6 +55,13 @@ void Document::setCamera(const CameraSpec<double>& camera, const QString& descri
     replace(std::move(next), description);
 }
 
+void Document::setEffects(const EffectList& effects, const QString& description)
+{
+    Scene next = scene_;
+    next.effects = effects;
+    replace(std::move(next), description);
+}
+
 void Document::addObject(const SceneObject& object, const QString& description)
 {
     Scene next = scene_;
@@ -70,7 +77,7 @@ void Document::replace(Scene next, const QString& description)
 
 void Document::restore(const Scene& scene)
 {
-    pipeline_ = buildPipeline(scene.camera);
+    pipeline_ = buildPipeline(scene.camera, scene.effects);
     scene_ = scene;
     emit changed();
 }

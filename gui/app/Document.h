@@ -31,6 +31,7 @@ public:
     // true, otherwise throws InputError and changes nothing.
     void setCamera(const CameraSpec<double>& camera, const QString& description);
     void addObject(const SceneObject& object, const QString& description);
+    void setEffects(const EffectList& effects, const QString& description);
 
     // Replaces the state without validation; only for undo and redo of states
     // that were valid when they were pushed.

@@ -27,7 +27,7 @@ int runOpen(int argc, char** argv, const OpenOptions& options)
                                                     : QString::fromStdString(options.scene);
     // Validate before any window appears: bad input is exit 2 with the core's message.
     const Scene scene = loadScene(scenePath.toStdString());
-    const int stages = int(buildPipeline(scene.camera).stages.size());
+    const int stages = int(buildPipeline(scene.camera, scene.effects).stages.size());
     if (options.stage < 0 || options.stage > stages)
         throw InputError("--stage", "must lie between 0 and " + std::to_string(stages) + " (got " +
                                         std::to_string(options.stage) + ")");

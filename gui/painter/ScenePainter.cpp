@@ -26,6 +26,7 @@
 #include <vtkPolyDataMapper2D.h>
 #include <vtkProperty2D.h>
 #include <vtkTextActor.h>
+#include <vtkUnsignedCharArray.h>
 #include <vtkTextProperty.h>
 
 #include <algorithm>
@@ -343,8 +344,17 @@ ScenePainter::ScenePainter(vtkRenderer* world, vtkRenderer* projected)
     vanishingMapper->SetInputData(linesData({}));
     vanishing_->SetMapper(vanishingMapper);
     vanishing_->GetProperty()->SetLineWidth(1.5);
-    if (projected_)
+    rasterGrid_ = vtkSmartPointer<vtkActor2D>::New();
+    auto gridMapper = vtkSmartPointer<vtkPolyDataMapper2D>::New();
+    gridMapper->SetTransformCoordinate(viewCoordinates);
+    gridMapper->SetInputData(linesData({}));
+    rasterGrid_->SetMapper(gridMapper);
+    rasterGrid_->GetProperty()->SetOpacity(0.85);
+    rasterGrid_->SetVisibility(false);
+    if (projected_) {
+        projected_->AddActor2D(rasterGrid_);
         projected_->AddActor2D(vanishing_);
+    }
     frameAxes_ = vtkSmartPointer<vtkActor>::New();
     auto frameMapper = vtkSmartPointer<vtkPolyDataMapper>::New();
     frameMapper->SetInputData(linesData({}));
@@ -432,8 +442,13 @@ void ScenePainter::addLabel(Element element, const std::string& text, const Vec3
 
 void ScenePainter::setScene(const Scene& scene)
 {
-    const Pipeline<double> pipeline = buildPipeline(scene.camera);
-    const ViewSetup<double> setup = viewSetup(scene.camera);
+    const Pipeline<double> pipeline = buildPipeline(scene.camera, scene.effects);
+    ViewSetup<double> setup = viewSetup(scene.camera);
+    if (pipeline.stages.back().symbol == "M") { // after M the canonical volume is the parallel one
+        foley::ViewSpec<double> parallel = std::get<foley::ViewSpec<double>>(scene.camera);
+        parallel.projection = foley::Projection::Parallel;
+        setup.canonical = foley::canonicalCorners(parallel);
+    }
 
     // Read everything first: a mesh that fails leaves the previous picture.
     std::vector<ObjectGeometry> objects;
@@ -458,10 +473,61 @@ void ScenePainter::setScene(const Scene& scene)
     const double worldAxis = 1.5 * axis; // longer than the VRC axes, which may start at the same point
     const double marker = 0.008 * size;
 
-    for (const auto& [faces, edges] : objects) {
-        addLayer(Element::Objects, faces, true, 0.35);
-        if (!edges.empty())
+    // Effects the scene lists: clipped-away edges and culled faces are ghosted,
+    // faces the depth buffer cannot order are marked.
+    std::vector<PolygonMesh> meshes;
+    if (!scene.effects.empty())
+        meshes = objectMeshes(scene);
+    const EffectOutcomes outcomes = runEffects(pipeline, meshes, scene.effects);
+    for (std::size_t o = 0; o < objects.size(); ++o) {
+        const auto& [faces, edges] = objects[o];
+        if (outcomes.cull || outcomes.depth) {
+            std::vector<bool> fighting(meshes[o].faces.size(), false);
+            if (outcomes.depth)
+                for (const auto& pair : outcomes.depth->zFighting) {
+                    if (std::size_t(pair[0]) == o)
+                        fighting[std::size_t(pair[1])] = true;
+                    if (std::size_t(pair[2]) == o)
+                        fighting[std::size_t(pair[3])] = true;
+                }
+            PolygonMesh front, back, fights;
+            front.vertices = back.vertices = fights.vertices = meshes[o].vertices;
+            for (std::size_t f = 0; f < meshes[o].faces.size(); ++f) {
+                const bool culled = outcomes.cull && outcomes.cull->culledFaces[o][f];
+                (fighting[f] ? fights : culled ? back : front).faces.push_back(meshes[o].faces[f]);
+            }
+            addLayer(Element::Objects, facesData(front), true, 0.35);
+            if (!back.faces.empty())
+                addLayer(Element::Objects, facesData(back), true, 0.06);
+            if (!fights.faces.empty())
+                addLayer(Element::Dop, facesData(fights), true, 0.6);
+        } else {
+            addLayer(Element::Objects, faces, true, 0.35);
+        }
+        if (outcomes.clip) {
+            std::vector<Segment> kept, away;
+            const auto indices = meshEdgeIndices(meshes[o]);
+            for (std::size_t e = 0; e < indices.size(); ++e) {
+                const Vec3<double>& a = meshes[o].vertices[std::size_t(indices[e][0])];
+                const Vec3<double>& b = meshes[o].vertices[std::size_t(indices[e][1])];
+                const auto& interval = outcomes.clip->keptEdges[o][e];
+                if (!interval) {
+                    away.emplace_back(a, b);
+                    continue;
+                }
+                const Vec3<double> p = a + (*interval)[0] * (b - a), q = a + (*interval)[1] * (b - a);
+                kept.emplace_back(p, q);
+                if ((*interval)[0] > 0)
+                    away.emplace_back(a, p);
+                if ((*interval)[1] < 1)
+                    away.emplace_back(q, b);
+            }
+            addLayer(Element::Objects, linesData(kept), false, 1.0);
+            if (!away.empty())
+                addLayer(Element::Objects, linesData(away), false, 0.2);
+        } else if (!edges.empty()) {
             addLayer(Element::Objects, linesData(edges), false, 1.0);
+        }
     }
 
     const Vec3<double> o = Vec3<double>::Zero();
@@ -555,13 +621,13 @@ void ScenePainter::setScene(const Scene& scene)
         projectedActors_.push_back(actor);
         for (const auto& a : projectedActors_)
             projected_->AddActor(a);
-        setUpProjectedView(scene, pipeline);
+        setUpProjectedView(scene, pipeline, outcomes.raster ? &*outcomes.raster : nullptr);
     }
     applyStyle();
     show(Mat4<double>::Identity(), 0);
 }
 
-void ScenePainter::setUpProjectedView(const Scene& scene, const Pipeline<double>& pipeline)
+void ScenePainter::setUpProjectedView(const Scene& scene, const Pipeline<double>& pipeline, const RasterOutcome* raster)
 {
     Mat4<double> clip = pipeline.toClip * pipeline.composite;
     if (pipeline.convention == Convention::Foley)
@@ -598,12 +664,29 @@ void ScenePainter::setUpProjectedView(const Scene& scene, const Pipeline<double>
     vanishing_->SetVisibility(!picture.empty());
 
     // Keep the window square on screen whatever the viewport's shape.
+    // The raster effect: its pixels as squares over the picture, one color per object.
+    std::vector<std::pair<Vec2<double>, int>> pixels; // lower-left corner in NDC, object
+    Vec2<double> pixelSize(0, 0);
+    if (raster) {
+        pixelSize = Vec2<double>(2.0 / raster->width, 2.0 / raster->height);
+        for (int y = 0; y < raster->height; ++y)
+            for (int x = 0; x < raster->width; ++x) {
+                const int object = raster->object[std::size_t(y * raster->width + x)];
+                if (object >= 0)
+                    pixels.push_back({Vec2<double>(-1 + x * pixelSize.x(), -1 + y * pixelSize.y()), object});
+            }
+    }
+    rasterGrid_->SetVisibility(raster != nullptr);
+
     struct Context {
         Mat4<double> clip;
         std::vector<Vec2<double>> picture;
         vtkActor2D* vanishing;
+        std::vector<std::pair<Vec2<double>, int>> pixels;
+        Vec2<double> pixelSize;
+        vtkActor2D* grid;
     };
-    auto* context = new Context{clip, picture, vanishing_};
+    auto* context = new Context{clip, picture, vanishing_, pixels, pixelSize, rasterGrid_};
     auto update = vtkSmartPointer<vtkCallbackCommand>::New();
     update->SetClientData(context);
     update->SetClientDataDeleteCallback([](void* data) { delete static_cast<Context*>(data); });
@@ -625,6 +708,28 @@ void ScenePainter::setUpProjectedView(const Scene& scene, const Pipeline<double>
             lines.emplace_back(place(c->picture[i]), place(c->picture[i + 1]));
         }
         static_cast<vtkPolyDataMapper2D*>(c->vanishing->GetMapper())->SetInputData(linesData(lines));
+        // Raster pixels: a square each, with a gap so the grid shows.
+        auto points = vtkSmartPointer<vtkPoints>::New();
+        auto cells = vtkSmartPointer<vtkCellArray>::New();
+        auto colors = vtkSmartPointer<vtkUnsignedCharArray>::New();
+        colors->SetNumberOfComponents(3);
+        static const unsigned char palette[][3] = {{90, 140, 230}, {230, 120, 60}, {80, 190, 110}, {200, 90, 200}};
+        for (const auto& [corner, object] : c->pixels) {
+            const vtkIdType first = points->GetNumberOfPoints();
+            for (const Vec2<double>& d : {Vec2<double>(0.06, 0.06), Vec2<double>(0.94, 0.06), Vec2<double>(0.94, 0.94),
+                                          Vec2<double>(0.06, 0.94)}) {
+                const Vec2<double> q = corner + d.cwiseProduct(c->pixelSize);
+                points->InsertNextPoint(q.x() * letterbox(0, 0), q.y() * letterbox(1, 1), 0);
+            }
+            const vtkIdType ids[4] = {first, first + 1, first + 2, first + 3};
+            cells->InsertNextCell(4, ids);
+            colors->InsertNextTypedTuple(palette[object % 4]);
+        }
+        auto grid = vtkSmartPointer<vtkPolyData>::New();
+        grid->SetPoints(points);
+        grid->SetPolys(cells);
+        grid->GetCellData()->SetScalars(colors);
+        static_cast<vtkPolyDataMapper2D*>(c->grid->GetMapper())->SetInputData(grid);
     });
     projected_->RemoveObservers(vtkCommand::StartEvent);
     projected_->AddObserver(vtkCommand::StartEvent, update);

@@ -111,7 +111,7 @@ private:
     void addLayer(Element element, vtkSmartPointer<vtkPolyData> geometry, bool surface, double opacity);
     void addLabel(Element element, const std::string& text, const Vec3<double>& world);
     void applyStyle();
-    void setUpProjectedView(const Scene& scene, const Pipeline<double>& pipeline);
+    void setUpProjectedView(const Scene& scene, const Pipeline<double>& pipeline, const RasterOutcome* raster);
     double fitDistance(double radius) const;
 
     vtkRenderer* world_;
@@ -119,7 +119,8 @@ private:
     vtkSmartPointer<vtkTextActor> worldCaption_;
     vtkSmartPointer<vtkTextActor> projectedCaption_;
     vtkSmartPointer<vtkActor> frameAxes_;
-    vtkSmartPointer<vtkActor2D> vanishing_; // vanishing points and the lines meeting there, projected view
+    vtkSmartPointer<vtkActor2D> vanishing_;  // vanishing points and the lines meeting there, projected view
+    vtkSmartPointer<vtkActor2D> rasterGrid_; // the raster effect's pixels, projected view
     std::vector<Layer> layers_;
     std::vector<Label> labels_;
     std::vector<vtkSmartPointer<vtkActor>> projectedActors_;
