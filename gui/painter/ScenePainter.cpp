@@ -91,19 +91,12 @@ vtkSmartPointer<vtkPolyData> facesData(const PolygonMesh& mesh)
     return data;
 }
 
+// The mesh's edges once each, in the core's order (the clip effect's too).
 std::vector<Segment> meshEdges(const PolygonMesh& mesh)
 {
     std::vector<Segment> edges;
-    std::vector<std::pair<int, int>> seen;
-    for (const std::vector<int>& face : mesh.faces)
-        for (std::size_t k = 0; k < face.size(); ++k) {
-            const int a = face[k], b = face[(k + 1) % face.size()];
-            const std::pair<int, int> key(std::min(a, b), std::max(a, b));
-            if (std::find(seen.begin(), seen.end(), key) != seen.end())
-                continue;
-            seen.push_back(key);
-            edges.emplace_back(mesh.vertices[a], mesh.vertices[b]);
-        }
+    for (const auto& e : meshEdgeIndices(mesh))
+        edges.emplace_back(mesh.vertices[std::size_t(e[0])], mesh.vertices[std::size_t(e[1])]);
     return edges;
 }
 
