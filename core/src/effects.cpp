@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <cstring>
 #include <mutex>
 #include <unordered_set>
 
@@ -34,6 +35,30 @@ std::map<std::string, long> effectRuns()
 {
     std::lock_guard<std::mutex> lock(runsMutex);
     return runs;
+}
+
+EffectList withEffect(EffectList effects, const std::string& name, bool on)
+{
+    static const std::array<std::string, 5> known = {"clip", "divide", "cull", "depth", "raster"};
+    if (std::find(known.begin(), known.end(), name) == known.end())
+        throw InputError("effects", "unknown effect \"" + name + "\" (known: clip, divide, depth, raster, cull)");
+    auto& names = effects.names;
+    const bool listed = std::find(names.begin(), names.end(), name) != names.end();
+    if (!on)
+        names.erase(std::remove(names.begin(), names.end(), name), names.end());
+    else if (!listed)
+        names.push_back(name); // a listed effect keeps its place
+    if (name == "clip")
+        effects.clip = on;
+    else if (name == "divide")
+        effects.divide = on;
+    else if (name == "cull")
+        effects.cull = on;
+    else if (name == "depth")
+        effects.depth = on ? effects.depth.value_or(DepthOptions{}) : std::optional<DepthOptions>{};
+    else
+        effects.raster = on ? effects.raster.value_or(RasterOptions{}) : std::optional<RasterOptions>{};
+    return effects;
 }
 
 unsigned outcode(const Vec4<double>& clip, ClipVolume volume)
@@ -126,6 +151,41 @@ double storedDepth(double depth, const DepthOptions& options)
     return std::nearbyint(std::clamp(d, 0.0, 1.0) * levels);
 }
 
+double depthLevel(double depth, const DepthOptions& options)
+{
+    if (!options.floating)
+        return storedDepth(depth, options);
+    const float stored = float(std::clamp(options.reversed ? 1 - depth : depth, 0.0, 1.0));
+    std::uint32_t bits;
+    std::memcpy(&bits, &stored, sizeof bits);
+    return double(bits);
+}
+
+std::optional<double> depthLevelAt(const Pipeline<double>& pipeline, const Vec3<double>& world,
+                                   const DepthOptions& options)
+{
+    const Vec4<double> clip = pipeline.toClip * pipeline.composite * world.homogeneous();
+    if (!(clip.w() > 0))
+        return std::nullopt;
+    const double depth = windowDepth(clip, pipeline.clipVolume);
+    if (!(depth >= 0 && depth <= 1))
+        return std::nullopt;
+    return depthLevel(depth, options);
+}
+
+DepthBands depthBands(double low, double high, int maxBands)
+{
+    DepthBands bands;
+    for (;;) {
+        const double q = bands.levelsPerBand;
+        bands.first = std::floor(low / q) * q;
+        bands.count = int(std::floor(high / q) - std::floor(low / q)) + 1;
+        if (bands.count <= std::max(maxBands, 1))
+            return bands;
+        bands.levelsPerBand *= 2;
+    }
+}
+
 namespace {
 
 constexpr std::size_t kMaxFightFaces = 4000;
@@ -144,6 +204,43 @@ std::array<Vec3<double>, 2> centerLine(const Pipeline<double>& p)
     return {world(foley ? 0 : -1), world(foley ? -1 : 1)};
 }
 
+// The stored value at a distance along the center line, and the next place
+// (before `limit`) where it changes, found by bisection.
+struct CenterLine {
+    const Pipeline<double>& pipeline;
+    const DepthOptions& options;
+    Mat4<double> clip;
+    Vec3<double> nearPoint, direction;
+    double length;
+
+    CenterLine(const Pipeline<double>& p, const DepthOptions& o)
+        : pipeline(p), options(o), clip(p.toClip * p.composite)
+    {
+        const auto [from, to] = centerLine(p);
+        length = (to - from).norm();
+        nearPoint = from;
+        direction = (to - from) / length;
+    }
+    double stored(double s) const
+    {
+        return storedDepth(windowDepth(clip * (nearPoint + s * direction).homogeneous(), pipeline.clipVolume), options);
+    }
+    std::optional<double> nextChange(double from, double limit) const
+    {
+        const double value = stored(from);
+        if (stored(limit) == value)
+            return std::nullopt;
+        double lo = from, hi = limit;
+        for (int i = 0; i < 100 && hi - lo > 0; ++i) {
+            const double mid = (lo + hi) / 2;
+            if (mid == lo || mid == hi)
+                break;
+            (stored(mid) == value ? lo : hi) = mid;
+        }
+        return hi;
+    }
+};
+
 DepthOutcome depthOutcome(const Pipeline<double>& p, const std::vector<PolygonMesh>& objects, const DepthOptions& options)
 {
     const Mat4<double> clip = p.toClip * p.composite;
@@ -152,31 +249,7 @@ DepthOutcome depthOutcome(const Pipeline<double>& p, const std::vector<PolygonMe
     };
     DepthOutcome out;
     out.options = options;
-    // Resolution along the center line, at 9 distances from the near face.
-    const auto [nearPoint, farPoint] = centerLine(p);
-    const double length = (farPoint - nearPoint).norm();
-    const Vec3<double> direction = (farPoint - nearPoint) / length;
-    // The next place after `from` (within `limit`) where the stored value changes.
-    auto nextChange = [&](double from, double limit) -> std::optional<double> {
-        const double value = stored(nearPoint + from * direction);
-        if (stored(nearPoint + limit * direction) == value)
-            return std::nullopt;
-        double lo = from, hi = limit;
-        for (int i = 0; i < 100 && hi - lo > 0; ++i) {
-            const double mid = (lo + hi) / 2;
-            if (mid == lo || mid == hi)
-                break;
-            (stored(nearPoint + mid * direction) == value ? lo : hi) = mid;
-        }
-        return hi;
-    };
-    for (int k = 0; k <= 8; ++k) {
-        const double s = length * k / 8.0 * 0.99;
-        // The width of the stored level that follows s: what the buffer can tell apart there.
-        const std::optional<double> first = nextChange(s, length);
-        const std::optional<double> second = first ? nextChange(*first, length) : std::nullopt;
-        out.resolution.push_back({s, second ? *second - *first : length - s});
-    }
+    out.resolution = depthResolution(p, options, 9);
     // Distinct stored values among the vertices inside the volume.
     std::vector<double> values;
     for (const PolygonMesh& mesh : objects)
@@ -255,6 +328,20 @@ DepthOutcome depthOutcome(const Pipeline<double>& p, const std::vector<PolygonMe
 }
 
 } // namespace
+
+std::vector<DepthSample> depthResolution(const Pipeline<double>& pipeline, const DepthOptions& options, int samples)
+{
+    const CenterLine line(pipeline, options);
+    std::vector<DepthSample> resolution;
+    for (int k = 0; k < samples; ++k) {
+        const double s = line.length * k / std::max(samples - 1, 1) * 0.99;
+        // The width of the stored level that follows s: what the buffer can tell apart there.
+        const std::optional<double> first = line.nextChange(s, line.length);
+        const std::optional<double> second = first ? line.nextChange(*first, line.length) : std::nullopt;
+        resolution.push_back({s, second ? *second - *first : line.length - s, !second});
+    }
+    return resolution;
+}
 
 RasterOutcome rasterize(const Pipeline<double>& pipeline, const std::vector<PolygonMesh>& objects,
                         const RasterOptions& options, const std::vector<std::vector<bool>>* culled)

@@ -220,9 +220,11 @@ void readEffect(const Json& j, const std::string& path, EffectList& effects)
     } else {
         throw InputError(path, "must be an effect name or {\"name\": {parameters}}");
     }
-    static const std::set<std::string> known = {"clip", "divide", "cull", "depth", "raster"};
-    if (!known.count(name))
-        throw InputError(path, "unknown effect \"" + name + "\" (known: clip, divide, depth, raster, cull)");
+    try {
+        withEffect({}, name, true);
+    } catch (const InputError& e) {
+        throw InputError(path, e.reason());
+    }
     if (std::find(effects.names.begin(), effects.names.end(), name) != effects.names.end())
         throw InputError(path, "effect \"" + name + "\" is listed twice");
     const std::string where = path + "." + name;
@@ -276,10 +278,7 @@ void readEffect(const Json& j, const std::string& path, EffectList& effects)
             }
         effects.raster = raster;
     }
-    effects.names.push_back(name);
-    effects.clip = effects.clip || name == "clip";
-    effects.divide = effects.divide || name == "divide";
-    effects.cull = effects.cull || name == "cull";
+    effects = withEffect(std::move(effects), name, true);
 }
 
 Json vec3Json(const Vec3<double>& v)

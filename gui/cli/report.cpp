@@ -123,7 +123,7 @@ Json effectsJson(const Scene& scene, const std::vector<PolygonMesh>& objects)
         const DepthOutcome& d = *outcomes.depth;
         Json resolution = Json::array();
         for (const DepthSample& s : d.resolution)
-            resolution.push_back({{"distance", s.distance}, {"step", s.step}});
+            resolution.push_back({{"distance", s.distance}, {"step", s.step}, {"past_far", s.pastFar}});
         Json fights = Json::array();
         for (const auto& f : d.zFighting)
             fights.push_back({{"object", f[0]}, {"face", f[1]}, {"with_object", f[2]}, {"with_face", f[3]}});

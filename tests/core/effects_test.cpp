@@ -218,6 +218,7 @@ TEST(Depth, ResolutionFollowsTheFormula)
         for (const DepthSample& sample : d.resolution) {
             const double s = n + sample.distance;
             const double formula = (f - n) * s * s / (f * n * (std::ldexp(1.0, bits) - 1));
+            EXPECT_EQ(sample.pastFar, sample.step >= f - s - 1e-9 * f) << bits << " bits at " << s;
             if (formula > 0.5 * (f - s))
                 continue; // the level runs past the far plane
             // First order in the level's width: a level of width ds changes s^2 by about 2 ds / s.
@@ -246,6 +247,95 @@ TEST(Depth, FlagsZFighting)
     EXPECT_FALSE(runEffects(p, walls, effects).depth->zFighting.empty());
     effects.depth = DepthOptions{32, true, true};
     EXPECT_TRUE(runEffects(p, walls, effects).depth->zFighting.empty());
+}
+
+// The level stored for a point at eye distance s, against window depth
+// d(s) = f (s - n) / ((f - n) s) of gluPerspective written out by hand.
+TEST(Depth, LevelsAtPoints)
+{
+    const double n = 1, f = 100;
+    const gl::Camera<double> camera{{{0, 0, 0}, {0, 0, -1}, {0, 1, 0}}, gl::Perspective<double>{60, 1, n, f}};
+    const Pipeline<double> p = buildPipeline(camera);
+    const DepthOptions unorm16{16, false, false};
+    for (double s : {1.5, 2.0, 10.0, 37.0, 99.0}) {
+        const double d = f * (s - n) / ((f - n) * s);
+        const std::optional<double> level = depthLevelAt(p, {0.1, -0.2, -s}, unorm16);
+        ASSERT_TRUE(level) << s;
+        EXPECT_EQ(*level, std::nearbyint(d * 65535)) << s;
+    }
+    // Nothing is stored for points before the near plane, past the far plane or behind the eye.
+    EXPECT_FALSE(depthLevelAt(p, {0, 0, -0.5}, unorm16));
+    EXPECT_FALSE(depthLevelAt(p, {0, 0, -101}, unorm16));
+    EXPECT_FALSE(depthLevelAt(p, {0, 0, 5}, unorm16));
+    // Float levels are the bit patterns: neighbouring floats are one level apart, in order.
+    const DepthOptions float32{32, true, false};
+    const float half = 0.5f;
+    EXPECT_EQ(depthLevel(std::nextafter(half, 1.0f), float32) - depthLevel(half, float32), 1);
+    EXPECT_LT(depthLevel(0.25, float32), depthLevel(0.5, float32));
+    EXPECT_EQ(depthLevel(0.25, {32, true, true}), depthLevel(0.75, float32)); // reversed: 1 - d
+    EXPECT_EQ(depthLevel(0.5, unorm16), storedDepth(0.5, unorm16));
+}
+
+// Bands hold a power of two of levels and the fewest that fit the count.
+TEST(Depth, BandsCoverTheLevels)
+{
+    const DepthBands one = depthBands(100, 120, 32);
+    EXPECT_EQ(one.levelsPerBand, 1);
+    EXPECT_EQ(one.first, 100);
+    EXPECT_EQ(one.count, 21);
+    const DepthBands wide = depthBands(1000, 60000, 24);
+    EXPECT_EQ(wide.levelsPerBand, 4096); // 2048 would need 30 bands
+    EXPECT_LE(wide.first, 1000);
+    EXPECT_GT(wide.first + wide.count * wide.levelsPerBand, 60000);
+    EXPECT_LE(wide.count, 24);
+    EXPECT_GT(depthBands(1000, 60000, 30).count, 24);
+}
+
+// The resolution curve is the outcome's, sampled more densely: its 9-sample
+// form is the one `pipeline --json` reports, and the step grows with distance.
+TEST(Depth, ResolutionCurve)
+{
+    const gl::Camera<double> camera{{{0, 0, 0}, {0, 0, -1}, {0, 1, 0}}, gl::Perspective<double>{60, 1, 1, 1000}};
+    const Pipeline<double> p = buildPipeline(camera);
+    EffectList effects = withEffect({}, "depth", true);
+    const DepthOutcome outcome = *runEffects(p, {}, effects).depth;
+    const std::vector<DepthSample> nine = depthResolution(p, *effects.depth, 9);
+    ASSERT_EQ(nine.size(), outcome.resolution.size());
+    for (std::size_t k = 0; k < nine.size(); ++k)
+        EXPECT_EQ(nine[k].step, outcome.resolution[k].step);
+    const std::vector<DepthSample> curve = depthResolution(p, *effects.depth, 65);
+    ASSERT_EQ(curve.size(), 65u);
+    EXPECT_EQ(curve[8].distance, nine[1].distance);
+    for (std::size_t k = 1; k < curve.size(); ++k)
+        EXPECT_GT(curve[k].step, curve[k - 1].step);
+}
+
+// Turning effects on and off keeps the list's order and the flags in step;
+// parameters set before turning an effect on are kept.
+TEST(Effects, TurnedOnAndOff)
+{
+    EffectList list = withEffect(withEffect({}, "clip", true), "cull", true);
+    EXPECT_EQ(list.names, (std::vector<std::string>{"clip", "cull"}));
+    EXPECT_TRUE(list.clip && list.cull && !list.divide);
+    list.depth = DepthOptions{16, false, true};
+    list = withEffect(list, "depth", true);
+    EXPECT_EQ(list.depth->bits, 16);
+    EXPECT_TRUE(list.depth->reversed);
+    list = withEffect(list, "raster", true);
+    EXPECT_EQ(list.raster->width, 64);
+    list.depth->bits = 24;
+    EXPECT_EQ(withEffect(list, "depth", true).names, (std::vector<std::string>{"clip", "cull", "depth", "raster"}));
+    list = withEffect(withEffect(list, "clip", false), "depth", false);
+    EXPECT_EQ(list.names, (std::vector<std::string>{"cull", "raster"}));
+    EXPECT_FALSE(list.clip || list.depth);
+    EXPECT_TRUE(withEffect(list, "raster", false).names == std::vector<std::string>{"cull"});
+    try {
+        withEffect(list, "fog", true);
+        ADD_FAILURE() << "fog is not an effect";
+    } catch (const InputError& e) {
+        EXPECT_EQ(e.field(), "effects");
+        EXPECT_NE(std::string(e.reason()).find("fog"), std::string::npos);
+    }
 }
 
 TEST(Depth, StoredValues)

@@ -41,6 +41,27 @@ struct EffectList {
     bool empty() const { return names.empty(); }
 };
 
+inline bool operator==(const DepthOptions& a, const DepthOptions& b)
+{
+    return a.bits == b.bits && a.floating == b.floating && a.reversed == b.reversed;
+}
+inline bool operator==(const RasterOptions& a, const RasterOptions& b)
+{
+    return a.width == b.width && a.height == b.height;
+}
+// The same effects in the same order with the same parameters (the flags follow the names).
+inline bool operator==(const EffectList& a, const EffectList& b)
+{
+    return a.names == b.names && a.depth == b.depth && a.raster == b.raster;
+}
+
+// The list with an effect turned on (appended, or kept in its place if listed,
+// with the parameters already in `depth` or `raster`, else the defaults) or
+// off (removed): what a scene's
+// "effects" and the app's Effects menu both build lists with. Throws
+// InputError naming "effects" for a name that is not an effect.
+EffectList withEffect(EffectList effects, const std::string& name, bool on);
+
 // Calls of each effect's code since the start of the process (for tests).
 std::map<std::string, long> effectRuns();
 
@@ -107,10 +128,34 @@ struct CullOutcome {
 double windowDepth(const Vec4<double>& clip, ClipVolume volume);
 double storedDepth(double depth, const DepthOptions& options);
 
+// The rank of the stored value among those the buffer can hold, so that
+// neighbouring values are one level apart: the integer itself for fixed
+// point, the bit pattern for float (which orders floats in [0, 1]).
+double depthLevel(double depth, const DepthOptions& options);
+// The level stored for a world point, if it lies in front of the eye between
+// the near (front) and far (back) planes; nothing otherwise.
+std::optional<double> depthLevelAt(const Pipeline<double>& pipeline, const Vec3<double>& world,
+                                   const DepthOptions& options);
+
+// Bands that show quantization on the scene: each holds `levelsPerBand`
+// consecutive levels (a power of two, the fewest that keep the levels from
+// `low` to `high` within `maxBands` bands), the first starting at `first`.
+struct DepthBands {
+    double first = 0, levelsPerBand = 1;
+    int count = 1;
+};
+DepthBands depthBands(double low, double high, int maxBands);
+
 struct DepthSample {
     double distance; // from the eye (OpenGL) or the PRP (Foley), along the view direction
     double step;     // the smallest change of distance there that changes the stored value
+    bool pastFar;    // the level runs on past the far (back) plane: `step` is only a lower bound
 };
+
+// The width of one stored level at `samples` distances along the view volume's
+// center line, evenly from the near (front) face to just before the far (back)
+// face (at 99% of the way, where the last level still ends inside).
+std::vector<DepthSample> depthResolution(const Pipeline<double>& pipeline, const DepthOptions& options, int samples);
 
 struct DepthOutcome {
     DepthOptions options;
