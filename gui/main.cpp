@@ -94,8 +94,8 @@ int main(int argc, char** argv)
     openCommand->add_option("--screenshot", open.screenshot, "Save a PNG of the whole window and exit");
     openCommand->add_option("--size", size, "Window size WxH (default 1600x950)");
     openCommand->add_option("--theme", theme, "dark or light")->check(CLI::IsMember({"dark", "light"}));
-    openCommand->add_option("--panel", open.panel, "Dock in front: matrices, parameters or accuracy (measured)")
-        ->check(CLI::IsMember({"stages", "matrices", "parameters", "accuracy"}));
+    openCommand->add_option("--panel", open.panel, "Dock in front: stages, matrices, parameters, accuracy (measured) or depth")
+        ->check(CLI::IsMember({"stages", "matrices", "parameters", "accuracy", "depth"}));
 
     std::string exportOut, exportSize = "1280x720", exportStages = "all", exportTheme = "light",
                                   exportFormats = "png";
@@ -298,7 +298,7 @@ int main(int argc, char** argv)
             o.out = exportOut;
             std::tie(o.width, o.height) = parseSize(exportSize, "--size");
             o.scale = exportScale;
-            o.stages = gui::parseStages(exportStages, int(buildPipeline(scene.camera).stages.size()));
+            o.stages = gui::parseStages(exportStages, int(buildPipeline(scene.camera, scene.effects).stages.size()));
             o.theme = exportTheme == "dark" ? gui::Theme::Dark : gui::Theme::Light;
             o.transparent = exportTransparent;
             std::istringstream formats(exportFormats);

@@ -76,7 +76,9 @@ std::string bmatrix(const Mat4<Exact>& m, int digits)
 
 Pipeline<Exact> exactPipeline(const Scene& scene)
 {
-    return buildPipeline(convertCamera<Exact>(scene.camera, [](double x) { return fromDecimal<Exact>(x); }));
+    return withEffectStages(
+        buildPipeline(convertCamera<Exact>(scene.camera, [](double x) { return fromDecimal<Exact>(x); })),
+        scene.effects);
 }
 
 } // namespace

@@ -25,6 +25,7 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include "DepthPlot.h"
 #include "cli/latex.hpp"
 #include "cli/report.hpp"
 #include "painter/StageTransition.h"
@@ -287,7 +288,7 @@ std::vector<fs::path> exportStages(const Scene& scene, const ExportOptions& opti
                                    const std::atomic<bool>& cancel)
 {
     validate(options);
-    const Pipeline<double> pipeline = buildPipeline(scene.camera);
+    const Pipeline<double> pipeline = buildPipeline(scene.camera, scene.effects);
     const std::vector<Stage<double>>& stages = pipeline.stages;
     const int n = int(stages.size());
     std::vector<int> chosen = options.stages;
@@ -298,7 +299,7 @@ std::vector<fs::path> exportStages(const Scene& scene, const ExportOptions& opti
             throw InputError("--stages", "stage numbers run from 0 (the world) to " + std::to_string(n));
 
     const int frameCount = options.animate ? int(std::lround(options.fps * (kHoldSeconds * (n + 1) + n))) : 0;
-    const int total = int(chosen.size() * options.formats.size()) + 2 + frameCount;
+    const int total = int(chosen.size() * options.formats.size()) + 2 + (scene.effects.depth ? 1 : 0) + frameCount;
     int done = 0;
     auto step = [&](const std::string& what) {
         if (cancel)
@@ -372,6 +373,10 @@ std::vector<fs::path> exportStages(const Scene& scene, const ExportOptions& opti
 
         step("matrices.tex");
         writeText(temporary / "matrices.tex", cli::matricesLatex(scene, options.digits));
+        if (const auto& depth = painter.effectOutcomes().depth) {
+            step("depth-resolution.png");
+            writeDepthPlot(pipeline, depth->options, temporary / "depth-resolution.png", options.theme);
+        }
         step("matrices.json");
         writeText(temporary / "matrices.json", cli::pipelineJson(scene, cli::PrecisionChoice{}, objectMeshes(scene)).dump(2) + "\n");
 

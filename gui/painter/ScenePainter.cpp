@@ -1,11 +1,16 @@
 #include "ScenePainter.h"
 
 #include <vtkActor.h>
+#include <vtkAdaptiveSubdivisionFilter.h>
+#include <vtkDoubleArray.h>
+#include <vtkLookupTable.h>
+#include <vtkTriangleFilter.h>
 #include <vtkBillboardTextActor3D.h>
 #include <vtkCallbackCommand.h>
 #include <vtkCamera.h>
 #include <vtkCellArray.h>
 #include <vtkCellData.h>
+#include <vtkCleanPolyData.h>
 #include <vtkCommand.h>
 #include <vtkConeSource.h>
 #include <vtkOBJReader.h>
@@ -31,6 +36,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
+#include <sstream>
 
 #include "EigenVtk.h"
 #include "viewpipe/classical.hpp"
@@ -227,6 +234,116 @@ Mat4<double> foleyToGlClip()
     return d;
 }
 
+// Faces cut into triangles no longer than a 32nd of the object's size (the
+// stored level is not affine across a face seen in perspective, so colors are
+// computed at many points; a mesh with many faces is fine enough as it is),
+// each point carrying the level the depth buffer stores for it, or NaN where
+// it stores nothing.
+vtkSmartPointer<vtkPolyData> depthLevels(const PolygonMesh& faces, const Pipeline<double>& pipeline,
+                                         const DepthOptions& options)
+{
+    // Only the points of these faces: the others must not widen the bands' range.
+    auto used = vtkSmartPointer<vtkCleanPolyData>::New();
+    used->SetInputData(facesData(faces));
+    used->PointMergingOff();
+    used->SetOutputPointsPrecision(vtkAlgorithm::DOUBLE_PRECISION);
+    auto data = vtkSmartPointer<vtkPolyData>::New();
+    if (faces.faces.size() > 50000) {
+        used->Update();
+        data->ShallowCopy(used->GetOutput());
+    } else {
+        auto triangles = vtkSmartPointer<vtkTriangleFilter>::New();
+        triangles->SetInputConnection(used->GetOutputPort());
+        triangles->Update();
+        auto fine = vtkSmartPointer<vtkAdaptiveSubdivisionFilter>::New();
+        fine->SetInputConnection(triangles->GetOutputPort());
+        fine->SetMaximumEdgeLength(triangles->GetOutput()->GetLength() / 32);
+        fine->SetOutputPointsPrecision(vtkAlgorithm::DOUBLE_PRECISION);
+        fine->Update();
+        data->ShallowCopy(fine->GetOutput());
+    }
+    auto levels = vtkSmartPointer<vtkDoubleArray>::New();
+    levels->SetName("depth level");
+    for (vtkIdType i = 0; i < data->GetNumberOfPoints(); ++i) {
+        const double* p = data->GetPoint(i);
+        levels->InsertNextValue(depthLevelAt(pipeline, Vec3<double>(p[0], p[1], p[2]), options)
+                                    .value_or(std::numeric_limits<double>::quiet_NaN()));
+    }
+    data->GetPointData()->SetScalars(levels);
+    return data;
+}
+
+// Alternating light and dark steps along a ramp from near (yellow) to far
+// (violet), so that neighbouring bands always differ.
+vtkSmartPointer<vtkLookupTable> bandColors(const DepthBands& bands)
+{
+    static const double ramp[][3] = {{0.99, 0.91, 0.15}, {0.37, 0.79, 0.38}, {0.13, 0.57, 0.55},
+                                     {0.23, 0.32, 0.55}, {0.27, 0.00, 0.33}};
+    auto table = vtkSmartPointer<vtkLookupTable>::New();
+    table->SetNumberOfTableValues(bands.count);
+    table->SetTableRange(bands.first, bands.first + bands.count * bands.levelsPerBand);
+    for (int k = 0; k < bands.count; ++k) {
+        const double t = bands.count > 1 ? 4.0 * k / (bands.count - 1) : 0;
+        const int i = std::min(int(t), 3);
+        const double f = t - i, shade = k % 2 ? 0.72 : 1.0;
+        double c[3];
+        for (int j = 0; j < 3; ++j)
+            c[j] = shade * (ramp[i][j] + f * (ramp[i + 1][j] - ramp[i][j]));
+        table->SetTableValue(k, c[0], c[1], c[2], 1.0);
+    }
+    table->SetNanColor(0.5, 0.5, 0.5, 0.25);
+    return table;
+}
+
+void colorByLevels(vtkActor* actor, vtkLookupTable* table)
+{
+    auto* mapper = vtkPolyDataMapper::SafeDownCast(actor->GetMapper());
+    mapper->SetLookupTable(table);
+    mapper->UseLookupTableScalarRangeOn();
+    mapper->SetColorModeToMapScalars();
+    mapper->InterpolateScalarsBeforeMappingOn(); // each pixel takes its band's color: sharp edges
+    mapper->ScalarVisibilityOn();
+}
+
+std::string describeEffects(const EffectList& effects, const EffectOutcomes& outcomes, const Pipeline<double>& pipeline,
+                        const std::optional<DepthBands>& bands)
+{
+    std::ostringstream note;
+    for (const std::string& name : effects.names) {
+        if (name == "clip" && outcomes.clip) {
+            const ClipCounts& s = outcomes.clip->segments;
+            note << "clip: " << s.inside << " edges inside, " << s.clipped << " cut, " << s.outside
+                 << " outside (ghosted)\n";
+        } else if (name == "divide") {
+            const std::string& last = pipeline.stages.back().symbol;
+            note << (last == "M" || last == "divide" ? "divide: stage " + last + " appended\n"
+                                                     : std::string("divide: none needed (parallel)\n"));
+        } else if (name == "cull" && outcomes.cull) {
+            note << "cull: " << outcomes.cull->culled << " of " << outcomes.cull->faces << " faces (ghosted)\n";
+        } else if (name == "depth" && outcomes.depth) {
+            const DepthOutcome& d = *outcomes.depth;
+            note << "depth: " << d.options.bits << "-bit " << (d.options.floating ? "float" : "fixed point")
+                 << (d.options.reversed ? ", reversed" : "");
+            if (bands)
+                note << "; each band " << (bands->levelsPerBand == 1 ? std::string("one stored value")
+                                                                      : std::to_string(std::llround(bands->levelsPerBand)) +
+                                                                            " stored values");
+            if (!d.zFightingChecked)
+                note << "; z-fighting not checked (too many faces)";
+            else if (!d.zFighting.empty())
+                note << "; " << d.zFighting.size() << " face pairs z-fight (red)";
+            note << "\n";
+        } else if (name == "raster" && outcomes.raster) {
+            note << "raster: " << outcomes.raster->width << " x " << outcomes.raster->height << ", "
+                 << outcomes.raster->covered << " pixels covered (projected view)\n";
+        }
+    }
+    std::string text = note.str();
+    if (!text.empty())
+        text.pop_back();
+    return text;
+}
+
 } // namespace
 
 void checkMeshes(const Scene& scene)
@@ -329,6 +446,11 @@ ScenePainter::ScenePainter(vtkRenderer* world, vtkRenderer* projected)
         caption->SetPickable(false);
     }
     world_->AddActor2D(worldCaption_);
+    effectsCaption_ = vtkSmartPointer<vtkTextActor>::New();
+    effectsCaption_->GetPositionCoordinate()->SetCoordinateSystemToNormalizedViewport();
+    effectsCaption_->SetPosition(0.02, 0.02);
+    effectsCaption_->SetPickable(false);
+    world_->AddActor2D(effectsCaption_);
     vanishing_ = vtkSmartPointer<vtkActor2D>::New();
     auto vanishingMapper = vtkSmartPointer<vtkPolyDataMapper2D>::New();
     vtkNew<vtkCoordinate> viewCoordinates;
@@ -472,9 +594,16 @@ void ScenePainter::setScene(const Scene& scene)
     if (!scene.effects.empty())
         meshes = objectMeshes(scene);
     const EffectOutcomes outcomes = runEffects(pipeline, meshes, scene.effects);
-    for (std::size_t o = 0; o < objects.size(); ++o) {
-        const auto& [faces, edges] = objects[o];
-        if (outcomes.cull || outcomes.depth) {
+    // Each object's faces: in front, culled, or fighting for depth.
+    struct FaceSets {
+        PolygonMesh front, back, fights;
+        vtkSmartPointer<vtkPolyData> levels; // front faces with their stored depth levels
+    };
+    std::vector<FaceSets> faceSets(objects.size());
+    std::optional<DepthBands> bands;
+    if (outcomes.cull || outcomes.depth) {
+        double low = std::numeric_limits<double>::infinity(), high = -low;
+        for (std::size_t o = 0; o < objects.size(); ++o) {
             std::vector<bool> fighting(meshes[o].faces.size(), false);
             if (outcomes.depth)
                 for (const auto& pair : outcomes.depth->zFighting) {
@@ -483,20 +612,39 @@ void ScenePainter::setScene(const Scene& scene)
                     if (std::size_t(pair[2]) == o)
                         fighting[std::size_t(pair[3])] = true;
                 }
-            PolygonMesh front, back, fights;
-            front.vertices = back.vertices = fights.vertices = meshes[o].vertices;
+            FaceSets& sets = faceSets[o];
+            sets.front.vertices = sets.back.vertices = sets.fights.vertices = meshes[o].vertices;
             for (std::size_t f = 0; f < meshes[o].faces.size(); ++f) {
                 const bool culled = outcomes.cull && outcomes.cull->culledFaces[o][f];
-                (fighting[f] ? fights : culled ? back : front).faces.push_back(meshes[o].faces[f]);
+                (fighting[f] ? sets.fights : culled ? sets.back : sets.front).faces.push_back(meshes[o].faces[f]);
             }
-            addLayer(Element::Objects, facesData(front), true, 0.35);
-            if (!back.faces.empty())
-                addLayer(Element::Objects, facesData(back), true, 0.06);
-            if (!fights.faces.empty())
-                addLayer(Element::Dop, facesData(fights), true, 0.6);
+            if (outcomes.depth && !sets.front.faces.empty()) {
+                sets.levels = depthLevels(sets.front, pipeline, *scene.effects.depth);
+                double range[2];
+                sets.levels->GetPointData()->GetScalars()->GetRange(range); // NaN skipped
+                if (range[0] <= range[1])
+                    low = std::min(low, range[0]), high = std::max(high, range[1]);
+            }
+        }
+        if (low <= high)
+            bands = depthBands(low, high, 24);
+    }
+    const vtkSmartPointer<vtkLookupTable> bandTable = bands ? bandColors(*bands) : nullptr;
+    for (std::size_t o = 0; o < objects.size(); ++o) {
+        const auto& [faces, edges] = objects[o];
+        const FaceSets& sets = faceSets[o];
+        if (sets.levels && bandTable) {
+            addLayer(Element::Objects, sets.levels, true, 0.9);
+            colorByLevels(layers_.back().actor, bandTable);
+        } else if (outcomes.cull || outcomes.depth) {
+            addLayer(Element::Objects, facesData(sets.front), true, 0.35);
         } else {
             addLayer(Element::Objects, faces, true, 0.35);
         }
+        if (!sets.back.faces.empty())
+            addLayer(Element::Objects, facesData(sets.back), true, 0.06);
+        if (!sets.fights.faces.empty())
+            addLayer(Element::Dop, facesData(sets.fights), true, 0.6);
         if (outcomes.clip) {
             std::vector<Segment> kept, away;
             const auto indices = meshEdgeIndices(meshes[o]);
@@ -552,7 +700,10 @@ void ScenePainter::setScene(const Scene& scene)
     for (std::size_t k = 0; k < 4; ++k)
         window.emplace_back(setup.window[k], setup.window[(k + 1) % 4]);
     addLayer(Element::Window, linesData(window), false, 1.0);
-    addLayer(Element::Window, sphere(setup.windowCenter, marker), true, 1.0);
+    // In perspective, small beside its distance from the eye, or the divide would blow it up.
+    const double centerMarker =
+        setup.perspective ? std::min(marker, 0.05 * (setup.windowCenter - setup.prp).norm()) : marker;
+    addLayer(Element::Window, sphere(setup.windowCenter, centerMarker), true, 1.0);
     addLabel(Element::Window, "CW", setup.windowCenter);
 
     const Vec3<double> dop = setup.windowCenter - setup.prp;
@@ -598,9 +749,15 @@ void ScenePainter::setScene(const Scene& scene)
     addLayer(Element::Canonical, linesData(canonical), false, 1.0);
 
     if (projected_) {
-        for (const ObjectGeometry& object : objects)
-            for (const auto& actor : objectActors(object, theme_))
-                projectedActors_.push_back(actor);
+        for (std::size_t o = 0; o < objects.size(); ++o) {
+            const auto actors = objectActors(objects[o], theme_);
+            if (faceSets[o].levels && bandTable) { // what the depth buffer holds, in bands
+                vtkPolyDataMapper::SafeDownCast(actors.front()->GetMapper())->SetInputData(faceSets[o].levels);
+                colorByLevels(actors.front(), bandTable);
+                actors.front()->GetProperty()->SetOpacity(0.9);
+            }
+            projectedActors_.insert(projectedActors_.end(), actors.begin(), actors.end());
+        }
         // The window's outline, at mid depth so that no clipping plane cuts it.
         std::vector<Segment> border;
         for (std::size_t k = 0; k < 4; ++k)
@@ -616,6 +773,9 @@ void ScenePainter::setScene(const Scene& scene)
             projected_->AddActor(a);
         setUpProjectedView(scene, pipeline, outcomes.raster ? &*outcomes.raster : nullptr);
     }
+    outcomes_ = outcomes;
+    effectsNote_ = describeEffects(scene.effects, outcomes, pipeline, bands);
+    effectsCaption_->SetInput(effectsNote_.c_str());
     applyStyle();
     show(Mat4<double>::Identity(), 0);
 }
@@ -844,6 +1004,7 @@ std::optional<Vec3<double>> ScenePainter::pickVertex(int displayX, int displayY)
 void ScenePainter::setTextVisible(bool visible)
 {
     worldCaption_->SetVisibility(visible);
+    effectsCaption_->SetVisibility(visible);
     projectedCaption_->SetVisibility(visible);
     for (Label& label : labels_)
         label.actor->SetVisibility(visible && project(shownMatrix_, label.world).has_value());
@@ -898,6 +1059,9 @@ void ScenePainter::applyStyle()
         caption->GetTextProperty()->SetColor(c.r, c.g, c.b);
         caption->GetTextProperty()->SetFontSize(fontSize_);
     }
+    const Rgb note = color(Element::Objects, theme_);
+    effectsCaption_->GetTextProperty()->SetColor(note.r, note.g, note.b);
+    effectsCaption_->GetTextProperty()->SetFontSize(std::max(8, fontSize_ * 3 / 4));
     const Rgb dop = color(Element::Dop, theme_);
     vanishing_->GetProperty()->SetColor(dop.r, dop.g, dop.b);
     vanishing_->GetProperty()->SetOpacity(0.7);

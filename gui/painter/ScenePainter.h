@@ -101,6 +101,12 @@ public:
     // position of the world view, if any.
     std::optional<Vec3<double>> pickVertex(int displayX, int displayY) const;
 
+    // One line per listed effect, as shown at the bottom of the world view:
+    // what it found (clip counts, culled faces, depth bands, raster coverage).
+    const std::string& effectsNote() const { return effectsNote_; }
+    // What the scene's effects found, computed once per setScene.
+    const EffectOutcomes& effectOutcomes() const { return outcomes_; }
+
     static Rgb color(Element element, Theme theme);
     static Rgb faceColor(Theme theme);
 
@@ -118,6 +124,9 @@ private:
     vtkRenderer* projected_;
     vtkSmartPointer<vtkTextActor> worldCaption_;
     vtkSmartPointer<vtkTextActor> projectedCaption_;
+    vtkSmartPointer<vtkTextActor> effectsCaption_;
+    std::string effectsNote_;
+    EffectOutcomes outcomes_;
     vtkSmartPointer<vtkActor> frameAxes_;
     vtkSmartPointer<vtkActor2D> vanishing_;  // vanishing points and the lines meeting there, projected view
     vtkSmartPointer<vtkActor2D> rasterGrid_; // the raster effect's pixels, projected view

@@ -1,0 +1,35 @@
+#pragma once
+
+// What the charts (accuracy, depth resolution) share: axes in powers of ten,
+// chart titles and legends styled for a theme, and writing a chart as a PNG.
+
+#include <filesystem>
+#include <functional>
+#include <string>
+
+#include "painter/ScenePainter.h"
+
+class vtkAxis;
+class vtkChart;
+class vtkContextView;
+
+namespace viewpipe::gui {
+
+// VTK's charts hold points in single precision, where tiny errors (1e-50)
+// underflow: values are plotted as log10 on a linear axis, labelled in powers
+// of ten, from a decade below `low` to a decade above `high`, at most a dozen labels.
+void styleLogAxis(vtkAxis* axis, const std::string& title, Theme theme, double low, double high);
+
+// A linear axis: title and labels in the theme's colors.
+void styleAxis(vtkAxis* axis, const std::string& title, Theme theme);
+
+// The chart's title and legend in the theme's colors.
+void styleChart(vtkChart* chart, const std::string& title, Theme theme);
+
+// Renders what `draw` puts into an offscreen context view of the given size
+// and writes it as a PNG, atomically (temporary file, then rename); throws
+// InputError naming `field` when it cannot be written. Needs a display.
+void writeChartPng(const std::function<void(vtkContextView*)>& draw, int width, int height, Theme theme,
+                   const std::filesystem::path& file, const std::string& field);
+
+} // namespace viewpipe::gui
