@@ -36,6 +36,7 @@
 #include "AppPaths.h"
 #include "ClassicalDialog.h"
 #include "ClickStyle.h"
+#include "DepthPanel.h"
 #include "ExportDialog.h"
 #include "cli/latex.hpp"
 #include "MatrixPanel.h"
@@ -190,9 +191,12 @@ void MainWindow::buildDocks()
     accuracy_ = new AccuracyPanel;
     accuracy_->setSceneSource([this] { return document_->scene(); });
     QDockWidget* accuracyDock = dock(tr("Accuracy"), "accuracyDock", accuracy_, Qt::RightDockWidgetArea);
+    depth_ = new DepthPanel;
+    QDockWidget* depthDock = dock(tr("Depth"), "depthDock", depth_, Qt::RightDockWidgetArea);
     // The 3D view gets the room: parameters and accuracy share the right side with the matrices.
     tabifyDockWidget(matrixDock, parametersDock);
     tabifyDockWidget(matrixDock, accuracyDock);
+    tabifyDockWidget(matrixDock, depthDock);
     matrixDock->raise();
     resizeDocks({stagesDock, matrixDock}, {280, 430}, Qt::Horizontal);
 }
@@ -294,12 +298,125 @@ void MainWindow::buildMenus()
     view->addAction(tr("&Larger Text"), this, [this] { setFontSize(fontSize_ + 2); }, QKeySequence::ZoomIn);
     view->addAction(tr("&Smaller Text"), this, [this] { setFontSize(fontSize_ - 2); }, QKeySequence::ZoomOut);
 
+    buildEffectsMenu();
+
     QMenu* help = menuBar()->addMenu(tr("&Help"));
     help->addAction(tr("&About ViewPipe"), this, [this] {
         QMessageBox::about(this, tr("About ViewPipe"),
                            tr("<b>ViewPipe</b><p>Step through the 3D viewing pipeline: Foley &amp; van Dam's "
                               "normalizing transformation and the OpenGL forms.</p>"));
     });
+}
+
+void MainWindow::buildEffectsMenu()
+{
+    QMenu* effects = menuBar()->addMenu(tr("E&ffects"));
+    effects->setObjectName("effectsMenu");
+    effects->setToolTipsVisible(true);
+    auto toggle = [this, effects](const QString& text, const std::string& name, const QString& tip) {
+        QAction* action = effects->addAction(text);
+        action->setCheckable(true);
+        action->setToolTip(tip);
+        connect(action, &QAction::triggered, this, [this, name, text](bool on) {
+            editEffects((on ? tr("Turn on %1") : tr("Turn off %1")).arg(QString(text).remove('&')),
+                        [name, on](EffectList list) { return withEffect(std::move(list), name, on); });
+        });
+        return action;
+    };
+    clipAction_ = toggle(tr("&Clip to the View Volume"), "clip",
+                         tr("Clip edges and faces in homogeneous coordinates; clipped-away parts are ghosted"));
+    divideAction_ = toggle(tr("&Divide (stage M)"), "divide",
+                           tr("Append Foley's M (OpenGL: the divide into NDC) as a stage"));
+    cullAction_ = toggle(tr("Back-Face C&ulling"), "cull", tr("Ghost the faces turned away from the viewer"));
+
+    QMenu* depth = effects->addMenu(tr("Depth &Buffer"));
+    depth->setObjectName("depthMenu");
+    depthGroup_ = new QActionGroup(this);
+    depthGroup_->setExclusionPolicy(QActionGroup::ExclusionPolicy::ExclusiveOptional);
+    const std::vector<std::pair<QString, QString>> formats = {{tr("Off"), ""},
+                                                              {tr("16-bit Fixed Point"), "16,0"},
+                                                              {tr("24-bit Fixed Point"), "24,0"},
+                                                              {tr("32-bit Fixed Point"), "32,0"},
+                                                              {tr("32-bit Float"), "32,1"}};
+    for (const auto& [text, data] : formats) {
+        QAction* action = depth->addAction(text);
+        action->setCheckable(true);
+        action->setData(data);
+        depthGroup_->addAction(action);
+        connect(action, &QAction::triggered, this, [this, text = text, data = data] {
+            editEffects(data.isEmpty() ? tr("Turn off the depth buffer") : tr("Depth buffer: %1").arg(text),
+                        [data](EffectList list) {
+                            if (data.isEmpty())
+                                return withEffect(std::move(list), "depth", false);
+                            const bool reversed = list.depth && list.depth->reversed;
+                            list.depth = DepthOptions{data.section(',', 0, 0).toInt(), data.endsWith('1'), reversed};
+                            return withEffect(std::move(list), "depth", true);
+                        });
+        });
+    }
+    depth->addSeparator();
+    reversedAction_ = depth->addAction(tr("&Reversed Z (near 1, far 0)"));
+    reversedAction_->setCheckable(true);
+    connect(reversedAction_, &QAction::triggered, this, [this](bool on) {
+        editEffects(on ? tr("Reverse the depth buffer") : tr("Unreverse the depth buffer"), [on](EffectList list) {
+            list.depth = list.depth.value_or(DepthOptions{});
+            list.depth->reversed = on;
+            return withEffect(std::move(list), "depth", true);
+        });
+    });
+
+    QMenu* raster = effects->addMenu(tr("&Raster"));
+    raster->setObjectName("rasterMenu");
+    rasterGroup_ = new QActionGroup(this);
+    rasterGroup_->setExclusionPolicy(QActionGroup::ExclusionPolicy::ExclusiveOptional);
+    for (const QSize& size : {QSize(), QSize(16, 12), QSize(32, 24), QSize(64, 48), QSize(128, 96)}) {
+        const QString text = size.isValid() ? tr("%1 × %2 Pixels").arg(size.width()).arg(size.height()) : tr("Off");
+        QAction* action = raster->addAction(text);
+        action->setCheckable(true);
+        action->setData(size);
+        rasterGroup_->addAction(action);
+        connect(action, &QAction::triggered, this, [this, size, text] {
+            editEffects(size.isValid() ? tr("Raster: %1").arg(text) : tr("Turn off the raster"),
+                        [size](EffectList list) {
+                            if (!size.isValid())
+                                return withEffect(std::move(list), "raster", false);
+                            list.raster = RasterOptions{size.width(), size.height()};
+                            return withEffect(std::move(list), "raster", true);
+                        });
+        });
+    }
+    effects->addSeparator();
+    effects->addAction(tr("Show the &Depth Panel"), this, [this] { showPanel("depth"); });
+}
+
+void MainWindow::editEffects(const QString& description, const std::function<EffectList(EffectList)>& edit)
+{
+    try {
+        const EffectList next = edit(document_->scene().effects);
+        if (!(next == document_->scene().effects))
+            document_->setEffects(next, description);
+    } catch (const InputError& e) {
+        showMessage(QString::fromStdString(e.what()));
+    }
+    updateEffectsMenu(); // a refused edit leaves the menu as the scene is
+}
+
+void MainWindow::updateEffectsMenu()
+{
+    const EffectList& effects = document_->scene().effects;
+    clipAction_->setChecked(effects.clip);
+    divideAction_->setChecked(effects.divide);
+    cullAction_->setChecked(effects.cull);
+    const QString format =
+        effects.depth ? QString("%1,%2").arg(effects.depth->bits).arg(effects.depth->floating ? 1 : 0) : QString();
+    for (QAction* action : depthGroup_->actions())
+        action->setChecked(action->data().toString() == format);
+    reversedAction_->setChecked(effects.depth && effects.depth->reversed);
+    reversedAction_->setEnabled(effects.depth.has_value());
+    // A size from the scene file that the menu does not offer leaves all unchecked.
+    const QSize size = effects.raster ? QSize(effects.raster->width, effects.raster->height) : QSize();
+    for (QAction* action : rasterGroup_->actions())
+        action->setChecked(action->data().toSize() == size);
 }
 
 bool MainWindow::openScene(const QString& path)
@@ -344,6 +461,8 @@ void MainWindow::onDocumentChanged()
         return;
     }
     parameters_->setCamera(document_->scene().camera);
+    updateEffectsMenu();
+    depth_->showDepth(document_->pipeline(), painter_->effectOutcomes().depth, painter_->theme());
     const auto& stages = document_->pipeline().stages;
     const QSignalBlocker blockList(stageList_);
     const QSignalBlocker blockSlider(slider_);
@@ -451,6 +570,7 @@ void MainWindow::setTheme(Theme theme)
 {
     painter_->setTheme(theme);
     accuracy_->setTheme(theme);
+    depth_->showDepth(document_->pipeline(), painter_->effectOutcomes().depth, theme);
     applyTheme(theme);
     QSettings().setValue("theme", theme == Theme::Light ? "light" : "dark");
     renderNow();

@@ -7,6 +7,7 @@
 #include <QMainWindow>
 #include <QPointer>
 
+#include <functional>
 #include <memory>
 #include <optional>
 
@@ -16,6 +17,7 @@
 #include "painter/StageTransition.h"
 
 class QAction;
+class QActionGroup;
 class QLabel;
 class QListWidget;
 class QMenu;
@@ -29,6 +31,7 @@ class vtkRenderer;
 namespace viewpipe::gui {
 
 class AccuracyPanel;
+class DepthPanel;
 class MatrixPanel;
 class ParameterPanel;
 
@@ -68,7 +71,11 @@ public:
     void setTheme(Theme theme);
     void setFontSize(int points);
     void setProjectedViewVisible(bool visible);
-    // Brings a dock to the front: "stages", "matrices", "parameters" or "accuracy".
+    // Effects menu: turns an effect on or off (with its parameters) as one
+    // undoable edit of the scene's effect list.
+    void editEffects(const QString& description, const std::function<EffectList(EffectList)>& edit);
+
+    // Brings a dock to the front: "stages", "matrices", "parameters", "accuracy" or "depth".
     void showPanel(const QString& name);
     void renderNow();
 
@@ -76,6 +83,7 @@ public:
     ParameterPanel* parameters() { return parameters_; }
     MatrixPanel* matrices() { return matrices_; }
     AccuracyPanel* accuracy() { return accuracy_; }
+    DepthPanel* depth() { return depth_; }
     ScenePainter* painter() { return painter_.get(); }
     QListWidget* stageList() { return stageList_; }
 
@@ -88,6 +96,8 @@ private:
     void buildViews();
     void buildDocks();
     void buildMenus();
+    void buildEffectsMenu();
+    void updateEffectsMenu();
     void onDocumentChanged();
     void onCameraEdited(const CameraSpec<double>& camera, const QString& field);
     void startStep();
@@ -115,11 +125,18 @@ private:
     QPushButton* playButton_ = nullptr;
     MatrixPanel* matrices_ = nullptr;
     AccuracyPanel* accuracy_ = nullptr;
+    DepthPanel* depth_ = nullptr;
     ParameterPanel* parameters_ = nullptr;
     QVariantAnimation* animation_ = nullptr;
     QMenu* recentMenu_ = nullptr;
     QMenu* presetMenu_ = nullptr;
     QAction* projectedAction_ = nullptr;
+    QAction* clipAction_ = nullptr;
+    QAction* divideAction_ = nullptr;
+    QAction* cullAction_ = nullptr;
+    QAction* reversedAction_ = nullptr;
+    QActionGroup* depthGroup_ = nullptr;  // off, or a format: data "bits,float"
+    QActionGroup* rasterGroup_ = nullptr; // off, or a size: data QSize
 
     int stage_ = 0;  // where the picture is, or where the running step started
     int target_ = 0; // where the stepper is going

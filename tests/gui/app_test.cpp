@@ -8,6 +8,7 @@
 #include <QTimer>
 #include <QDoubleSpinBox>
 #include <QListWidget>
+#include <QMenu>
 #include <QSignalSpy>
 #include <QStandardPaths>
 #include <QSurfaceFormat>
@@ -32,6 +33,7 @@
 
 #include "app/AccuracyPanel.h"
 #include "app/ClassicalDialog.h"
+#include "app/DepthPanel.h"
 #include "app/MainWindow.h"
 #include "app/MatrixPanel.h"
 #include "app/ParameterPanel.h"
@@ -48,6 +50,31 @@ QImage worldPicture(MainWindow& window)
 {
     window.renderNow();
     return window.findChild<QVTKOpenGLNativeWidget*>("worldView")->grabFramebuffer();
+}
+
+// The action of a menu (by object name) whose text, without the mnemonic, is `text`.
+QAction* menuAction(MainWindow& window, const QString& menu, const QString& text)
+{
+    for (QAction* action : window.findChild<QMenu*>(menu)->actions())
+        if (action->text().remove('&') == text)
+            return action;
+    qFatal("no action \"%s\" in %s", qPrintable(text), qPrintable(menu));
+}
+
+// Pixels of the projected view in a band color of the depth effect: strongly
+// yellow or green, which no other element of the dark theme uses.
+int bandPixels(MainWindow& window)
+{
+    window.renderNow();
+    const QImage image =
+        window.findChild<QVTKOpenGLNativeWidget*>("projectedView")->grabFramebuffer().convertToFormat(QImage::Format_RGB32);
+    int count = 0;
+    for (int y = 0; y < image.height(); ++y)
+        for (int x = 0; x < image.width(); ++x) {
+            const QRgb c = image.pixel(x, y);
+            count += qGreen(c) > 120 && qBlue(c) < 90 && qGreen(c) > qBlue(c) + 80;
+        }
+    return count;
 }
 
 void waitForRest(MainWindow& window)
@@ -377,6 +404,79 @@ private slots:
               100 * share, raster.covered);
         QVERIFY(raster.covered > width * height / 20);
         QVERIFY(share < 0.01);
+    }
+
+    // The Effects menu edits the scene's list, one undoable step each; the
+    // stepper, the note under the world view and the Depth panel follow, and
+    // a saved scene keeps the list.
+    void effectsMenuTogglesEffectsUndoably()
+    {
+        MainWindow& w = *window_;
+        const EffectList& effects = w.document()->scene().effects;
+        QUndoStack* undo = w.document()->undoStack();
+        const int stages = w.stageCount();
+        QAction* divide = menuAction(w, "effectsMenu", "Divide (stage M)");
+        divide->trigger();
+        QCOMPARE(w.stageCount(), stages + 1);
+        QCOMPARE(w.document()->pipeline().stages.back().symbol, std::string("M"));
+        QCOMPARE(w.stageList()->count(), stages + 2);
+        QVERIFY(divide->isChecked());
+        undo->undo();
+        QCOMPARE(w.stageCount(), stages);
+        QVERIFY(!divide->isChecked());
+
+        menuAction(w, "depthMenu", "16-bit Fixed Point")->trigger();
+        QVERIFY(effects.depth && effects.depth->bits == 16 && !effects.depth->floating);
+        QVERIFY(w.depth()->summary().contains("16-bit fixed point"));
+        QVERIFY(w.painter()->effectsNote().find("depth: 16-bit fixed point; each band") != std::string::npos);
+        QAction* reversed = menuAction(w, "depthMenu", "Reversed Z (near 1, far 0)");
+        QVERIFY(reversed->isEnabled());
+        reversed->trigger();
+        QVERIFY(effects.depth->reversed && effects.depth->bits == 16);
+        menuAction(w, "depthMenu", "32-bit Float")->trigger(); // keeps reversed
+        QVERIFY(effects.depth->floating && effects.depth->bits == 32 && effects.depth->reversed);
+        undo->undo();
+        undo->undo();
+        QVERIFY(effects.depth && !effects.depth->reversed && !effects.depth->floating);
+        QVERIFY(menuAction(w, "depthMenu", "16-bit Fixed Point")->isChecked());
+        menuAction(w, "depthMenu", "Off")->trigger();
+        QVERIFY(!effects.depth);
+        QVERIFY(!reversed->isEnabled());
+        QVERIFY(w.depth()->summary().contains("does not simulate"));
+
+        menuAction(w, "rasterMenu", "32 × 24 Pixels")->trigger();
+        QVERIFY(effects.raster && effects.raster->width == 32 && effects.raster->height == 24);
+        QVERIFY(w.painter()->effectsNote().find("raster: 32 x 24") != std::string::npos);
+        menuAction(w, "effectsMenu", "Clip to the View Volume")->trigger();
+        QCOMPARE(effects.names, (std::vector<std::string>{"raster", "clip"}));
+        QCOMPARE(undo->undoText(), QString("Turn on Clip to the View Volume"));
+
+        // Choosing what is already chosen is no edit.
+        const int edits = undo->count();
+        menuAction(w, "rasterMenu", "32 × 24 Pixels")->trigger();
+        QCOMPARE(undo->count(), edits);
+
+        QTemporaryDir dir;
+        const QString path = dir.filePath("effects.json");
+        QVERIFY(w.saveScene(path));
+        QCOMPARE(loadScene(path.toStdString()).effects.names, effects.names);
+    }
+
+    // Depth bands color the corridor's posts in the projected view; without
+    // the effect no band color appears.
+    void depthBandsColorTheScene()
+    {
+        MainWindow& w = *window_;
+        QVERIFY(w.openScene(QString(VIEWPIPE_DATA_DIR) + "/scenes/depth-corridor.json"));
+        w.showPanel("depth");
+        const int banded = bandPixels(w);
+        QVERIFY2(banded > 2000, qPrintable(QString::number(banded)));
+        QVERIFY(w.depth()->summary().contains("z-fight"));
+        w.editEffects("Turn off the depth buffer", [](EffectList list) { return withEffect(std::move(list), "depth", false); });
+        QVERIFY(!w.document()->scene().effects.depth);
+        QCOMPARE(bandPixels(w), 0);
+        w.document()->undoStack()->undo();
+        QCOMPARE(bandPixels(w), banded);
     }
 
     void eigenVtkAdapterKeepsRowsAndColumns()

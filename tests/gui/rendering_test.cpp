@@ -10,6 +10,7 @@
 #include <QDir>
 #include <QImage>
 #include <QJsonDocument>
+#include <QJsonObject>
 #include <QProcess>
 #include <QStandardPaths>
 #include <QTemporaryDir>
@@ -152,6 +153,45 @@ private slots:
         const Run json = viewpipe({"pipeline", kHouse, "--json"});
         QCOMPARE(QJsonDocument::fromJson(readAll(out + "/matrices.json").toUtf8()),
                  QJsonDocument::fromJson(json.out.toUtf8()));
+    }
+
+    // Effects are drawn into exported pictures: the same stage of the corridor
+    // with and without its effects differs (depth bands, z-fighting faces, the
+    // note), and the depth effect adds its resolution plot, whose curve for the
+    // scene's buffer is drawn in its red.
+    void exportDrawsEffects()
+    {
+        QTemporaryDir dir;
+        const QString corridor = QString(VIEWPIPE_DATA_DIR) + "/scenes/depth-corridor.json";
+        QJsonObject plain = QJsonDocument::fromJson(readAll(corridor).toUtf8()).object();
+        plain.remove("effects");
+        const QString plainScene = dir.filePath("plain.json");
+        QFile file(plainScene);
+        QVERIFY(file.open(QIODevice::WriteOnly));
+        file.write(QJsonDocument(plain).toJson());
+        file.close();
+        Run r = viewpipe({"export", corridor, "--out", dir.filePath("effects"), "--stages", "4", "--quiet"});
+        QVERIFY2(r.exitCode == 0, qPrintable(r.err));
+        r = viewpipe({"export", plainScene, "--out", dir.filePath("plain"), "--stages", "4", "--quiet"});
+        QVERIFY2(r.exitCode == 0, qPrintable(r.err));
+        QCOMPARE(QDir(dir.filePath("effects")).entryList(QDir::Files, QDir::Name),
+                 QStringList({"04-p-depth.png", "depth-resolution.png", "matrices.json", "matrices.tex"}));
+        QVERIFY(!QFile::exists(dir.filePath("plain/depth-resolution.png")));
+        const QImage with(dir.filePath("effects/04-p-depth.png")), without(dir.filePath("plain/04-p-depth.png"));
+        QVERIFY(contentShare(with) > 0.02);
+        const double changed = differingShare(with, without, 40);
+        qInfo("effects change %.2f%% of the exported stage", 100 * changed);
+        QVERIFY(changed > 0.002);
+
+        const QImage plot = QImage(dir.filePath("effects/depth-resolution.png")).convertToFormat(QImage::Format_RGB32);
+        QCOMPARE(plot.size(), QSize(1200, 700));
+        int red = 0;
+        for (int y = 0; y < plot.height(); ++y)
+            for (int x = 0; x < plot.width(); ++x) {
+                const QRgb c = plot.pixel(x, y);
+                red += qRed(c) > 200 && qGreen(c) < 60 && qBlue(c) < 60;
+            }
+        QVERIFY2(red > 1500, qPrintable(QString::number(red)));
     }
 
     void exportWritesVectorFormats()

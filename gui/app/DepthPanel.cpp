@@ -1,0 +1,81 @@
+#include "DepthPanel.h"
+
+#include <QLabel>
+#include <QVBoxLayout>
+
+#include <QVTKOpenGLNativeWidget.h>
+#include <vtkChartXY.h>
+#include <vtkContextScene.h>
+#include <vtkContextView.h>
+#include <vtkGenericOpenGLRenderWindow.h>
+#include <vtkRenderer.h>
+
+#include "export/DepthPlot.h"
+
+namespace viewpipe::gui {
+
+DepthPanel::DepthPanel(QWidget* parent) : QWidget(parent)
+{
+    auto* layout = new QVBoxLayout(this);
+    summary_ = new QLabel;
+    summary_->setObjectName("depthSummary");
+    summary_->setWordWrap(true);
+    summary_->setTextInteractionFlags(Qt::TextSelectableByMouse);
+    chartWidget_ = new QVTKOpenGLNativeWidget;
+    chartWidget_->setMinimumHeight(360);
+    auto window = vtkSmartPointer<vtkGenericOpenGLRenderWindow>::New();
+    chartWidget_->setRenderWindow(window);
+    // Owned here (released in the destructor): the widget outlives no VTK object it shows.
+    view_ = vtkContextView::New();
+    view_->SetRenderWindow(window);
+    chart_ = vtkChartXY::New();
+    view_->GetScene()->AddItem(chart_);
+    layout->addWidget(summary_);
+    layout->addWidget(chartWidget_, 1);
+    showDepth({}, std::nullopt, Theme::Dark);
+}
+
+DepthPanel::~DepthPanel()
+{
+    chart_->Delete();
+    view_->Delete();
+}
+
+QString DepthPanel::summary() const
+{
+    return summary_->text();
+}
+
+void DepthPanel::showDepth(const Pipeline<double>& pipeline, const std::optional<DepthOutcome>& depth, Theme theme)
+{
+    const double bg = theme == Theme::Dark ? 0.11 : 1.0;
+    view_->GetRenderer()->SetBackground(bg, bg, bg);
+    chartWidget_->setVisible(depth.has_value());
+    if (!depth) {
+        summary_->setText(tr("This scene does not simulate a depth buffer. Turn it on with Effects ▸ Depth Buffer "
+                             "to see its bands on the scene, its resolution against distance and the faces it "
+                             "cannot order."));
+        chart_->ClearPlots();
+        return;
+    }
+    const DepthOptions& o = depth->options;
+    QString text = tr("<b>%1-bit %2%3</b> depth buffer. The scene's %4 vertices in the view volume get %5 distinct "
+                      "stored values.")
+                       .arg(o.bits)
+                       .arg(o.floating ? tr("float") : tr("fixed point"))
+                       .arg(o.reversed ? tr(", reversed") : QString())
+                       .arg(depth->vertices)
+                       .arg(depth->distinctValues);
+    if (!depth->zFightingChecked)
+        text += tr(" Z-fighting is not checked: the scene has too many faces to compare pairwise.");
+    else if (depth->zFighting.empty())
+        text += tr(" No faces z-fight: the buffer orders every overlap.");
+    else
+        text += tr(" <span style='color:#e04040'>%n pair(s) of faces z-fight</span> (red in the views): the buffer "
+                   "stores the same value for both where they overlap.", nullptr, int(depth->zFighting.size()));
+    summary_->setText(text);
+    drawDepthChart(chart_, pipeline, o, theme);
+    chartWidget_->renderWindow()->Render();
+}
+
+} // namespace viewpipe::gui
