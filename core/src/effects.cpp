@@ -271,8 +271,8 @@ DepthOutcome depthOutcome(const Pipeline<double>& p, const std::vector<PolygonMe
         std::vector<Vec3<double>> picture; // x, y, window depth
     };
     std::vector<Face> faces;
-    for (std::size_t o = 0; o < objects.size(); ++o)
-        for (std::size_t f = 0; f < objects[o].faces.size(); ++f) {
+    for (std::size_t o = 0; o < objects.size() && faces.size() <= kMaxFightFaces; ++o)
+        for (std::size_t f = 0; f < objects[o].faces.size() && faces.size() <= kMaxFightFaces; ++f) {
             Face face{int(o), int(f), {}};
             bool visible = true;
             for (int i : objects[o].faces[f]) {
