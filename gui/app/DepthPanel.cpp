@@ -71,8 +71,10 @@ void DepthPanel::showDepth(const Pipeline<double>& pipeline, const std::optional
     else if (depth->zFighting.empty())
         text += tr(" No faces z-fight: the buffer orders every overlap.");
     else
-        text += tr(" <span style='color:#e04040'>%n pair(s) of faces z-fight</span> (red in the views): the buffer "
-                   "stores the same value for both where they overlap.", nullptr, int(depth->zFighting.size()));
+        text += (depth->zFighting.size() == 1 ? tr(" <span style='color:#e04040'>1 pair of faces z-fights</span>")
+                                               : tr(" <span style='color:#e04040'>%1 pairs of faces z-fight</span>")
+                                                     .arg(depth->zFighting.size())) +
+                tr(" (red in the views): the buffer stores the same value for both where they overlap.");
     summary_->setText(text);
     drawDepthChart(chart_, pipeline, o, theme);
     chartWidget_->renderWindow()->Render();

@@ -34,8 +34,9 @@ void drawDepthChart(vtkChartXY* chart, const Pipeline<double>& pipeline, const D
     const bool foley = pipeline.convention == Convention::Foley;
     styleChart(chart, "Depth resolution against distance", theme);
     chart->SetShowLegend(true);
-    chart->GetLegend()->SetHorizontalAlignment(vtkChartLegend::LEFT);
-    chart->GetLegend()->SetVerticalAlignment(vtkChartLegend::TOP);
+    // Bottom right: the curves rise from there, and it stays clear of them.
+    chart->GetLegend()->SetHorizontalAlignment(vtkChartLegend::RIGHT);
+    chart->GetLegend()->SetVerticalAlignment(vtkChartLegend::BOTTOM);
 
     std::vector<DepthOptions> formats = {{16, false, false}, {24, false, false}, {32, false, false},
                                          {32, true, false}, {32, true, true}};
@@ -56,7 +57,8 @@ void drawDepthChart(vtkChartXY* chart, const Pipeline<double>& pipeline, const D
                 continue; // a level cut short by the far plane is no measure of resolution
             x->InsertNextValue(sample.distance);
             y->InsertNextValue(std::log10(sample.step));
-            low = std::min(low, sample.step), high = std::max(high, sample.step), reach = sample.distance;
+            low = std::min(low, sample.step), high = std::max(high, sample.step);
+            reach = std::max(reach, sample.distance);
         }
         table->AddColumn(x);
         table->AddColumn(y);

@@ -525,6 +525,7 @@ void ScenePainter::clear()
     layers_.clear();
     labels_.clear();
     projectedActors_.clear();
+    projectedFights_.clear();
 }
 
 void ScenePainter::addLayer(Element element, vtkSmartPointer<vtkPolyData> geometry, bool surface, double opacity)
@@ -757,6 +758,16 @@ void ScenePainter::setScene(const Scene& scene)
                 actors.front()->GetProperty()->SetOpacity(0.9);
             }
             projectedActors_.insert(projectedActors_.end(), actors.begin(), actors.end());
+            if (!faceSets[o].fights.faces.empty()) { // faces the buffer cannot order, over the picture
+                auto mapper = vtkSmartPointer<vtkPolyDataMapper>::New();
+                mapper->SetInputData(facesData(faceSets[o].fights));
+                auto fights = vtkSmartPointer<vtkActor>::New();
+                fights->SetMapper(mapper);
+                fights->GetProperty()->LightingOff();
+                fights->GetProperty()->SetOpacity(0.6);
+                projectedFights_.push_back(fights);
+                projectedActors_.push_back(fights);
+            }
         }
         // The window's outline, at mid depth so that no clipping plane cuts it.
         std::vector<Segment> border;
@@ -1071,7 +1082,12 @@ void ScenePainter::applyStyle()
     for (std::size_t k = 0; k < projectedActors_.size(); ++k) {
         const bool border = k + 1 == projectedActors_.size();
         const bool face = projectedActors_[k]->GetProperty()->GetOpacity() < 1;
-        const Rgb c = border ? color(Element::Window, theme_) : face ? faceColor(theme_) : color(Element::Objects, theme_);
+        const bool fights = std::find(projectedFights_.begin(), projectedFights_.end(), projectedActors_[k]) !=
+                            projectedFights_.end();
+        const Rgb c = border   ? color(Element::Window, theme_)
+                      : fights ? color(Element::Dop, theme_)
+                      : face   ? faceColor(theme_)
+                               : color(Element::Objects, theme_);
         projectedActors_[k]->GetProperty()->SetColor(c.r, c.g, c.b);
     }
 }

@@ -133,6 +133,7 @@ private:
     std::vector<Layer> layers_;
     std::vector<Label> labels_;
     std::vector<vtkSmartPointer<vtkActor>> projectedActors_;
+    std::vector<vtkSmartPointer<vtkActor>> projectedFights_; // z-fighting faces, among projectedActors_
     Theme theme_ = Theme::Dark;
     int fontSize_ = 18;
     double lineScale_ = 1;
