@@ -71,13 +71,16 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent), document_(new Doc
     connect(animation_, &QVariantAnimation::valueChanged, this, [this](const QVariant& v) {
         if (transition_) {
             transition_->apply(v.toDouble());
-            renderNow();
+            // Only the world view moves; the projected view is the same picture at every stage.
+            worldWindow_->Render();
+            worldWidget_->update();
         }
     });
     connect(animation_, &QVariantAnimation::finished, this, [this] {
         stage_ = transition_->to();
         transition_.reset();
         updateStageWidgets();
+        renderNow(); // the new caption
         if (stage_ != target_)
             startStep();
         else

@@ -787,6 +787,7 @@ void ScenePainter::setScene(const Scene& scene)
     outcomes_ = outcomes;
     effectsNote_ = describeEffects(scene.effects, outcomes, pipeline, bands);
     effectsCaption_->SetInput(effectsNote_.c_str());
+    effectsCaption_->SetVisibility(!effectsNote_.empty());
     applyStyle();
     show(Mat4<double>::Identity(), 0);
 }
@@ -1015,7 +1016,7 @@ std::optional<Vec3<double>> ScenePainter::pickVertex(int displayX, int displayY)
 void ScenePainter::setTextVisible(bool visible)
 {
     worldCaption_->SetVisibility(visible);
-    effectsCaption_->SetVisibility(visible);
+    effectsCaption_->SetVisibility(visible && !effectsNote_.empty());
     projectedCaption_->SetVisibility(visible);
     for (Label& label : labels_)
         label.actor->SetVisibility(visible && project(shownMatrix_, label.world).has_value());
