@@ -52,7 +52,7 @@ const std::vector<PolygonMesh>& house()
 void Plain(benchmark::State& state, const std::vector<PolygonMesh>* objects)
 {
     const Pipeline<double>& p = housePipeline();
-    const Mat4<double> clip = p.toClip * p.composite;
+    const Mat4<double> clip = p.clipMatrix();
     std::vector<double> in, out;
     for (const PolygonMesh& m : *objects)
         for (const Vec3<double>& v : m.vertices)

@@ -10,6 +10,7 @@
 #include <sstream>
 #include <unistd.h>
 
+#include "app/AppPaths.h"
 #include "app/OpenCommand.h"
 #include "cli/report.hpp"
 #include "export/AccuracyPlot.h"
@@ -34,6 +35,21 @@ struct Options {
     std::vector<double> point;
     unsigned bits = 256;
 };
+
+// Runs a subcommand: bad input (InputError) exits 2 with "PREFIX: field: reason",
+// any other failure 1 with "PREFIX: what".
+template <class Body> int guarded(const std::string& inputPrefix, const std::string& internalPrefix, Body&& body)
+{
+    try {
+        return body();
+    } catch (const InputError& e) {
+        std::cerr << inputPrefix << ": " << e.what() << "\n";
+        return kExitBadInput;
+    } catch (const std::exception& e) {
+        std::cerr << internalPrefix << ": " << e.what() << "\n";
+        return kExitInternal;
+    }
+}
 
 std::atomic<bool> interrupted{false};
 
@@ -160,6 +176,7 @@ int main(int argc, char** argv)
         ->capture_default_str();
 
     std::size_t benchVertices = 1000000;
+    unsigned benchBits = 160;
     std::string benchPlot, benchViewport;
     CLI::App* benchCommand = app.add_subcommand(
         "bench", "What each precision costs in time and buys in accuracy (default scene: the house)");
@@ -167,7 +184,7 @@ int main(int argc, char** argv)
     benchCommand->add_flag("--json", options.json, "One JSON object on stdout");
     benchCommand->add_option("--plot", benchPlot, "Draw error against time (log-log) to this PNG");
     benchCommand->add_option("--vertices", benchVertices, "Vertices timed per run")->capture_default_str();
-    benchCommand->add_option("--bits", options.bits, "Significand bits of the mpfr tier (default 160)");
+    benchCommand->add_option("--bits", benchBits, "Significand bits of the mpfr tier")->capture_default_str();
     benchCommand->add_option("--viewport", benchViewport, "Viewport WxH for pixel errors (default 1920x1080)");
 
     try {
@@ -179,8 +196,8 @@ int main(int argc, char** argv)
         return kExitBadInput;
     }
 
-    if (*openCommand) {
-        try {
+    if (*openCommand)
+        return guarded(open.scene.empty() ? std::string("viewpipe open") : open.scene, "viewpipe: internal error", [&] {
             if (!size.empty()) {
                 std::tie(open.width, open.height) = parseSize(size, "--size");
                 if (open.width < 200 || open.height < 150 || open.width > 8192 || open.height > 8192)
@@ -189,33 +206,19 @@ int main(int argc, char** argv)
             if (!theme.empty())
                 open.theme = theme;
             return gui::runOpen(argc, argv, open);
-        } catch (const InputError& e) {
-            std::cerr << (open.scene.empty() ? std::string("viewpipe open") : open.scene) << ": " << e.what() << "\n";
-            return kExitBadInput;
-        } catch (const std::exception& e) {
-            std::cerr << "viewpipe: internal error: " << e.what() << "\n";
-            return kExitInternal;
-        }
-    }
+        });
 
-    if (*sheetCommand) {
-        try {
+    if (*sheetCommand)
+        return guarded(options.scene, "viewpipe sheet", [&] {
             const Scene scene = loadScene(options.scene);
             const auto [width, height] = parseSize(sheetSize, "--size");
             const gui::VirtualDisplay display;
             gui::exportSheet(scene, sheetOut, width, height, sheetTheme == "dark" ? gui::Theme::Dark : gui::Theme::Light);
             return 0;
-        } catch (const InputError& e) {
-            std::cerr << options.scene << ": " << e.what() << "\n";
-            return kExitBadInput;
-        } catch (const std::exception& e) {
-            std::cerr << "viewpipe sheet: " << e.what() << "\n";
-            return kExitInternal;
-        }
-    }
+        });
 
-    if (*classicalCommand) {
-        try {
+    if (*classicalCommand)
+        return guarded("viewpipe classical", "viewpipe classical", [&] {
             const auto kind = classicalKindNamed(classicalKind);
             if (!kind)
                 throw InputError("KIND", "unknown classical projection \"" + classicalKind + "\"");
@@ -234,33 +237,29 @@ int main(int argc, char** argv)
             Scene scene;
             scene.name = classicalObject + ", " + classicalName(*kind);
             SceneObject object;
-            Vec3<double> lo(0, 0, 30), hi(16, 16, 54); // the house's bounds
             if (classicalObject == "cube") {
                 object.type = ObjectType::Box;
-                object.min = lo = Vec3<double>(-5, -5, -5);
-                object.max = hi = Vec3<double>(5, 5, 5);
+                object.min = Vec3<double>(-5, -5, -5);
+                object.max = Vec3<double>(5, 5, 5);
             }
             scene.objects.push_back(object);
-            scene.camera = classicalView(*kind, lo, hi, classicalParameters);
+            const Eigen::AlignedBox<double, 3> box = gui::objectBounds(scene);
+            scene.camera = classicalView(*kind, box.min(), box.max(), classicalParameters);
             if (classicalOut.empty())
                 std::cout << sceneToJson(scene);
             else
                 saveScene(scene, classicalOut);
             return 0;
-        } catch (const InputError& e) {
-            std::cerr << "viewpipe classical: " << e.what() << "\n";
-            return kExitBadInput;
-        }
-    }
+        });
 
-    if (*benchCommand) {
-        try {
-            const std::string file = options.scene.empty() ? std::string(VIEWPIPE_DATA_DIR) + "/scenes/house.json"
-                                                           : options.scene;
+    if (*benchCommand)
+        return guarded(options.scene.empty() ? std::string("viewpipe bench") : options.scene, "viewpipe bench", [&] {
+            const std::string file =
+                options.scene.empty() ? (gui::scenesDirectory() + "/house.json").toStdString() : options.scene;
             const Scene scene = loadScene(file);
             cli::BenchOptions o;
             o.vertices = benchVertices;
-            o.mpfrBits = options.bits == 256 ? 160 : options.bits;
+            o.mpfrBits = benchBits;
             if (!benchViewport.empty())
                 std::tie(o.viewport.width, o.viewport.height) = parseSize(benchViewport, "--viewport");
             const cli::BenchResult result = cli::runBench(
@@ -280,18 +279,10 @@ int main(int argc, char** argv)
                     std::cout << "\nPlot: " << benchPlot << "\n";
             }
             return 0;
-        } catch (const InputError& e) {
-            std::cerr << (options.scene.empty() ? std::string("viewpipe bench") : options.scene) << ": " << e.what()
-                      << "\n";
-            return kExitBadInput;
-        } catch (const std::exception& e) {
-            std::cerr << "viewpipe bench: " << e.what() << "\n";
-            return kExitInternal;
-        }
-    }
+        });
 
-    if (*exportCommand) {
-        try {
+    if (*exportCommand) // the leading newline ends the progress bar's line
+        return guarded("\n" + options.scene, "\nviewpipe export", [&] {
             const Scene scene = loadScene(options.scene);
             gui::checkMeshes(scene);
             gui::ExportOptions o;
@@ -336,25 +327,19 @@ int main(int argc, char** argv)
                 for (const auto& file : files)
                     std::cout << file.string() << "\n";
             return 0;
-        } catch (const InputError& e) {
-            std::cerr << "\n" + options.scene << ": " << e.what() << "\n";
-            return kExitBadInput;
-        } catch (const std::exception& e) {
-            std::cerr << "\nviewpipe export: " << e.what() << "\n";
-            return kExitInternal;
-        }
-    }
+        });
 
-    try {
+    return guarded(options.scene, "viewpipe: internal error", [&] {
         const Scene scene = loadScene(options.scene);
         if (*check)
             gui::checkMeshes(scene);
         const cli::PrecisionChoice precision = cli::parsePrecision(options.precision, options.bits);
         if (*pipeline) {
+            const EffectOutcomes outcomes = cli::sceneEffects(scene, gui::objectMeshes(scene));
             if (options.json)
-                std::cout << cli::pipelineJson(scene, precision, gui::objectMeshes(scene)).dump() << "\n";
+                std::cout << cli::pipelineJson(scene, precision, outcomes).dump() << "\n";
             else
-                cli::printPipeline(std::cout, scene, precision, gui::objectMeshes(scene));
+                cli::printPipeline(std::cout, scene, precision, outcomes);
         } else if (*classifyCommand) {
             if (options.json)
                 std::cout << cli::classifyJson(scene).dump() << "\n";
@@ -368,11 +353,5 @@ int main(int argc, char** argv)
                 cli::printTrace(std::cout, scene, point, precision);
         }
         return 0;
-    } catch (const InputError& e) {
-        std::cerr << options.scene << ": " << e.what() << "\n";
-        return kExitBadInput;
-    } catch (const std::exception& e) {
-        std::cerr << "viewpipe: internal error: " << e.what() << "\n";
-        return kExitInternal;
-    }
+    });
 }

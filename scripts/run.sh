@@ -14,9 +14,10 @@ out=out/house-stages
 mkdir -p "$out"
 stages=$("$viewpipe" pipeline "$scene" --json | grep -o '"symbol"' | wc -l)
 echo "No display found (DISPLAY is not set): saving the default scene's stages to $out/ instead."
-for k in $(seq 0 "$stages"); do
-  xvfb-run -a -s "-screen 0 1920x1080x24" "$viewpipe" open "$scene" --stage "$k" \
-    --screenshot "$out/stage-$k.png" 2>/dev/null
-  echo "  $out/stage-$k.png"
-done
+# One virtual display for all the screenshots.
+xvfb-run -a -s "-screen 0 1920x1080x24" bash -c '
+  for k in $(seq 0 "$1"); do
+    "$2" open "$3" --stage "$k" --screenshot "$4/stage-$k.png" 2>/dev/null
+    echo "  $4/stage-$k.png"
+  done' _ "$stages" "$viewpipe" "$scene" "$out"
 echo "Open them with any image viewer, or run 'make run' where there is a display."

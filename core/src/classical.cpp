@@ -181,7 +181,7 @@ std::optional<VanishingPoint> vanishingPoint(const CameraSpec<double>& camera, i
     VanishingPoint vp;
     vp.axis = axis;
     vp.world = setup.prp + t * Vec3<double>::Unit(axis);
-    const Vec4<double> h = p.toClip * p.composite * direction;
+    const Vec4<double> h = p.clipMatrix() * direction;
     vp.image = h.head<3>() / h.w();
     return vp;
 }

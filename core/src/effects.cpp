@@ -43,22 +43,21 @@ EffectList withEffect(EffectList effects, const std::string& name, bool on)
     if (std::find(known.begin(), known.end(), name) == known.end())
         throw InputError("effects", "unknown effect \"" + name + "\" (known: clip, divide, depth, raster, cull)");
     auto& names = effects.names;
-    const bool listed = std::find(names.begin(), names.end(), name) != names.end();
     if (!on)
         names.erase(std::remove(names.begin(), names.end(), name), names.end());
-    else if (!listed)
+    else if (!effects.has(name))
         names.push_back(name); // a listed effect keeps its place
-    if (name == "clip")
-        effects.clip = on;
-    else if (name == "divide")
-        effects.divide = on;
-    else if (name == "cull")
-        effects.cull = on;
-    else if (name == "depth")
+    if (name == "depth")
         effects.depth = on ? effects.depth.value_or(DepthOptions{}) : std::optional<DepthOptions>{};
-    else
+    if (name == "raster")
         effects.raster = on ? effects.raster.value_or(RasterOptions{}) : std::optional<RasterOptions>{};
     return effects;
+}
+
+std::string depthFormatName(const DepthOptions& options)
+{
+    return std::to_string(options.bits) + "-bit " + (options.floating ? "float" : "fixed point") +
+           (options.reversed ? ", reversed" : "");
 }
 
 unsigned outcode(const Vec4<double>& clip, ClipVolume volume)
@@ -107,15 +106,20 @@ std::vector<Vec4<double>> clipPolygon(const std::vector<Vec4<double>>& polygon, 
 {
     std::vector<Vec4<double>> out = polygon;
     for (std::size_t k = 0; k < 6 && !out.empty(); ++k) {
+        // Each vertex's boundary value against plane k, once: an edge's end is the next edge's start.
+        const double first = boundaries(out[0], volume)[k];
+        double bp = first;
         std::vector<Vec4<double>> next;
         for (std::size_t i = 0; i < out.size(); ++i) {
+            const std::size_t j = (i + 1) % out.size();
             const Vec4<double>& p = out[i];
-            const Vec4<double>& q = out[(i + 1) % out.size()];
-            const double bp = boundaries(p, volume)[k], bq = boundaries(q, volume)[k];
+            const Vec4<double>& q = out[j];
+            const double bq = j == 0 ? first : boundaries(q, volume)[k];
             if (bp >= 0)
                 next.push_back(p);
             if ((bp >= 0) != (bq >= 0))
                 next.push_back(p + (bp / (bp - bq)) * (q - p));
+            bp = bq;
         }
         out = std::move(next);
     }
@@ -161,13 +165,13 @@ double depthLevel(double depth, const DepthOptions& options)
     return double(bits);
 }
 
-std::optional<double> depthLevelAt(const Pipeline<double>& pipeline, const Vec3<double>& world,
+std::optional<double> depthLevelAt(const Mat4<double>& clip, ClipVolume volume, const Vec3<double>& world,
                                    const DepthOptions& options)
 {
-    const Vec4<double> clip = pipeline.toClip * pipeline.composite * world.homogeneous();
-    if (!(clip.w() > 0))
+    const Vec4<double> h = clip * world.homogeneous();
+    if (!(h.w() > 0))
         return std::nullopt;
-    const double depth = windowDepth(clip, pipeline.clipVolume);
+    const double depth = windowDepth(h, volume);
     if (!(depth >= 0 && depth <= 1))
         return std::nullopt;
     return depthLevel(depth, options);
@@ -195,7 +199,7 @@ constexpr std::size_t kMaxFightFaces = 4000;
 // at each depth.
 std::array<Vec3<double>, 2> centerLine(const Pipeline<double>& p)
 {
-    const Mat4<double> inverse = (p.toClip * p.composite).inverse();
+    const Mat4<double> inverse = p.clipMatrix().inverse();
     const bool foley = p.clipVolume == ClipVolume::FoleyParallel;
     auto world = [&inverse](double z) {
         const Vec4<double> h = inverse * Vec4<double>(0, 0, z, 1);
@@ -214,7 +218,7 @@ struct CenterLine {
     double length;
 
     CenterLine(const Pipeline<double>& p, const DepthOptions& o)
-        : pipeline(p), options(o), clip(p.toClip * p.composite)
+        : pipeline(p), options(o), clip(p.clipMatrix())
     {
         const auto [from, to] = centerLine(p);
         length = (to - from).norm();
@@ -241,24 +245,36 @@ struct CenterLine {
     }
 };
 
-DepthOutcome depthOutcome(const Pipeline<double>& p, const std::vector<PolygonMesh>& objects, const DepthOptions& options)
+// Every object's vertices in clip coordinates, computed once for all effects.
+using ClipPoints = std::vector<std::vector<Vec4<double>>>;
+
+ClipPoints clipPoints(const Mat4<double>& clip, const std::vector<PolygonMesh>& objects)
 {
-    const Mat4<double> clip = p.toClip * p.composite;
-    auto stored = [&](const Vec3<double>& world) {
-        return storedDepth(windowDepth(clip * world.homogeneous(), p.clipVolume), options);
-    };
+    ClipPoints points;
+    for (const PolygonMesh& mesh : objects) {
+        std::vector<Vec4<double>> h;
+        h.reserve(mesh.vertices.size());
+        for (const Vec3<double>& v : mesh.vertices)
+            h.push_back(clip * v.homogeneous());
+        points.push_back(std::move(h));
+    }
+    return points;
+}
+
+DepthOutcome depthOutcome(const Pipeline<double>& p, const std::vector<PolygonMesh>& objects, const ClipPoints& points,
+                          const DepthOptions& options)
+{
     DepthOutcome out;
     out.options = options;
     out.resolution = depthResolution(p, options, 9);
     // Distinct stored values among the vertices inside the volume.
     std::vector<double> values;
-    for (const PolygonMesh& mesh : objects)
-        for (const Vec3<double>& v : mesh.vertices) {
-            const Vec4<double> h = clip * v.homogeneous();
+    for (const std::vector<Vec4<double>>& mesh : points)
+        for (const Vec4<double>& h : mesh) {
             if (!insideClipVolume(h, p.clipVolume))
                 continue;
             ++out.vertices;
-            values.push_back(stored(v));
+            values.push_back(storedDepth(windowDepth(h, p.clipVolume), options));
         }
     std::sort(values.begin(), values.end());
     out.distinctValues = int(std::unique(values.begin(), values.end()) - values.begin());
@@ -269,19 +285,23 @@ DepthOutcome depthOutcome(const Pipeline<double>& p, const std::vector<PolygonMe
     struct Face {
         int object, index;
         std::vector<Vec3<double>> picture; // x, y, window depth
+        Vec3<double> normal;               // of the face's plane in those coordinates
     };
     std::vector<Face> faces;
     for (std::size_t o = 0; o < objects.size() && faces.size() <= kMaxFightFaces; ++o)
         for (std::size_t f = 0; f < objects[o].faces.size() && faces.size() <= kMaxFightFaces; ++f) {
-            Face face{int(o), int(f), {}};
+            Face face{int(o), int(f), {}, Vec3<double>::Zero()};
             bool visible = true;
             for (int i : objects[o].faces[f]) {
-                const Vec4<double> h = clip * objects[o].vertices[std::size_t(i)].homogeneous();
+                const Vec4<double>& h = points[o][std::size_t(i)];
                 visible = visible && insideClipVolume(h, p.clipVolume);
                 face.picture.emplace_back(h.x() / h.w(), h.y() / h.w(), windowDepth(h, p.clipVolume));
             }
-            if (visible && face.picture.size() >= 3)
-                faces.push_back(face);
+            if (!visible || face.picture.size() < 3)
+                continue;
+            const auto& v = face.picture;
+            face.normal = (v[1] - v[0]).cross(v[2] - v[0]);
+            faces.push_back(std::move(face));
         }
     auto depthAt = [](const Face& face, const Vec2<double>& q) -> std::optional<double> {
         // Inside the (convex) projected face, and the depth of its plane there.
@@ -295,7 +315,7 @@ DepthOutcome depthOutcome(const Pipeline<double>& p, const std::vector<PolygonMe
             if (cross != 0)
                 sign = cross;
         }
-        const Vec3<double> n = (v[1] - v[0]).cross(v[2] - v[0]);
+        const Vec3<double>& n = face.normal;
         if (std::abs(n.z()) < 1e-300)
             return std::nullopt; // seen edge-on
         return v[0].z() - (n.x() * (q.x() - v[0].x()) + n.y() * (q.y() - v[0].y())) / n.z();
@@ -343,7 +363,9 @@ std::vector<DepthSample> depthResolution(const Pipeline<double>& pipeline, const
     return resolution;
 }
 
-RasterOutcome rasterize(const Pipeline<double>& pipeline, const std::vector<PolygonMesh>& objects,
+namespace {
+
+RasterOutcome rasterize(ClipVolume volume, const std::vector<PolygonMesh>& objects, const ClipPoints& points,
                         const RasterOptions& options, const std::vector<std::vector<bool>>* culled)
 {
     RasterOutcome out;
@@ -353,7 +375,6 @@ RasterOutcome rasterize(const Pipeline<double>& pipeline, const std::vector<Poly
     out.object.assign(pixels, -1);
     out.face.assign(pixels, -1);
     out.depth.assign(pixels, 1.0);
-    const Mat4<double> clip = pipeline.toClip * pipeline.composite;
     for (std::size_t o = 0; o < objects.size(); ++o) {
         const PolygonMesh& mesh = objects[o];
         for (std::size_t f = 0; f < mesh.faces.size(); ++f) {
@@ -361,13 +382,13 @@ RasterOutcome rasterize(const Pipeline<double>& pipeline, const std::vector<Poly
                 continue;
             std::vector<Vec4<double>> polygon;
             for (int i : mesh.faces[f])
-                polygon.push_back(clip * mesh.vertices[std::size_t(i)].homogeneous());
-            polygon = clipPolygon(polygon, pipeline.clipVolume);
+                polygon.push_back(points[o][std::size_t(i)]);
+            polygon = clipPolygon(polygon, volume);
             // To pixels: x, y in [0, width] x [0, height], and window depth.
             std::vector<Vec3<double>> screen;
             for (const Vec4<double>& h : polygon)
                 screen.emplace_back((h.x() / h.w() + 1) / 2 * options.width, (h.y() / h.w() + 1) / 2 * options.height,
-                                    windowDepth(h, pipeline.clipVolume));
+                                    windowDepth(h, volume));
             for (std::size_t k = 1; k + 1 < screen.size(); ++k) {
                 const Vec3<double>& a = screen[0];
                 const Vec3<double>& b = screen[k];
@@ -403,20 +424,31 @@ RasterOutcome rasterize(const Pipeline<double>& pipeline, const std::vector<Poly
     return out;
 }
 
+} // namespace
+
+RasterOutcome rasterize(const Pipeline<double>& pipeline, const std::vector<PolygonMesh>& objects,
+                        const RasterOptions& options, const std::vector<std::vector<bool>>* culled)
+{
+    return rasterize(pipeline.clipVolume, objects, clipPoints(pipeline.clipMatrix(), objects), options, culled);
+}
+
 EffectOutcomes runEffects(const Pipeline<double>& pipeline, const std::vector<PolygonMesh>& objects,
                           const EffectList& effects)
 {
     EffectOutcomes outcomes;
-    const Mat4<double> clip = pipeline.toClip * pipeline.composite;
-    auto toClip = [&clip](const Vec3<double>& p) { return Vec4<double>(clip * p.homogeneous()); };
-    if (effects.clip) {
+    if (!effects.has("clip") && !effects.has("cull") && !effects.depth && !effects.raster)
+        return outcomes; // nothing that looks at the objects
+    const ClipPoints points = clipPoints(pipeline.clipMatrix(), objects);
+    if (effects.has("clip")) {
         countEffectRun("clip");
         ClipOutcome c;
-        for (const PolygonMesh& mesh : objects) {
+        for (std::size_t o = 0; o < objects.size(); ++o) {
+            const PolygonMesh& mesh = objects[o];
+            const std::vector<Vec4<double>>& h = points[o];
             std::vector<std::optional<std::array<double, 2>>> kept;
             for (const auto& e : meshEdgeIndices(mesh)) {
-                const auto interval = clipSegment(toClip(mesh.vertices[std::size_t(e[0])]),
-                                                  toClip(mesh.vertices[std::size_t(e[1])]), pipeline.clipVolume);
+                const auto interval =
+                    clipSegment(h[std::size_t(e[0])], h[std::size_t(e[1])], pipeline.clipVolume);
                 ClipCounts& n = c.segments;
                 if (!interval)
                     ++n.outside;
@@ -431,7 +463,7 @@ EffectOutcomes runEffects(const Pipeline<double>& pipeline, const std::vector<Po
                 std::vector<Vec4<double>> polygon;
                 unsigned all = 0;
                 for (int i : face) {
-                    polygon.push_back(toClip(mesh.vertices[std::size_t(i)]));
+                    polygon.push_back(h[std::size_t(i)]);
                     all |= outcode(polygon.back(), pipeline.clipVolume);
                 }
                 if (all == 0)
@@ -446,22 +478,22 @@ EffectOutcomes runEffects(const Pipeline<double>& pipeline, const std::vector<Po
     }
     if (effects.depth) {
         countEffectRun("depth");
-        outcomes.depth = depthOutcome(pipeline, objects, *effects.depth);
+        outcomes.depth = depthOutcome(pipeline, objects, points, *effects.depth);
     }
-    if (effects.cull) {
+    if (effects.has("cull")) {
         countEffectRun("cull");
         CullOutcome c;
-        for (const PolygonMesh& mesh : objects) {
+        for (std::size_t o = 0; o < objects.size(); ++o) {
             std::vector<bool> culled;
-            for (const std::vector<int>& face : mesh.faces) {
+            for (const std::vector<int>& face : objects[o].faces) {
                 // Signed area of the face in the picture (x, y after the
                 // divide), faces wound counter-clockwise seen from outside:
                 // a front face keeps that winding seen from the viewer (+z).
                 double area = 0;
                 bool behind = false;
                 for (std::size_t k = 0; k < face.size(); ++k) {
-                    const Vec4<double> p = toClip(mesh.vertices[std::size_t(face[k])]);
-                    const Vec4<double> q = toClip(mesh.vertices[std::size_t(face[(k + 1) % face.size()])]);
+                    const Vec4<double>& p = points[o][std::size_t(face[k])];
+                    const Vec4<double>& q = points[o][std::size_t(face[(k + 1) % face.size()])];
                     behind = behind || p.w() <= 0;
                     area += (p.x() / p.w()) * (q.y() / q.w()) - (q.x() / q.w()) * (p.y() / p.w());
                 }
@@ -476,7 +508,7 @@ EffectOutcomes runEffects(const Pipeline<double>& pipeline, const std::vector<Po
     }
     if (effects.raster) {
         countEffectRun("raster");
-        outcomes.raster = rasterize(pipeline, objects, *effects.raster,
+        outcomes.raster = rasterize(pipeline.clipVolume, objects, points, *effects.raster,
                                     outcomes.cull ? &outcomes.cull->culledFaces : nullptr);
     }
     return outcomes;

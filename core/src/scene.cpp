@@ -220,26 +220,30 @@ void readEffect(const Json& j, const std::string& path, EffectList& effects)
     } else {
         throw InputError(path, "must be an effect name or {\"name\": {parameters}}");
     }
+    if (effects.has(name))
+        throw InputError(path, "effect \"" + name + "\" is listed twice");
+    EffectList next;
     try {
-        withEffect({}, name, true);
+        next = withEffect(effects, name, true);
     } catch (const InputError& e) {
         throw InputError(path, e.reason());
     }
-    if (std::find(effects.names.begin(), effects.names.end(), name) != effects.names.end())
-        throw InputError(path, "effect \"" + name + "\" is listed twice");
     const std::string where = path + "." + name;
     if (parameters && !parameters->is_object())
         throw InputError(where, "parameters must be an object (got " + typeName(*parameters) + ")");
-    const std::set<std::string> accepted = name == "depth"    ? std::set<std::string>{"bits", "format", "reversed"}
-                                           : name == "raster" ? std::set<std::string>{"width", "height"}
-                                                              : std::set<std::string>{};
+    const std::vector<std::string> accepted = name == "depth"    ? std::vector<std::string>{"bits", "format", "reversed"}
+                                              : name == "raster" ? std::vector<std::string>{"width", "height"}
+                                                                 : std::vector<std::string>{};
     if (parameters)
         for (const auto& item : parameters->items())
-            if (!accepted.count(item.key()))
-                throw InputError(where + "." + item.key(),
-                                 accepted.empty() ? "unknown parameter (\"" + name + "\" takes none)"
-                                 : name == "depth" ? "unknown parameter (bits, format, reversed)"
-                                                   : "unknown parameter (width, height)");
+            if (std::find(accepted.begin(), accepted.end(), item.key()) == accepted.end()) {
+                std::string known;
+                for (const std::string& key : accepted)
+                    known += (known.empty() ? "" : ", ") + key;
+                throw InputError(where + "." + item.key(), accepted.empty()
+                                                               ? "unknown parameter (\"" + name + "\" takes none)"
+                                                               : "unknown parameter (" + known + ")");
+            }
     if (name == "depth") {
         DepthOptions depth;
         if (parameters && parameters->contains("format")) {
@@ -265,7 +269,7 @@ void readEffect(const Json& j, const std::string& path, EffectList& effects)
                 throw InputError(where + ".reversed", "must be true or false");
             depth.reversed = (*parameters)["reversed"].get<bool>();
         }
-        effects.depth = depth;
+        next.depth = depth;
     }
     if (name == "raster") {
         RasterOptions raster;
@@ -276,9 +280,9 @@ void readEffect(const Json& j, const std::string& path, EffectList& effects)
                     throw InputError(where + "." + key, "must be a whole number of pixels from 1 to 4096");
                 (std::string(key) == "width" ? raster.width : raster.height) = value.get<int>();
             }
-        effects.raster = raster;
+        next.raster = raster;
     }
-    effects = withEffect(std::move(effects), name, true);
+    effects = std::move(next);
 }
 
 Json vec3Json(const Vec3<double>& v)

@@ -41,13 +41,9 @@ AccuracyPanel::AccuracyPanel(QWidget* parent) : QWidget(parent)
     chartWidget_->setMinimumHeight(520);
     auto window = vtkSmartPointer<vtkGenericOpenGLRenderWindow>::New();
     chartWidget_->setRenderWindow(window);
-    auto view = vtkSmartPointer<vtkContextView>::New();
-    view->SetRenderWindow(window);
-    view->Register(nullptr);
-    view_ = view;
-    auto charts = vtkSmartPointer<vtkChartMatrix>::New();
-    charts->Register(nullptr);
-    charts_ = charts;
+    view_ = vtkSmartPointer<vtkContextView>::New();
+    view_->SetRenderWindow(window);
+    charts_ = vtkSmartPointer<vtkChartMatrix>::New();
     view_->GetScene()->AddItem(charts_);
     layout->addWidget(button_);
     layout->addWidget(progress_);
@@ -63,8 +59,6 @@ AccuracyPanel::AccuracyPanel(QWidget* parent) : QWidget(parent)
 AccuracyPanel::~AccuracyPanel()
 {
     stop();
-    charts_->Delete();
-    view_->Delete();
 }
 
 void AccuracyPanel::stop()

@@ -10,6 +10,8 @@
 #include <memory>
 #include <thread>
 
+#include <vtkSmartPointer.h>
+
 #include "cli/bench.hpp"
 #include "painter/ScenePainter.h"
 
@@ -47,8 +49,8 @@ private:
     QLabel* status_;
     QTableWidget* table_;
     QVTKOpenGLNativeWidget* chartWidget_;
-    vtkContextView* view_ = nullptr;
-    vtkChartMatrix* charts_ = nullptr;
+    vtkSmartPointer<vtkContextView> view_;
+    vtkSmartPointer<vtkChartMatrix> charts_;
     std::thread worker_;
     std::shared_ptr<std::atomic<bool>> cancel_;
     bool running_ = false;

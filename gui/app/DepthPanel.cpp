@@ -25,20 +25,13 @@ DepthPanel::DepthPanel(QWidget* parent) : QWidget(parent)
     chartWidget_->setMinimumHeight(360);
     auto window = vtkSmartPointer<vtkGenericOpenGLRenderWindow>::New();
     chartWidget_->setRenderWindow(window);
-    // Owned here (released in the destructor): the widget outlives no VTK object it shows.
-    view_ = vtkContextView::New();
+    view_ = vtkSmartPointer<vtkContextView>::New();
     view_->SetRenderWindow(window);
-    chart_ = vtkChartXY::New();
+    chart_ = vtkSmartPointer<vtkChartXY>::New();
     view_->GetScene()->AddItem(chart_);
     layout->addWidget(summary_);
     layout->addWidget(chartWidget_, 1);
     showDepth({}, std::nullopt, Theme::Dark);
-}
-
-DepthPanel::~DepthPanel()
-{
-    chart_->Delete();
-    view_->Delete();
 }
 
 QString DepthPanel::summary() const
@@ -59,11 +52,9 @@ void DepthPanel::showDepth(const Pipeline<double>& pipeline, const std::optional
         return;
     }
     const DepthOptions& o = depth->options;
-    QString text = tr("<b>%1-bit %2%3</b> depth buffer. The scene's %4 vertices in the view volume get %5 distinct "
+    QString text = tr("<b>%1</b> depth buffer. The scene's %2 vertices in the view volume get %3 distinct "
                       "stored values.")
-                       .arg(o.bits)
-                       .arg(o.floating ? tr("float") : tr("fixed point"))
-                       .arg(o.reversed ? tr(", reversed") : QString())
+                       .arg(QString::fromStdString(depthFormatName(depth->options)))
                        .arg(depth->vertices)
                        .arg(depth->distinctValues);
     if (!depth->zFightingChecked)

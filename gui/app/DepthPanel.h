@@ -9,6 +9,8 @@
 
 #include <optional>
 
+#include <vtkSmartPointer.h>
+
 #include "painter/ScenePainter.h"
 
 class QLabel;
@@ -22,17 +24,15 @@ class DepthPanel : public QWidget {
     Q_OBJECT
 public:
     explicit DepthPanel(QWidget* parent = nullptr);
-    ~DepthPanel() override;
 
     void showDepth(const Pipeline<double>& pipeline, const std::optional<DepthOutcome>& depth, Theme theme);
     QString summary() const;
-    vtkChartXY* chart() { return chart_; }
 
 private:
     QLabel* summary_;
     QVTKOpenGLNativeWidget* chartWidget_;
-    vtkContextView* view_ = nullptr;
-    vtkChartXY* chart_ = nullptr;
+    vtkSmartPointer<vtkContextView> view_;
+    vtkSmartPointer<vtkChartXY> chart_;
 };
 
 } // namespace viewpipe::gui

@@ -27,11 +27,10 @@ Document::Document(QObject* parent) : QObject(parent)
     connect(&undo_, &QUndoStack::cleanChanged, this, &Document::fileChanged);
 }
 
-void Document::load(const QString& path)
+void Document::load(const Scene& scene, const QString& path)
 {
-    Scene loaded = loadScene(path.toStdString());
-    Pipeline<double> pipeline = buildPipeline(loaded.camera, loaded.effects);
-    scene_ = std::move(loaded);
+    Pipeline<double> pipeline = buildPipeline(scene.camera, scene.effects);
+    scene_ = scene;
     pipeline_ = std::move(pipeline);
     filePath_ = path;
     undo_.clear();

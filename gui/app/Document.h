@@ -23,8 +23,10 @@ public:
     QString filePath() const { return filePath_; }
     bool isModified() const { return !undo_.isClean(); }
 
-    // Loading and saving throw InputError; a failed load keeps the current scene.
-    void load(const QString& path);
+    // A scene read from `path` replaces the current one (no undo across it).
+    // Throws InputError for a camera the core refuses, changing nothing.
+    void load(const Scene& scene, const QString& path);
+    // Throws InputError when the file cannot be written.
     void save(const QString& path);
 
     // Validates with the core; on success pushes an undoable edit and returns

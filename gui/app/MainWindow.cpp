@@ -407,9 +407,9 @@ void MainWindow::editEffects(const QString& description, const std::function<Eff
 void MainWindow::updateEffectsMenu()
 {
     const EffectList& effects = document_->scene().effects;
-    clipAction_->setChecked(effects.clip);
-    divideAction_->setChecked(effects.divide);
-    cullAction_->setChecked(effects.cull);
+    clipAction_->setChecked(effects.has("clip"));
+    divideAction_->setChecked(effects.has("divide"));
+    cullAction_->setChecked(effects.has("cull"));
     const QString format =
         effects.depth ? QString("%1,%2").arg(effects.depth->bits).arg(effects.depth->floating ? 1 : 0) : QString();
     for (QAction* action : depthGroup_->actions())
@@ -424,11 +424,26 @@ void MainWindow::updateEffectsMenu()
 
 bool MainWindow::openScene(const QString& path)
 {
+    Scene scene;
+    try {
+        scene = loadScene(path.toStdString());
+    } catch (const InputError& e) {
+        showMessage(tr("Cannot open %1: %2").arg(path, QString::fromStdString(e.what())));
+        return false;
+    }
+    return openScene(scene, path);
+}
+
+bool MainWindow::openScene(const Scene& scene, const QString& path)
+{
     try {
         // Build the picture first: a scene the painter cannot show is not opened.
-        const Scene scene = loadScene(path.toStdString());
         painter_->setScene(scene);
-        document_->load(path);
+        {
+            const QSignalBlocker drawn(document_); // the picture is made: only the widgets follow
+            document_->load(scene, path);
+        }
+        refreshWidgets();
         addRecent(QFileInfo(path).absoluteFilePath());
         painter_->resetView();
         goToStage(0, false);
@@ -463,6 +478,11 @@ void MainWindow::onDocumentChanged()
         showMessage(QString::fromStdString(e.what()));
         return;
     }
+    refreshWidgets();
+}
+
+void MainWindow::refreshWidgets()
+{
     parameters_->setCamera(document_->scene().camera);
     updateEffectsMenu();
     depth_->showDepth(document_->pipeline(), painter_->effectOutcomes().depth, painter_->theme());
@@ -515,7 +535,7 @@ void MainWindow::goToStage(int stage, bool animate)
         updateStageWidgets();
         return;
     }
-    stepMilliseconds_ = std::abs(target_ - stage_) > 1 ? 600 : 1000;
+    stepMilliseconds_ = std::abs(target_ - stage_) > 1 ? 600 : kStepMilliseconds;
     if (!isAnimating() && target_ != stage_)
         startStep(); // a running step carries on, then heads for the new target
     updateStageWidgets();
@@ -526,7 +546,7 @@ void MainWindow::play()
     if (stage_ >= stageCount())
         goToStage(0, false);
     target_ = stageCount();
-    stepMilliseconds_ = 1000;
+    stepMilliseconds_ = kStepMilliseconds;
     playButton_->setText(tr("Stop"));
     startStep();
     updateStageWidgets();
@@ -612,7 +632,7 @@ void MainWindow::updateTitle()
 void MainWindow::showMessage(const QString& text)
 {
     statusBar()->showMessage(text, 10000);
-    if (!isVisible() || QApplication::arguments().contains("--screenshot"))
+    if (!isVisible() || !popups_)
         return;
     // Window-modal, not blocking: the event loop (and the picture) carry on.
     auto* box = new QMessageBox(QMessageBox::Warning, tr("ViewPipe"), text, QMessageBox::Ok, this);
@@ -648,7 +668,7 @@ bool MainWindow::importMesh(const QString& path)
     object.resolvedPath = QFileInfo(path).absoluteFilePath().toStdString();
     object.path = object.resolvedPath.string();
     try {
-        Scene candidate = document_->scene();
+        Scene candidate; // the new mesh alone: the scene's own were read when it was opened
         candidate.objects.push_back(object);
         checkMeshes(candidate);
         document_->addObject(object, tr("Import %1").arg(QFileInfo(path).fileName()));
@@ -729,8 +749,7 @@ void MainWindow::chooseClassicalProjection()
 {
     Eigen::AlignedBox<double, 3> box;
     try {
-        for (const Vec3<double>& p : objectVertices(document_->scene()))
-            box.extend(p);
+        box = objectBounds(document_->scene());
     } catch (const InputError&) {
     }
     if (box.isEmpty())

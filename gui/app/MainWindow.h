@@ -43,6 +43,8 @@ public:
 
     // Opens a scene file; on failure shows the reason and keeps the current scene.
     bool openScene(const QString& path);
+    // The same for a scene already read from `path`.
+    bool openScene(const Scene& scene, const QString& path);
     bool saveScene(const QString& path);
 
     // Stage 0 is the world; stage k is after the k-th matrix. With
@@ -68,6 +70,8 @@ public:
     // View > Classical Projection: a class of seed 001 for the scene's objects, one undoable edit.
     void chooseClassicalProjection();
 
+    // Whether errors also open a message box (besides the status bar).
+    void setPopupsEnabled(bool enabled) { popups_ = enabled; }
     void setTheme(Theme theme);
     void setFontSize(int points);
     void setProjectedViewVisible(bool visible);
@@ -99,6 +103,8 @@ private:
     void buildEffectsMenu();
     void updateEffectsMenu();
     void onDocumentChanged();
+    // The stepper, panels, menus and title from the document, the picture being drawn.
+    void refreshWidgets();
     void onCameraEdited(const CameraSpec<double>& camera, const QString& field);
     void startStep();
     void showRestingStage();
@@ -144,6 +150,7 @@ private:
     std::unique_ptr<StageTransition> transition_;
     std::optional<Vec3<double>> traced_;
     int fontSize_ = 11;
+    bool popups_ = true;
 };
 
 } // namespace viewpipe::gui

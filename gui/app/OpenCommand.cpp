@@ -16,7 +16,6 @@
 #include "AccuracyPanel.h"
 #include "AppPaths.h"
 #include "MainWindow.h"
-#include "Theme.h"
 #include "viewpipe/scene.hpp"
 
 namespace viewpipe::gui {
@@ -44,12 +43,12 @@ int runOpen(int argc, char** argv, const OpenOptions& options)
     const Theme theme = themeName == "light" ? Theme::Light : Theme::Dark;
 
     MainWindow window;
-    applyTheme(theme);
+    window.setPopupsEnabled(!screenshot); // a screenshot run reports in the status bar and its exit code
     window.setTheme(theme);
     window.setFontSize(screenshot ? 11 : settings.value("fontSize", 11).toInt());
     window.resize(options.width, options.height);
     window.show();
-    if (!window.openScene(scenePath))
+    if (!window.openScene(scene, scenePath))
         return 2;
     window.goToStage(options.stage, false);
     if (!options.panel.empty())

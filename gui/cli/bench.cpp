@@ -40,41 +40,53 @@ int repeatsFor(int bits)
     return bits <= 64 ? 7 : 3;
 }
 
-template <class T> BenchRow timeTier(const std::string& name, int bits, const CameraSpec<double>& camera,
-                                     const std::vector<double>& points)
+BenchRow tierRow(const std::string& name, int bits)
 {
     BenchRow row;
     row.precision = name;
     row.bits = bits;
     row.epsilon = std::ldexp(1.0, 1 - bits);
-    const int repeats = repeatsFor(bits);
+    return row;
+}
+
+// Median time to build the pipeline in T.
+template <class T> double buildNanoseconds(const CameraSpec<double>& camera, int bits)
+{
     const int builds = bits <= 64 ? 2000 : 200;
-    std::vector<double> buildTimes, vertexTimes;
-    for (int r = 0; r < repeats; ++r)
-        buildTimes.push_back(nanoseconds([&] {
-                                 for (int b = 0; b < builds; ++b) {
-                                     const Pipeline<T> p = buildPipeline(castCamera<T>(camera));
-                                     asm volatile("" : : "g"(&p) : "memory");
-                                 }
-                             }) /
-                             builds);
+    std::vector<double> times;
+    for (int r = 0; r < repeatsFor(bits); ++r)
+        times.push_back(nanoseconds([&] {
+                            for (int b = 0; b < builds; ++b) {
+                                const Pipeline<T> p = buildPipeline(castCamera<T>(camera));
+                                asm volatile("" : : "g"(&p) : "memory");
+                            }
+                        }) /
+                        builds);
+    return median(times);
+}
+
+template <class T> BenchRow timeTier(const std::string& name, int bits, const CameraSpec<double>& camera,
+                                     const std::vector<double>& points)
+{
+    BenchRow row = tierRow(name, bits);
+    row.buildNs = buildNanoseconds<T>(camera, bits);
     const Pipeline<T> p = buildPipeline(castCamera<T>(camera));
-    const Mat4<T> clip = p.toClip * p.composite;
+    const Mat4<T> clip = p.clipMatrix();
     const std::size_t count = points.size() / 3;
     std::vector<T> in(points.begin(), points.end()), out(points.size());
-    for (int r = 0; r < repeats; ++r)
-        vertexTimes.push_back(nanoseconds([&] { transformPoints(clip, in.data(), out.data(), count); }) / double(count));
-    row.buildNs = median(buildTimes);
-    row.vertexNs = median(vertexTimes);
+    std::vector<double> times;
+    for (int r = 0; r < repeatsFor(bits); ++r)
+        times.push_back(nanoseconds([&] { transformPoints(clip, in.data(), out.data(), count); }) / double(count));
+    row.vertexNs = median(times);
     return row;
 }
 
 BenchRow timeDoubleDouble(const CameraSpec<double>& camera, const std::vector<double>& points)
 {
-    BenchRow row = timeTier<Float128>("double-double", 106, camera, {}); // built in binary128
-    row.precision = "double-double";
+    BenchRow row = tierRow("double-double", 106);
+    row.buildNs = buildNanoseconds<Float128>(camera, 106); // built in binary128
     const Pipeline<Float128> p = buildPipeline(castCamera<Float128>(camera));
-    const Mat4DD clip = toDoubleDouble(Mat4<Float128>(p.toClip * p.composite));
+    const Mat4DD clip = toDoubleDouble(Mat4<Float128>(p.clipMatrix()));
     const std::size_t count = points.size() / 3;
     std::vector<double> hi(points.size()), lo(points.size());
     std::vector<double> times;
@@ -138,7 +150,6 @@ BenchResult runBench(const Scene& scene, const std::vector<Vec3<double>>& sceneV
         setReferenceBits(options.mpfrBits);
         // Mpfr values made now carry the chosen precision; the reference keeps its own.
         result.rows.push_back(timeTier<Mpfr>("mpfr", int(options.mpfrBits), camera, points));
-        setReferenceBits(options.mpfrBits);
         result.rows.back().errors = measureAccuracy<Mpfr>(camera, sceneVertices, ref, vp);
     }
     if (progress)

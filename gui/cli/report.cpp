@@ -102,17 +102,16 @@ Json countsJson(const ClipCounts& c)
     return {{"inside", c.inside}, {"clipped", c.clipped}, {"outside", c.outside}};
 }
 
-// What each listed effect found, in double.
-Json effectsJson(const Scene& scene, const std::vector<PolygonMesh>& objects)
+// What each listed effect found.
+Json effectsJson(const Scene& scene, const EffectOutcomes& outcomes)
 {
     const Pipeline<double> p = pipelineFor<double>(scene);
-    const EffectOutcomes outcomes = runEffects(p, objects, scene.effects);
     Json out = Json::object();
     if (outcomes.clip)
         out["clip"] = {{"segments", countsJson(outcomes.clip->segments)},
                        {"polygons", countsJson(outcomes.clip->polygons)}};
-    if (scene.effects.divide) {
-        const bool added = p.stages.back().symbol == "M" || p.stages.back().symbol == "divide";
+    if (scene.effects.has("divide")) {
+        const bool added = divideAddsStage(p);
         out["divide"] = {{"stage", added ? Json(p.stages.back().symbol) : Json(nullptr)},
                          {"note", added ? "appended after the last stage"
                                         : "a parallel view needs no divide: its canonical volume is already parallel"}};
@@ -188,7 +187,12 @@ std::string precisionName(const PrecisionChoice& precision)
     return precision.type == Precision::Mpfr ? name + "-" + std::to_string(precision.mpfrBits) : name;
 }
 
-Json pipelineJson(const Scene& scene, const PrecisionChoice& precision, const std::vector<PolygonMesh>& objects)
+EffectOutcomes sceneEffects(const Scene& scene, const std::vector<PolygonMesh>& objects)
+{
+    return runEffects(pipelineFor<double>(scene), objects, scene.effects);
+}
+
+Json pipelineJson(const Scene& scene, const PrecisionChoice& precision, const EffectOutcomes& outcomes)
 {
     return withPrecision(precision, [&](auto zero) {
         using T = decltype(zero);
@@ -212,13 +216,13 @@ Json pipelineJson(const Scene& scene, const PrecisionChoice& precision, const st
         if (p.projectionMatrix)
             out["projection_matrix"] = matrixJson(*p.projectionMatrix);
         if (!scene.effects.empty())
-            out["effects"] = effectsJson(scene, objects);
+            out["effects"] = effectsJson(scene, outcomes);
         return out;
     });
 }
 
 void printPipeline(std::ostream& out, const Scene& scene, const PrecisionChoice& precision,
-                   const std::vector<PolygonMesh>& objects)
+                   const EffectOutcomes& outcomes)
 {
     withPrecision(precision, [&](auto zero) {
         using T = decltype(zero);
@@ -249,7 +253,7 @@ void printPipeline(std::ostream& out, const Scene& scene, const PrecisionChoice&
                             "projection (" + p.projection + ")");
         }
         if (!scene.effects.empty()) {
-            const Json effects = effectsJson(scene, objects);
+            const Json effects = effectsJson(scene, outcomes);
             out << "\nEffects:\n";
             for (const auto& item : effects.items())
                 out << "  " << item.key() << ": " << item.value().dump() << "\n";
@@ -275,7 +279,7 @@ Json traceJson(const Scene& scene, const Vec3<double>& point, const PrecisionCho
                  {"clip", vectorJson(trace.clip)},
                  {"divided", trace.divided ? vectorJson(*trace.divided) : Json(nullptr)},
                  {"inside", trace.inside}};
-        if (scene.effects.clip) {
+        if (scene.effects.has("clip")) {
             // Which clipping planes reject the point, decided before any divide.
             const Vec4<double> h = trace.clip.template cast<double>();
             const bool behind = !(h.w() > 0); // then every plane test fails: report that alone

@@ -24,12 +24,15 @@ struct PrecisionChoice {
 PrecisionChoice parsePrecision(const std::string& name, unsigned mpfrBits = 256);
 std::string precisionName(const PrecisionChoice& precision);
 
-// `objects`: the scene's objects as polygon meshes (see gui::objectMeshes),
-// for the effects' outcomes; with effects listed, "effects" reports them.
-nlohmann::json pipelineJson(const Scene& scene, const PrecisionChoice& precision,
-                            const std::vector<PolygonMesh>& objects);
+// What the scene's effects find for its objects as polygon meshes (see
+// gui::objectMeshes), in double.
+EffectOutcomes sceneEffects(const Scene& scene, const std::vector<PolygonMesh>& objects);
+
+// With effects listed, "effects" reports `outcomes` (from sceneEffects, or
+// the scene painter's, which computed the same).
+nlohmann::json pipelineJson(const Scene& scene, const PrecisionChoice& precision, const EffectOutcomes& outcomes);
 void printPipeline(std::ostream& out, const Scene& scene, const PrecisionChoice& precision,
-                   const std::vector<PolygonMesh>& objects);
+                   const EffectOutcomes& outcomes);
 
 nlohmann::json traceJson(const Scene& scene, const Vec3<double>& point, const PrecisionChoice& precision);
 void printTrace(std::ostream& out, const Scene& scene, const Vec3<double>& point, const PrecisionChoice& precision);

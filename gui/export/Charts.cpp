@@ -7,16 +7,17 @@
 #include <vtkContextView.h>
 #include <vtkDoubleArray.h>
 #include <vtkNew.h>
-#include <vtkPNGWriter.h>
 #include <vtkPen.h>
 #include <vtkRenderWindow.h>
 #include <vtkRenderer.h>
 #include <vtkStringArray.h>
 #include <vtkTextProperty.h>
-#include <vtkWindowToImageFilter.h>
 
 #include <algorithm>
 #include <cmath>
+#include <stdexcept>
+
+#include "Exporter.h"
 
 namespace viewpipe::gui {
 
@@ -71,17 +72,13 @@ void writeChartPng(const std::function<void(vtkContextView*)>& draw, int width, 
     view->GetRenderer()->SetBackground(bg, bg, bg);
     draw(view);
     view->GetRenderWindow()->Render();
-    vtkNew<vtkWindowToImageFilter> grab;
-    grab->SetInput(view->GetRenderWindow());
-    grab->ReadFrontBufferOff();
     const std::filesystem::path temporary = file.string() + ".tmp.png";
-    vtkNew<vtkPNGWriter> writer;
-    writer->SetInputConnection(grab->GetOutputPort());
-    writer->SetFileName(temporary.c_str());
-    writer->Write();
-    std::error_code error;
-    if (writer->GetErrorCode() != 0 || !std::filesystem::exists(temporary))
+    try {
+        writeWindowPng(view->GetRenderWindow(), false, temporary);
+    } catch (const std::runtime_error&) {
         throw InputError(field, "cannot write \"" + file.string() + "\"");
+    }
+    std::error_code error;
     std::filesystem::rename(temporary, file, error);
     if (error)
         throw InputError(field, "cannot replace \"" + file.string() + "\": " + error.message());

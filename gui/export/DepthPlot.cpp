@@ -19,15 +19,6 @@
 #include "Charts.h"
 
 namespace viewpipe::gui {
-namespace {
-
-std::string formatName(const DepthOptions& o)
-{
-    return std::to_string(o.bits) + "-bit " + (o.floating ? "float" : "fixed point") + (o.reversed ? ", reversed" : "");
-}
-
-} // namespace
-
 void drawDepthChart(vtkChartXY* chart, const Pipeline<double>& pipeline, const DepthOptions& options, Theme theme)
 {
     chart->ClearPlots();
@@ -51,7 +42,7 @@ void drawDepthChart(vtkChartXY* chart, const Pipeline<double>& pipeline, const D
         vtkNew<vtkTable> table;
         vtkNew<vtkDoubleArray> x, y;
         x->SetName("distance");
-        y->SetName((formatName(formats[i]) + (scene ? " (this scene)" : "")).c_str());
+        y->SetName((depthFormatName(formats[i]) + (scene ? " (this scene)" : "")).c_str());
         for (const DepthSample& sample : curve) {
             if (sample.pastFar)
                 continue; // a level cut short by the far plane is no measure of resolution

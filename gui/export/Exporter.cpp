@@ -53,7 +53,9 @@ void writeText(const fs::path& file, const std::string& text)
         throw std::runtime_error("cannot write " + file.string() + " (disk full?)");
 }
 
-void writePng(vtkRenderWindow* window, bool transparent, const fs::path& file)
+} // namespace
+
+void writeWindowPng(vtkRenderWindow* window, bool transparent, const fs::path& file)
 {
     vtkNew<vtkWindowToImageFilter> grab;
     grab->SetInput(window);
@@ -70,6 +72,8 @@ void writePng(vtkRenderWindow* window, bool transparent, const fs::path& file)
         throw std::runtime_error("cannot write " + file.string() + " (" +
                                  vtkErrorCode::GetStringFromErrorCode(writer->GetErrorCode()) + ")");
 }
+
+namespace {
 
 // PDF and SVG through VTK's GL2PS exporter. On the OpenGL2 backend it writes
 // the text as vector primitives over a raster picture of the 3D props; Debian's
@@ -176,9 +180,7 @@ void exportSheet(const Scene& scene, const fs::path& file, int width, int height
 {
     if (width < 128 || height < 128 || width > 8192 || height > 8192)
         throw InputError("--size", "must be WxH with 128 <= W, H <= 8192");
-    Eigen::AlignedBox<double, 3> box;
-    for (const Vec3<double>& p : objectVertices(scene))
-        box.extend(p);
+    const Eigen::AlignedBox<double, 3> box = objectBounds(scene);
     if (box.isEmpty())
         throw InputError("objects", "the scene has no objects to draw");
     struct Panel {
@@ -196,28 +198,30 @@ void exportSheet(const Scene& scene, const fs::path& file, int width, int height
     const double background = theme == Theme::Dark ? 0.11 : 1.0;
     const Rgb ink = ScenePainter::color(Element::Objects, theme);
     // One scale for the four views, as a drawing has: lengths compare across them.
+    std::vector<foley::ViewSpec<double>> views;
     double scale = 0;
     for (const Panel& panel : panels) {
-        const foley::ViewSpec<double> view = classicalView(panel.kind, box.min(), box.max());
-        scale = std::max(scale, 0.5 * (view.window.vmax - view.window.vmin));
+        views.push_back(classicalView(panel.kind, box.min(), box.max()));
+        scale = std::max(scale, 0.5 * (views.back().window.vmax - views.back().window.vmin));
     }
-    for (const Panel& panel : panels) {
+    std::vector<vtkRenderer*> renderers;
+    for (std::size_t k = 0; k < 4; ++k) {
         // These views are orthographic (projectors along VPN): VTK's parallel
         // camera, aimed along -VPN at the window's center, sees the window.
-        const foley::ViewSpec<double> view = classicalView(panel.kind, box.min(), box.max());
+        const Panel& panel = panels[k];
+        const foley::ViewSpec<double>& view = views[k];
         const Basis<double> b = foley::vrcBasis(view);
         const Vec3<double> center = foley::vrcToWorld(view, b, foley::windowCenter(view));
         vtkNew<vtkRenderer> renderer;
         renderer->SetViewport(panel.x0, panel.y0, panel.x0 + 0.5, panel.y0 + 0.5);
         renderer->SetBackground(background, background, background);
-        addObjectActors(renderer, scene, theme);
+        renderers.push_back(renderer);
         vtkCamera* camera = renderer->GetActiveCamera();
         camera->ParallelProjectionOn();
         camera->SetFocalPoint(center.data());
         camera->SetPosition(Vec3<double>(center + (view.prp.z() - view.back) * b.n).data());
         camera->SetViewUp(b.v.data());
         camera->SetParallelScale(scale);
-        renderer->ResetCameraClippingRange();
         vtkNew<vtkTextActor> caption;
         caption->SetInput(panel.caption);
         caption->GetPositionCoordinate()->SetCoordinateSystemToNormalizedViewport();
@@ -228,10 +232,13 @@ void exportSheet(const Scene& scene, const fs::path& file, int width, int height
         renderer->AddActor2D(caption);
         window->AddRenderer(renderer);
     }
+    addObjectActors(renderers, scene, theme);
+    for (vtkRenderer* renderer : renderers)
+        renderer->ResetCameraClippingRange();
     window->Render();
     const fs::path temporary = file.string() + ".tmp-" + std::to_string(::getpid()) + ".png";
     try {
-        writePng(window, false, temporary);
+        writeWindowPng(window, false, temporary);
         fs::rename(temporary, file);
     } catch (const std::exception& e) {
         std::error_code ignored;
@@ -298,7 +305,9 @@ std::vector<fs::path> exportStages(const Scene& scene, const ExportOptions& opti
         if (k < 0 || k > n)
             throw InputError("--stages", "stage numbers run from 0 (the world) to " + std::to_string(n));
 
-    const int frameCount = options.animate ? int(std::lround(options.fps * (kHoldSeconds * (n + 1) + n))) : 0;
+    // Each step takes fps frames, and every stage is held for `hold` frames.
+    const int hold = int(std::lround(options.fps * kHoldSeconds));
+    const int frameCount = options.animate ? n * options.fps + (n + 1) * hold : 0;
     const int total = int(chosen.size() * options.formats.size()) + 2 + (scene.effects.depth ? 1 : 0) + frameCount;
     int done = 0;
     auto step = [&](const std::string& what) {
@@ -343,10 +352,13 @@ std::vector<fs::path> exportStages(const Scene& scene, const ExportOptions& opti
             renderer->SetBackgroundAlpha(0);
         window->Render(); // sizes the renderer before framing
         painter.resetView();
-        std::vector<Mat4<double>> all;
-        for (int k = 0; k <= n; ++k)
-            all.push_back(cumulativeAt(stages, k));
-        const ScenePainter::Framing framing = painter.framingOf(all, true);
+        ScenePainter::Framing framing; // with fixedFraming, one that holds every stage
+        if (options.fixedFraming) {
+            std::vector<Mat4<double>> all;
+            for (int k = 0; k <= n; ++k)
+                all.push_back(cumulativeAt(stages, k));
+            framing = painter.framingOf(all, true);
+        }
 
         auto showAt = [&](double position, const std::string& caption) {
             painter.show(cumulativeAt(stages, position), StageTransition::canonicalOpacity(position, stages.size()));
@@ -365,7 +377,7 @@ std::vector<fs::path> exportStages(const Scene& scene, const ExportOptions& opti
             for (const std::string& format : options.formats) {
                 step("stage " + std::to_string(k) + " of " + std::to_string(n) + ": " + base + "." + format);
                 if (format == "png")
-                    writePng(window, options.transparent, temporary / (base + ".png"));
+                    writeWindowPng(window, options.transparent, temporary / (base + ".png"));
                 else
                     writeVector(window, painter, temporary / base, format, stageCaption(stages, k));
             }
@@ -378,7 +390,7 @@ std::vector<fs::path> exportStages(const Scene& scene, const ExportOptions& opti
             writeDepthPlot(pipeline, depth->options, temporary / "depth-resolution.png", options.theme);
         }
         step("matrices.json");
-        writeText(temporary / "matrices.json", cli::pipelineJson(scene, cli::PrecisionChoice{}, objectMeshes(scene)).dump(2) + "\n");
+        writeText(temporary / "matrices.json", cli::pipelineJson(scene, cli::PrecisionChoice{}, painter.effectOutcomes()).dump(2) + "\n");
 
         if (options.animate) {
             const fs::path frames = temporary / "frames";
@@ -389,14 +401,13 @@ std::vector<fs::path> exportStages(const Scene& scene, const ExportOptions& opti
                 std::snprintf(name, sizeof name, "%05d.png", frame++);
                 step("frame " + std::to_string(frame) + " of " + std::to_string(frameCount));
                 showAt(position, caption);
-                writePng(window, false, frames / name);
+                writeWindowPng(window, false, frames / name);
             };
-            const int hold = int(std::lround(options.fps * kHoldSeconds));
             for (int k = 0; k <= n; ++k) {
                 if (k > 0)
                     for (int f = 1; f <= options.fps; ++f) {
                         const double u = double(f) / options.fps;
-                        emit(k - 1 + u * u * (3 - 2 * u), stageCaption(stages, k));
+                        emit(k - 1 + StageTransition::smooth(u), stageCaption(stages, k));
                     }
                 for (int f = 0; f < hold; ++f)
                     emit(k, stageCaption(stages, k));

@@ -16,6 +16,8 @@
 
 #include "painter/ScenePainter.h"
 
+class vtkRenderWindow;
+
 namespace viewpipe::gui {
 
 struct ExportOptions {
@@ -51,6 +53,10 @@ std::vector<std::filesystem::path> exportStages(const Scene& scene, const Export
 // view in the remaining corner. Written atomically; throws InputError for a
 // bad size, a scene without objects or an unwritable file.
 void exportSheet(const Scene& scene, const std::filesystem::path& file, int width, int height, Theme theme);
+
+// What a render window shows, as a PNG (with alpha when `transparent`);
+// throws std::runtime_error when it cannot be written.
+void writeWindowPng(vtkRenderWindow* window, bool transparent, const std::filesystem::path& file);
 
 // "T(-VRP)" -> "t-vrp": the stage's part of its file names.
 std::string slug(const std::string& symbol);

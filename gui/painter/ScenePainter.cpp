@@ -264,9 +264,10 @@ vtkSmartPointer<vtkPolyData> depthLevels(const PolygonMesh& faces, const Pipelin
     }
     auto levels = vtkSmartPointer<vtkDoubleArray>::New();
     levels->SetName("depth level");
+    const Mat4<double> clip = pipeline.clipMatrix();
     for (vtkIdType i = 0; i < data->GetNumberOfPoints(); ++i) {
         const double* p = data->GetPoint(i);
-        levels->InsertNextValue(depthLevelAt(pipeline, Vec3<double>(p[0], p[1], p[2]), options)
+        levels->InsertNextValue(depthLevelAt(clip, pipeline.clipVolume, Vec3<double>(p[0], p[1], p[2]), options)
                                     .value_or(std::numeric_limits<double>::quiet_NaN()));
     }
     data->GetPointData()->SetScalars(levels);
@@ -315,15 +316,13 @@ std::string describeEffects(const EffectList& effects, const EffectOutcomes& out
             note << "clip: " << s.inside << " edges inside, " << s.clipped << " cut, " << s.outside
                  << " outside (ghosted)\n";
         } else if (name == "divide") {
-            const std::string& last = pipeline.stages.back().symbol;
-            note << (last == "M" || last == "divide" ? "divide: stage " + last + " appended\n"
-                                                     : std::string("divide: none needed (parallel)\n"));
+            note << (divideAddsStage(pipeline) ? "divide: stage " + pipeline.stages.back().symbol + " appended\n"
+                                               : std::string("divide: none needed (parallel)\n"));
         } else if (name == "cull" && outcomes.cull) {
             note << "cull: " << outcomes.cull->culled << " of " << outcomes.cull->faces << " faces (ghosted)\n";
         } else if (name == "depth" && outcomes.depth) {
             const DepthOutcome& d = *outcomes.depth;
-            note << "depth: " << d.options.bits << "-bit " << (d.options.floating ? "float" : "fixed point")
-                 << (d.options.reversed ? ", reversed" : "");
+            note << "depth: " << depthFormatName(d.options);
             if (bands)
                 note << "; each band " << (bands->levelsPerBand == 1 ? std::string("one stored value")
                                                                       : std::to_string(std::llround(bands->levelsPerBand)) +
@@ -367,6 +366,24 @@ ObjectGeometry objectGeometry(const SceneObject& object, std::size_t index)
     return {facesData(mesh), meshEdges(mesh)};
 }
 
+// The faces of an object's geometry as the core's polygon mesh.
+PolygonMesh polygonMesh(vtkPolyData* faces)
+{
+    PolygonMesh mesh;
+    vtkPoints* points = faces->GetPoints();
+    for (vtkIdType k = 0; k < points->GetNumberOfPoints(); ++k) {
+        const double* p = points->GetPoint(k);
+        mesh.vertices.emplace_back(p[0], p[1], p[2]);
+    }
+    vtkCellArray* polys = faces->GetPolys();
+    polys->InitTraversal();
+    vtkIdType count;
+    const vtkIdType* ids;
+    while (polys->GetNextCell(count, ids))
+        mesh.faces.emplace_back(ids, ids + count);
+    return mesh;
+}
+
 // Flat-shaded actors for an object's faces (translucent) and edges, colored for a theme.
 std::vector<vtkSmartPointer<vtkActor>> objectActors(const ObjectGeometry& geometry, Theme theme)
 {
@@ -382,7 +399,7 @@ std::vector<vtkSmartPointer<vtkActor>> objectActors(const ObjectGeometry& geomet
         p->LightingOff();
         p->SetOpacity(surface ? 0.35 : 1.0);
         p->SetLineWidth(2);
-        const Rgb c = surface ? ScenePainter::faceColor(theme) : ScenePainter::color(Element::Objects, theme);
+        const Rgb c = ScenePainter::styledColor(Element::Objects, surface, theme);
         p->SetColor(c.r, c.g, c.b);
         actors.push_back(actor);
     }
@@ -394,44 +411,35 @@ std::vector<vtkSmartPointer<vtkActor>> objectActors(const ObjectGeometry& geomet
 std::vector<Vec3<double>> objectVertices(const Scene& scene)
 {
     std::vector<Vec3<double>> vertices;
-    for (std::size_t i = 0; i < scene.objects.size(); ++i) {
-        const ObjectGeometry geometry = objectGeometry(scene.objects[i], i);
-        vtkPoints* points = geometry.first->GetPoints();
-        for (vtkIdType k = 0; k < points->GetNumberOfPoints(); ++k) {
-            const double* p = points->GetPoint(k);
-            vertices.emplace_back(p[0], p[1], p[2]);
-        }
-    }
+    for (const PolygonMesh& mesh : objectMeshes(scene))
+        vertices.insert(vertices.end(), mesh.vertices.begin(), mesh.vertices.end());
     return vertices;
 }
 
 std::vector<PolygonMesh> objectMeshes(const Scene& scene)
 {
     std::vector<PolygonMesh> meshes;
-    for (std::size_t i = 0; i < scene.objects.size(); ++i) {
-        const ObjectGeometry geometry = objectGeometry(scene.objects[i], i);
-        PolygonMesh mesh;
-        vtkPoints* points = geometry.first->GetPoints();
-        for (vtkIdType k = 0; k < points->GetNumberOfPoints(); ++k) {
-            const double* p = points->GetPoint(k);
-            mesh.vertices.emplace_back(p[0], p[1], p[2]);
-        }
-        vtkCellArray* polys = geometry.first->GetPolys();
-        polys->InitTraversal();
-        vtkIdType count;
-        const vtkIdType* ids;
-        while (polys->GetNextCell(count, ids))
-            mesh.faces.emplace_back(ids, ids + count);
-        meshes.push_back(std::move(mesh));
-    }
+    for (std::size_t i = 0; i < scene.objects.size(); ++i)
+        meshes.push_back(polygonMesh(objectGeometry(scene.objects[i], i).first));
     return meshes;
 }
 
-void addObjectActors(vtkRenderer* renderer, const Scene& scene, Theme theme)
+Eigen::AlignedBox<double, 3> objectBounds(const Scene& scene)
 {
-    for (std::size_t i = 0; i < scene.objects.size(); ++i)
-        for (const auto& actor : objectActors(objectGeometry(scene.objects[i], i), theme))
-            renderer->AddActor(actor);
+    Eigen::AlignedBox<double, 3> box;
+    for (const Vec3<double>& p : objectVertices(scene))
+        box.extend(p);
+    return box;
+}
+
+void addObjectActors(const std::vector<vtkRenderer*>& renderers, const Scene& scene, Theme theme)
+{
+    for (std::size_t i = 0; i < scene.objects.size(); ++i) {
+        const ObjectGeometry geometry = objectGeometry(scene.objects[i], i);
+        for (vtkRenderer* renderer : renderers)
+            for (const auto& actor : objectActors(geometry, theme))
+                renderer->AddActor(actor);
+    }
 }
 
 ScenePainter::ScenePainter(vtkRenderer* world, vtkRenderer* projected)
@@ -493,6 +501,11 @@ Rgb ScenePainter::faceColor(Theme theme)
     return theme == Theme::Dark ? Rgb{0.45, 0.55, 0.80} : Rgb{0.62, 0.70, 0.90};
 }
 
+Rgb ScenePainter::styledColor(Element element, bool surface, Theme theme)
+{
+    return element == Element::Objects && surface ? faceColor(theme) : color(element, theme);
+}
+
 Rgb ScenePainter::color(Element element, Theme theme)
 {
     const bool dark = theme == Theme::Dark;
@@ -520,12 +533,11 @@ void ScenePainter::clear()
     for (const Label& label : labels_)
         world_->RemoveActor(label.actor);
     if (projected_)
-        for (const auto& actor : projectedActors_)
-            projected_->RemoveActor(actor);
+        for (const ProjectedActor& a : projectedActors_)
+            projected_->RemoveActor(a.actor);
     layers_.clear();
     labels_.clear();
     projectedActors_.clear();
-    projectedFights_.clear();
 }
 
 void ScenePainter::addLayer(Element element, vtkSmartPointer<vtkPolyData> geometry, bool surface, double opacity)
@@ -559,12 +571,7 @@ void ScenePainter::addLabel(Element element, const std::string& text, const Vec3
 void ScenePainter::setScene(const Scene& scene)
 {
     const Pipeline<double> pipeline = buildPipeline(scene.camera, scene.effects);
-    ViewSetup<double> setup = viewSetup(scene.camera);
-    if (pipeline.stages.back().symbol == "M") { // after M the canonical volume is the parallel one
-        foley::ViewSpec<double> parallel = std::get<foley::ViewSpec<double>>(scene.camera);
-        parallel.projection = foley::Projection::Parallel;
-        setup.canonical = foley::canonicalCorners(parallel);
-    }
+    const ViewSetup<double> setup = viewSetup(scene.camera, scene.effects);
 
     // Read everything first: a mesh that fails leaves the previous picture.
     std::vector<ObjectGeometry> objects;
@@ -593,7 +600,8 @@ void ScenePainter::setScene(const Scene& scene)
     // faces the depth buffer cannot order are marked.
     std::vector<PolygonMesh> meshes;
     if (!scene.effects.empty())
-        meshes = objectMeshes(scene);
+        for (const ObjectGeometry& object : objects)
+            meshes.push_back(polygonMesh(object.first));
     const EffectOutcomes outcomes = runEffects(pipeline, meshes, scene.effects);
     // Each object's faces: in front, culled, or fighting for depth.
     struct FaceSets {
@@ -757,7 +765,8 @@ void ScenePainter::setScene(const Scene& scene)
                 colorByLevels(actors.front(), bandTable);
                 actors.front()->GetProperty()->SetOpacity(0.9);
             }
-            projectedActors_.insert(projectedActors_.end(), actors.begin(), actors.end());
+            for (std::size_t k = 0; k < actors.size(); ++k) // the faces, then the edges
+                projectedActors_.push_back({actors[k], Element::Objects, k == 0});
             if (!faceSets[o].fights.faces.empty()) { // faces the buffer cannot order, over the picture
                 auto mapper = vtkSmartPointer<vtkPolyDataMapper>::New();
                 mapper->SetInputData(facesData(faceSets[o].fights));
@@ -765,8 +774,7 @@ void ScenePainter::setScene(const Scene& scene)
                 fights->SetMapper(mapper);
                 fights->GetProperty()->LightingOff();
                 fights->GetProperty()->SetOpacity(0.6);
-                projectedFights_.push_back(fights);
-                projectedActors_.push_back(fights);
+                projectedActors_.push_back({fights, Element::Dop, true});
             }
         }
         // The window's outline, at mid depth so that no clipping plane cuts it.
@@ -779,10 +787,13 @@ void ScenePainter::setScene(const Scene& scene)
         actor->SetMapper(mapper);
         actor->GetProperty()->LightingOff();
         actor->GetProperty()->SetLineWidth(2);
-        projectedActors_.push_back(actor);
-        for (const auto& a : projectedActors_)
-            projected_->AddActor(a);
-        setUpProjectedView(scene, pipeline, outcomes.raster ? &*outcomes.raster : nullptr);
+        projectedActors_.push_back({actor, Element::Window, false});
+        for (const ProjectedActor& a : projectedActors_)
+            projected_->AddActor(a.actor);
+        std::vector<Segment> edges; // of the built-in objects: meshes have none listed
+        for (const ObjectGeometry& object : objects)
+            edges.insert(edges.end(), object.second.begin(), object.second.end());
+        setUpProjectedView(scene, pipeline, edges, outcomes.raster ? &*outcomes.raster : nullptr);
     }
     outcomes_ = outcomes;
     effectsNote_ = describeEffects(scene.effects, outcomes, pipeline, bands);
@@ -792,9 +803,10 @@ void ScenePainter::setScene(const Scene& scene)
     show(Mat4<double>::Identity(), 0);
 }
 
-void ScenePainter::setUpProjectedView(const Scene& scene, const Pipeline<double>& pipeline, const RasterOutcome* raster)
+void ScenePainter::setUpProjectedView(const Scene& scene, const Pipeline<double>& pipeline, const std::vector<Segment>& edges,
+                                      const RasterOutcome* raster)
 {
-    Mat4<double> clip = pipeline.toClip * pipeline.composite;
+    Mat4<double> clip = pipeline.clipMatrix();
     if (pipeline.convention == Convention::Foley)
         clip = foleyToGlClip() * clip;
     vtkCamera* camera = projected_->GetActiveCamera();
@@ -806,7 +818,7 @@ void ScenePainter::setUpProjectedView(const Scene& scene, const Pipeline<double>
     // Vanishing points, and the scene's edges along each principal axis drawn
     // on to theirs: 2D lines in the picture's coordinates (x, y in [-1, 1]).
     std::vector<Vec2<double>> picture; // pairs of end points
-    const Mat4<double> image = pipeline.toClip * pipeline.composite;
+    const Mat4<double> image = pipeline.clipMatrix();
     for (int axis = 0; axis < 3; ++axis) {
         const std::optional<VanishingPoint> vp = vanishingPoint(scene.camera, axis);
         if (!vp)
@@ -815,15 +827,13 @@ void ScenePainter::setUpProjectedView(const Scene& scene, const Pipeline<double>
         const double arm = 0.04;
         picture.insert(picture.end(), {target - Vec2<double>(arm, 0), target + Vec2<double>(arm, 0),
                                        target - Vec2<double>(0, arm), target + Vec2<double>(0, arm)});
-        for (std::size_t i = 0; i < scene.objects.size(); ++i) {
-            for (const Segment& edge : objectGeometry(scene.objects[i], i).second) { // meshes have none listed
-                const Vec3<double> d = (edge.second - edge.first).normalized();
-                if (std::abs(std::abs(d[axis]) - 1) > 1e-9)
-                    continue;
-                const std::optional<Vec3<double>> a = project(image, edge.first), b = project(image, edge.second);
-                if (a && b)
-                    picture.insert(picture.end(), {a->head<2>(), target, b->head<2>(), target});
-            }
+        for (const Segment& edge : edges) {
+            const Vec3<double> d = (edge.second - edge.first).normalized();
+            if (std::abs(std::abs(d[axis]) - 1) > 1e-9)
+                continue;
+            const std::optional<Vec3<double>> a = project(image, edge.first), b = project(image, edge.second);
+            if (a && b)
+                picture.insert(picture.end(), {a->head<2>(), target, b->head<2>(), target});
         }
     }
     vanishing_->SetVisibility(!picture.empty());
@@ -1053,7 +1063,7 @@ void ScenePainter::applyStyle()
     if (projected_)
         projected_->SetBackground(dark ? 0.07 : 0.96, dark ? 0.08 : 0.96, dark ? 0.10 : 0.97);
     for (Layer& layer : layers_) {
-        const Rgb c = layer.element == Element::Objects && layer.surface ? faceColor(theme_) : color(layer.element, theme_);
+        const Rgb c = styledColor(layer.element, layer.surface, theme_);
         vtkProperty* p = layer.actor->GetProperty();
         p->SetColor(c.r, c.g, c.b);
         p->SetOpacity(layer.element == Element::Canonical ? canonicalOpacity_ : layer.opacity);
@@ -1080,16 +1090,9 @@ void ScenePainter::applyStyle()
     const Rgb frame = color(Element::Frame, theme_);
     frameAxes_->GetProperty()->SetColor(frame.r, frame.g, frame.b);
     frameAxes_->GetProperty()->SetLineWidth(1.5 * lineScale_);
-    for (std::size_t k = 0; k < projectedActors_.size(); ++k) {
-        const bool border = k + 1 == projectedActors_.size();
-        const bool face = projectedActors_[k]->GetProperty()->GetOpacity() < 1;
-        const bool fights = std::find(projectedFights_.begin(), projectedFights_.end(), projectedActors_[k]) !=
-                            projectedFights_.end();
-        const Rgb c = border   ? color(Element::Window, theme_)
-                      : fights ? color(Element::Dop, theme_)
-                      : face   ? faceColor(theme_)
-                               : color(Element::Objects, theme_);
-        projectedActors_[k]->GetProperty()->SetColor(c.r, c.g, c.b);
+    for (const ProjectedActor& a : projectedActors_) {
+        const Rgb c = styledColor(a.element, a.surface, theme_);
+        a.actor->GetProperty()->SetColor(c.r, c.g, c.b);
     }
 }
 

@@ -48,9 +48,13 @@ std::vector<Vec3<double>> objectVertices(const Scene& scene);
 // The scene's objects as polygon meshes (meshes read with VTK), for effects.
 std::vector<PolygonMesh> objectMeshes(const Scene& scene);
 
+// The box around them (empty for a scene without objects).
+Eigen::AlignedBox<double, 3> objectBounds(const Scene& scene);
+
 // The scene's objects alone (faces and edges, as the painter styles them),
-// added to a renderer; for pictures that need no set-up around them.
-void addObjectActors(vtkRenderer* renderer, const Scene& scene, Theme theme);
+// added to each renderer (meshes read once); for pictures that need no
+// set-up around them.
+void addObjectActors(const std::vector<vtkRenderer*>& renderers, const Scene& scene, Theme theme);
 
 class ScenePainter {
 public:
@@ -109,6 +113,8 @@ public:
 
     static Rgb color(Element element, Theme theme);
     static Rgb faceColor(Theme theme);
+    // An element's color: objects' surfaces take faceColor, everything else color.
+    static Rgb styledColor(Element element, bool surface, Theme theme);
 
 private:
     struct Layer;
@@ -117,7 +123,9 @@ private:
     void addLayer(Element element, vtkSmartPointer<vtkPolyData> geometry, bool surface, double opacity);
     void addLabel(Element element, const std::string& text, const Vec3<double>& world);
     void applyStyle();
-    void setUpProjectedView(const Scene& scene, const Pipeline<double>& pipeline, const RasterOutcome* raster);
+    using Segment = std::pair<Vec3<double>, Vec3<double>>;
+    void setUpProjectedView(const Scene& scene, const Pipeline<double>& pipeline, const std::vector<Segment>& edges,
+                            const RasterOutcome* raster);
     double fitDistance(double radius) const;
 
     vtkRenderer* world_;
@@ -132,8 +140,12 @@ private:
     vtkSmartPointer<vtkActor2D> rasterGrid_; // the raster effect's pixels, projected view
     std::vector<Layer> layers_;
     std::vector<Label> labels_;
-    std::vector<vtkSmartPointer<vtkActor>> projectedActors_;
-    std::vector<vtkSmartPointer<vtkActor>> projectedFights_; // z-fighting faces, among projectedActors_
+    struct ProjectedActor {
+        vtkSmartPointer<vtkActor> actor;
+        Element element; // styled as the world view's layers are
+        bool surface;
+    };
+    std::vector<ProjectedActor> projectedActors_;
     Theme theme_ = Theme::Dark;
     int fontSize_ = 18;
     double lineScale_ = 1;

@@ -11,18 +11,18 @@ constexpr double kWiden = 0.2;   // share of the step spent widening the view
 constexpr double kSettle = 0.2;  // and closing in at the end
 constexpr int kSweepSamples = 8; // positions sampled to frame a rotation's sweep
 
-double smooth(double u)
-{
-    u = std::clamp(u, 0.0, 1.0);
-    return u * u * (3 - 2 * u);
-}
-
 ScenePainter::Framing blend(const ScenePainter::Framing& a, const ScenePainter::Framing& b, double u)
 {
     return {a.center + u * (b.center - a.center), a.radius + u * (b.radius - a.radius)};
 }
 
 } // namespace
+
+double StageTransition::smooth(double u)
+{
+    u = std::clamp(u, 0.0, 1.0);
+    return u * u * (3 - 2 * u);
+}
 
 double StageTransition::canonicalOpacity(double position, std::size_t stageCount)
 {

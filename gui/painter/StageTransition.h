@@ -18,8 +18,10 @@ public:
     StageTransition(ScenePainter& painter, const std::vector<Stage<double>>& stages, int from, int to);
 
     void apply(double s);
-    int from() const { return from_; }
     int to() const { return to_; }
+
+    // Ease in and out: 0 at 0, 1 at 1, flat at both ends (u clamped to [0, 1]).
+    static double smooth(double u);
 
     // The canonical outline fades in while the last stage is reached.
     static double canonicalOpacity(double position, std::size_t stageCount);

@@ -18,9 +18,11 @@ TEST(Animation, RotationStageTurnsInsteadOfBlending)
         // The turn so far is t times the whole angle.
         EXPECT_NEAR(Eigen::AngleAxis<double>(m).angle(), 2.5 * t, 1e-12) << t;
     }
-    // A linear blend halfway would shrink: the reason for the slerp.
+    // A linear blend halfway would shrink: the reason for the slerp, which is not that blend.
     const Mat3<double> blended = 0.5 * (Mat3<double>::Identity() + r);
     EXPECT_LT(blended.determinant(), 0.5);
+    const Mat3<double> halfway = interpolateStage(stage, 0.5).topLeftCorner<3, 3>();
+    EXPECT_FALSE(halfway.isApprox(blended, 1e-3));
 }
 
 TEST(Animation, OtherStagesBlendLinearlyFromTheIdentity)

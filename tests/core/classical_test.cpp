@@ -18,7 +18,7 @@ Classification classified(ClassicalKind kind, const ClassicalParameters& p = {})
 Vec2<double> picture(const foley::ViewSpec<double>& spec, const Vec3<double>& p)
 {
     const Pipeline<double> pipeline = buildPipeline(spec);
-    const Vec4<double> h = pipeline.toClip * pipeline.composite * p.homogeneous();
+    const Vec4<double> h = pipeline.clipMatrix() * p.homogeneous();
     return h.head<2>() / h.w();
 }
 

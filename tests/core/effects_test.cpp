@@ -85,16 +85,14 @@ TEST(Clip, SutherlandHodgmanByHand)
 
 TEST(Effects, DivideAppendsFoleysM)
 {
-    EffectList effects;
-    effects.divide = true;
-    effects.names = {"divide"};
+    const EffectList effects = withEffect({}, "divide", true);
     const Pipeline<double> plain = house();
     const Pipeline<double> p = withEffectStages(plain, effects);
     ASSERT_EQ(p.stages.size(), 6u);
     EXPECT_EQ(p.stages[4].symbol, "S_per");
     EXPECT_EQ(p.stages[5].symbol, "M");
     EXPECT_TRUE(p.stages[5].matrix.isApprox(plain.toClip));
-    EXPECT_TRUE(p.composite.isApprox(plain.toClip * plain.composite));
+    EXPECT_TRUE(p.composite.isApprox(plain.clipMatrix()));
     EXPECT_TRUE(p.toClip.isIdentity());
     // The house vertex (16, 10, 54) lands where trace says, either way.
     EXPECT_TRUE(tracePoint(p, {16, 10, 54}).divided->isApprox(*tracePoint(plain, {16, 10, 54}).divided));
@@ -115,9 +113,7 @@ TEST(Effects, OnlyRequestedEffectsRun)
     EXPECT_FALSE(none.cull);
     EXPECT_EQ(runs("clip"), 0);
     EXPECT_EQ(runs("cull"), 0);
-    EffectList clipOnly;
-    clipOnly.clip = true;
-    clipOnly.names = {"clip"};
+    const EffectList clipOnly = withEffect({}, "clip", true);
     EffectOutcomes clipped = runEffects(p, objects, clipOnly);
     EXPECT_TRUE(clipped.clip);
     EXPECT_EQ(runs("clip"), 1);
@@ -129,9 +125,7 @@ TEST(Effects, OnlyRequestedEffectsRun)
 // the front plane to n = 40 cuts the house (which spans n = 30 to 54).
 TEST(Effects, ClipCountsForTheHouse)
 {
-    EffectList clip;
-    clip.clip = true;
-    clip.names = {"clip"};
+    const EffectList clip = withEffect({}, "clip", true);
     const std::vector<PolygonMesh> objects = {houseMesh()};
     const EffectOutcomes all = runEffects(house(), objects, clip);
     EXPECT_EQ(all.clip->segments.inside, 15);
@@ -153,9 +147,7 @@ TEST(Effects, ClipCountsForTheHouse)
 // x = 8, y = 6 sees the ones whose outward normals point toward it.
 TEST(Effects, CullBackFaces)
 {
-    EffectList cull;
-    cull.cull = true;
-    cull.names = {"cull"};
+    const EffectList cull = withEffect({}, "cull", true);
     const EffectOutcomes o = runEffects(house(), {houseMesh()}, cull);
     ASSERT_TRUE(o.cull);
     EXPECT_EQ(o.cull->faces, 7);
@@ -174,7 +166,7 @@ TEST(Effects, SceneListsAndRefuses)
     const std::string view = R"("view": {"projection": "perspective", "vrp": [0, 0, 0], "vpn": [0, 0, 1],
         "vup": [0, 1, 0], "prp": [8, 6, 84], "window": [-50, 50, -50, 50], "front": 60, "back": 25})";
     const Scene s = parseScene("{" + view + R"(, "effects": ["clip", {"divide": {}}, "cull"]})", ".");
-    EXPECT_TRUE(s.effects.clip && s.effects.divide && s.effects.cull);
+    EXPECT_TRUE(s.effects.has("clip") && s.effects.has("divide") && s.effects.has("cull"));
     EXPECT_EQ(s.effects.names, (std::vector<std::string>{"clip", "divide", "cull"}));
     EXPECT_NE(sceneToJson(s).find("\"clip\""), std::string::npos);
     auto refused = [&](const std::string& effects, const std::string& field, const std::string& reason) {
@@ -212,7 +204,7 @@ TEST(Depth, ResolutionFollowsTheFormula)
     for (int bits : {16, 24}) {
         EffectList effects;
         effects.depth = DepthOptions{bits, false, false};
-        effects.names = {"depth"};
+        effects = withEffect(effects, "depth", true);
         const DepthOutcome d = *runEffects(p, {}, effects).depth;
         ASSERT_EQ(d.resolution.size(), 9u);
         for (const DepthSample& sample : d.resolution) {
@@ -259,14 +251,14 @@ TEST(Depth, LevelsAtPoints)
     const DepthOptions unorm16{16, false, false};
     for (double s : {1.5, 2.0, 10.0, 37.0, 99.0}) {
         const double d = f * (s - n) / ((f - n) * s);
-        const std::optional<double> level = depthLevelAt(p, {0.1, -0.2, -s}, unorm16);
+        const std::optional<double> level = depthLevelAt(p.clipMatrix(), p.clipVolume, {0.1, -0.2, -s}, unorm16);
         ASSERT_TRUE(level) << s;
         EXPECT_EQ(*level, std::nearbyint(d * 65535)) << s;
     }
     // Nothing is stored for points before the near plane, past the far plane or behind the eye.
-    EXPECT_FALSE(depthLevelAt(p, {0, 0, -0.5}, unorm16));
-    EXPECT_FALSE(depthLevelAt(p, {0, 0, -101}, unorm16));
-    EXPECT_FALSE(depthLevelAt(p, {0, 0, 5}, unorm16));
+    EXPECT_FALSE(depthLevelAt(p.clipMatrix(), p.clipVolume, {0, 0, -0.5}, unorm16));
+    EXPECT_FALSE(depthLevelAt(p.clipMatrix(), p.clipVolume, {0, 0, -101}, unorm16));
+    EXPECT_FALSE(depthLevelAt(p.clipMatrix(), p.clipVolume, {0, 0, 5}, unorm16));
     // Float levels are the bit patterns: neighbouring floats are one level apart, in order.
     const DepthOptions float32{32, true, false};
     const float half = 0.5f;
@@ -316,7 +308,7 @@ TEST(Effects, TurnedOnAndOff)
 {
     EffectList list = withEffect(withEffect({}, "clip", true), "cull", true);
     EXPECT_EQ(list.names, (std::vector<std::string>{"clip", "cull"}));
-    EXPECT_TRUE(list.clip && list.cull && !list.divide);
+    EXPECT_TRUE(list.has("clip") && list.has("cull") && !list.has("divide"));
     list.depth = DepthOptions{16, false, true};
     list = withEffect(list, "depth", true);
     EXPECT_EQ(list.depth->bits, 16);
@@ -327,7 +319,7 @@ TEST(Effects, TurnedOnAndOff)
     EXPECT_EQ(withEffect(list, "depth", true).names, (std::vector<std::string>{"clip", "cull", "depth", "raster"}));
     list = withEffect(withEffect(list, "clip", false), "depth", false);
     EXPECT_EQ(list.names, (std::vector<std::string>{"cull", "raster"}));
-    EXPECT_FALSE(list.clip || list.depth);
+    EXPECT_FALSE(list.has("clip") || list.depth);
     EXPECT_TRUE(withEffect(list, "raster", false).names == std::vector<std::string>{"cull"});
     try {
         withEffect(list, "fog", true);

@@ -31,6 +31,7 @@
 #include <vtkRenderer.h>
 #include <vtkRendererCollection.h>
 
+#include "files.h"
 #include "app/AccuracyPanel.h"
 #include "app/ClassicalDialog.h"
 #include "app/DepthPanel.h"
@@ -207,10 +208,7 @@ private slots:
 
         // A file that does not parse is refused and the open scene stays.
         const QString broken = dir.filePath("broken.json");
-        QFile out(broken);
-        QVERIFY(out.open(QIODevice::WriteOnly));
-        out.write("{\"view\": 3}");
-        out.close();
+        QVERIFY(writeFile(broken, "{\"view\": 3}"));
         QVERIFY(!other.openScene(broken));
         QCOMPARE(sceneToJson(other.document()->scene()), saved);
     }
@@ -220,10 +218,7 @@ private slots:
         MainWindow& w = *window_;
         QTemporaryDir dir;
         const QString obj = dir.filePath("tetra.obj");
-        QFile out(obj);
-        QVERIFY(out.open(QIODevice::WriteOnly));
-        out.write("v 0 0 30\nv 10 0 30\nv 0 10 30\nv 0 0 40\nf 1 3 2\nf 1 2 4\nf 2 3 4\nf 3 1 4\n");
-        out.close();
+        QVERIFY(writeFile(obj, "v 0 0 30\nv 10 0 30\nv 0 10 30\nv 0 0 40\nf 1 3 2\nf 1 2 4\nf 2 3 4\nf 3 1 4\n"));
         QVERIFY(w.importMesh(obj));
         QCOMPARE(w.document()->scene().objects.size(), std::size_t(2));
         QCOMPARE(w.document()->scene().objects[1].type, ObjectType::Mesh);
@@ -237,10 +232,7 @@ private slots:
         QCOMPARE(w.document()->scene().objects.size(), std::size_t(1));
 
         const QString junk = dir.filePath("junk.stl");
-        QFile bad(junk);
-        QVERIFY(bad.open(QIODevice::WriteOnly));
-        bad.write("this is not a mesh");
-        bad.close();
+        QVERIFY(writeFile(junk, "this is not a mesh"));
         QVERIFY(!w.importMesh(junk));
         QCOMPARE(w.document()->scene().objects.size(), std::size_t(1));
     }
@@ -350,8 +342,8 @@ private slots:
         auto& camera = std::get<gl::Camera<double>>(scene.camera);
         auto& perspective = std::get<gl::Perspective<double>>(camera.projection);
         perspective.aspect = double(width) / height;
-        const RasterOutcome raster =
-            rasterize(buildPipeline(scene.camera), objectMeshes(scene), RasterOptions{width, height});
+        const std::vector<PolygonMesh> meshes = objectMeshes(scene);
+        const RasterOutcome raster = rasterize(buildPipeline(scene.camera), meshes, RasterOptions{width, height});
 
         vtkNew<vtkRenderWindow> window;
         window->SetOffScreenRendering(1);
@@ -359,7 +351,6 @@ private slots:
         window->SetMultiSamples(0);
         vtkNew<vtkRenderer> renderer;
         window->AddRenderer(renderer);
-        const std::vector<PolygonMesh> meshes = objectMeshes(scene);
         for (std::size_t o = 0; o < meshes.size(); ++o) {
             vtkNew<vtkPoints> points;
             for (const Vec3<double>& v : meshes[o].vertices)

@@ -20,6 +20,8 @@
 #include <cmath>
 #include <csignal>
 
+#include "files.h"
+
 namespace {
 
 // Share of pixels whose largest channel difference exceeds `tolerance`.
@@ -103,9 +105,8 @@ QString readAll(const QString& file)
 QString writeScene(const QTemporaryDir& dir, const QString& name, const QByteArray& json)
 {
     const QString file = dir.filePath(name);
-    QFile f(file);
-    f.open(QIODevice::WriteOnly);
-    f.write(json);
+    if (!writeFile(file, json))
+        qFatal("cannot write %s", qPrintable(file));
     return file;
 }
 
@@ -166,10 +167,7 @@ private slots:
         QJsonObject plain = QJsonDocument::fromJson(readAll(corridor).toUtf8()).object();
         plain.remove("effects");
         const QString plainScene = dir.filePath("plain.json");
-        QFile file(plainScene);
-        QVERIFY(file.open(QIODevice::WriteOnly));
-        file.write(QJsonDocument(plain).toJson());
-        file.close();
+        QVERIFY(writeFile(plainScene, QJsonDocument(plain).toJson()));
         Run r = viewpipe({"export", corridor, "--out", dir.filePath("effects"), "--stages", "4", "--quiet"});
         QVERIFY2(r.exitCode == 0, qPrintable(r.err));
         r = viewpipe({"export", plainScene, "--out", dir.filePath("plain"), "--stages", "4", "--quiet"});
@@ -257,11 +255,9 @@ private slots:
         const QString pdflatex = QStandardPaths::findExecutable("pdflatex");
         if (pdflatex.isEmpty())
             QSKIP("no TeX installation (pdflatex): matrices.tex was checked for content but not compiled");
-        QFile document(dir.filePath("check.tex"));
-        document.open(QIODevice::WriteOnly);
-        document.write("\\documentclass{article}\n\\usepackage{amsmath}\n\\begin{document}\n\\input{out/matrices.tex}\n"
-                       "\\input{oblique/matrices.tex}\n\\end{document}\n");
-        document.close();
+        QVERIFY(writeFile(dir.filePath("check.tex"),
+                          "\\documentclass{article}\n\\usepackage{amsmath}\n\\begin{document}\n\\input{out/matrices.tex}\n"
+                          "\\input{oblique/matrices.tex}\n\\end{document}\n"));
         QProcess tex2pdf;
         tex2pdf.setWorkingDirectory(dir.path());
         tex2pdf.start(pdflatex, {"-interaction=nonstopmode", "-halt-on-error", "check.tex"});
@@ -330,10 +326,7 @@ private slots:
         // An interrupted export leaves the previous files as they were and no partial ones.
         const QString out = dir.filePath("slides");
         QDir().mkpath(out);
-        QFile old(out + "/00-world.png");
-        old.open(QIODevice::WriteOnly);
-        old.write("previous");
-        old.close();
+        QVERIFY(writeFile(out + "/00-world.png", "previous"));
         QProcess process;
         process.start(VIEWPIPE_EXE, {"export", kHouse, "--out", out, "--animate", "--quiet"});
         QVERIFY(process.waitForStarted());

@@ -209,7 +209,7 @@ TEST(FarFromOrigin, DoubleAccurateFloatNeedsCameraRelative)
     // Camera-relative float: N = N_rest * T(-VRP); N_rest = N * T(VRP) and
     // p - VRP formed in double, the rest in float.
     const Pipeline<double> p = buildPipeline(camera);
-    const Mat4<double> clip = p.toClip * p.composite * translation<double>(s.vrp);
+    const Mat4<double> clip = p.clipMatrix() * translation<double>(s.vrp);
     const Mat4<float> rest = clip.cast<float>();
     std::vector<float> in, out(3 * vertices.size());
     for (const Vec3<double>& v : vertices) {

@@ -98,7 +98,7 @@ inline ReferenceSolution makeReference(const CameraSpec<double>& camera, unsigne
     ref.bits = bits;
     const CameraSpec<Reference> exact = castCamera<Reference>(camera);
     ref.pipeline = buildPipeline(exact);
-    ref.clip = ref.pipeline.toClip * ref.pipeline.composite;
+    ref.clip = ref.pipeline.clipMatrix();
     std::visit(
         [&](const auto& c) {
             using C = std::decay_t<decltype(c)>;
@@ -235,7 +235,7 @@ AccuracyMetrics measureAccuracy(const CameraSpec<double>& camera, const std::vec
         const Vec4<T> back = inverse * (p.composite * Vec4<T>(T(q.x()), T(q.y()), T(q.z()), T(1)));
         roundtrips.push_back(back.template head<3>() / back.w());
     }
-    const Mat4<T> clip = p.toClip * p.composite;
+    const Mat4<T> clip = p.clipMatrix();
     std::vector<T> in(3 * vertices.size()), result(3 * vertices.size());
     for (std::size_t i = 0; i < vertices.size(); ++i)
         for (int a = 0; a < 3; ++a)
@@ -288,7 +288,7 @@ inline AccuracyMetrics measureDoubleDoubleAccuracy(const CameraSpec<double>& cam
     AccuracyMetrics out = measureAccuracy<Float128>(camera, {}, ref, viewport); // R and the round trip
     const Pipeline<Float128> p = buildPipeline(castCamera<Float128>(camera));
     const Mat4DD composite = toDoubleDouble(p.composite);
-    const Mat4DD clip = toDoubleDouble(Mat4<Float128>(p.toClip * p.composite));
+    const Mat4DD clip = toDoubleDouble(Mat4<Float128>(p.clipMatrix()));
     setReferenceBits(ref.bits);
     Mat4<Reference> entries;
     for (int r = 0; r < 4; ++r)

@@ -5,6 +5,7 @@
 // the scene's geometry; `effectRuns` counts the calls so that tests can show
 // that an effect nobody asked for never ran.
 
+#include <algorithm>
 #include <array>
 #include <atomic>
 #include <map>
@@ -30,16 +31,20 @@ struct RasterOptions {
     int width = 64, height = 48;
 };
 
-// The effects a scene lists, in its order, with their parameters.
+// The effects a scene lists, in its order, with their parameters:
+// "clip" (segments and polygons against the view volume, homogeneously),
+// "divide" (Foley's M, or OpenGL's divide into NDC, as a stage), "cull" (back
+// faces in canonical space), "depth" and "raster". Built with withEffect.
 struct EffectList {
-    bool clip = false;   // clip segments and polygons against the view volume, homogeneously
-    bool divide = false; // append Foley's M (OpenGL: the divide into NDC) as a stage
-    bool cull = false;   // back faces in canonical space
-    std::optional<DepthOptions> depth;
-    std::optional<RasterOptions> raster;
     std::vector<std::string> names; // as listed
+    std::optional<DepthOptions> depth;   // while "depth" is listed
+    std::optional<RasterOptions> raster; // while "raster" is listed
     bool empty() const { return names.empty(); }
+    bool has(const std::string& name) const { return std::find(names.begin(), names.end(), name) != names.end(); }
 };
+
+// "16-bit fixed point", "32-bit float, reversed": as captions and legends name it.
+std::string depthFormatName(const DepthOptions& options);
 
 inline bool operator==(const DepthOptions& a, const DepthOptions& b)
 {
@@ -67,22 +72,32 @@ std::map<std::string, long> effectRuns();
 
 void countEffectRun(const std::string& effect);
 
+// Whether "divide" appends a stage to this pipeline: M after a perspective
+// Foley view, "divide" after an OpenGL camera; a parallel Foley view's
+// canonical volume is parallel already.
+template <class T> bool divideAddsStage(const Pipeline<T>& p)
+{
+    return p.convention == Convention::OpenGL || p.projection == "perspective";
+}
+
 // The pipeline with the effects' stages: with "divide", Foley's M is appended
 // to a perspective view (symbol "M"), and an OpenGL camera gains "divide"
 // (the identity: the picture is divided by w at every stage already).
 template <class T> Pipeline<T> withEffectStages(Pipeline<T> p, const EffectList& effects)
 {
-    if (!effects.divide)
+    if (!effects.has("divide"))
         return p;
     countEffectRun("divide");
-    if (p.convention == Convention::Foley && p.projection == "perspective") {
+    if (!divideAddsStage(p))
+        return p;
+    if (p.convention == Convention::Foley) {
         p.stages.push_back({"M",
                             "map the canonical perspective volume onto the canonical parallel volume (the divide "
                             "by w = -z follows)",
                             p.toClip});
-        p.composite = p.toClip * p.composite;
+        p.composite = p.clipMatrix();
         p.toClip = Mat4<T>::Identity();
-    } else if (p.convention == Convention::OpenGL) {
+    } else {
         p.stages.push_back(
             {"divide", "divide by w: clip coordinates become normalized device coordinates", Mat4<T>::Identity()});
     }
@@ -96,7 +111,6 @@ inline Pipeline<double> buildPipeline(const CameraSpec<double>& camera, const Ef
 
 // Which side of each clipping plane a homogeneous point lies on: bit k set
 // when plane k (left, right, bottom, top, near, far) is violated.
-enum ClipPlane { Left = 1, Right = 2, Bottom = 4, Top = 8, Near = 16, Far = 32 };
 unsigned outcode(const Vec4<double>& clip, ClipVolume volume);
 std::vector<std::string> planeNames(unsigned code, Convention convention);
 
@@ -132,9 +146,10 @@ double storedDepth(double depth, const DepthOptions& options);
 // neighbouring values are one level apart: the integer itself for fixed
 // point, the bit pattern for float (which orders floats in [0, 1]).
 double depthLevel(double depth, const DepthOptions& options);
-// The level stored for a world point, if it lies in front of the eye between
-// the near (front) and far (back) planes; nothing otherwise.
-std::optional<double> depthLevelAt(const Pipeline<double>& pipeline, const Vec3<double>& world,
+// The level stored for a world point (through `clip`, a pipeline's
+// clipMatrix()), if it lies in front of the eye between the near (front) and
+// far (back) planes; nothing otherwise.
+std::optional<double> depthLevelAt(const Mat4<double>& clip, ClipVolume volume, const Vec3<double>& world,
                                    const DepthOptions& options);
 
 // Bands that show quantization on the scene: each holds `levelsPerBand`

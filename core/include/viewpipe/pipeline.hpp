@@ -43,6 +43,9 @@ template <class T> struct Pipeline {
     std::optional<Mat4<T>> projectionMatrix; // OpenGL: glFrustum, glOrtho or gluPerspective
     Mat4<T> toClip = Mat4<T>::Identity();  // after the composite, before the divide: Foley's M, or I
     ClipVolume clipVolume = ClipVolume::FoleyParallel;
+
+    // World coordinates to clip coordinates: where the volume is tested and the divide taken.
+    Mat4<T> clipMatrix() const { return toClip * composite; }
 };
 
 template <class T> Pipeline<T> buildPipeline(const foley::ViewSpec<T>& spec)

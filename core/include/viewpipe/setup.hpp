@@ -7,6 +7,7 @@
 
 #include <array>
 
+#include "viewpipe/effects.hpp"
 #include "viewpipe/pipeline.hpp"
 
 namespace viewpipe {
@@ -64,6 +65,19 @@ template <class T> ViewSetup<T> viewSetup(const gl::Camera<T>& camera)
 template <class T> ViewSetup<T> viewSetup(const CameraSpec<T>& camera)
 {
     return std::visit([](const auto& c) { return viewSetup(c); }, camera);
+}
+
+// With "divide", a perspective Foley view ends, after M, in the canonical parallel volume.
+template <class T> ViewSetup<T> viewSetup(const CameraSpec<T>& camera, const EffectList& effects)
+{
+    ViewSetup<T> s = viewSetup(camera);
+    const auto* spec = std::get_if<foley::ViewSpec<T>>(&camera);
+    if (spec && effects.has("divide") && spec->projection == foley::Projection::Perspective) {
+        foley::ViewSpec<T> parallel = *spec;
+        parallel.projection = foley::Projection::Parallel;
+        s.canonical = foley::canonicalCorners(parallel);
+    }
+    return s;
 }
 
 } // namespace viewpipe
