@@ -1,8 +1,11 @@
 #include "viewpipe/scene.hpp"
 
+#include "viewpipe/mesh_io.hpp"
+
 #include <nlohmann/json.hpp>
 
 #include <algorithm>
+#include <atomic>
 #include <cerrno>
 #include <cmath>
 #include <cstring>
@@ -10,6 +13,7 @@
 #include <limits>
 #include <set>
 #include <sstream>
+#include <fcntl.h>
 #include <unistd.h>
 
 namespace viewpipe {
@@ -165,12 +169,6 @@ gl::Camera<double> readCamera(const Json& j)
     return camera;
 }
 
-std::string lowercase(std::string s)
-{
-    std::transform(s.begin(), s.end(), s.begin(), [](unsigned char c) { return char(std::tolower(c)); });
-    return s;
-}
-
 SceneObject readObject(const Json& j, const std::string& path, const std::filesystem::path& baseDir)
 {
     if (!j.is_object())
@@ -194,9 +192,7 @@ SceneObject readObject(const Json& j, const std::string& path, const std::filesy
         requireObject(j, path, {"type", "path"}, {"type", "path"});
         object.type = ObjectType::Mesh;
         object.path = readString(j["path"], path + ".path");
-        const std::string extension = lowercase(std::filesystem::path(object.path).extension().string());
-        if (extension != ".obj" && extension != ".ply" && extension != ".stl")
-            throw InputError(path + ".path", "must name an .obj, .ply or .stl file (got \"" + object.path + "\")");
+        meshFormatOf(object.path, path + ".path");
         object.resolvedPath = baseDir / object.path;
         if (!std::ifstream(object.resolvedPath))
             throw InputError(path + ".path", "cannot read \"" + object.resolvedPath.string() + "\": " +
@@ -254,14 +250,13 @@ void readEffect(const Json& j, const std::string& path, EffectList& effects)
         }
         if (parameters && parameters->contains("bits")) {
             const Json& bits = (*parameters)["bits"];
-            if (!bits.is_number_integer())
-                throw InputError(where + ".bits", "must be 16, 24 or 32");
+            // Compared before narrowing: get<int> would wrap 2^32 + 16 to 16.
+            if (!bits.is_number_integer() || (bits != 16 && bits != 24 && bits != 32))
+                throw InputError(where + ".bits", "must be 16, 24 or 32 (got " + bits.dump() + ")");
             depth.bits = bits.get<int>();
         } else if (depth.floating) {
             depth.bits = 32;
         }
-        if (depth.bits != 16 && depth.bits != 24 && depth.bits != 32)
-            throw InputError(where + ".bits", "must be 16, 24 or 32 (got " + std::to_string(depth.bits) + ")");
         if (depth.floating && depth.bits != 32)
             throw InputError(where + ".bits", "a float depth buffer has 32 bits");
         if (parameters && parameters->contains("reversed")) {
@@ -330,18 +325,119 @@ Json cameraJson(const CameraSpec<double>& camera)
               {"projection", projection}}}};
 }
 
+// nlohmann's DOM builder, told where each value goes, so that a number too
+// large for a double is refused with its field path ("view.vrp[0]"); nlohmann
+// alone reports it as a parse error at a byte.
+class PathTrackingBuilder {
+public:
+    explicit PathTrackingBuilder(Json& root) : dom_(root) {}
+
+    bool null() { return enter() && dom_.null(); }
+    bool boolean(bool value) { return enter() && dom_.boolean(value); }
+    bool number_integer(Json::number_integer_t value) { return enter() && dom_.number_integer(value); }
+    bool number_unsigned(Json::number_unsigned_t value) { return enter() && dom_.number_unsigned(value); }
+    bool number_float(Json::number_float_t value, const Json::string_t& text)
+    {
+        return enter() && dom_.number_float(value, text);
+    }
+    bool string(Json::string_t& value) { return enter() && dom_.string(value); }
+    bool binary(Json::binary_t& value) { return enter() && dom_.binary(value); }
+
+    bool start_object(std::size_t size)
+    {
+        const bool ok = enter() && dom_.start_object(size);
+        frames_.push_back({true, {}, 0});
+        return ok;
+    }
+    bool key(Json::string_t& key)
+    {
+        frames_.back().key = key;
+        return dom_.key(key);
+    }
+    bool end_object()
+    {
+        frames_.pop_back();
+        return dom_.end_object();
+    }
+    bool start_array(std::size_t size)
+    {
+        const bool ok = enter() && dom_.start_array(size);
+        frames_.push_back({false, {}, 0});
+        return ok;
+    }
+    bool end_array()
+    {
+        frames_.pop_back();
+        return dom_.end_array();
+    }
+
+    template <class Exception>
+    bool parse_error(std::size_t position, const std::string& token, const Exception& error)
+    {
+        constexpr int kNumberOverflow = 406;
+        if (error.id == kNumberOverflow)
+            throw InputError(pendingPath(), "not a finite number");
+        return dom_.parse_error(position, token, error);
+    }
+
+private:
+    struct Frame {
+        bool object;
+        std::string key; // objects: the key of the value being read
+        std::size_t next; // arrays: the index of the next value
+    };
+
+    // A value starts: in an array, it takes the next index.
+    bool enter()
+    {
+        if (!frames_.empty() && !frames_.back().object)
+            ++frames_.back().next;
+        return true;
+    }
+
+    // The path of the value being read (arrays have counted it already unless it failed to parse).
+    std::string pendingPath() const
+    {
+        std::string path;
+        for (std::size_t k = 0; k < frames_.size(); ++k) {
+            const Frame& frame = frames_[k];
+            const bool last = k + 1 == frames_.size();
+            path = frame.object ? child(path, frame.key) : element(path, last ? frame.next : frame.next - 1);
+        }
+        return path.empty() ? "$" : path;
+    }
+
+    nlohmann::detail::json_sax_dom_parser<Json> dom_;
+    std::vector<Frame> frames_;
+};
+
+// nlohmann's syntax error as a position: its byte offset counted into lines
+// and columns as nlohmann's own message does, and the message's last part
+// ("unexpected '}'; expected ']'").
+InputError syntaxError(const Json::parse_error& error, const std::string& text)
+{
+    const std::size_t end = std::min<std::size_t>(error.byte, text.size());
+    const std::size_t line = 1 + std::size_t(std::count(text.begin(), text.begin() + std::ptrdiff_t(end), '\n'));
+    const std::size_t lineStart = text.rfind('\n', end == 0 ? std::string::npos : end - 1);
+    const std::size_t column = error.byte - (lineStart == std::string::npos ? 0 : lineStart + 1);
+    // "[json.exception.parse_error.101] parse error at line 4, column 3: syntax error while parsing array - ...".
+    const std::string what = error.what();
+    std::size_t start = what.find(": ", what.find("column"));
+    start = start == std::string::npos ? 0 : start + 2;
+    const std::size_t dash = what.find(" - ", start);
+    return InputError::at(line, column, what.substr(dash == std::string::npos ? start : dash + 3));
+}
+
 } // namespace
 
 Scene parseScene(const std::string& text, const std::filesystem::path& baseDir)
 {
     Json root;
     try {
-        root = Json::parse(text);
-    } catch (const Json::exception& e) {
-        // nlohmann's messages read "[json.exception.parse_error.101] parse error at line 3, column 5: ...".
-        const std::string what = e.what();
-        const std::size_t start = what.find("] ");
-        throw InputError("$", "invalid JSON: " + (start == std::string::npos ? what : what.substr(start + 2)));
+        PathTrackingBuilder builder(root);
+        Json::sax_parse(text, &builder);
+    } catch (const Json::parse_error& e) {
+        throw syntaxError(e, text);
     }
     requireObject(root, "", {"name", "view", "camera", "objects", "effects"}, {});
     if (root.contains("view") == root.contains("camera"))
@@ -416,22 +512,35 @@ std::string sceneToJson(const Scene& scene)
 
 void writeFileAtomically(const std::filesystem::path& file, const std::string& contents)
 {
+    // Unique per process and per call: two runs, or two threads, never share a temporary file.
+    static std::atomic<unsigned> counter{0};
     std::filesystem::path temporary = file;
-    temporary += ".tmp-" + std::to_string(::getpid());
-    {
-        std::ofstream out(temporary, std::ios::binary | std::ios::trunc);
-        out << contents;
-        out.flush();
-        if (!out) {
-            std::error_code ignored;
-            std::filesystem::remove(temporary, ignored);
-            throw InputError(file.string(), std::string("cannot write: ") + std::strerror(errno));
-        }
+    temporary += ".tmp-" + std::to_string(::getpid()) + "-" + std::to_string(counter++);
+    const int fd = ::open(temporary.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC, 0644);
+    if (fd < 0)
+        throw InputError(file.string(), std::string("cannot write: ") + std::strerror(errno));
+    std::size_t written = 0;
+    while (written < contents.size()) {
+        const ssize_t n = ::write(fd, contents.data() + written, contents.size() - written);
+        if (n < 0 && errno == EINTR)
+            continue;
+        if (n <= 0)
+            break;
+        written += std::size_t(n);
     }
+    // fsync before the rename: after a power cut the file is the old one or the new one, never empty.
+    const bool complete = written == contents.size() && ::fsync(fd) == 0;
+    const int savedErrno = errno;
+    ::close(fd);
     std::error_code error;
+    if (!complete) {
+        std::filesystem::remove(temporary, error);
+        throw InputError(file.string(), std::string("cannot write: ") + std::strerror(savedErrno));
+    }
     std::filesystem::rename(temporary, file, error);
     if (error) {
-        std::filesystem::remove(temporary, error);
+        std::error_code ignored;
+        std::filesystem::remove(temporary, ignored);
         throw InputError(file.string(), "cannot replace the file: " + error.message());
     }
 }

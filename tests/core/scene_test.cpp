@@ -53,7 +53,7 @@ TEST(Scene, OpenGlCamera)
 
 TEST(Scene, RefusesWithTheFieldPath)
 {
-    refused("{", "$", "invalid JSON: parse error at line 1, column 2");
+    refused("{", "1:2", "unexpected end of input");
     refused("[]", "$", "must be an object");
     refused(R"({"name": "x"})", "$", "exactly one of");
     refused(withView(kHouseView, R"(, "colour": 1)"), "colour", "unknown key");
@@ -72,7 +72,7 @@ TEST(Scene, RefusesWithTheFieldPath)
             "view.vup", "parallel");
     refused(withView(R"({"projection": "perspective", "vrp": [0, 0, 0], "vpn": [0, 0, 1], "vup": [0, 1, 0],
         "prp": [8, 6, 84], "window": [-50, 50, -50, 50], "front": 1e999, "back": 25})"),
-            "$", "invalid JSON: number overflow parsing '1e999'");
+            "view.front", "not a finite number");
     refused(withView(kHouseView, R"(, "objects": [{"type": "teapot"}])"), "objects[0].type", "\"house\", \"box\"");
     refused(withView(kHouseView, R"(, "objects": [{"type": "box", "min": [0, 0, 0], "max": [1, 0, 1]}])"),
             "objects[0].max", "must exceed min");
@@ -81,6 +81,12 @@ TEST(Scene, RefusesWithTheFieldPath)
     refused(withView(kHouseView, R"(, "objects": [{"type": "mesh", "path": "scenes/house.json"}])"),
             "objects[0].path", ".obj, .ply or .stl");
     refused(withView(kHouseView, R"(, "effects": {})"), "effects", "must be an array");
+    refused(withView(kHouseView, R"(, "effects": [{"depth": {"bits": 8}}])"), "effects[0].depth.bits",
+            "must be 16, 24 or 32 (got 8)");
+    refused(withView(kHouseView, R"(, "effects": [{"depth": {"bits": 4294967312}}])"), "effects[0].depth.bits",
+            "must be 16, 24 or 32 (got 4294967312)");
+    refused(withView(kHouseView, R"(, "effects": [{"depth": {"bits": "24"}}])"), "effects[0].depth.bits",
+            "must be 16, 24 or 32");
     refused(withView(kHouseView, R"(, "effects": ["sparkle"])"), "effects[0]", "unknown effect \"sparkle\"");
     refused(R"({"camera": {"look_at": {"eye": [0, 0, 5], "center": [0, 0, 0], "up": [0, 1, 0]},
         "projection": {"type": "frustum", "left": -1, "right": 1, "bottom": -1, "top": 1, "near": 0, "far": 9}}})",
@@ -88,6 +94,37 @@ TEST(Scene, RefusesWithTheFieldPath)
     refused(R"({"camera": {"look_at": {"eye": [0, 0, 5], "center": [0, 0, 0], "up": [0, 1, 0], "roll": 0},
         "projection": {"type": "ortho", "left": -1, "right": 1, "bottom": -1, "top": 1, "near": 0, "far": 9}}})",
             "camera.look_at.roll", "unknown key");
+}
+
+TEST(Scene, SyntaxErrorsNameLineAndColumn)
+{
+    const std::string text = "{\n  \"name\": \"t\",\n  \"objects\": [{\"type\": \"house\"}\n  }\n";
+    try {
+        parseScene(text, kData);
+        ADD_FAILURE() << "expected an InputError";
+    } catch (const InputError& e) {
+        EXPECT_TRUE(e.isPosition());
+        EXPECT_EQ(e.field(), "4:3");
+        EXPECT_EQ(e.reason(), "unexpected '}'; expected ']'");
+        EXPECT_EQ(e.describe("scene.json"), "scene.json:4:3: unexpected '}'; expected ']'");
+    }
+    // A field error keeps the "FILE: field: reason" form.
+    EXPECT_EQ(InputError("view.vup", "is missing").describe("scene.json"), "scene.json: view.vup: is missing");
+    refused("{\"name\": tru}", "1:13", "invalid literal");
+    refused("", "1:1", "unexpected end of input");
+    refused("{} {}", "1:4", "expected end of input");
+}
+
+TEST(Scene, NumberOverflowNamesTheField)
+{
+    refused(withView(R"({"projection": "perspective", "vrp": [1e999, 0, 0], "vpn": [0, 0, 1], "vup": [0, 1, 0],
+        "prp": [8, 6, 84], "window": [-50, 50, -50, 50], "front": 60, "back": 25})"),
+            "view.vrp[0]", "not a finite number");
+    refused(withView(kHouseView, R"(, "objects": [{"type": "house"},
+        {"type": "box", "min": [0, 0, -1e999], "max": [1, 1, 1]}])"),
+            "objects[1].min[2]", "not a finite number");
+    refused(withView(kHouseView, R"(, "objects": [[[]], [-1E+400]])"), "objects[1][0]", "not a finite number");
+    refused("1e999", "$", "not a finite number");
 }
 
 TEST(Scene, SaveLoadRoundTripIsAtomic)

@@ -13,12 +13,27 @@ public:
     InputError(std::string field, std::string reason)
         : std::runtime_error(field + ": " + reason), field_(std::move(field)), reason_(std::move(reason)) {}
 
+    // A syntax error at a place in a text file rather than in a field: field()
+    // reads "LINE:COLUMN" (1-based).
+    static InputError at(std::size_t line, std::size_t column, std::string reason)
+    {
+        InputError error(std::to_string(line) + ":" + std::to_string(column), std::move(reason));
+        error.position_ = true;
+        return error;
+    }
+
     const std::string& field() const noexcept { return field_; }
     const std::string& reason() const noexcept { return reason_; }
+    bool isPosition() const noexcept { return position_; }
+
+    // The CLI's one line about `file`: "FILE: field.path: reason", or for a
+    // position "FILE:LINE:COLUMN: reason", the form editors jump to.
+    std::string describe(const std::string& file) const { return file + (position_ ? ":" : ": ") + what(); }
 
 private:
     std::string field_;
     std::string reason_;
+    bool position_ = false;
 };
 
 } // namespace viewpipe

@@ -1,0 +1,43 @@
+#!/usr/bin/env bash
+# Fuzzes the parsers of untrusted files (scene JSON, OBJ/PLY/STL meshes) with
+# libFuzzer under ASan and UBSan: builds fuzz/ with clang into build-fuzz/ (the
+# core libraries only, no Qt or VTK), runs each target for SECONDS (default 60)
+# on a temporary copy of its seed corpus, prints the executions and exits 1 if
+# any target crashed (the input is kept in build-fuzz/crashes/).
+# Usage: scripts/fuzz.sh [SECONDS-PER-TARGET]
+# VIEWPIPE_FUZZ_BUILD, if set, is the command that builds: it gets the build
+# folder and the targets appended (e.g. a wrapper that serializes builds).
+set -euo pipefail
+cd "$(dirname "$0")/.."
+seconds=${1:-60}
+root=$PWD
+build=$root/build-fuzz
+targets=(scene_fuzz mesh_fuzz)
+
+CC=clang CXX=clang++ cmake -S fuzz -B "$build" >/dev/null
+if [ -n "${VIEWPIPE_FUZZ_BUILD:-}" ]; then
+  $VIEWPIPE_FUZZ_BUILD "$build" "${targets[@]}"
+else
+  cmake --build "$build" -j "$(nproc)" --target "${targets[@]}"
+fi
+
+work=$(mktemp -d)
+trap 'rm -rf "$work"' EXIT
+mkdir -p "$build/crashes"
+status=0
+for target in "${targets[@]}"; do
+  name=${target%_fuzz}
+  corpus=$work/$name
+  cp -r "fuzz/corpus/$name" "$corpus"
+  log=$build/$target.log
+  if "$build/$target" "$corpus" -dict="fuzz/$name.dict" -max_total_time="$seconds" -timeout=25 \
+       -artifact_prefix="$build/crashes/$target-" -print_final_stats=1 >"$log" 2>&1; then
+    result=ok
+  else
+    result="CRASHED (see $log and $build/crashes/)"
+    status=1
+  fi
+  runs=$(sed -n 's/^stat::number_of_executed_units: *//p' "$log" | tail -n 1)
+  echo "$target: ${runs:-?} executions in $seconds s, $(find "$corpus" -type f | wc -l) corpus inputs: $result"
+done
+exit $status
