@@ -1,33 +1,125 @@
 #include "ParameterPanel.h"
 
+#include <QApplication>
 #include <QComboBox>
-#include <QDoubleSpinBox>
-#include <QFormLayout>
 #include <QHBoxLayout>
+#include <QKeyEvent>
 #include <QLabel>
+#include <QLineEdit>
 #include <QRegularExpression>
+#include <QStyle>
+#include <QStyleOptionFrame>
 #include <QVBoxLayout>
 
+#include <charconv>
 #include <cmath>
+#include <cstring>
 
 namespace viewpipe::gui {
 namespace {
 
-QList<double> list(const Vec3<double>& v)
-{
-    return {v.x(), v.y(), v.z()};
-}
-
-Vec3<double> vec(const QList<double>& v)
-{
-    return {v[0], v[1], v[2]};
-}
+const QString kProjectionPrefix = QString::fromStdString(gl::kProjectionField);
 
 QString layoutKeyOf(const CameraSpec<double>& camera)
 {
     if (std::holds_alternative<foley::ViewSpec<double>>(camera))
         return "foley";
     return "gl-" + QString::fromStdString(gl::projectionName(std::get<gl::Camera<double>>(camera).projection));
+}
+
+// The numbers a field stands for in a camera, one per component; none for a
+// field the camera does not have.
+QList<double*> numbersOf(CameraSpec<double>& camera, const QString& field)
+{
+    auto vec = [](Vec3<double>& v) { return QList<double*>{&v.x(), &v.y(), &v.z()}; };
+    if (auto* s = std::get_if<foley::ViewSpec<double>>(&camera)) {
+        if (field == "view.vrp")
+            return vec(s->vrp);
+        if (field == "view.vpn")
+            return vec(s->vpn);
+        if (field == "view.vup")
+            return vec(s->vup);
+        if (field == "view.prp")
+            return vec(s->prp);
+        if (field == "view.window")
+            return {&s->window.umin, &s->window.umax, &s->window.vmin, &s->window.vmax};
+        if (field == "view.front")
+            return {&s->front};
+        if (field == "view.back")
+            return {&s->back};
+        return {};
+    }
+    auto& gl = std::get<gl::Camera<double>>(camera);
+    if (field == "camera.look_at.eye")
+        return vec(gl.lookAt.eye);
+    if (field == "camera.look_at.center")
+        return vec(gl.lookAt.center);
+    if (field == "camera.look_at.up")
+        return vec(gl.lookAt.up);
+    if (!field.startsWith(kProjectionPrefix))
+        return {};
+    const QString name = field.mid(kProjectionPrefix.size());
+    return std::visit(
+        [&name](auto& p) -> QList<double*> {
+            if constexpr (std::is_same_v<std::decay_t<decltype(p)>, gl::Perspective<double>>) {
+                if (name == "fovy_deg")
+                    return {&p.fovyDegrees};
+                if (name == "aspect")
+                    return {&p.aspect};
+            } else {
+                if (name == "left")
+                    return {&p.left};
+                if (name == "right")
+                    return {&p.right};
+                if (name == "bottom")
+                    return {&p.bottom};
+                if (name == "top")
+                    return {&p.top};
+            }
+            if (name == "near")
+                return {&p.zNear};
+            if (name == "far")
+                return {&p.zFar};
+            return {};
+        },
+        gl.projection);
+}
+
+// The shortest text that reads back as the same double, with a '.' whatever the locale.
+QString numberText(double value)
+{
+    if (std::isinf(value))
+        return value > 0 ? "infinity" : "-infinity";
+    return QString::number(value, 'g', QLocale::FloatingPointShortest);
+}
+
+// Reads a number in the C locale (a '.' decimal point, an optional exponent),
+// correctly rounded; returns why the text is not one, or nothing.
+QString readNumber(const QString& text, bool infinityAllowed, double& value)
+{
+    const QString trimmed = text.trimmed();
+    const QByteArray bytes = trimmed.toUtf8();
+    const char* first = bytes.constData();
+    const char* last = first + bytes.size();
+    if (first == last)
+        return ParameterPanel::tr("is empty: a number is needed");
+    if (*first == '+' && last - first > 1 && first[1] != '+' && first[1] != '-')
+        ++first; // from_chars takes no plus sign
+    const auto [end, error] = std::from_chars(first, last, value);
+    const QString quoted = "\"" + trimmed + "\"";
+    if (error == std::errc::result_out_of_range)
+        return ParameterPanel::tr("%1 is out of the range of a double").arg(quoted);
+    if (error != std::errc() || end != last)
+        return trimmed.contains(',') ? ParameterPanel::tr("%1 is not a number (the decimal point is '.')").arg(quoted)
+                                     : ParameterPanel::tr("%1 is not a number").arg(quoted);
+    if (std::isnan(value) || (std::isinf(value) && !infinityAllowed))
+        return ParameterPanel::tr("%1 is not a finite number").arg(quoted);
+    return {};
+}
+
+bool sameBits(double a, double b)
+{
+    return std::memcmp(&a, &b, sizeof a) == 0;
 }
 
 // Switching an OpenGL camera between a box (frustum, ortho) and gluPerspective
@@ -60,6 +152,55 @@ gl::ProjectionSpec<double> convertProjection(const gl::ProjectionSpec<double>& f
     return gl::Perspective<double>{fovy, (right - left) / (top - bottom), zNear, zFar};
 }
 
+// The width a line edit needs to show all its text, as QLineEdit::sizeHint
+// counts it: the text, 2-pixel margins and the cursor, in the style's frame.
+int wholeTextWidth(const QLineEdit* box)
+{
+    QStyleOptionFrame option;
+    option.initFrom(box);
+    option.lineWidth = box->style()->pixelMetric(QStyle::PM_DefaultFrameWidth, &option, box);
+    const QSize text(box->fontMetrics().horizontalAdvance(box->text()) + 5, box->fontMetrics().height());
+    return box->style()->sizeFromContents(QStyle::CT_LineEdit, &option, text, box).width();
+}
+
+// A field's boxes side by side, or one under another when side by side (an
+// equal share of the width each) some text would not show whole.
+class NumbersLayout : public QBoxLayout {
+public:
+    NumbersLayout() : QBoxLayout(LeftToRight) {}
+
+    void setGeometry(const QRect& rect) override
+    {
+        if (!turning_) {
+            int widest = 0;
+            for (int i = 0; i < count(); ++i)
+                if (const auto* box = qobject_cast<const QLineEdit*>(itemAt(i)->widget()))
+                    widest = std::max(widest, wholeTextWidth(box));
+            const int sideBySide = count() * widest + spacing() * (count() - 1);
+            // A margin before turning back, wider than a scroll bar: stacked boxes can make the dock's
+            // scroll bar appear, taking that width, and side by side make it go, turning them to and fro.
+            const int margin = QApplication::style()->pixelMetric(QStyle::PM_ScrollBarExtent) + 16;
+            const Direction wanted = sideBySide + (direction() == TopToBottom ? margin : 0) <= rect.width()
+                                         ? LeftToRight
+                                         : TopToBottom;
+            if (direction() != wanted) {
+                turning_ = true; // the layouts around answer by laying this one out again
+                setDirection(wanted);
+                turning_ = false;
+            }
+        }
+        QBoxLayout::setGeometry(rect);
+    }
+
+private:
+    bool turning_ = false;
+};
+
+QString tooltip(const QString& title, const QString& text)
+{
+    return "<p><b>" + title.toHtmlEscaped() + "</b> — " + text.toHtmlEscaped() + "</p>";
+}
+
 } // namespace
 
 ParameterPanel::ParameterPanel(QWidget* parent) : QWidget(parent)
@@ -68,6 +209,7 @@ ParameterPanel::ParameterPanel(QWidget* parent) : QWidget(parent)
     generalError_ = new QLabel;
     generalError_->setObjectName("generalError");
     generalError_->setWordWrap(true);
+    generalError_->setTextInteractionFlags(Qt::TextSelectableByMouse);
     generalError_->setStyleSheet("color: #e5484d; font-weight: bold;");
     generalError_->hide();
     layout->addWidget(generalError_);
@@ -78,214 +220,296 @@ ParameterPanel::ParameterPanel(QWidget* parent) : QWidget(parent)
 
 void ParameterPanel::rebuild(const CameraSpec<double>& camera)
 {
-    // The old form may hold the sender of the signal being handled: replace it later.
+    // The new form is made whole before it is shown: its fields show with it, at once.
     auto* body = new QWidget;
-    layout()->replaceWidget(body_, body);
+    boxes_.clear();
+    numbers_.clear();
+    errors_.clear();
+    labels_.clear();
+    choices_.clear();
+    names_.clear();
+    // Rows in a box layout, not a QFormLayout: it gives every wrapped reason the height of its text.
+    rows_ = new QVBoxLayout(body);
+    rows_->setContentsMargins(0, 0, 0, 0);
+    layoutKey_ = layoutKeyOf(camera);
+    addFields(camera);
+    alignNames();
+    // The old form may hold the sender of the signal being handled: replace it later.
+    delete layout()->replaceWidget(body_, body); // the old form's layout item is ours to delete
+    body->show();
     body_->hide();
     body_->deleteLater();
     body_ = body;
-    boxes_.clear();
-    errors_.clear();
-    choices_.clear();
-    form_ = new QFormLayout(body_);
-    form_->setFieldGrowthPolicy(QFormLayout::AllNonFixedFieldsGrow);
-    layoutKey_ = layoutKeyOf(camera);
+}
 
-    if (const auto* spec = std::get_if<foley::ViewSpec<double>>(&camera)) {
+void ParameterPanel::addFields(const CameraSpec<double>& camera)
+{
+    if (std::holds_alternative<foley::ViewSpec<double>>(camera)) {
         addChoice("view.projection", tr("Projection"), {tr("perspective"), tr("parallel")},
-                  spec->projection == foley::Projection::Perspective ? 0 : 1);
-        addRow("view.vrp", "VRP", list(spec->vrp), tr("View reference point (world x, y, z)"));
-        addRow("view.vpn", "VPN", list(spec->vpn), tr("View-plane normal (world)"));
-        addRow("view.vup", "VUP", list(spec->vup), tr("View-up vector (world)"));
-        addRow("view.prp", "PRP", list(spec->prp), tr("Projection reference point (VRC u, v, n)"));
-        addRow("view.window", tr("Window"), {spec->window.umin, spec->window.umax, spec->window.vmin, spec->window.vmax},
-               tr("umin, umax, vmin, vmax on the view plane"));
-        addRow("view.front", tr("Front F"), {spec->front}, tr("Front clipping plane, n in VRC"));
-        addRow("view.back", tr("Back B"), {spec->back}, tr("Back clipping plane, n in VRC"));
+                  tooltip(tr("Projection"), tr("perspective: the center of projection is the PRP; parallel: the "
+                                               "direction of projection runs from the PRP to the window's center "
+                                               "(CW).")));
+        const QStringList xyz = {"x", "y", "z"};
+        addRow("view.vrp", "VRP", xyz,
+               tr("View reference point: the origin of the viewing-reference coordinates (VRC), in world "
+                  "coordinates."));
+        addRow("view.vpn", "VPN", xyz,
+               tr("View-plane normal: the direction of the VRC's n axis, in world coordinates; any length but "
+                  "zero."));
+        addRow("view.vup", "VUP", xyz,
+               tr("View-up vector: its projection on the view plane is the VRC's v axis, in world coordinates; "
+                  "any length but zero, not parallel to the VPN."));
+        addRow("view.prp", "PRP", {"u", "v", "n"},
+               tr("Projection reference point (PRP), in VRC (u, v, n): the center of projection; for a parallel "
+                  "projection, the start of the direction of projection towards the window's center."));
+        addRow("view.window", tr("Window"), {"umin", "umax", "vmin", "vmax"},
+               tr("umin, umax, vmin, vmax: the window on the view plane, in VRC; umin < umax, vmin < vmax."));
+        addRow("view.front", tr("Front F"), {},
+               tr("Front clipping plane distance along n from the VRP, in VRC (the plane n = F); F > B."));
+        addRow("view.back", tr("Back B"), {},
+               tr("Back clipping plane distance along n from the VRP, in VRC (the plane n = B); B < F."));
         return;
     }
     const auto& gl = std::get<gl::Camera<double>>(camera);
-    addRow("camera.look_at.eye", tr("Eye"), list(gl.lookAt.eye), tr("gluLookAt eye"));
-    addRow("camera.look_at.center", tr("Center"), list(gl.lookAt.center), tr("gluLookAt center"));
-    addRow("camera.look_at.up", tr("Up"), list(gl.lookAt.up), tr("gluLookAt up"));
+    addRow("camera.look_at.eye", tr("Eye"), {"eyeX", "eyeY", "eyeZ"},
+           tr("gluLookAt eye: the position of the eye, in world coordinates."));
+    addRow("camera.look_at.center", tr("Center"), {"centerX", "centerY", "centerZ"},
+           tr("gluLookAt center: the point looked at, in world coordinates; not the eye."));
+    addRow("camera.look_at.up", tr("Up"), {"upX", "upY", "upZ"},
+           tr("gluLookAt up: the up direction, in world coordinates; any length but zero, not parallel to "
+              "center − eye."));
     addChoice("camera.projection.type", tr("Projection"), {"glFrustum", "glOrtho", "gluPerspective"},
-              int(gl.projection.index()));
-    if (const auto* p = std::get_if<gl::Perspective<double>>(&gl.projection)) {
-        addRow("camera.projection.fovy_deg", tr("fovy (deg)"), {p->fovyDegrees}, tr("Vertical field of view"));
-        addRow("camera.projection.aspect", tr("Aspect"), {p->aspect}, tr("Width / height"));
-        addRow("camera.projection.near", tr("Near"), {p->zNear}, tr("Distance to the near plane"));
-        addRow("camera.projection.far", tr("Far"), {p->zFar}, tr("Distance to the far plane"));
+              tooltip(tr("Projection"), tr("The projection matrix: glFrustum, glOrtho or gluPerspective. Switching "
+                                           "keeps near, far and the size of the near plane's rectangle.")));
+    if (std::holds_alternative<gl::Perspective<double>>(gl.projection)) {
+        addRow("camera.projection.fovy_deg", tr("fovy (deg)"), {},
+               tr("gluPerspective fovy: the vertical field of view, in degrees; 0 < fovy < 180."));
+        addRow("camera.projection.aspect", tr("Aspect"), {},
+               tr("gluPerspective aspect: the width of the field of view divided by its height (no unit)."));
+        addRow("camera.projection.near", tr("Near"), {},
+               tr("gluPerspective zNear: the distance from the eye to the near clipping plane, in eye "
+                  "coordinates (world units); greater than 0."));
+        addRow("camera.projection.far", tr("Far"), {},
+               tr("gluPerspective zFar: the distance from the eye to the far clipping plane, in eye coordinates "
+                  "(world units); greater than zNear, or infinity for no far plane."));
         return;
     }
-    std::visit(
-        [&](const auto& box) {
-            if constexpr (!std::is_same_v<std::decay_t<decltype(box)>, gl::Perspective<double>>) {
-                addRow("camera.projection.left", tr("Left"), {box.left}, "");
-                addRow("camera.projection.right", tr("Right"), {box.right}, "");
-                addRow("camera.projection.bottom", tr("Bottom"), {box.bottom}, "");
-                addRow("camera.projection.top", tr("Top"), {box.top}, "");
-                addRow("camera.projection.near", tr("Near"), {box.zNear}, "");
-                addRow("camera.projection.far", tr("Far"), {box.zFar}, "");
-            }
-        },
-        gl.projection);
+    if (std::holds_alternative<gl::Frustum<double>>(gl.projection)) {
+        const QString edge = tr("glFrustum %1: the %2 edge of the near plane's rectangle (%3 = %1 at z = "
+                                "−nearVal), in eye coordinates.");
+        addRow("camera.projection.left", tr("Left"), {}, edge.arg("left", tr("left"), "x"));
+        addRow("camera.projection.right", tr("Right"), {}, edge.arg("right", tr("right"), "x"));
+        addRow("camera.projection.bottom", tr("Bottom"), {}, edge.arg("bottom", tr("bottom"), "y"));
+        addRow("camera.projection.top", tr("Top"), {}, edge.arg("top", tr("top"), "y"));
+        addRow("camera.projection.near", tr("Near"), {},
+               tr("glFrustum nearVal: the distance from the eye to the near clipping plane, in eye coordinates "
+                  "(world units); greater than 0."));
+        addRow("camera.projection.far", tr("Far"), {},
+               tr("glFrustum farVal: the distance from the eye to the far clipping plane, in eye coordinates "
+                  "(world units); greater than nearVal, or infinity for no far plane."));
+        return;
+    }
+    const QString plane = tr("glOrtho %1: the %2 clipping plane %3 = %1, in eye coordinates (world units).");
+    addRow("camera.projection.left", tr("Left"), {}, plane.arg("left", tr("left"), "x"));
+    addRow("camera.projection.right", tr("Right"), {}, plane.arg("right", tr("right"), "x"));
+    addRow("camera.projection.bottom", tr("Bottom"), {}, plane.arg("bottom", tr("bottom"), "y"));
+    addRow("camera.projection.top", tr("Top"), {}, plane.arg("top", tr("top"), "y"));
+    addRow("camera.projection.near", tr("Near"), {},
+           tr("glOrtho nearVal: the distance from the eye to the near clipping plane z = −nearVal, in eye "
+              "coordinates (world units); may be negative, not equal to farVal."));
+    addRow("camera.projection.far", tr("Far"), {},
+           tr("glOrtho farVal: the distance from the eye to the far clipping plane z = −farVal, in eye "
+              "coordinates (world units); not equal to nearVal."));
 }
 
-void ParameterPanel::addRow(const QString& field, const QString& label, const QList<double>& values,
+void ParameterPanel::addRow(const QString& field, const QString& label, const QStringList& components,
                             const QString& tip)
 {
-    auto* row = new QWidget;
-    auto* h = new QHBoxLayout(row);
-    h->setContentsMargins(0, 0, 0, 0);
-    QList<QDoubleSpinBox*> boxes;
-    for (double value : values) {
-        auto* box = new QDoubleSpinBox;
+    const QString entry = "<p>" +
+                          tr("Type a number with a '.' decimal point (C locale, whatever the system's), e.g. "
+                             "0.25, -45 or 1.5e-3; Return applies it, Escape restores the value.")
+                              .toHtmlEscaped() +
+                          "</p>";
+    auto* row = new QHBoxLayout;
+    row->addWidget(addName(label, tooltip(label, tip)));
+    auto* numbers = new NumbersLayout;
+    row->addLayout(numbers, 1);
+    QList<QLineEdit*> boxes;
+    for (int i = 0; i < std::max(1, int(components.size())); ++i) {
+        auto* box = new QLineEdit;
         box->setObjectName(field);
-        box->setRange(-1e7, 1e7);
-        box->setDecimals(3);
-        box->setKeyboardTracking(false);
-        box->setValue(value);
-        box->setToolTip(tip);
-        box->setMinimumWidth(60);
-        box->setButtonSymbols(QAbstractSpinBox::NoButtons);
-        connect(box, QOverload<double>::of(&QDoubleSpinBox::valueChanged), this, [this, field] { emitEdit(field); });
-        h->addWidget(box);
+        box->setToolTip(tooltip(components.isEmpty() ? label : label + ": " + components[i], tip) + entry);
+        box->setMinimumWidth(50);
+        box->installEventFilter(this);
+        connect(box, &QLineEdit::editingFinished, this, [this, box] { commit(box); });
+        numbers->addWidget(box);
         boxes.push_back(box);
     }
+    rows_->addLayout(row);
+    // The reason spans the panel's width under its field and wraps: it is shown whole.
     auto* error = new QLabel;
     error->setWordWrap(true);
+    error->setTextInteractionFlags(Qt::TextSelectableByMouse);
     error->setStyleSheet("color: #e5484d;");
     error->hide();
-    auto* cell = new QWidget;
-    auto* v = new QVBoxLayout(cell);
-    v->setContentsMargins(0, 0, 0, 0);
-    v->addWidget(row);
-    v->addWidget(error);
-    form_->addRow(label, cell);
+    rows_->addWidget(error);
     boxes_[field] = boxes;
+    numbers_[field] = numbers;
     errors_[field] = error;
+    labels_[field] = label;
 }
 
-void ParameterPanel::addChoice(const QString& field, const QString& label, const QStringList& items, int current)
+QLabel* ParameterPanel::addName(const QString& label, const QString& tip)
+{
+    auto* name = new QLabel(label);
+    name->setToolTip(tip);
+    names_.push_back(name);
+    return name;
+}
+
+void ParameterPanel::alignNames()
+{
+    int width = 0;
+    for (const QLabel* name : names_)
+        width = std::max(width, name->sizeHint().width());
+    for (QLabel* name : names_)
+        name->setMinimumWidth(width);
+}
+
+void ParameterPanel::changeEvent(QEvent* event)
+{
+    if (event->type() == QEvent::FontChange)
+        alignNames(); // the names have their new font already
+    QWidget::changeEvent(event);
+}
+
+void ParameterPanel::addChoice(const QString& field, const QString& label, const QStringList& items,
+                               const QString& tip)
 {
     auto* combo = new QComboBox;
     combo->setObjectName(field);
     combo->addItems(items);
-    combo->setCurrentIndex(current);
-    connect(combo, QOverload<int>::of(&QComboBox::currentIndexChanged), this, [this, field] { emitEdit(field); });
-    form_->addRow(label, combo);
+    combo->setToolTip(tip);
+    connect(combo, QOverload<int>::of(&QComboBox::currentIndexChanged), this,
+            [this, field](int index) { choose(field, index); });
+    auto* row = new QHBoxLayout;
+    row->addWidget(addName(label, tip));
+    row->addWidget(combo, 1);
+    rows_->addLayout(row);
     choices_[field] = combo;
 }
 
 void ParameterPanel::setCamera(const CameraSpec<double>& camera)
 {
-    filling_ = true;
-    if (layoutKeyOf(camera) != layoutKey_)
+    camera_ = camera;
+    if (layoutKeyOf(camera) != layoutKey_) {
+        filling_ = true; // hiding the old form moves the focus: no edit from its fields
         rebuild(camera);
-    auto fill = [this](const QString& field, const QList<double>& values) {
-        const QList<QDoubleSpinBox*> boxes = boxes_.value(field);
-        for (int i = 0; i < boxes.size() && i < values.size(); ++i)
-            boxes[i]->setValue(values[i]);
-    };
-    if (const auto* spec = std::get_if<foley::ViewSpec<double>>(&camera)) {
-        choices_["view.projection"]->setCurrentIndex(spec->projection == foley::Projection::Perspective ? 0 : 1);
-        fill("view.vrp", list(spec->vrp));
-        fill("view.vpn", list(spec->vpn));
-        fill("view.vup", list(spec->vup));
-        fill("view.prp", list(spec->prp));
-        fill("view.window", {spec->window.umin, spec->window.umax, spec->window.vmin, spec->window.vmax});
-        fill("view.front", {spec->front});
-        fill("view.back", {spec->back});
-    } else {
-        const auto& gl = std::get<gl::Camera<double>>(camera);
-        fill("camera.look_at.eye", list(gl.lookAt.eye));
-        fill("camera.look_at.center", list(gl.lookAt.center));
-        fill("camera.look_at.up", list(gl.lookAt.up));
-        if (const auto* p = std::get_if<gl::Perspective<double>>(&gl.projection)) {
-            fill("camera.projection.fovy_deg", {p->fovyDegrees});
-            fill("camera.projection.aspect", {p->aspect});
-            fill("camera.projection.near", {p->zNear});
-            fill("camera.projection.far", {p->zFar});
-        } else {
-            std::visit(
-                [&](const auto& box) {
-                    if constexpr (!std::is_same_v<std::decay_t<decltype(box)>, gl::Perspective<double>>) {
-                        fill("camera.projection.left", {box.left});
-                        fill("camera.projection.right", {box.right});
-                        fill("camera.projection.bottom", {box.bottom});
-                        fill("camera.projection.top", {box.top});
-                        fill("camera.projection.near", {box.zNear});
-                        fill("camera.projection.far", {box.zFar});
-                    }
-                },
-                gl.projection);
+        filling_ = false;
+    }
+    fill(nullptr);
+    clearErrors();
+}
+
+void ParameterPanel::fill(const QWidget* except)
+{
+    filling_ = true;
+    for (auto it = boxes_.cbegin(); it != boxes_.cend(); ++it) {
+        const QList<double*> numbers = numbersOf(camera_, it.key());
+        for (int i = 0; i < it.value().size() && i < numbers.size(); ++i) {
+            QLineEdit* box = it.value()[i];
+            const QString text = numberText(*numbers[i]);
+            if (box == except || box->text() == text)
+                continue;
+            box->setText(text);
+            box->setCursorPosition(0); // the leading digits show when the box is narrow
         }
     }
-    clearErrors();
+    for (QBoxLayout* numbers : numbers_)
+        numbers->invalidate(); // their texts decide between side by side and one under another
+    const auto* spec = std::get_if<foley::ViewSpec<double>>(&camera_);
+    QComboBox* choice = choices_.value(spec ? "view.projection" : "camera.projection.type");
+    if (choice != except)
+        choice->setCurrentIndex(spec ? (spec->projection == foley::Projection::Perspective ? 0 : 1)
+                                     : int(std::get<gl::Camera<double>>(camera_).projection.index()));
     filling_ = false;
 }
 
-QList<double> ParameterPanel::values(const QString& field) const
-{
-    QList<double> out;
-    for (const QDoubleSpinBox* box : boxes_.value(field))
-        out.push_back(box->value());
-    return out;
-}
-
-CameraSpec<double> ParameterPanel::read() const
-{
-    if (layoutKey_ == "foley") {
-        foley::ViewSpec<double> spec;
-        spec.projection = choices_["view.projection"]->currentIndex() == 0 ? foley::Projection::Perspective
-                                                                          : foley::Projection::Parallel;
-        spec.vrp = vec(values("view.vrp"));
-        spec.vpn = vec(values("view.vpn"));
-        spec.vup = vec(values("view.vup"));
-        spec.prp = vec(values("view.prp"));
-        const QList<double> w = values("view.window");
-        spec.window = {w[0], w[1], w[2], w[3]};
-        spec.front = values("view.front")[0];
-        spec.back = values("view.back")[0];
-        return spec;
-    }
-    gl::Camera<double> camera;
-    camera.lookAt = {vec(values("camera.look_at.eye")), vec(values("camera.look_at.center")),
-                     vec(values("camera.look_at.up"))};
-    auto one = [this](const char* key) { return values(QString("camera.projection.") + key)[0]; };
-    if (layoutKey_ == "gl-perspective")
-        camera.projection = gl::Perspective<double>{one("fovy_deg"), one("aspect"), one("near"), one("far")};
-    else if (layoutKey_ == "gl-frustum")
-        camera.projection =
-            gl::Frustum<double>{one("left"), one("right"), one("bottom"), one("top"), one("near"), one("far")};
-    else
-        camera.projection =
-            gl::Ortho<double>{one("left"), one("right"), one("bottom"), one("top"), one("near"), one("far")};
-    const int type = choices_["camera.projection.type"]->currentIndex();
-    if (type != int(camera.projection.index()))
-        camera.projection = convertProjection(camera.projection, type);
-    return camera;
-}
-
-void ParameterPanel::emitEdit(const QString& field)
+void ParameterPanel::commit(QLineEdit* box)
 {
     if (filling_)
         return;
-    emit cameraEdited(read(), field);
+    const QString field = box->objectName();
+    const int component = boxes_.value(field).indexOf(box);
+    CameraSpec<double> candidate = camera_;
+    double* number = numbersOf(candidate, field).value(component);
+    if (!number)
+        return;
+    // The candidate is the camera shown with this one number replaced: text
+    // left in other fields (refused or not applied) is not part of it.
+    fill(box);
+    double value = 0;
+    const QString reason = readNumber(box->text(), field == kProjectionPrefix + "far", value);
+    if (!reason.isEmpty()) {
+        refuse(field, field, reason);
+        return;
+    }
+    if (sameBits(value, *number)) {
+        if (box->text() != numberText(value))
+            box->setText(numberText(value));
+        if (refused_ == field)
+            clearErrors();
+        return;
+    }
+    *number = value;
+    emitEdit(candidate, field);
+}
+
+void ParameterPanel::choose(const QString& field, int index)
+{
+    if (filling_)
+        return;
+    CameraSpec<double> candidate = camera_;
+    if (auto* spec = std::get_if<foley::ViewSpec<double>>(&candidate)) {
+        spec->projection = index == 0 ? foley::Projection::Perspective : foley::Projection::Parallel;
+    } else {
+        auto& gl = std::get<gl::Camera<double>>(candidate);
+        gl.projection = convertProjection(gl.projection, index);
+    }
+    fill(choices_.value(field));
+    emitEdit(candidate, field);
+}
+
+void ParameterPanel::emitEdit(const CameraSpec<double>& candidate, const QString& field)
+{
+    editing_ = field;
+    emit cameraEdited(candidate, field);
+    editing_.clear();
 }
 
 void ParameterPanel::showError(const QString& field, const QString& reason)
 {
+    refuse(editing_, field, reason);
+}
+
+void ParameterPanel::refuse(const QString& edited, const QString& field, const QString& reason)
+{
     clearErrors();
     QString key = field;
     key.remove(QRegularExpression("\\[\\d+\\]$"));
-    if (QLabel* label = errors_.value(key)) {
+    QLabel* label = errors_.value(key);
+    if (label) {
         label->setText(reason);
         label->show();
-        return;
+    } else {
+        generalError_->setText(field + ": " + reason);
+        generalError_->show();
     }
-    generalError_->setText(field + ": " + reason);
-    generalError_->show();
+    if (QLabel* beside = errors_.value(edited); beside && beside != label) {
+        beside->setText(labels_.value(key, field) + ": " + reason);
+        beside->show();
+    }
+    refused_ = edited.isEmpty() ? key : edited;
 }
 
 void ParameterPanel::clearErrors()
@@ -293,9 +517,54 @@ void ParameterPanel::clearErrors()
     for (QLabel* label : errors_)
         label->hide();
     generalError_->hide();
+    refused_.clear();
 }
 
-QList<QDoubleSpinBox*> ParameterPanel::spinBoxes(const QString& field) const
+QString ParameterPanel::valueText(QLineEdit* box)
+{
+    const QString field = box->objectName();
+    const double* number = numbersOf(camera_, field).value(boxes_.value(field).indexOf(box));
+    return number ? numberText(*number) : box->text();
+}
+
+bool ParameterPanel::isRestorable(QLineEdit* box)
+{
+    return box->text() != valueText(box) || refused_ == box->objectName();
+}
+
+void ParameterPanel::restore(QLineEdit* box)
+{
+    box->setText(valueText(box));
+    box->setCursorPosition(0);
+    if (refused_ == box->objectName())
+        clearErrors();
+}
+
+bool ParameterPanel::eventFilter(QObject* watched, QEvent* event)
+{
+    auto* box = qobject_cast<QLineEdit*>(watched);
+    if (!box || (event->type() != QEvent::ShortcutOverride && event->type() != QEvent::KeyPress))
+        return QWidget::eventFilter(watched, event);
+    const auto* key = static_cast<QKeyEvent*>(event);
+    if (event->type() == QEvent::ShortcutOverride) {
+        // Undo and redo are the document's: the field's own text undo would swallow them.
+        if (key->matches(QKeySequence::Undo) || key->matches(QKeySequence::Redo) ||
+            (key->key() == Qt::Key_Y && key->modifiers() == Qt::ControlModifier)) {
+            event->ignore();
+            return true;
+        }
+        if (key->key() == Qt::Key_Escape && isRestorable(box))
+            event->accept(); // the field's Escape (below), not a window shortcut
+        return false;
+    }
+    if (key->key() == Qt::Key_Escape && key->modifiers() == Qt::NoModifier && isRestorable(box)) {
+        restore(box);
+        return true;
+    }
+    return false;
+}
+
+QList<QLineEdit*> ParameterPanel::fields(const QString& field) const
 {
     return boxes_.value(field);
 }

@@ -1,18 +1,22 @@
 #pragma once
 
-// Every field of the view (Foley) or of the OpenGL camera as spin boxes.
-// Edits are forwarded as a whole candidate camera; the core decides whether it
-// is valid, and its message is shown next to the field it names.
+// Every field of the view (Foley) or of the OpenGL camera as text fields that
+// hold exact doubles, shown in their shortest round-trip form. An edit replaces
+// only the component edited in the last camera shown and is forwarded as a
+// whole candidate camera; the core decides whether it is valid, and its message
+// is shown next to the field it names. Text that is not a number is refused
+// here, with the reason beside the field, and nothing is forwarded.
 
 #include <QMap>
 #include <QWidget>
 
 #include "viewpipe/pipeline.hpp"
 
+class QBoxLayout;
 class QComboBox;
-class QDoubleSpinBox;
-class QFormLayout;
 class QLabel;
+class QLineEdit;
+class QVBoxLayout;
 
 namespace viewpipe::gui {
 
@@ -26,29 +30,53 @@ public:
     void showError(const QString& field, const QString& reason);
     void clearErrors();
 
-    // For tests and scripting: the spin boxes of a field ("view.front",
-    // "view.vrp", "camera.projection.near", ...), and its error text.
-    QList<QDoubleSpinBox*> spinBoxes(const QString& field) const;
+    // For tests and scripting: the text fields of a field ("view.front",
+    // "view.vrp", "camera.projection.near", ...), one per component, and its error text.
+    QList<QLineEdit*> fields(const QString& field) const;
     QString errorText(const QString& field) const;
 
 signals:
     void cameraEdited(const viewpipe::CameraSpec<double>& camera, const QString& field);
 
+protected:
+    bool eventFilter(QObject* watched, QEvent* event) override;
+    void changeEvent(QEvent* event) override;
+
 private:
     void rebuild(const CameraSpec<double>& camera);
-    void addRow(const QString& field, const QString& label, const QList<double>& values, const QString& tip);
-    void addChoice(const QString& field, const QString& label, const QStringList& items, int current);
-    CameraSpec<double> read() const;
-    void emitEdit(const QString& field);
-    QList<double> values(const QString& field) const;
+    void addFields(const CameraSpec<double>& camera);
+    // One box per component (their names), one box when there are none.
+    void addRow(const QString& field, const QString& label, const QStringList& components, const QString& tip);
+    QLabel* addName(const QString& label, const QString& tip);
+    // The rows' names take the width of the widest: the fields line up.
+    void alignNames();
+    void addChoice(const QString& field, const QString& label, const QStringList& items, const QString& tip);
+    // Shows camera_ in every field but `except`.
+    void fill(const QWidget* except);
+    void commit(QLineEdit* box);
+    void choose(const QString& field, int index);
+    void emitEdit(const CameraSpec<double>& candidate, const QString& field);
+    // The reason goes beside `field`, and beside `edited` when the core names another field.
+    void refuse(const QString& edited, const QString& field, const QString& reason);
+    // The text of the value a box stands for in camera_.
+    QString valueText(QLineEdit* box);
+    // Escape: whether the box shows other text than its value, or a refusal, and putting the value back.
+    bool isRestorable(QLineEdit* box);
+    void restore(QLineEdit* box);
 
-    QFormLayout* form_ = nullptr;
+    QVBoxLayout* rows_ = nullptr;
     QWidget* body_ = nullptr;
     QLabel* generalError_ = nullptr;
-    QMap<QString, QList<QDoubleSpinBox*>> boxes_;
+    QMap<QString, QList<QLineEdit*>> boxes_;
+    QMap<QString, QBoxLayout*> numbers_; // the layout of a field's boxes
     QMap<QString, QLabel*> errors_;
+    QMap<QString, QString> labels_;
     QMap<QString, QComboBox*> choices_;
+    QList<QLabel*> names_; // of the rows, one width for all
     QString layoutKey_;
+    CameraSpec<double> camera_;
+    QString editing_; // the field whose candidate is being forwarded
+    QString refused_; // the field whose refused edit the messages are about
     bool filling_ = false;
 };
 
