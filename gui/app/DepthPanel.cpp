@@ -1,5 +1,6 @@
 #include "DepthPanel.h"
 
+#include <QColor>
 #include <QLabel>
 #include <QVBoxLayout>
 
@@ -61,11 +62,15 @@ void DepthPanel::showDepth(const Pipeline<double>& pipeline, const std::optional
         text += tr(" Z-fighting is not checked: the scene has too many faces to compare pairwise.");
     else if (depth->zFighting.empty())
         text += tr(" No faces z-fight: the buffer orders every overlap.");
-    else
-        text += (depth->zFighting.size() == 1 ? tr(" <span style='color:#e04040'>1 pair of faces z-fights</span>")
-                                               : tr(" <span style='color:#e04040'>%1 pairs of faces z-fight</span>")
-                                                     .arg(depth->zFighting.size())) +
-                tr(" (red in the views): the buffer stores the same value for both where they overlap.");
+    else {
+        const Rgb c = ScenePainter::color(Element::ZFighting, theme);
+        const QString color = QColor::fromRgbF(c.r, c.g, c.b).name();
+        text += QString(" <span style='color:%1'>%2</span>")
+                    .arg(color, depth->zFighting.size() == 1 ? tr("1 pair of faces z-fights")
+                                                             : tr("%1 pairs of faces z-fight").arg(depth->zFighting.size())) +
+                tr(" (orange-red in the views, ringed in the projected view): the buffer stores the same value for "
+                   "both where they overlap.");
+    }
     summary_->setText(text);
     drawDepthChart(chart_, pipeline, o, theme);
     chartWidget_->renderWindow()->Render();

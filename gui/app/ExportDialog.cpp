@@ -9,17 +9,32 @@
 #include <QHBoxLayout>
 #include <QLineEdit>
 #include <QPushButton>
+#include <QSettings>
 #include <QSpinBox>
+#include <QStandardPaths>
 
 namespace viewpipe::gui {
+
+QString ExportDialog::defaultFolder()
+{
+    for (const auto location : {QStandardPaths::PicturesLocation, QStandardPaths::DocumentsLocation}) {
+        const QString folder = QStandardPaths::writableLocation(location);
+        if (!folder.isEmpty())
+            return folder + "/ViewPipe";
+    }
+    return QDir::homePath() + "/ViewPipe";
+}
 
 ExportDialog::ExportDialog(int stageCount, Theme theme, QWidget* parent) : QDialog(parent), stageCount_(stageCount)
 {
     setWindowTitle(tr("Export Stages"));
     auto* form = new QFormLayout(this);
 
-    folder_ = new QLineEdit(QDir::current().filePath("slides"));
+    folder_ = new QLineEdit(QSettings().value("exportFolder", defaultFolder()).toString());
+    folder_->setObjectName("exportFolder");
+    folder_->setToolTip(tr("The folder the pictures are written into (created if missing)"));
     auto* browse = new QPushButton(tr("Browse…"));
+    browse->setToolTip(tr("Choose the folder"));
     connect(browse, &QPushButton::clicked, this, [this] {
         const QString dir = QFileDialog::getExistingDirectory(this, tr("Export into"), folder_->text());
         if (!dir.isEmpty())
@@ -37,36 +52,47 @@ ExportDialog::ExportDialog(int stageCount, Theme theme, QWidget* parent) : QDial
         return box;
     };
     width_ = spin(64, 8192, 1280);
+    width_->setToolTip(tr("Width of each picture, in pixels"));
     height_ = spin(64, 8192, 720);
+    height_->setToolTip(tr("Height of each picture, in pixels"));
     auto* size = new QHBoxLayout;
     size->addWidget(width_);
     size->addWidget(height_);
     form->addRow(tr("Size (W × H)"), size);
     scale_ = spin(1, 4, 1);
+    scale_->setToolTip(tr("Pixels per unit of size: 2 doubles the pixels (and the text) for high-DPI slides"));
     form->addRow(tr("Scale (high-DPI)"), scale_);
     stages_ = new QLineEdit("all");
-    stages_->setToolTip(tr("all, or a list such as 0,2,4-5"));
+    stages_->setToolTip(tr("The stages to export: all, or a list such as 0,2,4-5 (0 is the world)"));
     form->addRow(tr("Stages"), stages_);
     theme_ = new QComboBox;
     theme_->addItems({tr("light"), tr("dark")});
     theme_->setCurrentIndex(theme == Theme::Dark ? 1 : 0);
+    theme_->setToolTip(tr("Light for slides and print, dark for the screen"));
     form->addRow(tr("Theme"), theme_);
     framing_ = new QComboBox;
     framing_->addItems({tr("each stage framed on its own"), tr("one framing for all stages")});
+    framing_->setToolTip(tr("One framing for all keeps sizes comparable from stage to stage"));
     form->addRow(tr("Framing"), framing_);
     transparent_ = new QCheckBox(tr("Transparent background"));
+    transparent_->setToolTip(tr("PNG pictures without a background, to lay over a slide"));
     form->addRow(QString(), transparent_);
     png_ = new QCheckBox("PNG");
     png_->setChecked(true);
     svg_ = new QCheckBox("SVG");
     pdf_ = new QCheckBox("PDF");
+    png_->setToolTip(tr("Raster pictures"));
+    svg_->setToolTip(tr("Vector text over the picture, for web pages"));
+    pdf_->setToolTip(tr("Vector text over the picture, for documents"));
     auto* formats = new QHBoxLayout;
     formats->addWidget(png_);
     formats->addWidget(svg_);
     formats->addWidget(pdf_);
     form->addRow(tr("Formats"), formats);
     animate_ = new QCheckBox(tr("Animation (MP4)"));
+    animate_->setToolTip(tr("Also a video of the stages moving one into the next"));
     fps_ = spin(1, 120, 30);
+    fps_->setToolTip(tr("Frames per second of the video"));
     auto* animation = new QHBoxLayout;
     animation->addWidget(animate_);
     animation->addWidget(fps_);
@@ -74,7 +100,11 @@ ExportDialog::ExportDialog(int stageCount, Theme theme, QWidget* parent) : QDial
 
     auto* buttons = new QDialogButtonBox(QDialogButtonBox::Ok | QDialogButtonBox::Cancel);
     buttons->button(QDialogButtonBox::Ok)->setText(tr("Export"));
+    buttons->button(QDialogButtonBox::Ok)->setToolTip(tr("Write the files into the folder"));
+    buttons->button(QDialogButtonBox::Cancel)->setToolTip(tr("Close without exporting"));
     connect(buttons, &QDialogButtonBox::accepted, this, &QDialog::accept);
+    // Proposed next time: the last folder exported into.
+    connect(this, &QDialog::accepted, this, [this] { QSettings().setValue("exportFolder", folder_->text()); });
     connect(buttons, &QDialogButtonBox::rejected, this, &QDialog::reject);
     form->addRow(buttons);
 }

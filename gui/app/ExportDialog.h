@@ -1,6 +1,8 @@
 #pragma once
 
-// File > Export Stages: the options of `viewpipe export`, in a dialog.
+// File > Export Stages: the options of `viewpipe export`, in a dialog. The
+// folder proposed is the last one exported into (QSettings "exportFolder"),
+// else ViewPipe in the user's pictures.
 
 #include <QDialog>
 
@@ -20,6 +22,9 @@ public:
 
     // The options as entered; throws InputError for a bad stage list.
     ExportOptions options() const;
+
+    // The pictures folder (else documents, else home) + "/ViewPipe".
+    static QString defaultFolder();
 
 private:
     int stageCount_;

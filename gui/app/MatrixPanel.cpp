@@ -50,13 +50,18 @@ MatrixPanel::MatrixPanel(QWidget* parent) : QWidget(parent)
     title_ = new QLabel;
     title_->setWordWrap(true);
     title_->setObjectName("stageTitle");
+    title_->setToolTip(tr("The stage shown: its symbol and what its matrix does"));
     matrices_ = new QLabel;
     matrices_->setTextFormat(Qt::RichText);
+    matrices_->setWordWrap(true); // the notes under a symbolic matrix wrap; the tables keep their width
     matrices_->setObjectName("matrices");
+    matrices_->setToolTip(tr("The stage's matrix, symbolic and in numbers, and the product of all stages so far "
+                             "(the cumulative matrix), the entries this stage changed highlighted"));
     trace_ = new QLabel(tr("Click a vertex of an object to trace it through the stages."));
     trace_->setTextFormat(Qt::RichText);
     trace_->setWordWrap(true);
     trace_->setObjectName("trace");
+    trace_->setToolTip(tr("A vertex picked in the world view, in homogeneous coordinates after every stage"));
     layout->addWidget(title_);
     layout->addWidget(matrices_);
     layout->addWidget(trace_);

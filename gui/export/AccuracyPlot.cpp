@@ -3,6 +3,7 @@
 #include "Charts.h"
 
 #include <vtkAxis.h>
+#include <vtkChartLegend.h>
 #include <vtkChartMatrix.h>
 #include <vtkChartXY.h>
 #include <vtkContextScene.h>
@@ -18,23 +19,31 @@
 namespace viewpipe::gui {
 namespace {
 
-// One color and marker per precision tier, in ladder order.
-const unsigned char kColors[][3] = {{228, 26, 28}, {55, 126, 184}, {77, 175, 74},
-                                    {152, 78, 163}, {255, 127, 0}, {166, 86, 40}};
+// One color (Okabe-Ito, told apart by colorblind people too) and marker per
+// precision tier, in ladder order.
+const unsigned char kColors[][3] = {{213, 94, 0},    {0, 114, 178}, {0, 158, 115},
+                                    {204, 121, 167}, {230, 159, 0}, {86, 180, 233}};
 const int kMarkers[] = {vtkPlotPoints::CIRCLE, vtkPlotPoints::SQUARE, vtkPlotPoints::DIAMOND,
                         vtkPlotPoints::CROSS,  vtkPlotPoints::PLUS,   vtkPlotPoints::CIRCLE};
 
-void addPanel(vtkChartXY* chart, const cli::BenchResult& result, bool vertices, Theme theme)
+// `narrow`: a panel beside the views, where the legend and the labels take
+// room from the plot.
+void addPanel(vtkChartXY* chart, const cli::BenchResult& result, bool vertices, Theme theme, bool narrow)
 {
-    styleChart(chart, vertices ? "Pushing vertices: NDC error against time" : "Building N: entry error against time",
-               theme);
+    styleChart(chart, vertices ? "Pushing vertices" : "Building N", theme);
+    // Each chart lays out its own axes' titles and labels inside its cell,
+    // and the legend beside the plot, where it covers no marker.
+    chart->SetLayoutStrategy(vtkChart::FILL_RECT);
     chart->SetShowLegend(vertices);
+    chart->GetLegend()->SetInline(false);
+    chart->GetLegend()->SetHorizontalAlignment(vtkChartLegend::RIGHT);
+    chart->GetLegend()->SetVerticalAlignment(vtkChartLegend::TOP);
     for (std::size_t i = 0; i < result.rows.size(); ++i) {
         const cli::BenchRow& row = result.rows[i];
         vtkNew<vtkTable> table;
         vtkNew<vtkDoubleArray> x, y;
         x->SetName("time");
-        y->SetName((row.precision + " (" + std::to_string(row.bits) + " bits)").c_str());
+        y->SetName((narrow ? row.precision : row.precision + " (" + std::to_string(row.bits) + " bits)").c_str());
         const double error = vertices ? row.errors.ndcMaxError : row.errors.maxRelativeError;
         x->InsertNextValue(std::log10(vertices ? row.vertexNs : row.buildNs));
         y->InsertNextValue(std::log10(std::max(error, 1e-300))); // an exact result has no logarithm
@@ -53,10 +62,12 @@ void addPanel(vtkChartXY* chart, const cli::BenchResult& result, bool vertices, 
         const double y = std::max(vertices ? row.errors.ndcMaxError : row.errors.maxRelativeError, 1e-300);
         xLow = std::min(xLow, x), xHigh = std::max(xHigh, x), yLow = std::min(yLow, y), yHigh = std::max(yHigh, y);
     }
-    styleLogAxis(chart->GetAxis(vtkAxis::BOTTOM), vertices ? "ns per vertex (transform and divide)" : "ns per build",
-                 theme, xLow, xHigh);
-    styleLogAxis(chart->GetAxis(vtkAxis::LEFT), vertices ? "max error in NDC" : "max relative error of N's entries",
-                 theme, yLow, yHigh);
+    styleLogAxis(chart->GetAxis(vtkAxis::BOTTOM), vertices ? "ns per vertex (transform, divide)" : "ns per build",
+                 theme, xLow, xHigh, narrow ? 4 : 12);
+    // A title longer than the plot is high would run into the other chart.
+    styleLogAxis(chart->GetAxis(vtkAxis::LEFT),
+                 vertices ? "max error in NDC" : narrow ? "error of N's entries" : "max relative error of N's entries",
+                 theme, yLow, yHigh, narrow ? 8 : 12);
 }
 
 } // namespace
@@ -65,11 +76,12 @@ void drawAccuracyCharts(vtkChartMatrix* charts, const cli::BenchResult& result, 
 {
     // vtkChartMatrix counts rows from the bottom: the vertex panel goes on top when stacked.
     charts->SetSize(stacked ? vtkVector2i(1, 2) : vtkVector2i(2, 1));
-    charts->SetGutter(vtkVector2f(60, 60));
+    charts->SetBorders(10, 10, 10, 30); // the top one holds the upper chart's title
+    charts->SetGutter(vtkVector2f(30, 40));
     addPanel(vtkChartXY::SafeDownCast(charts->GetChart(stacked ? vtkVector2i(0, 1) : vtkVector2i(0, 0))), result, true,
-             theme);
+             theme, stacked);
     addPanel(vtkChartXY::SafeDownCast(charts->GetChart(stacked ? vtkVector2i(0, 0) : vtkVector2i(1, 0))), result,
-             false, theme);
+             false, theme, stacked);
 }
 
 void writeAccuracyPlot(const cli::BenchResult& result, const std::filesystem::path& file, Theme theme)

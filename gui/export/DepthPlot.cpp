@@ -19,30 +19,51 @@
 #include "Charts.h"
 
 namespace viewpipe::gui {
+namespace {
+
+// The usual formats, each in its Okabe-Ito color (the scene's in red), in
+// drawing order. Float has a 24-bit significand: unreversed, its curve is
+// 24-bit fixed point's, so it is drawn dashed over a wide 24-bit line, which
+// shows between the dashes.
+struct Format {
+    DepthOptions options;
+    unsigned char rgb[3];
+    float width;
+    int line;
+    const char* note; // after the name in the legend
+};
+const Format kFormats[] = {
+    {{16, false, false}, {230, 159, 0}, 2.5f, vtkPen::SOLID_LINE, ""},
+    {{24, false, false}, {86, 180, 233}, 7.0f, vtkPen::SOLID_LINE, ""},
+    {{32, false, false}, {0, 158, 115}, 2.5f, vtkPen::SOLID_LINE, ""},
+    {{32, true, false}, {204, 121, 167}, 2.5f, vtkPen::DASH_LINE, " (= 24-bit fixed point without reversal)"},
+    {{32, true, true}, {0, 114, 178}, 2.5f, vtkPen::DASH_DOT_LINE, ""},
+};
+
+} // namespace
+
 void drawDepthChart(vtkChartXY* chart, const Pipeline<double>& pipeline, const DepthOptions& options, Theme theme)
 {
     chart->ClearPlots();
     const bool foley = pipeline.convention == Convention::Foley;
     styleChart(chart, "Depth resolution against distance", theme);
     chart->SetShowLegend(true);
-    // Bottom right: the curves rise from there, and it stays clear of them.
-    chart->GetLegend()->SetHorizontalAlignment(vtkChartLegend::RIGHT);
+    // Below the plot, under the axis' title: inside, it would cover the curves' steep start.
+    chart->GetLegend()->SetInline(false);
+    chart->GetLegend()->SetHorizontalAlignment(vtkChartLegend::CENTER);
     chart->GetLegend()->SetVerticalAlignment(vtkChartLegend::BOTTOM);
 
-    std::vector<DepthOptions> formats = {{16, false, false}, {24, false, false}, {32, false, false},
-                                         {32, true, false}, {32, true, true}};
-    formats.erase(std::remove_if(formats.begin(), formats.end(), [&](const DepthOptions& o) { return o == options; }),
-                  formats.end());
-    formats.push_back(options); // last: drawn over the others
-    static const unsigned char colors[][3] = {{150, 150, 150}, {55, 126, 184}, {77, 175, 74}, {152, 78, 163}, {255, 127, 0}};
+    std::vector<Format> formats(std::begin(kFormats), std::end(kFormats));
+    if (std::none_of(formats.begin(), formats.end(), [&](const Format& f) { return f.options == options; }))
+        formats.push_back({options, {}, 2.5f, vtkPen::SOLID_LINE, ""}); // red, as the scene's
     double low = 1e300, high = 0, reach = 0;
-    for (std::size_t i = 0; i < formats.size(); ++i) {
-        const bool scene = i + 1 == formats.size();
-        const std::vector<DepthSample> curve = depthResolution(pipeline, formats[i], 65);
+    for (const Format& format : formats) {
+        const bool scene = format.options == options;
+        const std::vector<DepthSample> curve = depthResolution(pipeline, format.options, 65);
         vtkNew<vtkTable> table;
         vtkNew<vtkDoubleArray> x, y;
         x->SetName("distance");
-        y->SetName((depthFormatName(formats[i]) + (scene ? " (this scene)" : "")).c_str());
+        y->SetName((depthFormatName(format.options) + format.note + (scene ? " (this scene)" : "")).c_str());
         for (const DepthSample& sample : curve) {
             if (sample.pastFar)
                 continue; // a level cut short by the far plane is no measure of resolution
@@ -55,14 +76,13 @@ void drawDepthChart(vtkChartXY* chart, const Pipeline<double>& pipeline, const D
         table->AddColumn(y);
         vtkPlot* plot = chart->AddPlot(vtkChart::LINE);
         plot->SetInputData(table, 0, 1);
+        // The scene's own format stands out: red, and wider.
         if (scene)
             plot->SetColor(228, 26, 28, 255);
         else
-            plot->SetColor(colors[i % 5][0], colors[i % 5][1], colors[i % 5][2], 255);
-        plot->SetWidth(scene ? 4.0f : 2.0f);
-        // Float has a 24-bit significand: unreversed, it matches 24-bit fixed point, whose line shows between the dashes.
-        if (formats[i].floating && !scene)
-            plot->GetPen()->SetLineType(vtkPen::DASH_LINE);
+            plot->SetColor(format.rgb[0], format.rgb[1], format.rgb[2], 255);
+        plot->SetWidth(format.width + (scene ? 2.0f : 0.0f));
+        plot->GetPen()->SetLineType(format.line);
     }
     vtkAxis* bottom = chart->GetAxis(vtkAxis::BOTTOM);
     styleAxis(bottom, foley ? "distance from the front plane (F), along the view" : "distance from the near plane, along the view",

@@ -1,5 +1,7 @@
 #include "ScenePainter.h"
 
+#include "viewpipe/mesh_io.hpp"
+
 #include <vtkActor.h>
 #include <vtkAdaptiveSubdivisionFilter.h>
 #include <vtkDoubleArray.h>
@@ -13,8 +15,6 @@
 #include <vtkCleanPolyData.h>
 #include <vtkCommand.h>
 #include <vtkConeSource.h>
-#include <vtkOBJReader.h>
-#include <vtkPLYReader.h>
 #include <vtkPointData.h>
 #include <vtkPointPicker.h>
 #include <vtkPolyDataAlgorithm.h>
@@ -23,14 +23,16 @@
 #include <vtkPolyDataMapper.h>
 #include <vtkProperty.h>
 #include <vtkPropCollection.h>
+#include <vtkRenderWindow.h>
 #include <vtkRenderer.h>
-#include <vtkSTLReader.h>
 #include <vtkSphereSource.h>
 #include <vtkActor2D.h>
 #include <vtkCoordinate.h>
+#include <vtkLegendBoxActor.h>
 #include <vtkPolyDataMapper2D.h>
 #include <vtkProperty2D.h>
 #include <vtkTextActor.h>
+#include <vtkTextRenderer.h>
 #include <vtkUnsignedCharArray.h>
 #include <vtkTextProperty.h>
 
@@ -58,6 +60,15 @@ struct ScenePainter::Label {
     Element element;
     Vec3<double> world;
     vtkSmartPointer<vtkBillboardTextActor3D> actor;
+};
+
+// A line of a view's legend: a swatch of how an element is drawn, and what it is.
+struct ScenePainter::LegendEntry {
+    enum class Swatch { Line, Face, Dot, Bands, Pixels };
+    std::string text;
+    Element element; // whose color the swatch takes (bands and pixels have their own)
+    Swatch swatch;
+    double opacity = 1; // as drawn over the background: ghosts are faint
 };
 
 namespace {
@@ -122,47 +133,10 @@ Segment span(const std::vector<Vec3<double>>& points)
     return {*lo, *hi};
 }
 
+// Meshes are read by the core's reader, which refuses hostile files (VTK 9.1's readers crash on them).
 vtkSmartPointer<vtkPolyData> readMesh(const SceneObject& object, std::size_t index)
 {
-    const std::string file = object.resolvedPath.string();
-    std::string extension = object.resolvedPath.extension().string();
-    std::transform(extension.begin(), extension.end(), extension.begin(), ::tolower);
-    vtkSmartPointer<vtkPolyDataAlgorithm> reader;
-    if (extension == ".obj") {
-        auto r = vtkSmartPointer<vtkOBJReader>::New();
-        r->SetFileName(file.c_str());
-        reader = r;
-    } else if (extension == ".ply") {
-        auto r = vtkSmartPointer<vtkPLYReader>::New();
-        r->SetFileName(file.c_str());
-        reader = r;
-    } else {
-        auto r = vtkSmartPointer<vtkSTLReader>::New();
-        r->SetFileName(file.c_str());
-        reader = r;
-    }
-    reader->SetGlobalWarningDisplay(0);
-    reader->Update();
-    vtkPolyData* output = reader->GetOutput();
-    if (!output || output->GetNumberOfPoints() == 0 || output->GetNumberOfCells() == 0)
-        throw InputError("objects[" + std::to_string(index) + "].path",
-                         "cannot be read as a mesh (\"" + file + "\" holds no polygons VTK can read)");
-    auto copy = vtkSmartPointer<vtkPolyData>::New();
-    copy->ShallowCopy(output);
-    // Drop data arrays (normals, texture coordinates): the painter moves points only.
-    copy->GetPointData()->Initialize();
-    copy->GetCellData()->Initialize();
-    auto points = vtkSmartPointer<vtkPoints>::New();
-    points->SetDataTypeToDouble();
-    points->DeepCopy(output->GetPoints());
-    copy->SetPoints(points);
-    for (vtkIdType i = 0; i < points->GetNumberOfPoints(); ++i) {
-        const double* p = points->GetPoint(i);
-        if (!std::isfinite(p[0]) || !std::isfinite(p[1]) || !std::isfinite(p[2]))
-            throw InputError("objects[" + std::to_string(index) + "].path",
-                             "the mesh has a vertex that is not finite (vertex " + std::to_string(i) + ")");
-    }
-    return copy;
+    return facesData(readMeshFile(object.resolvedPath, "objects[" + std::to_string(index) + "].path"));
 }
 
 // Calls `visit` with each point through `m` and the divide. Returns false,
@@ -274,12 +248,21 @@ vtkSmartPointer<vtkPolyData> depthLevels(const PolygonMesh& faces, const Pipelin
     return data;
 }
 
-// Alternating light and dark steps along a ramp from near (yellow) to far
-// (violet), so that neighbouring bands always differ.
+// The depth bands' ramp from near (yellow) to far (violet); no red or
+// orange in it, which mark z-fighting.
+const double kBandRamp[][3] = {{0.99, 0.91, 0.15}, {0.37, 0.79, 0.38}, {0.13, 0.57, 0.55},
+                               {0.23, 0.32, 0.55}, {0.27, 0.00, 0.33}};
+
+// The raster effect's pixels, one color per object.
+const unsigned char kRasterPalette[][3] = {{90, 140, 230}, {230, 120, 60}, {80, 190, 110}, {200, 90, 200}};
+
+// Ghosts: how much of an edge clipped away and of a culled face still shows.
+constexpr double kClippedOpacity = 0.2;
+constexpr double kCulledOpacity = 0.06;
+
+// Alternating light and dark steps along the ramp, so that neighbouring bands always differ.
 vtkSmartPointer<vtkLookupTable> bandColors(const DepthBands& bands)
 {
-    static const double ramp[][3] = {{0.99, 0.91, 0.15}, {0.37, 0.79, 0.38}, {0.13, 0.57, 0.55},
-                                     {0.23, 0.32, 0.55}, {0.27, 0.00, 0.33}};
     auto table = vtkSmartPointer<vtkLookupTable>::New();
     table->SetNumberOfTableValues(bands.count);
     table->SetTableRange(bands.first, bands.first + bands.count * bands.levelsPerBand);
@@ -289,7 +272,7 @@ vtkSmartPointer<vtkLookupTable> bandColors(const DepthBands& bands)
         const double f = t - i, shade = k % 2 ? 0.72 : 1.0;
         double c[3];
         for (int j = 0; j < 3; ++j)
-            c[j] = shade * (ramp[i][j] + f * (ramp[i + 1][j] - ramp[i][j]));
+            c[j] = shade * (kBandRamp[i][j] + f * (kBandRamp[i + 1][j] - kBandRamp[i][j]));
         table->SetTableValue(k, c[0], c[1], c[2], 1.0);
     }
     table->SetNanColor(0.5, 0.5, 0.5, 0.25);
@@ -304,6 +287,64 @@ void colorByLevels(vtkActor* actor, vtkLookupTable* table)
     mapper->SetColorModeToMapScalars();
     mapper->InterpolateScalarsBeforeMappingOn(); // each pixel takes its band's color: sharp edges
     mapper->ScalarVisibilityOn();
+}
+
+// A legend's symbol: polygons in their colors within a box kSymbolWidth wide
+// and 1 high, whose corners are points of every symbol so that the legend
+// scales all alike.
+constexpr double kSymbolWidth = 3;
+
+vtkSmartPointer<vtkPolyData> legendSymbol(const std::vector<std::pair<std::vector<Vec2<double>>, Rgb>>& polygons)
+{
+    auto points = vtkSmartPointer<vtkPoints>::New();
+    points->InsertNextPoint(-kSymbolWidth / 2, -0.5, 0);
+    points->InsertNextPoint(kSymbolWidth / 2, 0.5, 0);
+    auto cells = vtkSmartPointer<vtkCellArray>::New();
+    auto colors = vtkSmartPointer<vtkUnsignedCharArray>::New();
+    colors->SetNumberOfComponents(3);
+    for (const auto& [corners, c] : polygons) {
+        std::vector<vtkIdType> ids;
+        for (const Vec2<double>& q : corners)
+            ids.push_back(points->InsertNextPoint(q.x(), q.y(), 0));
+        cells->InsertNextCell(vtkIdType(ids.size()), ids.data());
+        const unsigned char rgb[3] = {static_cast<unsigned char>(std::lround(255 * c.r)),
+                                      static_cast<unsigned char>(std::lround(255 * c.g)),
+                                      static_cast<unsigned char>(std::lround(255 * c.b))};
+        colors->InsertNextTypedTuple(rgb);
+    }
+    auto data = vtkSmartPointer<vtkPolyData>::New();
+    data->SetPoints(points);
+    data->SetPolys(cells);
+    data->GetCellData()->SetScalars(colors);
+    return data;
+}
+
+// Side by side stripes of the given colors, as tall as `halfHeight` above and below the middle.
+vtkSmartPointer<vtkPolyData> stripes(const std::vector<Rgb>& colors, double halfHeight)
+{
+    std::vector<std::pair<std::vector<Vec2<double>>, Rgb>> polygons;
+    const double width = kSymbolWidth / double(colors.size());
+    for (std::size_t k = 0; k < colors.size(); ++k) {
+        const double left = -kSymbolWidth / 2 + double(k) * width;
+        polygons.push_back({{{left, -halfHeight}, {left + width, -halfHeight}, {left + width, halfHeight},
+                             {left, halfHeight}},
+                            colors[k]});
+    }
+    return legendSymbol(polygons);
+}
+
+vtkSmartPointer<vtkPolyData> dot(const Rgb& color)
+{
+    std::vector<Vec2<double>> circle;
+    for (int k = 0; k < 16; ++k)
+        circle.emplace_back(0.4 * std::cos(k * M_PI / 8), 0.4 * std::sin(k * M_PI / 8));
+    return legendSymbol({{circle, color}});
+}
+
+Rgb blend(const Rgb& color, const double* background, double opacity)
+{
+    return {opacity * color.r + (1 - opacity) * background[0], opacity * color.g + (1 - opacity) * background[1],
+            opacity * color.b + (1 - opacity) * background[2]};
 }
 
 std::string describeEffects(const EffectList& effects, const EffectOutcomes& outcomes, const Pipeline<double>& pipeline,
@@ -330,7 +371,7 @@ std::string describeEffects(const EffectList& effects, const EffectOutcomes& out
             if (!d.zFightingChecked)
                 note << "; z-fighting not checked (too many faces)";
             else if (!d.zFighting.empty())
-                note << "; " << d.zFighting.size() << " face pairs z-fight (red)";
+                note << "; " << d.zFighting.size() << " face pairs z-fight (orange-red)";
             note << "\n";
         } else if (name == "raster" && outcomes.raster) {
             note << "raster: " << outcomes.raster->width << " x " << outcomes.raster->height << ", "
@@ -474,9 +515,15 @@ ScenePainter::ScenePainter(vtkRenderer* world, vtkRenderer* projected)
     rasterGrid_->SetMapper(gridMapper);
     rasterGrid_->GetProperty()->SetOpacity(0.85);
     rasterGrid_->SetVisibility(false);
+    zFightingRing_ = vtkSmartPointer<vtkActor2D>::New();
+    auto ringMapper = vtkSmartPointer<vtkPolyDataMapper2D>::New();
+    ringMapper->SetTransformCoordinate(viewCoordinates);
+    ringMapper->SetInputData(linesData({}));
+    zFightingRing_->SetMapper(ringMapper);
     if (projected_) {
         projected_->AddActor2D(rasterGrid_);
         projected_->AddActor2D(vanishing_);
+        projected_->AddActor2D(zFightingRing_); // over the vanishing lines
     }
     frameAxes_ = vtkSmartPointer<vtkActor>::New();
     auto frameMapper = vtkSmartPointer<vtkPolyDataMapper>::New();
@@ -487,6 +534,25 @@ ScenePainter::ScenePainter(vtkRenderer* world, vtkRenderer* projected)
     world_->AddActor(frameAxes_);
     if (projected_)
         projected_->AddActor2D(projectedCaption_);
+    // Legends at the right: the world view's at the top, below the caption's
+    // line, the projected view's at the bottom, under the picture.
+    for (const bool top : {true, false}) {
+        auto legend = vtkSmartPointer<vtkLegendBoxActor>::New();
+        legend->UseBackgroundOn();
+        legend->SetBackgroundOpacity(0.85);
+        legend->SetPickable(false);
+        auto corner = vtkSmartPointer<vtkCoordinate>::New();
+        corner->SetCoordinateSystemToNormalizedViewport();
+        corner->SetValue(1, top ? 0.96 : 0);
+        // Position: pixels from the corner; Position2: the size in pixels.
+        legend->GetPositionCoordinate()->SetCoordinateSystemToViewport();
+        legend->GetPositionCoordinate()->SetReferenceCoordinate(corner);
+        legend->GetPosition2Coordinate()->SetCoordinateSystemToViewport();
+        (top ? worldLegend_ : projectedLegend_) = legend;
+    }
+    world_->AddActor2D(worldLegend_);
+    if (projected_)
+        projected_->AddActor2D(projectedLegend_);
     applyStyle();
 }
 
@@ -512,18 +578,30 @@ Rgb ScenePainter::color(Element element, Theme theme)
     switch (element) {
     case Element::Objects: return dark ? Rgb{0.92, 0.92, 0.95} : Rgb{0.10, 0.10, 0.15};
     case Element::WorldAxes: return dark ? Rgb{0.75, 0.75, 0.75} : Rgb{0.35, 0.35, 0.35};
-    case Element::ViewAxes: return dark ? Rgb{1.00, 0.60, 0.10} : Rgb{0.85, 0.40, 0.00};
+    case Element::ViewAxes: return dark ? Rgb{1.00, 0.65, 0.10} : Rgb{0.90, 0.55, 0.00}; // orange
     case Element::Prp: return dark ? Rgb{1.00, 0.85, 0.20} : Rgb{0.70, 0.50, 0.00};
-    case Element::Window: return dark ? Rgb{0.30, 0.75, 1.00} : Rgb{0.00, 0.40, 0.80};
-    case Element::Dop: return dark ? Rgb{1.00, 0.35, 0.35} : Rgb{0.80, 0.10, 0.10};
+    case Element::Window: return dark ? Rgb{0.30, 0.75, 1.00} : Rgb{0.00, 0.40, 0.80}; // sky blue
+    case Element::Dop: return dark ? Rgb{0.90, 0.55, 0.80} : Rgb{0.70, 0.25, 0.55};    // reddish purple
     case Element::Volume: return dark ? Rgb{0.55, 0.65, 1.00} : Rgb{0.35, 0.45, 0.85};
     case Element::FrontPlane: return dark ? Rgb{0.35, 0.90, 0.45} : Rgb{0.10, 0.60, 0.20};
-    case Element::BackPlane: return dark ? Rgb{0.95, 0.45, 0.75} : Rgb{0.75, 0.15, 0.50};
+    case Element::BackPlane: return color(Element::Volume, theme); // the volume's far face; purple is the DOP's
     case Element::Projectors: return dark ? Rgb{0.60, 0.60, 0.65} : Rgb{0.55, 0.55, 0.60};
     case Element::Canonical: return dark ? Rgb{1.00, 1.00, 1.00} : Rgb{0.00, 0.00, 0.00};
     case Element::Frame: return dark ? Rgb{0.38, 0.40, 0.45} : Rgb{0.72, 0.72, 0.76};
+    case Element::Vanishing: return dark ? Rgb{0.00, 0.80, 0.60} : Rgb{0.00, 0.55, 0.40}; // bluish green
+    // Vermillion: in neither the depth bands' ramp nor the other elements.
+    case Element::ZFighting: return dark ? Rgb{1.00, 0.37, 0.05} : Rgb{0.84, 0.30, 0.00};
+    case Element::Traced: return dark ? Rgb{1.00, 1.00, 1.00} : Rgb{0.00, 0.00, 0.00};
     }
     return {1, 1, 1};
+}
+
+Rgb ScenePainter::background(Theme theme, bool projectedView)
+{
+    const bool dark = theme == Theme::Dark;
+    if (projectedView)
+        return dark ? Rgb{0.07, 0.08, 0.10} : Rgb{0.96, 0.96, 0.97};
+    return dark ? Rgb{0.11, 0.12, 0.14} : Rgb{1.0, 1.0, 1.0};
 }
 
 void ScenePainter::clear()
@@ -595,6 +673,7 @@ void ScenePainter::setScene(const Scene& scene)
     const double axis = 0.15 * size;
     const double worldAxis = 1.5 * axis; // longer than the VRC axes, which may start at the same point
     const double marker = 0.008 * size;
+    markerSize_ = marker;
 
     // Effects the scene lists: clipped-away edges and culled faces are ghosted,
     // faces the depth buffer cannot order are marked.
@@ -639,6 +718,8 @@ void ScenePainter::setScene(const Scene& scene)
             bands = depthBands(low, high, 24);
     }
     const vtkSmartPointer<vtkLookupTable> bandTable = bands ? bandColors(*bands) : nullptr;
+    std::vector<Vec3<double>> fighting;           // the z-fighting faces' corners
+    bool clippedAway = false, culledAway = false; // ghosts the legend names
     for (std::size_t o = 0; o < objects.size(); ++o) {
         const auto& [faces, edges] = objects[o];
         const FaceSets& sets = faceSets[o];
@@ -650,10 +731,17 @@ void ScenePainter::setScene(const Scene& scene)
         } else {
             addLayer(Element::Objects, faces, true, 0.35);
         }
-        if (!sets.back.faces.empty())
-            addLayer(Element::Objects, facesData(sets.back), true, 0.06);
-        if (!sets.fights.faces.empty())
-            addLayer(Element::Dop, facesData(sets.fights), true, 0.6);
+        if (!sets.back.faces.empty()) {
+            addLayer(Element::Objects, facesData(sets.back), true, kCulledOpacity);
+            culledAway = true;
+        }
+        if (!sets.fights.faces.empty()) { // outlined: far away they may be a few pixels wide
+            addLayer(Element::ZFighting, facesData(sets.fights), true, 0.8);
+            addLayer(Element::ZFighting, linesData(meshEdges(sets.fights)), false, 1.0);
+            for (const std::vector<int>& face : sets.fights.faces)
+                for (int k : face)
+                    fighting.push_back(sets.fights.vertices[std::size_t(k)]);
+        }
         if (outcomes.clip) {
             std::vector<Segment> kept, away;
             const auto indices = meshEdgeIndices(meshes[o]);
@@ -673,11 +761,20 @@ void ScenePainter::setScene(const Scene& scene)
                     away.emplace_back(q, b);
             }
             addLayer(Element::Objects, linesData(kept), false, 1.0);
-            if (!away.empty())
-                addLayer(Element::Objects, linesData(away), false, 0.2);
+            if (!away.empty()) {
+                addLayer(Element::Objects, linesData(away), false, kClippedOpacity);
+                clippedAway = true;
+            }
         } else if (!edges.empty()) {
             addLayer(Element::Objects, linesData(edges), false, 1.0);
         }
+    }
+
+    if (!fighting.empty()) {
+        Eigen::AlignedBox<double, 3> box;
+        for (const Vec3<double>& p : fighting)
+            box.extend(p);
+        addLabel(Element::ZFighting, "z-fighting", box.center());
     }
 
     const Vec3<double> o = Vec3<double>::Zero();
@@ -767,15 +864,18 @@ void ScenePainter::setScene(const Scene& scene)
             }
             for (std::size_t k = 0; k < actors.size(); ++k) // the faces, then the edges
                 projectedActors_.push_back({actors[k], Element::Objects, k == 0});
-            if (!faceSets[o].fights.faces.empty()) { // faces the buffer cannot order, over the picture
-                auto mapper = vtkSmartPointer<vtkPolyDataMapper>::New();
-                mapper->SetInputData(facesData(faceSets[o].fights));
-                auto fights = vtkSmartPointer<vtkActor>::New();
-                fights->SetMapper(mapper);
-                fights->GetProperty()->LightingOff();
-                fights->GetProperty()->SetOpacity(0.6);
-                projectedActors_.push_back({fights, Element::Dop, true});
-            }
+            if (!faceSets[o].fights.faces.empty()) // faces the buffer cannot order, outlined over the picture
+                for (const bool surface : {true, false}) {
+                    auto mapper = vtkSmartPointer<vtkPolyDataMapper>::New();
+                    mapper->SetInputData(surface ? facesData(faceSets[o].fights)
+                                                 : linesData(meshEdges(faceSets[o].fights)));
+                    auto fights = vtkSmartPointer<vtkActor>::New();
+                    fights->SetMapper(mapper);
+                    fights->GetProperty()->LightingOff();
+                    fights->GetProperty()->SetOpacity(surface ? 0.8 : 1.0);
+                    fights->GetProperty()->SetLineWidth(3);
+                    projectedActors_.push_back({fights, Element::ZFighting, surface});
+                }
         }
         // The window's outline, at mid depth so that no clipping plane cuts it.
         std::vector<Segment> border;
@@ -793,18 +893,50 @@ void ScenePainter::setScene(const Scene& scene)
         std::vector<Segment> edges; // of the built-in objects: meshes have none listed
         for (const ObjectGeometry& object : objects)
             edges.insert(edges.end(), object.second.begin(), object.second.end());
-        setUpProjectedView(scene, pipeline, edges, outcomes.raster ? &*outcomes.raster : nullptr);
+        setUpProjectedView(scene, pipeline, edges, outcomes.raster ? &*outcomes.raster : nullptr, fighting);
     }
     outcomes_ = outcomes;
     effectsNote_ = describeEffects(scene.effects, outcomes, pipeline, bands);
     effectsCaption_->SetInput(effectsNote_.c_str());
     effectsCaption_->SetVisibility(!effectsNote_.empty());
+
+    // The legends name what this scene shows, each view its own.
+    using Swatch = LegendEntry::Swatch;
+    std::vector<LegendEntry> effectEntries; // in both views
+    if (!fighting.empty())
+        effectEntries.push_back({"z-fighting faces", Element::ZFighting, Swatch::Face});
+    if (bands)
+        effectEntries.push_back({"depth bands, near to far", Element::Objects, Swatch::Bands});
+    worldEntries_ = {{foley ? "VRP and the VRC axes u, v, n" : "eye axes s, u, -f", Element::ViewAxes, Swatch::Line}};
+    if (showCenter)
+        worldEntries_.push_back({foley ? "PRP, center of projection" : "eye, center of projection", Element::Prp,
+                                 Swatch::Dot});
+    worldEntries_.insert(worldEntries_.end(),
+                         {{"window and its center CW", Element::Window, Swatch::Line},
+                          {"DOP, direction of projection", Element::Dop, Swatch::Line},
+                          {foley ? "view volume, back plane (B)" : "view volume, far plane", Element::Volume,
+                           Swatch::Line},
+                          {foley ? "front plane (F)" : "near plane", Element::FrontPlane, Swatch::Face},
+                          {"projectors", Element::Projectors, Swatch::Line},
+                          {"canonical view volume", Element::Canonical, Swatch::Line}});
+    worldEntries_.insert(worldEntries_.end(), effectEntries.begin(), effectEntries.end());
+    if (clippedAway)
+        worldEntries_.push_back({"clipped away (ghosted)", Element::Objects, Swatch::Line, kClippedOpacity});
+    if (culledAway)
+        worldEntries_.push_back({"culled faces (ghosted)", Element::Objects, Swatch::Face, kCulledOpacity});
+    projectedEntries_ = {{"window", Element::Window, Swatch::Line}};
+    if (projected_ && vanishing_->GetVisibility())
+        projectedEntries_.push_back({"vanishing lines", Element::Vanishing, Swatch::Line});
+    projectedEntries_.insert(projectedEntries_.end(), effectEntries.begin(), effectEntries.end());
+    if (outcomes.raster)
+        projectedEntries_.push_back({"raster pixels, a color per object", Element::Objects, Swatch::Pixels});
+
     applyStyle();
     show(Mat4<double>::Identity(), 0);
 }
 
 void ScenePainter::setUpProjectedView(const Scene& scene, const Pipeline<double>& pipeline, const std::vector<Segment>& edges,
-                                      const RasterOutcome* raster)
+                                      const RasterOutcome* raster, const std::vector<Vec3<double>>& fighting)
 {
     Mat4<double> clip = pipeline.clipMatrix();
     if (pipeline.convention == Convention::Foley)
@@ -838,6 +970,22 @@ void ScenePainter::setUpProjectedView(const Scene& scene, const Pipeline<double>
     }
     vanishing_->SetVisibility(!picture.empty());
 
+    // A ring around the z-fighting faces: small and far, they may lie under the vanishing lines.
+    std::vector<Vec2<double>> ring; // pairs of end points
+    Eigen::AlignedBox<double, 2> spot;
+    for (const Vec3<double>& p : fighting)
+        if (const std::optional<Vec3<double>> q = project(image, p))
+            spot.extend(q->head<2>());
+    if (!spot.isEmpty()) {
+        const double radius = 0.5 * spot.diagonal().norm() + 0.07;
+        auto at = [&](int k) -> Vec2<double> {
+            return spot.center() + radius * Vec2<double>(std::cos(k * M_PI / 24), std::sin(k * M_PI / 24));
+        };
+        for (int k = 0; k < 48; ++k)
+            ring.insert(ring.end(), {at(k), at(k + 1)});
+    }
+    zFightingRing_->SetVisibility(!ring.empty());
+
     // Keep the window square on screen whatever the viewport's shape.
     // The raster effect: its pixels as squares over the picture, one color per object.
     std::vector<std::pair<Vec2<double>, int>> pixels; // lower-left corner in NDC, object
@@ -855,13 +1003,12 @@ void ScenePainter::setUpProjectedView(const Scene& scene, const Pipeline<double>
 
     struct Context {
         Mat4<double> clip;
-        std::vector<Vec2<double>> picture;
-        vtkActor2D* vanishing;
+        std::vector<std::pair<vtkActor2D*, std::vector<Vec2<double>>>> lines; // 2D lines: end points by pairs
         std::vector<std::pair<Vec2<double>, int>> pixels;
         Vec2<double> pixelSize;
         vtkActor2D* grid;
     };
-    auto* context = new Context{clip, picture, vanishing_, pixels, pixelSize, rasterGrid_};
+    auto* context = new Context{clip, {{vanishing_, picture}, {zFightingRing_, ring}}, pixels, pixelSize, rasterGrid_};
     auto update = vtkSmartPointer<vtkCallbackCommand>::New();
     update->SetClientData(context);
     update->SetClientDataDeleteCallback([](void* data) { delete static_cast<Context*>(data); });
@@ -877,18 +1024,18 @@ void ScenePainter::setUpProjectedView(const Scene& scene, const Pipeline<double>
         letterbox(0, 0) *= 0.92;
         letterbox(1, 1) *= 0.92;
         renderer->GetActiveCamera()->SetExplicitProjectionTransformMatrix(toVtk(letterbox * c->clip));
-        std::vector<Segment> lines;
-        for (std::size_t i = 0; i + 1 < c->picture.size(); i += 2) {
-            auto place = [&](const Vec2<double>& q) { return Vec3<double>(q.x() * letterbox(0, 0), q.y() * letterbox(1, 1), 0); };
-            lines.emplace_back(place(c->picture[i]), place(c->picture[i + 1]));
+        auto place = [&](const Vec2<double>& q) { return Vec3<double>(q.x() * letterbox(0, 0), q.y() * letterbox(1, 1), 0); };
+        for (const auto& [actor, ends] : c->lines) {
+            std::vector<Segment> lines;
+            for (std::size_t i = 0; i + 1 < ends.size(); i += 2)
+                lines.emplace_back(place(ends[i]), place(ends[i + 1]));
+            static_cast<vtkPolyDataMapper2D*>(actor->GetMapper())->SetInputData(linesData(lines));
         }
-        static_cast<vtkPolyDataMapper2D*>(c->vanishing->GetMapper())->SetInputData(linesData(lines));
         // Raster pixels: a square each, with a gap so the grid shows.
         auto points = vtkSmartPointer<vtkPoints>::New();
         auto cells = vtkSmartPointer<vtkCellArray>::New();
         auto colors = vtkSmartPointer<vtkUnsignedCharArray>::New();
         colors->SetNumberOfComponents(3);
-        static const unsigned char palette[][3] = {{90, 140, 230}, {230, 120, 60}, {80, 190, 110}, {200, 90, 200}};
         for (const auto& [corner, object] : c->pixels) {
             const vtkIdType first = points->GetNumberOfPoints();
             for (const Vec2<double>& d : {Vec2<double>(0.06, 0.06), Vec2<double>(0.94, 0.06), Vec2<double>(0.94, 0.94),
@@ -898,7 +1045,7 @@ void ScenePainter::setUpProjectedView(const Scene& scene, const Pipeline<double>
             }
             const vtkIdType ids[4] = {first, first + 1, first + 2, first + 3};
             cells->InsertNextCell(4, ids);
-            colors->InsertNextTypedTuple(palette[object % 4]);
+            colors->InsertNextTypedTuple(kRasterPalette[object % 4]);
         }
         auto grid = vtkSmartPointer<vtkPolyData>::New();
         grid->SetPoints(points);
@@ -913,7 +1060,10 @@ void ScenePainter::setUpProjectedView(const Scene& scene, const Pipeline<double>
 
 void ScenePainter::show(const Mat4<double>& cumulative, double canonicalOpacity)
 {
+    const bool canonicalAppears = (canonicalOpacity > 0) != (canonicalOpacity_ > 0);
     canonicalOpacity_ = canonicalOpacity;
+    if (canonicalAppears) // the legend names it while it shows
+        fillLegend(worldLegend_, world_, worldEntries_, true);
     shownMatrix_ = cumulative;
     for (Layer& layer : layers_) {
         if (layer.element == Element::Canonical) {
@@ -1038,6 +1188,30 @@ void ScenePainter::setCaptions(const std::string& world, const std::string& proj
     projectedCaption_->SetInput(projected.c_str());
 }
 
+void ScenePainter::markTraced(const std::optional<Vec3<double>>& point)
+{
+    auto isTraced = [](const auto& item) { return item.element == Element::Traced; };
+    for (const Layer& layer : layers_)
+        if (isTraced(layer))
+            world_->RemoveActor(layer.actor);
+    for (const Label& label : labels_)
+        if (isTraced(label))
+            world_->RemoveActor(label.actor);
+    layers_.erase(std::remove_if(layers_.begin(), layers_.end(), isTraced), layers_.end());
+    labels_.erase(std::remove_if(labels_.begin(), labels_.end(), isTraced), labels_.end());
+    if (!point)
+        return;
+    addLayer(Element::Traced, sphere(*point, 2.5 * markerSize_), true, 1.0);
+    addLabel(Element::Traced, "traced", *point);
+    applyStyle();
+    show(shownMatrix_, canonicalOpacity_);
+}
+
+std::string ScenePainter::worldCaption() const
+{
+    return worldCaption_->GetInput();
+}
+
 void ScenePainter::setTheme(Theme theme)
 {
     theme_ = theme;
@@ -1058,17 +1232,18 @@ void ScenePainter::setFontSize(int points)
 
 void ScenePainter::applyStyle()
 {
-    const bool dark = theme_ == Theme::Dark;
-    world_->SetBackground(dark ? 0.11 : 1.0, dark ? 0.12 : 1.0, dark ? 0.14 : 1.0);
+    const Rgb worldBackground = background(theme_, false), projectedBackground = background(theme_, true);
+    world_->SetBackground(worldBackground.r, worldBackground.g, worldBackground.b);
     if (projected_)
-        projected_->SetBackground(dark ? 0.07 : 0.96, dark ? 0.08 : 0.96, dark ? 0.10 : 0.97);
+        projected_->SetBackground(projectedBackground.r, projectedBackground.g, projectedBackground.b);
     for (Layer& layer : layers_) {
         const Rgb c = styledColor(layer.element, layer.surface, theme_);
         vtkProperty* p = layer.actor->GetProperty();
         p->SetColor(c.r, c.g, c.b);
         p->SetOpacity(layer.element == Element::Canonical ? canonicalOpacity_ : layer.opacity);
         const bool emphasised = layer.element == Element::WorldAxes || layer.element == Element::ViewAxes ||
-                                layer.element == Element::Canonical || layer.element == Element::Dop;
+                                layer.element == Element::Canonical || layer.element == Element::Dop ||
+                                layer.element == Element::ZFighting;
         p->SetLineWidth(lineScale_ * (layer.surface ? 1 : (emphasised ? 3.5 : 2.0)));
     }
     for (Label& label : labels_) {
@@ -1084,9 +1259,11 @@ void ScenePainter::applyStyle()
     const Rgb note = color(Element::Objects, theme_);
     effectsCaption_->GetTextProperty()->SetColor(note.r, note.g, note.b);
     effectsCaption_->GetTextProperty()->SetFontSize(std::max(8, fontSize_ * 3 / 4));
-    const Rgb dop = color(Element::Dop, theme_);
-    vanishing_->GetProperty()->SetColor(dop.r, dop.g, dop.b);
-    vanishing_->GetProperty()->SetOpacity(0.7);
+    const Rgb vanishing = color(Element::Vanishing, theme_), fights = color(Element::ZFighting, theme_);
+    vanishing_->GetProperty()->SetColor(vanishing.r, vanishing.g, vanishing.b);
+    vanishing_->GetProperty()->SetOpacity(0.85);
+    zFightingRing_->GetProperty()->SetColor(fights.r, fights.g, fights.b);
+    zFightingRing_->GetProperty()->SetLineWidth(2.5);
     const Rgb frame = color(Element::Frame, theme_);
     frameAxes_->GetProperty()->SetColor(frame.r, frame.g, frame.b);
     frameAxes_->GetProperty()->SetLineWidth(1.5 * lineScale_);
@@ -1094,6 +1271,66 @@ void ScenePainter::applyStyle()
         const Rgb c = styledColor(a.element, a.surface, theme_);
         a.actor->GetProperty()->SetColor(c.r, c.g, c.b);
     }
+    fillLegend(worldLegend_, world_, worldEntries_, true);
+    if (projected_)
+        fillLegend(projectedLegend_, projected_, projectedEntries_, false);
+}
+
+void ScenePainter::fillLegend(vtkLegendBoxActor* legend, vtkRenderer* renderer, const std::vector<LegendEntry>& entries,
+                              bool top)
+{
+    std::vector<const LegendEntry*> shown;
+    for (const LegendEntry& entry : entries)
+        if (entry.element != Element::Canonical || canonicalOpacity_ > 0)
+            shown.push_back(&entry);
+    legend->SetNumberOfEntries(int(shown.size()));
+    legend->SetVisibility(!shown.empty());
+    const double* back = renderer->GetBackground();
+    legend->SetBackgroundColor(back[0], back[1], back[2]);
+    const Rgb border = color(Element::Frame, theme_), ink = color(Element::Objects, theme_);
+    legend->GetProperty()->SetColor(border.r, border.g, border.b);
+    vtkTextProperty* text = legend->GetEntryTextProperty();
+    text->SetColor(ink.r, ink.g, ink.b);
+    text->SetFontSize(std::max(8, fontSize_ * 2 / 3));
+    text->Modified(); // new entries take the font and color from it at the next build only if it changed
+
+    using Swatch = LegendEntry::Swatch;
+    vtkRenderWindow* window = renderer->GetRenderWindow();
+    const int dpi = window ? window->GetDPI() : 72;
+    int textWidth = 0, textHeight = 0;
+    for (std::size_t k = 0; k < shown.size(); ++k) {
+        const LegendEntry& entry = *shown[k];
+        const Rgb c = blend(styledColor(entry.element, entry.swatch == Swatch::Face, theme_), back, entry.opacity);
+        vtkSmartPointer<vtkPolyData> symbol;
+        if (entry.swatch == Swatch::Dot) {
+            symbol = dot(c);
+        } else if (entry.swatch == Swatch::Bands || entry.swatch == Swatch::Pixels) {
+            std::vector<Rgb> colors;
+            if (entry.swatch == Swatch::Bands)
+                for (const auto& rgb : kBandRamp)
+                    colors.push_back({rgb[0], rgb[1], rgb[2]});
+            else
+                for (const auto& rgb : kRasterPalette)
+                    colors.push_back({rgb[0] / 255.0, rgb[1] / 255.0, rgb[2] / 255.0});
+            symbol = stripes(colors, 0.4);
+        } else {
+            symbol = stripes({c}, entry.swatch == Swatch::Line ? 0.12 : 0.4);
+        }
+        legend->SetEntrySymbol(int(k), symbol);
+        legend->SetEntryString(int(k), entry.text.c_str());
+        int box[4];
+        vtkTextRenderer::GetInstance()->GetBoundingBox(text, entry.text, box, dpi);
+        textWidth = std::max(textWidth, box[1] - box[0] + 1);
+        textHeight = std::max(textHeight, box[3] - box[2] + 1);
+    }
+    // VTK fits the text to the box: a box made to the text's size keeps the
+    // font size asked for. Symbols take kSymbolWidth times the text's height.
+    const int padding = std::max(3, fontSize_ / 4), margin = std::max(4, fontSize_ / 2);
+    legend->SetPadding(padding);
+    const double width = textWidth + kSymbolWidth * textHeight + 2 * padding + 2;
+    const double height = double(shown.size()) * std::ceil(1.3 * textHeight) + 2 * padding;
+    legend->GetPosition2Coordinate()->SetValue(width, height);
+    legend->GetPositionCoordinate()->SetValue(-width - margin, top ? -height - 1.6 * fontSize_ : margin);
 }
 
 } // namespace viewpipe::gui

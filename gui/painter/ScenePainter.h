@@ -5,7 +5,8 @@
 // view volume with its front and back planes, the projectors, and the
 // canonical volume. Every element is kept in world coordinates and shown
 // through one cumulative matrix (with the homogeneous divide), so everything
-// moves together. One painter serves the app, screenshots and exports.
+// moves together. A legend in a corner of each view names the colors of what
+// the scene shows. One painter serves the app, screenshots and exports.
 
 #include <vtkSmartPointer.h>
 
@@ -20,6 +21,7 @@
 class vtkActor;
 class vtkActor2D;
 class vtkBillboardTextActor3D;
+class vtkLegendBoxActor;
 class vtkPolyData;
 class vtkRenderer;
 class vtkTextActor;
@@ -36,7 +38,12 @@ struct Rgb {
 // Everything the painter draws, so that callers can style or look them up.
 // Frame: the axes of the coordinates the current stage maps into, fixed on
 // screen (not transformed), so that a stage's motion reads against them.
-enum class Element { Objects, WorldAxes, ViewAxes, Prp, Window, Dop, Volume, FrontPlane, BackPlane, Projectors, Canonical, Frame };
+// Vanishing: the vanishing points and the edges drawn on to them (projected
+// view). ZFighting: faces the depth buffer cannot order.
+enum class Element {
+    Objects, WorldAxes, ViewAxes, Prp, Window, Dop, Volume, FrontPlane, BackPlane, Projectors, Canonical, Frame,
+    Vanishing, ZFighting, Traced
+};
 
 // Reads every mesh of a scene with VTK's readers; throws InputError naming
 // "objects[k].path" for one that cannot be read.
@@ -77,6 +84,10 @@ public:
 
     // Titles in the top-left corners of the two views.
     void setCaptions(const std::string& world, const std::string& projected);
+    std::string worldCaption() const;
+
+    // Marks the vertex being traced (world coordinates) in the world view, or none.
+    void markTraced(const std::optional<Vec3<double>>& point);
 
     void setTheme(Theme theme);
     void setFontSize(int points);
@@ -111,21 +122,29 @@ public:
     // What the scene's effects found, computed once per setScene.
     const EffectOutcomes& effectOutcomes() const { return outcomes_; }
 
+    // Colors from the Okabe-Ito palette where meanings must not be confused
+    // (DOP, vanishing lines, z-fighting), readable by colorblind people.
     static Rgb color(Element element, Theme theme);
     static Rgb faceColor(Theme theme);
     // An element's color: objects' surfaces take faceColor, everything else color.
     static Rgb styledColor(Element element, bool surface, Theme theme);
+    static Rgb background(Theme theme, bool projectedView);
 
 private:
     struct Layer;
     struct Label;
+    struct LegendEntry;
     void clear();
     void addLayer(Element element, vtkSmartPointer<vtkPolyData> geometry, bool surface, double opacity);
     void addLabel(Element element, const std::string& text, const Vec3<double>& world);
     void applyStyle();
+    // Fills a view's legend with its entries, at the painter's font size, in
+    // the view's top-right (below the caption) or bottom-right corner.
+    void fillLegend(vtkLegendBoxActor* legend, vtkRenderer* renderer, const std::vector<LegendEntry>& entries,
+                    bool top);
     using Segment = std::pair<Vec3<double>, Vec3<double>>;
     void setUpProjectedView(const Scene& scene, const Pipeline<double>& pipeline, const std::vector<Segment>& edges,
-                            const RasterOutcome* raster);
+                            const RasterOutcome* raster, const std::vector<Vec3<double>>& fighting);
     double fitDistance(double radius) const;
 
     vtkRenderer* world_;
@@ -138,6 +157,12 @@ private:
     vtkSmartPointer<vtkActor> frameAxes_;
     vtkSmartPointer<vtkActor2D> vanishing_;  // vanishing points and the lines meeting there, projected view
     vtkSmartPointer<vtkActor2D> rasterGrid_; // the raster effect's pixels, projected view
+    vtkSmartPointer<vtkActor2D> zFightingRing_; // around the z-fighting faces, projected view
+    // What each color means, for the elements the scene shows in each view.
+    vtkSmartPointer<vtkLegendBoxActor> worldLegend_;
+    vtkSmartPointer<vtkLegendBoxActor> projectedLegend_;
+    std::vector<LegendEntry> worldEntries_;
+    std::vector<LegendEntry> projectedEntries_;
     std::vector<Layer> layers_;
     std::vector<Label> labels_;
     struct ProjectedActor {
@@ -150,6 +175,7 @@ private:
     int fontSize_ = 18;
     double lineScale_ = 1;
     double canonicalOpacity_ = 0;
+    double markerSize_ = 1; // of the scene's point markers, in world units
     // The user's view relative to the automatic framing.
     double userZoom_ = 1;
     Vec3<double> userPan_ = Vec3<double>::Zero();

@@ -1,0 +1,255 @@
+// What a person checks by looking: distinct colors for distinct meanings in
+// both themes, a legend naming what the scene shows, the z-fighting color on
+// screen, a matrices panel that cuts nothing, an export folder outside the
+// program's, a guide that names every stage, and tooltips on the controls.
+
+#include <QAbstractButton>
+#include <QComboBox>
+#include <QDirIterator>
+#include <QDockWidget>
+#include <QLabel>
+#include <QLineEdit>
+#include <QScrollArea>
+#include <QScrollBar>
+#include <QSettings>
+#include <QSpinBox>
+#include <QStandardPaths>
+#include <QSurfaceFormat>
+#include <QTemporaryDir>
+#include <QTextBrowser>
+#include <QVTKOpenGLNativeWidget.h>
+#include <QtTest>
+
+#include <vtkActor2DCollection.h>
+#include <vtkLegendBoxActor.h>
+#include <vtkRenderWindow.h>
+#include <vtkRenderer.h>
+#include <vtkRendererCollection.h>
+
+#include <algorithm>
+#include <cmath>
+#include <set>
+
+#include "app_window.h"
+#include "app/ExportDialog.h"
+#include "app/GuideDialog.h"
+#include "app/MainWindow.h"
+#include "app/MatrixPanel.h"
+
+using namespace viewpipe;
+using namespace viewpipe::gui;
+
+namespace {
+
+const QString kScenes = QString(VIEWPIPE_DATA_DIR) + "/scenes";
+
+// The largest difference of one channel, 0 to 1.
+double difference(const Rgb& a, const Rgb& b)
+{
+    return std::max({std::abs(a.r - b.r), std::abs(a.g - b.g), std::abs(a.b - b.b)});
+}
+
+vtkRenderer* renderer(MainWindow& window, const char* view)
+{
+    return window.findChild<QVTKOpenGLNativeWidget*>(view)->renderWindow()->GetRenderers()->GetFirstRenderer();
+}
+
+// The entries of the legend drawn in a view; fails the test if there is none.
+QStringList legendEntries(MainWindow& window, const char* view)
+{
+    vtkActor2DCollection* actors = renderer(window, view)->GetActors2D();
+    actors->InitTraversal();
+    while (vtkActor2D* actor = actors->GetNextActor2D())
+        if (auto* legend = vtkLegendBoxActor::SafeDownCast(actor)) {
+            if (!legend->GetVisibility())
+                continue;
+            QStringList entries;
+            for (int k = 0; k < legend->GetNumberOfEntries(); ++k)
+                entries << legend->GetEntryString(k);
+            return entries;
+        }
+    qWarning("no legend in %s", view);
+    return {};
+}
+
+// Pixels of a view within a few levels of a color (lines drawn opaque keep theirs exactly).
+int pixelsOf(MainWindow& window, const char* view, const Rgb& color)
+{
+    window.renderNow();
+    const QImage image =
+        window.findChild<QVTKOpenGLNativeWidget*>(view)->grabFramebuffer().convertToFormat(QImage::Format_RGB32);
+    const int r = int(std::lround(255 * color.r)), g = int(std::lround(255 * color.g)), b = int(std::lround(255 * color.b));
+    int count = 0;
+    for (int y = 0; y < image.height(); ++y)
+        for (int x = 0; x < image.width(); ++x) {
+            const QRgb c = image.pixel(x, y);
+            count += std::max({std::abs(qRed(c) - r), std::abs(qGreen(c) - g), std::abs(qBlue(c) - b)}) <= 24;
+        }
+    return count;
+}
+
+} // namespace
+
+class LookTest : public QObject {
+    Q_OBJECT
+
+private slots:
+    void initTestCase() { QSettings().remove("exportFolder"); }
+
+    void cleanupTestCase() { QSettings().remove("exportFolder"); }
+
+    void meaningsHaveTheirOwnColors()
+    {
+        for (const Theme theme : {Theme::Dark, Theme::Light}) {
+            const Rgb dop = ScenePainter::color(Element::Dop, theme);
+            const Rgb vanishing = ScenePainter::color(Element::Vanishing, theme);
+            const Rgb fighting = ScenePainter::color(Element::ZFighting, theme);
+            QVERIFY(difference(dop, vanishing) > 0.25);
+            QVERIFY(difference(dop, fighting) > 0.25);
+            QVERIFY(difference(vanishing, fighting) > 0.25);
+            for (const bool projected : {false, true}) {
+                const Rgb background = ScenePainter::background(theme, projected);
+                for (const Rgb& c : {dop, vanishing, fighting})
+                    QVERIFY(difference(c, background) > 0.3);
+            }
+        }
+    }
+
+    void legendNamesWhatTheSceneShows()
+    {
+        MainWindow window;
+        window.setPopupsEnabled(false);
+        window.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&window));
+        QVERIFY(window.openScene(kScenes + "/depth-corridor.json"));
+        window.renderNow();
+        for (const char* view : {"worldView", "projectedView"}) {
+            const QStringList entries = legendEntries(window, view);
+            QVERIFY2(entries.filter("z-fighting").size() == 1, qPrintable(entries.join(", ")));
+            QVERIFY2(entries.filter("depth bands").size() == 1, qPrintable(entries.join(", ")));
+        }
+        QVERIFY(legendEntries(window, "projectedView").filter("vanishing").size() == 1);
+
+        QVERIFY(window.openScene(kScenes + "/house.json"));
+        window.renderNow();
+        const QStringList house = legendEntries(window, "worldView");
+        QVERIFY2(house.filter("DOP").size() == 1, qPrintable(house.join(", ")));
+        QVERIFY2(house.filter("z-fighting").isEmpty(), qPrintable(house.join(", ")));
+        QVERIFY(house.filter("depth bands").isEmpty());
+    }
+
+    void zFightingShowsInItsColor()
+    {
+        MainWindow window;
+        window.setPopupsEnabled(false);
+        window.resize(1600, 950);
+        window.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&window));
+        for (const Theme theme : {Theme::Dark, Theme::Light}) {
+            window.setTheme(theme);
+            const Rgb fighting = ScenePainter::color(Element::ZFighting, theme);
+            QVERIFY(window.openScene(kScenes + "/depth-corridor.json"));
+            QVERIFY2(pixelsOf(window, "worldView", fighting) > 30, "the world view shows no z-fighting color");
+            QVERIFY2(pixelsOf(window, "projectedView", fighting) > 30, "the projected view shows no z-fighting color");
+            QVERIFY(window.openScene(kScenes + "/house.json")); // nothing fights: the color means z-fighting only
+            QVERIFY(pixelsOf(window, "worldView", fighting) < 10);
+            QVERIFY(pixelsOf(window, "projectedView", fighting) < 10);
+        }
+    }
+
+    void matricesPanelCutsNothing()
+    {
+        MainWindow window;
+        window.setPopupsEnabled(false);
+        window.resize(1280, 720);
+        window.setFontSize(12); // a little larger than the default, as on a projector
+        window.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&window));
+        QVERIFY(window.openScene(kScenes + "/classical/house-oblique.json"));
+        window.goToStage(window.stageCount(), false); // S_par, with the longest notes
+        window.showPanel("matrices");
+        QVERIFY(window.matrices()->stageText().contains("S_par"));
+        auto* scroll = window.findChild<QDockWidget*>("matricesDock")->findChild<QScrollArea*>();
+        QTest::qWait(200); // the layout settles
+        QVERIFY(scroll->viewport()->width() > 100);
+        QCOMPARE(scroll->horizontalScrollBar()->maximum(), 0); // all of it fits the panel's width
+    }
+
+    void exportFolderIsTheUsersAndRemembered()
+    {
+        const QString program = QCoreApplication::applicationDirPath();
+        {
+            ExportDialog dialog(5, Theme::Dark);
+            const QString folder = QString::fromStdString(dialog.options().out.string());
+            QVERIFY2(!folder.startsWith(program), qPrintable(folder));
+            QVERIFY2(!folder.startsWith(QDir::currentPath()), qPrintable(folder));
+            QCOMPARE(folder, ExportDialog::defaultFolder());
+            QVERIFY(folder.endsWith("/ViewPipe"));
+            const QString pictures = QStandardPaths::writableLocation(QStandardPaths::PicturesLocation);
+            if (!pictures.isEmpty())
+                QVERIFY(folder.startsWith(pictures));
+        }
+        QTemporaryDir chosen;
+        {
+            ExportDialog dialog(5, Theme::Dark);
+            dialog.findChild<QLineEdit*>("exportFolder")->setText(chosen.path());
+            dialog.accept();
+        }
+        ExportDialog again(5, Theme::Dark);
+        QCOMPARE(QString::fromStdString(again.options().out.string()), chosen.path());
+    }
+
+    void guideNamesEveryStage()
+    {
+        // Every stage of the scenes shipped, with the divide, and of glFrustum.
+        std::set<std::string> symbols;
+        QDirIterator files(kScenes, {"*.json"}, QDir::Files, QDirIterator::Subdirectories);
+        std::vector<Scene> scenes;
+        while (files.hasNext())
+            scenes.push_back(loadScene(files.next().toStdString()));
+        scenes.push_back(parseScene(R"({"camera": {"look_at": {"eye": [0, 0, 5], "center": [0, 0, 0], "up": [0, 1, 0]},
+                                                "projection": {"type": "frustum", "left": -1, "right": 2, "bottom": -1,
+                                                               "top": 1, "near": 1, "far": 10}},
+                                     "objects": []})",
+                                    "."));
+        for (const Scene& scene : scenes)
+            for (const bool divide : {false, true})
+                for (const auto& stage : buildPipeline(scene.camera, withEffect(scene.effects, "divide", divide)).stages)
+                    symbols.insert(stage.symbol);
+        QVERIFY(symbols.count("SH_frustum") && symbols.count("S_par") && symbols.count("M"));
+
+        QWidget parent;
+        GuideDialog* guide = GuideDialog::showFor(&parent);
+        QVERIFY(guide->isVisible());
+        QVERIFY(!guide->isModal());
+        QCOMPARE(GuideDialog::showFor(&parent), guide); // one guide, brought to the front
+        const QString text = guide->browser()->toPlainText();
+        for (const std::string& symbol : symbols)
+            QVERIFY2(text.contains(QString::fromStdString(symbol)), symbol.c_str());
+        for (const char* words : {"Matrices", "Parameters", "Accuracy", "Depth", "Ctrl+Z", "Ctrl+Y", "Ctrl+E", "Ctrl+K",
+                                  "Left", "Play"})
+            QVERIFY2(text.contains(words), words);
+    }
+
+    void everyControlSaysWhatItIs()
+    {
+        ExportDialog dialog(5, Theme::Dark);
+        MatrixPanel panel;
+        for (QWidget* parent : {static_cast<QWidget*>(&dialog), static_cast<QWidget*>(&panel)})
+            for (QWidget* control : parent->findChildren<QWidget*>())
+                if (qobject_cast<QAbstractSpinBox*>(control->parentWidget())) // a spin box's own line edit
+                    continue;
+                else if (qobject_cast<QAbstractButton*>(control) || qobject_cast<QLineEdit*>(control) ||
+                    qobject_cast<QAbstractSpinBox*>(control) || qobject_cast<QComboBox*>(control) ||
+                    (qobject_cast<QLabel*>(control) && parent == &panel))
+                    QVERIFY2(!control->toolTip().isEmpty(), qPrintable(control->metaObject()->className() +
+                                                                       QString(" ") + control->objectName()));
+    }
+};
+
+int main(int argc, char** argv)
+{
+    return runAppTests<LookTest>(argc, argv);
+}
+
+#include "look_test.moc"
