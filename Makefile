@@ -18,6 +18,7 @@ run: build
 	@scripts/run.sh
 
 test: build
+	@scripts/install-deps.sh --test
 	@scripts/test.sh
 
 clean:

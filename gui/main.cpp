@@ -43,7 +43,7 @@ template <class Body> int guarded(const std::string& inputPrefix, const std::str
     try {
         return body();
     } catch (const InputError& e) {
-        std::cerr << inputPrefix << ": " << e.what() << "\n";
+        std::cerr << e.describe(inputPrefix) << "\n";
         return kExitBadInput;
     } catch (const std::exception& e) {
         std::cerr << internalPrefix << ": " << e.what() << "\n";
@@ -108,7 +108,7 @@ int main(int argc, char** argv)
     openCommand->add_option("SCENE", open.scene, "Scene file (JSON)");
     openCommand->add_option("--stage", open.stage, "Stage to show: 0 is the world, K after the K-th matrix");
     openCommand->add_option("--screenshot", open.screenshot, "Save a PNG of the whole window and exit");
-    openCommand->add_option("--size", size, "Window size WxH (default 1600x950)");
+    openCommand->add_option("--size", size, "Window size WxH (default: 1600x950 for a screenshot, else fitted to the screen)");
     openCommand->add_option("--theme", theme, "dark or light")->check(CLI::IsMember({"dark", "light"}));
     openCommand->add_option("--panel", open.panel, "Dock in front: stages, matrices, parameters, accuracy (measured) or depth")
         ->check(CLI::IsMember({"stages", "matrices", "parameters", "accuracy", "depth"}));

@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
 # Installs the Debian 12 packages ViewPipe needs, only those that are missing.
 # Idempotent: a second run installs nothing. Uses sudo when not root.
+# --test adds what only the tests need.
 set -euo pipefail
 
 packages=(
@@ -12,6 +13,10 @@ packages=(
   xvfb xauth libgl1-mesa-dri fonts-dejavu-core
   ffmpeg
 )
+# Only the tests need these (sanitizers, libFuzzer): `make run` stays quick.
+if [ "${1:-}" = "--test" ]; then
+  packages+=(clang libclang-rt-14-dev)
+fi
 
 missing=()
 for p in "${packages[@]}"; do

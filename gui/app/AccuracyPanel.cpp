@@ -8,6 +8,7 @@
 #include <QVBoxLayout>
 
 #include <QVTKOpenGLNativeWidget.h>
+#include <mpfr.h>
 #include <vtkChartMatrix.h>
 #include <vtkContextScene.h>
 #include <vtkContextView.h>
@@ -19,15 +20,25 @@
 
 namespace viewpipe::gui {
 
+namespace {
+
+QString intro()
+{
+    return AccuracyPanel::tr("Error against an MPFR-256 reference and time per build and per vertex, for float, "
+                             "double, long double, double-double, float128 and MPFR.");
+}
+
+} // namespace
+
 AccuracyPanel::AccuracyPanel(QWidget* parent) : QWidget(parent)
 {
     auto* layout = new QVBoxLayout(this);
-    button_ = new QPushButton(tr("Measure the precisions for this scene"));
+    button_ = new QPushButton(tr("Measure"));
+    button_->setToolTip(tr("Measure every precision on this scene: error against MPFR-256 and time, in the background"));
     progress_ = new QProgressBar;
     progress_->setRange(0, 6);
     progress_->hide();
-    status_ = new QLabel(tr("Error against an MPFR-256 reference and time per build and per vertex, for float, "
-                            "double, long double, double-double, float128 and MPFR."));
+    status_ = new QLabel(intro());
     status_->setWordWrap(true);
     table_ = new QTableWidget(0, 10);
     table_->setHorizontalHeaderLabels({tr("precision"), tr("bits"), tr("build ns"), tr("ns/vertex"),
@@ -94,7 +105,9 @@ void AccuracyPanel::measure(const Scene& scene, std::size_t vertices)
             *result = cli::runBench(scene, objectPoints, options, [this, cancel](int done, int, const std::string& tier) {
                 if (*cancel)
                     return false;
-                QMetaObject::invokeMethod(this, [this, done, tier] {
+                QMetaObject::invokeMethod(this, [this, done, tier, cancel] {
+                    if (*cancel)
+                        return;
                     progress_->setValue(done);
                     status_->setText(tr("Measuring %1…").arg(QString::fromStdString(tier)));
                 }, Qt::QueuedConnection);
@@ -104,23 +117,33 @@ void AccuracyPanel::measure(const Scene& scene, std::size_t vertices)
             const QString message = QString::fromStdString(e.what());
             QMetaObject::invokeMethod(this, [this, message] { status_->setText(message); }, Qt::QueuedConnection);
         }
+        mpfr_free_cache2(MPFR_FREE_LOCAL_CACHE); // this thread's constants (pi …) die with it
         if (*cancel)
             return;
-        QMetaObject::invokeMethod(this, [this, result] {
+        QMetaObject::invokeMethod(this, [this, result, cancel] {
+            if (*cancel) // abandoned after the result was sent: it belongs to another scene
+                return;
             if (worker_.joinable())
                 worker_.join();
             running_ = false;
             button_->setEnabled(true);
             progress_->hide();
-            show(*result);
+            showResult(*result);
             emit finished();
         }, Qt::QueuedConnection);
     });
 }
 
-void AccuracyPanel::show(const cli::BenchResult& result)
+void AccuracyPanel::showResult(cli::BenchResult result)
 {
-    last_ = std::make_unique<cli::BenchResult>(result);
+    last_ = std::make_unique<cli::BenchResult>(std::move(result));
+    drawResult();
+}
+
+// Redraws the kept result (also on a theme change, which must not replace it while reading it).
+void AccuracyPanel::drawResult()
+{
+    const cli::BenchResult& result = *last_;
     status_->setText(tr("Reference: %1. %2 vertices timed; absolute errors, with units of each type's epsilon "
                         "in brackets; pixels at %3×%4.")
                          .arg(QString::fromStdString(result.reference))
@@ -158,7 +181,20 @@ void AccuracyPanel::setTheme(Theme theme)
 {
     theme_ = theme;
     if (last_)
-        show(*last_);
+        drawResult();
+}
+
+void AccuracyPanel::clear()
+{
+    stop();
+    last_.reset();
+    button_->setEnabled(true);
+    progress_->hide();
+    status_->setText(intro());
+    table_->setRowCount(0);
+    charts_->ClearItems();
+    chartWidget_->renderWindow()->Render();
+    chartWidget_->update();
 }
 
 } // namespace viewpipe::gui

@@ -35,13 +35,17 @@ public:
     void measure(const Scene& scene, std::size_t vertices = 1000000);
     bool isRunning() const { return running_; }
     void setTheme(Theme theme);
+    // Forgets the results and abandons a running measurement: they belong to the previous scene.
+    void clear();
+    bool hasResult() const { return last_ != nullptr; }
     QTableWidget* table() { return table_; }
 
 signals:
     void finished();
 
 private:
-    void show(const cli::BenchResult& result);
+    void showResult(cli::BenchResult result);
+    void drawResult();
     void stop();
 
     QPushButton* button_;

@@ -68,6 +68,11 @@ void Document::addObject(const SceneObject& object, const QString& description)
     replace(std::move(next), description);
 }
 
+void Document::markRecovered(const Scene& saved)
+{
+    undo_.push(new SceneEdit(this, saved, scene_, tr("Recover unsaved changes")));
+}
+
 void Document::replace(Scene next, const QString& description)
 {
     buildPipeline(next.camera); // throws InputError: nothing changes

@@ -35,6 +35,10 @@ public:
     void addObject(const SceneObject& object, const QString& description);
     void setEffects(const EffectList& effects, const QString& description);
 
+    // After a crash: the loaded scene becomes one undoable edit away from
+    // `saved` (the file as it was), so it shows as unsaved changes.
+    void markRecovered(const Scene& saved);
+
     // Replaces the state without validation; only for undo and redo of states
     // that were valid when they were pushed.
     void restore(const Scene& scene);

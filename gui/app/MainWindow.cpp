@@ -17,13 +17,16 @@
 #include <QMimeData>
 #include <QProgressDialog>
 #include <QPushButton>
+#include <QScreen>
 #include <QScrollArea>
+#include <QScrollBar>
 #include <QSettings>
 #include <QShortcut>
 #include <QSlider>
 #include <QSplitter>
 #include <QStatusBar>
 #include <QStyle>
+#include <QTabBar>
 #include <QVariantAnimation>
 #include <QVBoxLayout>
 
@@ -34,10 +37,12 @@
 
 #include "AccuracyPanel.h"
 #include "AppPaths.h"
+#include "Autosave.h"
 #include "ClassicalDialog.h"
 #include "ClickStyle.h"
 #include "DepthPanel.h"
 #include "ExportDialog.h"
+#include "GuideDialog.h"
 #include "cli/latex.hpp"
 #include "MatrixPanel.h"
 #include "ParameterPanel.h"
@@ -57,7 +62,8 @@ QString stageLabel(const Stage<double>& stage, int index)
 
 } // namespace
 
-MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent), document_(new Document(this))
+MainWindow::MainWindow(QWidget* parent)
+    : QMainWindow(parent), document_(new Document(this)), autosave_(new Autosave(document_, this))
 {
     setObjectName("ViewPipeMainWindow");
     setAcceptDrops(true);
@@ -80,7 +86,8 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent), document_(new Doc
         stage_ = transition_->to();
         transition_.reset();
         updateStageWidgets();
-        renderNow(); // the new caption
+        updateCaptions();
+        renderNow();
         if (stage_ != target_)
             startStep();
         else
@@ -90,7 +97,16 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent), document_(new Doc
     connect(document_, &Document::changed, this, &MainWindow::onDocumentChanged);
     connect(document_, &Document::fileChanged, this, &MainWindow::updateTitle);
     connect(parameters_, &ParameterPanel::cameraEdited, this, &MainWindow::onCameraEdited);
-    resize(1600, 950);
+    fitToScreen();
+}
+
+void MainWindow::fitToScreen()
+{
+    QSize size(1600, 950);
+    if (const QScreen* screen = QGuiApplication::primaryScreen())
+        size = size.boundedTo(screen->availableGeometry().size() * 0.95);
+    resize(size);
+    fitDocksToText();
 }
 
 MainWindow::~MainWindow() = default;
@@ -110,8 +126,11 @@ void MainWindow::buildViews()
     makeView(projectedWidget_, projectedWindow_, projectedRenderer_);
     worldWidget_->setObjectName("worldView");
     projectedWidget_->setObjectName("projectedView");
-    worldWidget_->setMinimumSize(300, 300);
-    projectedWidget_->setMinimumSize(200, 200);
+    worldWidget_->setToolTip(tr("The world view: every element through the stages' matrices so far. "
+                                "Drag to turn, wheel to zoom, click a vertex to trace it"));
+    projectedWidget_->setToolTip(tr("What the camera sees: the scene projected onto the view plane"));
+    worldWidget_->setMinimumSize(260, 260);
+    projectedWidget_->setMinimumSize(160, 160);
 
     // A click picks a vertex to trace; a camera move is kept by later framing.
     auto style = vtkSmartPointer<ClickStyle>::New();
@@ -139,15 +158,22 @@ void MainWindow::buildDocks()
     stageList_ = new QListWidget;
     stageList_->setObjectName("stageList");
     stageList_->setWordWrap(true);
+    stageList_->setToolTip(tr("The stages of the normalizing transformation: pick one to see the scene after its matrix"));
     v->addWidget(stageList_);
     slider_ = new QSlider(Qt::Horizontal);
     slider_->setObjectName("stageSlider");
     slider_->setPageStep(1);
+    slider_->setToolTip(tr("Stage: 0 is the world, k is after the k-th matrix"));
     v->addWidget(slider_);
     auto* buttons = new QHBoxLayout;
-    auto* previous = new QPushButton(tr("◀ Previous"));
+    // Short labels: the row fits the dock at any text size.
+    auto* previous = new QPushButton(tr("◀"));
     playButton_ = new QPushButton(tr("Play"));
-    auto* next = new QPushButton(tr("Next ▶"));
+    auto* next = new QPushButton(tr("▶"));
+    previous->setObjectName("previousButton");
+    playButton_->setObjectName("playButton");
+    next->setObjectName("nextButton");
+    playButton_->setToolTip(tr("Play every stage from here, one transition a second; Stop holds the stage reached"));
     previous->setToolTip(tr("Previous stage (Left arrow)"));
     next->setToolTip(tr("Next stage (Right arrow)"));
     buttons->addWidget(previous);
@@ -178,6 +204,8 @@ void MainWindow::buildDocks()
 
     auto dock = [this](const QString& title, const QString& name, QWidget* content, Qt::DockWidgetArea area) {
         auto* scroll = new QScrollArea;
+        // Texts wrap to the dock's width rather than run off to the side.
+        scroll->setHorizontalScrollBarPolicy(Qt::ScrollBarAlwaysOff);
         scroll->setWidget(content);
         scroll->setWidgetResizable(true);
         auto* d = new QDockWidget(title, this);
@@ -201,7 +229,28 @@ void MainWindow::buildDocks()
     tabifyDockWidget(matrixDock, accuracyDock);
     tabifyDockWidget(matrixDock, depthDock);
     matrixDock->raise();
-    resizeDocks({stagesDock, matrixDock}, {280, 430}, Qt::Horizontal);
+    fitDocksToText();
+}
+
+void MainWindow::fitDocksToText()
+{
+    // Widths in units of the text's average character, the views keeping at least 40 % of the window.
+    // A dock is never narrower than its content: a scroll area would cut it, not shrink it.
+    for (QDockWidget* dock : findChildren<QDockWidget*>())
+        if (auto* scroll = qobject_cast<QScrollArea*>(dock->widget()))
+            scroll->setMinimumWidth(scroll->widget()->minimumSizeHint().width() +
+                                    scroll->verticalScrollBar()->sizeHint().width() + 2 * scroll->frameWidth());
+    const QFontMetrics metrics(QApplication::font());
+    const int em = metrics.averageCharWidth();
+    const double share = std::min(1.0, 0.6 * width() / double(em * (40 + 60)));
+    // The right docks' tabs need their titles in full.
+    int tabs = 0;
+    for (const QTabBar* bar : findChildren<QTabBar*>())
+        tabs = std::max(tabs, bar->sizeHint().width() + 2 * em);
+    const int right = std::max(int(em * 60 * share), tabs);
+    const int left = std::max(int(em * 40 * share), std::min(int(em * 40), int(0.6 * width()) - right));
+    resizeDocks({findChild<QDockWidget*>("stagesDock"), findChild<QDockWidget*>("matricesDock")}, {left, right},
+                Qt::Horizontal);
 }
 
 void MainWindow::buildMenus()
@@ -216,17 +265,8 @@ void MainWindow::buildMenus()
     }, QKeySequence::Open);
     presetMenu_ = file->addMenu(tr("&Presets"));
     recentMenu_ = file->addMenu(tr("Open &Recent"));
-    file->addAction(tr("&Save"), this, [this] {
-        if (document_->filePath().isEmpty())
-            return;
-        saveScene(document_->filePath());
-    }, QKeySequence::Save);
-    file->addAction(tr("Save &As…"), this, [this] {
-        const QString path = QFileDialog::getSaveFileName(this, tr("Save scene"), document_->filePath(),
-                                                          tr("Scenes (*.json)"));
-        if (!path.isEmpty())
-            saveScene(path);
-    }, QKeySequence::SaveAs);
+    file->addAction(tr("&Save"), this, [this] { saveSceneAs(); }, QKeySequence::Save);
+    file->addAction(tr("Save &As…"), this, [this] { saveSceneAs(true); }, QKeySequence::SaveAs);
     file->addSeparator();
     file->addAction(tr("&Import Mesh…"), this, [this] {
         const QString path = QFileDialog::getOpenFileName(this, tr("Import mesh"), QString(),
@@ -270,7 +310,7 @@ void MainWindow::buildMenus()
     QAction* undo = document_->undoStack()->createUndoAction(this, tr("&Undo"));
     undo->setShortcut(QKeySequence::Undo);
     QAction* redo = document_->undoStack()->createRedoAction(this, tr("&Redo"));
-    redo->setShortcut(QKeySequence::Redo);
+    redo->setShortcuts({QKeySequence(QKeySequence::Redo), QKeySequence(Qt::CTRL | Qt::Key_Y)});
     edit->addAction(undo);
     edit->addAction(redo);
     edit->addSeparator();
@@ -304,6 +344,7 @@ void MainWindow::buildMenus()
     buildEffectsMenu();
 
     QMenu* help = menuBar()->addMenu(tr("&Help"));
+    help->addAction(tr("&Guide"), this, [this] { GuideDialog::showFor(this); }, QKeySequence::HelpContents);
     help->addAction(tr("&About ViewPipe"), this, [this] {
         QMessageBox::about(this, tr("About ViewPipe"),
                            tr("<b>ViewPipe</b><p>Step through the 3D viewing pipeline: Foley &amp; van Dam's "
@@ -443,8 +484,12 @@ bool MainWindow::openScene(const Scene& scene, const QString& path)
             const QSignalBlocker drawn(document_); // the picture is made: only the widgets follow
             document_->load(scene, path);
         }
+        // Nothing of the previous scene stays: its traced vertex and measurements are not this one's.
+        traceVertex(std::nullopt);
+        accuracy_->clear();
         refreshWidgets();
-        addRecent(QFileInfo(path).absoluteFilePath());
+        if (!path.isEmpty())
+            addRecent(QFileInfo(path).absoluteFilePath());
         painter_->resetView();
         goToStage(0, false);
         return true;
@@ -453,6 +498,51 @@ bool MainWindow::openScene(const Scene& scene, const QString& path)
         if (!document_->filePath().isEmpty() || !document_->scene().objects.empty())
             onDocumentChanged();
         showMessage(tr("Cannot open %1: %2").arg(path, QString::fromStdString(e.what())));
+        return false;
+    }
+}
+
+bool MainWindow::saveSceneAs(bool askForName)
+{
+    QString path = document_->filePath();
+    if (askForName || path.isEmpty())
+        path = QFileDialog::getSaveFileName(this, tr("Save scene"), path, tr("Scenes (*.json)"));
+    return !path.isEmpty() && saveScene(path);
+}
+
+bool MainWindow::offerRecovery()
+{
+    const std::vector<AutosavedScene> orphans = Autosave::orphans();
+    if (orphans.empty())
+        return false;
+    const AutosavedScene& newest = orphans.front();
+    const QString name = newest.sourcePath.isEmpty() ? tr("an untitled scene") : newest.sourcePath;
+    QMessageBox question(QMessageBox::Question, tr("Recover unsaved changes"),
+                         tr("ViewPipe ended unexpectedly while %1 had unsaved changes. Recover them?").arg(name),
+                         QMessageBox::Yes | QMessageBox::No, this);
+    question.setObjectName("recoveryQuestion");
+    question.button(QMessageBox::Yes)->setText(tr("Recover"));
+    question.button(QMessageBox::No)->setText(tr("Discard"));
+    if (question.exec() != QMessageBox::Yes) {
+        Autosave::discard(newest);
+        return false;
+    }
+    try {
+        const Scene recovered = loadScene(newest.scenePath.toStdString());
+        Scene saved = recovered;
+        try {
+            if (!newest.sourcePath.isEmpty())
+                saved = loadScene(newest.sourcePath.toStdString());
+        } catch (const InputError&) {
+            // The file is gone or broken: the recovered scene is all there is.
+        }
+        if (!openScene(recovered, newest.sourcePath))
+            return false;
+        document_->markRecovered(saved);
+        Autosave::discard(newest);
+        return true;
+    } catch (const InputError& e) {
+        showMessage(tr("Cannot recover %1: %2").arg(name, QString::fromStdString(e.what())));
         return false;
     }
 }
@@ -478,6 +568,7 @@ void MainWindow::onDocumentChanged()
         showMessage(QString::fromStdString(e.what()));
         return;
     }
+    painter_->markTraced(traced_);
     refreshWidgets();
 }
 
@@ -563,7 +654,16 @@ void MainWindow::startStep()
 void MainWindow::showRestingStage()
 {
     StageTransition::showStage(*painter_, document_->pipeline().stages, stage_);
+    updateCaptions();
     renderNow();
+}
+
+void MainWindow::updateCaptions()
+{
+    const auto& stages = document_->pipeline().stages;
+    const QString shown = stage_ == 0 ? tr("World coordinates")
+                                      : tr("After %1").arg(QString::fromStdString(stages[std::size_t(stage_ - 1)].symbol));
+    painter_->setCaptions(shown.toStdString(), tr("What the camera sees").toStdString());
 }
 
 void MainWindow::updateStageWidgets()
@@ -572,10 +672,6 @@ void MainWindow::updateStageWidgets()
     const QSignalBlocker blockSlider(slider_);
     stageList_->setCurrentRow(target_);
     slider_->setValue(target_);
-    const auto& stages = document_->pipeline().stages;
-    const QString shown = stage_ == 0 ? tr("World coordinates")
-                                      : tr("After %1").arg(QString::fromStdString(stages[std::size_t(stage_ - 1)].symbol));
-    painter_->setCaptions(shown.toStdString(), tr("What the camera sees").toStdString());
     matrices_->showStage(document_->pipeline(), stage_);
     matrices_->showTrace(document_->pipeline(), traced_, stage_);
 }
@@ -607,6 +703,7 @@ void MainWindow::setFontSize(int points)
     QApplication::setFont(font);
     painter_->setFontSize(int(std::lround(fontSize_ * 1.6)));
     QSettings().setValue("fontSize", fontSize_);
+    fitDocksToText();
     renderNow();
 }
 
@@ -631,6 +728,7 @@ void MainWindow::updateTitle()
 
 void MainWindow::showMessage(const QString& text)
 {
+    lastMessage_ = text;
     statusBar()->showMessage(text, 10000);
     if (!isVisible() || !popups_)
         return;
@@ -649,7 +747,7 @@ bool MainWindow::confirmDiscard()
                                               tr("The scene has unsaved changes. Save them first?"),
                                               QMessageBox::Save | QMessageBox::Discard | QMessageBox::Cancel);
     if (answer == QMessageBox::Save)
-        return !document_->filePath().isEmpty() && saveScene(document_->filePath());
+        return saveSceneAs();
     return answer == QMessageBox::Discard;
 }
 
@@ -808,8 +906,15 @@ void MainWindow::copyViewAsImage()
 
 void MainWindow::pickAt(int x, int y)
 {
-    traced_ = painter_->pickVertex(x, y);
+    traceVertex(painter_->pickVertex(x, y));
+}
+
+void MainWindow::traceVertex(const std::optional<Vec3<double>>& point)
+{
+    traced_ = point;
+    painter_->markTraced(traced_);
     matrices_->showTrace(document_->pipeline(), traced_, stage_);
+    renderNow();
 }
 
 } // namespace viewpipe::gui

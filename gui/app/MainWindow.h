@@ -31,6 +31,7 @@ class vtkRenderer;
 namespace viewpipe::gui {
 
 class AccuracyPanel;
+class Autosave;
 class DepthPanel;
 class MatrixPanel;
 class ParameterPanel;
@@ -46,6 +47,10 @@ public:
     // The same for a scene already read from `path`.
     bool openScene(const Scene& scene, const QString& path);
     bool saveScene(const QString& path);
+    // At start: offers the newest scene autosaved by a session that crashed;
+    // returns true when it was recovered (open, with its changes unsaved).
+    bool offerRecovery();
+    Autosave* autosave() { return autosave_; }
 
     // Stage 0 is the world; stage k is after the k-th matrix. With
     // animate = false the picture jumps there (screenshots, tests).
@@ -70,6 +75,9 @@ public:
     // View > Classical Projection: a class of seed 001 for the scene's objects, one undoable edit.
     void chooseClassicalProjection();
 
+    // Follows a world point through the stages in the Matrices panel (a click on a vertex does this).
+    void traceVertex(const std::optional<Vec3<double>>& point);
+
     // Whether errors also open a message box (besides the status bar).
     void setPopupsEnabled(bool enabled) { popups_ = enabled; }
     void setTheme(Theme theme);
@@ -82,6 +90,10 @@ public:
     // Brings a dock to the front: "stages", "matrices", "parameters", "accuracy" or "depth".
     void showPanel(const QString& name);
     void renderNow();
+    // 1600x950, or less where the screen is smaller: every control stays on screen.
+    void fitToScreen();
+    // The last error or warning shown (status bar and message box).
+    QString lastMessage() const { return lastMessage_; }
 
     Document* document() { return document_; }
     ParameterPanel* parameters() { return parameters_; }
@@ -101,6 +113,7 @@ private:
     void buildDocks();
     void buildMenus();
     void buildEffectsMenu();
+    void fitDocksToText();
     void updateEffectsMenu();
     void onDocumentChanged();
     // The stepper, panels, menus and title from the document, the picture being drawn.
@@ -109,15 +122,19 @@ private:
     void startStep();
     void showRestingStage();
     void updateStageWidgets();
+    void updateCaptions();
     void updateTitle();
     void showMessage(const QString& text);
     bool confirmDiscard();
+    // Saves to the scene's file, asking for a name when it has none (or when asked to).
+    bool saveSceneAs(bool askForName = false);
     void addRecent(const QString& path);
     void rebuildRecentMenu();
     void rebuildPresetMenu();
     void pickAt(int x, int y);
 
     Document* document_;
+    Autosave* autosave_;
     std::unique_ptr<ScenePainter> painter_;
     QVTKOpenGLNativeWidget* worldWidget_ = nullptr;
     QVTKOpenGLNativeWidget* projectedWidget_ = nullptr;
@@ -151,6 +168,7 @@ private:
     std::optional<Vec3<double>> traced_;
     int fontSize_ = 11;
     bool popups_ = true;
+    QString lastMessage_;
 };
 
 } // namespace viewpipe::gui

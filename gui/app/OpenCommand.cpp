@@ -1,6 +1,7 @@
 #include "OpenCommand.h"
 
 #include <QApplication>
+#include <QBuffer>
 #include <QFile>
 #include <QDir>
 #include <QEventLoop>
@@ -12,6 +13,7 @@
 #include <QVTKOpenGLNativeWidget.h>
 
 #include <filesystem>
+#include <iostream>
 
 #include "AccuracyPanel.h"
 #include "AppPaths.h"
@@ -26,6 +28,7 @@ int runOpen(int argc, char** argv, const OpenOptions& options)
                                                     : QString::fromStdString(options.scene);
     // Validate before any window appears: bad input is exit 2 with the core's message.
     const Scene scene = loadScene(scenePath.toStdString());
+    checkMeshes(scene);
     const int stages = int(buildPipeline(scene.camera, scene.effects).stages.size());
     if (options.stage < 0 || options.stage > stages)
         throw InputError("--stage", "must lie between 0 and " + std::to_string(stages) + " (got " +
@@ -45,11 +48,20 @@ int runOpen(int argc, char** argv, const OpenOptions& options)
     MainWindow window;
     window.setPopupsEnabled(!screenshot); // a screenshot run reports in the status bar and its exit code
     window.setTheme(theme);
-    window.setFontSize(screenshot ? 11 : settings.value("fontSize", 11).toInt());
-    window.resize(options.width, options.height);
+    if (options.width > 0)
+        window.resize(options.width, options.height);
+    else if (screenshot)
+        window.resize(1600, 950);
+    else
+        window.fitToScreen();
+    window.setFontSize(screenshot ? 11 : settings.value("fontSize", 11).toInt()); // fits the docks to the window too
     window.show();
-    if (!window.openScene(scene, scenePath))
+    if (!window.openScene(scene, scenePath)) {
+        std::cerr << window.lastMessage().toStdString() << "\n";
         return 2;
+    }
+    if (!screenshot)
+        window.offerRecovery();
     window.goToStage(options.stage, false);
     if (!options.panel.empty())
         window.showPanel(QString::fromStdString(options.panel));
@@ -67,16 +79,15 @@ int runOpen(int argc, char** argv, const OpenOptions& options)
         app.processEvents();
         window.renderNow();
     }
-    const QImage image = window.grab().toImage();
-    const QString target = QString::fromStdString(options.screenshot);
-    const QString temporary = target + ".tmp.png";
-    if (image.isNull() || !image.save(temporary, "PNG"))
-        throw InputError("--screenshot", "cannot write \"" + options.screenshot + "\"");
-    std::error_code error;
-    std::filesystem::rename(temporary.toStdString(), options.screenshot, error); // atomic replace
-    if (error) {
-        QFile::remove(temporary);
-        throw InputError("--screenshot", "cannot replace \"" + options.screenshot + "\": " + error.message());
+    QByteArray png;
+    QBuffer buffer(&png);
+    buffer.open(QIODevice::WriteOnly);
+    if (!window.grab().toImage().save(&buffer, "PNG"))
+        throw InputError("--screenshot", "cannot encode the window's picture");
+    try {
+        writeFileAtomically(options.screenshot, png.toStdString());
+    } catch (const InputError& e) {
+        throw InputError("--screenshot", e.reason());
     }
     return 0;
 }

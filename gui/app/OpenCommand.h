@@ -12,7 +12,7 @@ struct OpenOptions {
     std::string scene;          // empty: the built-in default scene
     int stage = 0;
     std::string screenshot;     // empty: interactive
-    int width = 1600, height = 950;
+    int width = 0, height = 0;  // 0: 1600x950 for a screenshot, else as large as that fits the screen
     std::optional<std::string> theme; // "dark" or "light"; default: the user's setting
     std::string panel;                // "matrices", "parameters" or "accuracy" (measured first): shown in front
 };

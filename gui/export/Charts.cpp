@@ -32,14 +32,14 @@ void styleAxis(vtkAxis* axis, const std::string& title, Theme theme)
     axis->GetPen()->SetColorF(c, c, c);
 }
 
-void styleLogAxis(vtkAxis* axis, const std::string& title, Theme theme, double low, double high)
+void styleLogAxis(vtkAxis* axis, const std::string& title, Theme theme, double low, double high, int maxLabels)
 {
     styleAxis(axis, title, theme);
     const int first = int(std::floor(std::log10(low))) - 1;
     const int last = int(std::ceil(std::log10(high))) + 1;
     axis->SetBehavior(vtkAxis::FIXED);
     axis->SetRange(first, last);
-    const int step = std::max(1, (last - first + 11) / 12);
+    const int step = std::max(1, (last - first + maxLabels - 1) / maxLabels);
     vtkNew<vtkDoubleArray> ticks;
     vtkNew<vtkStringArray> labels;
     for (int e = first; e <= last; e += step) {
@@ -72,16 +72,11 @@ void writeChartPng(const std::function<void(vtkContextView*)>& draw, int width, 
     view->GetRenderer()->SetBackground(bg, bg, bg);
     draw(view);
     view->GetRenderWindow()->Render();
-    const std::filesystem::path temporary = file.string() + ".tmp.png";
     try {
-        writeWindowPng(view->GetRenderWindow(), false, temporary);
-    } catch (const std::runtime_error&) {
-        throw InputError(field, "cannot write \"" + file.string() + "\"");
+        writeWindowPng(view->GetRenderWindow(), false, file);
+    } catch (const std::runtime_error& e) {
+        throw InputError(field, "cannot write \"" + file.string() + "\": " + e.what());
     }
-    std::error_code error;
-    std::filesystem::rename(temporary, file, error);
-    if (error)
-        throw InputError(field, "cannot replace \"" + file.string() + "\": " + error.message());
 }
 
 } // namespace viewpipe::gui

@@ -17,8 +17,9 @@ namespace viewpipe::gui {
 
 // VTK's charts hold points in single precision, where tiny errors (1e-50)
 // underflow: values are plotted as log10 on a linear axis, labelled in powers
-// of ten, from a decade below `low` to a decade above `high`, at most a dozen labels.
-void styleLogAxis(vtkAxis* axis, const std::string& title, Theme theme, double low, double high);
+// of ten, from a decade below `low` to a decade above `high`, at most
+// `maxLabels` labels (fewer on a short axis, where they would run together).
+void styleLogAxis(vtkAxis* axis, const std::string& title, Theme theme, double low, double high, int maxLabels = 12);
 
 // A linear axis: title and labels in the theme's colors.
 void styleAxis(vtkAxis* axis, const std::string& title, Theme theme);

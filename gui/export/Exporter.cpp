@@ -44,18 +44,8 @@ constexpr double kHoldSeconds = 0.6; // the animation rests this long at each st
 
 struct Cancelled {};
 
-void writeText(const fs::path& file, const std::string& text)
-{
-    std::ofstream out(file, std::ios::binary);
-    out << text;
-    out.flush();
-    if (!out)
-        throw std::runtime_error("cannot write " + file.string() + " (disk full?)");
-}
-
-} // namespace
-
-void writeWindowPng(vtkRenderWindow* window, bool transparent, const fs::path& file)
+// The window's picture encoded as PNG.
+std::string windowPng(vtkRenderWindow* window, bool transparent)
 {
     vtkNew<vtkWindowToImageFilter> grab;
     grab->SetInput(window);
@@ -65,12 +55,20 @@ void writeWindowPng(vtkRenderWindow* window, bool transparent, const fs::path& f
     grab->Update();
     vtkNew<vtkPNGWriter> writer;
     writer->SetInputConnection(grab->GetOutputPort());
-    writer->SetFileName(file.c_str());
+    writer->WriteToMemoryOn();
     writer->Write();
-    std::error_code error;
-    if (writer->GetErrorCode() != vtkErrorCode::NoError || fs::file_size(file, error) == 0 || error)
-        throw std::runtime_error("cannot write " + file.string() + " (" +
+    vtkUnsignedCharArray* bytes = writer->GetResult();
+    if (writer->GetErrorCode() != vtkErrorCode::NoError || !bytes || bytes->GetNumberOfValues() == 0)
+        throw std::runtime_error(std::string("cannot encode the picture as PNG (") +
                                  vtkErrorCode::GetStringFromErrorCode(writer->GetErrorCode()) + ")");
+    return {reinterpret_cast<const char*>(bytes->GetPointer(0)), std::size_t(bytes->GetNumberOfValues())};
+}
+
+} // namespace
+
+void writeWindowPng(vtkRenderWindow* window, bool transparent, const fs::path& file)
+{
+    writeFileAtomically(file, windowPng(window, transparent));
 }
 
 namespace {
@@ -102,19 +100,13 @@ void writeVector(vtkRenderWindow* window, ScenePainter& painter, const fs::path&
 
     painter.setTextVisible(false);
     window->Render();
-    vtkNew<vtkWindowToImageFilter> grab;
-    grab->SetInput(window);
-    grab->ReadFrontBufferOff();
-    vtkNew<vtkPNGWriter> png;
-    png->SetInputConnection(grab->GetOutputPort());
-    png->WriteToMemoryOn();
-    png->Write();
+    const std::string png = windowPng(window, false);
     painter.setTextVisible(true);
     window->Render();
-    vtkUnsignedCharArray* bytes = png->GetResult();
-    std::string encoded(std::size_t(bytes->GetNumberOfValues()) * 4 / 3 + 8, '\0');
-    const unsigned long length = vtkBase64Utilities::Encode(
-        bytes->GetPointer(0), bytes->GetNumberOfValues(), reinterpret_cast<unsigned char*>(encoded.data()), 0);
+    std::string encoded(png.size() * 4 / 3 + 8, '\0');
+    const unsigned long length =
+        vtkBase64Utilities::Encode(reinterpret_cast<const unsigned char*>(png.data()), vtkIdType(png.size()),
+                                   reinterpret_cast<unsigned char*>(encoded.data()), 0);
     encoded.resize(length);
 
     std::ifstream in(file);
@@ -125,7 +117,7 @@ void writeVector(vtkRenderWindow* window, ScenePainter& painter, const fs::path&
     const int* size = window->GetSize();
     svg.insert(group + 3, "\n<image x=\"0\" y=\"0\" width=\"" + std::to_string(size[0]) + "\" height=\"" +
                               std::to_string(size[1]) + "\" xlink:href=\"data:image/png;base64," + encoded + "\"/>");
-    writeText(file, svg);
+    writeFileAtomically(file, svg);
 }
 
 // Runs a program with arguments (no shell); returns its exit status.
@@ -236,13 +228,9 @@ void exportSheet(const Scene& scene, const fs::path& file, int width, int height
     for (vtkRenderer* renderer : renderers)
         renderer->ResetCameraClippingRange();
     window->Render();
-    const fs::path temporary = file.string() + ".tmp-" + std::to_string(::getpid()) + ".png";
     try {
-        writeWindowPng(window, false, temporary);
-        fs::rename(temporary, file);
+        writeWindowPng(window, false, file);
     } catch (const std::exception& e) {
-        std::error_code ignored;
-        fs::remove(temporary, ignored);
         throw InputError("--out", std::string("cannot write the sheet: ") + e.what());
     }
 }
@@ -384,13 +372,13 @@ std::vector<fs::path> exportStages(const Scene& scene, const ExportOptions& opti
         }
 
         step("matrices.tex");
-        writeText(temporary / "matrices.tex", cli::matricesLatex(scene, options.digits));
+        writeFileAtomically(temporary / "matrices.tex", cli::matricesLatex(scene, options.digits));
         if (const auto& depth = painter.effectOutcomes().depth) {
             step("depth-resolution.png");
             writeDepthPlot(pipeline, depth->options, temporary / "depth-resolution.png", options.theme);
         }
         step("matrices.json");
-        writeText(temporary / "matrices.json", cli::pipelineJson(scene, cli::PrecisionChoice{}, painter.effectOutcomes()).dump(2) + "\n");
+        writeFileAtomically(temporary / "matrices.json", cli::pipelineJson(scene, cli::PrecisionChoice{}, painter.effectOutcomes()).dump(2) + "\n");
 
         if (options.animate) {
             const fs::path frames = temporary / "frames";

@@ -1,0 +1,62 @@
+#pragma once
+
+// What the app's GUI tests share: a main window shown, active and on a scene,
+// closed without the "save changes?" prompt, and the test program's main().
+
+#include <QApplication>
+#include <QStandardPaths>
+#include <QSurfaceFormat>
+#include <QVTKOpenGLNativeWidget.h>
+#include <QtTest>
+
+#include <functional>
+#if defined(__SANITIZE_ADDRESS__)
+#include <sanitizer/lsan_interface.h>
+#endif
+#include <memory>
+
+#include "app/MainWindow.h"
+
+// A window of the given size, shown and active, with `scene` open; null (and
+// the test failed) when any of that did not happen.
+inline std::unique_ptr<viewpipe::gui::MainWindow> openWindow(const QString& scene, QSize size = {1280, 800})
+{
+    auto window = std::make_unique<viewpipe::gui::MainWindow>();
+    window->setPopupsEnabled(false);
+    window->resize(size);
+    window->show();
+    window->activateWindow();
+    if (!QTest::qWaitForWindowActive(window.get()) || !window->openScene(scene)) {
+        QTest::qFail(qPrintable("cannot open a window on " + scene), __FILE__, __LINE__);
+        return nullptr;
+    }
+    return window;
+}
+
+// Closes a window as a test ends, without asking about unsaved changes.
+inline void closeWindow(std::unique_ptr<viewpipe::gui::MainWindow>& window)
+{
+    if (window)
+        window->document()->undoStack()->setClean();
+    window.reset();
+}
+
+// The body of a GUI test's main(): VTK's OpenGL format, settings and data
+// apart from the user's; `first` runs once the application exists.
+template <class Test> int runAppTests(int argc, char** argv, const std::function<void()>& first = {})
+{
+    QSurfaceFormat::setDefaultFormat(QVTKOpenGLNativeWidget::defaultFormat());
+    QStandardPaths::setTestModeEnabled(true);
+    QApplication app(argc, argv);
+    if (first)
+        first();
+    Test test;
+    const int failed = QTest::qExec(&test, argc, argv);
+#if defined(__SANITIZE_ADDRESS__)
+    // Leaks are checked here, while every library is loaded: at exit, VTK's
+    // are reported from unloaded modules that tests/sanitizers/lsan.supp cannot name.
+    if (__lsan_do_recoverable_leak_check())
+        return 1;
+#endif
+    return failed;
+}

@@ -1,0 +1,371 @@
+// The app as a person uses it for an afternoon: menus and keys, scene after
+// scene, themes after every panel has run, a small screen with larger text,
+// and a crash that must not lose the unsaved edits.
+
+#include <QAbstractButton>
+#include <QApplication>
+#include <QDirIterator>
+#include <QDockWidget>
+#include <QListWidget>
+#include <QMenu>
+#include <QMenuBar>
+#include <QMimeData>
+#include <QScreen>
+#include <QMessageBox>
+#include <QProcess>
+#include <QSignalSpy>
+#include <QStandardPaths>
+#include <QSurfaceFormat>
+#include <QTabBar>
+#include <QTableWidget>
+#include <QTimer>
+#include <QVTKOpenGLNativeWidget.h>
+#include <QtTest>
+
+#include <csignal>
+
+#include "app_window.h"
+#include "files.h"
+#include "app/AccuracyPanel.h"
+#include "app/Autosave.h"
+#include "app/MainWindow.h"
+#include "app/MatrixPanel.h"
+
+using namespace viewpipe;
+using namespace viewpipe::gui;
+
+namespace {
+
+const QString kHouse = QString(VIEWPIPE_DATA_DIR) + "/scenes/house.json";
+const QString kCorridor = QString(VIEWPIPE_DATA_DIR) + "/scenes/depth-corridor.json";
+
+QAction* actionNamed(QWidget& window, const QString& text)
+{
+    for (QAction* action : window.findChildren<QAction*>())
+        if (action->text().remove('&') == text)
+            return action;
+    qFatal("no action \"%s\"", qPrintable(text));
+}
+
+// What the world view's title says of the stage shown: "World coordinates" or "After SYMBOL".
+QString expectedCaption(MainWindow& window, int stage)
+{
+    if (stage == 0)
+        return "World coordinates";
+    return "After " + QString::fromStdString(window.document()->pipeline().stages[std::size_t(stage - 1)].symbol);
+}
+
+QImage worldPicture(MainWindow& window)
+{
+    window.renderNow();
+    return window.findChild<QVTKOpenGLNativeWidget*>("worldView")->grabFramebuffer();
+}
+
+// A camera edit through the document, as the parameter panel makes it.
+void moveBackPlane(MainWindow& window, double back)
+{
+    auto view = std::get<foley::ViewSpec<double>>(window.document()->scene().camera);
+    view.back = back;
+    window.document()->setCamera(view, "Edit view.back");
+}
+
+// Answers the next modal question box by clicking the button with `text`.
+void answerNextQuestion(const QString& text)
+{
+    QTimer::singleShot(200, [text] {
+        auto* box = qobject_cast<QMessageBox*>(QApplication::activeModalWidget());
+        if (!box)
+            return answerNextQuestion(text); // not up yet
+        for (QAbstractButton* button : box->buttons())
+            if (button->text() == text)
+                return button->click();
+        qFatal("no button \"%s\"", qPrintable(text));
+    });
+}
+
+// Run in a child process: edits the house, lets autosave write it, then dies
+// as a crash would (SIGKILL: no destructor, no clean-up).
+[[noreturn]] void editThenCrash()
+{
+    MainWindow window;
+    window.show();
+    if (!window.openScene(kHouse))
+        std::_Exit(3);
+    moveBackPlane(window, -25);
+    window.autosave()->saveNow();
+    std::raise(SIGKILL);
+    std::_Exit(4);
+}
+
+} // namespace
+
+class SessionTest : public QObject {
+    Q_OBJECT
+
+private slots:
+    void init()
+    {
+        window_ = openWindow(kHouse);
+        QVERIFY(window_);
+    }
+
+    void cleanup() { closeWindow(window_); }
+
+    // Found: Accuracy, measure, then a theme: std::bad_alloc, the app gone (a
+    // redraw replaced the result it was reading).
+    void themeAfterAccuracyKeepsTheResults()
+    {
+        MainWindow& w = *window_;
+        QSignalSpy done(w.accuracy(), &AccuracyPanel::finished);
+        w.accuracy()->measure(w.document()->scene(), 2000);
+        QVERIFY(done.wait(120000));
+        const QString doubleRow = w.accuracy()->table()->item(1, 5)->text();
+        for (const QString theme : {"Light Theme (slides, print)", "Dark Theme (screen)", "Light Theme (slides, print)"})
+            actionNamed(w, theme)->trigger();
+        QCOMPARE(w.accuracy()->table()->rowCount(), 6);
+        QCOMPARE(w.accuracy()->table()->item(1, 5)->text(), doubleRow);
+    }
+
+    // Each theme after each panel has shown something.
+    void everyThemeAfterEveryPanel()
+    {
+        MainWindow& w = *window_;
+        QVERIFY(w.openScene(kCorridor));
+        QSignalSpy done(w.accuracy(), &AccuracyPanel::finished);
+        w.accuracy()->measure(w.document()->scene(), 2000);
+        QVERIFY(done.wait(120000));
+        w.goToStage(2, false);
+        for (const QString panel : {"stages", "matrices", "parameters", "accuracy", "depth"}) {
+            w.showPanel(panel);
+            for (const QString theme : {"Light Theme (slides, print)", "Dark Theme (screen)"}) {
+                actionNamed(w, theme)->trigger();
+                QApplication::processEvents();
+            }
+        }
+        QCOMPARE(w.stage(), 2);
+        QCOMPARE(w.accuracy()->table()->rowCount(), 6);
+    }
+
+    // Scene after scene, every built-in one: each opens at the world stage with its own title.
+    void everyPresetAfterAnother()
+    {
+        MainWindow& w = *window_;
+        QDirIterator files(QString(VIEWPIPE_DATA_DIR) + "/scenes", {"*.json"}, QDir::Files,
+                           QDirIterator::Subdirectories);
+        int opened = 0;
+        while (files.hasNext()) {
+            const QString path = files.next();
+            w.goToStage(w.stageCount(), false);
+            QVERIFY2(w.openScene(path), qPrintable(path + ": " + w.lastMessage()));
+            QCOMPARE(w.stage(), 0);
+            QCOMPARE(w.stageList()->count(), w.stageCount() + 1);
+            QVERIFY2(w.windowTitle().startsWith(QFileInfo(path).fileName() + " "), qPrintable(w.windowTitle()));
+            QCOMPARE(QString::fromStdString(w.painter()->worldCaption()), expectedCaption(w, 0));
+            ++opened;
+        }
+        QVERIFY(opened >= 20);
+    }
+
+    // Found: after opening a scene while on stage k, and after Stop during
+    // Play, the title named another stage than the list and the matrices.
+    void titleNamesTheStageShown()
+    {
+        MainWindow& w = *window_;
+        w.goToStage(3, false);
+        QCOMPARE(QString::fromStdString(w.painter()->worldCaption()), expectedCaption(w, 3));
+        QVERIFY(w.openScene(kCorridor));
+        QCOMPARE(w.stageList()->currentRow(), 0);
+        QCOMPARE(QString::fromStdString(w.painter()->worldCaption()), expectedCaption(w, 0));
+
+        w.play();
+        QTRY_VERIFY_WITH_TIMEOUT(w.stage() >= 1, 10000);
+        w.findChild<QAbstractButton*>("playButton")->click(); // Stop
+        QVERIFY(!w.isAnimating());
+        QCOMPARE(w.stageList()->currentRow(), w.stage());
+        QCOMPARE(QString::fromStdString(w.painter()->worldCaption()), expectedCaption(w, w.stage()));
+        QVERIFY(w.matrices()->stageText().contains(
+            QString::fromStdString(w.document()->pipeline().stages[std::size_t(w.stage() - 1)].symbol)));
+    }
+
+    // Found: a traced vertex and the Accuracy results carried into the next scene.
+    void nextSceneKeepsNothingOfThePrevious()
+    {
+        MainWindow& w = *window_;
+        QSignalSpy done(w.accuracy(), &AccuracyPanel::finished);
+        w.accuracy()->measure(w.document()->scene(), 2000);
+        QVERIFY(done.wait(120000));
+        const QImage untraced = worldPicture(w);
+        w.traceVertex(Vec3<double>(16, 10, 54));
+        QVERIFY(w.matrices()->traceText().contains("Traced vertex"));
+        QVERIFY2(worldPicture(w) != untraced, "the traced vertex is marked in the world view");
+        w.goToStage(3, false);
+        QVERIFY(w.matrices()->traceText().contains("Traced vertex"));
+        w.goToStage(0, false);
+
+        QVERIFY(w.openScene(kHouse));
+        QVERIFY(!w.matrices()->traceText().contains("Traced vertex"));
+        QCOMPARE(worldPicture(w), untraced);
+        QVERIFY(!w.accuracy()->hasResult());
+        QCOMPARE(w.accuracy()->table()->rowCount(), 0);
+
+        // A measurement still running when the scene changes is abandoned, not shown.
+        w.accuracy()->measure(w.document()->scene(), 2000);
+        QVERIFY(w.openScene(kHouse));
+        QTest::qWait(300);
+        QVERIFY(!w.accuracy()->hasResult());
+        QVERIFY(!w.accuracy()->isRunning());
+    }
+
+    // Found: Ctrl+Y did nothing.
+    void undoAndRedoByKeyboard()
+    {
+        MainWindow& w = *window_;
+        const double back = std::get<foley::ViewSpec<double>>(w.document()->scene().camera).back;
+        moveBackPlane(w, -25);
+        auto currentBack = [&w] { return std::get<foley::ViewSpec<double>>(w.document()->scene().camera).back; };
+        QTest::keyClick(&w, Qt::Key_Z, Qt::ControlModifier);
+        QCOMPARE(currentBack(), back);
+        QTest::keyClick(&w, Qt::Key_Y, Qt::ControlModifier);
+        QCOMPARE(currentBack(), -25.0);
+        QTest::keyClick(&w, Qt::Key_Z, Qt::ControlModifier);
+        QTest::keyClick(&w, Qt::Key_Z, Qt::ControlModifier | Qt::ShiftModifier);
+        QCOMPARE(currentBack(), -25.0);
+    }
+
+    // Found: at 1280x720 the stepper's buttons, the Matrices dock and the
+    // tabs were off screen, and Larger Text cut texts and buttons.
+    void everyControlFitsAt1280x720WithLargerText()
+    {
+        MainWindow& w = *window_;
+        w.resize(1280, 720);
+        for (int i = 0; i < 3; ++i)
+            QTest::keyClick(&w, Qt::Key_Plus, Qt::ControlModifier);
+        QApplication::processEvents();
+        QVERIFY(w.width() <= 1280 && w.height() <= 720);
+        const QRect inside = w.rect();
+        auto check = [&](QWidget* widget) {
+            if (!widget->isVisible())
+                return;
+            const QString name = widget->objectName() + " " + widget->metaObject()->className();
+            const QRect box(widget->mapTo(&w, QPoint(0, 0)), widget->size());
+            QVERIFY2(inside.contains(box), qPrintable(name));
+            // Not cut by a scroll area or a splitter: all of it can be seen.
+            QVERIFY2(widget->visibleRegion().boundingRect() == widget->rect(), qPrintable(name + " is cut"));
+            QVERIFY2(widget->width() >= widget->minimumSizeHint().width(), qPrintable(name + " is narrower than its text"));
+        };
+        for (QAbstractButton* button : w.findChildren<QAbstractButton*>("playButton"))
+            check(button);
+        for (const char* name : {"previousButton", "nextButton", "stageSlider"})
+            check(w.findChild<QWidget*>(name));
+        for (QTabBar* tabs : w.findChildren<QTabBar*>()) {
+            check(tabs);
+            // Its size hint is what its tabs need with their titles in full.
+            QVERIFY2(!tabs->isVisible() || tabs->width() >= tabs->sizeHint().width(),
+                     qPrintable(QString("the tabs' titles are elided: %1 < %2").arg(tabs->width()).arg(tabs->sizeHint().width())));
+        }
+        // The stage texts wrap: none runs past the list's right edge.
+        QListWidget* stages = w.stageList();
+        for (int i = 0; i < stages->count(); ++i)
+            QVERIFY2(stages->visualItemRect(stages->item(i)).right() <= stages->viewport()->width(),
+                     qPrintable(stages->item(i)->text()));
+        for (QDockWidget* dock : w.findChildren<QDockWidget*>())
+            if (!dock->isFloating() && !dock->visibleRegion().isEmpty())
+                check(dock);
+    }
+
+    // Found: malformed meshes crashed the app on import and on drop.
+    void hostileMeshesAreRefusedOnImportAndDrop()
+    {
+        MainWindow& w = *window_;
+        const QString truncated = QDir::temp().filePath("viewpipe-session-truncated.ply");
+        QVERIFY(writeFile(truncated, "ply\nformat binary_little_endian 1.0\nelement vertex 8\nproperty float x\n"
+                                     "property float y\nproperty float z\nelement face 6\n"
+                                     "property list uchar int vertex_indices\nend_header\n\x01\x02"));
+        const QString outOfRange = QDir::temp().filePath("viewpipe-session-out-of-range.obj");
+        QVERIFY(writeFile(outOfRange, "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 9\n"));
+        const std::string before = sceneToJson(w.document()->scene());
+        QVERIFY(!w.importMesh(truncated));
+        QVERIFY2(w.lastMessage().contains("too short"), qPrintable(w.lastMessage()));
+        QMimeData dropped;
+        dropped.setUrls({QUrl::fromLocalFile(outOfRange)});
+        // As a drag arrives: it enters the window, then drops.
+        QDragEnterEvent enter(QPoint(100, 100), Qt::CopyAction, &dropped, Qt::LeftButton, Qt::NoModifier);
+        QApplication::sendEvent(&w, &enter);
+        QVERIFY(enter.isAccepted());
+        QDropEvent drop(QPointF(100, 100), Qt::CopyAction, &dropped, Qt::LeftButton, Qt::NoModifier);
+        QApplication::sendEvent(&w, &drop);
+        QVERIFY2(w.lastMessage().contains("out of range"), qPrintable(w.lastMessage()));
+        QCOMPARE(sceneToJson(w.document()->scene()), before);
+        QCOMPARE(w.document()->undoStack()->count(), 0);
+    }
+
+    // A new window fits the screen it opens on.
+    void windowFitsTheScreen()
+    {
+        MainWindow window;
+        const QSize screen = QGuiApplication::primaryScreen()->availableGeometry().size();
+        QVERIFY(window.width() <= screen.width() && window.height() <= screen.height());
+    }
+
+    // Nothing lost: edits survive a killed process and are offered at the next start.
+    void editsSurviveACrash()
+    {
+        for (const AutosavedScene& orphan : Autosave::orphans())
+            Autosave::discard(orphan);
+        QProcess child;
+        child.start(QCoreApplication::applicationFilePath(), {"--edit-then-crash"});
+        QVERIFY(child.waitForFinished(60000));
+        QCOMPARE(child.exitStatus(), QProcess::CrashExit);
+
+        const std::vector<AutosavedScene> orphans = Autosave::orphans();
+        QCOMPARE(int(orphans.size()), 1);
+        QCOMPARE(orphans.front().sourcePath, kHouse);
+
+        MainWindow& w = *window_;
+        answerNextQuestion("Recover");
+        QVERIFY(w.offerRecovery());
+        QCOMPARE(std::get<foley::ViewSpec<double>>(w.document()->scene().camera).back, -25.0);
+        QCOMPARE(w.document()->filePath(), kHouse);
+        QVERIFY(w.document()->isModified());
+        QVERIFY(w.windowTitle().contains("*"));
+        w.document()->undoStack()->undo(); // back to the file as saved
+        QCOMPARE(std::get<foley::ViewSpec<double>>(w.document()->scene().camera).back,
+                 std::get<foley::ViewSpec<double>>(loadScene(kHouse.toStdString()).camera).back);
+        QVERIFY(Autosave::orphans().empty());
+    }
+
+    // A running session's autosave is not offered to another; a saved or closed one leaves nothing.
+    void autosaveFollowsTheDocument()
+    {
+        MainWindow& w = *window_;
+        moveBackPlane(w, -30);
+        w.autosave()->saveNow();
+        const QString autosaved = w.autosave()->scenePath();
+        QVERIFY(QFile::exists(autosaved));
+        QCOMPARE(std::get<foley::ViewSpec<double>>(loadScene(autosaved.toStdString()).camera).back, -30.0);
+        QVERIFY(Autosave::orphans().empty());
+        w.document()->undoStack()->undo(); // back to the saved state: nothing to recover
+        QVERIFY(!QFile::exists(autosaved));
+        moveBackPlane(w, -31);
+        w.autosave()->saveNow();
+        QVERIFY(QFile::exists(w.autosave()->scenePath()));
+        const QString second = w.autosave()->scenePath();
+        w.document()->undoStack()->setClean();
+        window_.reset();
+        QVERIFY(!QFile::exists(second));
+        window_ = std::make_unique<MainWindow>();
+    }
+
+private:
+    std::unique_ptr<MainWindow> window_;
+};
+
+int main(int argc, char** argv)
+{
+    return runAppTests<SessionTest>(argc, argv, [&] {
+        if (argc > 1 && QString(argv[1]) == "--edit-then-crash")
+            editThenCrash();
+    });
+}
+
+#include "session_test.moc"
