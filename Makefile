@@ -22,4 +22,4 @@ test: build
 	@scripts/test.sh
 
 clean:
-	rm -rf build build-dev
+	rm -rf build build-dev build-asan build-fuzz

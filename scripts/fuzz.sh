@@ -9,6 +9,7 @@
 # folder and the targets appended (e.g. a wrapper that serializes builds).
 set -euo pipefail
 cd "$(dirname "$0")/.."
+scripts/install-deps.sh --test
 seconds=${1:-60}
 root=$PWD
 build=$root/build-fuzz

@@ -6,6 +6,7 @@
 #include <charconv>
 #include <cmath>
 #include <cstdint>
+#include <new>
 #include <cstring>
 #include <fstream>
 #include <limits>
@@ -848,10 +849,16 @@ MeshFormat meshFormatOf(const std::filesystem::path& file, const std::string& fi
 PolygonMesh parseMesh(std::string_view bytes, MeshFormat format, const std::string& field)
 {
     PolygonMesh mesh;
-    switch (format) {
-    case MeshFormat::Obj: mesh = parseObj(bytes, field); break;
-    case MeshFormat::Ply: mesh = parsePly(bytes, field); break;
-    case MeshFormat::Stl: mesh = parseStl(bytes, field); break;
+    try {
+        switch (format) {
+        case MeshFormat::Obj: mesh = parseObj(bytes, field); break;
+        case MeshFormat::Ply: mesh = parsePly(bytes, field); break;
+        case MeshFormat::Stl: mesh = parseStl(bytes, field); break;
+        }
+    } catch (const Truncated&) {
+        throw InputError(field, "the file ends before its data does");
+    } catch (const std::bad_alloc&) {
+        throw InputError(field, "the mesh is too large to hold in memory");
     }
     if (mesh.faces.empty())
         throw InputError(field, "the file holds no faces");
@@ -861,6 +868,14 @@ PolygonMesh parseMesh(std::string_view bytes, MeshFormat format, const std::stri
 PolygonMesh readMeshFile(const std::filesystem::path& file, const std::string& field)
 {
     const MeshFormat format = meshFormatOf(file, field);
+    // A FIFO or a device named *.obj would block or never end.
+    std::error_code error;
+    if (std::filesystem::exists(file, error) && !std::filesystem::is_regular_file(file, error))
+        throw InputError(field, "cannot read \"" + file.string() + "\": not a regular file");
+    constexpr std::uintmax_t kMaxBytes = std::uintmax_t(2) << 30;
+    const std::uintmax_t size = std::filesystem::file_size(file, error);
+    if (!error && size > kMaxBytes)
+        throw InputError(field, "\"" + file.string() + "\" is larger than 2 GiB");
     std::ifstream in(file, std::ios::binary);
     if (!in)
         throw InputError(field, "cannot read \"" + file.string() + "\": " + std::strerror(errno));

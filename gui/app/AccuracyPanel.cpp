@@ -94,7 +94,8 @@ void AccuracyPanel::measure(const Scene& scene, std::size_t vertices)
     try {
         objectPoints = objectVertices(scene);
     } catch (const InputError& e) {
-        status_->setText(QString::fromStdString(e.what()));
+        finish(QString::fromStdString(e.what()));
+        return;
     }
     // The worker owns copies of everything it reads; results come back queued.
     worker_ = std::thread([this, scene, objectPoints, vertices, cancel = cancel_] {
@@ -114,8 +115,13 @@ void AccuracyPanel::measure(const Scene& scene, std::size_t vertices)
                 return true;
             });
         } catch (const std::exception& e) {
+            mpfr_free_cache2(MPFR_FREE_LOCAL_CACHE);
             const QString message = QString::fromStdString(e.what());
-            QMetaObject::invokeMethod(this, [this, message] { status_->setText(message); }, Qt::QueuedConnection);
+            QMetaObject::invokeMethod(this, [this, message, cancel] {
+                if (!*cancel)
+                    finish(message);
+            }, Qt::QueuedConnection);
+            return;
         }
         mpfr_free_cache2(MPFR_FREE_LOCAL_CACHE); // this thread's constants (pi …) die with it
         if (*cancel)
@@ -132,6 +138,17 @@ void AccuracyPanel::measure(const Scene& scene, std::size_t vertices)
             emit finished();
         }, Qt::QueuedConnection);
     });
+}
+
+void AccuracyPanel::finish(const QString& failure)
+{
+    if (worker_.joinable())
+        worker_.join();
+    running_ = false;
+    button_->setEnabled(true);
+    progress_->hide();
+    status_->setText(failure);
+    emit finished();
 }
 
 void AccuracyPanel::showResult(cli::BenchResult result)

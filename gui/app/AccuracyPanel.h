@@ -45,6 +45,8 @@ signals:
 
 private:
     void showResult(cli::BenchResult result);
+    // Ends a measurement that failed, saying why; the previous results stay.
+    void finish(const QString& failure);
     void drawResult();
     void stop();
 

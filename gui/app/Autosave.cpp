@@ -53,6 +53,10 @@ void Autosave::onChanged()
 
 void Autosave::saveNow()
 {
+    if (!document_->isModified()) { // saved, undone or another scene opened since the edit
+        remove();
+        return;
+    }
     if (!pending_)
         return;
     if (!lock_) {
@@ -74,8 +78,8 @@ void Autosave::saveNow()
         saveScene(document_->scene(), scenePath_.toStdString());
         pending_ = false;
         timer_.stop();
-    } catch (const InputError&) {
-        // A full disk must not interrupt the lecture: the next edit tries again.
+    } catch (const std::exception&) {
+        // A full disk must not interrupt the lecture: the timer tries again.
     }
 }
 

@@ -27,6 +27,11 @@ Document::Document(QObject* parent) : QObject(parent)
     connect(&undo_, &QUndoStack::cleanChanged, this, &Document::fileChanged);
 }
 
+Document::~Document()
+{
+    undo_.blockSignals(true);
+}
+
 void Document::load(const Scene& scene, const QString& path)
 {
     Pipeline<double> pipeline = buildPipeline(scene.camera, scene.effects);

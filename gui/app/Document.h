@@ -16,6 +16,8 @@ class Document : public QObject {
     Q_OBJECT
 public:
     explicit Document(QObject* parent = nullptr);
+    // Silent: the undo stack's clearing must not reach a window being destroyed.
+    ~Document() override;
 
     const Scene& scene() const { return scene_; }
     const Pipeline<double>& pipeline() const { return pipeline_; }

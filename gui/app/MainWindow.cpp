@@ -27,6 +27,7 @@
 #include <QStatusBar>
 #include <QStyle>
 #include <QTabBar>
+#include <QTimer>
 #include <QVariantAnimation>
 #include <QVBoxLayout>
 
@@ -214,7 +215,7 @@ void MainWindow::buildDocks()
         addDockWidget(area, d);
         return d;
     };
-    QDockWidget* stagesDock = dock(tr("Stages"), "stagesDock", stepper, Qt::LeftDockWidgetArea);
+    dock(tr("Stages"), "stagesDock", stepper, Qt::LeftDockWidgetArea);
     matrices_ = new MatrixPanel;
     QDockWidget* matrixDock = dock(tr("Matrices"), "matricesDock", matrices_, Qt::RightDockWidgetArea);
     parameters_ = new ParameterPanel;
@@ -484,6 +485,7 @@ bool MainWindow::openScene(const Scene& scene, const QString& path)
             const QSignalBlocker drawn(document_); // the picture is made: only the widgets follow
             document_->load(scene, path);
         }
+        autosave_->saveNow(); // the previous scene's unsaved edits are not this one's to recover
         // Nothing of the previous scene stays: its traced vertex and measurements are not this one's.
         traceVertex(std::nullopt);
         accuracy_->clear();
@@ -541,7 +543,7 @@ bool MainWindow::offerRecovery()
         document_->markRecovered(saved);
         Autosave::discard(newest);
         return true;
-    } catch (const InputError& e) {
+    } catch (const std::exception& e) {
         showMessage(tr("Cannot recover %1: %2").arg(name, QString::fromStdString(e.what())));
         return false;
     }
@@ -554,7 +556,7 @@ bool MainWindow::saveScene(const QString& path)
         addRecent(QFileInfo(path).absoluteFilePath());
         statusBar()->showMessage(tr("Saved %1").arg(path), 4000);
         return true;
-    } catch (const InputError& e) {
+    } catch (const std::exception& e) {
         showMessage(tr("Cannot save: %1").arg(QString::fromStdString(e.what())));
         return false;
     }
@@ -703,7 +705,8 @@ void MainWindow::setFontSize(int points)
     QApplication::setFont(font);
     painter_->setFontSize(int(std::lround(fontSize_ * 1.6)));
     QSettings().setValue("fontSize", fontSize_);
-    fitDocksToText();
+    // Once the widgets have taken the new font: the tabs' size hints follow it.
+    QTimer::singleShot(0, this, &MainWindow::fitDocksToText);
     renderNow();
 }
 

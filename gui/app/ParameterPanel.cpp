@@ -175,7 +175,7 @@ public:
             int widest = 0;
             for (int i = 0; i < count(); ++i)
                 if (const auto* box = qobject_cast<const QLineEdit*>(itemAt(i)->widget()))
-                    widest = std::max(widest, wholeTextWidth(box));
+                    widest = std::max({widest, wholeTextWidth(box), box->minimumWidth()});
             const int sideBySide = count() * widest + spacing() * (count() - 1);
             // A margin before turning back, wider than a scroll bar: stacked boxes can make the dock's
             // scroll bar appear, taking that width, and side by side make it go, turning them to and fro.

@@ -45,14 +45,14 @@ enum class Element {
     Vanishing, ZFighting, Traced
 };
 
-// Reads every mesh of a scene with VTK's readers; throws InputError naming
+// Reads every mesh of a scene (the core's reader); throws InputError naming
 // "objects[k].path" for one that cannot be read.
 void checkMeshes(const Scene& scene);
 
-// Every vertex of the scene's objects, in world coordinates (meshes read with VTK).
+// Every vertex of the scene's objects, in world coordinates.
 std::vector<Vec3<double>> objectVertices(const Scene& scene);
 
-// The scene's objects as polygon meshes (meshes read with VTK), for effects.
+// The scene's objects as polygon meshes, for effects.
 std::vector<PolygonMesh> objectMeshes(const Scene& scene);
 
 // The box around them (empty for a scene without objects).
@@ -72,7 +72,7 @@ public:
     ScenePainter& operator=(const ScenePainter&) = delete;
 
     // Builds the picture of a scene. Reads its meshes (throws InputError naming
-    // "objects[k].path" for one VTK cannot read; the previous picture stays).
+    // "objects[k].path" for one that cannot be read; the previous picture stays).
     void setScene(const Scene& scene);
 
     // Shows every element through `cumulative`; the canonical volume's outline

@@ -28,7 +28,8 @@ const std::string kHouse = std::string(VIEWPIPE_DATA_DIR) + "/scenes/house.json"
 Result run(const std::string& arguments)
 {
     const std::string errFile = std::filesystem::temp_directory_path() / ("viewpipe-cli-" + std::to_string(::getpid()));
-    const std::string command = std::string(VIEWPIPE_EXE) + " " + arguments + " 2>" + errFile;
+    // A bounded run: a command that hangs fails the test instead of stopping the suite.
+    const std::string command = "timeout 120 " + std::string(VIEWPIPE_EXE) + " " + arguments + " 2>" + errFile;
     Result result;
     FILE* pipe = ::popen(command.c_str(), "r");
     std::array<char, 4096> buffer;

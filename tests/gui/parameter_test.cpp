@@ -216,7 +216,7 @@ private slots:
         for (const QString text : {"nan", "inf", "1e999", "", "1,5", "4.5.1", "0x10"}) {
             type(fieldOf(w, "view.vrp", 0), text);
             QVERIFY2(panel->errorText("view.vrp").contains(QString("\"%1\"").arg(text)) ||
-                         (text.isEmpty() && !panel->errorText("view.vrp").isEmpty()),
+                         (text.isEmpty() && panel->errorText("view.vrp").contains("is empty")),
                      qPrintable(text + " -> " + panel->errorText("view.vrp")));
             QCOMPARE(documentJson(w), accepted);
         }
