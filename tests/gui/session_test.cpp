@@ -245,7 +245,14 @@ private slots:
             QTest::keyClick(&w, Qt::Key_Plus, Qt::ControlModifier);
         QVERIFY(QApplication::font().pointSize() >= normal.pointSize() + 6);
         QTRY_VERIFY(w.width() <= 1280 && w.height() <= 720);
-        QTest::qWait(100); // the docks take their new widths once the font has reached every widget
+        // The docks take their new widths once the font has reached every widget: wait for that.
+        auto tabsFit = [&w] {
+            for (const QTabBar* tabs : w.findChildren<QTabBar*>())
+                if (tabs->isVisible() && tabs->width() < tabs->sizeHint().width())
+                    return false;
+            return true;
+        };
+        QTRY_VERIFY_WITH_TIMEOUT(tabsFit(), 10000);
         auto restore = qScopeGuard([&w, normal] { w.setFontSize(normal.pointSize()); });
         QVERIFY(w.width() <= 1280 && w.height() <= 720);
         const QRect inside = w.rect();
