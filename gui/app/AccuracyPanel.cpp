@@ -129,25 +129,22 @@ void AccuracyPanel::measure(const Scene& scene, std::size_t vertices)
         QMetaObject::invokeMethod(this, [this, result, cancel] {
             if (*cancel) // abandoned after the result was sent: it belongs to another scene
                 return;
-            if (worker_.joinable())
-                worker_.join();
-            running_ = false;
-            button_->setEnabled(true);
-            progress_->hide();
-            showResult(*result);
-            emit finished();
+            finish(*result);
         }, Qt::QueuedConnection);
     });
 }
 
-void AccuracyPanel::finish(const QString& failure)
+void AccuracyPanel::finish(const std::variant<cli::BenchResult, QString>& outcome)
 {
     if (worker_.joinable())
         worker_.join();
     running_ = false;
     button_->setEnabled(true);
     progress_->hide();
-    status_->setText(failure);
+    if (const auto* result = std::get_if<cli::BenchResult>(&outcome))
+        showResult(*result);
+    else
+        status_->setText(std::get<QString>(outcome));
     emit finished();
 }
 

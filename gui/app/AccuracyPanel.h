@@ -9,6 +9,7 @@
 #include <atomic>
 #include <memory>
 #include <thread>
+#include <variant>
 
 #include <vtkSmartPointer.h>
 
@@ -45,8 +46,8 @@ signals:
 
 private:
     void showResult(cli::BenchResult result);
-    // Ends a measurement that failed, saying why; the previous results stay.
-    void finish(const QString& failure);
+    // Ends a measurement: shows its result, or says why it failed (the previous results stay).
+    void finish(const std::variant<cli::BenchResult, QString>& outcome);
     void drawResult();
     void stop();
 

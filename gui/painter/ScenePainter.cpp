@@ -1071,18 +1071,27 @@ void ScenePainter::show(const Mat4<double>& cumulative, double canonicalOpacity)
             layer.actor->GetProperty()->SetOpacity(canonicalOpacity);
             continue;
         }
-        vtkPoints* to = layer.shown->GetPoints();
-        const bool visible = projectPoints(layer.original->GetPoints(), cumulative,
-                                           [to](vtkIdType i, const Vec3<double>& q) { to->SetPoint(i, q.data()); });
-        to->Modified();
-        layer.actor->SetVisibility(visible);
+        placeLayer(layer, cumulative);
     }
-    for (Label& label : labels_) {
-        const std::optional<Vec3<double>> q = project(cumulative, label.world);
-        label.actor->SetVisibility(q.has_value());
-        if (q)
-            label.actor->SetPosition(q->x(), q->y(), q->z());
-    }
+    for (Label& label : labels_)
+        placeLabel(label, cumulative);
+}
+
+void ScenePainter::placeLayer(Layer& layer, const Mat4<double>& cumulative)
+{
+    vtkPoints* to = layer.shown->GetPoints();
+    const bool visible = projectPoints(layer.original->GetPoints(), cumulative,
+                                       [to](vtkIdType i, const Vec3<double>& q) { to->SetPoint(i, q.data()); });
+    to->Modified();
+    layer.actor->SetVisibility(visible);
+}
+
+void ScenePainter::placeLabel(Label& label, const Mat4<double>& cumulative)
+{
+    const std::optional<Vec3<double>> q = project(cumulative, label.world);
+    label.actor->SetVisibility(q.has_value());
+    if (q)
+        label.actor->SetPosition(q->x(), q->y(), q->z());
 }
 
 ScenePainter::Framing ScenePainter::framingOf(const std::vector<Mat4<double>>& cumulatives, bool withCanonical) const
@@ -1204,7 +1213,9 @@ void ScenePainter::markTraced(const std::optional<Vec3<double>>& point)
     addLayer(Element::Traced, sphere(*point, 2.5 * markerSize_), true, 1.0);
     addLabel(Element::Traced, "traced", *point);
     applyStyle();
-    show(shownMatrix_, canonicalOpacity_);
+    // Only the new marker needs placing at the stage shown: the scene's layers are there already.
+    placeLayer(layers_.back(), shownMatrix_);
+    placeLabel(labels_.back(), shownMatrix_);
 }
 
 std::string ScenePainter::worldCaption() const

@@ -138,6 +138,9 @@ private:
     void addLayer(Element element, vtkSmartPointer<vtkPolyData> geometry, bool surface, double opacity);
     void addLabel(Element element, const std::string& text, const Vec3<double>& world);
     void applyStyle();
+    // Shows a layer's points or a label's anchor through the cumulative matrix (hidden without an image).
+    void placeLayer(Layer& layer, const Mat4<double>& cumulative);
+    void placeLabel(Label& label, const Mat4<double>& cumulative);
     // Fills a view's legend with its entries, at the painter's font size, in
     // the view's top-right (below the caption) or bottom-right corner.
     void fillLegend(vtkLegendBoxActor* legend, vtkRenderer* renderer, const std::vector<LegendEntry>& entries,
