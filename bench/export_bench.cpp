@@ -48,8 +48,9 @@ void ViewpipeExport(benchmark::State& state)
     options.width = 1920;
     options.height = 1080;
     const std::atomic<bool> cancel{false};
+    const auto scene = evaluateScene(house());
     for (auto _ : state)
-        benchmark::DoNotOptimize(gui::exportStages(house(), options, {}, cancel));
+        benchmark::DoNotOptimize(gui::exportStages(scene, options, {}, cancel));
     fs::remove_all(out);
 }
 
@@ -64,7 +65,7 @@ void BareVtk(benchmark::State& state)
     window->AddRenderer(renderer);
     gui::ScenePainter painter(renderer, nullptr); // only builds the same props
     painter.setTheme(gui::Theme::Light);
-    painter.setScene(house());
+    painter.setScene(evaluateScene(house()));
     window->Render();
     painter.resetView();
     const std::vector<Stage<double>> stages = buildPipeline(house().camera).stages;

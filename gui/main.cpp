@@ -213,7 +213,7 @@ int main(int argc, char** argv)
             const Scene scene = loadScene(options.scene);
             const auto [width, height] = parseSize(sheetSize, "--size");
             const gui::VirtualDisplay display;
-            gui::exportSheet(scene, sheetOut, width, height, sheetTheme == "dark" ? gui::Theme::Dark : gui::Theme::Light);
+            gui::exportSheet(*evaluateScene(scene), sheetOut, width, height, sheetTheme == "dark" ? gui::Theme::Dark : gui::Theme::Light);
             return 0;
         });
 
@@ -243,7 +243,7 @@ int main(int argc, char** argv)
                 object.max = Vec3<double>(5, 5, 5);
             }
             scene.objects.push_back(object);
-            const Eigen::AlignedBox<double, 3> box = gui::objectBounds(scene);
+            const Eigen::AlignedBox<double, 3> box = boundsOf(objectMeshes(scene));
             scene.camera = classicalView(*kind, box.min(), box.max(), classicalParameters);
             if (classicalOut.empty())
                 std::cout << sceneToJson(scene);
@@ -263,7 +263,7 @@ int main(int argc, char** argv)
             if (!benchViewport.empty())
                 std::tie(o.viewport.width, o.viewport.height) = parseSize(benchViewport, "--viewport");
             const cli::BenchResult result = cli::runBench(
-                scene, gui::objectVertices(scene), o, [&](int done, int total, const std::string& tier) {
+                scene, evaluateScene(scene)->objectVertices(), o, [&](int done, int total, const std::string& tier) {
                     if (!options.json && !tier.empty())
                         std::cerr << "[" << done + 1 << "/" << total << "] timing and measuring " << tier << "\n";
                     return true;
@@ -283,13 +283,12 @@ int main(int argc, char** argv)
 
     if (*exportCommand) // the leading newline ends the progress bar's line
         return guarded("\n" + options.scene, "\nviewpipe export", [&] {
-            const Scene scene = loadScene(options.scene);
-            gui::checkMeshes(scene);
+            const std::shared_ptr<const EvaluatedScene> scene = evaluateScene(loadScene(options.scene));
             gui::ExportOptions o;
             o.out = exportOut;
             std::tie(o.width, o.height) = parseSize(exportSize, "--size");
             o.scale = exportScale;
-            o.stages = gui::parseStages(exportStages, int(buildPipeline(scene.camera, scene.effects).stages.size()));
+            o.stages = gui::parseStages(exportStages, int(scene->pipeline.stages.size()));
             o.theme = exportTheme == "dark" ? gui::Theme::Dark : gui::Theme::Light;
             o.transparent = exportTransparent;
             std::istringstream formats(exportFormats);
@@ -331,11 +330,10 @@ int main(int argc, char** argv)
 
     return guarded(options.scene, "viewpipe: internal error", [&] {
         const Scene scene = loadScene(options.scene);
-        if (*check)
-            gui::checkMeshes(scene);
+        const std::shared_ptr<const EvaluatedScene> evaluated = evaluateScene(scene); // reads the meshes
         const cli::PrecisionChoice precision = cli::parsePrecision(options.precision, options.bits);
         if (*pipeline) {
-            const EffectOutcomes outcomes = cli::sceneEffects(scene, gui::objectMeshes(scene));
+            const EffectOutcomes& outcomes = evaluated->outcomes;
             if (options.json)
                 std::cout << cli::pipelineJson(scene, precision, outcomes).dump() << "\n";
             else

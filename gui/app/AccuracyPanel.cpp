@@ -63,7 +63,7 @@ AccuracyPanel::AccuracyPanel(QWidget* parent) : QWidget(parent)
     layout->addWidget(chartWidget_, 1);
     connect(button_, &QPushButton::clicked, this, [this] {
         if (sceneSource_)
-            measure(sceneSource_());
+            measure(*sceneSource_());
     });
 }
 
@@ -81,7 +81,7 @@ void AccuracyPanel::stop()
     running_ = false;
 }
 
-void AccuracyPanel::measure(const Scene& scene, std::size_t vertices)
+void AccuracyPanel::measure(const EvaluatedScene& evaluated, std::size_t vertices)
 {
     stop();
     running_ = true;
@@ -90,13 +90,8 @@ void AccuracyPanel::measure(const Scene& scene, std::size_t vertices)
     progress_->show();
     status_->setText(tr("Measuring…"));
     cancel_ = std::make_shared<std::atomic<bool>>(false);
-    std::vector<Vec3<double>> objectPoints;
-    try {
-        objectPoints = objectVertices(scene);
-    } catch (const InputError& e) {
-        finish(QString::fromStdString(e.what()));
-        return;
-    }
+    const Scene scene = evaluated.scene;
+    const std::vector<Vec3<double>> objectPoints = evaluated.objectVertices();
     // The worker owns copies of everything it reads; results come back queued.
     worker_ = std::thread([this, scene, objectPoints, vertices, cancel = cancel_] {
         cli::BenchOptions options;

@@ -14,7 +14,7 @@
 #include <vtkSmartPointer.h>
 
 #include "cli/bench.hpp"
-#include "painter/ScenePainter.h"
+#include "style/Style.h"
 
 class QLabel;
 class QProgressBar;
@@ -33,7 +33,7 @@ public:
     ~AccuracyPanel() override;
 
     // Measures a scene in the background; a running measurement is abandoned.
-    void measure(const Scene& scene, std::size_t vertices = 1000000);
+    void measure(const EvaluatedScene& scene, std::size_t vertices = 1000000);
     bool isRunning() const { return running_; }
     void setTheme(Theme theme);
     // Forgets the results and abandons a running measurement: they belong to the previous scene.
@@ -63,11 +63,11 @@ private:
     bool running_ = false;
     Theme theme_ = Theme::Dark;
     std::unique_ptr<cli::BenchResult> last_;
-    std::function<Scene()> sceneSource_;
+    std::function<std::shared_ptr<const EvaluatedScene>()> sceneSource_;
 
 public:
     // Where the Measure button takes the scene from.
-    void setSceneSource(std::function<Scene()> source) { sceneSource_ = std::move(source); }
+    void setSceneSource(std::function<std::shared_ptr<const EvaluatedScene>()> source) { sceneSource_ = std::move(source); }
 };
 
 } // namespace viewpipe::gui

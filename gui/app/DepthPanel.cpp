@@ -63,7 +63,7 @@ void DepthPanel::showDepth(const Pipeline<double>& pipeline, const std::optional
     else if (depth->zFighting.empty())
         text += tr(" No faces z-fight: the buffer orders every overlap.");
     else {
-        const Rgb c = ScenePainter::color(Element::ZFighting, theme);
+        const Rgb c = elementColor(Element::ZFighting, theme);
         const QString color = QColor::fromRgbF(c.r, c.g, c.b).name();
         text += QString(" <span style='color:%1'>%2</span>")
                     .arg(color, depth->zFighting.size() == 1 ? tr("1 pair of faces z-fights")

@@ -11,7 +11,7 @@
 
 #include <vtkSmartPointer.h>
 
-#include "painter/ScenePainter.h"
+#include "style/Style.h"
 
 class QLabel;
 class QVTKOpenGLNativeWidget;

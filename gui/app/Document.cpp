@@ -7,7 +7,8 @@ namespace {
 
 class SceneEdit : public QUndoCommand {
 public:
-    SceneEdit(Document* document, Scene before, Scene after, const QString& text)
+    using State = std::shared_ptr<const EvaluatedScene>;
+    SceneEdit(Document* document, State before, State after, const QString& text)
         : QUndoCommand(text), document_(document), before_(std::move(before)), after_(std::move(after))
     {
     }
@@ -16,13 +17,13 @@ public:
 
 private:
     Document* document_;
-    Scene before_;
-    Scene after_;
+    State before_;
+    State after_;
 };
 
 } // namespace
 
-Document::Document(QObject* parent) : QObject(parent)
+Document::Document(QObject* parent) : QObject(parent), evaluated_(std::make_shared<const EvaluatedScene>())
 {
     connect(&undo_, &QUndoStack::cleanChanged, this, &Document::fileChanged);
 }
@@ -34,9 +35,7 @@ Document::~Document()
 
 void Document::load(const Scene& scene, const QString& path)
 {
-    Pipeline<double> pipeline = buildPipeline(scene.camera, scene.effects);
-    scene_ = scene;
-    pipeline_ = std::move(pipeline);
+    evaluated_ = evaluator_.evaluate(scene);
     filePath_ = path;
     undo_.clear();
     emit fileChanged();
@@ -45,49 +44,47 @@ void Document::load(const Scene& scene, const QString& path)
 
 void Document::save(const QString& path)
 {
-    saveScene(scene_, path.toStdString());
+    saveScene(scene(), path.toStdString());
     filePath_ = path;
-    scene_.file = path.toStdString();
     undo_.setClean();
     emit fileChanged();
 }
 
 void Document::setCamera(const CameraSpec<double>& camera, const QString& description)
 {
-    Scene next = scene_;
+    Scene next = scene();
     next.camera = camera;
     replace(std::move(next), description);
 }
 
 void Document::setEffects(const EffectList& effects, const QString& description)
 {
-    Scene next = scene_;
+    Scene next = scene();
     next.effects = effects;
     replace(std::move(next), description);
 }
 
 void Document::addObject(const SceneObject& object, const QString& description)
 {
-    Scene next = scene_;
+    Scene next = scene();
     next.objects.push_back(object);
     replace(std::move(next), description);
 }
 
 void Document::markRecovered(const Scene& saved)
 {
-    undo_.push(new SceneEdit(this, saved, scene_, tr("Recover unsaved changes")));
+    undo_.push(new SceneEdit(this, evaluator_.evaluate(saved), evaluated_, tr("Recover unsaved changes")));
 }
 
 void Document::replace(Scene next, const QString& description)
 {
-    buildPipeline(next.camera); // throws InputError: nothing changes
-    undo_.push(new SceneEdit(this, scene_, std::move(next), description));
+    std::shared_ptr<const EvaluatedScene> after = evaluator_.evaluate(next); // throws InputError: nothing changes
+    undo_.push(new SceneEdit(this, evaluated_, std::move(after), description));
 }
 
-void Document::restore(const Scene& scene)
+void Document::restore(std::shared_ptr<const EvaluatedScene> state)
 {
-    pipeline_ = buildPipeline(scene.camera, scene.effects);
-    scene_ = scene;
+    evaluated_ = std::move(state);
     emit changed();
 }
 

@@ -1,14 +1,19 @@
 #pragma once
 
-// The scene being edited: the last valid state, its file, and the undo stack.
-// Widgets forward user intent here; every accepted edit is one undoable
-// command, and an edit the core refuses changes nothing.
+// The scene being edited: the last valid state evaluated (the pipeline, every
+// element, the effects' outcomes: built once per accepted edit, meshes read
+// once through the evaluator's cache), its file, and the undo stack. Widgets
+// forward user intent here; every accepted edit is one undoable command, and
+// an edit the core refuses changes nothing. Undo and redo return to states
+// already evaluated.
 
 #include <QObject>
 #include <QString>
 #include <QUndoStack>
 
-#include "viewpipe/scene.hpp"
+#include <memory>
+
+#include "viewpipe/evaluated_scene.hpp"
 
 namespace viewpipe::gui {
 
@@ -19,14 +24,18 @@ public:
     // Silent: the undo stack's clearing must not reach a window being destroyed.
     ~Document() override;
 
-    const Scene& scene() const { return scene_; }
-    const Pipeline<double>& pipeline() const { return pipeline_; }
+    const Scene& scene() const { return evaluated_->scene; }
+    const Pipeline<double>& pipeline() const { return evaluated_->pipeline; }
+    // What every picture, panel and export of the scene reads.
+    const std::shared_ptr<const EvaluatedScene>& evaluated() const { return evaluated_; }
+    const SceneEvaluator& evaluator() const { return evaluator_; }
     QUndoStack* undoStack() { return &undo_; }
     QString filePath() const { return filePath_; }
     bool isModified() const { return !undo_.isClean(); }
 
     // A scene read from `path` replaces the current one (no undo across it).
-    // Throws InputError for a camera the core refuses, changing nothing.
+    // Throws InputError for a camera the core refuses or a mesh that cannot
+    // be read, changing nothing.
     void load(const Scene& scene, const QString& path);
     // Throws InputError when the file cannot be written.
     void save(const QString& path);
@@ -41,9 +50,8 @@ public:
     // `saved` (the file as it was), so it shows as unsaved changes.
     void markRecovered(const Scene& saved);
 
-    // Replaces the state without validation; only for undo and redo of states
-    // that were valid when they were pushed.
-    void restore(const Scene& scene);
+    // Replaces the state; only for undo and redo of evaluated states.
+    void restore(std::shared_ptr<const EvaluatedScene> state);
 
 signals:
     void changed();
@@ -52,8 +60,8 @@ signals:
 private:
     void replace(Scene next, const QString& description);
 
-    Scene scene_;
-    Pipeline<double> pipeline_;
+    SceneEvaluator evaluator_;
+    std::shared_ptr<const EvaluatedScene> evaluated_;
     QString filePath_;
     QUndoStack undo_;
 };

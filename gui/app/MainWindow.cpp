@@ -221,7 +221,7 @@ void MainWindow::buildDocks()
     parameters_ = new ParameterPanel;
     QDockWidget* parametersDock = dock(tr("Parameters"), "parametersDock", parameters_, Qt::RightDockWidgetArea);
     accuracy_ = new AccuracyPanel;
-    accuracy_->setSceneSource([this] { return document_->scene(); });
+    accuracy_->setSceneSource([this] { return document_->evaluated(); });
     QDockWidget* accuracyDock = dock(tr("Accuracy"), "accuracyDock", accuracy_, Qt::RightDockWidgetArea);
     depth_ = new DepthPanel;
     QDockWidget* depthDock = dock(tr("Depth"), "depthDock", depth_, Qt::RightDockWidgetArea);
@@ -296,7 +296,7 @@ void MainWindow::buildMenus()
         if (path.isEmpty())
             return;
         try {
-            exportSheet(document_->scene(), path.toStdString(), 1600, 1200, painter_->theme());
+            exportSheet(*document_->evaluated(), path.toStdString(), 1600, 1200, painter_->theme());
             statusBar()->showMessage(tr("Exported %1").arg(path), 6000);
         } catch (const InputError& e) {
             showMessage(QString::fromStdString(e.what()));
@@ -479,12 +479,11 @@ bool MainWindow::openScene(const QString& path)
 bool MainWindow::openScene(const Scene& scene, const QString& path)
 {
     try {
-        // Build the picture first: a scene the painter cannot show is not opened.
-        painter_->setScene(scene);
         {
-            const QSignalBlocker drawn(document_); // the picture is made: only the widgets follow
-            document_->load(scene, path);
+            const QSignalBlocker drawn(document_); // the picture is made below, once
+            document_->load(scene, path);      // a scene the core refuses is not opened
         }
+        painter_->setScene(document_->evaluated());
         autosave_->saveNow(); // the previous scene's unsaved edits are not this one's to recover
         // Nothing of the previous scene stays: its traced vertex and measurements are not this one's.
         traceVertex(std::nullopt);
@@ -496,9 +495,6 @@ bool MainWindow::openScene(const Scene& scene, const QString& path)
         goToStage(0, false);
         return true;
     } catch (const InputError& e) {
-        // Restore the picture of the scene that stays open.
-        if (!document_->filePath().isEmpty() || !document_->scene().objects.empty())
-            onDocumentChanged();
         showMessage(tr("Cannot open %1: %2").arg(path, QString::fromStdString(e.what())));
         return false;
     }
@@ -564,12 +560,7 @@ bool MainWindow::saveScene(const QString& path)
 
 void MainWindow::onDocumentChanged()
 {
-    try {
-        painter_->setScene(document_->scene());
-    } catch (const InputError& e) {
-        showMessage(QString::fromStdString(e.what()));
-        return;
-    }
+    painter_->setScene(document_->evaluated());
     painter_->markTraced(traced_);
     refreshWidgets();
 }
@@ -578,7 +569,7 @@ void MainWindow::refreshWidgets()
 {
     parameters_->setCamera(document_->scene().camera);
     updateEffectsMenu();
-    depth_->showDepth(document_->pipeline(), painter_->effectOutcomes().depth, painter_->theme());
+    depth_->showDepth(document_->pipeline(), document_->evaluated()->outcomes.depth, painter_->theme());
     const auto& stages = document_->pipeline().stages;
     const QSignalBlocker blockList(stageList_);
     const QSignalBlocker blockSlider(slider_);
@@ -691,7 +682,7 @@ void MainWindow::setTheme(Theme theme)
 {
     painter_->setTheme(theme);
     accuracy_->setTheme(theme);
-    depth_->showDepth(document_->pipeline(), painter_->effectOutcomes().depth, theme);
+    depth_->showDepth(document_->pipeline(), document_->evaluated()->outcomes.depth, theme);
     applyTheme(theme);
     QSettings().setValue("theme", theme == Theme::Light ? "light" : "dark");
     renderNow();
@@ -769,9 +760,6 @@ bool MainWindow::importMesh(const QString& path)
     object.resolvedPath = QFileInfo(path).absoluteFilePath().toStdString();
     object.path = object.resolvedPath.string();
     try {
-        Scene candidate; // the new mesh alone: the scene's own were read when it was opened
-        candidate.objects.push_back(object);
-        checkMeshes(candidate);
         document_->addObject(object, tr("Import %1").arg(QFileInfo(path).fileName()));
         return true;
     } catch (const InputError& e) {
@@ -848,11 +836,7 @@ void MainWindow::rebuildPresetMenu()
 
 void MainWindow::chooseClassicalProjection()
 {
-    Eigen::AlignedBox<double, 3> box;
-    try {
-        box = objectBounds(document_->scene());
-    } catch (const InputError&) {
-    }
+    Eigen::AlignedBox<double, 3> box = document_->evaluated()->objectBounds();
     if (box.isEmpty())
         box = Eigen::AlignedBox<double, 3>(Vec3<double>(-1, -1, -1), Vec3<double>(1, 1, 1));
     ClassicalDialog dialog(box.min(), box.max(), this);
@@ -873,7 +857,7 @@ std::vector<std::filesystem::path> MainWindow::exportStages(const ExportOptions&
     std::atomic<bool> cancel{false};
     try {
         auto files = gui::exportStages(
-            document_->scene(), options,
+            document_->evaluated(), options,
             [&progress, &cancel](int done, int total, const std::string& what) {
                 progress.setMaximum(total);
                 progress.setValue(done);

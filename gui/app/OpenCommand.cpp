@@ -28,8 +28,7 @@ int runOpen(int argc, char** argv, const OpenOptions& options)
                                                     : QString::fromStdString(options.scene);
     // Validate before any window appears: bad input is exit 2 with the core's message.
     const Scene scene = loadScene(scenePath.toStdString());
-    checkMeshes(scene);
-    const int stages = int(buildPipeline(scene.camera, scene.effects).stages.size());
+    const int stages = int(evaluateScene(scene)->pipeline.stages.size()); // reads the meshes
     if (options.stage < 0 || options.stage > stages)
         throw InputError("--stage", "must lie between 0 and " + std::to_string(stages) + " (got " +
                                         std::to_string(options.stage) + ")");
@@ -70,7 +69,7 @@ int runOpen(int argc, char** argv, const OpenOptions& options)
     if (options.panel == "accuracy") {
         QEventLoop wait;
         QObject::connect(window.accuracy(), &AccuracyPanel::finished, &wait, &QEventLoop::quit);
-        window.accuracy()->measure(window.document()->scene());
+        window.accuracy()->measure(*window.document()->evaluated());
         wait.exec();
     }
 

@@ -1,6 +1,6 @@
 #pragma once
 
-#include "painter/ScenePainter.h"
+#include "style/Style.h"
 
 namespace viewpipe::gui {
 

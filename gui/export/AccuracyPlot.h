@@ -8,7 +8,7 @@
 #include <filesystem>
 
 #include "cli/bench.hpp"
-#include "painter/ScenePainter.h"
+#include "style/Style.h"
 
 class vtkChartMatrix;
 

@@ -7,7 +7,7 @@
 #include <functional>
 #include <string>
 
-#include "painter/ScenePainter.h"
+#include "style/Style.h"
 
 class vtkAxis;
 class vtkChart;

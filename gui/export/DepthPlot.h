@@ -7,7 +7,7 @@
 
 #include <filesystem>
 
-#include "painter/ScenePainter.h"
+#include "style/Style.h"
 
 class vtkChartXY;
 

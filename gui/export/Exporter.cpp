@@ -168,11 +168,11 @@ void validate(const ExportOptions& o)
 
 } // namespace
 
-void exportSheet(const Scene& scene, const fs::path& file, int width, int height, Theme theme)
+void exportSheet(const EvaluatedScene& scene, const fs::path& file, int width, int height, Theme theme)
 {
     if (width < 128 || height < 128 || width > 8192 || height > 8192)
         throw InputError("--size", "must be WxH with 128 <= W, H <= 8192");
-    const Eigen::AlignedBox<double, 3> box = objectBounds(scene);
+    const Eigen::AlignedBox<double, 3> box = scene.objectBounds();
     if (box.isEmpty())
         throw InputError("objects", "the scene has no objects to draw");
     struct Panel {
@@ -188,7 +188,7 @@ void exportSheet(const Scene& scene, const fs::path& file, int width, int height
     window->SetOffScreenRendering(1);
     window->SetSize(width, height);
     const double background = theme == Theme::Dark ? 0.11 : 1.0;
-    const Rgb ink = ScenePainter::color(Element::Objects, theme);
+    const Rgb ink = elementColor(Element::Objects, theme);
     // One scale for the four views, as a drawing has: lengths compare across them.
     std::vector<foley::ViewSpec<double>> views;
     double scale = 0;
@@ -279,11 +279,12 @@ std::vector<int> parseStages(const std::string& text, int stageCount)
     return stages;
 }
 
-std::vector<fs::path> exportStages(const Scene& scene, const ExportOptions& options, const ExportProgress& progress,
-                                   const std::atomic<bool>& cancel)
+std::vector<fs::path> exportStages(const std::shared_ptr<const EvaluatedScene>& evaluated, const ExportOptions& options,
+                                   const ExportProgress& progress, const std::atomic<bool>& cancel)
 {
     validate(options);
-    const Pipeline<double> pipeline = buildPipeline(scene.camera, scene.effects);
+    const Scene& scene = evaluated->scene;
+    const Pipeline<double>& pipeline = evaluated->pipeline;
     const std::vector<Stage<double>>& stages = pipeline.stages;
     const int n = int(stages.size());
     std::vector<int> chosen = options.stages;
@@ -335,7 +336,7 @@ std::vector<fs::path> exportStages(const Scene& scene, const ExportOptions& opti
         painter.setTheme(options.theme);
         painter.setFontSize(kBaseFontSize * options.scale);
         painter.setLineScale(options.scale);
-        painter.setScene(scene);
+        painter.setScene(evaluated);
         if (options.transparent)
             renderer->SetBackgroundAlpha(0);
         window->Render(); // sizes the renderer before framing
@@ -373,12 +374,12 @@ std::vector<fs::path> exportStages(const Scene& scene, const ExportOptions& opti
 
         step("matrices.tex");
         writeFileAtomically(temporary / "matrices.tex", cli::matricesLatex(scene, options.digits));
-        if (const auto& depth = painter.effectOutcomes().depth) {
+        if (const auto& depth = evaluated->outcomes.depth) {
             step("depth-resolution.png");
             writeDepthPlot(pipeline, depth->options, temporary / "depth-resolution.png", options.theme);
         }
         step("matrices.json");
-        writeFileAtomically(temporary / "matrices.json", cli::pipelineJson(scene, cli::PrecisionChoice{}, painter.effectOutcomes()).dump(2) + "\n");
+        writeFileAtomically(temporary / "matrices.json", cli::pipelineJson(scene, cli::PrecisionChoice{}, evaluated->outcomes).dump(2) + "\n");
 
         if (options.animate) {
             const fs::path frames = temporary / "frames";

@@ -10,6 +10,7 @@
 #include <atomic>
 #include <filesystem>
 #include <functional>
+#include <memory>
 #include <set>
 #include <string>
 #include <vector>
@@ -45,14 +46,14 @@ using ExportProgress = std::function<void(int done, int total, const std::string
 // Throws InputError for bad options and std::runtime_error for failures
 // (disk full, encoder missing). Returns the files written. Stops, cleaning
 // up, when `cancel` becomes true (then returns nothing).
-std::vector<std::filesystem::path> exportStages(const Scene& scene, const ExportOptions& options,
+std::vector<std::filesystem::path> exportStages(const std::shared_ptr<const EvaluatedScene>& scene, const ExportOptions& options,
                                                 const ExportProgress& progress, const std::atomic<bool>& cancel);
 
 // The CAD layout of seed 001 for a scene's objects, as one PNG: the top view
 // above the front view, the (right) side view beside it, and the isometric
 // view in the remaining corner. Written atomically; throws InputError for a
 // bad size, a scene without objects or an unwritable file.
-void exportSheet(const Scene& scene, const std::filesystem::path& file, int width, int height, Theme theme);
+void exportSheet(const EvaluatedScene& scene, const std::filesystem::path& file, int width, int height, Theme theme);
 
 // What a render window shows, as a PNG (with alpha when `transparent`);
 // throws std::runtime_error when it cannot be written.

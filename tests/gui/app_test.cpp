@@ -299,7 +299,7 @@ private slots:
     {
         MainWindow& w = *window_;
         QSignalSpy done(w.accuracy(), &AccuracyPanel::finished);
-        w.accuracy()->measure(w.document()->scene(), 20000);
+        w.accuracy()->measure(*w.document()->evaluated(), 20000);
         QVERIFY(w.accuracy()->isRunning());
         // The window keeps handling events while the worker measures.
         QTest::keyClick(&w, Qt::Key_Right);
@@ -338,7 +338,9 @@ private slots:
         auto& camera = std::get<gl::Camera<double>>(scene.camera);
         auto& perspective = std::get<gl::Perspective<double>>(camera.projection);
         perspective.aspect = double(width) / height;
-        const std::vector<PolygonMesh> meshes = objectMeshes(scene);
+        std::vector<PolygonMesh> meshes;
+        for (const auto& mesh : objectMeshes(scene))
+            meshes.push_back(*mesh);
         const RasterOutcome raster = rasterize(buildPipeline(scene.camera), meshes, RasterOptions{width, height});
 
         vtkNew<vtkRenderWindow> window;
@@ -399,7 +401,8 @@ private slots:
     void effectsMenuTogglesEffectsUndoably()
     {
         MainWindow& w = *window_;
-        const EffectList& effects = w.document()->scene().effects;
+        // The document's scene is replaced by each edit: read it afresh.
+        auto effects = [&]() -> const EffectList& { return w.document()->scene().effects; };
         QUndoStack* undo = w.document()->undoStack();
         const int stages = w.stageCount();
         QAction* divide = menuAction(w, "effectsMenu", "Divide (stage M)");
@@ -413,29 +416,29 @@ private slots:
         QVERIFY(!divide->isChecked());
 
         menuAction(w, "depthMenu", "16-bit Fixed Point")->trigger();
-        QVERIFY(effects.depth && effects.depth->bits == 16 && !effects.depth->floating);
+        QVERIFY(effects().depth && effects().depth->bits == 16 && !effects().depth->floating);
         QVERIFY(w.depth()->summary().contains("16-bit fixed point"));
-        QVERIFY(w.painter()->effectsNote().find("depth: 16-bit fixed point; each band") != std::string::npos);
+        QVERIFY(w.document()->evaluated()->effectsNote.find("depth: 16-bit fixed point; each band") != std::string::npos);
         QAction* reversed = menuAction(w, "depthMenu", "Reversed Z (near 1, far 0)");
         QVERIFY(reversed->isEnabled());
         reversed->trigger();
-        QVERIFY(effects.depth->reversed && effects.depth->bits == 16);
+        QVERIFY(effects().depth->reversed && effects().depth->bits == 16);
         menuAction(w, "depthMenu", "32-bit Float")->trigger(); // keeps reversed
-        QVERIFY(effects.depth->floating && effects.depth->bits == 32 && effects.depth->reversed);
+        QVERIFY(effects().depth->floating && effects().depth->bits == 32 && effects().depth->reversed);
         undo->undo();
         undo->undo();
-        QVERIFY(effects.depth && !effects.depth->reversed && !effects.depth->floating);
+        QVERIFY(effects().depth && !effects().depth->reversed && !effects().depth->floating);
         QVERIFY(menuAction(w, "depthMenu", "16-bit Fixed Point")->isChecked());
         menuAction(w, "depthMenu", "Off")->trigger();
-        QVERIFY(!effects.depth);
+        QVERIFY(!effects().depth);
         QVERIFY(!reversed->isEnabled());
         QVERIFY(w.depth()->summary().contains("does not simulate"));
 
         menuAction(w, "rasterMenu", "32 × 24 Pixels")->trigger();
-        QVERIFY(effects.raster && effects.raster->width == 32 && effects.raster->height == 24);
-        QVERIFY(w.painter()->effectsNote().find("raster: 32 x 24") != std::string::npos);
+        QVERIFY(effects().raster && effects().raster->width == 32 && effects().raster->height == 24);
+        QVERIFY(w.document()->evaluated()->effectsNote.find("raster: 32 x 24") != std::string::npos);
         menuAction(w, "effectsMenu", "Clip to the View Volume")->trigger();
-        QCOMPARE(effects.names, (std::vector<std::string>{"raster", "clip"}));
+        QCOMPARE(effects().names, (std::vector<std::string>{"raster", "clip"}));
         QCOMPARE(undo->undoText(), QString("Turn on Clip to the View Volume"));
 
         // Choosing what is already chosen is no edit.
@@ -446,7 +449,7 @@ private slots:
         QTemporaryDir dir;
         const QString path = dir.filePath("effects.json");
         QVERIFY(w.saveScene(path));
-        QCOMPARE(loadScene(path.toStdString()).effects.names, effects.names);
+        QCOMPARE(loadScene(path.toStdString()).effects.names, effects().names);
     }
 
     // Depth bands color the corridor's posts in the projected view; without

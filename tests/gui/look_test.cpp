@@ -101,14 +101,14 @@ private slots:
     void meaningsHaveTheirOwnColors()
     {
         for (const Theme theme : {Theme::Dark, Theme::Light}) {
-            const Rgb dop = ScenePainter::color(Element::Dop, theme);
-            const Rgb vanishing = ScenePainter::color(Element::Vanishing, theme);
-            const Rgb fighting = ScenePainter::color(Element::ZFighting, theme);
+            const Rgb dop = elementColor(Element::Dop, theme);
+            const Rgb vanishing = elementColor(Element::Vanishing, theme);
+            const Rgb fighting = elementColor(Element::ZFighting, theme);
             QVERIFY(difference(dop, vanishing) > 0.25);
             QVERIFY(difference(dop, fighting) > 0.25);
             QVERIFY(difference(vanishing, fighting) > 0.25);
             for (const bool projected : {false, true}) {
-                const Rgb background = ScenePainter::background(theme, projected);
+                const Rgb background = backgroundColor(theme, projected);
                 for (const Rgb& c : {dop, vanishing, fighting})
                     QVERIFY(difference(c, background) > 0.3);
             }
@@ -147,7 +147,7 @@ private slots:
         QVERIFY(QTest::qWaitForWindowExposed(&window));
         for (const Theme theme : {Theme::Dark, Theme::Light}) {
             window.setTheme(theme);
-            const Rgb fighting = ScenePainter::color(Element::ZFighting, theme);
+            const Rgb fighting = elementColor(Element::ZFighting, theme);
             QVERIFY(window.openScene(kScenes + "/depth-corridor.json"));
             QVERIFY2(pixelsOf(window, "worldView", fighting) > 30, "the world view shows no z-fighting color");
             QVERIFY2(pixelsOf(window, "projectedView", fighting) > 30, "the projected view shows no z-fighting color");

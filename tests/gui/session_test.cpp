@@ -119,7 +119,7 @@ private slots:
     {
         MainWindow& w = *window_;
         QSignalSpy done(w.accuracy(), &AccuracyPanel::finished);
-        w.accuracy()->measure(w.document()->scene(), 2000);
+        w.accuracy()->measure(*w.document()->evaluated(), 2000);
         QVERIFY(done.wait(120000));
         const QString doubleRow = w.accuracy()->table()->item(1, 5)->text();
         for (const QString theme : {"Light Theme (slides, print)", "Dark Theme (screen)", "Light Theme (slides, print)"})
@@ -134,7 +134,7 @@ private slots:
         MainWindow& w = *window_;
         QVERIFY(w.openScene(kCorridor));
         QSignalSpy done(w.accuracy(), &AccuracyPanel::finished);
-        w.accuracy()->measure(w.document()->scene(), 2000);
+        w.accuracy()->measure(*w.document()->evaluated(), 2000);
         QVERIFY(done.wait(120000));
         w.goToStage(2, false);
         for (const QString panel : {"stages", "matrices", "parameters", "accuracy", "depth"}) {
@@ -194,7 +194,7 @@ private slots:
     {
         MainWindow& w = *window_;
         QSignalSpy done(w.accuracy(), &AccuracyPanel::finished);
-        w.accuracy()->measure(w.document()->scene(), 2000);
+        w.accuracy()->measure(*w.document()->evaluated(), 2000);
         QVERIFY(done.wait(120000));
         const QImage untraced = worldPicture(w);
         w.traceVertex(Vec3<double>(16, 10, 54));
@@ -211,7 +211,7 @@ private slots:
         QCOMPARE(w.accuracy()->table()->rowCount(), 0);
 
         // A measurement still running when the scene changes is abandoned, not shown.
-        w.accuracy()->measure(w.document()->scene(), 2000);
+        w.accuracy()->measure(*w.document()->evaluated(), 2000);
         QVERIFY(w.openScene(kHouse));
         QCoreApplication::processEvents(); // a result sent before the abandon would arrive now
         QVERIFY(!w.accuracy()->hasResult());

@@ -1,0 +1,144 @@
+#pragma once
+
+// The evaluated scene: everything the pictures of a scene show, computed once
+// per accepted edit and only read afterwards by the VTK painter, the panels,
+// the export, the CLI's reports and the figure writers. It holds the pipeline
+// with its stages, every element as plain 3D primitives in world coordinates
+// tagged with what they are, each label with its anchor, the legends, the
+// marks of the projected view, and the effects' outcomes. No VTK, no Qt.
+
+#include <filesystem>
+#include <map>
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "viewpipe/effects.hpp"
+#include "viewpipe/geometry.hpp"
+#include "viewpipe/scene.hpp"
+#include "viewpipe/setup.hpp"
+
+namespace viewpipe {
+
+// What a primitive or a label draws. Frame: the axes of the coordinates the
+// current stage maps into (fixed on screen). Vanishing: vanishing points and
+// the edges drawn on to them (projected view). ZFighting: faces the depth
+// buffer cannot order. Traced: the vertex being traced.
+enum class Element {
+    Objects, WorldAxes, ViewAxes, Prp, Window, Dop, Volume, FrontPlane, BackPlane, Projectors, Canonical, Frame,
+    Vanishing, ZFighting, Traced
+};
+
+enum class PrimitiveKind { Lines, Faces };
+
+// One drawable piece of an element, in world coordinates. Lines: `segments`
+// holds end points by pairs. Faces: the polygons of `faces` (shared with the
+// mesh cache where they are an object's faces as read).
+struct Primitive {
+    Element element = Element::Objects;
+    PrimitiveKind kind = PrimitiveKind::Lines;
+    double opacity = 1;
+    std::vector<Vec3<double>> segments;
+    std::shared_ptr<const PolygonMesh> faces;
+    int object = -1;            // the scene object drawn, or -1
+    bool depthColored = false;  // faces colored by the level the depth buffer stores
+    bool canonical = false;     // drawn where it is (not through the stage's matrix)
+    Eigen::AlignedBox<double, 3> bounds;
+};
+
+struct Label {
+    Element element;
+    std::string text;
+    Vec3<double> anchor; // world coordinates
+};
+
+// A line of a view's legend: a swatch of how an element is drawn, and what it is.
+struct LegendEntry {
+    enum class Swatch { Line, Face, Dot, Bands, Pixels };
+    std::string text;
+    Element element; // whose color the swatch takes (bands and pixels have their own)
+    Swatch swatch;
+    double opacity = 1; // as drawn over the background: ghosts are faint
+};
+
+using Segment2 = std::array<Vec2<double>, 2>;
+
+// An object's faces as the effects sort them: in front, culled away, or
+// fighting for depth (all of them in front when no effect looks at faces).
+struct ObjectFaces {
+    std::shared_ptr<const PolygonMesh> front, culled, fighting;
+};
+
+struct EvaluatedScene {
+    Scene scene;
+    Pipeline<double> pipeline; // with the effects' stages
+    ViewSetup<double> setup;
+    std::vector<std::shared_ptr<const PolygonMesh>> meshes; // each object's, world coordinates
+    EffectOutcomes outcomes;
+    std::optional<DepthBands> bands; // of the levels the depth effect's faces store
+    std::vector<ObjectFaces> objectFaces;
+    std::vector<Primitive> primitives; // the world view's, back to front in drawing order
+    std::vector<Label> labels;
+    std::vector<LegendEntry> worldLegend, projectedLegend;
+    // The projected view's marks in the picture's coordinates (x, y in [-1, 1]).
+    std::vector<Segment2> vanishingLines;
+    std::vector<Segment2> zFightingRing;
+    // One line per listed effect: what it found.
+    std::string effectsNote;
+    double size = 1;       // of the whole set-up, for markers and axes
+    double markerSize = 1; // of the point markers, world units
+
+    // Every object vertex, and the box around them (empty without objects).
+    std::vector<Vec3<double>> objectVertices() const;
+    Eigen::AlignedBox<double, 3> objectBounds() const;
+};
+
+// Mesh files read once and kept while their path, size and modification time
+// are unchanged.
+class MeshCache {
+public:
+    // Throws InputError(field, reason) for a file that cannot be read.
+    std::shared_ptr<const PolygonMesh> read(const std::filesystem::path& file, const std::string& field);
+    long fileReads() const { return fileReads_; }
+
+private:
+    struct Entry {
+        std::filesystem::file_time_type modified;
+        std::uintmax_t bytes = 0;
+        std::shared_ptr<const PolygonMesh> mesh;
+    };
+    std::map<std::filesystem::path, Entry> entries_;
+    long fileReads_ = 0;
+};
+
+// Builds evaluated scenes, reading meshes through its cache.
+class SceneEvaluator {
+public:
+    // Throws InputError for a camera the core refuses or a mesh that cannot be read.
+    std::shared_ptr<const EvaluatedScene> evaluate(const Scene& scene);
+    long evaluations() const { return evaluations_; }
+    long meshReads() const { return cache_.fileReads(); }
+
+private:
+    MeshCache cache_;
+    long evaluations_ = 0;
+};
+
+// Each object's mesh: the built-in objects made, mesh files read (through
+// `cache` when given); throws InputError naming "objects[k].path".
+std::vector<std::shared_ptr<const PolygonMesh>> objectMeshes(const Scene& scene, MeshCache* cache = nullptr);
+Eigen::AlignedBox<double, 3> boundsOf(const std::vector<std::shared_ptr<const PolygonMesh>>& meshes);
+
+// One evaluation without a cache (the CLI's: each file is read once anyway).
+std::shared_ptr<const EvaluatedScene> evaluateScene(const Scene& scene);
+
+// A sphere (16 x 12 facets) and a cone (20 sides) as polygon meshes, for markers and arrow heads.
+PolygonMesh sphereMesh(const Vec3<double>& center, double radius);
+PolygonMesh coneMesh(const Vec3<double>& tip, const Vec3<double>& direction, double length);
+
+// A point through a cumulative matrix and the divide; nothing when it has no
+// image (behind the eye, on the eye plane, or not finite).
+std::optional<Vec3<double>> projectPoint(const Mat4<double>& m, const Vec3<double>& p);
+
+} // namespace viewpipe

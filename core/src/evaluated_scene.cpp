@@ -1,0 +1,606 @@
+#include "viewpipe/evaluated_scene.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <sstream>
+#include <system_error>
+
+#include "viewpipe/classical.hpp"
+#include "viewpipe/mesh_io.hpp"
+
+namespace viewpipe {
+namespace {
+
+using Segment = std::pair<Vec3<double>, Vec3<double>>;
+
+// Ghosts: how much of an edge clipped away and of a culled face still shows.
+constexpr double kClippedOpacity = 0.2;
+constexpr double kCulledOpacity = 0.06;
+
+class Builder {
+public:
+    explicit Builder(EvaluatedScene& out) : out_(out) {}
+
+    void lines(Element element, const std::vector<Segment>& segments, double opacity, int object = -1)
+    {
+        Primitive p;
+        p.element = element;
+        p.kind = PrimitiveKind::Lines;
+        p.opacity = opacity;
+        p.object = object;
+        for (const Segment& s : segments) {
+            p.segments.insert(p.segments.end(), {s.first, s.second});
+            p.bounds.extend(s.first);
+            p.bounds.extend(s.second);
+        }
+        out_.primitives.push_back(std::move(p));
+    }
+
+    Primitive& faces(Element element, std::shared_ptr<const PolygonMesh> mesh, double opacity, int object = -1)
+    {
+        Primitive p;
+        p.element = element;
+        p.kind = PrimitiveKind::Faces;
+        p.opacity = opacity;
+        p.object = object;
+        for (const std::vector<int>& face : mesh->faces)
+            for (int k : face)
+                p.bounds.extend(mesh->vertices[std::size_t(k)]);
+        p.faces = std::move(mesh);
+        out_.primitives.push_back(std::move(p));
+        return out_.primitives.back();
+    }
+
+    Primitive& faces(Element element, PolygonMesh mesh, double opacity)
+    {
+        return faces(element, std::make_shared<const PolygonMesh>(std::move(mesh)), opacity);
+    }
+
+    void label(Element element, const std::string& text, const Vec3<double>& anchor)
+    {
+        if (!text.empty())
+            out_.labels.push_back({element, text, anchor});
+    }
+
+private:
+    EvaluatedScene& out_;
+};
+
+std::vector<Segment> meshEdges(const PolygonMesh& mesh)
+{
+    std::vector<Segment> edges;
+    for (const auto& e : meshEdgeIndices(mesh))
+        edges.emplace_back(mesh.vertices[std::size_t(e[0])], mesh.vertices[std::size_t(e[1])]);
+    return edges;
+}
+
+PolygonMesh quad(const Vec3<double>& a, const Vec3<double>& b, const Vec3<double>& c, const Vec3<double>& d)
+{
+    return {{a, b, c, d}, {{0, 1, 2, 3}}};
+}
+
+// The segment that spans collinear points.
+Segment span(const std::vector<Vec3<double>>& points)
+{
+    const Vec3<double> direction = (points.back() - points.front()).normalized();
+    auto along = [&](const Vec3<double>& p) { return (p - points.front()).dot(direction); };
+    const auto [lo, hi] = std::minmax_element(points.begin(), points.end(),
+                                              [&](const auto& a, const auto& b) { return along(a) < along(b); });
+    return {*lo, *hi};
+}
+
+std::vector<Segment> boxEdges(const std::array<Vec3<double>, 8>& corners)
+{
+    std::vector<Segment> edges;
+    for (std::size_t k = 0; k < 4; ++k) {
+        edges.emplace_back(corners[k], corners[(k + 1) % 4]);
+        edges.emplace_back(corners[k + 4], corners[(k + 1) % 4 + 4]);
+        edges.emplace_back(corners[k], corners[k + 4]);
+    }
+    return edges;
+}
+
+// The lowest and highest level the depth buffer stores on these faces: at the
+// vertices (the level is monotonic in eye depth, which is affine across a
+// face), and, for a face partly outside the depth range, at points across it.
+std::optional<DepthBands> bandsOf(const std::vector<const PolygonMesh*>& meshes, const Pipeline<double>& pipeline,
+                                  const DepthOptions& options)
+{
+    const Mat4<double> clip = pipeline.clipMatrix();
+    double low = std::numeric_limits<double>::infinity(), high = -low;
+    auto extend = [&](const Vec3<double>& p) {
+        if (const std::optional<double> level = depthLevelAt(clip, pipeline.clipVolume, p, options))
+            low = std::min(low, *level), high = std::max(high, *level);
+    };
+    for (const PolygonMesh* mesh : meshes)
+        for (const std::vector<int>& face : mesh->faces) {
+            bool partial = false;
+            for (int k : face) {
+                const Vec3<double>& p = mesh->vertices[std::size_t(k)];
+                partial = partial || !depthLevelAt(clip, pipeline.clipVolume, p, options);
+                extend(p);
+            }
+            if (!partial)
+                continue;
+            constexpr int n = 32;
+            const Vec3<double>& a = mesh->vertices[std::size_t(face[0])];
+            for (std::size_t t = 1; t + 1 < face.size(); ++t) {
+                const Vec3<double>& b = mesh->vertices[std::size_t(face[t])];
+                const Vec3<double>& c = mesh->vertices[std::size_t(face[t + 1])];
+                for (int i = 0; i <= n; ++i)
+                    for (int j = 0; i + j <= n; ++j)
+                        extend(a + (double(i) / n) * (b - a) + (double(j) / n) * (c - a));
+            }
+        }
+    if (!(low <= high))
+        return std::nullopt;
+    return depthBands(low, high, 24);
+}
+
+std::string describeEffects(const EffectList& effects, const EffectOutcomes& outcomes, const Pipeline<double>& pipeline,
+                            const std::optional<DepthBands>& bands)
+{
+    std::ostringstream note;
+    for (const std::string& name : effects.names) {
+        if (name == "clip" && outcomes.clip) {
+            const ClipCounts& s = outcomes.clip->segments;
+            note << "clip: " << s.inside << " edges inside, " << s.clipped << " cut, " << s.outside
+                 << " outside (ghosted)\n";
+        } else if (name == "divide") {
+            note << (divideAddsStage(pipeline) ? "divide: stage " + pipeline.stages.back().symbol + " appended\n"
+                                               : std::string("divide: none needed (parallel)\n"));
+        } else if (name == "cull" && outcomes.cull) {
+            note << "cull: " << outcomes.cull->culled << " of " << outcomes.cull->faces << " faces (ghosted)\n";
+        } else if (name == "depth" && outcomes.depth) {
+            const DepthOutcome& d = *outcomes.depth;
+            note << "depth: " << depthFormatName(d.options);
+            if (bands)
+                note << "; each band "
+                     << (bands->levelsPerBand == 1 ? std::string("one stored value")
+                                                   : std::to_string(std::llround(bands->levelsPerBand)) +
+                                                         " stored values");
+            if (!d.zFightingChecked)
+                note << "; z-fighting not checked (too many faces)";
+            else if (!d.zFighting.empty())
+                note << "; " << d.zFighting.size() << " face pairs z-fight (orange-red)";
+            note << "\n";
+        } else if (name == "raster" && outcomes.raster) {
+            note << "raster: " << outcomes.raster->width << " x " << outcomes.raster->height << ", "
+                 << outcomes.raster->covered << " pixels covered (projected view)\n";
+        }
+    }
+    std::string text = note.str();
+    if (!text.empty())
+        text.pop_back();
+    return text;
+}
+
+// Vanishing points, and the edges along each principal axis drawn on to
+// theirs, in the picture's coordinates.
+std::vector<Segment2> vanishingLines(const CameraSpec<double>& camera, const Pipeline<double>& pipeline,
+                                     const std::vector<Segment>& edges)
+{
+    std::vector<Segment2> picture;
+    const Mat4<double> image = pipeline.clipMatrix();
+    for (int axis = 0; axis < 3; ++axis) {
+        const std::optional<VanishingPoint> vp = vanishingPoint(camera, axis);
+        if (!vp)
+            continue;
+        const Vec2<double> target = vp->image.head<2>();
+        const double arm = 0.04;
+        picture.push_back({target - Vec2<double>(arm, 0), target + Vec2<double>(arm, 0)});
+        picture.push_back({target - Vec2<double>(0, arm), target + Vec2<double>(0, arm)});
+        for (const Segment& edge : edges) {
+            const Vec3<double> d = (edge.second - edge.first).normalized();
+            if (std::abs(std::abs(d[axis]) - 1) > 1e-9)
+                continue;
+            const std::optional<Vec3<double>> a = projectPoint(image, edge.first), b = projectPoint(image, edge.second);
+            if (a && b) {
+                picture.push_back({a->head<2>(), target});
+                picture.push_back({b->head<2>(), target});
+            }
+        }
+    }
+    return picture;
+}
+
+// A ring around the z-fighting faces: small and far, they may lie under the vanishing lines.
+std::vector<Segment2> ringAround(const std::vector<Vec3<double>>& points, const Mat4<double>& image)
+{
+    Eigen::AlignedBox<double, 2> spot;
+    for (const Vec3<double>& p : points)
+        if (const std::optional<Vec3<double>> q = projectPoint(image, p))
+            spot.extend(q->head<2>());
+    std::vector<Segment2> ring;
+    if (spot.isEmpty())
+        return ring;
+    const double radius = 0.5 * spot.diagonal().norm() + 0.07;
+    auto at = [&](int k) -> Vec2<double> {
+        return spot.center() + radius * Vec2<double>(std::cos(k * M_PI / 24), std::sin(k * M_PI / 24));
+    };
+    for (int k = 0; k < 48; ++k)
+        ring.push_back({at(k), at(k + 1)});
+    return ring;
+}
+
+// An infinite far plane has no face to draw: the camera whose volume is
+// drawn ends it just past the farthest object (at least four times as far as
+// the near plane); `cut` says so. The pipeline keeps the exact infinite one.
+CameraSpec<double> drawnCamera(const CameraSpec<double>& camera, const Eigen::AlignedBox<double, 3>& objects, bool& cut)
+{
+    CameraSpec<double> drawn = camera;
+    cut = false;
+    auto* gl = std::get_if<gl::Camera<double>>(&drawn);
+    if (!gl)
+        return drawn;
+    const Vec3<double> forward = (gl->lookAt.center - gl->lookAt.eye).normalized();
+    std::visit(
+        [&](auto& p) {
+            if (!std::isinf(p.zFar))
+                return;
+            double reach = 4 * p.zNear;
+            if (!objects.isEmpty())
+                for (int k = 0; k < 8; ++k)
+                    reach = std::max(reach, 1.2 * (objects.corner(Eigen::AlignedBox<double, 3>::CornerType(k)) -
+                                                   gl->lookAt.eye).dot(forward));
+            p.zFar = reach;
+            cut = true;
+        },
+        gl->projection);
+    return drawn;
+}
+
+std::shared_ptr<const PolygonMesh> objectMesh(const SceneObject& object, std::size_t index, MeshCache* cache)
+{
+    if (object.type == ObjectType::Mesh) {
+        const std::string field = "objects[" + std::to_string(index) + "].path";
+        if (cache)
+            return cache->read(object.resolvedPath, field);
+        return std::make_shared<const PolygonMesh>(readMeshFile(object.resolvedPath, field));
+    }
+    return std::make_shared<const PolygonMesh>(object.type == ObjectType::House ? houseMesh()
+                                                                                 : boxMesh(object.min, object.max));
+}
+
+std::shared_ptr<const EvaluatedScene> evaluate(const Scene& scene, MeshCache* cache)
+{
+    auto evaluated = std::make_shared<EvaluatedScene>();
+    EvaluatedScene& out = *evaluated;
+    out.scene = scene;
+    out.pipeline = buildPipeline(scene.camera, scene.effects);
+    out.meshes = objectMeshes(scene, cache);
+    bool farCut = false;
+    const CameraSpec<double> drawn = drawnCamera(scene.camera, out.objectBounds(), farCut);
+    out.setup = viewSetup(drawn, scene.effects);
+    const Pipeline<double>& pipeline = out.pipeline;
+    const ViewSetup<double>& setup = out.setup;
+
+    // The size of the set-up, for axis lengths and markers.
+    Eigen::AlignedBox<double, 3> box = out.objectBounds();
+    for (const Vec3<double>& p : setup.volume)
+        box.extend(p);
+    box.extend(setup.prp);
+    box.extend(setup.origin);
+    out.size = box.diagonal().norm();
+    const double axis = 0.15 * out.size;
+    const double worldAxis = 1.5 * axis; // longer than the VRC axes, which may start at the same point
+    const double marker = 0.008 * out.size;
+    out.markerSize = marker;
+
+    std::vector<PolygonMesh> meshes; // the effects take them by value
+    if (!scene.effects.empty())
+        for (const auto& mesh : out.meshes)
+            meshes.push_back(*mesh);
+    out.outcomes = runEffects(pipeline, meshes, scene.effects);
+    const EffectOutcomes& outcomes = out.outcomes;
+
+    // Each object's faces: in front, culled, or fighting for depth.
+    for (std::size_t o = 0; o < out.meshes.size(); ++o) {
+        ObjectFaces sets;
+        if (!outcomes.cull && !outcomes.depth) {
+            sets.front = out.meshes[o];
+        } else {
+            std::vector<bool> fighting(out.meshes[o]->faces.size(), false);
+            if (outcomes.depth)
+                for (const auto& pair : outcomes.depth->zFighting) {
+                    if (std::size_t(pair[0]) == o)
+                        fighting[std::size_t(pair[1])] = true;
+                    if (std::size_t(pair[2]) == o)
+                        fighting[std::size_t(pair[3])] = true;
+                }
+            PolygonMesh front, culled, fights;
+            front.vertices = culled.vertices = fights.vertices = out.meshes[o]->vertices;
+            for (std::size_t f = 0; f < out.meshes[o]->faces.size(); ++f) {
+                const bool isCulled = outcomes.cull && outcomes.cull->culledFaces[o][f];
+                (fighting[f] ? fights : isCulled ? culled : front).faces.push_back(out.meshes[o]->faces[f]);
+            }
+            sets.front = std::make_shared<const PolygonMesh>(std::move(front));
+            sets.culled = std::make_shared<const PolygonMesh>(std::move(culled));
+            sets.fighting = std::make_shared<const PolygonMesh>(std::move(fights));
+        }
+        out.objectFaces.push_back(std::move(sets));
+    }
+    if (outcomes.depth) {
+        std::vector<const PolygonMesh*> fronts;
+        for (const ObjectFaces& sets : out.objectFaces)
+            fronts.push_back(sets.front.get());
+        out.bands = bandsOf(fronts, pipeline, *scene.effects.depth);
+    }
+
+    Builder add(out);
+    std::vector<Vec3<double>> fighting; // the z-fighting faces' corners
+    std::vector<Segment> builtInEdges;  // meshes from files have none drawn
+    bool clippedAway = false, culledAway = false;
+    for (std::size_t o = 0; o < out.meshes.size(); ++o) {
+        const int object = int(o);
+        const PolygonMesh& mesh = *out.meshes[o];
+        const ObjectFaces& sets = out.objectFaces[o];
+        Primitive& front = add.faces(Element::Objects, sets.front, out.bands ? 0.9 : 0.35, object);
+        front.depthColored = out.bands.has_value() && !sets.front->faces.empty();
+        if (sets.culled && !sets.culled->faces.empty()) {
+            add.faces(Element::Objects, sets.culled, kCulledOpacity, object);
+            culledAway = true;
+        }
+        if (sets.fighting && !sets.fighting->faces.empty()) { // outlined: far away they may be a few pixels wide
+            add.faces(Element::ZFighting, sets.fighting, 0.8, object);
+            add.lines(Element::ZFighting, meshEdges(*sets.fighting), 1.0, object);
+            for (const std::vector<int>& face : sets.fighting->faces)
+                for (int k : face)
+                    fighting.push_back(sets.fighting->vertices[std::size_t(k)]);
+        }
+        const std::vector<Segment> edges =
+            scene.objects[o].type == ObjectType::Mesh ? std::vector<Segment>{} : meshEdges(mesh);
+        builtInEdges.insert(builtInEdges.end(), edges.begin(), edges.end());
+        if (outcomes.clip) {
+            std::vector<Segment> kept, away;
+            const auto indices = meshEdgeIndices(mesh);
+            for (std::size_t e = 0; e < indices.size(); ++e) {
+                const Vec3<double>& a = mesh.vertices[std::size_t(indices[e][0])];
+                const Vec3<double>& b = mesh.vertices[std::size_t(indices[e][1])];
+                const auto& interval = outcomes.clip->keptEdges[o][e];
+                if (!interval) {
+                    away.emplace_back(a, b);
+                    continue;
+                }
+                const Vec3<double> p = a + (*interval)[0] * (b - a), q = a + (*interval)[1] * (b - a);
+                kept.emplace_back(p, q);
+                if ((*interval)[0] > 0)
+                    away.emplace_back(a, p);
+                if ((*interval)[1] < 1)
+                    away.emplace_back(q, b);
+            }
+            add.lines(Element::Objects, kept, 1.0, object);
+            if (!away.empty()) {
+                add.lines(Element::Objects, away, kClippedOpacity, object);
+                clippedAway = true;
+            }
+        } else if (!edges.empty()) {
+            add.lines(Element::Objects, edges, 1.0, object);
+        }
+    }
+    if (!fighting.empty()) {
+        Eigen::AlignedBox<double, 3> spot;
+        for (const Vec3<double>& p : fighting)
+            spot.extend(p);
+        add.label(Element::ZFighting, "z-fighting", spot.center());
+    }
+
+    const Vec3<double> o = Vec3<double>::Zero();
+    add.lines(Element::WorldAxes,
+              {{o, Vec3<double>::UnitX() * worldAxis}, {o, Vec3<double>::UnitY() * worldAxis},
+               {o, Vec3<double>::UnitZ() * worldAxis}},
+              1.0);
+    add.label(Element::WorldAxes, "x", Vec3<double>::UnitX() * worldAxis);
+    add.label(Element::WorldAxes, "y", Vec3<double>::UnitY() * worldAxis);
+    add.label(Element::WorldAxes, "z", Vec3<double>::UnitZ() * worldAxis);
+
+    const bool foley = pipeline.convention == Convention::Foley;
+    const Vec3<double>& vrp = setup.origin;
+    add.lines(Element::ViewAxes,
+              {{vrp, vrp + setup.axes.u * axis}, {vrp, vrp + setup.axes.v * axis}, {vrp, vrp + setup.axes.n * axis}},
+              1.0);
+    add.label(Element::ViewAxes, foley ? "u" : "s", vrp + setup.axes.u * axis);
+    add.label(Element::ViewAxes, foley ? "v" : "u", vrp + setup.axes.v * axis);
+    add.label(Element::ViewAxes, foley ? "n" : "-f", vrp + setup.axes.n * axis);
+    if (foley)
+        add.label(Element::ViewAxes, "VRP", vrp);
+
+    if (setup.perspective) {
+        add.faces(Element::Prp, sphereMesh(setup.prp, 1.6 * marker), 1.0);
+        add.label(Element::Prp, foley ? "PRP" : "eye", setup.prp);
+    }
+
+    std::vector<Segment> window;
+    for (std::size_t k = 0; k < 4; ++k)
+        window.emplace_back(setup.window[k], setup.window[(k + 1) % 4]);
+    add.lines(Element::Window, window, 1.0);
+    // In perspective, small beside its distance from the eye, or the divide would blow it up.
+    const double centerMarker =
+        setup.perspective ? std::min(marker, 0.05 * (setup.windowCenter - setup.prp).norm()) : marker;
+    add.faces(Element::Window, sphereMesh(setup.windowCenter, centerMarker), 1.0);
+    add.label(Element::Window, "CW", setup.windowCenter);
+
+    const Vec3<double> dop = setup.windowCenter - setup.prp;
+    const double head = std::min(0.06 * out.size, 0.4 * dop.norm());
+    add.lines(Element::Dop, {{setup.prp, setup.windowCenter - dop.normalized() * head}}, 1.0);
+    add.faces(Element::Dop, coneMesh(setup.windowCenter, dop, head), 1.0);
+    add.label(Element::Dop, "DOP", setup.prp + 0.3 * dop);
+
+    const auto& v = setup.volume;
+    PolygonMesh sides;
+    sides.vertices.assign(v.begin(), v.end());
+    sides.faces = {{0, 1, 5, 4}, {1, 2, 6, 5}, {2, 3, 7, 6}, {3, 0, 4, 7}};
+    add.faces(Element::Volume, std::move(sides), 0.10);
+    add.lines(Element::Volume, boxEdges(v), 0.8);
+    add.faces(Element::FrontPlane, quad(v[0], v[1], v[2], v[3]), 0.22);
+    add.faces(Element::BackPlane, quad(v[4], v[5], v[6], v[7]), 0.22);
+    add.label(Element::FrontPlane, foley ? "front (F)" : "near", v[3]);
+    add.label(Element::BackPlane, foley ? "back (B)" : farCut ? "far at infinity (cut)" : "far", v[7]);
+    add.label(Element::Window, foley ? "window" : "", (setup.window[2] + setup.window[3]) / 2);
+
+    std::vector<Segment> projectors;
+    for (std::size_t k = 0; k < 4; ++k) {
+        std::vector<Vec3<double>> along = {setup.window[k], v[k], v[k + 4]};
+        if (setup.perspective)
+            along.push_back(setup.prp);
+        projectors.push_back(span(along));
+    }
+    add.lines(Element::Projectors, projectors, 0.7);
+    add.lines(Element::Canonical, boxEdges(setup.canonical), 1.0);
+    out.primitives.back().canonical = true;
+
+    out.vanishingLines = vanishingLines(drawn, pipeline, builtInEdges); // x and y do not depend on the far plane
+    out.zFightingRing = ringAround(fighting, pipeline.clipMatrix());
+    out.effectsNote = describeEffects(scene.effects, outcomes, pipeline, out.bands);
+
+    // The legends name what this scene shows, each view its own.
+    using Swatch = LegendEntry::Swatch;
+    std::vector<LegendEntry> effectEntries; // in both views
+    if (!fighting.empty())
+        effectEntries.push_back({"z-fighting faces", Element::ZFighting, Swatch::Face});
+    if (out.bands)
+        effectEntries.push_back({"depth bands, near to far", Element::Objects, Swatch::Bands});
+    auto& world = out.worldLegend;
+    world = {{foley ? "VRP and the VRC axes u, v, n" : "eye axes s, u, -f", Element::ViewAxes, Swatch::Line}};
+    if (setup.perspective)
+        world.push_back(
+            {foley ? "PRP, center of projection" : "eye, center of projection", Element::Prp, Swatch::Dot});
+    world.insert(world.end(), {{"window and its center CW", Element::Window, Swatch::Line},
+                               {"DOP, direction of projection", Element::Dop, Swatch::Line},
+                               {foley   ? "view volume, back plane (B)"
+                                : farCut ? "view volume, cut short of its far plane at infinity"
+                                         : "view volume, far plane",
+                                Element::Volume, Swatch::Line},
+                               {foley ? "front plane (F)" : "near plane", Element::FrontPlane, Swatch::Face},
+                               {"projectors", Element::Projectors, Swatch::Line},
+                               {"canonical view volume", Element::Canonical, Swatch::Line}});
+    world.insert(world.end(), effectEntries.begin(), effectEntries.end());
+    if (clippedAway)
+        world.push_back({"clipped away (ghosted)", Element::Objects, Swatch::Line, kClippedOpacity});
+    if (culledAway)
+        world.push_back({"culled faces (ghosted)", Element::Objects, Swatch::Face, kCulledOpacity});
+    auto& projected = out.projectedLegend;
+    projected = {{"window", Element::Window, Swatch::Line}};
+    if (!out.vanishingLines.empty())
+        projected.push_back({"vanishing lines", Element::Vanishing, Swatch::Line});
+    projected.insert(projected.end(), effectEntries.begin(), effectEntries.end());
+    if (outcomes.raster)
+        projected.push_back({"raster pixels, a color per object", Element::Objects, Swatch::Pixels});
+    return evaluated;
+}
+
+} // namespace
+
+std::vector<Vec3<double>> EvaluatedScene::objectVertices() const
+{
+    std::vector<Vec3<double>> vertices;
+    for (const auto& mesh : meshes)
+        vertices.insert(vertices.end(), mesh->vertices.begin(), mesh->vertices.end());
+    return vertices;
+}
+
+Eigen::AlignedBox<double, 3> EvaluatedScene::objectBounds() const
+{
+    return boundsOf(meshes);
+}
+
+std::vector<std::shared_ptr<const PolygonMesh>> objectMeshes(const Scene& scene, MeshCache* cache)
+{
+    std::vector<std::shared_ptr<const PolygonMesh>> meshes;
+    for (std::size_t i = 0; i < scene.objects.size(); ++i)
+        meshes.push_back(objectMesh(scene.objects[i], i, cache));
+    return meshes;
+}
+
+Eigen::AlignedBox<double, 3> boundsOf(const std::vector<std::shared_ptr<const PolygonMesh>>& meshes)
+{
+    Eigen::AlignedBox<double, 3> box;
+    for (const auto& mesh : meshes)
+        for (const Vec3<double>& p : mesh->vertices)
+            box.extend(p);
+    return box;
+}
+
+std::shared_ptr<const PolygonMesh> MeshCache::read(const std::filesystem::path& file, const std::string& field)
+{
+    std::error_code error;
+    const auto modified = std::filesystem::last_write_time(file, error);
+    const std::uintmax_t bytes = error ? 0 : std::filesystem::file_size(file, error);
+    if (!error) {
+        const auto found = entries_.find(file);
+        if (found != entries_.end() && found->second.modified == modified && found->second.bytes == bytes)
+            return found->second.mesh;
+    }
+    ++fileReads_;
+    auto mesh = std::make_shared<const PolygonMesh>(readMeshFile(file, field)); // reports a missing file
+    if (!error)
+        entries_[file] = {modified, bytes, mesh};
+    return mesh;
+}
+
+std::shared_ptr<const EvaluatedScene> SceneEvaluator::evaluate(const Scene& scene)
+{
+    ++evaluations_;
+    return viewpipe::evaluate(scene, &cache_);
+}
+
+std::shared_ptr<const EvaluatedScene> evaluateScene(const Scene& scene)
+{
+    return evaluate(scene, nullptr);
+}
+
+PolygonMesh sphereMesh(const Vec3<double>& center, double radius)
+{
+    constexpr int around = 16, rings = 12;
+    PolygonMesh mesh;
+    mesh.vertices.push_back(center + radius * Vec3<double>::UnitZ());
+    for (int r = 1; r < rings; ++r) {
+        const double phi = M_PI * r / rings;
+        for (int a = 0; a < around; ++a) {
+            const double theta = 2 * M_PI * a / around;
+            mesh.vertices.push_back(center + radius * Vec3<double>(std::sin(phi) * std::cos(theta),
+                                                                   std::sin(phi) * std::sin(theta), std::cos(phi)));
+        }
+    }
+    mesh.vertices.push_back(center - radius * Vec3<double>::UnitZ());
+    const int south = int(mesh.vertices.size()) - 1;
+    auto at = [](int ring, int a) { return 1 + (ring - 1) * around + (a % around); };
+    for (int a = 0; a < around; ++a) {
+        mesh.faces.push_back({0, at(1, a), at(1, a + 1)});
+        for (int r = 1; r + 1 < rings; ++r)
+            mesh.faces.push_back({at(r, a), at(r + 1, a), at(r + 1, a + 1), at(r, a + 1)});
+        mesh.faces.push_back({at(rings - 1, a), south, at(rings - 1, a + 1)});
+    }
+    return mesh;
+}
+
+PolygonMesh coneMesh(const Vec3<double>& tip, const Vec3<double>& direction, double length)
+{
+    constexpr int sides = 20;
+    const Vec3<double> d = direction.normalized();
+    const Vec3<double> side = d.unitOrthogonal(), other = d.cross(side);
+    const Vec3<double> base = tip - d * length;
+    const double radius = 0.3 * length;
+    PolygonMesh mesh;
+    mesh.vertices.push_back(tip);
+    std::vector<int> bottom;
+    for (int k = 0; k < sides; ++k) {
+        const double a = 2 * M_PI * k / sides;
+        mesh.vertices.push_back(base + radius * (std::cos(a) * side + std::sin(a) * other));
+        mesh.faces.push_back({0, 1 + k, 1 + (k + 1) % sides});
+        bottom.insert(bottom.begin(), 1 + k);
+    }
+    mesh.faces.push_back(bottom);
+    return mesh;
+}
+
+std::optional<Vec3<double>> projectPoint(const Mat4<double>& m, const Vec3<double>& p)
+{
+    const Vec4<double> h = m * p.homogeneous();
+    if (!(h.w() > 1e-9 * h.head<3>().cwiseAbs().maxCoeff()) || !h.allFinite())
+        return std::nullopt;
+    return Vec3<double>(h.head<3>() / h.w());
+}
+
+} // namespace viewpipe

@@ -1,0 +1,267 @@
+#include "ProjectedView.h"
+
+#include <vtkActor.h>
+#include <vtkActor2D.h>
+#include <vtkCallbackCommand.h>
+#include <vtkCamera.h>
+#include <vtkCellArray.h>
+#include <vtkCellData.h>
+#include <vtkCommand.h>
+#include <vtkCoordinate.h>
+#include <vtkLegendBoxActor.h>
+#include <vtkLookupTable.h>
+#include <vtkPoints.h>
+#include <vtkPolyData.h>
+#include <vtkPolyDataMapper.h>
+#include <vtkPolyDataMapper2D.h>
+#include <vtkProperty.h>
+#include <vtkProperty2D.h>
+#include <vtkRenderer.h>
+#include <vtkTextActor.h>
+#include <vtkTextProperty.h>
+#include <vtkUnsignedCharArray.h>
+
+#include <cmath>
+
+#include "DepthColoring.h"
+#include "EigenVtk.h"
+#include "Legend.h"
+#include "VtkGeometry.h"
+
+namespace viewpipe::gui {
+namespace {
+
+// Foley's canonical parallel volume (z in [-1, 0]) to OpenGL's NDC cube, so
+// that VTK's camera can show what a Foley view sees: z_gl = -2 z - w.
+Mat4<double> foleyToGlClip()
+{
+    Mat4<double> d = Mat4<double>::Identity();
+    d(2, 2) = -2;
+    d(2, 3) = -1;
+    return d;
+}
+
+vtkSmartPointer<vtkActor2D> overlay(vtkCoordinate* viewCoordinates)
+{
+    auto actor = vtkSmartPointer<vtkActor2D>::New();
+    auto mapper = vtkSmartPointer<vtkPolyDataMapper2D>::New();
+    mapper->SetTransformCoordinate(viewCoordinates);
+    mapper->SetInputData(linesData(std::vector<Segment2>{}));
+    actor->SetMapper(mapper);
+    return actor;
+}
+
+vtkSmartPointer<vtkActor> unlitActor(vtkPolyData* data)
+{
+    auto mapper = vtkSmartPointer<vtkPolyDataMapper>::New();
+    mapper->SetInputData(data);
+    auto actor = vtkSmartPointer<vtkActor>::New();
+    actor->SetMapper(mapper);
+    actor->GetProperty()->LightingOff();
+    return actor;
+}
+
+} // namespace
+
+// The 2D marks in picture coordinates (x, y in [-1, 1]), laid out again for
+// the viewport's shape before each frame.
+struct ProjectedView::Picture {
+    Mat4<double> clip;
+    std::vector<std::pair<vtkActor2D*, std::vector<Segment2>>> lines;
+    std::vector<std::pair<Vec2<double>, int>> pixels; // lower-left corner, object
+    Vec2<double> pixelSize;
+    vtkActor2D* grid;
+};
+
+ProjectedView::ProjectedView(vtkRenderer* renderer)
+    : renderer_(renderer), caption_(vtkSmartPointer<vtkTextActor>::New()), legend_(newLegend(false)),
+      layout_(vtkSmartPointer<vtkCallbackCommand>::New())
+{
+    caption_->GetPositionCoordinate()->SetCoordinateSystemToNormalizedViewport();
+    caption_->SetPosition(0.02, 0.96);
+    caption_->GetTextProperty()->SetVerticalJustificationToTop();
+    caption_->GetTextProperty()->SetBold(true);
+    caption_->SetPickable(false);
+    vtkNew<vtkCoordinate> viewCoordinates;
+    viewCoordinates->SetCoordinateSystemToView();
+    rasterGrid_ = overlay(viewCoordinates);
+    rasterGrid_->GetProperty()->SetOpacity(0.85);
+    rasterGrid_->SetVisibility(false);
+    vanishing_ = overlay(viewCoordinates);
+    zFightingRing_ = overlay(viewCoordinates);
+    renderer_->AddActor2D(rasterGrid_);
+    renderer_->AddActor2D(vanishing_);
+    renderer_->AddActor2D(zFightingRing_); // over the vanishing lines
+    renderer_->AddActor2D(caption_);
+    renderer_->AddActor2D(legend_);
+
+    vtkCamera* camera = renderer_->GetActiveCamera();
+    camera->SetPosition(0, 0, 0);
+    camera->SetFocalPoint(0, 0, -1);
+    camera->SetViewUp(0, 1, 0);
+    camera->SetExplicitProjectionTransformMatrix(toVtk(Mat4<double>::Identity())); // until a scene gives its own
+    camera->SetUseExplicitProjectionTransformMatrix(true);
+    layout_->SetClientDataDeleteCallback([](void* data) { delete static_cast<Picture*>(data); });
+    layout_->SetCallback([](vtkObject* caller, unsigned long, void* data, void*) {
+        auto* renderer = static_cast<vtkRenderer*>(caller);
+        const auto* c = static_cast<const Picture*>(data);
+        if (!c)
+            return;
+        // Keep the window square on screen whatever the viewport's shape.
+        const double aspect = renderer->GetTiledAspectRatio();
+        Mat4<double> letterbox = Mat4<double>::Identity();
+        if (aspect > 1)
+            letterbox(0, 0) = 1 / aspect;
+        else
+            letterbox(1, 1) = aspect;
+        letterbox(0, 0) *= 0.92;
+        letterbox(1, 1) *= 0.92;
+        renderer->GetActiveCamera()->SetExplicitProjectionTransformMatrix(toVtk(letterbox * c->clip));
+        auto place = [&](const Vec2<double>& q) { return Vec2<double>(q.x() * letterbox(0, 0), q.y() * letterbox(1, 1)); };
+        for (const auto& [actor, segments] : c->lines) {
+            std::vector<Segment2> placed;
+            for (const Segment2& s : segments)
+                placed.push_back({place(s[0]), place(s[1])});
+            static_cast<vtkPolyDataMapper2D*>(actor->GetMapper())->SetInputData(linesData(placed));
+        }
+        // Raster pixels: a square each, with a gap so the grid shows.
+        auto points = vtkSmartPointer<vtkPoints>::New();
+        auto cells = vtkSmartPointer<vtkCellArray>::New();
+        auto colors = vtkSmartPointer<vtkUnsignedCharArray>::New();
+        colors->SetNumberOfComponents(3);
+        for (const auto& [corner, object] : c->pixels) {
+            const vtkIdType first = points->GetNumberOfPoints();
+            for (const Vec2<double>& d : {Vec2<double>(0.06, 0.06), Vec2<double>(0.94, 0.06), Vec2<double>(0.94, 0.94),
+                                          Vec2<double>(0.06, 0.94)}) {
+                const Vec2<double> q = place(corner + d.cwiseProduct(c->pixelSize));
+                points->InsertNextPoint(q.x(), q.y(), 0);
+            }
+            const vtkIdType ids[4] = {first, first + 1, first + 2, first + 3};
+            cells->InsertNextCell(4, ids);
+            const Rgb& rgb = kRasterPalette[std::size_t(object) % kRasterPalette.size()];
+            const unsigned char bytes[3] = {static_cast<unsigned char>(std::lround(255 * rgb.r)),
+                                            static_cast<unsigned char>(std::lround(255 * rgb.g)),
+                                            static_cast<unsigned char>(std::lround(255 * rgb.b))};
+            colors->InsertNextTypedTuple(bytes);
+        }
+        auto grid = vtkSmartPointer<vtkPolyData>::New();
+        grid->SetPoints(points);
+        grid->SetPolys(cells);
+        grid->GetCellData()->SetScalars(colors);
+        static_cast<vtkPolyDataMapper2D*>(c->grid->GetMapper())->SetInputData(grid);
+    });
+    renderer_->AddObserver(vtkCommand::StartEvent, layout_);
+}
+
+ProjectedView::~ProjectedView()
+{
+    renderer_->RemoveObserver(layout_);
+    clear();
+}
+
+void ProjectedView::clear()
+{
+    for (const StyledActor& a : actors_)
+        renderer_->RemoveActor(a.actor);
+    actors_.clear();
+}
+
+void ProjectedView::setScene(const EvaluatedScene& scene,
+                             const std::function<vtkSmartPointer<vtkPolyData>(const PolygonMesh&)>& dataOf,
+                             const std::vector<vtkSmartPointer<vtkPolyData>>& depthColored)
+{
+    clear();
+    const std::optional<vtkSmartPointer<vtkLookupTable>> bands =
+        scene.bands ? std::optional(bandColors(*scene.bands)) : std::nullopt;
+    for (std::size_t o = 0; o < scene.meshes.size(); ++o) {
+        const bool levels = depthColored[o] && bands;
+        auto faces = unlitActor(levels ? depthColored[o] : dataOf(*scene.meshes[o]));
+        faces->GetProperty()->SetOpacity(levels ? 0.9 : 0.35);
+        if (levels)
+            colorByLevels(faces, *bands);
+        actors_.push_back({faces, Element::Objects, true});
+        if (scene.scene.objects[o].type != ObjectType::Mesh) {
+            std::vector<Vec3<double>> ends;
+            for (const auto& e : meshEdgeIndices(*scene.meshes[o]))
+                ends.insert(ends.end(), {scene.meshes[o]->vertices[std::size_t(e[0])],
+                                         scene.meshes[o]->vertices[std::size_t(e[1])]});
+            auto edges = unlitActor(linesData(ends));
+            actors_.push_back({edges, Element::Objects, false});
+        }
+        const auto& fighting = scene.objectFaces[o].fighting;
+        if (fighting && !fighting->faces.empty()) // faces the buffer cannot order, outlined over the picture
+            for (const bool surface : {true, false}) {
+                std::vector<Vec3<double>> ends;
+                if (!surface)
+                    for (const auto& e : meshEdgeIndices(*fighting))
+                        ends.insert(ends.end(), {fighting->vertices[std::size_t(e[0])],
+                                                 fighting->vertices[std::size_t(e[1])]});
+                auto actor = unlitActor(surface ? facesData(*fighting) : linesData(ends));
+                actor->GetProperty()->SetOpacity(surface ? 0.8 : 1.0);
+                actors_.push_back({actor, Element::ZFighting, surface});
+            }
+    }
+    // The window's outline, at mid depth so that no clipping plane cuts it.
+    const auto& v = scene.setup.volume;
+    std::vector<Vec3<double>> border;
+    for (std::size_t k = 0; k < 4; ++k)
+        border.insert(border.end(), {(v[k] + v[k + 4]) / 2, (v[(k + 1) % 4] + v[(k + 1) % 4 + 4]) / 2});
+    actors_.push_back({unlitActor(linesData(border)), Element::Window, false});
+    for (const StyledActor& a : actors_)
+        renderer_->AddActor(a.actor);
+
+    Mat4<double> clip = scene.pipeline.clipMatrix();
+    if (scene.pipeline.convention == Convention::Foley)
+        clip = foleyToGlClip() * clip;
+    std::vector<std::pair<Vec2<double>, int>> pixels;
+    Vec2<double> pixelSize(0, 0);
+    if (const auto& raster = scene.outcomes.raster) {
+        pixelSize = Vec2<double>(2.0 / raster->width, 2.0 / raster->height);
+        for (int y = 0; y < raster->height; ++y)
+            for (int x = 0; x < raster->width; ++x) {
+                const int object = raster->object[std::size_t(y * raster->width + x)];
+                if (object >= 0)
+                    pixels.push_back({Vec2<double>(-1 + x * pixelSize.x(), -1 + y * pixelSize.y()), object});
+            }
+    }
+    rasterGrid_->SetVisibility(scene.outcomes.raster.has_value());
+    vanishing_->SetVisibility(!scene.vanishingLines.empty());
+    zFightingRing_->SetVisibility(!scene.zFightingRing.empty());
+    layout_->SetClientData(new Picture{clip, {{vanishing_, scene.vanishingLines}, {zFightingRing_, scene.zFightingRing}},
+                                       pixels, pixelSize, rasterGrid_});
+    layout_->Execute(renderer_, vtkCommand::StartEvent, nullptr); // the first frame needs the matrix too
+    entries_ = scene.projectedLegend;
+}
+
+void ProjectedView::applyStyle(Theme theme, int fontSize)
+{
+    const Rgb back = backgroundColor(theme, true);
+    renderer_->SetBackground(back.r, back.g, back.b);
+    for (const StyledActor& a : actors_) {
+        const Rgb c = styledColor(a.element, a.surface, theme);
+        a.actor->GetProperty()->SetColor(c.r, c.g, c.b);
+        a.actor->GetProperty()->SetLineWidth(a.element == Element::ZFighting ? 3 : 2);
+    }
+    const Rgb ink = elementColor(Element::Objects, theme);
+    caption_->GetTextProperty()->SetColor(ink.r, ink.g, ink.b);
+    caption_->GetTextProperty()->SetFontSize(fontSize);
+    const Rgb vanishing = elementColor(Element::Vanishing, theme), fights = elementColor(Element::ZFighting, theme);
+    vanishing_->GetProperty()->SetColor(vanishing.r, vanishing.g, vanishing.b);
+    vanishing_->GetProperty()->SetOpacity(0.85);
+    vanishing_->GetProperty()->SetLineWidth(1.5);
+    zFightingRing_->GetProperty()->SetColor(fights.r, fights.g, fights.b);
+    zFightingRing_->GetProperty()->SetLineWidth(2.5);
+    fillLegend(legend_, renderer_, entries_, theme, fontSize, false, false);
+}
+
+void ProjectedView::setCaption(const std::string& text)
+{
+    caption_->SetInput(text.c_str());
+}
+
+void ProjectedView::setTextVisible(bool visible)
+{
+    caption_->SetVisibility(visible);
+}
+
+} // namespace viewpipe::gui

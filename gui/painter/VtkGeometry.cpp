@@ -1,0 +1,72 @@
+#include "VtkGeometry.h"
+
+#include <vtkCellArray.h>
+#include <vtkIdTypeArray.h>
+#include <vtkPoints.h>
+#include <vtkPolyData.h>
+
+namespace viewpipe::gui {
+
+vtkSmartPointer<vtkPolyData> linesData(const std::vector<Vec3<double>>& ends)
+{
+    auto points = vtkSmartPointer<vtkPoints>::New();
+    points->SetDataTypeToDouble();
+    points->SetNumberOfPoints(vtkIdType(ends.size()));
+    auto lines = vtkSmartPointer<vtkCellArray>::New();
+    for (std::size_t i = 0; i + 1 < ends.size(); i += 2) {
+        points->SetPoint(vtkIdType(i), ends[i].data());
+        points->SetPoint(vtkIdType(i + 1), ends[i + 1].data());
+        const vtkIdType ids[2] = {vtkIdType(i), vtkIdType(i + 1)};
+        lines->InsertNextCell(2, ids);
+    }
+    auto data = vtkSmartPointer<vtkPolyData>::New();
+    data->SetPoints(points);
+    data->SetLines(lines);
+    return data;
+}
+
+vtkSmartPointer<vtkPolyData> linesData(const std::vector<Segment2>& segments)
+{
+    std::vector<Vec3<double>> ends;
+    for (const Segment2& s : segments)
+        for (const Vec2<double>& q : s)
+            ends.emplace_back(q.x(), q.y(), 0);
+    return linesData(ends);
+}
+
+vtkSmartPointer<vtkPolyData> facesData(const PolygonMesh& mesh)
+{
+    auto points = vtkSmartPointer<vtkPoints>::New();
+    points->SetDataTypeToDouble();
+    points->SetNumberOfPoints(vtkIdType(mesh.vertices.size()));
+    for (std::size_t i = 0; i < mesh.vertices.size(); ++i)
+        points->SetPoint(vtkIdType(i), mesh.vertices[i].data());
+    // Offsets and connectivity filled in one pass: a million faces take no per-cell insertion.
+    auto offsets = vtkSmartPointer<vtkIdTypeArray>::New();
+    auto connectivity = vtkSmartPointer<vtkIdTypeArray>::New();
+    offsets->SetNumberOfValues(vtkIdType(mesh.faces.size() + 1));
+    std::size_t total = 0;
+    for (const std::vector<int>& face : mesh.faces)
+        total += face.size();
+    connectivity->SetNumberOfValues(vtkIdType(total));
+    vtkIdType at = 0;
+    for (std::size_t f = 0; f < mesh.faces.size(); ++f) {
+        offsets->SetValue(vtkIdType(f), at);
+        for (int k : mesh.faces[f])
+            connectivity->SetValue(at++, k);
+    }
+    offsets->SetValue(vtkIdType(mesh.faces.size()), at);
+    auto polys = vtkSmartPointer<vtkCellArray>::New();
+    polys->SetData(offsets, connectivity);
+    auto data = vtkSmartPointer<vtkPolyData>::New();
+    data->SetPoints(points);
+    data->SetPolys(polys);
+    return data;
+}
+
+vtkSmartPointer<vtkPolyData> primitiveData(const Primitive& primitive)
+{
+    return primitive.kind == PrimitiveKind::Faces ? facesData(*primitive.faces) : linesData(primitive.segments);
+}
+
+} // namespace viewpipe::gui
