@@ -25,7 +25,7 @@ PrecisionChoice parsePrecision(const std::string& name, unsigned mpfrBits = 256)
 std::string precisionName(const PrecisionChoice& precision);
 
 // What the scene's effects find for its objects as polygon meshes (see
-// gui::objectMeshes), in double.
+// readObjectMeshes in viewpipe/scene_objects.hpp), in double.
 EffectOutcomes sceneEffects(const Scene& scene, const std::vector<PolygonMesh>& objects);
 
 // With effects listed, "effects" reports `outcomes` (from sceneEffects, or
