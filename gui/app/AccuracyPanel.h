@@ -13,7 +13,7 @@
 
 #include <vtkSmartPointer.h>
 
-#include "cli/bench.hpp"
+#include "viewpipe/precision_ladder.hpp"
 #include "style/Style.h"
 
 class QLabel;

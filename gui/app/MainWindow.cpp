@@ -44,7 +44,7 @@
 #include "DepthPanel.h"
 #include "ExportDialog.h"
 #include "GuideDialog.h"
-#include "cli/latex.hpp"
+#include "viewpipe/report/latex.hpp"
 #include "MatrixPanel.h"
 #include "ParameterPanel.h"
 #include "Theme.h"

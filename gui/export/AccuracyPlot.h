@@ -7,7 +7,7 @@
 
 #include <filesystem>
 
-#include "cli/bench.hpp"
+#include "viewpipe/precision_ladder.hpp"
 #include "style/Style.h"
 
 class vtkChartMatrix;

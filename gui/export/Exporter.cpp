@@ -15,24 +15,19 @@
 
 #include <algorithm>
 #include <cctype>
-#include <cerrno>
-#include <fcntl.h>
 #include <sstream>
 #include <cmath>
 #include <cstdio>
 #include <fstream>
-#include <spawn.h>
-#include <sys/wait.h>
 #include <unistd.h>
 
 #include "DepthPlot.h"
-#include "cli/latex.hpp"
-#include "cli/report.hpp"
+#include "Process.h"
+#include "viewpipe/report/latex.hpp"
+#include "viewpipe/report/report.hpp"
 #include "painter/StageTransition.h"
 #include "viewpipe/animation.hpp"
 #include "viewpipe/classical.hpp"
-
-extern char** environ;
 
 namespace viewpipe::gui {
 namespace fs = std::filesystem;
@@ -118,27 +113,6 @@ void writeVector(vtkRenderWindow* window, ScenePainter& painter, const fs::path&
     svg.insert(group + 3, "\n<image x=\"0\" y=\"0\" width=\"" + std::to_string(size[0]) + "\" height=\"" +
                               std::to_string(size[1]) + "\" xlink:href=\"data:image/png;base64," + encoded + "\"/>");
     writeFileAtomically(file, svg);
-}
-
-// Runs a program with arguments (no shell); returns its exit status.
-int runProgram(const std::vector<std::string>& arguments)
-{
-    std::vector<char*> argv;
-    for (const std::string& a : arguments)
-        argv.push_back(const_cast<char*>(a.c_str()));
-    argv.push_back(nullptr);
-    pid_t child;
-    posix_spawn_file_actions_t actions;
-    posix_spawn_file_actions_init(&actions);
-    posix_spawn_file_actions_addopen(&actions, STDIN_FILENO, "/dev/null", O_RDONLY, 0);
-    const int spawned = posix_spawnp(&child, argv[0], &actions, nullptr, argv.data(), environ);
-    posix_spawn_file_actions_destroy(&actions);
-    if (spawned != 0)
-        return -1;
-    int status = 0;
-    while (::waitpid(child, &status, 0) < 0 && errno == EINTR) {
-    }
-    return WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status);
 }
 
 std::string stageCaption(const std::vector<Stage<double>>& stages, int k)

@@ -1,17 +1,13 @@
 #include "VirtualDisplay.h"
 
-#include <cerrno>
+#include <csignal>
 #include <cstdlib>
 #include <stdexcept>
 #include <string>
-#include <csignal>
-#include <fcntl.h>
 #include <poll.h>
-#include <spawn.h>
-#include <sys/wait.h>
 #include <unistd.h>
 
-extern char** environ;
+#include "Process.h"
 
 namespace viewpipe::gui {
 
@@ -25,17 +21,13 @@ VirtualDisplay::VirtualDisplay()
         throw std::runtime_error("cannot start a virtual display: pipe failed");
     // Xvfb picks a free display number and writes it to the pipe (-displayfd).
     const std::string fd = std::to_string(fds[1]);
-    const char* argv[] = {"Xvfb", "-displayfd", fd.c_str(), "-screen", "0", "1920x1080x24", "-nolisten", "tcp", nullptr};
-    posix_spawn_file_actions_t actions;
-    posix_spawn_file_actions_init(&actions);
-    posix_spawn_file_actions_addclose(&actions, fds[0]);
-    posix_spawn_file_actions_addopen(&actions, STDERR_FILENO, "/dev/null", O_WRONLY, 0);
-    const int spawned = posix_spawnp(&server_, "Xvfb", &actions, nullptr, const_cast<char**>(argv), environ);
-    posix_spawn_file_actions_destroy(&actions);
+    ChildStreams streams;
+    streams.closeInChild = fds[0];
+    streams.stderrToNull = true;
+    server_ = startProgram({"Xvfb", "-displayfd", fd, "-screen", "0", "1920x1080x24", "-nolisten", "tcp"}, streams);
     ::close(fds[1]);
-    if (spawned != 0) {
+    if (server_ < 0) {
         ::close(fds[0]);
-        server_ = -1;
         throw std::runtime_error("no display, and Xvfb could not be started (install the xvfb package)");
     }
     std::string number;
@@ -46,7 +38,7 @@ VirtualDisplay::VirtualDisplay()
     ::close(fds[0]);
     if (number.empty()) {
         ::kill(server_, SIGTERM);
-        ::waitpid(server_, nullptr, 0);
+        waitForProgram(server_);
         server_ = -1;
         throw std::runtime_error("no display, and Xvfb did not start in time");
     }
@@ -58,7 +50,7 @@ VirtualDisplay::~VirtualDisplay()
     if (server_ <= 0)
         return;
     ::kill(server_, SIGTERM);
-    ::waitpid(server_, nullptr, 0);
+    waitForProgram(server_);
     ::unsetenv("DISPLAY");
 }
 

@@ -8,7 +8,7 @@
 #include <cstdio>
 #include <functional>
 
-#include "../core/support.hpp"
+#include "support.hpp"
 #include "viewpipe/accuracy.hpp"
 
 namespace viewpipe {

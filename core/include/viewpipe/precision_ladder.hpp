@@ -2,13 +2,11 @@
 
 // The precision ladder of `viewpipe bench` and the app's Accuracy panel: for
 // each tier, the time to build the normalizing matrices and to push vertices
-// through them, and the errors of core's accuracy metrics against an MPFR
-// reference (256 bits, checked against 512).
-
-#include <nlohmann/json.hpp>
+// through them, and the errors of the accuracy metrics (accuracy.hpp) against
+// an MPFR reference (256 bits, checked against 512). Its reports (JSON and
+// text) are the report library's (viewpipe/report/bench.hpp).
 
 #include <functional>
-#include <ostream>
 #include <string>
 #include <vector>
 
@@ -46,8 +44,5 @@ using BenchProgress = std::function<bool(int done, int total, const std::string&
 // NDC and pixel errors). Throws InputError for bad options.
 BenchResult runBench(const Scene& scene, const std::vector<Vec3<double>>& sceneVertices, const BenchOptions& options,
                      const BenchProgress& progress = {});
-
-nlohmann::json benchJson(const BenchResult& result);
-void printBench(std::ostream& out, const BenchResult& result);
 
 } // namespace viewpipe::cli

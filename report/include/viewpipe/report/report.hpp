@@ -24,12 +24,7 @@ struct PrecisionChoice {
 PrecisionChoice parsePrecision(const std::string& name, unsigned mpfrBits = 256);
 std::string precisionName(const PrecisionChoice& precision);
 
-// What the scene's effects find for its objects as polygon meshes (see
-// gui::objectMeshes), in double.
-EffectOutcomes sceneEffects(const Scene& scene, const std::vector<PolygonMesh>& objects);
-
-// With effects listed, "effects" reports `outcomes` (from sceneEffects, or
-// the scene painter's, which computed the same).
+// With effects listed, "effects" reports `outcomes` (the evaluated scene's).
 nlohmann::json pipelineJson(const Scene& scene, const PrecisionChoice& precision, const EffectOutcomes& outcomes);
 void printPipeline(std::ostream& out, const Scene& scene, const PrecisionChoice& precision,
                    const EffectOutcomes& outcomes);

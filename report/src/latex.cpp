@@ -1,9 +1,9 @@
-#include "latex.hpp"
+#include "viewpipe/report/latex.hpp"
 
 #include <cmath>
-#include <cstdio>
 #include <sstream>
 
+#include "viewpipe/format.hpp"
 #include "viewpipe/precision.hpp"
 
 namespace viewpipe::cli {
@@ -48,11 +48,7 @@ bool asFraction(const Exact& x, std::string& out)
 
 std::string decimal(const Exact& x, int digits)
 {
-    char buffer[64];
-    std::snprintf(buffer, sizeof buffer, "%.*g", digits, static_cast<double>(x));
-    std::string s = buffer;
-    if (s == "-0")
-        s = "0";
+    std::string s = formatSignificant(static_cast<double>(x), digits);
     const std::size_t e = s.find('e');
     if (e != std::string::npos) // 1.5e-07 -> 1.5 \times 10^{-7}
         s = s.substr(0, e) + " \\times 10^{" + std::to_string(std::stoi(s.substr(e + 1))) + "}";

@@ -1,6 +1,6 @@
 #pragma once
 
-// Shared helpers for the core tests: seeded random valid specifications and
+// Shared helpers for the core and numerics tests: seeded random valid specifications and
 // tolerances stated in units of the scalar type's epsilon.
 
 #include <gtest/gtest.h>

@@ -1,7 +1,6 @@
-#include "report.hpp"
+#include "viewpipe/report/report.hpp"
 
 #include <algorithm>
-#include <cstdio>
 #include <iomanip>
 #include <limits>
 #include <sstream>
@@ -11,6 +10,7 @@
 
 #include "viewpipe/accuracy.hpp"
 #include "viewpipe/classical.hpp"
+#include "viewpipe/format.hpp"
 
 namespace viewpipe::cli {
 namespace {
@@ -47,12 +47,10 @@ template <class T, int N> Json vectorJson(const Eigen::Matrix<T, N, 1>& v)
     return out;
 }
 
+// Six significant digits, in every precision.
 template <class T> std::string shortNumber(const T& x)
 {
-    const T cleaned = (x == T(0)) ? T(0) : x; // print -0 as 0
-    char buffer[64];
-    std::snprintf(buffer, sizeof buffer, "%.6g", static_cast<double>(cleaned));
-    return buffer;
+    return formatSignificant(static_cast<double>(x), 6);
 }
 
 template <class T> std::vector<std::string> matrixLines(const Mat4<T>& m)
@@ -185,11 +183,6 @@ std::string precisionName(const PrecisionChoice& precision)
     static const char* names[] = {"float", "double", "long-double", "float128", "mpfr"};
     const std::string name = names[static_cast<int>(precision.type)];
     return precision.type == Precision::Mpfr ? name + "-" + std::to_string(precision.mpfrBits) : name;
-}
-
-EffectOutcomes sceneEffects(const Scene& scene, const std::vector<PolygonMesh>& objects)
-{
-    return runEffects(pipelineFor<double>(scene), objects, scene.effects);
 }
 
 Json pipelineJson(const Scene& scene, const PrecisionChoice& precision, const EffectOutcomes& outcomes)

@@ -1,10 +1,9 @@
-#include "bench.hpp"
+#include "viewpipe/precision_ladder.hpp"
 
 #include <algorithm>
 #include <chrono>
-#include <cstdio>
-#include <iomanip>
-#include <sstream>
+
+#include "viewpipe/format.hpp"
 
 namespace viewpipe::cli {
 namespace {
@@ -97,13 +96,6 @@ BenchRow timeDoubleDouble(const CameraSpec<double>& camera, const std::vector<do
     return row;
 }
 
-std::string shortNumber(double x, int digits = 3)
-{
-    char buffer[32];
-    std::snprintf(buffer, sizeof buffer, "%.*g", digits, x);
-    return buffer;
-}
-
 } // namespace
 
 BenchResult runBench(const Scene& scene, const std::vector<Vec3<double>>& sceneVertices, const BenchOptions& options,
@@ -118,7 +110,7 @@ BenchResult runBench(const Scene& scene, const std::vector<Vec3<double>>& sceneV
     result.viewport = options.viewport;
     const ReferenceSolution ref = makeReference(scene.camera, 256);
     const double agreement = referenceAgreement(ref, makeReference(scene.camera, 512));
-    result.reference = "mpfr-256 (agrees with mpfr-512 to " + shortNumber(agreement, 2) + ")";
+    result.reference = "mpfr-256 (agrees with mpfr-512 to " + formatSignificant(agreement, 2) + ")";
     const std::vector<double> points = volumePoints(ref, options.vertices);
     const int total = 6;
     int done = 0;
@@ -155,62 +147,6 @@ BenchResult runBench(const Scene& scene, const std::vector<Vec3<double>>& sceneV
     if (progress)
         progress(total, total, "");
     return result;
-}
-
-nlohmann::json benchJson(const BenchResult& result)
-{
-    nlohmann::json rows = nlohmann::json::array();
-    for (const BenchRow& r : result.rows) {
-        const AccuracyMetrics& e = r.errors;
-        rows.push_back({{"precision", r.precision},
-                        {"bits", r.bits},
-                        {"epsilon", r.epsilon},
-                        {"build_ns", r.buildNs},
-                        {"vertex_ns", r.vertexNs},
-                        {"max_rel_error", e.maxRelativeError},
-                        {"corner_error", e.cornerError},
-                        {"orthogonality_error", e.orthogonalityError},
-                        {"determinant_error", e.determinantError},
-                        {"roundtrip_error", e.roundtripError},
-                        {"ndc_max_error", e.ndcMaxError},
-                        {"ndc_rms_error", e.ndcRmsError},
-                        {"pixel_max_error", e.pixelMaxError},
-                        {"pixel_rms_error", e.pixelRmsError}});
-    }
-    return {{"reference", result.reference},
-            {"vertices", result.vertices},
-            {"viewport", {result.viewport.width, result.viewport.height}},
-            {"rows", rows}};
-}
-
-void printBench(std::ostream& out, const BenchResult& result)
-{
-    out << "Reference: " << result.reference << "; " << result.vertices << " vertices timed; pixel errors at "
-        << result.viewport.width << "x" << result.viewport.height << ".\n"
-        << "Errors are absolute, with units of the type's epsilon in brackets.\n\n";
-    const std::vector<std::string> head = {"precision", "bits", "build ns", "ns/vertex", "max rel. error",
-                                           "corner error", "|RR^T-I|", "|det R-1|", "round trip", "NDC max",
-                                           "NDC rms", "pixel max"};
-    std::vector<std::vector<std::string>> table = {head};
-    for (const BenchRow& r : result.rows) {
-        auto cell = [&r](double x) {
-            return shortNumber(x, 2) + " [" + shortNumber(x / r.epsilon, 2) + "]";
-        };
-        const AccuracyMetrics& e = r.errors;
-        table.push_back({r.precision, std::to_string(r.bits), shortNumber(r.buildNs), shortNumber(r.vertexNs),
-                         cell(e.maxRelativeError), cell(e.cornerError), cell(e.orthogonalityError),
-                         cell(e.determinantError), cell(e.roundtripError), cell(e.ndcMaxError), cell(e.ndcRmsError),
-                         shortNumber(e.pixelMaxError, 2)});
-    }
-    std::vector<std::size_t> width(head.size(), 0);
-    for (const auto& row : table)
-        for (std::size_t c = 0; c < row.size(); ++c)
-            width[c] = std::max(width[c], row[c].size());
-    for (const auto& row : table) {
-        for (std::size_t c = 0; c < row.size(); ++c)
-            out << (c ? "  " : "") << (c == 0 ? std::left : std::right) << std::setw(int(width[c])) << row[c];
-        out << std::right << "\n";
-    }
 }
 
 } // namespace viewpipe::cli

@@ -1,0 +1,15 @@
+// The drawing half of `viewpipe bench`: its --plot.
+
+#include "drawing_commands.hpp"
+#include "export/AccuracyPlot.h"
+#include "export/VirtualDisplay.h"
+
+namespace viewpipe::commands {
+
+void writeBenchPlot(const cli::BenchResult& result, const std::string& file)
+{
+    const gui::VirtualDisplay display;
+    gui::writeAccuracyPlot(result, file, gui::Theme::Light);
+}
+
+} // namespace viewpipe::commands

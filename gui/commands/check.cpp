@@ -1,0 +1,23 @@
+// `viewpipe check`: a scene file and its meshes, read as every other command reads them.
+
+#include "command.hpp"
+#include "text_commands.hpp"
+#include "viewpipe/evaluated_scene.hpp"
+
+namespace viewpipe::commands {
+
+void addCheckCommand(CLI::App& app)
+{
+    auto scene = std::make_shared<std::string>();
+    CLI::App* command =
+        app.add_subcommand("check", "Validate a scene file; print nothing and exit 0 if it is valid");
+    command->add_option("SCENE", *scene, "Scene file (JSON)")->required();
+    setRun(command, [scene] {
+        return guarded(*scene, "viewpipe: internal error", [&] {
+            objectMeshes(loadScene(*scene));
+            return 0;
+        });
+    });
+}
+
+} // namespace viewpipe::commands

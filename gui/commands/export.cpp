@@ -1,0 +1,110 @@
+// `viewpipe export`: every stage as images for slides, the matrices as LaTeX and JSON.
+
+#include <atomic>
+#include <csignal>
+#include <cstdio>
+#include <sstream>
+
+#include "command.hpp"
+#include "drawing_commands.hpp"
+#include "export/Exporter.h"
+#include "export/VirtualDisplay.h"
+
+namespace viewpipe::commands {
+namespace {
+
+struct ExportCommandOptions {
+    std::string scene, out, size = "1280x720", stages = "all", theme = "light", formats = "png";
+    int scale = 1, fps = 30, digits = 4;
+    bool transparent = false, animate = false, quiet = false;
+    std::string framing = "per-stage";
+};
+
+std::atomic<bool> interrupted{false};
+
+extern "C" void onInterrupt(int)
+{
+    interrupted = true;
+}
+
+int runExport(const ExportCommandOptions& options)
+{
+    // The leading newline ends the progress bar's line.
+    return guarded("\n" + options.scene, "\nviewpipe export", [&] {
+        const std::shared_ptr<const EvaluatedScene> scene = evaluateScene(loadScene(options.scene));
+        gui::ExportOptions o;
+        o.out = options.out;
+        std::tie(o.width, o.height) = parseSize(options.size, "--size");
+        o.scale = options.scale;
+        o.stages = gui::parseStages(options.stages, int(scene->pipeline.stages.size()));
+        o.theme = options.theme == "dark" ? gui::Theme::Dark : gui::Theme::Light;
+        o.transparent = options.transparent;
+        std::istringstream formats(options.formats);
+        o.formats.clear();
+        for (std::string f; std::getline(formats, f, ',');)
+            o.formats.insert(f);
+        o.animate = options.animate;
+        o.fps = options.fps;
+        o.digits = options.digits;
+        o.fixedFraming = options.framing == "fixed";
+
+        std::signal(SIGINT, onInterrupt);
+        std::signal(SIGTERM, onInterrupt);
+        const gui::VirtualDisplay display;
+        const bool bar = !options.quiet;
+        const auto files = gui::exportStages(
+            scene, o,
+            [bar](int done, int total, const std::string& what) {
+                if (!bar)
+                    return;
+                const int width = 30, filled = width * done / total;
+                std::fprintf(stderr, "\r[%s%s] %3d%%  %-50.50s", std::string(std::size_t(filled), '#').c_str(),
+                             std::string(std::size_t(width - filled), ' ').c_str(), 100 * done / total,
+                             what.c_str());
+                std::fflush(stderr);
+            },
+            interrupted);
+        if (bar)
+            std::fprintf(stderr, "\n");
+        if (interrupted) {
+            std::cerr << "viewpipe export: interrupted; nothing was written\n";
+            return 130;
+        }
+        if (!options.quiet)
+            for (const auto& file : files)
+                std::cout << file.string() << "\n";
+        return 0;
+    });
+}
+
+} // namespace
+
+void addExportCommand(CLI::App& app)
+{
+    auto options = std::make_shared<ExportCommandOptions>();
+    CLI::App* command =
+        app.add_subcommand("export", "Export every stage as images for slides, the matrices as LaTeX and JSON");
+    command->add_option("SCENE", options->scene, "Scene file (JSON)")->required();
+    command->add_option("--out", options->out, "Folder for the files (created if missing)")->required();
+    command->add_option("--size", options->size, "Picture size WxH")->capture_default_str();
+    command->add_option("--scale", options->scale, "Pixels per unit of size, 1 to 4 (2 for high-DPI)")
+        ->capture_default_str();
+    command->add_option("--stages", options->stages, "all, or a list such as 0,2,4-5")->capture_default_str();
+    command->add_option("--theme", options->theme, "light or dark")
+        ->check(CLI::IsMember({"light", "dark"}))
+        ->capture_default_str();
+    command->add_flag("--transparent", options->transparent, "Transparent background (PNG)");
+    command->add_option("--format", options->formats, "png, svg, pdf, comma-separated")->capture_default_str();
+    command->add_flag("--animate", options->animate, "Also the animated transition, animation.mp4");
+    command->add_option("--fps", options->fps, "Frames per second of the animation")->capture_default_str();
+    command->add_option("--digits", options->digits, "Significant digits of inexact entries in matrices.tex")
+        ->capture_default_str();
+    command->add_flag("--quiet", options->quiet, "No progress bar, no list of files");
+    command->add_option("--framing", options->framing,
+                        "per-stage: each picture framed on its stage; fixed: one framing for all")
+        ->check(CLI::IsMember({"fixed", "per-stage"}))
+        ->capture_default_str();
+    setRun(command, [options] { return runExport(*options); });
+}
+
+} // namespace viewpipe::commands

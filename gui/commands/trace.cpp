@@ -1,0 +1,44 @@
+// `viewpipe trace`: one point through every stage and the divide.
+
+#include "command.hpp"
+#include "text_commands.hpp"
+#include "viewpipe/report/report.hpp"
+
+namespace viewpipe::commands {
+namespace {
+
+struct TraceOptions {
+    std::string scene;
+    std::vector<double> point;
+    bool json = false;
+    PrecisionOptions precision;
+};
+
+int runTrace(const TraceOptions& options)
+{
+    return guarded(options.scene, "viewpipe: internal error", [&] {
+        const Scene scene = loadScene(options.scene);
+        const cli::PrecisionChoice precision = cli::parsePrecision(options.precision.precision, options.precision.bits);
+        const Vec3<double> point(options.point[0], options.point[1], options.point[2]);
+        if (options.json)
+            std::cout << cli::traceJson(scene, point, precision).dump() << "\n";
+        else
+            cli::printTrace(std::cout, scene, point, precision);
+        return 0;
+    });
+}
+
+} // namespace
+
+void addTraceCommand(CLI::App& app)
+{
+    auto options = std::make_shared<TraceOptions>();
+    CLI::App* command = app.add_subcommand("trace", "Follow one point through every stage and the divide");
+    command->add_option("SCENE", options->scene, "Scene file (JSON)")->required();
+    command->add_option("--point", options->point, "World coordinates X Y Z")->expected(3)->required();
+    command->add_flag("--json", options->json, "One JSON object on stdout");
+    addPrecision(command, options->precision);
+    setRun(command, [options] { return runTrace(*options); });
+}
+
+} // namespace viewpipe::commands

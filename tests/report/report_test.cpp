@@ -1,0 +1,210 @@
+// The report library in process: LaTeX with exact fractions, the JSON objects
+// scripts rely on (docs/cli.md), and the one number format of the tables.
+
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <sstream>
+#include <string>
+
+#include "viewpipe/format.hpp"
+#include "viewpipe/report/bench.hpp"
+#include "viewpipe/report/latex.hpp"
+#include "viewpipe/report/report.hpp"
+#include "viewpipe/evaluated_scene.hpp"
+
+namespace viewpipe {
+namespace {
+
+using Json = nlohmann::json;
+
+const std::filesystem::path kScenes = std::filesystem::path(VIEWPIPE_DATA_DIR) / "scenes";
+
+Scene sceneFrom(const std::string& json)
+{
+    return parseScene(json, std::filesystem::temp_directory_path());
+}
+
+// The LaTeX from `begin` on.
+std::string after(const std::string& latex, const std::string& begin)
+{
+    const std::size_t at = latex.find(begin);
+    EXPECT_NE(at, std::string::npos) << begin << " not in\n" << latex;
+    return at == std::string::npos ? std::string() : latex.substr(at);
+}
+
+std::vector<std::string> keys(const Json& object)
+{
+    std::vector<std::string> out;
+    for (const auto& item : object.items())
+        out.push_back(item.key());
+    return out;
+}
+
+// The seeds' glOrtho example (seed 001): l, r = -20, 30; b, t = 10, 50;
+// n, f = 15, -25. P's entries 2/(r-l) = 1/25, -(r+l)/(r-l) = -1/5,
+// 2/(t-b) = 1/20, -(t+b)/(t-b) = -3/2, -2/(f-n) = 1/20, -(f+n)/(f-n) = -1/4.
+TEST(Latex, GlOrthoSeedPrintsExactFractions)
+{
+    const Scene scene = sceneFrom(R"({"camera": {"look_at": {"eye": [0, 0, 0], "center": [0, 0, -1],
+        "up": [0, 1, 0]}, "projection": {"type": "ortho", "left": -20, "right": 30, "bottom": 10, "top": 50,
+        "near": 15, "far": -25}}})");
+    const std::string projection = after(cli::matricesLatex(scene, 4), "P =\n\\begin{bmatrix}");
+    EXPECT_NE(projection.find("\\frac{1}{25} & 0 & 0 & -\\frac{1}{5} \\\\\n"), std::string::npos) << projection;
+    EXPECT_NE(projection.find("0 & \\frac{1}{20} & 0 & -\\frac{3}{2} \\\\\n"), std::string::npos) << projection;
+    EXPECT_NE(projection.find("0 & 0 & \\frac{1}{20} & -\\frac{1}{4} \\\\\n"), std::string::npos) << projection;
+    EXPECT_NE(projection.find("0 & 0 & 0 & 1\n\\end{bmatrix}"), std::string::npos) << projection;
+}
+
+// data/scenes/opengl-ortho.json: l, r = -20, 20; b, t = -15, 15; n, f = 10, 80:
+// 1/20, 1/15, -2/70 = -1/35 and -(f+n)/(f-n) = -9/7.
+TEST(Latex, OpenGlOrthoSceneProjectionIsExact)
+{
+    const std::string projection =
+        after(cli::matricesLatex(loadScene(kScenes / "opengl-ortho.json"), 4), "P =\n\\begin{bmatrix}");
+    EXPECT_NE(projection.find("\\frac{1}{20} & 0 & 0 & 0 \\\\\n"), std::string::npos) << projection;
+    EXPECT_NE(projection.find("0 & \\frac{1}{15} & 0 & 0 \\\\\n"), std::string::npos) << projection;
+    EXPECT_NE(projection.find("0 & 0 & -\\frac{1}{35} & -\\frac{9}{7} \\\\\n"), std::string::npos) << projection;
+}
+
+// Foley's house: PRP (8, 6, 84), window centered on the VRP, B = 25, so
+// DOP = (-8, -6, -84), SH_per's shx = -dopx/dopz = -2/21, shy = -1/14, and
+// S_per = diag(2 vrp'z / (100 (vrp'z + B)), ..., -1 / (vrp'z + B)) with
+// vrp'z = -84: 42/1475 and 1/59.
+TEST(Latex, HouseStagesAreExact)
+{
+    const Scene house = loadScene(kScenes / "house.json");
+    const std::string shear = cli::stageLatex(house, 4, 4);
+    EXPECT_EQ(shear.substr(0, shear.find('\n')), "\\mathit{SH}_{\\mathrm{per}} =");
+    EXPECT_NE(shear.find("  1 & 0 & -\\frac{2}{21} & 0 \\\\\n  0 & 1 & -\\frac{1}{14} & 0 \\\\\n"),
+              std::string::npos)
+        << shear;
+    const std::string scale = cli::stageLatex(house, 5, 4);
+    EXPECT_NE(scale.find("  \\frac{42}{1475} & 0 & 0 & 0 \\\\\n  0 & \\frac{42}{1475} & 0 & 0 \\\\\n"
+                         "  0 & 0 & \\frac{1}{59} & 0 \\\\\n"),
+              std::string::npos)
+        << scale;
+    const std::string all = cli::matricesLatex(house, 4);
+    EXPECT_NE(all.find("N_{\\mathrm{per}} = S_{\\mathrm{per}} \\, \\mathit{SH}_{\\mathrm{per}} \\, "
+                       "T(-\\mathit{PRP}) \\, R \\, T(-\\mathit{VRP}) ="),
+              std::string::npos)
+        << all;
+}
+
+// cos 45 degrees is irrational: a decimal with the digits asked for.
+TEST(Latex, IrrationalEntriesAreDecimals)
+{
+    const Scene oblique = sceneFrom(R"({"view": {"projection": "parallel", "vrp": [0, 0, 0], "vpn": [1, 0, 1],
+        "vup": [0, 1, 0], "prp": [0, 0, 10], "window": [-1, 1, -1, 1], "front": 1, "back": -1}})");
+    EXPECT_NE(cli::stageLatex(oblique, 2, 4).find("0.7071 & 0 & -0.7071 & 0"), std::string::npos);
+    EXPECT_NE(cli::stageLatex(oblique, 2, 6).find("0.707107 & 0 & -0.707107 & 0"), std::string::npos);
+}
+
+TEST(Latex, Symbols)
+{
+    EXPECT_EQ(cli::latexSymbol("SH_per"), "\\mathit{SH}_{\\mathrm{per}}");
+    EXPECT_EQ(cli::latexSymbol("T(-VRP)"), "T(-\\mathit{VRP})");
+    EXPECT_EQ(cli::latexSymbol("R"), "R");
+}
+
+TEST(PipelineJson, HouseHasTheContractedKeys)
+{
+    const Scene house = loadScene(kScenes / "house.json");
+    const Json j = cli::pipelineJson(house, cli::PrecisionChoice{}, evaluateScene(house)->outcomes);
+    EXPECT_EQ(keys(j), (std::vector<std::string>{"composite", "convention", "precision", "projection", "stages",
+                                                 "zmin"}));
+    EXPECT_EQ(j["convention"], "foley");
+    EXPECT_EQ(j["projection"], "perspective");
+    EXPECT_EQ(j["precision"], "double");
+    ASSERT_EQ(j["stages"].size(), 5u);
+    for (const Json& stage : j["stages"])
+        EXPECT_EQ(keys(stage), (std::vector<std::string>{"cumulative", "explanation", "matrix", "symbol"}));
+    EXPECT_EQ(j["stages"][3]["symbol"], "SH_per");
+    EXPECT_NEAR(j["stages"][3]["matrix"][0][2].get<double>(), -2.0 / 21, 1e-16);
+    EXPECT_NEAR(j["zmin"].get<double>(), -24.0 / 59, 1e-16);
+    EXPECT_EQ(j["stages"][4]["cumulative"], j["composite"]);
+}
+
+TEST(PipelineJson, WidePrecisionsAreStrings)
+{
+    const Scene house = loadScene(kScenes / "house.json");
+    const Json j = cli::pipelineJson(house, cli::parsePrecision("float128"), {});
+    EXPECT_EQ(j["precision"], "float128");
+    ASSERT_TRUE(j["zmin"].is_string());
+    EXPECT_EQ(j["zmin"].get<std::string>().substr(0, 20), "-4.06779661016949152");
+    EXPECT_EQ(cli::precisionName(cli::parsePrecision("mpfr", 300)), "mpfr-300");
+}
+
+TEST(TraceJson, HouseHasTheContractedKeys)
+{
+    const Scene house = loadScene(kScenes / "house.json");
+    const Json j = cli::traceJson(house, Vec3<double>(16, 10, 54), cli::PrecisionChoice{});
+    EXPECT_EQ(keys(j), (std::vector<std::string>{"clip", "convention", "divided", "inside", "point", "precision",
+                                                 "projection", "stages"}));
+    EXPECT_EQ(j["point"], Json({16.0, 10.0, 54.0}));
+    // After T(-PRP) the point is (16 - 8, 10 - 6, 54 - 84).
+    EXPECT_EQ(j["stages"][2]["point"], Json({8.0, 4.0, -30.0, 1.0}));
+}
+
+TEST(ClassifyJson, HouseHasTheContractedKeys)
+{
+    const Json j = cli::classifyJson(loadScene(kScenes / "house.json"));
+    EXPECT_EQ(keys(j), (std::vector<std::string>{"alpha_deg", "description", "family", "foreshortening", "kind",
+                                                 "projection", "vanishing_points"}));
+    EXPECT_EQ(j["projection"], "perspective");
+    // The view plane is z = 0: only lines along z converge.
+    ASSERT_EQ(j["vanishing_points"].size(), 1u);
+    EXPECT_EQ(j["vanishing_points"][0]["axis"], "z");
+}
+
+cli::BenchResult oneRow()
+{
+    cli::BenchResult result;
+    result.reference = "mpfr-256";
+    result.vertices = 10;
+    result.viewport = {640, 480};
+    cli::BenchRow row;
+    row.precision = "float";
+    row.bits = 24;
+    row.epsilon = std::ldexp(1.0, -23);
+    row.buildNs = 123.456;
+    row.errors.maxRelativeError = 3 * row.epsilon;
+    result.rows.push_back(row);
+    return result;
+}
+
+TEST(BenchReport, JsonHasTheContractedKeys)
+{
+    const Json j = cli::benchJson(oneRow());
+    EXPECT_EQ(keys(j), (std::vector<std::string>{"reference", "rows", "vertices", "viewport"}));
+    EXPECT_EQ(j["viewport"], Json({640, 480}));
+    ASSERT_EQ(j["rows"].size(), 1u);
+    EXPECT_EQ(keys(j["rows"][0]),
+              (std::vector<std::string>{"bits", "build_ns", "corner_error", "determinant_error", "epsilon",
+                                        "max_rel_error", "ndc_max_error", "ndc_rms_error", "orthogonality_error",
+                                        "pixel_max_error", "pixel_rms_error", "precision", "roundtrip_error",
+                                        "vertex_ns"}));
+}
+
+TEST(BenchReport, TableGivesErrorsInUnitsOfEpsilon)
+{
+    std::ostringstream out;
+    cli::printBench(out, oneRow());
+    const std::string table = out.str();
+    EXPECT_NE(table.find("Reference: mpfr-256; 10 vertices timed; pixel errors at 640x480."), std::string::npos);
+    // 3 * 2^-23 = 3.58e-07, three epsilons; the build time to three digits.
+    EXPECT_NE(table.find("3.6e-07 [3]"), std::string::npos) << table;
+    EXPECT_NE(table.find("123"), std::string::npos) << table;
+    EXPECT_EQ(table.find("123.4"), std::string::npos) << table;
+}
+
+TEST(Format, SignificantDigits)
+{
+    EXPECT_EQ(formatSignificant(-0.0, 6), "0");
+    EXPECT_EQ(formatSignificant(2.0 / 3, 3), "0.667");
+    EXPECT_EQ(formatSignificant(1.5e-7, 2), "1.5e-07");
+    EXPECT_EQ(formatSignificant(-24.0 / 59, 5), "-0.40678");
+}
+
+} // namespace
+} // namespace viewpipe
