@@ -1,0 +1,225 @@
+// Stage transitions: the real time of one transition frame of the app's
+// painter (the world view with every element, labels and legend included)
+// against a bare VTK loop that renders the same poly data for every element
+// (built once, outside the timing) moved by user matrices, for the house and
+// for the house beside a 10^6-triangle mesh, side by side at the same window
+// size. Also opening the mesh scene and jumping five stages. Run under Xvfb:
+//   xvfb-run -a -s "-screen 0 1920x1080x24" build/bench/transition_bench --benchmark_repetitions=3
+
+#include <benchmark/benchmark.h>
+
+#include <vtkActor.h>
+#include <vtkCamera.h>
+#include <vtkMatrix4x4.h>
+#include <vtkNew.h>
+#include <vtkPolyData.h>
+#include <vtkPolyDataMapper.h>
+#include <vtkProperty.h>
+#include <vtkRenderWindow.h>
+#include <vtkRenderer.h>
+
+#include <cmath>
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+#include <optional>
+
+#include "painter/EigenVtk.h"
+#include "painter/ScenePainter.h"
+#include "painter/StageTransition.h"
+#include "painter/VtkGeometry.h"
+#include "viewpipe/animation.hpp"
+
+namespace {
+
+using namespace viewpipe;
+namespace fs = std::filesystem;
+
+constexpr int kWindow = 800;
+constexpr int kFramesPerStep = 10; // transition frames timed in a step
+
+Scene house()
+{
+    return loadScene(std::string(VIEWPIPE_DATA_DIR) + "/scenes/house.json");
+}
+
+// A binary PLY of a wavy sheet of 2 * 707 * 707 (about 10^6) triangles, across the house's front.
+fs::path millionTriangleMesh()
+{
+    const fs::path file = fs::temp_directory_path() / "viewpipe-bench-mesh-1m.ply";
+    if (fs::exists(file))
+        return file;
+    constexpr int n = 708; // vertices along each side
+    const fs::path partial = file.string() + ".partial";
+    std::ofstream out(partial, std::ios::binary);
+    out << "ply\nformat binary_little_endian 1.0\nelement vertex " << n * n
+        << "\nproperty float x\nproperty float y\nproperty float z\nelement face " << 2 * (n - 1) * (n - 1)
+        << "\nproperty list uchar int vertex_indices\nend_header\n";
+    for (int j = 0; j < n; ++j)
+        for (int i = 0; i < n; ++i) {
+            const float x = -4 + 24.0f * float(i) / (n - 1), y = -2 + 20.0f * float(j) / (n - 1);
+            const float xyz[3] = {x, y, 58 + 1.5f * std::sin(x) * std::cos(y)};
+            out.write(reinterpret_cast<const char*>(xyz), sizeof xyz);
+        }
+    for (int j = 0; j + 1 < n; ++j)
+        for (int i = 0; i + 1 < n; ++i) {
+            const int a = j * n + i, b = a + 1, c = a + n, d = c + 1;
+            for (const std::array<int, 3>& t : {std::array<int, 3>{a, b, d}, std::array<int, 3>{a, d, c}}) {
+                const unsigned char three = 3;
+                out.write(reinterpret_cast<const char*>(&three), 1);
+                out.write(reinterpret_cast<const char*>(t.data()), sizeof(int) * 3);
+            }
+        }
+    out.close();
+    fs::rename(partial, file);
+    return file;
+}
+
+Scene withMesh()
+{
+    Scene scene = house();
+    SceneObject mesh;
+    mesh.type = ObjectType::Mesh;
+    mesh.resolvedPath = millionTriangleMesh();
+    mesh.path = mesh.resolvedPath.string();
+    scene.objects.push_back(mesh);
+    return scene;
+}
+
+Scene sceneNamed(const std::string& name)
+{
+    return name == "house" ? house() : withMesh();
+}
+
+struct Window {
+    vtkNew<vtkRenderWindow> window;
+    vtkNew<vtkRenderer> renderer;
+    Window()
+    {
+        window->SetOffScreenRendering(1);
+        window->SetSize(kWindow, kWindow);
+        window->AddRenderer(renderer);
+    }
+};
+
+// Positions along the step from stage `from` to `from + 1`, for frame k of kFramesPerStep.
+double progress(int k)
+{
+    return double(k % kFramesPerStep + 1) / kFramesPerStep;
+}
+
+void appFrame(benchmark::State& state, const std::string& name)
+{
+    Window w;
+    gui::ScenePainter painter(w.renderer, nullptr);
+    const auto scene = evaluateScene(sceneNamed(name));
+    painter.setScene(scene);
+    w.window->Render();
+    painter.resetView();
+    const auto& stages = scene->pipeline.stages;
+    int step = 0, k = 0;
+    std::optional<gui::StageTransition> transition;
+    transition.emplace(painter, stages, 0, 1);
+    for (auto _ : state) {
+        if (k == kFramesPerStep) { // the next step, as the app plays through the stages
+            state.PauseTiming();
+            step = (step + 1) % int(stages.size());
+            transition.emplace(painter, stages, step, step + 1);
+            k = 0;
+            state.ResumeTiming();
+        }
+        transition->apply(progress(k++));
+        w.window->Render();
+    }
+}
+
+void bareVtkFrame(benchmark::State& state, const std::string& name)
+{
+    Window w;
+    const auto scene = evaluateScene(sceneNamed(name));
+    std::vector<vtkSmartPointer<vtkActor>> actors;
+    for (const Primitive& p : scene->primitives) {
+        vtkNew<vtkPolyDataMapper> mapper;
+        mapper->SetInputData(gui::primitiveData(p));
+        auto actor = vtkSmartPointer<vtkActor>::New();
+        actor->SetMapper(mapper);
+        actor->GetProperty()->LightingOff();
+        actor->GetProperty()->SetOpacity(p.opacity);
+        w.renderer->AddActor(actor);
+        actors.push_back(actor);
+    }
+    w.renderer->ResetCamera();
+    const auto& stages = scene->pipeline.stages;
+    int frame = 0;
+    for (auto _ : state) {
+        const int step = frame / kFramesPerStep % int(stages.size());
+        const auto matrix = gui::toVtk(cumulativeAt(stages, step + progress(frame++)));
+        for (const auto& actor : actors)
+            actor->SetUserMatrix(matrix);
+        w.window->Render();
+    }
+}
+
+// Opening: reading the scene and its mesh, evaluating it, building the props and the first frame.
+void openScene(benchmark::State& state, const std::string& name)
+{
+    const Scene scene = sceneNamed(name);
+    for (auto _ : state) {
+        Window w;
+        gui::ScenePainter painter(w.renderer, nullptr);
+        painter.setScene(evaluateScene(scene));
+        w.window->Render();
+        painter.resetView();
+        w.window->Render();
+    }
+}
+
+// From stage 5 to the world, one step at a time as the app does, each with kFramesPerStep frames.
+void jumpFiveStages(benchmark::State& state, const std::string& name)
+{
+    Window w;
+    gui::ScenePainter painter(w.renderer, nullptr);
+    const auto scene = evaluateScene(sceneNamed(name));
+    painter.setScene(scene);
+    w.window->Render();
+    painter.resetView();
+    const auto& stages = scene->pipeline.stages;
+    for (auto _ : state) {
+        state.PauseTiming();
+        gui::StageTransition::showStage(painter, stages, 5);
+        w.window->Render();
+        state.ResumeTiming();
+        for (int stage = 5; stage > 0; --stage) {
+            gui::StageTransition transition(painter, stages, stage, stage - 1);
+            for (int k = 0; k < kFramesPerStep; ++k) {
+                transition.apply(progress(k));
+                w.window->Render();
+            }
+        }
+    }
+}
+
+} // namespace
+
+int main(int argc, char** argv)
+{
+    for (const std::string name : {"house", "mesh_1m"}) {
+        benchmark::RegisterBenchmark(("Frame/app/" + name).c_str(), appFrame, name)
+            ->Unit(benchmark::kMillisecond)
+            ->UseRealTime();
+        benchmark::RegisterBenchmark(("Frame/bare_vtk/" + name).c_str(), bareVtkFrame, name)
+            ->Unit(benchmark::kMillisecond)
+            ->UseRealTime();
+    }
+    benchmark::RegisterBenchmark("Open/app/mesh_1m", openScene, std::string("mesh_1m"))
+        ->Unit(benchmark::kMillisecond)
+        ->UseRealTime()
+        ->Iterations(3);
+    benchmark::RegisterBenchmark("JumpFiveStages/app/mesh_1m", jumpFiveStages, std::string("mesh_1m"))
+        ->Unit(benchmark::kMillisecond)
+        ->UseRealTime()
+        ->Iterations(2);
+    benchmark::Initialize(&argc, argv);
+    benchmark::RunSpecifiedBenchmarks();
+    benchmark::Shutdown();
+}
