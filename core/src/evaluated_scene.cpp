@@ -407,7 +407,7 @@ std::shared_ptr<const EvaluatedScene> evaluate(const Scene& scene, MeshCache* ca
         add.label(Element::ViewAxes, "VRP", vrp);
 
     if (setup.perspective) {
-        add.faces(Element::Prp, sphereMesh(setup.prp, 1.6 * marker), 1.0);
+        add.faces(Element::Prp, sphereMesh(setup.prp, 1.6 * marker), 1.0).markedPoint = setup.prp;
         add.label(Element::Prp, foley ? "PRP" : "eye", setup.prp);
     }
 
@@ -418,13 +418,13 @@ std::shared_ptr<const EvaluatedScene> evaluate(const Scene& scene, MeshCache* ca
     // In perspective, small beside its distance from the eye, or the divide would blow it up.
     const double centerMarker =
         setup.perspective ? std::min(marker, 0.05 * (setup.windowCenter - setup.prp).norm()) : marker;
-    add.faces(Element::Window, sphereMesh(setup.windowCenter, centerMarker), 1.0);
+    add.faces(Element::Window, sphereMesh(setup.windowCenter, centerMarker), 1.0).markedPoint = setup.windowCenter;
     add.label(Element::Window, "CW", setup.windowCenter);
 
     const Vec3<double> dop = setup.windowCenter - setup.prp;
     const double head = std::min(0.06 * out.size, 0.4 * dop.norm());
     add.lines(Element::Dop, {{setup.prp, setup.windowCenter - dop.normalized() * head}}, 1.0);
-    add.faces(Element::Dop, coneMesh(setup.windowCenter, dop, head), 1.0);
+    add.faces(Element::Dop, coneMesh(setup.windowCenter, dop, head), 1.0).markedPoint = setup.windowCenter;
     add.label(Element::Dop, "DOP", setup.prp + 0.3 * dop);
 
     const auto& v = setup.volume;

@@ -222,6 +222,8 @@ void ScenePainter::show(const Mat4<double>& cumulative, double canonicalOpacity)
             layer.actor->GetProperty()->SetOpacity(canonicalOpacity);
         } else {
             layer.actor->SetUserMatrix(matrix);
+            if (const auto& point = layer.primitive->markedPoint)
+                layer.actor->SetVisibility(projectPoint(cumulative, *point).has_value());
         }
     }
     for (Label& label : labels_)
@@ -400,12 +402,14 @@ void ScenePainter::markTraced(const std::optional<Vec3<double>>& point)
     tracedMarker_->kind = PrimitiveKind::Faces;
     tracedMarker_->faces = std::make_shared<const PolygonMesh>(sphereMesh(*point, 2.5 * scene_->markerSize));
     tracedMarker_->bounds.extend(*point);
+    tracedMarker_->markedPoint = *point;
     tracedLabel_ = std::make_unique<viewpipe::Label>(viewpipe::Label{Element::Traced, "traced", *point});
     addLayer(*tracedMarker_, facesData(*tracedMarker_->faces));
     addLabel(*tracedLabel_);
     applyStyle();
     // Only the new marker needs placing at the stage shown: the scene's layers are there already.
     layers_.back().actor->SetUserMatrix(toVtk(shownMatrix_));
+    layers_.back().actor->SetVisibility(projectPoint(shownMatrix_, *point).has_value());
     placeLabel(labels_.back());
 }
 

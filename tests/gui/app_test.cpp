@@ -37,6 +37,7 @@
 #include "app/ClassicalDialog.h"
 #include "app/DepthPanel.h"
 #include "app/MainWindow.h"
+#include "viewpipe/animation.hpp"
 #include "app/MatrixPanel.h"
 #include "app/ParameterPanel.h"
 #include "painter/EigenVtk.h"
@@ -254,6 +255,32 @@ private slots:
         // After T(-PRP) the vertex is (16 - 8, 10 - 6, 54 - 84) = (8, 4, -30).
         QVERIFY2(w.matrices()->traceText().contains("<td align='right'>8</td><td align='right'>4</td>"
                                                     "<td align='right'>-30</td>"),
+                 qPrintable(w.matrices()->traceText()));
+    }
+
+    // Under a projective stage matrix (gluPerspective's), where VTK's own
+    // pickers would not look: the click finds the vertex drawn there.
+    void clickTracesAVertexThroughAProjectiveStage()
+    {
+        MainWindow& w = *window_;
+        QVERIFY(w.openScene(QString(VIEWPIPE_DATA_DIR) + "/scenes/opengl-perspective.json"));
+        const int last = w.stageCount();
+        w.goToStage(last, false);
+        auto* view = w.findChild<QVTKOpenGLNativeWidget*>("worldView");
+        vtkRenderer* renderer = view->renderWindow()->GetRenderers()->GetFirstRenderer();
+        const Vec4<double> h = cumulativeAt(w.document()->pipeline().stages, last) * Vec4<double>(16, 10, 54, 1);
+        QVERIFY(h.w() > 0 && std::abs(h.w() - 1) > 0.1); // projective: the divide moves the point
+        const Vec3<double> p = h.head<3>() / h.w();
+        renderer->SetWorldPoint(p.x(), p.y(), p.z(), 1);
+        renderer->WorldToDisplay();
+        double display[3];
+        renderer->GetDisplayPoint(display);
+        const double ratio = view->devicePixelRatioF();
+        const QPoint at(int(std::lround(display[0] / ratio)), int(std::lround(view->height() - display[1] / ratio)));
+        QTest::mouseClick(view, Qt::LeftButton, Qt::NoModifier, at);
+        QTRY_VERIFY(w.matrices()->traceText().contains("Traced vertex"));
+        QVERIFY2(w.matrices()->traceText().contains("<td align='right'>16</td><td align='right'>10</td>"
+                                                    "<td align='right'>54</td>"),
                  qPrintable(w.matrices()->traceText()));
     }
 

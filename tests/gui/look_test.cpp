@@ -31,10 +31,12 @@
 #include <set>
 
 #include "app_window.h"
+#include "files.h"
 #include "app/ExportDialog.h"
 #include "app/GuideDialog.h"
 #include "app/MainWindow.h"
 #include "app/MatrixPanel.h"
+#include "viewpipe/animation.hpp"
 
 using namespace viewpipe;
 using namespace viewpipe::gui;
@@ -155,6 +157,47 @@ private slots:
             QVERIFY(pixelsOf(window, "worldView", fighting) < 10);
             QVERIFY(pixelsOf(window, "projectedView", fighting) < 10);
         }
+    }
+
+    // The stage's matrix moves every prop on the GPU, which clips what lies
+    // behind the eye: an element partly behind it shows its front part (it
+    // used to vanish whole). The eye stands inside the house here.
+    void elementsPartlyBehindTheEyeShowTheirFrontPart()
+    {
+        // Text is drawn in the edges' color too: count what the house adds to the picture without it.
+        const QString camera = R"("camera": {"look_at": {"eye": [8, 6, 40], "center": [8, 6, 0], "up": [0, 1, 0]},
+            "projection": {"type": "perspective", "fovy_deg": 70, "aspect": 1.5, "near": 2, "far": 60}})";
+        const QString withHouse = QDir::temp().filePath("viewpipe-look-eye-in-house.json");
+        const QString without = QDir::temp().filePath("viewpipe-look-eye-alone.json");
+        QVERIFY(writeFile(withHouse, ("{" + camera + R"(, "objects": [{"type": "house"}]})").toUtf8()));
+        QVERIFY(writeFile(without, ("{" + camera + R"(, "objects": []})").toUtf8()));
+        MainWindow window;
+        window.setPopupsEnabled(false);
+        window.resize(1600, 950);
+        window.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&window));
+        window.setTheme(Theme::Light); // the canonical outline is black, the edges not quite
+        const Rgb edges = elementColor(Element::Objects, Theme::Light);
+        QVERIFY(window.openScene(withHouse));
+        const auto stages = window.document()->pipeline().stages;
+        const PolygonMesh house = houseMesh();
+        int checked = 0;
+        for (int k = 1; k <= int(stages.size()); ++k) {
+            const Mat4<double> m = cumulativeAt(stages, k);
+            if (std::none_of(house.vertices.begin(), house.vertices.end(),
+                             [&](const Vec3<double>& p) { return (m * p.homogeneous()).w() <= 0; }))
+                continue;
+            QVERIFY(window.openScene(without));
+            window.goToStage(k, false);
+            const int alone = pixelsOf(window, "worldView", edges);
+            QVERIFY(window.openScene(withHouse));
+            window.goToStage(k, false);
+            const int drawn = pixelsOf(window, "worldView", edges);
+            QVERIFY2(drawn > alone + 30, qPrintable(QString("stage %1: %2 pixels with the house, %3 without")
+                                                        .arg(k).arg(drawn).arg(alone)));
+            ++checked;
+        }
+        QVERIFY2(checked > 0, "no stage puts a vertex behind the eye");
     }
 
     void matricesPanelCutsNothing()

@@ -6,6 +6,7 @@
 #include <QApplication>
 #include <QDirIterator>
 #include <QDockWidget>
+#include <QLineEdit>
 #include <QListWidget>
 #include <QMenu>
 #include <QMenuBar>
@@ -29,6 +30,7 @@
 #include "app/Autosave.h"
 #include "app/MainWindow.h"
 #include "app/MatrixPanel.h"
+#include "app/ParameterPanel.h"
 
 using namespace viewpipe;
 using namespace viewpipe::gui;
@@ -216,6 +218,41 @@ private slots:
         QCoreApplication::processEvents(); // a result sent before the abandon would arrive now
         QVERIFY(!w.accuracy()->hasResult());
         QVERIFY(!w.accuracy()->isRunning());
+    }
+
+    // One edit typed into a field is one evaluation of the scene (the
+    // pipeline built once) and reads no mesh; undo, redo and stepping
+    // through the stages evaluate nothing.
+    void oneEditIsOneEvaluationAndNoMeshRead()
+    {
+        MainWindow& w = *window_;
+        const QDir dir = QDir::temp();
+        QVERIFY(writeFile(dir.filePath("viewpipe-session-tetrahedron.obj"),
+                          "v 0 0 30\nv 16 0 30\nv 8 16 30\nv 8 6 50\nf 1 3 2\nf 1 2 4\nf 2 3 4\nf 3 1 4\n"));
+        const QString scene = dir.filePath("viewpipe-session-mesh.json");
+        QString text = QString::fromStdString(sceneToJson(loadScene(kHouse.toStdString())));
+        text.replace(R"("objects": [)", R"("objects": [{"type": "mesh", "path": "viewpipe-session-tetrahedron.obj"}, )");
+        QVERIFY(writeFile(scene, text.toUtf8()));
+        QVERIFY(w.openScene(scene));
+        QCOMPARE(w.document()->scene().objects.size(), std::size_t(2));
+        const SceneEvaluator& evaluator = w.document()->evaluator();
+        const long evaluations = evaluator.evaluations(), reads = evaluator.meshReads();
+        QVERIFY(reads >= 1);
+
+        QLineEdit* back = w.parameters()->fields("view.back").front();
+        back->selectAll();
+        QTest::keyClicks(back, "20");
+        QTest::keyClick(back, Qt::Key_Return);
+        QCOMPARE(std::get<foley::ViewSpec<double>>(w.document()->scene().camera).back, 20.0);
+        QCOMPARE(evaluator.evaluations(), evaluations + 1);
+        QCOMPARE(evaluator.meshReads(), reads);
+
+        QTest::keyClick(&w, Qt::Key_Z, Qt::ControlModifier);
+        QTest::keyClick(&w, Qt::Key_Y, Qt::ControlModifier);
+        for (int stage = 1; stage <= w.stageCount(); ++stage)
+            w.goToStage(stage, false);
+        QCOMPARE(evaluator.evaluations(), evaluations + 1);
+        QCOMPARE(evaluator.meshReads(), reads);
     }
 
     // Found: Ctrl+Y did nothing.

@@ -44,6 +44,9 @@ struct Primitive {
     int object = -1;            // the scene object drawn, or -1
     bool depthColored = false;  // faces colored by the level the depth buffer stores
     bool canonical = false;     // drawn where it is (not through the stage's matrix)
+    // A point's marker (a sphere, a cone's tip): drawn only while the point
+    // has an image, as its label is; never stretched through infinity.
+    std::optional<Vec3<double>> markedPoint;
     Eigen::AlignedBox<double, 3> bounds;
 };
 

@@ -1,0 +1,216 @@
+// The evaluated scene: what every picture reads. Checked against Foley's
+// house (CGPP ch. 6: VRP at the origin, VPN +z, PRP (8, 6, 84), window
+// [-50, 50]^2, F = 60, B = 25, z_min = -24/59... see foley_test), against
+// invariants of the normalizing transformation, and for the mesh cache.
+
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+#include <set>
+
+#include "support.hpp"
+#include "viewpipe/evaluated_scene.hpp"
+
+namespace viewpipe {
+namespace {
+
+namespace fs = std::filesystem;
+
+Scene house()
+{
+    return loadScene(std::string(VIEWPIPE_DATA_DIR) + "/scenes/house.json");
+}
+
+const Label& labelNamed(const EvaluatedScene& scene, const std::string& text)
+{
+    for (const Label& label : scene.labels)
+        if (label.text == text)
+            return label;
+    ADD_FAILURE() << "no label " << text;
+    static const Label none{Element::Objects, "", Vec3<double>::Zero()};
+    return none;
+}
+
+std::vector<const Primitive*> primitivesOf(const EvaluatedScene& scene, Element element, PrimitiveKind kind)
+{
+    std::vector<const Primitive*> found;
+    for (const Primitive& p : scene.primitives)
+        if (p.element == element && p.kind == kind)
+            found.push_back(&p);
+    return found;
+}
+
+void expectNear(const Vec3<double>& a, const Vec3<double>& b, double tolerance = 1e-12)
+{
+    EXPECT_LE((a - b).norm(), tolerance) << a.transpose() << " vs " << b.transpose();
+}
+
+TEST(EvaluatedScene, HouseLabelsSitOnTheirElements)
+{
+    const auto scene = evaluateScene(house());
+    expectNear(labelNamed(*scene, "VRP").anchor, Vec3<double>(0, 0, 0));
+    expectNear(labelNamed(*scene, "PRP").anchor, Vec3<double>(8, 6, 84));
+    expectNear(labelNamed(*scene, "CW").anchor, Vec3<double>(0, 0, 0)); // the window [-50, 50]^2 is centered on VRP
+    // The DOP runs from the PRP to CW; its label sits 30% of the way.
+    expectNear(labelNamed(*scene, "DOP").anchor, Vec3<double>(8, 6, 84) + 0.3 * Vec3<double>(-8, -6, -84));
+    // The front plane's label at a corner of the front face, z = F = 60.
+    EXPECT_DOUBLE_EQ(labelNamed(*scene, "front (F)").anchor.z(), 60);
+    EXPECT_DOUBLE_EQ(labelNamed(*scene, "back (B)").anchor.z(), 25);
+}
+
+TEST(EvaluatedScene, EveryElementOfTheSetUpIsThere)
+{
+    const auto scene = evaluateScene(house());
+    std::set<Element> elements;
+    for (const Primitive& p : scene->primitives) {
+        elements.insert(p.element);
+        EXPECT_FALSE(p.bounds.isEmpty());
+    }
+    for (Element e : {Element::Objects, Element::WorldAxes, Element::ViewAxes, Element::Prp, Element::Window,
+                      Element::Dop, Element::Volume, Element::FrontPlane, Element::BackPlane, Element::Projectors,
+                      Element::Canonical})
+        EXPECT_TRUE(elements.count(e)) << int(e);
+    // The house's faces shared with the mesh it was made from, its edges once each.
+    const auto faces = primitivesOf(*scene, Element::Objects, PrimitiveKind::Faces);
+    ASSERT_EQ(faces.size(), 1u);
+    EXPECT_EQ(faces[0]->faces, scene->meshes[0]);
+    const auto edges = primitivesOf(*scene, Element::Objects, PrimitiveKind::Lines);
+    ASSERT_EQ(edges.size(), 1u);
+    EXPECT_EQ(edges[0]->segments.size(), 2u * 15u); // 5 + 5 outline edges and 5 joining them
+    EXPECT_FALSE(scene->outcomes.clip || scene->outcomes.cull || scene->outcomes.depth || scene->outcomes.raster);
+    EXPECT_TRUE(scene->effectsNote.empty());
+}
+
+// N_per takes the view volume onto the canonical perspective volume
+// (x = +-z, y = +-z, z_min >= z >= -1), and the canonical outline drawn is that volume.
+TEST(EvaluatedScene, ViewVolumeMapsOntoTheCanonicalOneDrawn)
+{
+    const auto scene = evaluateScene(house());
+    const double zMin = *scene->pipeline.zmin;
+    EXPECT_NEAR(zMin, -24.0 / 59, 1e-15);
+    auto onCanonical = [&](const Vec3<double>& q) {
+        EXPECT_NEAR(std::abs(q.x()), std::abs(q.z()), 1e-12);
+        EXPECT_NEAR(std::abs(q.y()), std::abs(q.z()), 1e-12);
+        EXPECT_TRUE(std::abs(q.z() - zMin) < 1e-12 || std::abs(q.z() + 1) < 1e-12) << q.z();
+    };
+    const auto volume = primitivesOf(*scene, Element::Volume, PrimitiveKind::Lines);
+    ASSERT_EQ(volume.size(), 1u);
+    for (const Vec3<double>& p : volume[0]->segments)
+        onCanonical(scene->pipeline.composite.topRows<3>() * p.homogeneous());
+    const auto canonical = primitivesOf(*scene, Element::Canonical, PrimitiveKind::Lines);
+    ASSERT_EQ(canonical.size(), 1u);
+    EXPECT_TRUE(canonical[0]->canonical);
+    EXPECT_EQ(canonical[0]->segments.size(), 24u); // 12 edges
+    for (const Vec3<double>& q : canonical[0]->segments)
+        onCanonical(q);
+}
+
+// In perspective every projector passes through the center of projection.
+TEST(EvaluatedScene, ProjectorsMeetAtThePrp)
+{
+    const auto scene = evaluateScene(house());
+    const auto projectors = primitivesOf(*scene, Element::Projectors, PrimitiveKind::Lines);
+    ASSERT_EQ(projectors.size(), 1u);
+    ASSERT_EQ(projectors[0]->segments.size(), 8u);
+    for (std::size_t k = 0; k < 8; k += 2) {
+        const Vec3<double> a = projectors[0]->segments[k], b = projectors[0]->segments[k + 1];
+        const Vec3<double> prp(8, 6, 84);
+        EXPECT_LE((b - a).normalized().cross((prp - a).normalized()).norm(), 1e-12);
+    }
+}
+
+TEST(EvaluatedScene, EffectsAreComputedOnlyWhenListed)
+{
+    Scene scene = house();
+    scene.effects = withEffect(withEffect(scene.effects, "clip", true), "cull", true);
+    const auto evaluated = evaluateScene(scene);
+    EXPECT_TRUE(evaluated->outcomes.clip && evaluated->outcomes.cull);
+    EXPECT_FALSE(evaluated->outcomes.depth || evaluated->outcomes.raster);
+    EXPECT_NE(evaluated->effectsNote.find("clip: "), std::string::npos);
+    EXPECT_NE(evaluated->effectsNote.find("cull: "), std::string::npos);
+    // Culled faces are ghosted apart from the front ones; together they are the house's 7.
+    const ObjectFaces& faces = evaluated->objectFaces[0];
+    EXPECT_EQ(faces.front->faces.size() + faces.culled->faces.size(), 7u);
+    EXPECT_EQ(int(faces.culled->faces.size()), evaluated->outcomes.cull->culled);
+}
+
+// An OpenGL camera with far = infinity (exact in the pipeline) is drawn cut short, and says so.
+TEST(EvaluatedScene, InfiniteFarPlaneIsDrawnCutShort)
+{
+    const Scene scene = parseScene(R"({"camera": {"look_at": {"eye": [40, 30, 100], "center": [8, 8, 42], "up": [0, 1, 0]},
+        "projection": {"type": "perspective", "fovy_deg": 40, "aspect": 1.5, "near": 30, "far": "infinity"}},
+        "objects": [{"type": "house"}]})",
+                                   ".");
+    const auto evaluated = evaluateScene(scene);
+    // gluPerspective's limits as f -> infinity: -(f + n) / (f - n) -> -1, -2 f n / (f - n) -> -2 n.
+    EXPECT_EQ((*evaluated->pipeline.projectionMatrix)(2, 2), -1);
+    EXPECT_EQ((*evaluated->pipeline.projectionMatrix)(2, 3), -60);
+    EXPECT_EQ(labelNamed(*evaluated, "far at infinity (cut)").element, Element::BackPlane);
+    for (const Primitive& p : evaluated->primitives)
+        EXPECT_TRUE(p.bounds.min().allFinite() && p.bounds.max().allFinite());
+}
+
+class MeshCacheTest : public ::testing::Test {
+protected:
+    void SetUp() override
+    {
+        dir_ = fs::temp_directory_path() / ("viewpipe-mesh-cache-" + std::to_string(::getpid()));
+        fs::create_directories(dir_);
+        write("v 0 0 30\nv 16 0 30\nv 8 16 30\nf 1 2 3\n");
+        scene_ = house();
+        SceneObject mesh;
+        mesh.type = ObjectType::Mesh;
+        mesh.path = "triangle.obj";
+        mesh.resolvedPath = dir_ / mesh.path;
+        scene_.objects.push_back(mesh);
+    }
+    void TearDown() override { fs::remove_all(dir_); }
+    void write(const std::string& text) { std::ofstream(dir_ / "triangle.obj") << text; }
+
+    fs::path dir_;
+    Scene scene_;
+};
+
+TEST_F(MeshCacheTest, EachMeshFileIsReadOnceWhileItIsUnchanged)
+{
+    SceneEvaluator evaluator;
+    const auto first = evaluator.evaluate(scene_);
+    auto edited = scene_;
+    std::get<foley::ViewSpec<double>>(edited.camera).back = 20;
+    const auto second = evaluator.evaluate(edited);
+    EXPECT_EQ(evaluator.evaluations(), 2);
+    EXPECT_EQ(evaluator.meshReads(), 1);
+    EXPECT_EQ(first->meshes[1], second->meshes[1]); // the same mesh, not a copy
+
+    write("v 0 0 30\nv 16 0 30\nv 8 16 30\nv 8 6 50\nf 1 2 3\nf 1 2 4\n"); // a different size: read again
+    const auto third = evaluator.evaluate(scene_);
+    EXPECT_EQ(evaluator.meshReads(), 2);
+    EXPECT_EQ(third->meshes[1]->faces.size(), 2u);
+    EXPECT_EQ(first->meshes[1]->faces.size(), 1u); // what was drawn before is untouched
+}
+
+TEST_F(MeshCacheTest, AFileThatCannotBeReadIsRefusedByItsField)
+{
+    write("v 0 0 0\nf 1 2 3\n");
+    SceneEvaluator evaluator;
+    test::expectRefused([&] { evaluator.evaluate(scene_); }, "objects[1].path", "out of range");
+    write("v 0 0 30\nv 16 0 30\nv 8 16 30\nf 1 2 3\n"); // mended: read, not taken from a cache
+    EXPECT_EQ(evaluator.evaluate(scene_)->meshes[1]->faces.size(), 1u);
+}
+
+TEST(EvaluatedScene, MarkerMeshesHaveTheirShape)
+{
+    const Vec3<double> center(1, 2, 3);
+    for (const Vec3<double>& p : sphereMesh(center, 0.5).vertices)
+        EXPECT_NEAR((p - center).norm(), 0.5, 1e-15);
+    const PolygonMesh cone = coneMesh(Vec3<double>(0, 0, 10), Vec3<double>(0, 0, 2), 4);
+    expectNear(cone.vertices[0], Vec3<double>(0, 0, 10));
+    for (std::size_t k = 1; k < cone.vertices.size(); ++k) {
+        EXPECT_NEAR(cone.vertices[k].z(), 6, 1e-15);                   // the base, `length` behind the tip
+        EXPECT_NEAR(cone.vertices[k].head<2>().norm(), 0.3 * 4, 1e-14); // radius 0.3 length
+    }
+}
+
+} // namespace
+} // namespace viewpipe
