@@ -102,6 +102,18 @@ struct Window {
     }
 };
 
+// The app's world view of a scene, framed at the world stage as the app opens it.
+struct AppView : Window {
+    gui::ScenePainter painter{renderer, nullptr};
+    std::shared_ptr<const EvaluatedScene> scene;
+    explicit AppView(const std::string& name) : scene(evaluateScene(sceneNamed(name)))
+    {
+        painter.setScene(scene);
+        window->Render();
+        painter.resetView();
+    }
+};
+
 // Positions along the step from stage `from` to `from + 1`, for frame k of kFramesPerStep.
 double progress(int k)
 {
@@ -110,13 +122,9 @@ double progress(int k)
 
 void appFrame(benchmark::State& state, const std::string& name)
 {
-    Window w;
-    gui::ScenePainter painter(w.renderer, nullptr);
-    const auto scene = evaluateScene(sceneNamed(name));
-    painter.setScene(scene);
-    w.window->Render();
-    painter.resetView();
-    const auto& stages = scene->pipeline.stages;
+    AppView w(name);
+    gui::ScenePainter& painter = w.painter;
+    const auto& stages = w.scene->pipeline.stages;
     int step = 0, k = 0;
     std::optional<gui::StageTransition> transition;
     transition.emplace(painter, stages, 0, 1);
@@ -168,7 +176,7 @@ void openScene(benchmark::State& state, const std::string& name)
         Window w;
         gui::ScenePainter painter(w.renderer, nullptr);
         painter.setScene(evaluateScene(scene));
-        w.window->Render();
+        w.window->Render(); // sizes the view before framing, as the app's first frame
         painter.resetView();
         w.window->Render();
     }
@@ -177,13 +185,9 @@ void openScene(benchmark::State& state, const std::string& name)
 // From stage 5 to the world, one step at a time as the app does, each with kFramesPerStep frames.
 void jumpFiveStages(benchmark::State& state, const std::string& name)
 {
-    Window w;
-    gui::ScenePainter painter(w.renderer, nullptr);
-    const auto scene = evaluateScene(sceneNamed(name));
-    painter.setScene(scene);
-    w.window->Render();
-    painter.resetView();
-    const auto& stages = scene->pipeline.stages;
+    AppView w(name);
+    gui::ScenePainter& painter = w.painter;
+    const auto& stages = w.scene->pipeline.stages;
     for (auto _ : state) {
         state.PauseTiming();
         gui::StageTransition::showStage(painter, stages, 5);

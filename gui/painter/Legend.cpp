@@ -37,10 +37,7 @@ vtkSmartPointer<vtkPolyData> legendSymbol(const std::vector<std::pair<std::vecto
         for (const Vec2<double>& q : corners)
             ids.push_back(points->InsertNextPoint(q.x(), q.y(), 0));
         cells->InsertNextCell(vtkIdType(ids.size()), ids.data());
-        const unsigned char rgb[3] = {static_cast<unsigned char>(std::lround(255 * c.r)),
-                                      static_cast<unsigned char>(std::lround(255 * c.g)),
-                                      static_cast<unsigned char>(std::lround(255 * c.b))};
-        colors->InsertNextTypedTuple(rgb);
+        colors->InsertNextTypedTuple(toBytes(c).data());
     }
     auto data = vtkSmartPointer<vtkPolyData>::New();
     data->SetPoints(points);

@@ -51,16 +51,6 @@ vtkSmartPointer<vtkActor2D> overlay(vtkCoordinate* viewCoordinates)
     return actor;
 }
 
-vtkSmartPointer<vtkActor> unlitActor(vtkPolyData* data)
-{
-    auto mapper = vtkSmartPointer<vtkPolyDataMapper>::New();
-    mapper->SetInputData(data);
-    auto actor = vtkSmartPointer<vtkActor>::New();
-    actor->SetMapper(mapper);
-    actor->GetProperty()->LightingOff();
-    return actor;
-}
-
 } // namespace
 
 // The 2D marks in picture coordinates (x, y in [-1, 1]), laid out again for
@@ -138,11 +128,7 @@ ProjectedView::ProjectedView(vtkRenderer* renderer)
             }
             const vtkIdType ids[4] = {first, first + 1, first + 2, first + 3};
             cells->InsertNextCell(4, ids);
-            const Rgb& rgb = kRasterPalette[std::size_t(object) % kRasterPalette.size()];
-            const unsigned char bytes[3] = {static_cast<unsigned char>(std::lround(255 * rgb.r)),
-                                            static_cast<unsigned char>(std::lround(255 * rgb.g)),
-                                            static_cast<unsigned char>(std::lround(255 * rgb.b))};
-            colors->InsertNextTypedTuple(bytes);
+            colors->InsertNextTypedTuple(toBytes(kRasterPalette[std::size_t(object) % kRasterPalette.size()]).data());
         }
         auto grid = vtkSmartPointer<vtkPolyData>::New();
         grid->SetPoints(points);
@@ -180,23 +166,12 @@ void ProjectedView::setScene(const EvaluatedScene& scene,
         if (levels)
             colorByLevels(faces, *bands);
         actors_.push_back({faces, Element::Objects, true});
-        if (scene.scene.objects[o].type != ObjectType::Mesh) {
-            std::vector<Vec3<double>> ends;
-            for (const auto& e : meshEdgeIndices(*scene.meshes[o]))
-                ends.insert(ends.end(), {scene.meshes[o]->vertices[std::size_t(e[0])],
-                                         scene.meshes[o]->vertices[std::size_t(e[1])]});
-            auto edges = unlitActor(linesData(ends));
-            actors_.push_back({edges, Element::Objects, false});
-        }
+        if (scene.scene.objects[o].type != ObjectType::Mesh) // meshes from files: faces only
+            actors_.push_back({unlitActor(edgesData(*scene.meshes[o])), Element::Objects, false});
         const auto& fighting = scene.objectFaces[o].fighting;
         if (fighting && !fighting->faces.empty()) // faces the buffer cannot order, outlined over the picture
             for (const bool surface : {true, false}) {
-                std::vector<Vec3<double>> ends;
-                if (!surface)
-                    for (const auto& e : meshEdgeIndices(*fighting))
-                        ends.insert(ends.end(), {fighting->vertices[std::size_t(e[0])],
-                                                 fighting->vertices[std::size_t(e[1])]});
-                auto actor = unlitActor(surface ? facesData(*fighting) : linesData(ends));
+                auto actor = unlitActor(surface ? facesData(*fighting) : edgesData(*fighting));
                 actor->GetProperty()->SetOpacity(surface ? 0.8 : 1.0);
                 actors_.push_back({actor, Element::ZFighting, surface});
             }

@@ -33,16 +33,6 @@ namespace {
 // (under a projective matrix the image of a box in front of the eye lies within its corners' hull).
 constexpr std::size_t kExactFraming = 20000;
 
-vtkSmartPointer<vtkActor> unlitActor(vtkPolyData* data)
-{
-    auto mapper = vtkSmartPointer<vtkPolyDataMapper>::New();
-    mapper->SetInputData(data);
-    auto actor = vtkSmartPointer<vtkActor>::New();
-    actor->SetMapper(mapper);
-    actor->GetProperty()->LightingOff();
-    return actor;
-}
-
 // Extends `box` with the primitive through `m`; false (and `box` unchanged)
 // when a point of it has no image.
 bool extendThrough(Eigen::AlignedBox<double, 3>& box, const Primitive& primitive, const Mat4<double>& m)
@@ -77,16 +67,12 @@ void addObjectActors(const std::vector<vtkRenderer*>& renderers, const Evaluated
 {
     for (std::size_t o = 0; o < scene.meshes.size(); ++o) {
         const vtkSmartPointer<vtkPolyData> faces = facesData(*scene.meshes[o]);
-        std::vector<Vec3<double>> ends;
-        if (scene.scene.objects[o].type != ObjectType::Mesh)
-            for (const auto& e : meshEdgeIndices(*scene.meshes[o]))
-                ends.insert(ends.end(), {scene.meshes[o]->vertices[std::size_t(e[0])],
-                                         scene.meshes[o]->vertices[std::size_t(e[1])]});
+        const bool edges = scene.scene.objects[o].type != ObjectType::Mesh; // meshes from files: faces only
         for (vtkRenderer* renderer : renderers)
             for (const bool surface : {true, false}) {
-                if (!surface && ends.empty())
+                if (!surface && !edges)
                     continue;
-                auto actor = unlitActor(surface ? faces.GetPointer() : linesData(ends).GetPointer());
+                auto actor = unlitActor(surface ? faces : edgesData(*scene.meshes[o]));
                 vtkProperty* p = actor->GetProperty();
                 p->SetOpacity(surface ? 0.35 : 1.0);
                 p->SetLineWidth(2);

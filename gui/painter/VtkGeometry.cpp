@@ -1,9 +1,12 @@
 #include "VtkGeometry.h"
 
+#include <vtkActor.h>
 #include <vtkCellArray.h>
 #include <vtkIdTypeArray.h>
 #include <vtkPoints.h>
 #include <vtkPolyData.h>
+#include <vtkPolyDataMapper.h>
+#include <vtkProperty.h>
 
 namespace viewpipe::gui {
 
@@ -62,6 +65,24 @@ vtkSmartPointer<vtkPolyData> facesData(const PolygonMesh& mesh)
     data->SetPoints(points);
     data->SetPolys(polys);
     return data;
+}
+
+vtkSmartPointer<vtkPolyData> edgesData(const PolygonMesh& mesh)
+{
+    std::vector<Vec3<double>> ends;
+    for (const auto& e : meshEdgeIndices(mesh))
+        ends.insert(ends.end(), {mesh.vertices[std::size_t(e[0])], mesh.vertices[std::size_t(e[1])]});
+    return linesData(ends);
+}
+
+vtkSmartPointer<vtkActor> unlitActor(vtkPolyData* data)
+{
+    auto mapper = vtkSmartPointer<vtkPolyDataMapper>::New();
+    mapper->SetInputData(data);
+    auto actor = vtkSmartPointer<vtkActor>::New();
+    actor->SetMapper(mapper);
+    actor->GetProperty()->LightingOff();
+    return actor;
 }
 
 vtkSmartPointer<vtkPolyData> primitiveData(const Primitive& primitive)

@@ -8,6 +8,7 @@
 
 #include "viewpipe/evaluated_scene.hpp"
 
+class vtkActor;
 class vtkPolyData;
 
 namespace viewpipe::gui {
@@ -17,6 +18,10 @@ vtkSmartPointer<vtkPolyData> linesData(const std::vector<Vec3<double>>& ends);
 // Lines in a picture's plane (z = 0).
 vtkSmartPointer<vtkPolyData> linesData(const std::vector<Segment2>& segments);
 vtkSmartPointer<vtkPolyData> facesData(const PolygonMesh& mesh);
+// A mesh's edges, once each.
+vtkSmartPointer<vtkPolyData> edgesData(const PolygonMesh& mesh);
 vtkSmartPointer<vtkPolyData> primitiveData(const Primitive& primitive);
+// An actor drawing poly data in flat colors (lighting off: the elements are diagrams, not lit surfaces).
+vtkSmartPointer<vtkActor> unlitActor(vtkPolyData* data);
 
 } // namespace viewpipe::gui

@@ -1,5 +1,7 @@
 #include "Style.h"
 
+#include <cmath>
+
 namespace viewpipe::gui {
 
 const std::array<Rgb, 5> kBandRamp = {
@@ -42,6 +44,12 @@ Rgb elementColor(Element element, Theme theme)
     case Element::Traced: return dark ? Rgb{1.00, 1.00, 1.00} : Rgb{0.00, 0.00, 0.00};
     }
     return {1, 1, 1};
+}
+
+std::array<unsigned char, 3> toBytes(const Rgb& color)
+{
+    auto byte = [](double channel) { return static_cast<unsigned char>(std::lround(255 * channel)); };
+    return {byte(color.r), byte(color.g), byte(color.b)};
 }
 
 Rgb backgroundColor(Theme theme, bool projectedView)

@@ -23,6 +23,8 @@ Rgb faceColor(Theme theme);
 // An element's color: objects' surfaces take faceColor, everything else elementColor.
 Rgb styledColor(Element element, bool surface, Theme theme);
 Rgb backgroundColor(Theme theme, bool projectedView);
+// 0 to 255 a channel, as image data stores colors.
+std::array<unsigned char, 3> toBytes(const Rgb& color);
 
 // The depth bands' ramp from near (yellow) to far (violet); no red or orange
 // in it, which mark z-fighting.

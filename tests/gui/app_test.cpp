@@ -85,6 +85,21 @@ void waitForRest(MainWindow& window)
     QTRY_VERIFY_WITH_TIMEOUT(!window.isAnimating(), 20000);
 }
 
+// Clicks the world view where a world point is drawn at the stage shown.
+void clickWhereDrawn(MainWindow& window, const Vec3<double>& world)
+{
+    auto* view = window.findChild<QVTKOpenGLNativeWidget*>("worldView");
+    vtkRenderer* renderer = view->renderWindow()->GetRenderers()->GetFirstRenderer();
+    const Vec4<double> h = cumulativeAt(window.document()->pipeline().stages, window.stage()) * world.homogeneous();
+    renderer->SetWorldPoint(h.x() / h.w(), h.y() / h.w(), h.z() / h.w(), 1);
+    renderer->WorldToDisplay();
+    double display[3];
+    renderer->GetDisplayPoint(display);
+    const double ratio = view->devicePixelRatioF();
+    const QPoint at(int(std::lround(display[0] / ratio)), int(std::lround(view->height() - display[1] / ratio)));
+    QTest::mouseClick(view, Qt::LeftButton, Qt::NoModifier, at);
+}
+
 } // namespace
 
 class AppTest : public QObject {
@@ -240,17 +255,7 @@ private slots:
     {
         MainWindow& w = *window_;
         w.goToStage(3, false);
-        // Where the house's vertex (16, 10, 54) is drawn at this stage.
-        auto* view = w.findChild<QVTKOpenGLNativeWidget*>("worldView");
-        vtkRenderer* renderer = view->renderWindow()->GetRenderers()->GetFirstRenderer();
-        const Vec4<double> p = w.document()->pipeline().stages[2].matrix * Vec4<double>(16, 10, 54, 1);
-        renderer->SetWorldPoint(p.x(), p.y(), p.z(), 1);
-        renderer->WorldToDisplay();
-        double display[3];
-        renderer->GetDisplayPoint(display);
-        const double ratio = view->devicePixelRatioF();
-        const QPoint at(int(std::lround(display[0] / ratio)), int(std::lround(view->height() - display[1] / ratio)));
-        QTest::mouseClick(view, Qt::LeftButton, Qt::NoModifier, at);
+        clickWhereDrawn(w, Vec3<double>(16, 10, 54));
         QTRY_VERIFY(w.matrices()->traceText().contains("Traced vertex"));
         // After T(-PRP) the vertex is (16 - 8, 10 - 6, 54 - 84) = (8, 4, -30).
         QVERIFY2(w.matrices()->traceText().contains("<td align='right'>8</td><td align='right'>4</td>"
@@ -266,18 +271,9 @@ private slots:
         QVERIFY(w.openScene(QString(VIEWPIPE_DATA_DIR) + "/scenes/opengl-perspective.json"));
         const int last = w.stageCount();
         w.goToStage(last, false);
-        auto* view = w.findChild<QVTKOpenGLNativeWidget*>("worldView");
-        vtkRenderer* renderer = view->renderWindow()->GetRenderers()->GetFirstRenderer();
-        const Vec4<double> h = cumulativeAt(w.document()->pipeline().stages, last) * Vec4<double>(16, 10, 54, 1);
-        QVERIFY(h.w() > 0 && std::abs(h.w() - 1) > 0.1); // projective: the divide moves the point
-        const Vec3<double> p = h.head<3>() / h.w();
-        renderer->SetWorldPoint(p.x(), p.y(), p.z(), 1);
-        renderer->WorldToDisplay();
-        double display[3];
-        renderer->GetDisplayPoint(display);
-        const double ratio = view->devicePixelRatioF();
-        const QPoint at(int(std::lround(display[0] / ratio)), int(std::lround(view->height() - display[1] / ratio)));
-        QTest::mouseClick(view, Qt::LeftButton, Qt::NoModifier, at);
+        const double w4 = (cumulativeAt(w.document()->pipeline().stages, last) * Vec4<double>(16, 10, 54, 1)).w();
+        QVERIFY(w4 > 0 && std::abs(w4 - 1) > 0.1); // projective: the divide moves the point
+        clickWhereDrawn(w, Vec3<double>(16, 10, 54));
         QTRY_VERIFY(w.matrices()->traceText().contains("Traced vertex"));
         QVERIFY2(w.matrices()->traceText().contains("<td align='right'>16</td><td align='right'>10</td>"
                                                     "<td align='right'>54</td>"),
