@@ -91,10 +91,10 @@ ProjectedView::ProjectedView(vtkRenderer* renderer)
     camera->SetViewUp(0, 1, 0);
     camera->SetExplicitProjectionTransformMatrix(toVtk(Mat4<double>::Identity())); // until a scene gives its own
     camera->SetUseExplicitProjectionTransformMatrix(true);
-    layout_->SetClientDataDeleteCallback([](void* data) { delete static_cast<Picture*>(data); });
-    layout_->SetCallback([](vtkObject* caller, unsigned long, void* data, void*) {
+    layout_->SetClientData(this);
+    layout_->SetCallback([](vtkObject* caller, unsigned long, void* view, void*) {
         auto* renderer = static_cast<vtkRenderer*>(caller);
-        const auto* c = static_cast<const Picture*>(data);
+        const Picture* c = static_cast<ProjectedView*>(view)->picture_.get();
         if (!c)
             return;
         // Keep the window square on screen whatever the viewport's shape.
@@ -202,8 +202,8 @@ void ProjectedView::setScene(const EvaluatedScene& scene,
     rasterGrid_->SetVisibility(scene.outcomes.raster.has_value());
     vanishing_->SetVisibility(!scene.vanishingLines.empty());
     zFightingRing_->SetVisibility(!scene.zFightingRing.empty());
-    layout_->SetClientData(new Picture{clip, {{vanishing_, scene.vanishingLines}, {zFightingRing_, scene.zFightingRing}},
-                                       pixels, pixelSize, rasterGrid_});
+    picture_ = std::make_unique<Picture>(Picture{
+        clip, {{vanishing_, scene.vanishingLines}, {zFightingRing_, scene.zFightingRing}}, pixels, pixelSize, rasterGrid_});
     layout_->Execute(renderer_, vtkCommand::StartEvent, nullptr); // the first frame needs the matrix too
     entries_ = scene.projectedLegend;
 }

@@ -8,6 +8,7 @@
 #include <vtkSmartPointer.h>
 
 #include <functional>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -55,6 +56,7 @@ private:
     vtkSmartPointer<vtkActor2D> zFightingRing_; // around the z-fighting faces
     vtkSmartPointer<vtkLegendBoxActor> legend_;
     vtkSmartPointer<vtkCallbackCommand> layout_;
+    std::unique_ptr<Picture> picture_;
     std::vector<StyledActor> actors_;
     std::vector<LegendEntry> entries_;
 };
