@@ -195,7 +195,7 @@ Classification classify(const CameraSpec<double>& camera)
     for (int i = 0; i < 3; ++i)
         alongAxes += std::abs(n[i]) > kTolerance;
     if (setup.perspective) {
-        c.projection = "perspective";
+        c.projection = ProjectionKind::Perspective;
         c.family = "perspective";
         static const char* counts[] = {"", "one-point", "two-point", "three-point"};
         c.kind = counts[alongAxes];
@@ -205,7 +205,7 @@ Classification classify(const CameraSpec<double>& camera)
         c.description = "perspective, " + c.kind;
         return c;
     }
-    c.projection = "parallel";
+    c.projection = ProjectionKind::Parallel;
     // The direction of projection in world coordinates, and each axis's drawn length.
     Vec3<double> dop = setup.windowCenter - setup.prp;
     if (const auto* spec = std::get_if<foley::ViewSpec<double>>(&camera)) {

@@ -4,15 +4,18 @@
 #include <cmath>
 #include <cstdint>
 #include <cstring>
-#include <mutex>
 #include <unordered_set>
+#include <utility>
 
 namespace viewpipe {
 namespace {
 
-std::mutex runsMutex;
-std::map<std::string, long> runs;
-
+// Each effect's name, in the order an unknown name's error lists them.
+const std::array<std::pair<EffectKind, const char*>, 5> kEffectNames = {{{EffectKind::Clip, "clip"},
+                                                                         {EffectKind::Divide, "divide"},
+                                                                         {EffectKind::Depth, "depth"},
+                                                                         {EffectKind::Raster, "raster"},
+                                                                         {EffectKind::Cull, "cull"}}};
 
 // The six boundary values of a homogeneous point: inside where all are >= 0.
 std::array<double, 6> boundaries(const Vec4<double>& p, ClipVolume volume)
@@ -25,33 +28,42 @@ std::array<double, 6> boundaries(const Vec4<double>& p, ClipVolume volume)
 
 } // namespace
 
-void countEffectRun(const std::string& effect)
+std::string effectName(EffectKind effect)
 {
-    std::lock_guard<std::mutex> lock(runsMutex);
-    ++runs[effect];
+    for (const auto& [e, name] : kEffectNames)
+        if (e == effect)
+            return name;
+    return "";
 }
 
-std::map<std::string, long> effectRuns()
+EffectKind effectNamed(const std::string& name, const std::string& field)
 {
-    std::lock_guard<std::mutex> lock(runsMutex);
-    return runs;
+    std::string known;
+    for (const auto& [effect, n] : kEffectNames) {
+        if (name == n)
+            return effect;
+        known += (known.empty() ? "" : ", ") + std::string(n);
+    }
+    throw InputError(field, "unknown effect \"" + name + "\" (known: " + known + ")");
+}
+
+EffectList withEffect(EffectList effects, EffectKind effect, bool on)
+{
+    auto& listed = effects.listed;
+    if (!on)
+        listed.erase(std::remove(listed.begin(), listed.end(), effect), listed.end());
+    else if (!effects.has(effect))
+        listed.push_back(effect); // a listed effect keeps its place
+    if (effect == EffectKind::Depth)
+        effects.depth = on ? effects.depth.value_or(DepthOptions{}) : std::optional<DepthOptions>{};
+    if (effect == EffectKind::Raster)
+        effects.raster = on ? effects.raster.value_or(RasterOptions{}) : std::optional<RasterOptions>{};
+    return effects;
 }
 
 EffectList withEffect(EffectList effects, const std::string& name, bool on)
 {
-    static const std::array<std::string, 5> known = {"clip", "divide", "cull", "depth", "raster"};
-    if (std::find(known.begin(), known.end(), name) == known.end())
-        throw InputError("effects", "unknown effect \"" + name + "\" (known: clip, divide, depth, raster, cull)");
-    auto& names = effects.names;
-    if (!on)
-        names.erase(std::remove(names.begin(), names.end(), name), names.end());
-    else if (!effects.has(name))
-        names.push_back(name); // a listed effect keeps its place
-    if (name == "depth")
-        effects.depth = on ? effects.depth.value_or(DepthOptions{}) : std::optional<DepthOptions>{};
-    if (name == "raster")
-        effects.raster = on ? effects.raster.value_or(RasterOptions{}) : std::optional<RasterOptions>{};
-    return effects;
+    return withEffect(std::move(effects), effectNamed(name, "effects"), on);
 }
 
 std::string depthFormatName(const DepthOptions& options)
@@ -436,11 +448,11 @@ EffectOutcomes runEffects(const Pipeline<double>& pipeline, const std::vector<Po
                           const EffectList& effects)
 {
     EffectOutcomes outcomes;
-    if (!effects.has("clip") && !effects.has("cull") && !effects.depth && !effects.raster)
+    if (!effects.has(EffectKind::Clip) && !effects.has(EffectKind::Cull) && !effects.depth && !effects.raster)
         return outcomes; // nothing that looks at the objects
     const ClipPoints points = clipPoints(pipeline.clipMatrix(), objects);
-    if (effects.has("clip")) {
-        countEffectRun("clip");
+    if (effects.has(EffectKind::Clip)) {
+        outcomes.computed.push_back(EffectKind::Clip);
         ClipOutcome c;
         for (std::size_t o = 0; o < objects.size(); ++o) {
             const PolygonMesh& mesh = objects[o];
@@ -477,11 +489,11 @@ EffectOutcomes runEffects(const Pipeline<double>& pipeline, const std::vector<Po
         outcomes.clip = c;
     }
     if (effects.depth) {
-        countEffectRun("depth");
+        outcomes.computed.push_back(EffectKind::Depth);
         outcomes.depth = depthOutcome(pipeline, objects, points, *effects.depth);
     }
-    if (effects.has("cull")) {
-        countEffectRun("cull");
+    if (effects.has(EffectKind::Cull)) {
+        outcomes.computed.push_back(EffectKind::Cull);
         CullOutcome c;
         for (std::size_t o = 0; o < objects.size(); ++o) {
             std::vector<bool> culled;
@@ -507,7 +519,7 @@ EffectOutcomes runEffects(const Pipeline<double>& pipeline, const std::vector<Po
         outcomes.cull = c;
     }
     if (effects.raster) {
-        countEffectRun("raster");
+        outcomes.computed.push_back(EffectKind::Raster);
         outcomes.raster = rasterize(pipeline.clipVolume, objects, points, *effects.raster,
                                     outcomes.cull ? &outcomes.cull->culledFaces : nullptr);
     }

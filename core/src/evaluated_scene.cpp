@@ -142,17 +142,17 @@ std::string describeEffects(const EffectList& effects, const EffectOutcomes& out
                             const std::optional<DepthBands>& bands)
 {
     std::ostringstream note;
-    for (const std::string& name : effects.names) {
-        if (name == "clip" && outcomes.clip) {
+    for (const EffectKind effect : effects.listed) {
+        if (effect == EffectKind::Clip && outcomes.clip) {
             const ClipCounts& s = outcomes.clip->segments;
             note << "clip: " << s.inside << " edges inside, " << s.clipped << " cut, " << s.outside
                  << " outside (ghosted)\n";
-        } else if (name == "divide") {
+        } else if (effect == EffectKind::Divide) {
             note << (divideAddsStage(pipeline) ? "divide: stage " + pipeline.stages.back().symbol + " appended\n"
                                                : std::string("divide: none needed (parallel)\n"));
-        } else if (name == "cull" && outcomes.cull) {
+        } else if (effect == EffectKind::Cull && outcomes.cull) {
             note << "cull: " << outcomes.cull->culled << " of " << outcomes.cull->faces << " faces (ghosted)\n";
-        } else if (name == "depth" && outcomes.depth) {
+        } else if (effect == EffectKind::Depth && outcomes.depth) {
             const DepthOutcome& d = *outcomes.depth;
             note << "depth: " << depthFormatName(d.options);
             if (bands)
@@ -165,7 +165,7 @@ std::string describeEffects(const EffectList& effects, const EffectOutcomes& out
             else if (!d.zFighting.empty())
                 note << "; " << d.zFighting.size() << " face pairs z-fight (orange-red)";
             note << "\n";
-        } else if (name == "raster" && outcomes.raster) {
+        } else if (effect == EffectKind::Raster && outcomes.raster) {
             note << "raster: " << outcomes.raster->width << " x " << outcomes.raster->height << ", "
                  << outcomes.raster->covered << " pixels covered (projected view)\n";
         }
@@ -268,7 +268,8 @@ std::shared_ptr<const EvaluatedScene> evaluate(const Scene& scene, MeshCache* ca
     auto evaluated = std::make_shared<EvaluatedScene>();
     EvaluatedScene& out = *evaluated;
     out.scene = scene;
-    out.pipeline = buildPipeline(scene.camera, scene.effects);
+    std::vector<EffectKind> staged; // the divide runs first, as the pipeline is built
+    out.pipeline = buildPipeline(scene.camera, scene.effects, &staged);
     out.meshes = objectMeshes(scene, cache);
     bool farCut = false;
     const CameraSpec<double> drawn = drawnCamera(scene.camera, out.objectBounds(), farCut);
@@ -293,6 +294,7 @@ std::shared_ptr<const EvaluatedScene> evaluate(const Scene& scene, MeshCache* ca
         for (const auto& mesh : out.meshes)
             meshes.push_back(*mesh);
     out.outcomes = runEffects(pipeline, meshes, scene.effects);
+    out.outcomes.computed.insert(out.outcomes.computed.begin(), staged.begin(), staged.end());
     const EffectOutcomes& outcomes = out.outcomes;
 
     // Each object's faces: in front, culled, or fighting for depth.

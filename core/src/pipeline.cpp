@@ -1,7 +1,18 @@
-// The scalar types the application uses are instantiated once, here.
+// The projections' names, and the scalar types the application uses instantiated once, here.
 #include "viewpipe/pipeline.hpp"
 
 namespace viewpipe {
+
+std::string projectionName(ProjectionKind kind)
+{
+    switch (kind) {
+    case ProjectionKind::Perspective: return "perspective";
+    case ProjectionKind::Parallel: return "parallel";
+    case ProjectionKind::Frustum: return "frustum";
+    case ProjectionKind::Ortho: return "ortho";
+    }
+    return "";
+}
 
 template Pipeline<float> buildPipeline(const CameraSpec<float>&);
 template Pipeline<double> buildPipeline(const CameraSpec<double>&);

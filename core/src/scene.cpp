@@ -216,20 +216,18 @@ void readEffect(const Json& j, const std::string& path, EffectList& effects)
     } else {
         throw InputError(path, "must be an effect name or {\"name\": {parameters}}");
     }
-    if (effects.has(name))
+    const EffectKind effect = effectNamed(name, path);
+    if (effects.has(effect))
         throw InputError(path, "effect \"" + name + "\" is listed twice");
-    EffectList next;
-    try {
-        next = withEffect(effects, name, true);
-    } catch (const InputError& e) {
-        throw InputError(path, e.reason());
-    }
+    EffectList next = withEffect(effects, effect, true);
     const std::string where = path + "." + name;
     if (parameters && !parameters->is_object())
         throw InputError(where, "parameters must be an object (got " + typeName(*parameters) + ")");
-    const std::vector<std::string> accepted = name == "depth"    ? std::vector<std::string>{"bits", "format", "reversed"}
-                                              : name == "raster" ? std::vector<std::string>{"width", "height"}
-                                                                 : std::vector<std::string>{};
+    std::vector<std::string> accepted;
+    if (effect == EffectKind::Depth)
+        accepted = {"bits", "format", "reversed"};
+    else if (effect == EffectKind::Raster)
+        accepted = {"width", "height"};
     if (parameters)
         for (const auto& item : parameters->items())
             if (std::find(accepted.begin(), accepted.end(), item.key()) == accepted.end()) {
@@ -240,7 +238,7 @@ void readEffect(const Json& j, const std::string& path, EffectList& effects)
                                                                ? "unknown parameter (\"" + name + "\" takes none)"
                                                                : "unknown parameter (" + known + ")");
             }
-    if (name == "depth") {
+    if (effect == EffectKind::Depth) {
         DepthOptions depth;
         if (parameters && parameters->contains("format")) {
             const std::string format = readString((*parameters)["format"], where + ".format");
@@ -266,7 +264,7 @@ void readEffect(const Json& j, const std::string& path, EffectList& effects)
         }
         next.depth = depth;
     }
-    if (name == "raster") {
+    if (effect == EffectKind::Raster) {
         RasterOptions raster;
         for (const char* key : {"width", "height"})
             if (parameters && parameters->contains(key)) {
@@ -496,14 +494,14 @@ std::string sceneToJson(const Scene& scene)
     }
     root["objects"] = objects;
     Json effects = Json::array();
-    for (const std::string& name : scene.effects.names) {
-        if (name == "depth" && scene.effects.depth) {
+    for (const EffectKind effect : scene.effects.listed) {
+        if (effect == EffectKind::Depth && scene.effects.depth) {
             const DepthOptions& d = *scene.effects.depth;
             effects.push_back({{"depth", {{"bits", d.bits}, {"format", d.floating ? "float" : "unorm"}, {"reversed", d.reversed}}}});
-        } else if (name == "raster" && scene.effects.raster) {
+        } else if (effect == EffectKind::Raster && scene.effects.raster) {
             effects.push_back({{"raster", {{"width", scene.effects.raster->width}, {"height", scene.effects.raster->height}}}});
         } else {
-            effects.push_back(name);
+            effects.push_back(effectName(effect));
         }
     }
     root["effects"] = effects;

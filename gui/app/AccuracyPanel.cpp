@@ -17,6 +17,8 @@
 
 #include "export/AccuracyPlot.h"
 #include "painter/ScenePainter.h"
+#include "viewpipe/format.hpp"
+#include "viewpipe/report/bench.hpp"
 
 namespace viewpipe::gui {
 
@@ -162,21 +164,19 @@ void AccuracyPanel::drawResult()
     table_->setRowCount(int(result.rows.size()));
     for (int i = 0; i < int(result.rows.size()); ++i) {
         const cli::BenchRow& r = result.rows[std::size_t(i)];
-        auto withEps = [&r](double x) {
-            return QString("%1 [%2]").arg(x, 0, 'g', 2).arg(x / r.epsilon, 0, 'g', 2);
-        };
-        const QStringList cells = {QString::fromStdString(r.precision),
-                                   QString::number(r.bits),
-                                   QString::number(r.buildNs, 'g', 3),
-                                   QString::number(r.vertexNs, 'g', 3),
-                                   withEps(r.errors.maxRelativeError),
-                                   withEps(r.errors.cornerError),
-                                   withEps(r.errors.orthogonalityError),
-                                   withEps(r.errors.roundtripError),
-                                   withEps(r.errors.ndcMaxError),
-                                   QString::number(r.errors.pixelMaxError, 'g', 2)};
-        for (int c = 0; c < cells.size(); ++c)
-            table_->setItem(i, c, new QTableWidgetItem(cells[c]));
+        auto withEps = [&r](double x) { return cli::errorCell(x, r.epsilon); };
+        const std::vector<std::string> cells = {r.precision,
+                                                std::to_string(r.bits),
+                                                formatSignificant(r.buildNs, 3),
+                                                formatSignificant(r.vertexNs, 3),
+                                                withEps(r.errors.maxRelativeError),
+                                                withEps(r.errors.cornerError),
+                                                withEps(r.errors.orthogonalityError),
+                                                withEps(r.errors.roundtripError),
+                                                withEps(r.errors.ndcMaxError),
+                                                formatSignificant(r.errors.pixelMaxError, 2)};
+        for (std::size_t c = 0; c < cells.size(); ++c)
+            table_->setItem(i, int(c), new QTableWidgetItem(QString::fromStdString(cells[c])));
     }
     charts_->ClearItems();
     drawAccuracyCharts(charts_, result, theme_, true);

@@ -55,12 +55,6 @@ namespace {
 constexpr int kStepMilliseconds = 1000;
 constexpr int kMaxRecent = 8;
 
-QString stageLabel(const Stage<double>& stage, int index)
-{
-    return QString("%1. %2 — %3").arg(index).arg(QString::fromStdString(stage.symbol),
-                                                   QString::fromStdString(stage.explanation));
-}
-
 } // namespace
 
 MainWindow::MainWindow(QWidget* parent)
@@ -358,21 +352,22 @@ void MainWindow::buildEffectsMenu()
     QMenu* effects = menuBar()->addMenu(tr("E&ffects"));
     effects->setObjectName("effectsMenu");
     effects->setToolTipsVisible(true);
-    auto toggle = [this, effects](const QString& text, const std::string& name, const QString& tip) {
+    auto toggle = [this, effects](const QString& text, EffectKind effect, const QString& tip) {
         QAction* action = effects->addAction(text);
         action->setCheckable(true);
         action->setToolTip(tip);
-        connect(action, &QAction::triggered, this, [this, name, text](bool on) {
+        connect(action, &QAction::triggered, this, [this, effect, text](bool on) {
             editEffects((on ? tr("Turn on %1") : tr("Turn off %1")).arg(QString(text).remove('&')),
-                        [name, on](EffectList list) { return withEffect(std::move(list), name, on); });
+                        [effect, on](EffectList list) { return withEffect(std::move(list), effect, on); });
         });
         return action;
     };
-    clipAction_ = toggle(tr("&Clip to the View Volume"), "clip",
+    clipAction_ = toggle(tr("&Clip to the View Volume"), EffectKind::Clip,
                          tr("Clip edges and faces in homogeneous coordinates; clipped-away parts are ghosted"));
-    divideAction_ = toggle(tr("&Divide (stage M)"), "divide",
+    divideAction_ = toggle(tr("&Divide (stage M)"), EffectKind::Divide,
                            tr("Append Foley's M (OpenGL: the divide into NDC) as a stage"));
-    cullAction_ = toggle(tr("Back-Face C&ulling"), "cull", tr("Ghost the faces turned away from the viewer"));
+    cullAction_ =
+        toggle(tr("Back-Face C&ulling"), EffectKind::Cull, tr("Ghost the faces turned away from the viewer"));
 
     QMenu* depth = effects->addMenu(tr("Depth &Buffer"));
     depth->setObjectName("depthMenu");
@@ -392,10 +387,10 @@ void MainWindow::buildEffectsMenu()
             editEffects(data.isEmpty() ? tr("Turn off the depth buffer") : tr("Depth buffer: %1").arg(text),
                         [data](EffectList list) {
                             if (data.isEmpty())
-                                return withEffect(std::move(list), "depth", false);
+                                return withEffect(std::move(list), EffectKind::Depth, false);
                             const bool reversed = list.depth && list.depth->reversed;
                             list.depth = DepthOptions{data.section(',', 0, 0).toInt(), data.endsWith('1'), reversed};
-                            return withEffect(std::move(list), "depth", true);
+                            return withEffect(std::move(list), EffectKind::Depth, true);
                         });
         });
     }
@@ -406,7 +401,7 @@ void MainWindow::buildEffectsMenu()
         editEffects(on ? tr("Reverse the depth buffer") : tr("Unreverse the depth buffer"), [on](EffectList list) {
             list.depth = list.depth.value_or(DepthOptions{});
             list.depth->reversed = on;
-            return withEffect(std::move(list), "depth", true);
+            return withEffect(std::move(list), EffectKind::Depth, true);
         });
     });
 
@@ -424,9 +419,9 @@ void MainWindow::buildEffectsMenu()
             editEffects(size.isValid() ? tr("Raster: %1").arg(text) : tr("Turn off the raster"),
                         [size](EffectList list) {
                             if (!size.isValid())
-                                return withEffect(std::move(list), "raster", false);
+                                return withEffect(std::move(list), EffectKind::Raster, false);
                             list.raster = RasterOptions{size.width(), size.height()};
-                            return withEffect(std::move(list), "raster", true);
+                            return withEffect(std::move(list), EffectKind::Raster, true);
                         });
         });
     }
@@ -449,9 +444,9 @@ void MainWindow::editEffects(const QString& description, const std::function<Eff
 void MainWindow::updateEffectsMenu()
 {
     const EffectList& effects = document_->scene().effects;
-    clipAction_->setChecked(effects.has("clip"));
-    divideAction_->setChecked(effects.has("divide"));
-    cullAction_->setChecked(effects.has("cull"));
+    clipAction_->setChecked(effects.has(EffectKind::Clip));
+    divideAction_->setChecked(effects.has(EffectKind::Divide));
+    cullAction_->setChecked(effects.has(EffectKind::Cull));
     const QString format =
         effects.depth ? QString("%1,%2").arg(effects.depth->bits).arg(effects.depth->floating ? 1 : 0) : QString();
     for (QAction* action : depthGroup_->actions())
@@ -574,9 +569,8 @@ void MainWindow::refreshWidgets()
     const QSignalBlocker blockList(stageList_);
     const QSignalBlocker blockSlider(slider_);
     stageList_->clear();
-    stageList_->addItem(tr("0. World — the scene in world coordinates"));
-    for (std::size_t k = 0; k < stages.size(); ++k)
-        stageList_->addItem(stageLabel(stages[k], int(k) + 1));
+    for (std::size_t k = 0; k <= stages.size(); ++k)
+        stageList_->addItem(QString::fromStdString(stageText(stages, k, StageText::ListEntry)));
     slider_->setRange(0, stageCount());
     animation_->stop();
     transition_.reset();
@@ -653,10 +647,8 @@ void MainWindow::showRestingStage()
 
 void MainWindow::updateCaptions()
 {
-    const auto& stages = document_->pipeline().stages;
-    const QString shown = stage_ == 0 ? tr("World coordinates")
-                                      : tr("After %1").arg(QString::fromStdString(stages[std::size_t(stage_ - 1)].symbol));
-    painter_->setCaptions(shown.toStdString(), tr("What the camera sees").toStdString());
+    painter_->setCaptions(stageText(document_->pipeline().stages, std::size_t(stage_), StageText::Caption),
+                          tr("What the camera sees").toStdString());
 }
 
 void MainWindow::updateStageWidgets()

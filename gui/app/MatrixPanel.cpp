@@ -5,15 +5,14 @@
 #include <QVBoxLayout>
 
 #include "StageSymbols.h"
+#include "viewpipe/format.hpp"
 
 namespace viewpipe::gui {
 namespace {
 
 QString number(double x)
 {
-    if (x == 0)
-        x = 0; // no "-0"
-    return QString::number(x, 'g', 5);
+    return QString::fromStdString(formatSignificant(x, 5));
 }
 
 QString table(const QString& caption, const std::array<QString, 16>& cells, const std::array<bool, 16>& highlight = {})

@@ -15,6 +15,8 @@
 #include <cmath>
 #include <cstring>
 
+#include "viewpipe/format.hpp"
+
 namespace viewpipe::gui {
 namespace {
 
@@ -24,7 +26,8 @@ QString layoutKeyOf(const CameraSpec<double>& camera)
 {
     if (std::holds_alternative<foley::ViewSpec<double>>(camera))
         return "foley";
-    return "gl-" + QString::fromStdString(gl::projectionName(std::get<gl::Camera<double>>(camera).projection));
+    const auto& projection = std::get<gl::Camera<double>>(camera).projection;
+    return "gl-" + QString::fromStdString(projectionName(projectionKind(projection)));
 }
 
 // The numbers a field stands for in a camera, one per component; none for a
@@ -90,7 +93,7 @@ QString numberText(double value)
 {
     if (std::isinf(value))
         return value > 0 ? "infinity" : "-infinity";
-    return QString::number(value, 'g', QLocale::FloatingPointShortest);
+    return QString::fromStdString(formatShortest(value));
 }
 
 // Reads a number in the C locale (a '.' decimal point, an optional exponent),

@@ -115,14 +115,6 @@ void writeVector(vtkRenderWindow* window, ScenePainter& painter, const fs::path&
     writeFileAtomically(file, svg);
 }
 
-std::string stageCaption(const std::vector<Stage<double>>& stages, int k)
-{
-    if (k == 0)
-        return "0. World coordinates";
-    const Stage<double>& s = stages[std::size_t(k - 1)];
-    return std::to_string(k) + ". " + s.symbol + " - " + s.explanation;
-}
-
 void validate(const ExportOptions& o)
 {
     if (o.width < 64 || o.height < 64 || o.width > 8192 || o.height > 8192)
@@ -336,13 +328,14 @@ std::vector<fs::path> exportStages(const std::shared_ptr<const EvaluatedScene>& 
         for (int k : chosen) {
             const std::string base = (k < 10 ? "0" : "") + std::to_string(k) + "-" +
                                      (k == 0 ? std::string("world") : slug(stages[std::size_t(k - 1)].symbol));
-            showAt(k, stageCaption(stages, k));
+            const std::string caption = stageText(stages, std::size_t(k), StageText::Heading);
+            showAt(k, caption);
             for (const std::string& format : options.formats) {
                 step("stage " + std::to_string(k) + " of " + std::to_string(n) + ": " + base + "." + format);
                 if (format == "png")
                     writeWindowPng(window, options.transparent, temporary / (base + ".png"));
                 else
-                    writeVector(window, painter, temporary / base, format, stageCaption(stages, k));
+                    writeVector(window, painter, temporary / base, format, caption);
             }
         }
 
@@ -367,13 +360,14 @@ std::vector<fs::path> exportStages(const std::shared_ptr<const EvaluatedScene>& 
                 writeWindowPng(window, false, frames / name);
             };
             for (int k = 0; k <= n; ++k) {
+                const std::string caption = stageText(stages, std::size_t(k), StageText::Heading);
                 if (k > 0)
                     for (int f = 1; f <= options.fps; ++f) {
                         const double u = double(f) / options.fps;
-                        emit(k - 1 + StageTransition::smooth(u), stageCaption(stages, k));
+                        emit(k - 1 + StageTransition::smooth(u), caption);
                     }
                 for (int f = 0; f < hold; ++f)
-                    emit(k, stageCaption(stages, k));
+                    emit(k, caption);
             }
             // H.264 in MP4 with yuv420p plays in browsers and in slide software.
             const int status = runProgram({"ffmpeg", "-hide_banner", "-loglevel", "error", "-y", "-framerate",

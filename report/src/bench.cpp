@@ -33,6 +33,11 @@ nlohmann::json benchJson(const BenchResult& result)
             {"rows", rows}};
 }
 
+std::string errorCell(double error, double epsilon)
+{
+    return formatSignificant(error, 2) + " [" + formatSignificant(error / epsilon, 2) + "]";
+}
+
 void printBench(std::ostream& out, const BenchResult& result)
 {
     out << "Reference: " << result.reference << "; " << result.vertices << " vertices timed; pixel errors at "
@@ -43,9 +48,7 @@ void printBench(std::ostream& out, const BenchResult& result)
                                            "NDC rms", "pixel max"};
     std::vector<std::vector<std::string>> table = {head};
     for (const BenchRow& r : result.rows) {
-        auto cell = [&r](double x) {
-            return formatSignificant(x, 2) + " [" + formatSignificant(x / r.epsilon, 2) + "]";
-        };
+        auto cell = [&r](double x) { return errorCell(x, r.epsilon); };
         const AccuracyMetrics& e = r.errors;
         table.push_back({r.precision, std::to_string(r.bits), formatSignificant(r.buildNs, 3),
                          formatSignificant(r.vertexNs, 3),

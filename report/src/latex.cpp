@@ -105,9 +105,9 @@ std::string matricesLatex(const Scene& scene, int digits)
             << "\\[\n" << latexSymbol(stage.symbol) << " =\n" << bmatrix(stage.matrix, digits) << "\n\\]\n\n";
         product = latexSymbol(stage.symbol) + (product.empty() ? "" : " \\, " + product);
     }
-    const std::string name = p.convention == Convention::OpenGL ? "P \\, V"
-                             : p.projection == "perspective"    ? "N_{\\mathrm{per}}"
-                                                                : "N_{\\mathrm{par}}";
+    const std::string name = p.convention == Convention::OpenGL            ? "P \\, V"
+                             : p.projection == ProjectionKind::Perspective ? "N_{\\mathrm{per}}"
+                                                                           : "N_{\\mathrm{par}}";
     out << "% The composite\n\\[\n" << name << " = " << product << " =\n" << bmatrix(p.composite, digits)
         << "\n\\]\n";
     if (p.view && p.projectionMatrix)

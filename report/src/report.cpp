@@ -87,7 +87,7 @@ std::string compositeName(const Pipeline<double>& p)
 {
     if (p.convention == Convention::OpenGL)
         return "P * V";
-    return p.projection == "perspective" ? "N_per" : "N_par";
+    return p.projection == ProjectionKind::Perspective ? "N_per" : "N_par";
 }
 
 template <class T> Pipeline<T> pipelineFor(const Scene& scene)
@@ -108,7 +108,7 @@ Json effectsJson(const Scene& scene, const EffectOutcomes& outcomes)
     if (outcomes.clip)
         out["clip"] = {{"segments", countsJson(outcomes.clip->segments)},
                        {"polygons", countsJson(outcomes.clip->polygons)}};
-    if (scene.effects.has("divide")) {
+    if (scene.effects.has(EffectKind::Divide)) {
         const bool added = divideAddsStage(p);
         out["divide"] = {{"stage", added ? Json(p.stages.back().symbol) : Json(nullptr)},
                          {"note", added ? "appended after the last stage"
@@ -192,7 +192,7 @@ Json pipelineJson(const Scene& scene, const PrecisionChoice& precision, const Ef
         const Pipeline<T> p = pipelineFor<T>(scene);
         const std::vector<Mat4<T>> cumulative = cumulativeProducts(p.stages);
         Json out = {{"convention", conventionName(p.convention)},
-                    {"projection", p.projection},
+                    {"projection", projectionName(p.projection)},
                     {"precision", precisionName(precision)}};
         Json stages = Json::array();
         for (std::size_t k = 0; k < p.stages.size(); ++k)
@@ -223,12 +223,12 @@ void printPipeline(std::ostream& out, const Scene& scene, const PrecisionChoice&
         const Pipeline<double> names = pipelineFor<double>(scene);
         const std::vector<Mat4<T>> cumulative = cumulativeProducts(p.stages);
         out << scene.name << ": " << (p.convention == Convention::Foley ? "Foley" : "OpenGL") << ", "
-            << p.projection << ", " << precisionName(precision) << " precision\n"
+            << projectionName(p.projection) << ", " << precisionName(precision) << " precision\n"
             << "Column vectors: p' = M p. Each stage's matrix, and the product of all stages so far.\n\n";
         std::string product;
         for (std::size_t k = 0; k < p.stages.size(); ++k) {
             const Stage<T>& stage = p.stages[k];
-            out << k + 1 << ". " << stage.symbol << " - " << stage.explanation << "\n";
+            out << stageText(p.stages, k + 1, StageText::Heading) << "\n";
             printSideBySide(out, matrixLines(stage.matrix), matrixLines(cumulative[k]), stage.symbol,
                             "cumulative");
             out << "\n";
@@ -243,7 +243,7 @@ void printPipeline(std::ostream& out, const Scene& scene, const PrecisionChoice&
         if (p.view && p.projectionMatrix) {
             out << "\n";
             printSideBySide(out, matrixLines(*p.view), matrixLines(*p.projectionMatrix), "view (lookAt)",
-                            "projection (" + p.projection + ")");
+                            "projection (" + projectionName(p.projection) + ")");
         }
         if (!scene.effects.empty()) {
             const Json effects = effectsJson(scene, outcomes);
@@ -265,14 +265,14 @@ Json traceJson(const Scene& scene, const Vec3<double>& point, const PrecisionCho
         for (std::size_t k = 0; k < p.stages.size(); ++k)
             stages.push_back({{"symbol", p.stages[k].symbol}, {"point", vectorJson(trace.afterStage[k])}});
         Json out{{"convention", conventionName(p.convention)},
-                 {"projection", p.projection},
+                 {"projection", projectionName(p.projection)},
                  {"precision", precisionName(precision)},
                  {"point", vectorJson(point)},
                  {"stages", stages},
                  {"clip", vectorJson(trace.clip)},
                  {"divided", trace.divided ? vectorJson(*trace.divided) : Json(nullptr)},
                  {"inside", trace.inside}};
-        if (scene.effects.has("clip")) {
+        if (scene.effects.has(EffectKind::Clip)) {
             // Which clipping planes reject the point, decided before any divide.
             const Vec4<double> h = trace.clip.template cast<double>();
             const bool behind = !(h.w() > 0); // then every plane test fails: report that alone
@@ -332,7 +332,7 @@ Json classifyJson(const Scene& scene)
         points.push_back({{"axis", axes[vp.axis]},
                           {"world", {vp.world.x(), vp.world.y(), vp.world.z()}},
                           {"image", {vp.image.x(), vp.image.y()}}});
-    return {{"projection", c.projection},
+    return {{"projection", projectionName(c.projection)},
             {"family", c.family},
             {"kind", c.kind},
             {"description", c.description},
@@ -349,7 +349,7 @@ void printClassification(std::ostream& out, const Scene& scene)
     if (c.foreshortening)
         out << "foreshortening: x " << shortNumber((*c.foreshortening)[0]) << ", y "
             << shortNumber((*c.foreshortening)[1]) << ", z " << shortNumber((*c.foreshortening)[2]) << "\n";
-    if (c.projection == "perspective") {
+    if (c.projection == ProjectionKind::Perspective) {
         out << "vanishing points (" << c.vanishingPoints.size() << " finite):\n";
         for (const VanishingPoint& vp : c.vanishingPoints)
             out << "  " << axes[vp.axis] << ": world (" << shortNumber(vp.world.x()) << ", " << shortNumber(vp.world.y())

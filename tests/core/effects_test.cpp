@@ -3,6 +3,7 @@
 
 #include "support.hpp"
 #include "viewpipe/effects.hpp"
+#include "viewpipe/evaluated_scene.hpp"
 #include "viewpipe/scene.hpp"
 
 namespace viewpipe {
@@ -85,7 +86,7 @@ TEST(Clip, SutherlandHodgmanByHand)
 
 TEST(Effects, DivideAppendsFoleysM)
 {
-    const EffectList effects = withEffect({}, "divide", true);
+    const EffectList effects = withEffect({}, EffectKind::Divide, true);
     const Pipeline<double> plain = house();
     const Pipeline<double> p = withEffectStages(plain, effects);
     ASSERT_EQ(p.stages.size(), 6u);
@@ -98,34 +99,36 @@ TEST(Effects, DivideAppendsFoleysM)
     EXPECT_TRUE(tracePoint(p, {16, 10, 54}).divided->isApprox(*tracePoint(plain, {16, 10, 54}).divided));
 }
 
-TEST(Effects, OnlyRequestedEffectsRun)
+// The outcomes record the effects whose code ran: only the listed ones.
+TEST(Effects, OnlyListedEffectsRun)
 {
     const Pipeline<double> p = house();
     const std::vector<PolygonMesh> objects = {houseMesh()};
-    const auto before = effectRuns();
-    auto runs = [&](const char* name) {
-        const auto now = effectRuns();
-        const auto b = before.count(name) ? before.at(name) : 0;
-        return (now.count(name) ? now.at(name) : 0) - b;
-    };
-    EffectOutcomes none = runEffects(p, objects, EffectList{});
-    EXPECT_FALSE(none.clip);
-    EXPECT_FALSE(none.cull);
-    EXPECT_EQ(runs("clip"), 0);
-    EXPECT_EQ(runs("cull"), 0);
-    const EffectList clipOnly = withEffect({}, "clip", true);
-    EffectOutcomes clipped = runEffects(p, objects, clipOnly);
-    EXPECT_TRUE(clipped.clip);
-    EXPECT_EQ(runs("clip"), 1);
-    EXPECT_EQ(runs("cull"), 0);
-    EXPECT_EQ(runs("divide"), 0);
+    const EffectOutcomes none = runEffects(p, objects, EffectList{});
+    EXPECT_TRUE(none.computed.empty());
+    EXPECT_FALSE(none.clip || none.cull || none.depth || none.raster);
+    const EffectOutcomes clipped = runEffects(p, objects, withEffect({}, EffectKind::Clip, true));
+    EXPECT_EQ(clipped.computed, std::vector<EffectKind>{EffectKind::Clip});
+    EXPECT_TRUE(clipped.clip && !clipped.cull);
+
+    // In a scene, the divide runs as the pipeline is built, before the effects that look at the objects.
+    const std::string view = R"("view": {"projection": "perspective", "vrp": [0, 0, 0], "vpn": [0, 0, 1],
+        "vup": [0, 1, 0], "prp": [8, 6, 84], "window": [-50, 50, -50, 50], "front": 60, "back": 25})";
+    const auto listed = evaluateScene(parseScene("{" + view + R"(, "effects": ["cull", "divide", "clip"]})", "."));
+    EXPECT_EQ(listed->outcomes.computed,
+              (std::vector<EffectKind>{EffectKind::Divide, EffectKind::Clip, EffectKind::Cull}));
+    EXPECT_FALSE(listed->outcomes.depth || listed->outcomes.raster);
+    EXPECT_EQ(listed->pipeline.stages.back().symbol, "M");
+    const auto undivided = evaluateScene(parseScene("{" + view + R"(, "effects": ["raster"]})", "."));
+    EXPECT_EQ(undivided->outcomes.computed, std::vector<EffectKind>{EffectKind::Raster});
+    EXPECT_EQ(undivided->pipeline.stages.back().symbol, "S_per");
 }
 
 // The house lies inside the default view volume: nothing is clipped. Moving
 // the front plane to n = 40 cuts the house (which spans n = 30 to 54).
 TEST(Effects, ClipCountsForTheHouse)
 {
-    const EffectList clip = withEffect({}, "clip", true);
+    const EffectList clip = withEffect({}, EffectKind::Clip, true);
     const std::vector<PolygonMesh> objects = {houseMesh()};
     const EffectOutcomes all = runEffects(house(), objects, clip);
     EXPECT_EQ(all.clip->segments.inside, 15);
@@ -147,7 +150,7 @@ TEST(Effects, ClipCountsForTheHouse)
 // x = 8, y = 6 sees the ones whose outward normals point toward it.
 TEST(Effects, CullBackFaces)
 {
-    const EffectList cull = withEffect({}, "cull", true);
+    const EffectList cull = withEffect({}, EffectKind::Cull, true);
     const EffectOutcomes o = runEffects(house(), {houseMesh()}, cull);
     ASSERT_TRUE(o.cull);
     EXPECT_EQ(o.cull->faces, 7);
@@ -166,13 +169,12 @@ TEST(Effects, SceneListsAndRefuses)
     const std::string view = R"("view": {"projection": "perspective", "vrp": [0, 0, 0], "vpn": [0, 0, 1],
         "vup": [0, 1, 0], "prp": [8, 6, 84], "window": [-50, 50, -50, 50], "front": 60, "back": 25})";
     const Scene s = parseScene("{" + view + R"(, "effects": ["clip", {"divide": {}}, "cull"]})", ".");
-    EXPECT_TRUE(s.effects.has("clip") && s.effects.has("divide") && s.effects.has("cull"));
-    EXPECT_EQ(s.effects.names, (std::vector<std::string>{"clip", "divide", "cull"}));
+    EXPECT_EQ(s.effects.listed, (std::vector<EffectKind>{EffectKind::Clip, EffectKind::Divide, EffectKind::Cull}));
     EXPECT_NE(sceneToJson(s).find("\"clip\""), std::string::npos);
     auto refused = [&](const std::string& effects, const std::string& field, const std::string& reason) {
         test::expectRefused([&] { parseScene("{" + view + ", \"effects\": " + effects + "}", "."); }, field, reason);
     };
-    refused(R"(["glow"])", "effects[0]", "unknown effect \"glow\"");
+    refused(R"(["glow"])", "effects[0]", "unknown effect \"glow\" (known: clip, divide, depth, raster, cull)");
     refused(R"(["clip", "clip"])", "effects[1]", "listed twice");
     refused(R"([{"clip": {"planes": 4}}])", "effects[0].clip.planes", "unknown parameter");
     refused(R"([{"raster": {"width": 0}}])", "effects[0].raster.width", "1 to 4096");
@@ -204,7 +206,7 @@ TEST(Depth, ResolutionFollowsTheFormula)
     for (int bits : {16, 24}) {
         EffectList effects;
         effects.depth = DepthOptions{bits, false, false};
-        effects = withEffect(effects, "depth", true);
+        effects = withEffect(effects, EffectKind::Depth, true);
         const DepthOutcome d = *runEffects(p, {}, effects).depth;
         ASSERT_EQ(d.resolution.size(), 9u);
         for (const DepthSample& sample : d.resolution) {
@@ -289,7 +291,7 @@ TEST(Depth, ResolutionCurve)
 {
     const gl::Camera<double> camera{{{0, 0, 0}, {0, 0, -1}, {0, 1, 0}}, gl::Perspective<double>{60, 1, 1, 1000}};
     const Pipeline<double> p = buildPipeline(camera);
-    EffectList effects = withEffect({}, "depth", true);
+    EffectList effects = withEffect({}, EffectKind::Depth, true);
     const DepthOutcome outcome = *runEffects(p, {}, effects).depth;
     const std::vector<DepthSample> nine = depthResolution(p, *effects.depth, 9);
     ASSERT_EQ(nine.size(), outcome.resolution.size());
@@ -306,21 +308,25 @@ TEST(Depth, ResolutionCurve)
 // parameters set before turning an effect on are kept.
 TEST(Effects, TurnedOnAndOff)
 {
-    EffectList list = withEffect(withEffect({}, "clip", true), "cull", true);
-    EXPECT_EQ(list.names, (std::vector<std::string>{"clip", "cull"}));
-    EXPECT_TRUE(list.has("clip") && list.has("cull") && !list.has("divide"));
+    EffectList list = withEffect(withEffect({}, EffectKind::Clip, true), EffectKind::Cull, true);
+    EXPECT_EQ(list.listed, (std::vector<EffectKind>{EffectKind::Clip, EffectKind::Cull}));
+    EXPECT_TRUE(list.has(EffectKind::Clip) && list.has(EffectKind::Cull) && !list.has(EffectKind::Divide));
     list.depth = DepthOptions{16, false, true};
-    list = withEffect(list, "depth", true);
+    list = withEffect(list, EffectKind::Depth, true);
     EXPECT_EQ(list.depth->bits, 16);
     EXPECT_TRUE(list.depth->reversed);
-    list = withEffect(list, "raster", true);
+    list = withEffect(list, "raster", true); // by name, as a scene lists it
     EXPECT_EQ(list.raster->width, 64);
     list.depth->bits = 24;
-    EXPECT_EQ(withEffect(list, "depth", true).names, (std::vector<std::string>{"clip", "cull", "depth", "raster"}));
-    list = withEffect(withEffect(list, "clip", false), "depth", false);
-    EXPECT_EQ(list.names, (std::vector<std::string>{"cull", "raster"}));
-    EXPECT_FALSE(list.has("clip") || list.depth);
-    EXPECT_TRUE(withEffect(list, "raster", false).names == std::vector<std::string>{"cull"});
+    EXPECT_EQ(withEffect(list, EffectKind::Depth, true).listed,
+              (std::vector<EffectKind>{EffectKind::Clip, EffectKind::Cull, EffectKind::Depth, EffectKind::Raster}));
+    list = withEffect(withEffect(list, EffectKind::Clip, false), EffectKind::Depth, false);
+    EXPECT_EQ(list.listed, (std::vector<EffectKind>{EffectKind::Cull, EffectKind::Raster}));
+    EXPECT_FALSE(list.has(EffectKind::Clip) || list.depth);
+    EXPECT_TRUE(withEffect(list, EffectKind::Raster, false).listed == std::vector<EffectKind>{EffectKind::Cull});
+    for (const EffectKind effect :
+         {EffectKind::Clip, EffectKind::Divide, EffectKind::Cull, EffectKind::Depth, EffectKind::Raster})
+        EXPECT_EQ(effectNamed(effectName(effect), "effects"), effect);
     try {
         withEffect(list, "fog", true);
         ADD_FAILURE() << "fog is not an effect";

@@ -58,6 +58,18 @@ TEST(FoleyHouse, StagesMatchHandComputation)
         rows({{42.0 / 1475, 0, 0, 0}, {0, 42.0 / 1475, 0, 0}, {0, 0, 1.0 / 59, 0}, {0, 0, 0, 1}}), tol));
 }
 
+// The texts that name a stage: the world before any stage, then each stage by its symbol.
+TEST(FoleyHouse, StagesAreNamedForPeople)
+{
+    const std::vector<Stage<double>> stages = foley::perspectiveStages(houseView());
+    EXPECT_EQ(stageText(stages, 0, StageText::ListEntry), "0. World — the scene in world coordinates");
+    EXPECT_EQ(stageText(stages, 0, StageText::Caption), "World coordinates");
+    EXPECT_EQ(stageText(stages, 0, StageText::Heading), "0. World coordinates");
+    EXPECT_EQ(stageText(stages, 2, StageText::ListEntry), "2. R — " + stages[1].explanation);
+    EXPECT_EQ(stageText(stages, 2, StageText::Caption), "After R");
+    EXPECT_EQ(stageText(stages, 5, StageText::Heading), "5. S_per - " + stages[4].explanation);
+}
+
 TEST(FoleyHouse, NperAndZminMatchHandComputation)
 {
     const Pipeline<double> p = buildPipeline(houseView());

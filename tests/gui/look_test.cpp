@@ -257,7 +257,8 @@ private slots:
                                     "."));
         for (const Scene& scene : scenes)
             for (const bool divide : {false, true})
-                for (const auto& stage : buildPipeline(scene.camera, withEffect(scene.effects, "divide", divide)).stages)
+                for (const auto& stage :
+                     buildPipeline(scene.camera, withEffect(scene.effects, EffectKind::Divide, divide)).stages)
                     symbols.insert(stage.symbol);
         QVERIFY(symbols.count("SH_frustum") && symbols.count("S_par") && symbols.count("M"));
 

@@ -3,7 +3,9 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <filesystem>
+#include <random>
 #include <sstream>
 #include <string>
 
@@ -204,6 +206,28 @@ TEST(Format, SignificantDigits)
     EXPECT_EQ(formatSignificant(2.0 / 3, 3), "0.667");
     EXPECT_EQ(formatSignificant(1.5e-7, 2), "1.5e-07");
     EXPECT_EQ(formatSignificant(-24.0 / 59, 5), "-0.40678");
+}
+
+// Written out in full unless that takes more than three zeros after the point
+// or five before it; every text reads back as the same double.
+TEST(Format, ShortestRoundTrip)
+{
+    EXPECT_EQ(formatShortest(-0.0), "0");
+    EXPECT_EQ(formatShortest(0.1), "0.1");
+    EXPECT_EQ(formatShortest(-12.5), "-12.5");
+    EXPECT_EQ(formatShortest(1.0 / 3), "0.3333333333333333");
+    EXPECT_EQ(formatShortest(0.0001), "0.0001");
+    EXPECT_EQ(formatShortest(0.00001), "1e-05");
+    EXPECT_EQ(formatShortest(100000), "100000");
+    EXPECT_EQ(formatShortest(1000000), "1e+06");
+    EXPECT_EQ(formatShortest(1500000), "1500000");
+    EXPECT_EQ(formatShortest(15000000), "1.5e+07");
+    std::mt19937_64 random(5);
+    std::uniform_real_distribution<double> mantissa(-10, 10), exponent(-30, 30);
+    for (int i = 0; i < 10000; ++i) {
+        const double x = mantissa(random) * std::pow(10.0, std::floor(exponent(random)));
+        EXPECT_EQ(std::stod(formatShortest(x)), x) << formatShortest(x);
+    }
 }
 
 } // namespace

@@ -61,7 +61,7 @@ struct VanishingPoint {
 };
 
 struct Classification {
-    std::string projection;       // "parallel" or "perspective"
+    ProjectionKind projection = ProjectionKind::Parallel; // Parallel or Perspective
     std::string family;           // "multiview orthographic", "axonometric", "oblique", "perspective"
     std::string kind;             // "front", "isometric", "cabinet", "two-point", "general", ...
     std::string description;      // e.g. "parallel, oblique, cabinet (alpha = 63.43 deg)"

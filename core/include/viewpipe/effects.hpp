@@ -2,13 +2,10 @@
 
 // Scene effects: what happens after the normalizing transformation, computed
 // only when a scene asks for it. Each effect is a function of the pipeline and
-// the scene's geometry; `effectRuns` counts the calls so that tests can show
-// that an effect nobody asked for never ran.
+// the scene's geometry; the outcomes record which effects' code ran.
 
 #include <algorithm>
 #include <array>
-#include <atomic>
-#include <map>
 #include <optional>
 #include <string>
 #include <vector>
@@ -31,16 +28,23 @@ struct RasterOptions {
     int width = 64, height = 48;
 };
 
-// The effects a scene lists, in its order, with their parameters:
-// "clip" (segments and polygons against the view volume, homogeneously),
-// "divide" (Foley's M, or OpenGL's divide into NDC, as a stage), "cull" (back
-// faces in canonical space), "depth" and "raster". Built with withEffect.
+// Clip: segments and polygons against the view volume, homogeneously.
+// Divide: Foley's M, or OpenGL's divide into NDC, as a stage. Cull: back
+// faces in canonical space. Depth: the depth buffer. Raster: the final image.
+enum class EffectKind { Clip, Divide, Cull, Depth, Raster };
+
+// "clip", "divide", "cull", "depth", "raster": as scene files and reports name it.
+std::string effectName(EffectKind effect);
+// The effect called `name`; throws InputError(field, "unknown effect ...") for a name that is not an effect.
+EffectKind effectNamed(const std::string& name, const std::string& field);
+
+// The effects a scene lists, in its order, with their parameters. Built with withEffect.
 struct EffectList {
-    std::vector<std::string> names; // as listed
-    std::optional<DepthOptions> depth;   // while "depth" is listed
-    std::optional<RasterOptions> raster; // while "raster" is listed
-    bool empty() const { return names.empty(); }
-    bool has(const std::string& name) const { return std::find(names.begin(), names.end(), name) != names.end(); }
+    std::vector<EffectKind> listed;
+    std::optional<DepthOptions> depth;   // while Depth is listed
+    std::optional<RasterOptions> raster; // while Raster is listed
+    bool empty() const { return listed.empty(); }
+    bool has(EffectKind effect) const { return std::find(listed.begin(), listed.end(), effect) != listed.end(); }
 };
 
 // "16-bit fixed point", "32-bit float, reversed": as captions and legends name it.
@@ -54,40 +58,39 @@ inline bool operator==(const RasterOptions& a, const RasterOptions& b)
 {
     return a.width == b.width && a.height == b.height;
 }
-// The same effects in the same order with the same parameters (the flags follow the names).
+// The same effects in the same order with the same parameters (the flags follow the list).
 inline bool operator==(const EffectList& a, const EffectList& b)
 {
-    return a.names == b.names && a.depth == b.depth && a.raster == b.raster;
+    return a.listed == b.listed && a.depth == b.depth && a.raster == b.raster;
 }
 
 // The list with an effect turned on (appended, or kept in its place if listed,
 // with the parameters already in `depth` or `raster`, else the defaults) or
 // off (removed): what a scene's
-// "effects" and the app's Effects menu both build lists with. Throws
-// InputError naming "effects" for a name that is not an effect.
+// "effects" and the app's Effects menu both build lists with.
+EffectList withEffect(EffectList effects, EffectKind effect, bool on);
+// By name, as a scene lists it; throws InputError naming "effects" for a name that is not an effect.
 EffectList withEffect(EffectList effects, const std::string& name, bool on);
-
-// Calls of each effect's code since the start of the process (for tests).
-std::map<std::string, long> effectRuns();
-
-void countEffectRun(const std::string& effect);
 
 // Whether "divide" appends a stage to this pipeline: M after a perspective
 // Foley view, "divide" after an OpenGL camera; a parallel Foley view's
 // canonical volume is parallel already.
 template <class T> bool divideAddsStage(const Pipeline<T>& p)
 {
-    return p.convention == Convention::OpenGL || p.projection == "perspective";
+    return p.convention == Convention::OpenGL || p.projection == ProjectionKind::Perspective;
 }
 
-// The pipeline with the effects' stages: with "divide", Foley's M is appended
+// The pipeline with the effects' stages: with Divide, Foley's M is appended
 // to a perspective view (symbol "M"), and an OpenGL camera gains "divide"
 // (the identity: the picture is divided by w at every stage already).
-template <class T> Pipeline<T> withEffectStages(Pipeline<T> p, const EffectList& effects)
+// `computed`, when given, gains Divide when the divide's code ran.
+template <class T>
+Pipeline<T> withEffectStages(Pipeline<T> p, const EffectList& effects, std::vector<EffectKind>* computed = nullptr)
 {
-    if (!effects.has("divide"))
+    if (!effects.has(EffectKind::Divide))
         return p;
-    countEffectRun("divide");
+    if (computed)
+        computed->push_back(EffectKind::Divide);
     if (!divideAddsStage(p))
         return p;
     if (p.convention == Convention::Foley) {
@@ -104,9 +107,10 @@ template <class T> Pipeline<T> withEffectStages(Pipeline<T> p, const EffectList&
     return p;
 }
 
-inline Pipeline<double> buildPipeline(const CameraSpec<double>& camera, const EffectList& effects)
+inline Pipeline<double> buildPipeline(const CameraSpec<double>& camera, const EffectList& effects,
+                                      std::vector<EffectKind>* computed = nullptr)
 {
-    return withEffectStages(buildPipeline(camera), effects);
+    return withEffectStages(buildPipeline(camera), effects, computed);
 }
 
 // Which side of each clipping plane a homogeneous point lies on: bit k set
@@ -185,7 +189,7 @@ struct DepthOutcome {
 
 // The final image through a z-buffer: for each pixel (row 0 at the bottom),
 // the object and face seen there, or -1; faces are clipped homogeneously
-// first, and culled when "cull" is listed.
+// first, and culled when Cull is listed.
 struct RasterOutcome {
     int width = 0, height = 0;
     std::vector<int> object, face;
@@ -197,6 +201,7 @@ RasterOutcome rasterize(const Pipeline<double>& pipeline, const std::vector<Poly
                         const RasterOptions& options, const std::vector<std::vector<bool>>* culled = nullptr);
 
 struct EffectOutcomes {
+    std::vector<EffectKind> computed; // the effects whose code ran, in the order it ran
     std::optional<ClipOutcome> clip;
     std::optional<CullOutcome> cull;
     std::optional<DepthOutcome> depth;

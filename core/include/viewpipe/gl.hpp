@@ -223,12 +223,6 @@ template <class T> Mat4<T> projectionMatrix(const ProjectionSpec<T>& spec)
         spec);
 }
 
-template <class T> std::string projectionName(const ProjectionSpec<T>& spec)
-{
-    static const char* names[] = {"frustum", "ortho", "perspective"};
-    return names[spec.index()];
-}
-
 // The view transformation as stages: T(-eye), then R_eye (rows s, u, -f).
 template <class T> std::vector<Stage<T>> lookAtStages(const LookAt<T>& look)
 {

@@ -33,9 +33,22 @@ template <class U, class T, class F> CameraSpec<U> convertCamera(const CameraSpe
 // perspective volume is taken there by M), OpenGL's -w <= x, y, z <= w; w > 0.
 enum class ClipVolume { FoleyParallel, OpenGL };
 
+// The projection a pipeline ends in: Foley's two, or OpenGL's three.
+enum class ProjectionKind { Perspective, Parallel, Frustum, Ortho };
+
+// "perspective", "parallel", "frustum", "ortho": as scene files and reports name it.
+std::string projectionName(ProjectionKind kind);
+
+template <class T> ProjectionKind projectionKind(const gl::ProjectionSpec<T>& spec)
+{
+    static constexpr ProjectionKind kinds[] = {ProjectionKind::Frustum, ProjectionKind::Ortho,
+                                               ProjectionKind::Perspective}; // in the variant's order
+    return kinds[spec.index()];
+}
+
 template <class T> struct Pipeline {
     Convention convention = Convention::Foley;
-    std::string projection; // "perspective", "parallel", "frustum", "ortho"
+    ProjectionKind projection = ProjectionKind::Perspective;
     std::vector<Stage<T>> stages;
     Mat4<T> composite;                     // N_per, N_par, or P * V
     std::optional<T> zmin;                 // Foley perspective only
@@ -53,7 +66,7 @@ template <class T> Pipeline<T> buildPipeline(const foley::ViewSpec<T>& spec)
     Pipeline<T> p;
     p.convention = Convention::Foley;
     const bool perspective = spec.projection == foley::Projection::Perspective;
-    p.projection = perspective ? "perspective" : "parallel";
+    p.projection = perspective ? ProjectionKind::Perspective : ProjectionKind::Parallel;
     p.stages = foley::stages(spec);
     p.composite = foley::normalizingMatrix(spec);
     if (perspective) {
@@ -68,7 +81,7 @@ template <class T> Pipeline<T> buildPipeline(const gl::Camera<T>& camera)
 {
     Pipeline<T> p;
     p.convention = Convention::OpenGL;
-    p.projection = gl::projectionName(camera.projection);
+    p.projection = projectionKind(camera.projection);
     p.stages = gl::stages(camera);
     p.view = gl::lookAt(camera.lookAt);
     p.projectionMatrix = gl::projectionMatrix(camera.projection);

@@ -67,12 +67,12 @@ template <class T> ViewSetup<T> viewSetup(const CameraSpec<T>& camera)
     return std::visit([](const auto& c) { return viewSetup(c); }, camera);
 }
 
-// With "divide", a perspective Foley view ends, after M, in the canonical parallel volume.
+// With Divide, a perspective Foley view ends, after M, in the canonical parallel volume.
 template <class T> ViewSetup<T> viewSetup(const CameraSpec<T>& camera, const EffectList& effects)
 {
     ViewSetup<T> s = viewSetup(camera);
     const auto* spec = std::get_if<foley::ViewSpec<T>>(&camera);
-    if (spec && effects.has("divide") && spec->projection == foley::Projection::Perspective) {
+    if (spec && effects.has(EffectKind::Divide) && spec->projection == foley::Projection::Perspective) {
         foley::ViewSpec<T> parallel = *spec;
         parallel.projection = foley::Projection::Parallel;
         s.canonical = foley::canonicalCorners(parallel);

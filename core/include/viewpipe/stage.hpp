@@ -27,4 +27,31 @@ template <class T> std::vector<Mat4<T>> cumulativeProducts(const std::vector<Sta
     return products;
 }
 
+// The texts that name stage k of a pipeline for people, k = 0 being the world
+// before any stage.
+enum class StageText {
+    ListEntry, // "0. World — the scene in world coordinates", "2. R — rotate ...": the app's list of stages
+    Caption,   // "World coordinates", "After R": over the picture of the world view
+    Heading,   // "0. World coordinates", "2. R - rotate ...": exported pictures and text reports, in ASCII
+};
+
+template <class T> std::string stageText(const std::vector<Stage<T>>& stages, std::size_t k, StageText text)
+{
+    if (k == 0) {
+        switch (text) {
+        case StageText::ListEntry: return "0. World — the scene in world coordinates";
+        case StageText::Caption: return "World coordinates";
+        case StageText::Heading: return "0. World coordinates";
+        }
+    }
+    const Stage<T>& stage = stages[k - 1];
+    const std::string number = std::to_string(k) + ". ";
+    switch (text) {
+    case StageText::ListEntry: return number + stage.symbol + " — " + stage.explanation;
+    case StageText::Caption: return "After " + stage.symbol;
+    case StageText::Heading: return number + stage.symbol + " - " + stage.explanation;
+    }
+    return "";
+}
+
 } // namespace viewpipe

@@ -6,6 +6,7 @@
 #include <nlohmann/json.hpp>
 
 #include <ostream>
+#include <string>
 
 #include "viewpipe/precision_ladder.hpp"
 
@@ -13,5 +14,7 @@ namespace viewpipe::cli {
 
 nlohmann::json benchJson(const BenchResult& result);
 void printBench(std::ostream& out, const BenchResult& result);
+// An absolute error with its size in units of epsilon in brackets, as the table and the app's panel show it.
+std::string errorCell(double error, double epsilon);
 
 } // namespace viewpipe::cli
