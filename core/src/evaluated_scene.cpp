@@ -22,7 +22,7 @@ class Builder {
 public:
     explicit Builder(EvaluatedScene& out) : out_(out) {}
 
-    void lines(Element element, const std::vector<Segment>& segments, double opacity, int object = -1)
+    Primitive& lines(Element element, const std::vector<Segment>& segments, double opacity, int object = -1)
     {
         Primitive p;
         p.element = element;
@@ -35,6 +35,7 @@ public:
             p.bounds.extend(s.second);
         }
         out_.primitives.push_back(std::move(p));
+        return out_.primitives.back();
     }
 
     Primitive& faces(Element element, std::shared_ptr<const PolygonMesh> mesh, double opacity, int object = -1)
@@ -263,77 +264,53 @@ std::shared_ptr<const PolygonMesh> objectMesh(const SceneObject& object, std::si
                                                                                  : boxMesh(object.min, object.max));
 }
 
-std::shared_ptr<const EvaluatedScene> evaluate(const Scene& scene, MeshCache* cache)
+// Each object's faces as the effects sort them: in front, culled, or fighting for depth.
+std::vector<ObjectFaces> sortFaces(const std::vector<std::shared_ptr<const PolygonMesh>>& meshes,
+                                   const EffectOutcomes& outcomes)
 {
-    auto evaluated = std::make_shared<EvaluatedScene>();
-    EvaluatedScene& out = *evaluated;
-    out.scene = scene;
-    std::vector<EffectKind> staged; // the divide runs first, as the pipeline is built
-    out.pipeline = buildPipeline(scene.camera, scene.effects, &staged);
-    out.meshes = objectMeshes(scene, cache);
-    bool farCut = false;
-    const CameraSpec<double> drawn = drawnCamera(scene.camera, out.objectBounds(), farCut);
-    out.setup = viewSetup(drawn, scene.effects);
-    const Pipeline<double>& pipeline = out.pipeline;
-    const ViewSetup<double>& setup = out.setup;
-
-    // The size of the set-up, for axis lengths and markers.
-    Eigen::AlignedBox<double, 3> box = out.objectBounds();
-    for (const Vec3<double>& p : setup.volume)
-        box.extend(p);
-    box.extend(setup.prp);
-    box.extend(setup.origin);
-    out.size = box.diagonal().norm();
-    const double axis = 0.15 * out.size;
-    const double worldAxis = 1.5 * axis; // longer than the VRC axes, which may start at the same point
-    const double marker = 0.008 * out.size;
-    out.markerSize = marker;
-
-    std::vector<PolygonMesh> meshes; // the effects take them by value
-    if (!scene.effects.empty())
-        for (const auto& mesh : out.meshes)
-            meshes.push_back(*mesh);
-    out.outcomes = runEffects(pipeline, meshes, scene.effects);
-    out.outcomes.computed.insert(out.outcomes.computed.begin(), staged.begin(), staged.end());
-    const EffectOutcomes& outcomes = out.outcomes;
-
-    // Each object's faces: in front, culled, or fighting for depth.
-    for (std::size_t o = 0; o < out.meshes.size(); ++o) {
+    std::vector<ObjectFaces> sorted;
+    for (std::size_t o = 0; o < meshes.size(); ++o) {
         ObjectFaces sets;
         if (!outcomes.cull && !outcomes.depth) {
-            sets.front = out.meshes[o];
-        } else {
-            std::vector<bool> fighting(out.meshes[o]->faces.size(), false);
-            if (outcomes.depth)
-                for (const auto& pair : outcomes.depth->zFighting) {
-                    if (std::size_t(pair[0]) == o)
-                        fighting[std::size_t(pair[1])] = true;
-                    if (std::size_t(pair[2]) == o)
-                        fighting[std::size_t(pair[3])] = true;
-                }
-            PolygonMesh front, culled, fights;
-            front.vertices = culled.vertices = fights.vertices = out.meshes[o]->vertices;
-            for (std::size_t f = 0; f < out.meshes[o]->faces.size(); ++f) {
-                const bool isCulled = outcomes.cull && outcomes.cull->culledFaces[o][f];
-                (fighting[f] ? fights : isCulled ? culled : front).faces.push_back(out.meshes[o]->faces[f]);
-            }
-            sets.front = std::make_shared<const PolygonMesh>(std::move(front));
-            sets.culled = std::make_shared<const PolygonMesh>(std::move(culled));
-            sets.fighting = std::make_shared<const PolygonMesh>(std::move(fights));
+            sets.front = meshes[o];
+            sorted.push_back(std::move(sets));
+            continue;
         }
-        out.objectFaces.push_back(std::move(sets));
+        std::vector<bool> fighting(meshes[o]->faces.size(), false);
+        if (outcomes.depth)
+            for (const auto& pair : outcomes.depth->zFighting) {
+                if (std::size_t(pair[0]) == o)
+                    fighting[std::size_t(pair[1])] = true;
+                if (std::size_t(pair[2]) == o)
+                    fighting[std::size_t(pair[3])] = true;
+            }
+        PolygonMesh front, culled, fights;
+        front.vertices = culled.vertices = fights.vertices = meshes[o]->vertices;
+        for (std::size_t f = 0; f < meshes[o]->faces.size(); ++f) {
+            const bool isCulled = outcomes.cull && outcomes.cull->culledFaces[o][f];
+            (fighting[f] ? fights : isCulled ? culled : front).faces.push_back(meshes[o]->faces[f]);
+        }
+        sets.front = std::make_shared<const PolygonMesh>(std::move(front));
+        sets.culled = std::make_shared<const PolygonMesh>(std::move(culled));
+        sets.fighting = std::make_shared<const PolygonMesh>(std::move(fights));
+        sorted.push_back(std::move(sets));
     }
-    if (outcomes.depth) {
-        std::vector<const PolygonMesh*> fronts;
-        for (const ObjectFaces& sets : out.objectFaces)
-            fronts.push_back(sets.front.get());
-        out.bands = bandsOf(fronts, pipeline, *scene.effects.depth);
-    }
+    return sorted;
+}
 
-    Builder add(out);
+// What the objects' primitives showed, for the labels, marks and legends.
+struct ObjectsShown {
     std::vector<Vec3<double>> fighting; // the z-fighting faces' corners
     std::vector<Segment> builtInEdges;  // meshes from files have none drawn
     bool clippedAway = false, culledAway = false;
+};
+
+// The objects' faces and edges: ghosts for what was clipped away or culled,
+// the faces the depth buffer cannot order outlined.
+ObjectsShown addObjects(Builder& add, const EvaluatedScene& out)
+{
+    const EffectOutcomes& outcomes = out.outcomes;
+    ObjectsShown shown;
     for (std::size_t o = 0; o < out.meshes.size(); ++o) {
         const int object = int(o);
         const PolygonMesh& mesh = *out.meshes[o];
@@ -342,52 +319,63 @@ std::shared_ptr<const EvaluatedScene> evaluate(const Scene& scene, MeshCache* ca
         front.depthColored = out.bands.has_value() && !sets.front->faces.empty();
         if (sets.culled && !sets.culled->faces.empty()) {
             add.faces(Element::Objects, sets.culled, kCulledOpacity, object);
-            culledAway = true;
+            shown.culledAway = true;
         }
         if (sets.fighting && !sets.fighting->faces.empty()) { // outlined: far away they may be a few pixels wide
             add.faces(Element::ZFighting, sets.fighting, 0.8, object);
             add.lines(Element::ZFighting, meshEdges(*sets.fighting), 1.0, object);
             for (const std::vector<int>& face : sets.fighting->faces)
                 for (int k : face)
-                    fighting.push_back(sets.fighting->vertices[std::size_t(k)]);
+                    shown.fighting.push_back(sets.fighting->vertices[std::size_t(k)]);
         }
         const std::vector<Segment> edges =
-            scene.objects[o].type == ObjectType::Mesh ? std::vector<Segment>{} : meshEdges(mesh);
-        builtInEdges.insert(builtInEdges.end(), edges.begin(), edges.end());
-        if (outcomes.clip) {
-            std::vector<Segment> kept, away;
-            const auto indices = meshEdgeIndices(mesh);
-            for (std::size_t e = 0; e < indices.size(); ++e) {
-                const Vec3<double>& a = mesh.vertices[std::size_t(indices[e][0])];
-                const Vec3<double>& b = mesh.vertices[std::size_t(indices[e][1])];
-                const auto& interval = outcomes.clip->keptEdges[o][e];
-                if (!interval) {
-                    away.emplace_back(a, b);
-                    continue;
-                }
-                const Vec3<double> p = a + (*interval)[0] * (b - a), q = a + (*interval)[1] * (b - a);
-                kept.emplace_back(p, q);
-                if ((*interval)[0] > 0)
-                    away.emplace_back(a, p);
-                if ((*interval)[1] < 1)
-                    away.emplace_back(q, b);
+            out.scene.objects[o].type == ObjectType::Mesh ? std::vector<Segment>{} : meshEdges(mesh);
+        shown.builtInEdges.insert(shown.builtInEdges.end(), edges.begin(), edges.end());
+        if (!outcomes.clip) {
+            if (!edges.empty())
+                add.lines(Element::Objects, edges, 1.0, object);
+            continue;
+        }
+        std::vector<Segment> kept, away;
+        const auto indices = meshEdgeIndices(mesh);
+        for (std::size_t e = 0; e < indices.size(); ++e) {
+            const Vec3<double>& a = mesh.vertices[std::size_t(indices[e][0])];
+            const Vec3<double>& b = mesh.vertices[std::size_t(indices[e][1])];
+            const auto& interval = outcomes.clip->keptEdges[o][e];
+            if (!interval) {
+                away.emplace_back(a, b);
+                continue;
             }
-            add.lines(Element::Objects, kept, 1.0, object);
-            if (!away.empty()) {
-                add.lines(Element::Objects, away, kClippedOpacity, object);
-                clippedAway = true;
-            }
-        } else if (!edges.empty()) {
-            add.lines(Element::Objects, edges, 1.0, object);
+            const Vec3<double> p = a + (*interval)[0] * (b - a), q = a + (*interval)[1] * (b - a);
+            kept.emplace_back(p, q);
+            if ((*interval)[0] > 0)
+                away.emplace_back(a, p);
+            if ((*interval)[1] < 1)
+                away.emplace_back(q, b);
+        }
+        add.lines(Element::Objects, kept, 1.0, object);
+        if (!away.empty()) {
+            add.lines(Element::Objects, away, kClippedOpacity, object);
+            shown.clippedAway = true;
         }
     }
-    if (!fighting.empty()) {
+    if (!shown.fighting.empty()) {
         Eigen::AlignedBox<double, 3> spot;
-        for (const Vec3<double>& p : fighting)
+        for (const Vec3<double>& p : shown.fighting)
             spot.extend(p);
         add.label(Element::ZFighting, "z-fighting", spot.center());
     }
+    return shown;
+}
 
+// The viewing set-up: the world and view axes, VRP, PRP, the window and CW,
+// the DOP, the view volume with its planes, the projectors, the canonical volume.
+void addSetUp(Builder& add, const EvaluatedScene& out, bool farCut)
+{
+    const ViewSetup<double>& setup = out.setup;
+    const double axis = 0.15 * out.size;
+    const double worldAxis = 1.5 * axis; // longer than the VRC axes, which may start at the same point
+    const double marker = out.markerSize;
     const Vec3<double> o = Vec3<double>::Zero();
     add.lines(Element::WorldAxes,
               {{o, Vec3<double>::UnitX() * worldAxis}, {o, Vec3<double>::UnitY() * worldAxis},
@@ -397,7 +385,7 @@ std::shared_ptr<const EvaluatedScene> evaluate(const Scene& scene, MeshCache* ca
     add.label(Element::WorldAxes, "y", Vec3<double>::UnitY() * worldAxis);
     add.label(Element::WorldAxes, "z", Vec3<double>::UnitZ() * worldAxis);
 
-    const bool foley = pipeline.convention == Convention::Foley;
+    const bool foley = out.pipeline.convention == Convention::Foley;
     const Vec3<double>& vrp = setup.origin;
     add.lines(Element::ViewAxes,
               {{vrp, vrp + setup.axes.u * axis}, {vrp, vrp + setup.axes.v * axis}, {vrp, vrp + setup.axes.n * axis}},
@@ -436,9 +424,10 @@ std::shared_ptr<const EvaluatedScene> evaluate(const Scene& scene, MeshCache* ca
     add.faces(Element::Volume, std::move(sides), 0.10);
     add.lines(Element::Volume, boxEdges(v), 0.8);
     add.faces(Element::FrontPlane, quad(v[0], v[1], v[2], v[3]), 0.22);
-    add.faces(Element::BackPlane, quad(v[4], v[5], v[6], v[7]), 0.22);
+    if (!farCut) // a volume cut short has no far face: its end stays open
+        add.faces(Element::BackPlane, quad(v[4], v[5], v[6], v[7]), 0.22);
     add.label(Element::FrontPlane, foley ? "front (F)" : "near", v[3]);
-    add.label(Element::BackPlane, foley ? "back (B)" : farCut ? "far at infinity (cut)" : "far", v[7]);
+    add.label(Element::BackPlane, foley ? "back (B)" : farCut ? "far at infinity (volume cut)" : "far", v[7]);
     add.label(Element::Window, foley ? "window" : "", (setup.window[2] + setup.window[3]) / 2);
 
     std::vector<Segment> projectors;
@@ -449,23 +438,22 @@ std::shared_ptr<const EvaluatedScene> evaluate(const Scene& scene, MeshCache* ca
         projectors.push_back(span(along));
     }
     add.lines(Element::Projectors, projectors, 0.7);
-    add.lines(Element::Canonical, boxEdges(setup.canonical), 1.0);
-    out.primitives.back().canonical = true;
+    add.lines(Element::Canonical, boxEdges(setup.canonical), 1.0).canonical = true; // drawn where it is
+}
 
-    out.vanishingLines = vanishingLines(drawn, pipeline, builtInEdges); // x and y do not depend on the far plane
-    out.zFightingRing = ringAround(fighting, pipeline.clipMatrix());
-    out.effectsNote = describeEffects(scene.effects, outcomes, pipeline, out.bands);
-
-    // The legends name what this scene shows, each view its own.
+// The legends name what this scene shows, each view its own.
+void fillLegends(EvaluatedScene& out, const ObjectsShown& shown, bool farCut)
+{
+    const bool foley = out.pipeline.convention == Convention::Foley;
     using Swatch = LegendEntry::Swatch;
     std::vector<LegendEntry> effectEntries; // in both views
-    if (!fighting.empty())
+    if (!shown.fighting.empty())
         effectEntries.push_back({"z-fighting faces", Element::ZFighting, Swatch::Face});
     if (out.bands)
         effectEntries.push_back({"depth bands, near to far", Element::Objects, Swatch::Bands});
     auto& world = out.worldLegend;
     world = {{foley ? "VRP and the VRC axes u, v, n" : "eye axes s, u, -f", Element::ViewAxes, Swatch::Line}};
-    if (setup.perspective)
+    if (out.setup.perspective)
         world.push_back(
             {foley ? "PRP, center of projection" : "eye, center of projection", Element::Prp, Swatch::Dot});
     world.insert(world.end(), {{"window and its center CW", Element::Window, Swatch::Line},
@@ -478,17 +466,67 @@ std::shared_ptr<const EvaluatedScene> evaluate(const Scene& scene, MeshCache* ca
                                {"projectors", Element::Projectors, Swatch::Line},
                                {"canonical view volume", Element::Canonical, Swatch::Line}});
     world.insert(world.end(), effectEntries.begin(), effectEntries.end());
-    if (clippedAway)
+    if (shown.clippedAway)
         world.push_back({"clipped away (ghosted)", Element::Objects, Swatch::Line, kClippedOpacity});
-    if (culledAway)
+    if (shown.culledAway)
         world.push_back({"culled faces (ghosted)", Element::Objects, Swatch::Face, kCulledOpacity});
     auto& projected = out.projectedLegend;
     projected = {{"window", Element::Window, Swatch::Line}};
     if (!out.vanishingLines.empty())
         projected.push_back({"vanishing lines", Element::Vanishing, Swatch::Line});
     projected.insert(projected.end(), effectEntries.begin(), effectEntries.end());
-    if (outcomes.raster)
+    if (out.outcomes.raster)
         projected.push_back({"raster pixels, a color per object", Element::Objects, Swatch::Pixels});
+}
+
+std::shared_ptr<const EvaluatedScene> evaluate(const Scene& scene, MeshCache* cache)
+{
+    auto evaluated = std::make_shared<EvaluatedScene>();
+    EvaluatedScene& out = *evaluated;
+    out.scene = scene;
+    std::vector<EffectKind> staged; // the divide runs first, as the pipeline is built
+    out.pipeline = buildPipeline(scene.camera, scene.effects, &staged);
+    out.meshes = objectMeshes(scene, cache);
+    bool farCut = false;
+    const CameraSpec<double> drawn = drawnCamera(scene.camera, out.objectBounds(), farCut);
+    out.setup = viewSetup(drawn, scene.effects);
+
+    // The size of the set-up, for axis lengths and markers.
+    Eigen::AlignedBox<double, 3> box = out.objectBounds();
+    for (const Vec3<double>& p : out.setup.volume)
+        box.extend(p);
+    box.extend(out.setup.prp);
+    box.extend(out.setup.origin);
+    out.size = box.diagonal().norm();
+    out.markerSize = 0.008 * out.size;
+    if (out.setup.perspective) { // just before the near (front) plane, so that its face is never cut
+        const Vec3<double> ahead = -out.setup.axes.n;
+        const double nearDistance = (out.setup.volume[0] - out.setup.prp).dot(ahead);
+        if (nearDistance > 0)
+            out.nearCut = Vec4<double>(ahead.x(), ahead.y(), ahead.z(), -ahead.dot(out.setup.prp) - 0.9 * nearDistance);
+    }
+
+    std::vector<PolygonMesh> meshes; // the effects take them by value
+    if (!scene.effects.empty())
+        for (const auto& mesh : out.meshes)
+            meshes.push_back(*mesh);
+    out.outcomes = runEffects(out.pipeline, meshes, scene.effects);
+    out.outcomes.computed.insert(out.outcomes.computed.begin(), staged.begin(), staged.end());
+    out.objectFaces = sortFaces(out.meshes, out.outcomes);
+    if (out.outcomes.depth) {
+        std::vector<const PolygonMesh*> fronts;
+        for (const ObjectFaces& sets : out.objectFaces)
+            fronts.push_back(sets.front.get());
+        out.bands = bandsOf(fronts, out.pipeline, *scene.effects.depth);
+    }
+
+    Builder add(out);
+    const ObjectsShown shown = addObjects(add, out);
+    addSetUp(add, out, farCut);
+    out.vanishingLines = vanishingLines(drawn, out.pipeline, shown.builtInEdges); // x and y do not depend on the far plane
+    out.zFightingRing = ringAround(shown.fighting, out.pipeline.clipMatrix());
+    out.effectsNote = describeEffects(scene.effects, out.outcomes, out.pipeline, out.bands);
+    fillLegends(out, shown, farCut);
     return evaluated;
 }
 

@@ -9,6 +9,7 @@
 #include <vtkLegendBoxActor.h>
 #include <vtkLookupTable.h>
 #include <vtkMatrix4x4.h>
+#include <vtkPlane.h>
 #include <vtkPolyData.h>
 #include <vtkPolyDataMapper.h>
 #include <vtkProperty.h>
@@ -33,12 +34,21 @@ namespace {
 // (under a projective matrix the image of a box in front of the eye lies within its corners' hull).
 constexpr std::size_t kExactFraming = 20000;
 
+// A stage whose matrix divides: w is not 1 everywhere.
+bool isProjective(const Mat4<double>& m)
+{
+    return m(3, 0) != 0 || m(3, 1) != 0 || m(3, 2) != 0 || m(3, 3) != 1;
+}
+
 // Extends `box` with the primitive through `m`; false (and `box` unchanged)
-// when a point of it has no image.
-bool extendThrough(Eigen::AlignedBox<double, 3>& box, const Primitive& primitive, const Mat4<double>& m)
+// when a point of it has no image. Points on the eye's side of `cut` do not count.
+bool extendThrough(Eigen::AlignedBox<double, 3>& box, const Primitive& primitive, const Mat4<double>& m,
+                   const std::optional<Vec4<double>>& cut)
 {
     Eigen::AlignedBox<double, 3> through;
     auto add = [&](const Vec3<double>& p) {
+        if (cut && cut->dot(p.homogeneous()) < 0)
+            return true;
         const std::optional<Vec3<double>> q = projectPoint(m, p);
         if (q)
             through.extend(*q);
@@ -86,7 +96,8 @@ void addObjectActors(const std::vector<vtkRenderer*>& renderers, const Evaluated
 ScenePainter::ScenePainter(vtkRenderer* world, vtkRenderer* projected)
     : world_(world), worldCaption_(vtkSmartPointer<vtkTextActor>::New()),
       effectsCaption_(vtkSmartPointer<vtkTextActor>::New()), frameAxes_(unlitActor(linesData(std::vector<Segment2>{}))),
-      legend_(newLegend(true)), clippingRange_(vtkSmartPointer<vtkCallbackCommand>::New())
+      legend_(newLegend(true)), clippingRange_(vtkSmartPointer<vtkCallbackCommand>::New()),
+      nearCut_(vtkSmartPointer<vtkPlane>::New())
 {
     if (projected)
         projected_ = std::make_unique<ProjectedView>(projected);
@@ -165,6 +176,7 @@ void ScenePainter::setScene(std::shared_ptr<const EvaluatedScene> scene)
     clear();
     tracedMarker_.reset();
     tracedLabel_.reset();
+    cutting_ = false; // the new props are not cut yet
     // Keep the poly data of the meshes the new scene shares with the last one.
     std::map<const PolygonMesh*, vtkSmartPointer<vtkPolyData>> kept;
     for (const Primitive& p : scene->primitives)
@@ -201,6 +213,7 @@ void ScenePainter::show(const Mat4<double>& cumulative, double canonicalOpacity)
     if (canonicalAppears && scene_) // the legend names it while it shows
         fillLegend(legend_, world_, scene_->worldLegend, theme_, fontSize_, canonicalOpacity_ > 0, true);
     shownMatrix_ = cumulative;
+    cutNear(cumulative);
     const vtkSmartPointer<vtkMatrix4x4> matrix = toVtk(cumulative);
     for (Layer& layer : layers_) {
         if (layer.primitive->canonical) {
@@ -209,7 +222,7 @@ void ScenePainter::show(const Mat4<double>& cumulative, double canonicalOpacity)
         } else {
             layer.actor->SetUserMatrix(matrix);
             if (const auto& point = layer.primitive->markedPoint)
-                layer.actor->SetVisibility(projectPoint(cumulative, *point).has_value());
+                layer.actor->SetVisibility(shows(*point));
         }
     }
     for (Label& label : labels_)
@@ -219,9 +232,39 @@ void ScenePainter::show(const Mat4<double>& cumulative, double canonicalOpacity)
 void ScenePainter::placeLabel(Label& label)
 {
     const std::optional<Vec3<double>> q = projectPoint(shownMatrix_, label.label->anchor);
-    label.actor->SetVisibility(textVisible_ && q.has_value());
+    label.actor->SetVisibility(textVisible_ && q && shows(label.label->anchor));
     if (q)
         label.actor->SetPosition(q->x(), q->y(), q->z());
+}
+
+bool ScenePainter::shows(const Vec3<double>& world) const
+{
+    const bool cutAway = cutting_ && scene_->nearCut->dot(world.homogeneous()) < 0;
+    return !cutAway && projectPoint(shownMatrix_, world).has_value();
+}
+
+void ScenePainter::cutNear(const Mat4<double>& cumulative)
+{
+    // The plane in the stage's coordinates: VTK takes it there and maps it back through each prop's matrix.
+    const bool cut = scene_ && scene_->nearCut && isProjective(cumulative);
+    if (cut) {
+        const Vec4<double> plane = cumulative.transpose().fullPivLu().solve(*scene_->nearCut);
+        const Vec3<double> normal = plane.head<3>();
+        nearCut_->SetNormal(normal.data());
+        nearCut_->SetOrigin(Vec3<double>(-plane.w() * normal / normal.squaredNorm()).data());
+    }
+    if (cut == cutting_)
+        return;
+    cutting_ = cut;
+    for (Layer& layer : layers_) {
+        if (layer.primitive->canonical)
+            continue;
+        vtkMapper* mapper = layer.actor->GetMapper();
+        if (cut)
+            mapper->AddClippingPlane(nearCut_);
+        else
+            mapper->RemoveAllClippingPlanes();
+    }
 }
 
 ScenePainter::Framing ScenePainter::framingOf(const std::vector<Mat4<double>>& cumulatives, bool withCanonical) const
@@ -232,7 +275,8 @@ ScenePainter::Framing ScenePainter::framingOf(const std::vector<Mat4<double>>& c
         if (canonical && !withCanonical)
             continue;
         for (const Mat4<double>& m : cumulatives)
-            extendThrough(box, *layer.primitive, canonical ? Mat4<double>::Identity() : m);
+            extendThrough(box, *layer.primitive, canonical ? Mat4<double>::Identity() : m,
+                          !canonical && isProjective(m) ? scene_->nearCut : std::nullopt);
     }
     if (box.isEmpty())
         return {};
@@ -325,6 +369,8 @@ std::optional<Vec3<double>> ScenePainter::pickVertex(int displayX, int displayY)
     double bestDistance = tolerance, bestDepth = 2;
     for (const auto& mesh : scene_->meshes)
         for (const Vec3<double>& p : mesh->vertices) {
+            if (cutting_ && scene_->nearCut->dot(p.homogeneous()) < 0)
+                continue;
             const Vec4<double> h = drawn * p.homogeneous();
             if (!(h.w() > 0))
                 continue;
@@ -395,7 +441,7 @@ void ScenePainter::markTraced(const std::optional<Vec3<double>>& point)
     applyStyle();
     // Only the new marker needs placing at the stage shown: the scene's layers are there already.
     layers_.back().actor->SetUserMatrix(toVtk(shownMatrix_));
-    layers_.back().actor->SetVisibility(projectPoint(shownMatrix_, *point).has_value());
+    layers_.back().actor->SetVisibility(shows(*point));
     placeLabel(labels_.back());
 }
 

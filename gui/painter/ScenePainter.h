@@ -22,6 +22,7 @@ class vtkActor;
 class vtkBillboardTextActor3D;
 class vtkCallbackCommand;
 class vtkLegendBoxActor;
+class vtkPlane;
 class vtkPolyData;
 class vtkRenderer;
 class vtkTextActor;
@@ -103,6 +104,10 @@ private:
     void addLabel(const viewpipe::Label& label);
     void applyStyle();
     void placeLabel(Label& label);
+    // Whether a world point is drawn at the stage shown: it has an image and is not cut away.
+    bool shows(const Vec3<double>& world) const;
+    // Cuts every moving prop at the scene's near cut while the stage is projective, or not at all.
+    void cutNear(const Mat4<double>& cumulative);
     // The near and far planes around everything framed, before each frame (prop bounds mean nothing under a projective matrix).
     void fitClippingRange();
     double fitDistance(double radius) const;
@@ -118,6 +123,8 @@ private:
     vtkSmartPointer<vtkActor> frameAxes_;
     vtkSmartPointer<vtkLegendBoxActor> legend_;
     vtkSmartPointer<vtkCallbackCommand> clippingRange_;
+    vtkSmartPointer<vtkPlane> nearCut_; // the scene's near cut in the stage's coordinates
+    bool cutting_ = false;
     std::vector<Layer> layers_;
     std::vector<Label> labels_;
     // The traced vertex's marker and label (not part of the scene).

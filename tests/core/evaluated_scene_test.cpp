@@ -106,6 +106,14 @@ TEST(EvaluatedScene, ViewVolumeMapsOntoTheCanonicalOneDrawn)
         onCanonical(q);
 }
 
+// 9/10 of the way from the PRP (z = 84) to the front plane (z = F = 60): z <= 62.4 is kept.
+TEST(EvaluatedScene, NearCutLiesJustBeforeTheFrontPlane)
+{
+    const auto scene = evaluateScene(house());
+    ASSERT_TRUE(scene->nearCut);
+    EXPECT_LE((*scene->nearCut - Vec4<double>(0, 0, -1, 62.4)).norm(), 1e-13);
+}
+
 // In perspective every projector passes through the center of projection.
 TEST(EvaluatedScene, ProjectorsMeetAtThePrp)
 {
@@ -146,9 +154,11 @@ TEST(EvaluatedScene, InfiniteFarPlaneIsDrawnCutShort)
     // gluPerspective's limits as f -> infinity: -(f + n) / (f - n) -> -1, -2 f n / (f - n) -> -2 n.
     EXPECT_EQ((*evaluated->pipeline.projectionMatrix)(2, 2), -1);
     EXPECT_EQ((*evaluated->pipeline.projectionMatrix)(2, 3), -60);
-    EXPECT_EQ(labelNamed(*evaluated, "far at infinity (cut)").element, Element::BackPlane);
-    for (const Primitive& p : evaluated->primitives)
+    EXPECT_EQ(labelNamed(*evaluated, "far at infinity (volume cut)").element, Element::BackPlane);
+    for (const Primitive& p : evaluated->primitives) {
         EXPECT_TRUE(p.bounds.min().allFinite() && p.bounds.max().allFinite());
+        EXPECT_NE(p.element, Element::BackPlane); // no far face: the cut end stays open
+    }
 }
 
 class MeshCacheTest : public ::testing::Test {

@@ -89,6 +89,11 @@ struct EvaluatedScene {
     std::vector<Segment2> zFightingRing;
     // One line per listed effect: what it found.
     std::string effectsNote;
+    // Under a projective stage what lies between the eye and the near plane
+    // is thrown out towards infinity by the divide: pictures cut elements at
+    // this plane (world coordinates, kept where p . (x, y, z, 1) >= 0), 9/10
+    // of the way from the eye to the near (front) plane. Perspective views only.
+    std::optional<Vec4<double>> nearCut;
     double size = 1;       // of the whole set-up, for markers and axes
     double markerSize = 1; // of the point markers, world units
 
