@@ -44,7 +44,11 @@ so you watch the scene and the set-up move together. <b>Left</b> and
 <b>Right</b> (or Previous and Next) step back and forth, <b>Play</b> runs
 through all stages and <b>Stop</b> halts. The caption says which matrix was
 applied last. After the last stage the canonical view volume appears: the
-normalized volume every later step (clipping, projection) works in.</p>
+normalized volume every later step (clipping, projection) works in.
+A matrix that makes w vary (the perspective ones) is followed by the divide
+by w: what lies behind the eye has no image and is not drawn, and what lies
+between the eye and the near plane would be thrown far out, so it is cut
+away just before the near plane.</p>
 
 <h3>The stages of N<sub>per</sub> (perspective)</h3>
 <ol>
