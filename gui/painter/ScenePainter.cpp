@@ -409,22 +409,12 @@ void ScenePainter::setCaptions(const std::string& world, const std::string& proj
 
 void ScenePainter::markTraced(const std::optional<Vec3<double>>& point)
 {
-    layers_.erase(std::remove_if(layers_.begin(), layers_.end(),
-                                 [&](const Layer& layer) {
-                                     const bool traced = layer.primitive == tracedMarker_.get();
-                                     if (traced)
-                                         world_->RemoveActor(layer.actor);
-                                     return traced;
-                                 }),
-                  layers_.end());
-    labels_.erase(std::remove_if(labels_.begin(), labels_.end(),
-                                 [&](const Label& label) {
-                                     const bool traced = label.label == tracedLabel_.get();
-                                     if (traced)
-                                         world_->RemoveActor(label.actor);
-                                     return traced;
-                                 }),
-                  labels_.end());
+    if (tracedMarker_) { // the marker and its label come last: added after the scene's
+        world_->RemoveActor(layers_.back().actor);
+        world_->RemoveActor(labels_.back().actor);
+        layers_.pop_back();
+        labels_.pop_back();
+    }
     tracedMarker_.reset();
     tracedLabel_.reset();
     if (!point || !scene_)
