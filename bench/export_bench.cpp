@@ -64,14 +64,14 @@ void BareVtk(benchmark::State& state)
     renderer->UseFXAAOn();
     window->AddRenderer(renderer);
     gui::ScenePainter painter(renderer, nullptr); // only builds the same props
-    painter.setTheme(gui::Theme::Light);
+    painter.setTheme(Theme::Light);
     painter.setScene(evaluateScene(house()));
     window->Render();
     painter.resetView();
     const std::vector<Stage<double>> stages = buildPipeline(house().camera).stages;
     for (auto _ : state) {
         for (std::size_t k = 0; k <= stages.size(); ++k) {
-            const auto matrix = gui::toVtk(cumulativeAt(stages, double(k)));
+            const auto matrix = gui::toVtk(drawnAt(stages, double(k)));
             vtkPropCollection* props = renderer->GetViewProps();
             props->InitTraversal();
             while (vtkProp* prop = props->GetNextProp())

@@ -9,13 +9,15 @@ packages=(
   libeigen3-dev nlohmann-json3-dev libcli11-dev
   libgtest-dev libgmock-dev libbenchmark-dev
   libboost-dev libmpfr-dev libglm-dev
-  qtbase5-dev libvtk9-dev libvtk9-qt-dev
+  qtbase5-dev libqt5svg5-dev libvtk9-dev libvtk9-qt-dev
   xvfb xauth libgl1-mesa-dri fonts-dejavu-core
   ffmpeg
 )
-# Only the tests need these (sanitizers, libFuzzer): `make run` stays quick.
+# Only the tests need these (sanitizers, libFuzzer, TeX to compile the LaTeX and
+# TikZ exports, poppler to rasterize PDFs): `make run` stays quick.
 if [ "${1:-}" = "--test" ]; then
-  packages+=(clang libclang-rt-14-dev)
+  packages+=(clang libclang-rt-14-dev texlive-latex-base texlive-latex-recommended texlive-latex-extra
+             texlive-pictures texlive-fonts-recommended poppler-utils)
 fi
 
 missing=()

@@ -58,6 +58,8 @@ public:
         return faces(element, std::make_shared<const PolygonMesh>(std::move(mesh)), opacity);
     }
 
+    void marker(const Marker& marker) { out_.markers.push_back(marker); }
+
     void label(Element element, const std::string& text, const Vec3<double>& anchor)
     {
         if (!text.empty())
@@ -375,7 +377,6 @@ void addSetUp(Builder& add, const EvaluatedScene& out, bool farCut)
     const ViewSetup<double>& setup = out.setup;
     const double axis = 0.15 * out.size;
     const double worldAxis = 1.5 * axis; // longer than the VRC axes, which may start at the same point
-    const double marker = out.markerSize;
     const Vec3<double> o = Vec3<double>::Zero();
     add.lines(Element::WorldAxes,
               {{o, Vec3<double>::UnitX() * worldAxis}, {o, Vec3<double>::UnitY() * worldAxis},
@@ -397,7 +398,7 @@ void addSetUp(Builder& add, const EvaluatedScene& out, bool farCut)
         add.label(Element::ViewAxes, "VRP", vrp);
 
     if (setup.perspective) {
-        add.faces(Element::Prp, sphereMesh(setup.prp, 1.6 * marker), 1.0).markedPoint = setup.prp;
+        add.marker({Element::Prp, Marker::Shape::Dot, setup.prp, setup.prp, 7});
         add.label(Element::Prp, foley ? "PRP" : "eye", setup.prp);
     }
 
@@ -405,16 +406,12 @@ void addSetUp(Builder& add, const EvaluatedScene& out, bool farCut)
     for (std::size_t k = 0; k < 4; ++k)
         window.emplace_back(setup.window[k], setup.window[(k + 1) % 4]);
     add.lines(Element::Window, window, 1.0);
-    // In perspective, small beside its distance from the eye, or the divide would blow it up.
-    const double centerMarker =
-        setup.perspective ? std::min(marker, 0.05 * (setup.windowCenter - setup.prp).norm()) : marker;
-    add.faces(Element::Window, sphereMesh(setup.windowCenter, centerMarker), 1.0).markedPoint = setup.windowCenter;
+    add.marker({Element::Window, Marker::Shape::Dot, setup.windowCenter, setup.windowCenter, 5});
     add.label(Element::Window, "CW", setup.windowCenter);
 
     const Vec3<double> dop = setup.windowCenter - setup.prp;
-    const double head = std::min(0.06 * out.size, 0.4 * dop.norm());
-    add.lines(Element::Dop, {{setup.prp, setup.windowCenter - dop.normalized() * head}}, 1.0);
-    add.faces(Element::Dop, coneMesh(setup.windowCenter, dop, head), 1.0).markedPoint = setup.windowCenter;
+    add.lines(Element::Dop, {{setup.prp, setup.windowCenter}}, 1.0);
+    add.marker({Element::Dop, Marker::Shape::ArrowHead, setup.windowCenter, setup.windowCenter - 0.05 * dop, 6});
     add.label(Element::Dop, "DOP", setup.prp + 0.3 * dop);
 
     const auto& v = setup.volume;
@@ -498,7 +495,6 @@ std::shared_ptr<const EvaluatedScene> evaluate(const Scene& scene, MeshCache* ca
     box.extend(out.setup.prp);
     box.extend(out.setup.origin);
     out.size = box.diagonal().norm();
-    out.markerSize = 0.008 * out.size;
     if (out.setup.perspective) { // just before the near (front) plane, so that its face is never cut
         const Vec3<double> ahead = -out.setup.axes.n;
         const double nearDistance = (out.setup.volume[0] - out.setup.prp).dot(ahead);
@@ -588,51 +584,6 @@ std::shared_ptr<const EvaluatedScene> SceneEvaluator::evaluate(const Scene& scen
 std::shared_ptr<const EvaluatedScene> evaluateScene(const Scene& scene)
 {
     return evaluate(scene, nullptr);
-}
-
-PolygonMesh sphereMesh(const Vec3<double>& center, double radius)
-{
-    constexpr int around = 16, rings = 12;
-    PolygonMesh mesh;
-    mesh.vertices.push_back(center + radius * Vec3<double>::UnitZ());
-    for (int r = 1; r < rings; ++r) {
-        const double phi = M_PI * r / rings;
-        for (int a = 0; a < around; ++a) {
-            const double theta = 2 * M_PI * a / around;
-            mesh.vertices.push_back(center + radius * Vec3<double>(std::sin(phi) * std::cos(theta),
-                                                                   std::sin(phi) * std::sin(theta), std::cos(phi)));
-        }
-    }
-    mesh.vertices.push_back(center - radius * Vec3<double>::UnitZ());
-    const int south = int(mesh.vertices.size()) - 1;
-    auto at = [](int ring, int a) { return 1 + (ring - 1) * around + (a % around); };
-    for (int a = 0; a < around; ++a) {
-        mesh.faces.push_back({0, at(1, a), at(1, a + 1)});
-        for (int r = 1; r + 1 < rings; ++r)
-            mesh.faces.push_back({at(r, a), at(r + 1, a), at(r + 1, a + 1), at(r, a + 1)});
-        mesh.faces.push_back({at(rings - 1, a), south, at(rings - 1, a + 1)});
-    }
-    return mesh;
-}
-
-PolygonMesh coneMesh(const Vec3<double>& tip, const Vec3<double>& direction, double length)
-{
-    constexpr int sides = 20;
-    const Vec3<double> d = direction.normalized();
-    const Vec3<double> side = d.unitOrthogonal(), other = d.cross(side);
-    const Vec3<double> base = tip - d * length;
-    const double radius = 0.3 * length;
-    PolygonMesh mesh;
-    mesh.vertices.push_back(tip);
-    std::vector<int> bottom;
-    for (int k = 0; k < sides; ++k) {
-        const double a = 2 * M_PI * k / sides;
-        mesh.vertices.push_back(base + radius * (std::cos(a) * side + std::sin(a) * other));
-        mesh.faces.push_back({0, 1 + k, 1 + (k + 1) % sides});
-        bottom.insert(bottom.begin(), 1 + k);
-    }
-    mesh.faces.push_back(bottom);
-    return mesh;
 }
 
 std::optional<Vec3<double>> projectPoint(const Mat4<double>& m, const Vec3<double>& p)

@@ -14,7 +14,7 @@
 #include <vtkSmartPointer.h>
 
 #include "viewpipe/precision_ladder.hpp"
-#include "style/Style.h"
+#include "viewpipe/report/style.hpp"
 
 class QLabel;
 class QProgressBar;

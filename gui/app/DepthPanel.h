@@ -11,7 +11,7 @@
 
 #include <vtkSmartPointer.h>
 
-#include "style/Style.h"
+#include "viewpipe/report/style.hpp"
 
 class QLabel;
 class QVTKOpenGLNativeWidget;

@@ -93,7 +93,12 @@ void MatrixPanel::showStage(const Pipeline<double>& pipeline, int stage)
         for (const QString& note : symbolic.notes)
             html += "<div style='margin-bottom:4px'><i>" + note.toHtmlEscaped() + "</i></div>";
     }
-    html += table(symbol, numbers(s.matrix));
+    if (s.divides) // no matrix does this: each point is divided by its own w
+        html += "<p><b>" + symbol.toHtmlEscaped() + "</b>: " + QString(kDivideMapping).toHtmlEscaped() + "<br><i>" +
+                tr("Not a matrix: each point is divided by its own w. The cumulative matrix is unchanged; the "
+                   "points it gives are divided.") + "</i></p>";
+    else
+        html += table(symbol, numbers(s.matrix));
     html += table(tr("Cumulative (changed entries highlighted)"), numbers(now), changed);
     matrices_->setText(html);
 }

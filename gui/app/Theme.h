@@ -1,6 +1,6 @@
 #pragma once
 
-#include "style/Style.h"
+#include "viewpipe/report/style.hpp"
 
 namespace viewpipe::gui {
 

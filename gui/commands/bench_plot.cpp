@@ -9,7 +9,7 @@ namespace viewpipe::commands {
 void writeBenchPlot(const cli::BenchResult& result, const std::string& file)
 {
     const gui::VirtualDisplay display;
-    gui::writeAccuracyPlot(result, file, gui::Theme::Light);
+    gui::writeAccuracyPlot(result, file, Theme::Light);
 }
 
 } // namespace viewpipe::commands

@@ -37,7 +37,7 @@ int runExport(const ExportCommandOptions& options)
         std::tie(o.width, o.height) = parseSize(options.size, "--size");
         o.scale = options.scale;
         o.stages = gui::parseStages(options.stages, int(scene->pipeline.stages.size()));
-        o.theme = options.theme == "dark" ? gui::Theme::Dark : gui::Theme::Light;
+        o.theme = options.theme == "dark" ? Theme::Dark : Theme::Light;
         o.transparent = options.transparent;
         std::istringstream formats(options.formats);
         o.formats.clear();
@@ -94,7 +94,7 @@ void addExportCommand(CLI::App& app)
         ->check(CLI::IsMember({"light", "dark"}))
         ->capture_default_str();
     command->add_flag("--transparent", options->transparent, "Transparent background (PNG)");
-    command->add_option("--format", options->formats, "png, svg, pdf, comma-separated")->capture_default_str();
+    command->add_option("--format", options->formats, "png, svg, pdf, tikz, comma-separated")->capture_default_str();
     command->add_flag("--animate", options->animate, "Also the animated transition, animation.mp4");
     command->add_option("--fps", options->fps, "Frames per second of the animation")->capture_default_str();
     command->add_option("--digits", options->digits, "Significant digits of inexact entries in matrices.tex")

@@ -8,7 +8,7 @@
 #include <filesystem>
 
 #include "viewpipe/precision_ladder.hpp"
-#include "style/Style.h"
+#include "viewpipe/report/style.hpp"
 
 class vtkChartMatrix;
 

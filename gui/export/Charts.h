@@ -7,7 +7,7 @@
 #include <functional>
 #include <string>
 
-#include "style/Style.h"
+#include "viewpipe/report/style.hpp"
 
 class vtkAxis;
 class vtkChart;

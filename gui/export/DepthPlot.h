@@ -7,7 +7,7 @@
 
 #include <filesystem>
 
-#include "style/Style.h"
+#include "viewpipe/report/style.hpp"
 
 class vtkChartXY;
 

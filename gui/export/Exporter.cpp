@@ -1,11 +1,9 @@
 #include "Exporter.h"
 
-#include <vtkBase64Utilities.h>
 #include <vtkCamera.h>
 #include <vtkErrorCode.h>
 #include <vtkTextActor.h>
 #include <vtkTextProperty.h>
-#include <vtkGL2PSExporter.h>
 #include <vtkNew.h>
 #include <vtkPNGWriter.h>
 #include <vtkRenderWindow.h>
@@ -23,6 +21,8 @@
 
 #include "DepthPlot.h"
 #include "Process.h"
+#include "VectorFigure.h"
+#include "viewpipe/report/tikz.hpp"
 #include "viewpipe/report/latex.hpp"
 #include "viewpipe/report/report.hpp"
 #include "painter/StageTransition.h"
@@ -68,53 +68,6 @@ void writeWindowPng(vtkRenderWindow* window, bool transparent, const fs::path& f
 
 namespace {
 
-// PDF and SVG through VTK's GL2PS exporter. On the OpenGL2 backend it writes
-// the text as vector primitives over a raster picture of the 3D props; Debian's
-// gl2ps cannot embed that picture in SVG, so for SVG the picture (drawn
-// without text) is embedded here as a PNG image under GL2PS's text.
-void writeVector(vtkRenderWindow* window, ScenePainter& painter, const fs::path& prefix, const std::string& format,
-                 const std::string& title)
-{
-    vtkNew<vtkGL2PSExporter> exporter;
-    exporter->SetRenderWindow(window);
-    exporter->SetFilePrefix(prefix.c_str());
-    exporter->SetTitle(title.c_str());
-    exporter->CompressOff();
-    exporter->SetSilent(1);
-    if (format == "svg")
-        exporter->SetFileFormatToSVG();
-    else
-        exporter->SetFileFormatToPDF();
-    exporter->Write();
-    const fs::path file = fs::path(prefix.string() + "." + format);
-    std::error_code error;
-    if (!fs::exists(file) || fs::file_size(file, error) == 0 || error)
-        throw std::runtime_error("cannot write " + file.string());
-    if (format != "svg")
-        return;
-
-    painter.setTextVisible(false);
-    window->Render();
-    const std::string png = windowPng(window, false);
-    painter.setTextVisible(true);
-    window->Render();
-    std::string encoded(png.size() * 4 / 3 + 8, '\0');
-    const unsigned long length =
-        vtkBase64Utilities::Encode(reinterpret_cast<const unsigned char*>(png.data()), vtkIdType(png.size()),
-                                   reinterpret_cast<unsigned char*>(encoded.data()), 0);
-    encoded.resize(length);
-
-    std::ifstream in(file);
-    std::string svg((std::istreambuf_iterator<char>(in)), {});
-    const std::size_t group = svg.find("<g>");
-    if (group == std::string::npos)
-        throw std::runtime_error("unexpected SVG from GL2PS in " + file.string());
-    const int* size = window->GetSize();
-    svg.insert(group + 3, "\n<image x=\"0\" y=\"0\" width=\"" + std::to_string(size[0]) + "\" height=\"" +
-                              std::to_string(size[1]) + "\" xlink:href=\"data:image/png;base64," + encoded + "\"/>");
-    writeFileAtomically(file, svg);
-}
-
 void validate(const ExportOptions& o)
 {
     if (o.width < 64 || o.height < 64 || o.width > 8192 || o.height > 8192)
@@ -126,8 +79,8 @@ void validate(const ExportOptions& o)
     if (o.digits < 1 || o.digits > 17)
         throw InputError("--digits", "must be 1 to 17");
     for (const std::string& f : o.formats)
-        if (f != "png" && f != "svg" && f != "pdf")
-            throw InputError("--format", "unknown format \"" + f + "\" (png, svg, pdf)");
+        if (f != "png" && f != "svg" && f != "pdf" && f != "tikz")
+            throw InputError("--format", "unknown format \"" + f + "\" (png, svg, pdf, tikz)");
     if (o.formats.empty())
         throw InputError("--format", "names no format");
 }
@@ -263,7 +216,7 @@ std::vector<fs::path> exportStages(const std::shared_ptr<const EvaluatedScene>& 
     // Each step takes fps frames, and every stage is held for `hold` frames.
     const int hold = int(std::lround(options.fps * kHoldSeconds));
     const int frameCount = options.animate ? n * options.fps + (n + 1) * hold : 0;
-    const int total = int(chosen.size() * options.formats.size()) + 2 + (scene.effects.depth ? 1 : 0) + frameCount;
+    const int total = int(chosen.size() * options.formats.size()) + 2 + int(options.formats.count("tikz")) + (scene.effects.depth ? 1 : 0) + frameCount;
     int done = 0;
     auto step = [&](const std::string& what) {
         if (cancel)
@@ -311,12 +264,12 @@ std::vector<fs::path> exportStages(const std::shared_ptr<const EvaluatedScene>& 
         if (options.fixedFraming) {
             std::vector<Mat4<double>> all;
             for (int k = 0; k <= n; ++k)
-                all.push_back(cumulativeAt(stages, k));
+                all.push_back(drawnAt(stages, k));
             framing = painter.framingOf(all, true);
         }
 
         auto showAt = [&](double position, const std::string& caption) {
-            painter.show(cumulativeAt(stages, position), StageTransition::canonicalOpacity(position, stages.size()));
+            painter.show(drawnAt(stages, position), StageTransition::canonicalOpacity(position, stages.size()));
             painter.setCaptions(caption, "");
             if (options.fixedFraming)
                 painter.frameOn(framing);
@@ -325,18 +278,31 @@ std::vector<fs::path> exportStages(const std::shared_ptr<const EvaluatedScene>& 
             window->Render();
         };
 
+        std::vector<std::pair<std::string, std::string>> figures; // file name without extension, caption
         for (int k : chosen) {
             const std::string base = (k < 10 ? "0" : "") + std::to_string(k) + "-" +
                                      (k == 0 ? std::string("world") : slug(stages[std::size_t(k - 1)].symbol));
             const std::string caption = stageText(stages, std::size_t(k), StageText::Heading);
             showAt(k, caption);
+            const StageShown shown(*evaluated, drawnAt(stages, k),
+                                   StageTransition::canonicalOpacity(k, stages.size()));
+            const VectorFigure vector{&shown, painter.figureView(), caption, options.theme};
             for (const std::string& format : options.formats) {
-                step("stage " + std::to_string(k) + " of " + std::to_string(n) + ": " + base + "." + format);
+                // "-tikz.tex": pdflatex makes "-tikz.pdf" of it, not the PDF export's file.
+                const std::string file = base + (format == "tikz" ? "-tikz.tex" : "." + format);
+                step("stage " + std::to_string(k) + " of " + std::to_string(n) + ": " + file);
                 if (format == "png")
-                    writeWindowPng(window, options.transparent, temporary / (base + ".png"));
+                    writeWindowPng(window, options.transparent, temporary / file);
+                else if (format == "tikz")
+                    writeFileAtomically(temporary / file, tikzFigure(flatFigure(vector), options.theme));
                 else
-                    writeVector(window, painter, temporary / base, format, caption);
+                    writeVectorFigure(vector, format, temporary / file);
             }
+            figures.emplace_back(base + "-tikz", caption);
+        }
+        if (options.formats.count("tikz")) {
+            step("figures.tex");
+            writeFileAtomically(temporary / "figures.tex", tikzFiguresDocument(figures));
         }
 
         step("matrices.tex");

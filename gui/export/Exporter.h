@@ -1,8 +1,8 @@
 #pragma once
 
 // Exports the stages of a scene as images for slides: one picture per stage
-// drawn by the scene painter with one camera that frames every stage, vector
-// SVG/PDF through VTK's GL2PS exporter, the matrices as LaTeX and JSON, and
+// drawn by the scene painter, true vector SVG/PDF and TikZ figures of the same
+// stage with the same framing (and figures.tex showing them all), the matrices as LaTeX and JSON, and
 // the animated transition as an MP4 video (H.264, encoded by ffmpeg). Files
 // are written into a temporary folder and moved into place only when all are
 // complete: a failed or cancelled export leaves nothing half-written.
@@ -28,7 +28,7 @@ struct ExportOptions {
     std::vector<int> stages;     // empty: all, 0 (the world) to n
     Theme theme = Theme::Light;
     bool transparent = false;
-    std::set<std::string> formats = {"png"}; // png, svg, pdf
+    std::set<std::string> formats = {"png"}; // png, svg, pdf, tikz
     bool animate = false;
     int fps = 30;
     int digits = 4;              // decimals in matrices.tex

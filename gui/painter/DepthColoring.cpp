@@ -15,7 +15,7 @@
 #include <limits>
 
 #include "VtkGeometry.h"
-#include "style/Style.h"
+#include "viewpipe/report/style.hpp"
 
 namespace viewpipe::gui {
 

@@ -1,4 +1,5 @@
 #include "Legend.h"
+#include "VtkGeometry.h"
 
 #include <vtkCellArray.h>
 #include <vtkCellData.h>
@@ -106,6 +107,7 @@ void fillLegend(vtkLegendBoxActor* legend, vtkRenderer* renderer, const std::vec
     const Rgb border = elementColor(Element::Frame, theme), ink = elementColor(Element::Objects, theme);
     legend->GetProperty()->SetColor(border.r, border.g, border.b);
     vtkTextProperty* text = legend->GetEntryTextProperty();
+    useFigureFont(text, false);
     text->SetColor(ink.r, ink.g, ink.b);
     text->SetFontSize(std::max(8, fontSize * 2 / 3));
     text->Modified(); // new entries take the font and color from it at the next build only if it changed

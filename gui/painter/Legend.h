@@ -6,7 +6,7 @@
 
 #include <vector>
 
-#include "style/Style.h"
+#include "viewpipe/report/style.hpp"
 
 class vtkLegendBoxActor;
 class vtkRenderer;

@@ -12,7 +12,7 @@
 #include <string>
 #include <vector>
 
-#include "style/Style.h"
+#include "viewpipe/report/style.hpp"
 
 class vtkActor;
 class vtkActor2D;

@@ -1,7 +1,14 @@
 #include "ScenePainter.h"
 
 #include <vtkActor.h>
-#include <vtkBillboardTextActor3D.h>
+#include <vtkActor2D.h>
+#include <vtkCellArray.h>
+#include <vtkCellData.h>
+#include <vtkCoordinate.h>
+#include <vtkPolyDataMapper2D.h>
+#include <vtkProperty2D.h>
+#include <vtkTextRenderer.h>
+#include <vtkUnsignedCharArray.h>
 #include <vtkCallbackCommand.h>
 #include <vtkCamera.h>
 #include <vtkCommand.h>
@@ -9,7 +16,9 @@
 #include <vtkLegendBoxActor.h>
 #include <vtkLookupTable.h>
 #include <vtkMatrix4x4.h>
+#include <vtkNew.h>
 #include <vtkPlane.h>
+#include <vtkPoints.h>
 #include <vtkPolyData.h>
 #include <vtkPolyDataMapper.h>
 #include <vtkProperty.h>
@@ -20,6 +29,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <sstream>
 
 #include "DepthColoring.h"
 #include "EigenVtk.h"
@@ -33,12 +43,6 @@ namespace {
 // Primitives up to this many points are framed point by point; larger ones by their box's corners
 // (under a projective matrix the image of a box in front of the eye lies within its corners' hull).
 constexpr std::size_t kExactFraming = 20000;
-
-// A stage whose matrix divides: w is not 1 everywhere.
-bool isProjective(const Mat4<double>& m)
-{
-    return m(3, 0) != 0 || m(3, 1) != 0 || m(3, 2) != 0 || m(3, 3) != 1;
-}
 
 // Extends `box` with the primitive through `m`; false (and `box` unchanged)
 // when a point of it has no image. Points on the eye's side of `cut` do not count.
@@ -71,6 +75,61 @@ bool extendThrough(Eigen::AlignedBox<double, 3>& box, const Primitive& primitive
     return true;
 }
 
+// Text broken into lines at spaces so that each line is at most `width` pixels wide (a word longer stays whole).
+std::string wrapText(const std::string& text, vtkTextProperty* font, double width, int dpi)
+{
+    auto fits = [&](const std::string& line) {
+        int box[4] = {0, 0, 0, 0};
+        vtkTextRenderer::GetInstance()->GetBoundingBox(font, line, box, dpi);
+        return box[1] - box[0] + 1 <= width;
+    };
+    std::string wrapped;
+    std::istringstream lines(text);
+    for (std::string line; std::getline(lines, line);) {
+        std::string current;
+        std::istringstream words(line);
+        for (std::string word; words >> word;) {
+            const std::string longer = current.empty() ? word : current + " " + word;
+            if (current.empty() || fits(longer)) {
+                current = longer;
+            } else {
+                wrapped += current + "\n";
+                current = word;
+            }
+        }
+        wrapped += current + "\n";
+    }
+    if (!wrapped.empty())
+        wrapped.pop_back();
+    return wrapped;
+}
+
+// Lines in a view's pixels (y up), one color each.
+vtkSmartPointer<vtkPolyData> coloredLines2D(const std::vector<Segment2>& lines, const std::vector<Rgb>& colors)
+{
+    vtkSmartPointer<vtkPolyData> data = linesData(lines);
+    auto scalars = vtkSmartPointer<vtkUnsignedCharArray>::New();
+    scalars->SetNumberOfComponents(3);
+    for (const Rgb& c : colors)
+        scalars->InsertNextTypedTuple(toBytes(c).data());
+    data->GetCellData()->SetScalars(scalars);
+    return data;
+}
+
+vtkSmartPointer<vtkActor2D> overlayActor(double lineWidth)
+{
+    auto coordinate = vtkSmartPointer<vtkCoordinate>::New();
+    coordinate->SetCoordinateSystemToViewport();
+    auto mapper = vtkSmartPointer<vtkPolyDataMapper2D>::New();
+    mapper->SetTransformCoordinate(coordinate);
+    mapper->SetInputData(linesData(std::vector<Segment2>{}));
+    auto actor = vtkSmartPointer<vtkActor2D>::New();
+    actor->SetMapper(mapper);
+    actor->SetPickable(false);
+    actor->GetProperty()->SetLineWidth(lineWidth);
+    return actor;
+}
+
 } // namespace
 
 void addObjectActors(const std::vector<vtkRenderer*>& renderers, const EvaluatedScene& scene, Theme theme)
@@ -96,7 +155,7 @@ void addObjectActors(const std::vector<vtkRenderer*>& renderers, const Evaluated
 ScenePainter::ScenePainter(vtkRenderer* world, vtkRenderer* projected)
     : world_(world), worldCaption_(vtkSmartPointer<vtkTextActor>::New()),
       effectsCaption_(vtkSmartPointer<vtkTextActor>::New()), frameAxes_(unlitActor(linesData(std::vector<Segment2>{}))),
-      legend_(newLegend(true)), clippingRange_(vtkSmartPointer<vtkCallbackCommand>::New()),
+      leaders_(overlayActor(1.5)), markers_(overlayActor(1)), legend_(newLegend(true)), clippingRange_(vtkSmartPointer<vtkCallbackCommand>::New()),
       nearCut_(vtkSmartPointer<vtkPlane>::New())
 {
     if (projected)
@@ -104,23 +163,26 @@ ScenePainter::ScenePainter(vtkRenderer* world, vtkRenderer* projected)
     worldCaption_->GetPositionCoordinate()->SetCoordinateSystemToNormalizedViewport();
     worldCaption_->SetPosition(0.02, 0.96);
     worldCaption_->GetTextProperty()->SetVerticalJustificationToTop();
-    worldCaption_->GetTextProperty()->SetBold(true);
+    useFigureFont(worldCaption_->GetTextProperty(), true);
     worldCaption_->SetPickable(false);
     world_->AddActor2D(worldCaption_);
     effectsCaption_->GetPositionCoordinate()->SetCoordinateSystemToNormalizedViewport();
     effectsCaption_->SetPosition(0.02, 0.02);
     effectsCaption_->SetPickable(false);
+    useFigureFont(effectsCaption_->GetTextProperty(), false);
     world_->AddActor2D(effectsCaption_);
     frameAxes_->SetPickable(false);
     frameAxes_->SetUseBounds(false);
     world_->AddActor(frameAxes_);
     world_->AddActor2D(legend_);
+    world_->AddActor2D(markers_);
+    world_->AddActor2D(leaders_);
     // Props' bounds mean nothing under a projective matrix: no culling by them,
     // and the clipping range comes from the framing, before each frame.
     world_->GetCullers()->RemoveAllItems();
     clippingRange_->SetClientData(this);
     clippingRange_->SetCallback(
-        [](vtkObject*, unsigned long, void* painter, void*) { static_cast<ScenePainter*>(painter)->fitClippingRange(); });
+        [](vtkObject*, unsigned long, void* painter, void*) { static_cast<ScenePainter*>(painter)->beforeFrame(); });
     world_->AddObserver(vtkCommand::StartEvent, clippingRange_);
     applyStyle();
 }
@@ -136,7 +198,7 @@ void ScenePainter::clear()
     for (const Layer& layer : layers_)
         world_->RemoveActor(layer.actor);
     for (const Label& label : labels_)
-        world_->RemoveActor(label.actor);
+        world_->RemoveActor2D(label.actor);
     layers_.clear();
     labels_.clear();
 }
@@ -160,14 +222,15 @@ void ScenePainter::addLayer(const Primitive& primitive, vtkSmartPointer<vtkPolyD
 
 void ScenePainter::addLabel(const viewpipe::Label& text)
 {
-    Label label{&text, vtkSmartPointer<vtkBillboardTextActor3D>::New()};
+    // Drawn over the picture where the placement step puts it (never hidden behind a face).
+    Label label{&text, vtkSmartPointer<vtkTextActor>::New()};
     label.actor->SetInput(text.text.c_str());
     label.actor->SetPickable(false);
-    label.actor->SetUseBounds(false);
-    label.actor->GetTextProperty()->SetBold(true);
+    label.actor->GetPositionCoordinate()->SetCoordinateSystemToViewport();
+    useFigureFont(label.actor->GetTextProperty(), true);
     label.actor->GetTextProperty()->SetJustificationToLeft();
     label.actor->GetTextProperty()->SetVerticalJustificationToBottom();
-    world_->AddActor(label.actor);
+    world_->AddActor2D(label.actor);
     labels_.push_back(label);
 }
 
@@ -201,7 +264,7 @@ void ScenePainter::setScene(std::shared_ptr<const EvaluatedScene> scene)
         addLabel(label);
     if (projected_)
         projected_->setScene(s, [this](const PolygonMesh& mesh) { return meshData(mesh); }, depthColored);
-    effectsCaption_->SetInput(s.effectsNote.c_str());
+    effectsNote_ = s.effectsNote;
     applyStyle();
     show(Mat4<double>::Identity(), 0);
 }
@@ -221,26 +284,145 @@ void ScenePainter::show(const Mat4<double>& cumulative, double canonicalOpacity)
             layer.actor->GetProperty()->SetOpacity(canonicalOpacity);
         } else {
             layer.actor->SetUserMatrix(matrix);
-            if (const auto& point = layer.primitive->markedPoint)
-                layer.actor->SetVisibility(shows(*point));
         }
     }
-    for (Label& label : labels_)
-        placeLabel(label);
-}
-
-void ScenePainter::placeLabel(Label& label)
-{
-    const std::optional<Vec3<double>> q = projectPoint(shownMatrix_, label.label->anchor);
-    label.actor->SetVisibility(textVisible_ && q && shows(label.label->anchor));
-    if (q)
-        label.actor->SetPosition(q->x(), q->y(), q->z());
 }
 
 bool ScenePainter::shows(const Vec3<double>& world) const
 {
-    const bool cutAway = cutting_ && scene_->nearCut->dot(world.homogeneous()) < 0;
-    return !cutAway && projectPoint(shownMatrix_, world).has_value();
+    return StageShown(*scene_, shownMatrix_, canonicalOpacity_).shows(world);
+}
+
+void ScenePainter::beforeFrame()
+{
+    fitClippingRange();
+    fitCaptions();
+    placeLabels();
+}
+
+void ScenePainter::drawMarkers(const std::vector<FigureShape>& shapes)
+{
+    const int height = world_->GetSize()[1];
+    auto points = vtkSmartPointer<vtkPoints>::New();
+    auto polygons = vtkSmartPointer<vtkCellArray>::New();
+    auto colors = vtkSmartPointer<vtkUnsignedCharArray>::New();
+    colors->SetNumberOfComponents(3);
+    for (const FigureShape& shape : shapes) {
+        std::vector<vtkIdType> ids;
+        for (const Vec2<double>& p : shape.points)
+            ids.push_back(points->InsertNextPoint(p.x(), height - p.y(), 0));
+        polygons->InsertNextCell(vtkIdType(ids.size()), ids.data());
+        colors->InsertNextTypedTuple(toBytes(elementColor(shape.element, theme_)).data());
+    }
+    auto data = vtkSmartPointer<vtkPolyData>::New();
+    data->SetPoints(points);
+    data->SetPolys(polygons);
+    data->GetCellData()->SetScalars(colors);
+    static_cast<vtkPolyDataMapper2D*>(markers_->GetMapper())->SetInputData(data);
+}
+
+void ScenePainter::fitCaptions()
+{
+    vtkRenderWindow* window = world_->GetRenderWindow();
+    const int dpi = window ? window->GetDPI() : 72;
+    const double room = 0.96 * world_->GetSize()[0];
+    for (const auto& [caption, text] : {std::pair{worldCaption_.Get(), &worldCaptionText_},
+                                        std::pair{effectsCaption_.Get(), &effectsNote_}}) {
+        const std::string wrapped = wrapText(*text, caption->GetTextProperty(), room, dpi);
+        if (wrapped != (caption->GetInput() ? caption->GetInput() : ""))
+            caption->SetInput(wrapped.c_str());
+    }
+}
+
+FigureView ScenePainter::figureView() const
+{
+    FigureView view;
+    view.camera =
+        fromVtk(world_->GetActiveCamera()->GetCompositeProjectionTransformMatrix(world_->GetTiledAspectRatio(), -1, 1));
+    view.width = world_->GetSize()[0];
+    view.height = world_->GetSize()[1];
+    view.frameReach = framed_.center.norm() + 1.5 * framed_.radius;
+    view.fontSize = fontSize_;
+    view.lineScale = lineScale_;
+    return view;
+}
+
+std::vector<Box2> ScenePainter::captionBoxes() const
+{
+    // Viewport coordinates (y up) to the view's pixels (y down).
+    const int height = world_->GetSize()[1];
+    auto box = [&](const double* corners) {
+        return Box2{Vec2<double>(corners[0], height - corners[3]), Vec2<double>(corners[1], height - corners[2])};
+    };
+    std::vector<Box2> boxes;
+    for (vtkTextActor* caption : {worldCaption_.Get(), effectsCaption_.Get()})
+        if (caption->GetVisibility() && caption->GetInput() && *caption->GetInput()) {
+            double corners[4]; // relative to the caption's position
+            caption->GetBoundingBox(world_, corners);
+            const double* at = caption->GetPositionCoordinate()->GetComputedDoubleViewportValue(world_);
+            const double placed[4] = {corners[0] + at[0], corners[1] + at[0], corners[2] + at[1], corners[3] + at[1]};
+            boxes.push_back(box(placed));
+        }
+    if (legend_->GetVisibility()) {
+        const int* low = legend_->GetPositionCoordinate()->GetComputedViewportValue(world_);
+        const int* size = legend_->GetPosition2Coordinate()->GetComputedViewportValue(world_);
+        const double corners[4] = {double(low[0]), double(low[0] + size[0]), double(low[1]), double(low[1] + size[1])};
+        boxes.push_back(box(corners));
+    }
+    return boxes;
+}
+
+void ScenePainter::placeLabels()
+{
+    std::vector<Segment2> leaders;
+    std::vector<Rgb> leaderColors;
+    std::vector<FigureShape> markerShown;
+    for (Label& label : labels_)
+        label.actor->SetVisibility(false);
+    if (scene_) {
+        std::vector<Marker> markers = scene_->markers;
+        if (tracedMarker_)
+            markers.push_back(*tracedMarker_);
+        const FigureView view = figureView();
+        const StageShown stage(*scene_, shownMatrix_, canonicalOpacity_);
+        markerShown = markerShapes(stage, view, markers);
+        if (textVisible_)
+            placeLabelsOf(stage, view, markers, leaders, leaderColors);
+    }
+    drawMarkers(markerShown);
+    static_cast<vtkPolyDataMapper2D*>(leaders_->GetMapper())->SetInputData(coloredLines2D(leaders, leaderColors));
+}
+
+void ScenePainter::placeLabelsOf(const StageShown& stage, const FigureView& view, const std::vector<Marker>& markers,
+                                 std::vector<Segment2>& leaders, std::vector<Rgb>& leaderColors)
+{
+    std::vector<const viewpipe::Label*> texts;
+    for (const Label& label : labels_)
+        texts.push_back(label.label);
+    vtkRenderWindow* window = world_->GetRenderWindow();
+    const int dpi = window ? window->GetDPI() : 72;
+    vtkNew<vtkTextProperty> font; // as every label's
+    useFigureFont(font, true);
+    font->SetFontSize(fontSize_);
+    const TextMeasure measure = [&](const std::string& text) {
+        int box[4] = {0, 0, 0, 0};
+        vtkTextRenderer::GetInstance()->GetBoundingBox(font, text, box, dpi);
+        return Vec2<double>(box[1] - box[0] + 1, box[3] - box[2] + 1);
+    };
+    // Viewport pixels are y up, the placement's y down.
+    auto up = [&](const Vec2<double>& p) { return Vec2<double>(p.x(), view.height - p.y()); };
+    const auto placed = placeSceneLabels(stage, view, texts, markers, measure, captionBoxes());
+    for (std::size_t k = 0; k < labels_.size(); ++k) {
+        if (!placed[k])
+            continue;
+        const PlacedLabel& p = *placed[k];
+        labels_[k].actor->SetVisibility(true);
+        labels_[k].actor->SetPosition(p.box.min.x(), view.height - p.box.max.y()); // the text's lower left corner
+        if (p.leader) {
+            leaders.push_back({up(p.anchor), up(p.anchor.cwiseMax(p.box.min).cwiseMin(p.box.max))});
+            leaderColors.push_back(elementColor(p.element, theme_));
+        }
+    }
 }
 
 void ScenePainter::cutNear(const Mat4<double>& cumulative)
@@ -370,7 +552,7 @@ std::optional<Vec3<double>> ScenePainter::pickVertex(int displayX, int displayY)
     for (const auto& mesh : scene_->meshes)
         for (const Vec3<double>& p : mesh->vertices) {
             if (cutting_ && scene_->nearCut->dot(p.homogeneous()) < 0)
-                continue;
+                continue; // cut away: not drawn
             const Vec4<double> h = drawn * p.homogeneous();
             if (!(h.w() > 0))
                 continue;
@@ -396,48 +578,36 @@ void ScenePainter::setTextVisible(bool visible)
     effectsCaption_->SetVisibility(visible && scene_ && !scene_->effectsNote.empty());
     if (projected_)
         projected_->setTextVisible(visible);
-    for (Label& label : labels_)
-        placeLabel(label);
+    placeLabels();
 }
 
 void ScenePainter::setCaptions(const std::string& world, const std::string& projected)
 {
-    worldCaption_->SetInput(world.c_str());
+    worldCaptionText_ = world;
+    fitCaptions();
     if (projected_)
         projected_->setCaption(projected);
 }
 
 void ScenePainter::markTraced(const std::optional<Vec3<double>>& point)
 {
-    if (tracedMarker_) { // the marker and its label come last: added after the scene's
-        world_->RemoveActor(layers_.back().actor);
-        world_->RemoveActor(labels_.back().actor);
-        layers_.pop_back();
+    if (tracedLabel_) { // its label comes last: added after the scene's
+        world_->RemoveActor2D(labels_.back().actor);
         labels_.pop_back();
     }
     tracedMarker_.reset();
     tracedLabel_.reset();
-    if (!point || !scene_)
-        return;
-    tracedMarker_ = std::make_unique<Primitive>();
-    tracedMarker_->element = Element::Traced;
-    tracedMarker_->kind = PrimitiveKind::Faces;
-    tracedMarker_->faces = std::make_shared<const PolygonMesh>(sphereMesh(*point, 2.5 * scene_->markerSize));
-    tracedMarker_->bounds.extend(*point);
-    tracedMarker_->markedPoint = *point;
-    tracedLabel_ = std::make_unique<viewpipe::Label>(viewpipe::Label{Element::Traced, "traced", *point});
-    addLayer(*tracedMarker_, facesData(*tracedMarker_->faces));
-    addLabel(*tracedLabel_);
-    applyStyle();
-    // Only the new marker needs placing at the stage shown: the scene's layers are there already.
-    layers_.back().actor->SetUserMatrix(toVtk(shownMatrix_));
-    layers_.back().actor->SetVisibility(shows(*point));
-    placeLabel(labels_.back());
+    if (point && scene_) {
+        tracedMarker_ = Marker{Element::Traced, Marker::Shape::Dot, *point, *point, 8};
+        tracedLabel_ = std::make_unique<viewpipe::Label>(viewpipe::Label{Element::Traced, "traced", *point});
+        addLabel(*tracedLabel_);
+        applyStyle();
+    }
 }
 
 std::string ScenePainter::worldCaption() const
 {
-    return worldCaption_->GetInput();
+    return worldCaptionText_;
 }
 
 void ScenePainter::setTheme(Theme theme)

@@ -16,10 +16,11 @@
 #include <string>
 #include <vector>
 
-#include "style/Style.h"
+#include "viewpipe/report/figure.hpp"
+#include "viewpipe/report/style.hpp"
 
 class vtkActor;
-class vtkBillboardTextActor3D;
+class vtkActor2D;
 class vtkCallbackCommand;
 class vtkLegendBoxActor;
 class vtkPlane;
@@ -90,6 +91,9 @@ public:
     // diagonal, if any.
     std::optional<Vec3<double>> pickVertex(int displayX, int displayY) const;
 
+    // How the world view sees the stage shown, for figures drawn as it is.
+    FigureView figureView() const;
+
 private:
     struct Layer {
         const Primitive* primitive;
@@ -97,13 +101,22 @@ private:
     };
     struct Label {
         const viewpipe::Label* label;
-        vtkSmartPointer<vtkBillboardTextActor3D> actor;
+        vtkSmartPointer<vtkTextActor> actor;
     };
     void clear();
     void addLayer(const Primitive& primitive, vtkSmartPointer<vtkPolyData> data);
     void addLabel(const viewpipe::Label& label);
     void applyStyle();
-    void placeLabel(Label& label);
+    // Places every label with the one placement step the figures use, for the camera of the coming frame.
+    void placeLabels();
+    // Where the captions and the legend are, in the view's pixels.
+    std::vector<Box2> captionBoxes() const;
+    void beforeFrame();
+    void placeLabelsOf(const StageShown& stage, const FigureView& view, const std::vector<Marker>& markers,
+                       std::vector<Segment2>& leaders, std::vector<Rgb>& leaderColors);
+    void drawMarkers(const std::vector<FigureShape>& shapes);
+    // Breaks the captions into lines that fit the view's width.
+    void fitCaptions();
     // Whether a world point is drawn at the stage shown: it has an image and is not cut away.
     bool shows(const Vec3<double>& world) const;
     // Cuts every moving prop at the scene's near cut while the stage is projective, or not at all.
@@ -121,14 +134,17 @@ private:
     vtkSmartPointer<vtkTextActor> worldCaption_;
     vtkSmartPointer<vtkTextActor> effectsCaption_;
     vtkSmartPointer<vtkActor> frameAxes_;
+    vtkSmartPointer<vtkActor2D> leaders_; // lines from labels moved away to their anchors
+    vtkSmartPointer<vtkActor2D> markers_; // the points marked, one size on screen
     vtkSmartPointer<vtkLegendBoxActor> legend_;
     vtkSmartPointer<vtkCallbackCommand> clippingRange_;
     vtkSmartPointer<vtkPlane> nearCut_; // the scene's near cut in the stage's coordinates
     bool cutting_ = false;
+    std::string worldCaptionText_, effectsNote_; // as given, before fitting
     std::vector<Layer> layers_;
     std::vector<Label> labels_;
     // The traced vertex's marker and label (not part of the scene).
-    std::unique_ptr<Primitive> tracedMarker_;
+    std::optional<Marker> tracedMarker_;
     std::unique_ptr<viewpipe::Label> tracedLabel_;
     Theme theme_ = Theme::Dark;
     int fontSize_ = 18;

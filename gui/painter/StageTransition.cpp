@@ -31,7 +31,7 @@ double StageTransition::canonicalOpacity(double position, std::size_t stageCount
 
 void StageTransition::showStage(ScenePainter& painter, const std::vector<Stage<double>>& stages, int stage)
 {
-    painter.show(cumulativeAt(stages, stage), canonicalOpacity(stage, stages.size()));
+    painter.show(drawnAt(stages, stage), canonicalOpacity(stage, stages.size()));
     painter.frame();
 }
 
@@ -40,11 +40,11 @@ StageTransition::StageTransition(ScenePainter& painter, const std::vector<Stage<
 {
     const bool canonicalAtStart = canonicalOpacity(from, stages.size()) > 0;
     const bool canonicalAtEnd = canonicalOpacity(to, stages.size()) > 0;
-    start_ = painter.framingOf({cumulativeAt(stages, from)}, canonicalAtStart);
-    end_ = painter.framingOf({cumulativeAt(stages, to)}, canonicalAtEnd);
+    start_ = painter.framingOf({drawnAt(stages, from)}, canonicalAtStart);
+    end_ = painter.framingOf({drawnAt(stages, to)}, canonicalAtEnd);
     std::vector<Mat4<double>> sweep;
     for (int k = 0; k <= kSweepSamples; ++k)
-        sweep.push_back(cumulativeAt(stages, from + (to - from) * double(k) / kSweepSamples));
+        sweep.push_back(drawnAt(stages, from + (to - from) * double(k) / kSweepSamples));
     sweep_ = painter.framingOf(sweep, canonicalAtStart || canonicalAtEnd);
 }
 
@@ -52,7 +52,7 @@ void StageTransition::apply(double s)
 {
     const double motion = smooth((s - kWiden) / (1 - kWiden - kSettle));
     const double position = from_ + (to_ - from_) * motion;
-    painter_.show(cumulativeAt(stages_, position), canonicalOpacity(position, stages_.size()));
+    painter_.show(drawnAt(stages_, position), canonicalOpacity(position, stages_.size()));
     if (s < kWiden)
         painter_.frameOn(blend(start_, sweep_, smooth(s / kWiden)));
     else if (s <= 1 - kSettle)

@@ -7,6 +7,9 @@
 #include <vtkPolyData.h>
 #include <vtkPolyDataMapper.h>
 #include <vtkProperty.h>
+#include <vtkTextProperty.h>
+
+#include <fstream>
 
 namespace viewpipe::gui {
 
@@ -88,6 +91,20 @@ vtkSmartPointer<vtkActor> unlitActor(vtkPolyData* data)
 vtkSmartPointer<vtkPolyData> primitiveData(const Primitive& primitive)
 {
     return primitive.kind == PrimitiveKind::Faces ? facesData(*primitive.faces) : linesData(primitive.segments);
+}
+
+// Text in the font the vector figures use (DejaVu Sans, Debian's fonts-dejavu-core), so that a label
+// takes the same room in every picture; VTK's own font where it is missing.
+void useFigureFont(vtkTextProperty* text, bool bold)
+{
+    const char* file = bold ? "/usr/share/fonts/truetype/dejavu/DejaVuSans-Bold.ttf"
+                            : "/usr/share/fonts/truetype/dejavu/DejaVuSans.ttf";
+    static const bool present = std::ifstream(file).good();
+    text->SetBold(bold);
+    if (present) {
+        text->SetFontFamily(VTK_FONT_FILE);
+        text->SetFontFile(file);
+    }
 }
 
 } // namespace viewpipe::gui

@@ -1,6 +1,6 @@
 #pragma once
 
-// The evaluated scene's primitives as VTK poly data (double precision points).
+// The evaluated scene's primitives as VTK poly data (double precision points), and the pictures' font.
 
 #include <vtkSmartPointer.h>
 
@@ -10,6 +10,7 @@
 
 class vtkActor;
 class vtkPolyData;
+class vtkTextProperty;
 
 namespace viewpipe::gui {
 
@@ -23,5 +24,9 @@ vtkSmartPointer<vtkPolyData> edgesData(const PolygonMesh& mesh);
 vtkSmartPointer<vtkPolyData> primitiveData(const Primitive& primitive);
 // An actor drawing poly data in flat colors (lighting off: the elements are diagrams, not lit surfaces).
 vtkSmartPointer<vtkActor> unlitActor(vtkPolyData* data);
+
+// Text in the font the vector figures use (DejaVu Sans, Debian's fonts-dejavu-core), so that a label
+// takes the same room in every picture; VTK's own font where it is missing.
+void useFigureFont(vtkTextProperty* text, bool bold);
 
 } // namespace viewpipe::gui

@@ -92,6 +92,18 @@ std::string latexSymbol(const std::string& symbol)
     return math + "_{\\mathrm{" + symbol.substr(underscore + 1) + "}}";
 }
 
+namespace {
+
+// A stage's matrix, or the divide's mapping, which is no matrix.
+std::string stageEquation(const Stage<Exact>& stage, int digits)
+{
+    if (stage.divides)
+        return "\\text{divide:}\\quad (x, y, z, w) \\mapsto \\left(\\frac{x}{w}, \\frac{y}{w}, \\frac{z}{w}, 1\\right)";
+    return latexSymbol(stage.symbol) + " =\n" + bmatrix(stage.matrix, digits);
+}
+
+} // namespace
+
 std::string matricesLatex(const Scene& scene, int digits)
 {
     const Pipeline<Exact> p = exactPipeline(scene);
@@ -102,7 +114,9 @@ std::string matricesLatex(const Scene& scene, int digits)
     for (std::size_t k = 0; k < p.stages.size(); ++k) {
         const Stage<Exact>& stage = p.stages[k];
         out << "% " << k + 1 << ". " << stage.symbol << ": " << stage.explanation << "\n"
-            << "\\[\n" << latexSymbol(stage.symbol) << " =\n" << bmatrix(stage.matrix, digits) << "\n\\]\n\n";
+            << "\\[\n" << stageEquation(stage, digits) << "\n\\]\n\n";
+        if (stage.divides)
+            continue; // no factor of the product
         product = latexSymbol(stage.symbol) + (product.empty() ? "" : " \\, " + product);
     }
     const std::string name = p.convention == Convention::OpenGL            ? "P \\, V"
@@ -123,8 +137,7 @@ namespace viewpipe::cli {
 std::string stageLatex(const Scene& scene, int stage, int digits)
 {
     const Pipeline<Exact> p = exactPipeline(scene);
-    const Stage<Exact>& s = p.stages.at(std::size_t(stage - 1));
-    return latexSymbol(s.symbol) + " =\n" + bmatrix(s.matrix, digits);
+    return stageEquation(p.stages.at(std::size_t(stage - 1)), digits);
 }
 
 } // namespace viewpipe::cli

@@ -196,10 +196,14 @@ Json pipelineJson(const Scene& scene, const PrecisionChoice& precision, const Ef
                     {"precision", precisionName(precision)}};
         Json stages = Json::array();
         for (std::size_t k = 0; k < p.stages.size(); ++k)
+        {
             stages.push_back({{"symbol", p.stages[k].symbol},
                               {"explanation", p.stages[k].explanation},
                               {"matrix", matrixJson(p.stages[k].matrix)},
                               {"cumulative", matrixJson(cumulative[k])}});
+            if (p.stages[k].divides) // no matrix: "matrix" is the identity, which leaves products unchanged
+                stages.back()["divides"] = kDivideMapping;
+        }
         out["stages"] = stages;
         out["composite"] = matrixJson(p.composite);
         if (p.zmin)
@@ -229,6 +233,10 @@ void printPipeline(std::ostream& out, const Scene& scene, const PrecisionChoice&
         for (std::size_t k = 0; k < p.stages.size(); ++k) {
             const Stage<T>& stage = p.stages[k];
             out << stageText(p.stages, k + 1, StageText::Heading) << "\n";
+            if (stage.divides) { // not a matrix, and no factor of the product
+                out << "    " << kDivideMapping << ", not a matrix\n\n";
+                continue;
+            }
             printSideBySide(out, matrixLines(stage.matrix), matrixLines(cumulative[k]), stage.symbol,
                             "cumulative");
             out << "\n";

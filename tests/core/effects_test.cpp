@@ -2,6 +2,7 @@
 // Foley's M as a stage, back-face culling.
 
 #include "support.hpp"
+#include "viewpipe/animation.hpp"
 #include "viewpipe/effects.hpp"
 #include "viewpipe/evaluated_scene.hpp"
 #include "viewpipe/scene.hpp"
@@ -97,6 +98,33 @@ TEST(Effects, DivideAppendsFoleysM)
     EXPECT_TRUE(p.toClip.isIdentity());
     // The house vertex (16, 10, 54) lands where trace says, either way.
     EXPECT_TRUE(tracePoint(p, {16, 10, 54}).divided->isApprox(*tracePoint(plain, {16, 10, 54}).divided));
+}
+
+// OpenGL's divide is a stage of its own but no matrix: the trace divides
+// there, and pictures draw the stages before it undivided (clip coordinates
+// x, y, z), bringing w in only while the divide runs.
+TEST(Effects, OpenGlDivideIsAStageThatDivides)
+{
+    const gl::Camera<double> camera{{{0, 0, 0}, {0, 0, -1}, {0, 1, 0}}, gl::Perspective<double>{60, 1, 1, 10}};
+    const Pipeline<double> plain = buildPipeline(CameraSpec<double>{camera});
+    const Pipeline<double> p = withEffectStages(plain, withEffect({}, EffectKind::Divide, true));
+    ASSERT_EQ(p.stages.size(), plain.stages.size() + 1);
+    const Stage<double>& divide = p.stages.back();
+    EXPECT_TRUE(divide.divides);
+    EXPECT_TRUE(divide.matrix.isIdentity()); // products unchanged
+    // gluPerspective(60, 1, 1, 10) takes (0, 0, -5) to clip (0, 0, 35/9, 5): z = -(11/9)(-5) - 20/9.
+    const PointTrace<double> t = tracePoint(p, {0, 0, -5});
+    EXPECT_TRUE(t.afterStage[p.stages.size() - 2].isApprox(Vec4<double>(0, 0, 35.0 / 9, 5)));
+    EXPECT_TRUE(t.afterStage.back().isApprox(Vec4<double>(0, 0, 7.0 / 9, 1))); // divided
+    EXPECT_TRUE(t.clip.isApprox(Vec4<double>(0, 0, 35.0 / 9, 5)));           // clip coordinates stay undivided
+    const double last = double(p.stages.size());
+    const Mat4<double> before = drawnAt(p.stages, last - 1), halfway = drawnAt(p.stages, last - 0.5);
+    EXPECT_EQ(before.row(3), (Eigen::RowVector4d(0, 0, 0, 1)));
+    EXPECT_TRUE(before.topRows<3>().isApprox(plain.composite.topRows<3>()));
+    EXPECT_TRUE(halfway.row(3).isApprox(0.5 * (Eigen::RowVector4d(0, 0, 0, 1) + plain.composite.row(3))));
+    EXPECT_TRUE(drawnAt(p.stages, last).isApprox(plain.composite));
+    // Without a divide stage pictures draw the cumulative matrix itself.
+    EXPECT_TRUE(drawnAt(plain.stages, last - 1).isApprox(plain.composite));
 }
 
 // The outcomes record the effects whose code ran: only the listed ones.

@@ -7,6 +7,7 @@
 
 #include <filesystem>
 #include <fstream>
+#include <map>
 #include <set>
 
 #include "support.hpp"
@@ -67,6 +68,8 @@ TEST(EvaluatedScene, EveryElementOfTheSetUpIsThere)
         elements.insert(p.element);
         EXPECT_FALSE(p.bounds.isEmpty());
     }
+    for (const Marker& m : scene->markers) // the PRP is a point: a marker only
+        elements.insert(m.element);
     for (Element e : {Element::Objects, Element::WorldAxes, Element::ViewAxes, Element::Prp, Element::Window,
                       Element::Dop, Element::Volume, Element::FrontPlane, Element::BackPlane, Element::Projectors,
                       Element::Canonical})
@@ -209,17 +212,20 @@ TEST_F(MeshCacheTest, AFileThatCannotBeReadIsRefusedByItsField)
     EXPECT_EQ(evaluator.evaluate(scene_)->meshes[1]->faces.size(), 1u);
 }
 
-TEST(EvaluatedScene, MarkerMeshesHaveTheirShape)
+TEST(EvaluatedScene, PointsAreMarkedWhereTheyAre)
 {
-    const Vec3<double> center(1, 2, 3);
-    for (const Vec3<double>& p : sphereMesh(center, 0.5).vertices)
-        EXPECT_NEAR((p - center).norm(), 0.5, 1e-15);
-    const PolygonMesh cone = coneMesh(Vec3<double>(0, 0, 10), Vec3<double>(0, 0, 2), 4);
-    expectNear(cone.vertices[0], Vec3<double>(0, 0, 10));
-    for (std::size_t k = 1; k < cone.vertices.size(); ++k) {
-        EXPECT_NEAR(cone.vertices[k].z(), 6, 1e-15);                   // the base, `length` behind the tip
-        EXPECT_NEAR(cone.vertices[k].head<2>().norm(), 0.3 * 4, 1e-14); // radius 0.3 length
-    }
+    // The house scene: PRP (8, 6, 84); CW at the origin (the window [-50, 50]^2 about VRP); the DOP's head at CW.
+    const auto scene = evaluateScene(house());
+    ASSERT_EQ(scene->markers.size(), 3u);
+    std::map<Element, const Marker*> marker;
+    for (const Marker& m : scene->markers)
+        marker[m.element] = &m;
+    expectNear(marker.at(Element::Prp)->point, Vec3<double>(8, 6, 84));
+    expectNear(marker.at(Element::Window)->point, Vec3<double>(0, 0, 0));
+    const Marker& head = *marker.at(Element::Dop);
+    EXPECT_EQ(head.shape, Marker::Shape::ArrowHead);
+    expectNear(head.point, Vec3<double>(0, 0, 0));
+    EXPECT_NEAR((head.point - head.from).normalized().dot(Vec3<double>(-8, -6, -84).normalized()), 1, 1e-15);
 }
 
 } // namespace

@@ -6,6 +6,7 @@
 #include <QAbstractButton>
 #include <QComboBox>
 #include <QDirIterator>
+#include <QFileInfo>
 #include <QDockWidget>
 #include <QLabel>
 #include <QLineEdit>
@@ -22,11 +23,14 @@
 
 #include <vtkActor2DCollection.h>
 #include <vtkLegendBoxActor.h>
+#include <vtkTextActor.h>
 #include <vtkRenderWindow.h>
 #include <vtkRenderer.h>
 #include <vtkRendererCollection.h>
 
 #include <algorithm>
+#include <array>
+#include <optional>
 #include <cmath>
 #include <set>
 
@@ -88,6 +92,41 @@ int pixelsOf(MainWindow& window, const char* view, const Rgb& color)
             count += std::max({std::abs(qRed(c) - r), std::abs(qGreen(c) - g), std::abs(qBlue(c) - b)}) <= 24;
         }
     return count;
+}
+
+// The boxes of the texts drawn in a view (labels and captions; viewport pixels), and the legend's.
+struct DrawnTexts {
+    std::vector<std::pair<QString, std::array<double, 4>>> texts; // x0, x1, y0, y1
+    std::optional<std::array<double, 4>> legend;
+};
+
+DrawnTexts drawnTexts(vtkRenderer* view)
+{
+    DrawnTexts drawn;
+    vtkActor2DCollection* actors = view->GetActors2D();
+    actors->InitTraversal();
+    while (vtkActor2D* actor = actors->GetNextActor2D()) {
+        if (!actor->GetVisibility())
+            continue;
+        if (auto* text = vtkTextActor::SafeDownCast(actor); text && text->GetInput() && *text->GetInput()) {
+            // The bounding box is relative to the text's position: add it (viewport pixels).
+            std::array<double, 4> box;
+            text->GetBoundingBox(view, box.data());
+            const double* at = text->GetPositionCoordinate()->GetComputedDoubleViewportValue(view);
+            box = {box[0] + at[0], box[1] + at[0], box[2] + at[1], box[3] + at[1]};
+            drawn.texts.emplace_back(text->GetInput(), box);
+        } else if (auto* legend = vtkLegendBoxActor::SafeDownCast(actor)) {
+            const int* low = legend->GetPositionCoordinate()->GetComputedViewportValue(view);
+            const int* size = legend->GetPosition2Coordinate()->GetComputedViewportValue(view);
+            drawn.legend = {double(low[0]), double(low[0] + size[0]), double(low[1]), double(low[1] + size[1])};
+        }
+    }
+    return drawn;
+}
+
+bool overlap(const std::array<double, 4>& a, const std::array<double, 4>& b)
+{
+    return a[0] < b[1] && b[0] < a[1] && a[2] < b[3] && b[2] < a[3];
 }
 
 } // namespace
@@ -162,6 +201,43 @@ private slots:
     // The stage's matrix moves every prop on the GPU, which clips what lies
     // behind the eye: an element partly behind it shows its front part (it
     // used to vanish whole). The eye stands inside the house here.
+    // Every built-in scene at every stage: no two texts drawn in the world view
+    // overlap, none covers the legend, and all lie inside the view.
+    void labelsNeverOverlap()
+    {
+        auto window = openWindow(kScenes + "/house.json", {1600, 950});
+        QVERIFY(window);
+        QDirIterator scenes(kScenes, {"*.json"}, QDir::Files, QDirIterator::Subdirectories);
+        int pictures = 0, labels = 0;
+        while (scenes.hasNext()) {
+            const QString scene = scenes.next();
+            QVERIFY2(window->openScene(scene), qPrintable(scene));
+            const int stages = int(window->document()->pipeline().stages.size());
+            for (int k = 0; k <= stages; ++k) {
+                window->goToStage(k, false);
+                window->renderNow();
+                vtkRenderer* view = renderer(*window, "worldView");
+                const int* size = view->GetSize();
+                const DrawnTexts drawn = drawnTexts(view);
+                const QString where = QFileInfo(scene).fileName() + " stage " + QString::number(k) + ": ";
+                for (std::size_t i = 0; i < drawn.texts.size(); ++i) {
+                    const auto& [text, box] = drawn.texts[i];
+                    QVERIFY2(box[0] >= 0 && box[1] <= size[0] && box[2] >= 0 && box[3] <= size[1],
+                             qPrintable(where + "\"" + text + "\" leaves the view"));
+                    QVERIFY2(!drawn.legend || !overlap(box, *drawn.legend),
+                             qPrintable(where + "\"" + text + "\" covers the legend"));
+                    for (std::size_t j = i + 1; j < drawn.texts.size(); ++j)
+                        QVERIFY2(!overlap(box, drawn.texts[j].second),
+                                 qPrintable(where + "\"" + text + "\" overlaps \"" + drawn.texts[j].first + "\""));
+                }
+                labels += int(drawn.texts.size());
+                ++pictures;
+            }
+        }
+        QVERIFY2(pictures > 100 && labels > 10 * pictures, qPrintable(QString("%1 pictures, %2 texts").arg(pictures).arg(labels)));
+        closeWindow(window);
+    }
+
     void elementsPartlyBehindTheEyeShowTheirFrontPart()
     {
         // Text is drawn in the edges' color too: count what the house adds to the picture without it.

@@ -9,6 +9,8 @@
 #include <QCoreApplication>
 #include <QDir>
 #include <QImage>
+#include <QPainter>
+#include <QSvgRenderer>
 #include <QJsonDocument>
 #include <QJsonObject>
 #include <QProcess>
@@ -19,6 +21,8 @@
 
 #include <cmath>
 #include <csignal>
+#include <tuple>
+#include <vector>
 
 #include "files.h"
 
@@ -74,6 +78,63 @@ Run viewpipe(const QStringList& arguments, const QProcessEnvironment& environmen
 }
 
 const QString kHouse = QString(VIEWPIPE_DATA_DIR) + "/scenes/house.json";
+
+// Pixels that differ from white (the light theme's background) by more than a little.
+std::vector<bool> drawnPixels(const QImage& image)
+{
+    const QImage x = image.convertToFormat(QImage::Format_RGB32);
+    std::vector<bool> drawn(std::size_t(x.width()) * std::size_t(x.height()));
+    for (int row = 0; row < x.height(); ++row)
+        for (int col = 0; col < x.width(); ++col) {
+            const QRgb c = reinterpret_cast<const QRgb*>(x.constScanLine(row))[col];
+            drawn[std::size_t(row) * std::size_t(x.width()) + std::size_t(col)] =
+                std::min({qRed(c), qGreen(c), qBlue(c)}) < 255 - 40;
+        }
+    return drawn;
+}
+
+// The smaller of the two shares: of one picture's drawn pixels, those within 2 pixels of one drawn in the other.
+double drawnAgreement(const QImage& a, const QImage& b)
+{
+    const int w = a.width(), h = a.height();
+    const std::vector<bool> da = drawnPixels(a), db = drawnPixels(b);
+    auto within = [&](const std::vector<bool>& of, const std::vector<bool>& in) {
+        qint64 count = 0, near = 0;
+        for (int y = 0; y < h; ++y)
+            for (int x = 0; x < w; ++x) {
+                if (!of[std::size_t(y) * std::size_t(w) + std::size_t(x)])
+                    continue;
+                ++count;
+                bool found = false;
+                for (int dy = -2; dy <= 2 && !found; ++dy)
+                    for (int dx = -2; dx <= 2 && !found; ++dx) {
+                        const int u = x + dx, v = y + dy;
+                        found = u >= 0 && v >= 0 && u < w && v < h && in[std::size_t(v) * std::size_t(w) + std::size_t(u)];
+                    }
+                near += found;
+            }
+        return count ? double(near) / double(count) : 0.0;
+    };
+    return std::min(within(da, db), within(db, da));
+}
+
+// pdflatex, which `make test` installs, compiles `file` in `folder`.
+bool compilesWithPdflatex(const QString& folder, const QString& file)
+{
+    const QString pdflatex = QStandardPaths::findExecutable("pdflatex");
+    if (pdflatex.isEmpty()) {
+        qWarning("pdflatex is missing: scripts/install-deps.sh --test installs TeX Live");
+        return false;
+    }
+    QProcess tex;
+    tex.setWorkingDirectory(folder);
+    tex.start(pdflatex, {"-interaction=nonstopmode", "-halt-on-error", file});
+    if (!tex.waitForFinished(120000) || tex.exitCode() != 0) {
+        qWarning("%s", tex.readAllStandardOutput().right(2000).constData());
+        return false;
+    }
+    return true;
+}
 
 // Compares an image with tests/baselines/<name>; a missing baseline is written
 // to the build tree for review.
@@ -192,40 +253,83 @@ private slots:
         QVERIFY2(red > 1500, qPrintable(QString::number(red)));
     }
 
+    // True vector figures: lines and faces as paths, labels as text, no
+    // picture inside; each, rasterized, draws what the PNG of the same stage
+    // draws (drawn pixels agree to 90 % after a 2-pixel dilation).
     void exportWritesVectorFormats()
     {
         QTemporaryDir dir;
-        const QString out = dir.filePath("vector");
-        const Run r = viewpipe({"export", kHouse, "--out", out, "--stages", "4", "--format", "svg,pdf", "--quiet"});
-        QVERIFY2(r.exitCode == 0, qPrintable(r.err));
+        const QString glPerspective = QString(VIEWPIPE_DATA_DIR) + "/scenes/opengl-perspective.json";
+        for (const auto& [scene, stage, name] : {std::tuple{kHouse, QString("0"), QString("00-world")},
+                                                 std::tuple{kHouse, QString("4"), QString("04-sh-per")},
+                                                 std::tuple{glPerspective, QString("4"), QString("04-p-depth")}}) {
+            const QString out = dir.filePath(name);
+            const Run r = viewpipe({"export", scene, "--out", out, "--stages", stage, "--format", "png,svg,pdf", "--quiet"});
+            QVERIFY2(r.exitCode == 0, qPrintable(r.err));
+            const QImage png(out + "/" + name + ".png");
+            QVERIFY(!png.isNull());
 
-        // SVG: well-formed XML, the 3D picture embedded, the labels as text.
-        QXmlStreamReader xml(readAll(out + "/04-sh-per.svg"));
-        QStringList texts;
-        bool picture = false;
-        while (!xml.atEnd()) {
-            if (xml.readNext() != QXmlStreamReader::StartElement)
-                continue;
-            if (xml.name() == QLatin1String("image"))
-                picture = xml.attributes().value("xlink:href").startsWith(QLatin1String("data:image/png;base64,"));
-            if (xml.name() == QLatin1String("text"))
-                texts << xml.readElementText();
+            // SVG: well-formed XML, no embedded picture, shapes as paths, the labels as text.
+            QXmlStreamReader xml(readAll(out + "/" + name + ".svg"));
+            QStringList texts;
+            int images = 0, paths = 0;
+            while (!xml.atEnd()) {
+                if (xml.readNext() != QXmlStreamReader::StartElement)
+                    continue;
+                images += xml.name() == QLatin1String("image");
+                paths += xml.name() == QLatin1String("path") || xml.name() == QLatin1String("polyline");
+                if (xml.name() == QLatin1String("text"))
+                    texts << xml.readElementText().simplified();
+            }
+            QVERIFY2(!xml.hasError(), qPrintable(xml.errorString()));
+            QCOMPARE(images, 0);
+            QVERIFY2(paths > 50, qPrintable(QString::number(paths)));
+            QVERIFY2(texts.contains("CW") && texts.contains("x"), qPrintable(texts.join("|")));
+            QSvgRenderer svg(out + "/" + name + ".svg");
+            QImage fromSvg(png.size(), QImage::Format_RGB32);
+            fromSvg.fill(Qt::white);
+            QPainter painter(&fromSvg);
+            svg.render(&painter);
+            painter.end();
+            const double svgAgreement = drawnAgreement(png, fromSvg);
+            QVERIFY2(svgAgreement >= 0.9, qPrintable(name + " svg: " + QString::number(svgAgreement)));
+
+            // PDF: vector (no image), its fonts embedded, small; rasterized by poppler, the PNG's drawing.
+            const QByteArray pdf = [&] {
+                QFile f(out + "/" + name + ".pdf");
+                f.open(QIODevice::ReadOnly);
+                return f.readAll();
+            }();
+            QVERIFY(pdf.startsWith("%PDF-") && pdf.trimmed().endsWith("%%EOF"));
+            QVERIFY(!pdf.contains("/Subtype /Image"));
+            QVERIFY(pdf.contains("/FontFile2")); // TrueType font programs, embedded
+            QVERIFY2(pdf.size() <= 100 * 1024, qPrintable(QString::number(pdf.size())));
+            const QString pdftoppm = QStandardPaths::findExecutable("pdftoppm");
+            QVERIFY2(!pdftoppm.isEmpty(), "pdftoppm (Debian package poppler-utils, installed by make test) is missing");
+            QProcess raster;
+            raster.start(pdftoppm, {"-png", "-r", "72", "-singlefile", out + "/" + name + ".pdf", out + "/from-pdf"});
+            QVERIFY(raster.waitForFinished(60000) && raster.exitCode() == 0);
+            const QImage fromPdf(out + "/from-pdf.png");
+            QCOMPARE(fromPdf.size(), png.size());
+            const double pdfAgreement = drawnAgreement(png, fromPdf);
+            QVERIFY2(pdfAgreement >= 0.9, qPrintable(name + " pdf: " + QString::number(pdfAgreement)));
         }
-        QVERIFY2(!xml.hasError(), qPrintable(xml.errorString()));
-        QVERIFY(picture);
-        QVERIFY(texts.contains("PRP") && texts.contains("window") && texts.contains("front (F)"));
-        QVERIFY(texts.filter("SH_per").size() == 1);
+    }
 
-        // PDF: a complete file with the picture and the text.
-        const QByteArray pdf = [&] {
-            QFile f(out + "/04-sh-per.pdf");
-            f.open(QIODevice::ReadOnly);
-            return f.readAll();
-        }();
-        QVERIFY(pdf.startsWith("%PDF-"));
-        QVERIFY(pdf.trimmed().endsWith("%%EOF"));
-        QVERIFY(pdf.contains("/Subtype /Image"));
-        QVERIFY(pdf.contains("(PRP)") && pdf.contains("SH_per"));
+    // TikZ: one standalone document per stage and figures.tex with them all, each compiling with pdflatex as written.
+    void exportWritesTikzThatCompiles()
+    {
+        QTemporaryDir dir;
+        const QString out = dir.filePath("tikz");
+        const Run r = viewpipe({"export", kHouse, "--out", out, "--stages", "0,5", "--format", "tikz", "--quiet"});
+        QVERIFY2(r.exitCode == 0, qPrintable(r.err));
+        const QString world = readAll(out + "/00-world-tikz.tex");
+        QVERIFY(world.contains("\\definecolor{vpDOP}") && world.contains("vp DOP/.style="));
+        QVERIFY(world.contains("{$\\mathrm{PRP}$}") && world.contains("{$\\mathrm{VRP}$}") &&
+                world.contains("{front ($F$)}"));
+        QVERIFY(readAll(out + "/figures.tex").contains("\\input{05-s-per-tikz}"));
+        for (const char* file : {"00-world-tikz.tex", "05-s-per-tikz.tex", "figures.tex"})
+            QVERIFY2(compilesWithPdflatex(out, file), qPrintable(file));
     }
 
     // The seeds' glOrtho example (seed 001): entries 1/25, -1/5, 1/20, -3/2, -1/4.
@@ -251,18 +355,11 @@ private slots:
         const QString rotation = readAll(dir.filePath("oblique/matrices.tex"));
         QVERIFY2(rotation.contains("0.7071 & 0 & -0.7071 & 0"), qPrintable(rotation));
 
-        // Where TeX is installed, the file compiles.
-        const QString pdflatex = QStandardPaths::findExecutable("pdflatex");
-        if (pdflatex.isEmpty())
-            QSKIP("no TeX installation (pdflatex): matrices.tex was checked for content but not compiled");
+        // The files compile, within a document (they are fragments).
         QVERIFY(writeFile(dir.filePath("check.tex"),
                           "\\documentclass{article}\n\\usepackage{amsmath}\n\\begin{document}\n\\input{out/matrices.tex}\n"
                           "\\input{oblique/matrices.tex}\n\\end{document}\n"));
-        QProcess tex2pdf;
-        tex2pdf.setWorkingDirectory(dir.path());
-        tex2pdf.start(pdflatex, {"-interaction=nonstopmode", "-halt-on-error", "check.tex"});
-        QVERIFY(tex2pdf.waitForFinished(120000));
-        QVERIFY2(tex2pdf.exitCode() == 0, tex2pdf.readAllStandardOutput().right(2000).constData());
+        QVERIFY(compilesWithPdflatex(dir.path(), "check.tex"));
     }
 
     void exportAnimates()
@@ -339,5 +436,5 @@ private slots:
     }
 };
 
-QTEST_GUILESS_MAIN(RenderingTest)
+QTEST_MAIN(RenderingTest)
 #include "rendering_test.moc"

@@ -127,6 +127,26 @@ TEST(PipelineJson, HouseHasTheContractedKeys)
     EXPECT_EQ(j["stages"][4]["cumulative"], j["composite"]);
 }
 
+// OpenGL's divide is written as what it does, not as the identity matrix it leaves in products.
+TEST(PipelineJson, DivideStageSaysItDivides)
+{
+    const Scene scene = sceneFrom(R"({"camera": {"look_at": {"eye": [0, 0, 0], "center": [0, 0, -1], "up": [0, 1, 0]},
+        "projection": {"type": "perspective", "fovy_deg": 60, "aspect": 1, "near": 1, "far": 10}},
+        "effects": ["divide"]})");
+    const Json j = cli::pipelineJson(scene, cli::PrecisionChoice{}, evaluateScene(scene)->outcomes);
+    const Json& divide = j["stages"].back();
+    EXPECT_EQ(divide["symbol"], "divide");
+    EXPECT_EQ(divide["divides"], "(x, y, z, w) -> (x/w, y/w, z/w, 1)");
+    EXPECT_FALSE(j["stages"][0].contains("divides"));
+    std::ostringstream text;
+    cli::printPipeline(text, scene, cli::PrecisionChoice{}, evaluateScene(scene)->outcomes);
+    EXPECT_NE(text.str().find("(x, y, z, w) -> (x/w, y/w, z/w, 1), not a matrix"), std::string::npos);
+    EXPECT_NE(text.str().find("P * V = P_depth * S_fovy * R_eye * T(-eye)\n"), std::string::npos);
+    const std::string tex = cli::matricesLatex(scene, 4);
+    EXPECT_NE(tex.find("(x, y, z, w) \\mapsto \\left(\\frac{x}{w}"), std::string::npos);
+    EXPECT_NE(tex.find("P \\, V = P_{\\mathrm{depth}}"), std::string::npos);
+}
+
 TEST(PipelineJson, WidePrecisionsAreStrings)
 {
     const Scene house = loadScene(kScenes / "house.json");

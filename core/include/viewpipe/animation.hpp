@@ -48,4 +48,22 @@ template <class T> Mat4<T> cumulativeAt(const std::vector<Stage<T>>& stages, dou
     return m;
 }
 
+// The matrix a picture draws stage `position` with. Where the pipeline has a
+// divide stage, the stages before it are drawn undivided (clip coordinates
+// x, y, z: w left out), and the divide brings w in: the picture changes where
+// the divide happens, not before. Elsewhere the cumulative matrix (drawn
+// divided, as homogeneous coordinates are).
+template <class T> Mat4<T> drawnAt(const std::vector<Stage<T>>& stages, double position)
+{
+    Mat4<T> m = cumulativeAt(stages, position);
+    const auto divide = std::find_if(stages.begin(), stages.end(), [](const Stage<T>& s) { return s.divides; });
+    if (divide == stages.end())
+        return m;
+    const double at = double(divide - stages.begin()); // the divide runs from `at` to `at + 1`
+    const T share = T(std::clamp(position - at, 0.0, 1.0));
+    const Eigen::Matrix<T, 1, 4> affine(T(0), T(0), T(0), T(1));
+    m.row(3) = affine + share * (m.row(3) - affine);
+    return m;
+}
+
 } // namespace viewpipe

@@ -102,7 +102,7 @@ Pipeline<T> withEffectStages(Pipeline<T> p, const EffectList& effects, std::vect
         p.toClip = Mat4<T>::Identity();
     } else {
         p.stages.push_back(
-            {"divide", "divide by w: clip coordinates become normalized device coordinates", Mat4<T>::Identity()});
+            {"divide", "divide by w: clip coordinates become normalized device coordinates", Mat4<T>::Identity(), true});
     }
     return p;
 }

@@ -44,10 +44,20 @@ struct Primitive {
     int object = -1;            // the scene object drawn, or -1
     bool depthColored = false;  // faces colored by the level the depth buffer stores
     bool canonical = false;     // drawn where it is (not through the stage's matrix)
-    // A point's marker (a sphere, a cone's tip): drawn only while the point
-    // has an image, as its label is; never stretched through infinity.
-    std::optional<Vec3<double>> markedPoint;
     Eigen::AlignedBox<double, 3> bounds;
+};
+
+// A point drawn at one size on screen whatever a stage's matrix does to the
+// space around it (a sphere would be stretched by the scale and shear stages
+// and blown up by the divide): a dot, or an arrowhead whose tip is `point`,
+// pointing away from `from`. Drawn only while the point has an image.
+struct Marker {
+    enum class Shape { Dot, ArrowHead };
+    Element element;
+    Shape shape;
+    Vec3<double> point;
+    Vec3<double> from; // an arrowhead's: a point of its shaft (a dot's: the point)
+    double size = 6;                          // pixels: a dot's radius, an arrowhead's length / 3
 };
 
 struct Label {
@@ -83,6 +93,7 @@ struct EvaluatedScene {
     std::vector<ObjectFaces> objectFaces;
     std::vector<Primitive> primitives; // the world view's, back to front in drawing order
     std::vector<Label> labels;
+    std::vector<Marker> markers; // drawn over the primitives
     std::vector<LegendEntry> worldLegend, projectedLegend;
     // The projected view's marks in the picture's coordinates (x, y in [-1, 1]).
     std::vector<Segment2> vanishingLines;
@@ -94,8 +105,7 @@ struct EvaluatedScene {
     // this plane (world coordinates, kept where p . (x, y, z, 1) >= 0), 9/10
     // of the way from the eye to the near (front) plane. Perspective views only.
     std::optional<Vec4<double>> nearCut;
-    double size = 1;       // of the whole set-up, for markers and axes
-    double markerSize = 1; // of the point markers, world units
+    double size = 1; // of the whole set-up, for axes
 
     // Every object vertex, and the box around them (empty without objects).
     std::vector<Vec3<double>> objectVertices() const;
@@ -140,10 +150,6 @@ Eigen::AlignedBox<double, 3> boundsOf(const std::vector<std::shared_ptr<const Po
 
 // One evaluation without a cache (the CLI's: each file is read once anyway).
 std::shared_ptr<const EvaluatedScene> evaluateScene(const Scene& scene);
-
-// A sphere (16 x 12 facets) and a cone (20 sides) as polygon meshes, for markers and arrow heads.
-PolygonMesh sphereMesh(const Vec3<double>& center, double radius);
-PolygonMesh coneMesh(const Vec3<double>& tip, const Vec3<double>& direction, double length);
 
 // A point through a cumulative matrix and the divide; nothing when it has no
 // image (behind the eye, on the eye plane, or not finite).

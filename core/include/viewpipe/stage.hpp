@@ -9,11 +9,18 @@ namespace viewpipe {
 
 // One step of a normalizing transformation: its symbol (a stable interface:
 // "T(-VRP)", "SH_per", ...), a one-line explanation for people, its matrix.
+// The divide, (x, y, z, w) -> (x/w, y/w, z/w, 1), is no matrix: such a stage
+// `divides`, and its `matrix` is the identity (the point it gives is the same
+// point of projective space: products of matrices are unchanged by it).
 template <class T> struct Stage {
     std::string symbol;
     std::string explanation;
     Mat4<T> matrix;
+    bool divides = false;
 };
+
+// How a dividing stage is written where a matrix would be.
+inline const char* kDivideMapping = "(x, y, z, w) -> (x/w, y/w, z/w, 1)";
 
 // Running products: element k is stages[k] * ... * stages[0].
 template <class T> std::vector<Mat4<T>> cumulativeProducts(const std::vector<Stage<T>>& stages)

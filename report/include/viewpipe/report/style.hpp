@@ -9,7 +9,7 @@
 
 #include "viewpipe/evaluated_scene.hpp"
 
-namespace viewpipe::gui {
+namespace viewpipe {
 
 enum class Theme { Dark, Light };
 
@@ -32,4 +32,4 @@ extern const std::array<Rgb, 5> kBandRamp;
 // The raster effect's pixels, one color per object.
 extern const std::array<Rgb, 4> kRasterPalette;
 
-} // namespace viewpipe::gui
+} // namespace viewpipe

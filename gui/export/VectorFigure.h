@@ -1,0 +1,29 @@
+#pragma once
+
+// A stage's flat figure as true vector graphics through Qt's QSvgGenerator
+// and QPdfWriter: lines as paths, faces as filled polygons back to front,
+// labels, caption and legend as text (the PDF embeds its font). The same
+// palette, framing and label placement as the PNG of the stage.
+
+#include <filesystem>
+#include <string>
+
+#include "viewpipe/report/figure.hpp"
+#include "viewpipe/report/style.hpp"
+
+namespace viewpipe::gui {
+
+struct VectorFigure {
+    const StageShown* stage;
+    FigureView view;
+    std::string caption;
+    Theme theme = Theme::Light;
+};
+
+// The figure, with caption and legend boxes reserved as the PNG has them.
+Figure flatFigure(const VectorFigure& figure);
+
+// Writes `file` atomically as SVG or PDF (by `format`); throws std::runtime_error when it cannot.
+void writeVectorFigure(const VectorFigure& figure, const std::string& format, const std::filesystem::path& file);
+
+} // namespace viewpipe::gui

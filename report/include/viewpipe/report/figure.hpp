@@ -1,0 +1,132 @@
+#pragma once
+
+// A stage's picture as flat drawing, for the vector figures (SVG, PDF, TikZ):
+// the evaluated scene's primitives through the stage's matrix and the world
+// view's camera, cut where the VTK painter cuts them, faces and lines sorted
+// back to front (painter's algorithm), and every label placed. The label
+// placement step here is the only one: the app, the PNG export and the vector
+// figures all call it. No VTK, no Qt.
+
+#include <functional>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "viewpipe/evaluated_scene.hpp"
+
+namespace viewpipe {
+
+// A rectangle in picture coordinates: pixels, origin top-left, y down.
+struct Box2 {
+    Vec2<double> min = Vec2<double>::Zero(), max = Vec2<double>::Zero();
+    bool overlaps(const Box2& other) const;
+    bool contains(const Box2& other) const;
+    Box2 grown(double by) const;
+};
+
+// A stage as the pictures show it: every element through the stage's
+// cumulative matrix (the canonical outline where it is, at its opacity), cut
+// at the scene's near cut while the matrix divides.
+struct StageShown {
+    StageShown(const EvaluatedScene& scene, const Mat4<double>& cumulative, double canonicalOpacity);
+    const EvaluatedScene* scene;
+    Mat4<double> cumulative;
+    double canonicalOpacity;
+    std::optional<Vec4<double>> cut; // world coordinates, kept where cut . p >= 0
+    // Whether a world point is drawn: it has an image and is not cut away.
+    bool shows(const Vec3<double>& world) const;
+    // Whether a primitive is drawn at all (the canonical outline only while it has an opacity).
+    bool draws(const Primitive& primitive) const;
+    const Mat4<double>& matrixOf(const Primitive& primitive) const;
+};
+
+// A matrix divides when w is not 1 everywhere.
+bool isProjective(const Mat4<double>& m);
+
+// Where a picture is seen from and how it is drawn.
+struct FigureView {
+    Mat4<double> camera = Mat4<double>::Identity(); // stage coordinates -> the picture's clip coordinates
+    int width = 1280, height = 720;                 // pixels
+    double frameReach = 0;  // the fixed axes run from -reach to reach along x, y and z (0: none)
+    double fontSize = 20;   // pixels
+    double lineScale = 1;
+    // Pixels a world point is drawn at, and its depth (smaller: nearer); nothing when it has no image.
+    std::optional<Vec3<double>> pixel(const Vec3<double>& stagePoint) const;
+};
+
+// A label's text size in pixels, as the writer that draws it measures it.
+using TextMeasure = std::function<Vec2<double>(const std::string& text)>;
+
+struct LabelRequest {
+    Element element;
+    std::string text;
+    Vec2<double> anchor; // pixels
+    Vec2<double> size;   // pixels
+};
+
+// What labels keep clear of: the lines drawn, each object's outline (a
+// polygon), and boxes taken by captions and legends.
+struct LabelObstacles {
+    std::vector<Segment2> lines;
+    std::vector<std::vector<Vec2<double>>> objects;
+    std::vector<Box2> reserved;
+};
+
+struct PlacedLabel {
+    Element element;
+    std::string text;
+    Vec2<double> anchor;
+    Box2 box;            // where the text goes
+    bool leader = false; // drawn away from its anchor: a line joins them
+};
+
+// Places each label near its anchor: inside the picture, on no other label
+// and no reserved box, crossing as few lines and objects as it can, moved
+// away with a leader line when nothing near is free. A label that finds no
+// free place at all is left out (its index is missing from the result).
+std::vector<std::optional<PlacedLabel>> placeLabels(const std::vector<LabelRequest>& requests,
+                                                    const LabelObstacles& obstacles, int width, int height);
+
+// Pairs of labels whose boxes overlap.
+int labelOverlaps(const std::vector<PlacedLabel>& labels);
+
+
+// Labels of a scene that show at a stage, placed clear of what the stage
+// draws (its lines, objects and `markers`) and of the `reserved` boxes.
+std::vector<std::optional<PlacedLabel>> placeSceneLabels(const StageShown& stage, const FigureView& view,
+                                                         const std::vector<const Label*>& labels,
+                                                         const std::vector<Marker>& markers,
+                                                         const TextMeasure& measure,
+                                                         const std::vector<Box2>& reserved);
+
+// One filled polygon or one line of the flat figure.
+struct FigureShape {
+    Element element;
+    bool surface;       // a filled polygon; otherwise an open polyline
+    double opacity;
+    double lineWidth;   // pixels
+    std::vector<Vec2<double>> points;
+    double depth;       // for sorting: larger is farther
+};
+
+// The markers that show at a stage, as filled polygons in pixels: a dot a
+// 16-gon, an arrowhead a triangle along the image of its shaft.
+std::vector<FigureShape> markerShapes(const StageShown& stage, const FigureView& view,
+                                      const std::vector<Marker>& markers);
+
+struct Figure {
+    int width = 0, height = 0;
+    double fontSize = 20, lineScale = 1; // as the view's
+    std::vector<FigureShape> shapes; // back to front
+    std::vector<PlacedLabel> labels;
+};
+
+// The flat figure of a stage; `reserved`: boxes the writer keeps for its
+// caption and legend.
+Figure drawFigure(const StageShown& stage, const FigureView& view, const TextMeasure& measure,
+                  const std::vector<Box2>& reserved);
+
+// The line width the pictures draw an element's lines with, in pixels at lineScale 1.
+double lineWidthOf(Element element, bool surface);
+
+} // namespace viewpipe

@@ -1,0 +1,27 @@
+#pragma once
+
+// Flat figures as TikZ, for lecture notes and slides: one standalone LaTeX
+// document per figure, its colors and styles named at the top so that a
+// lecturer can restyle them, and a document that shows them all. Compiles
+// with pdflatex as written (packages: tikz, standalone, amsmath).
+
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "viewpipe/report/figure.hpp"
+#include "viewpipe/report/style.hpp"
+
+namespace viewpipe {
+
+// A figure as a standalone document; 16 cm wide.
+std::string tikzFigure(const Figure& figure, Theme theme);
+
+// An article showing each figure (file name in the same folder, caption) as a
+// figure with its caption, through the standalone package.
+std::string tikzFiguresDocument(const std::vector<std::pair<std::string, std::string>>& figures);
+
+// A label's text in its usual notation: "PRP" as $\mathrm{PRP}$, "u" as $u$, "front (F)" as front ($F$).
+std::string texLabel(const std::string& text);
+
+} // namespace viewpipe

@@ -1,0 +1,476 @@
+#include "viewpipe/report/figure.hpp"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <limits>
+
+namespace viewpipe {
+namespace {
+
+using Vec2d = Vec2<double>;
+using Vec3d = Vec3<double>;
+using Vec4d = Vec4<double>;
+
+// Objects with more vertices than this are outlined by their box's corners.
+constexpr std::size_t kExactOutline = 20000;
+
+// Keeps the part of a polygon (or, open, a polyline) where plane . p >= 0, in homogeneous coordinates.
+std::vector<Vec4d> clipPolygon(const std::vector<Vec4d>& points, const Vec4d& plane, bool closed)
+{
+    std::vector<Vec4d> kept;
+    const std::size_t n = points.size();
+    const std::size_t edges = closed ? n : n - 1;
+    if (n == 0)
+        return kept;
+    if (!closed && plane.dot(points[0]) >= 0)
+        kept.push_back(points[0]);
+    for (std::size_t k = 0; k < edges; ++k) {
+        const Vec4d& a = points[k];
+        const Vec4d& b = points[(k + 1) % n];
+        const double da = plane.dot(a), db = plane.dot(b);
+        if ((da >= 0) != (db >= 0))
+            kept.push_back(a + (b - a) * (da / (da - db)));
+        if (db >= 0)
+            kept.push_back(b);
+    }
+    return kept;
+}
+
+// The convex hull of points (Andrew's monotone chain), counter-clockwise.
+std::vector<Vec2d> convexHull(std::vector<Vec2d> points)
+{
+    std::sort(points.begin(), points.end(),
+              [](const Vec2d& a, const Vec2d& b) { return a.x() < b.x() || (a.x() == b.x() && a.y() < b.y()); });
+    if (points.size() < 3)
+        return points;
+    auto cross = [](const Vec2d& o, const Vec2d& a, const Vec2d& b) {
+        return (a - o).x() * (b - o).y() - (a - o).y() * (b - o).x();
+    };
+    std::vector<Vec2d> hull(2 * points.size());
+    std::size_t k = 0;
+    for (std::size_t i = 0; i < points.size(); ++i) {
+        while (k >= 2 && cross(hull[k - 2], hull[k - 1], points[i]) <= 0)
+            --k;
+        hull[k++] = points[i];
+    }
+    for (std::size_t i = points.size() - 1, t = k + 1; i > 0; --i) {
+        while (k >= t && cross(hull[k - 2], hull[k - 1], points[i - 1]) <= 0)
+            --k;
+        hull[k++] = points[i - 1];
+    }
+    hull.resize(k - 1);
+    return hull;
+}
+
+bool segmentCrossesBox(const Segment2& s, const Box2& box)
+{
+    // Liang-Barsky: the part of the segment inside the box is not empty.
+    const Vec2d d = s[1] - s[0];
+    double t0 = 0, t1 = 1;
+    for (int axis = 0; axis < 2; ++axis) {
+        for (const double side : {-1.0, 1.0}) {
+            const double p = side * d[axis];
+            const double q = side < 0 ? s[0][axis] - box.min[axis] : box.max[axis] - s[0][axis];
+            if (p == 0) {
+                if (q < 0)
+                    return false;
+            } else {
+                const double t = q / p;
+                if (p < 0)
+                    t0 = std::max(t0, t);
+                else
+                    t1 = std::min(t1, t);
+            }
+        }
+    }
+    return t0 <= t1;
+}
+
+// The share of a box's area inside a convex polygon, sampled on a 5 x 5 grid.
+double shareInside(const Box2& box, const std::vector<Vec2d>& polygon)
+{
+    if (polygon.size() < 3)
+        return 0;
+    int inside = 0;
+    for (int i = 0; i < 5; ++i)
+        for (int j = 0; j < 5; ++j) {
+            const Vec2d p(box.min.x() + (i + 0.5) / 5 * (box.max.x() - box.min.x()),
+                          box.min.y() + (j + 0.5) / 5 * (box.max.y() - box.min.y()));
+            bool in = true;
+            for (std::size_t k = 0; k < polygon.size() && in; ++k) {
+                const Vec2d a = polygon[k], b = polygon[(k + 1) % polygon.size()];
+                in = (b - a).x() * (p - a).y() - (b - a).y() * (p - a).x() >= 0;
+            }
+            inside += in;
+        }
+    return inside / 25.0;
+}
+
+// A polygon or segment through the stage and the camera, in pixels with a depth each (larger: farther).
+// What the painter cuts away is cut (`cuttable`: all but the canonical outline and the fixed axes), and what
+// lies behind the stage's eye or the camera's near plane has no image.
+std::vector<Vec3d> throughView(const StageShown& stage, const FigureView& view, const Mat4<double>& matrix,
+                               const std::vector<Vec3d>& points, bool closed, bool cuttable)
+{
+    std::vector<Vec4d> h;
+    h.reserve(points.size());
+    for (const Vec3d& p : points)
+        h.push_back(p.homogeneous());
+    if (cuttable && stage.cut)
+        h = clipPolygon(h, *stage.cut, closed);
+    if (isProjective(matrix)) { // w > 0, a little more so that the divide stays finite
+        const Vec4d w = matrix.row(3).transpose();
+        h = clipPolygon(h, w - 1e-9 * w.norm() * Vec4d::UnitW(), closed);
+    }
+    for (Vec4d& p : h) {
+        const Vec4d q = matrix * p;
+        p = Vec4d(q.x() / q.w(), q.y() / q.w(), q.z() / q.w(), 1);
+    }
+    h = clipPolygon(h, (view.camera.row(2) + view.camera.row(3)).transpose(), closed); // z >= -w
+    std::vector<Vec3d> pixels;
+    pixels.reserve(h.size());
+    for (const Vec4d& p : h)
+        if (const std::optional<Vec3d> px = view.pixel(p.head<3>()))
+            pixels.push_back(*px);
+    return pixels;
+}
+
+std::vector<Vec2d> flat(const std::vector<Vec3d>& pixels)
+{
+    std::vector<Vec2d> points;
+    points.reserve(pixels.size());
+    for (const Vec3d& p : pixels)
+        points.push_back(p.head<2>());
+    return points;
+}
+
+double meanDepth(const std::vector<Vec3d>& pixels)
+{
+    double sum = 0;
+    for (const Vec3d& p : pixels)
+        sum += p.z();
+    return sum / double(pixels.size());
+}
+
+// The fixed axes of the coordinates the stage maps into, as segments.
+std::vector<Vec3d> frameAxes(double reach)
+{
+    std::vector<Vec3d> axes;
+    for (int k = 0; k < 3; ++k)
+        axes.insert(axes.end(), {-reach * Vec3d::Unit(k), reach * Vec3d::Unit(k)});
+    return axes;
+}
+
+} // namespace
+
+bool Box2::overlaps(const Box2& other) const
+{
+    return min.x() < other.max.x() && other.min.x() < max.x() && min.y() < other.max.y() && other.min.y() < max.y();
+}
+
+bool Box2::contains(const Box2& other) const
+{
+    return min.x() <= other.min.x() && min.y() <= other.min.y() && other.max.x() <= max.x() &&
+           other.max.y() <= max.y();
+}
+
+Box2 Box2::grown(double by) const
+{
+    return {min - Vec2d::Constant(by), max + Vec2d::Constant(by)};
+}
+
+bool isProjective(const Mat4<double>& m)
+{
+    return m(3, 0) != 0 || m(3, 1) != 0 || m(3, 2) != 0 || m(3, 3) != 1;
+}
+
+StageShown::StageShown(const EvaluatedScene& evaluated, const Mat4<double>& matrix, double opacity)
+    : scene(&evaluated), cumulative(matrix), canonicalOpacity(opacity)
+{
+    if (evaluated.nearCut && isProjective(matrix))
+        cut = evaluated.nearCut;
+}
+
+bool StageShown::shows(const Vec3<double>& world) const
+{
+    return !(cut && cut->dot(world.homogeneous()) < 0) && projectPoint(cumulative, world).has_value();
+}
+
+bool StageShown::draws(const Primitive& primitive) const
+{
+    return !primitive.canonical || canonicalOpacity > 0;
+}
+
+const Mat4<double>& StageShown::matrixOf(const Primitive& primitive) const
+{
+    static const Mat4<double> identity = Mat4<double>::Identity();
+    return primitive.canonical ? identity : cumulative;
+}
+
+std::optional<Vec3<double>> FigureView::pixel(const Vec3<double>& stagePoint) const
+{
+    const Vec4d c = camera * stagePoint.homogeneous();
+    if (!(c.w() > 0) || !c.allFinite())
+        return std::nullopt;
+    const Vec3d ndc = c.head<3>() / c.w();
+    return Vec3d((ndc.x() + 1) / 2 * width, (1 - ndc.y()) / 2 * height, ndc.z());
+}
+
+double lineWidthOf(Element element, bool surface)
+{
+    if (surface)
+        return 1;
+    const bool emphasised = element == Element::WorldAxes || element == Element::ViewAxes ||
+                            element == Element::Canonical || element == Element::Dop ||
+                            element == Element::ZFighting;
+    return emphasised ? 3.5 : 2.0;
+}
+
+std::vector<std::optional<PlacedLabel>> placeLabels(const std::vector<LabelRequest>& requests,
+                                                    const LabelObstacles& obstacles, int width, int height)
+{
+    constexpr double kPadding = 5; // between labels, and from the picture's edge
+    const Box2 picture{Vec2d::Constant(kPadding), Vec2d(width - kPadding, height - kPadding)};
+    // Directions to try, the customary up-right first.
+    const std::array<Vec2d, 8> directions = {{{1, -1}, {1, 0}, {1, 1}, {0, -1}, {-1, -1}, {-1, 0}, {-1, 1}, {0, 1}}};
+    const std::array<double, 6> distances = {4, 24, 48, 80, 130, 200}; // pixels; from the second on, with a leader
+    std::vector<Box2> taken = obstacles.reserved;
+    std::vector<std::optional<PlacedLabel>> placed(requests.size());
+
+    auto cost = [&](const Box2& box) {
+        double c = 0;
+        const Box2 clear = box.grown(1);
+        for (const Segment2& line : obstacles.lines)
+            c += segmentCrossesBox(line, clear) ? 2 : 0;
+        for (const std::vector<Vec2d>& object : obstacles.objects)
+            c += 6 * shareInside(box, object);
+        return c;
+    };
+    auto free = [&](const Box2& box) {
+        if (!picture.contains(box))
+            return false;
+        for (const Box2& other : taken)
+            if (box.overlaps(other.grown(kPadding)))
+                return false;
+        return true;
+    };
+
+    for (std::size_t k = 0; k < requests.size(); ++k) {
+        const LabelRequest& r = requests[k];
+        std::optional<Box2> best;
+        double bestCost = 0;
+        bool bestLeader = false;
+        auto consider = [&](const Box2& box, double penalty, bool leader) {
+            if (!free(box))
+                return;
+            const double c = cost(box) + penalty;
+            if (!best || c < bestCost) {
+                best = box;
+                bestCost = c;
+                bestLeader = leader;
+            }
+        };
+        for (std::size_t d = 0; d < distances.size(); ++d) {
+            for (std::size_t j = 0; j < directions.size(); ++j) {
+                const Vec2d dir = directions[j];
+                // The box's corner or edge middle nearest the anchor sits `distance` away along dir.
+                const Vec2d offset = distances[d] * dir.normalized();
+                const Vec2d min(dir.x() > 0 ? 0 : dir.x() < 0 ? -r.size.x() : -r.size.x() / 2,
+                                dir.y() > 0 ? 0 : dir.y() < 0 ? -r.size.y() : -r.size.y() / 2);
+                const Box2 box{r.anchor + offset + min, r.anchor + offset + min + r.size};
+                // Nearer is better: a crossing line costs as much as going one ring further out.
+                consider(box, double(d) * 1.0 + 0.01 * double(j), d > 0);
+            }
+            if (best && bestCost < double(d) + 1)
+                break; // nothing further out can do better
+        }
+        if (!best) { // crowded: the nearest free place anywhere, with a leader
+            for (double y = picture.min.y(); y + r.size.y() <= picture.max.y(); y += 8)
+                for (double x = picture.min.x(); x + r.size.x() <= picture.max.x(); x += 8) {
+                    const Box2 box{Vec2d(x, y), Vec2d(x, y) + r.size};
+                    consider(box, 0.02 * (box.min + r.size / 2 - r.anchor).norm(), true);
+                }
+        }
+        if (best) {
+            taken.push_back(*best);
+            placed[k] = PlacedLabel{r.element, r.text, r.anchor, *best, bestLeader};
+        }
+    }
+    return placed;
+}
+
+int labelOverlaps(const std::vector<PlacedLabel>& labels)
+{
+    int count = 0;
+    for (std::size_t i = 0; i < labels.size(); ++i)
+        for (std::size_t j = i + 1; j < labels.size(); ++j)
+            count += labels[i].box.overlaps(labels[j].box);
+    return count;
+}
+
+std::vector<FigureShape> markerShapes(const StageShown& stage, const FigureView& view,
+                                      const std::vector<Marker>& markers)
+{
+    std::vector<FigureShape> shapes;
+    auto pixel = [&](const Vec3d& world) -> std::optional<Vec2d> {
+        if (!stage.shows(world))
+            return std::nullopt;
+        const std::optional<Vec3d> px = view.pixel(*projectPoint(stage.cumulative, world));
+        return px ? std::optional<Vec2d>(px->head<2>()) : std::nullopt;
+    };
+    for (const Marker& m : markers) {
+        const std::optional<Vec2d> at = pixel(m.point);
+        if (!at)
+            continue;
+        const double size = m.size * view.lineScale;
+        std::vector<Vec2d> corners;
+        if (m.shape == Marker::Shape::Dot) {
+            for (int k = 0; k < 16; ++k)
+                corners.push_back(*at + size * Vec2d(std::cos(k * M_PI / 8), std::sin(k * M_PI / 8)));
+        } else {
+            const std::optional<Vec2d> from = pixel(m.from);
+            if (!from || (*at - *from).norm() < 1e-9)
+                continue; // seen head on: no direction to point in
+            const Vec2d along = (*at - *from).normalized(), across(-along.y(), along.x());
+            corners = {*at, *at - 3 * size * along + 1.1 * size * across, *at - 3 * size * along - 1.1 * size * across};
+        }
+        shapes.push_back({m.element, true, 1, 0, std::move(corners), -std::numeric_limits<double>::infinity()});
+    }
+    return shapes;
+}
+
+namespace {
+
+LabelObstacles labelObstacles(const StageShown& stage, const FigureView& view, const std::vector<Marker>& markers)
+{
+    LabelObstacles obstacles;
+    for (FigureShape& marker : markerShapes(stage, view, markers))
+        obstacles.objects.push_back(std::move(marker.points));
+    for (const Primitive& p : stage.scene->primitives) {
+        if (!stage.draws(p))
+            continue;
+        const Mat4<double>& m = stage.matrixOf(p);
+        if (p.kind == PrimitiveKind::Lines) {
+            for (std::size_t k = 0; k + 1 < p.segments.size(); k += 2) {
+                const std::vector<Vec3d> line = throughView(stage, view, m, {p.segments[k], p.segments[k + 1]}, false, !p.canonical);
+                if (line.size() == 2)
+                    obstacles.lines.push_back({line[0].head<2>(), line[1].head<2>()});
+            }
+        } else if (p.element == Element::Objects && p.object >= 0) {
+            std::vector<Vec2d> outline;
+            auto add = [&](const Vec3d& world) {
+                if (stage.shows(world))
+                    if (const auto q = projectPoint(m, world))
+                        if (const auto px = view.pixel(*q))
+                            outline.push_back(px->head<2>());
+            };
+            if (p.faces->vertices.size() > kExactOutline) {
+                for (int c = 0; c < 8; ++c)
+                    add(p.bounds.corner(Eigen::AlignedBox<double, 3>::CornerType(c)));
+            } else {
+                for (const Vec3d& v : p.faces->vertices)
+                    add(v);
+            }
+            obstacles.objects.push_back(convexHull(std::move(outline)));
+        }
+    }
+    if (view.frameReach > 0) {
+        const std::vector<Vec3d> axes = frameAxes(view.frameReach);
+        for (std::size_t k = 0; k < axes.size(); k += 2) {
+            const auto a = view.pixel(axes[k]), b = view.pixel(axes[k + 1]);
+            if (a && b)
+                obstacles.lines.push_back({a->head<2>(), b->head<2>()});
+        }
+    }
+    return obstacles;
+}
+
+} // namespace
+
+std::vector<std::optional<PlacedLabel>> placeSceneLabels(const StageShown& stage, const FigureView& view,
+                                                         const std::vector<const Label*>& labels,
+                                                         const std::vector<Marker>& markers,
+                                                         const TextMeasure& measure,
+                                                         const std::vector<Box2>& reserved)
+{
+    std::vector<LabelRequest> requests;
+    std::vector<std::size_t> from; // each request's label
+    const Box2 picture{Vec2d::Zero(), Vec2d(view.width, view.height)};
+    for (std::size_t k = 0; k < labels.size(); ++k) {
+        const Label& label = *labels[k];
+        if (!stage.shows(label.anchor))
+            continue;
+        const auto q = projectPoint(stage.cumulative, label.anchor);
+        const auto px = q ? view.pixel(*q) : std::nullopt;
+        if (!px || !picture.contains(Box2{px->head<2>(), px->head<2>()}))
+            continue;
+        requests.push_back({label.element, label.text, px->head<2>(), measure(label.text)});
+        from.push_back(k);
+    }
+    LabelObstacles obstacles = labelObstacles(stage, view, markers);
+    obstacles.reserved.insert(obstacles.reserved.end(), reserved.begin(), reserved.end());
+    std::vector<std::optional<PlacedLabel>> placed = placeLabels(requests, obstacles, view.width, view.height);
+    std::vector<std::optional<PlacedLabel>> result(labels.size());
+    for (std::size_t k = 0; k < placed.size(); ++k)
+        result[from[k]] = std::move(placed[k]);
+    return result;
+}
+
+Figure drawFigure(const StageShown& stage, const FigureView& view, const TextMeasure& measure,
+                  const std::vector<Box2>& reserved)
+{
+    Figure figure;
+    figure.width = view.width;
+    figure.height = view.height;
+    figure.fontSize = view.fontSize;
+    figure.lineScale = view.lineScale;
+    auto add = [&](Element element, bool surface, double opacity, const std::vector<Vec3d>& pixels) {
+        if (pixels.size() < (surface ? 3u : 2u))
+            return;
+        figure.shapes.push_back({element, surface, opacity, view.lineScale * lineWidthOf(element, surface),
+                                 flat(pixels), meanDepth(pixels)});
+    };
+    for (const Primitive& p : stage.scene->primitives) {
+        if (!stage.draws(p))
+            continue;
+        const Mat4<double>& m = stage.matrixOf(p);
+        const double opacity = p.canonical ? stage.canonicalOpacity : p.opacity;
+        if (p.kind == PrimitiveKind::Lines) {
+            for (std::size_t k = 0; k + 1 < p.segments.size(); k += 2)
+                add(p.element, false, opacity, throughView(stage, view, m, {p.segments[k], p.segments[k + 1]}, false, !p.canonical));
+            continue;
+        }
+        std::vector<Vec3d> corners;
+        for (const std::vector<int>& face : p.faces->faces) {
+            corners.clear();
+            for (int v : face)
+                corners.push_back(p.faces->vertices[std::size_t(v)]);
+            add(p.element, true, opacity, throughView(stage, view, m, corners, true, !p.canonical));
+        }
+    }
+    if (view.frameReach > 0) {
+        const std::vector<Vec3d> axes = frameAxes(view.frameReach);
+        static const Mat4<double> identity = Mat4<double>::Identity();
+        for (std::size_t k = 0; k < axes.size(); k += 2) {
+            add(Element::Frame, false, 1, throughView(stage, view, identity, {axes[k], axes[k + 1]}, false, false));
+            if (!figure.shapes.empty() && figure.shapes.back().element == Element::Frame)
+                figure.shapes.back().depth = std::numeric_limits<double>::infinity(); // behind all: the world axes lie on them at first
+        }
+    }
+    // Back to front; at equal depth lines over faces.
+    std::stable_sort(figure.shapes.begin(), figure.shapes.end(), [](const FigureShape& a, const FigureShape& b) {
+        return a.depth > b.depth || (a.depth == b.depth && a.surface && !b.surface);
+    });
+    const std::vector<FigureShape> markers = markerShapes(stage, view, stage.scene->markers);
+    figure.shapes.insert(figure.shapes.end(), markers.begin(), markers.end()); // over everything
+    std::vector<const Label*> labels;
+    for (const Label& label : stage.scene->labels)
+        labels.push_back(&label);
+    for (auto& placed : placeSceneLabels(stage, view, labels, stage.scene->markers, measure, reserved))
+        if (placed)
+            figure.labels.push_back(std::move(*placed));
+    return figure;
+}
+
+} // namespace viewpipe

@@ -1,0 +1,199 @@
+// The flat figures in process: the one label placement step (no overlaps,
+// inside the picture, clear of reserved boxes and lines), the figures of
+// every built-in scene at every stage, and the TikZ writer.
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <filesystem>
+#include <random>
+#include <regex>
+
+#include "viewpipe/animation.hpp"
+#include "viewpipe/report/figure.hpp"
+#include "viewpipe/report/tikz.hpp"
+
+namespace viewpipe {
+namespace {
+
+namespace fs = std::filesystem;
+
+// Text as wide as 0.6 of the font size a character, one font size high.
+Vec2<double> measure(const std::string& text)
+{
+    return {0.6 * 20 * double(text.size()), 20};
+}
+
+bool inside(const Box2& box, int width, int height)
+{
+    return box.min.x() >= 0 && box.min.y() >= 0 && box.max.x() <= width && box.max.y() <= height;
+}
+
+// A camera like the app's world view: from (1.7, 0.9, 1), 30 degrees, on everything the stage shows.
+FigureView viewOf(const StageShown& stage)
+{
+    Eigen::AlignedBox<double, 3> box;
+    for (const Primitive& p : stage.scene->primitives) {
+        if (!stage.draws(p))
+            continue;
+        const auto& points = p.kind == PrimitiveKind::Lines ? p.segments : p.faces->vertices;
+        for (const Vec3<double>& world : points)
+            if (stage.shows(world) || p.canonical)
+                if (const auto q = projectPoint(stage.matrixOf(p), world))
+                    box.extend(*q);
+    }
+    const double radius = std::max(1e-9, 0.5 * box.diagonal().norm());
+    const double distance = 0.95 * radius / std::sin(15 * M_PI / 180);
+    const Vec3<double> center = box.center(), direction = Vec3<double>(1.7, 0.9, 1).normalized();
+    const gl::Camera<double> camera{{center + distance * direction, center, {0, 1, 0}},
+                                    gl::Perspective<double>{30, 1280.0 / 720, 0.5 * distance, 3 * distance}};
+    FigureView view;
+    view.camera = buildPipeline(CameraSpec<double>{camera}).composite;
+    view.frameReach = center.norm() + 1.5 * radius;
+    return view;
+}
+
+TEST(LabelPlacement, AloneItSitsBesideItsAnchor)
+{
+    const auto placed = placeLabels({{Element::Prp, "PRP", {400, 300}, {40, 20}}}, {}, 800, 600);
+    ASSERT_TRUE(placed[0]);
+    EXPECT_FALSE(placed[0]->leader);
+    const Box2& box = placed[0]->box;
+    EXPECT_NEAR(box.min.x(), 400 + 4 / std::sqrt(2.0), 1e-9); // up and to the right: the first choice
+    EXPECT_NEAR(box.max.y(), 300 - 4 / std::sqrt(2.0), 1e-9);
+}
+
+TEST(LabelPlacement, KeepsOffLinesWhereItCan)
+{
+    // Lines through the anchor to the right and upwards: the label goes to the lower left.
+    LabelObstacles obstacles;
+    obstacles.lines = {{Vec2<double>(400, 300), Vec2<double>(800, 300)}, {Vec2<double>(400, 300), Vec2<double>(400, 0)},
+                       {Vec2<double>(400, 300), Vec2<double>(800, 600)}};
+    const auto placed = placeLabels({{Element::Dop, "DOP", {400, 300}, {40, 20}}}, obstacles, 800, 600);
+    ASSERT_TRUE(placed[0]);
+    for (const Segment2& line : obstacles.lines)
+        for (double t = 0; t <= 1; t += 0.01) {
+            const Vec2<double> p = line[0] + t * (line[1] - line[0]);
+            EXPECT_FALSE(p.x() > placed[0]->box.min.x() && p.x() < placed[0]->box.max.x() &&
+                         p.y() > placed[0]->box.min.y() && p.y() < placed[0]->box.max.y());
+        }
+}
+
+TEST(LabelPlacement, CrowdedLabelsNeverOverlapAndStayInside)
+{
+    std::mt19937 random(7);
+    std::uniform_real_distribution<double> x(0, 800), y(0, 600);
+    std::vector<LabelRequest> requests;
+    for (int k = 0; k < 40; ++k) // all in one corner: most must move away
+        requests.push_back({Element::Volume, "label " + std::to_string(k), {x(random) / 4, y(random) / 4}, {70, 18}});
+    LabelObstacles obstacles;
+    obstacles.reserved = {{Vec2<double>(0, 0), Vec2<double>(300, 40)}}; // a title
+    for (int k = 0; k < 50; ++k)
+        obstacles.lines.push_back({Vec2<double>(x(random), y(random)), Vec2<double>(x(random), y(random))});
+    const auto placed = placeLabels(requests, obstacles, 800, 600);
+    std::vector<PlacedLabel> all;
+    for (const auto& p : placed)
+        if (p) {
+            EXPECT_TRUE(inside(p->box, 800, 600));
+            EXPECT_FALSE(p->box.overlaps(obstacles.reserved[0]));
+            all.push_back(*p);
+        }
+    EXPECT_EQ(all.size(), requests.size()); // there is room for all of them
+    EXPECT_EQ(labelOverlaps(all), 0);
+    EXPECT_GT(std::count_if(all.begin(), all.end(), [](const PlacedLabel& p) { return p.leader; }), 10);
+}
+
+TEST(LabelPlacement, NoRoomLeavesTheLabelOut)
+{
+    const auto placed = placeLabels({{Element::Prp, "PRP", {50, 50}, {40, 20}}, {Element::Dop, "DOP", {50, 50}, {40, 20}}},
+                                    {}, 60, 40);
+    EXPECT_TRUE(placed[0]);
+    EXPECT_FALSE(placed[1]);
+}
+
+// Every built-in scene at every stage: labels inside the picture, clear of
+// the title and of each other; shapes finite and back to front.
+TEST(Figure, EveryBuiltInSceneAtEveryStageHasNoOverlappingLabels)
+{
+    int figures = 0;
+    std::size_t labels = 0;
+    const Box2 title{Vec2<double>(25, 28), Vec2<double>(700, 52)};
+    for (const auto& entry : fs::recursive_directory_iterator(fs::path(VIEWPIPE_DATA_DIR) / "scenes")) {
+        if (entry.path().extension() != ".json")
+            continue;
+        const auto scene = evaluateScene(loadScene(entry.path()));
+        const auto& stages = scene->pipeline.stages;
+        for (std::size_t k = 0; k <= stages.size(); ++k) {
+            SCOPED_TRACE(entry.path().filename().string() + " stage " + std::to_string(k));
+            const StageShown stage(*scene, drawnAt(stages, double(k)), k == stages.size() ? 1 : 0);
+            const Figure figure = drawFigure(stage, viewOf(stage), measure, {title});
+            EXPECT_EQ(labelOverlaps(figure.labels), 0);
+            for (const PlacedLabel& label : figure.labels) {
+                EXPECT_TRUE(inside(label.box, 1280, 720)) << label.text;
+                EXPECT_FALSE(label.box.overlaps(title)) << label.text;
+            }
+            double last = std::numeric_limits<double>::infinity();
+            for (const FigureShape& shape : figure.shapes) {
+                for (const Vec2<double>& p : shape.points)
+                    ASSERT_TRUE(p.allFinite());
+                EXPECT_LE(shape.depth, last);
+                last = shape.depth;
+            }
+            labels += figure.labels.size();
+            ++figures;
+        }
+    }
+    EXPECT_GT(figures, 100);
+    EXPECT_GT(labels, 8u * std::size_t(figures));
+}
+
+// The house at the world stage: a label's anchor is where the camera sees its point.
+TEST(Figure, LabelsAnchorWhereTheirPointsAreSeen)
+{
+    const auto scene = evaluateScene(loadScene(fs::path(VIEWPIPE_DATA_DIR) / "scenes/house.json"));
+    const StageShown stage(*scene, Mat4<double>::Identity(), 0);
+    const FigureView view = viewOf(stage);
+    const Figure figure = drawFigure(stage, view, measure, {});
+    const auto prp = std::find_if(figure.labels.begin(), figure.labels.end(),
+                                  [](const PlacedLabel& l) { return l.text == "PRP"; });
+    ASSERT_NE(prp, figure.labels.end());
+    EXPECT_LE((prp->anchor - view.pixel(Vec3<double>(8, 6, 84))->head<2>()).norm(), 1e-9);
+    // The PRP's dot is drawn around it, over everything else.
+    const FigureShape& dot = *std::find_if(figure.shapes.begin(), figure.shapes.end(),
+                                           [](const FigureShape& s) { return s.element == Element::Prp; });
+    EXPECT_EQ(dot.points.size(), 16u);
+    EXPECT_NEAR((dot.points[0] - prp->anchor).norm(), 7, 1e-9);
+}
+
+TEST(Tikz, LabelsInTheirUsualNotation)
+{
+    EXPECT_EQ(texLabel("PRP"), "$\\mathrm{PRP}$");
+    EXPECT_EQ(texLabel("n"), "$n$");
+    EXPECT_EQ(texLabel("front (F)"), "front ($F$)");
+    EXPECT_EQ(texLabel("far at infinity (volume cut)"), "far at infinity (volume cut)");
+    EXPECT_EQ(texLabel("50% & more_"), "50\\% \\& more\\_");
+}
+
+TEST(Tikz, OneCommandPerShapeAndLabelWithNamedStyles)
+{
+    const auto scene = evaluateScene(loadScene(fs::path(VIEWPIPE_DATA_DIR) / "scenes/house.json"));
+    const StageShown stage(*scene, Mat4<double>::Identity(), 0);
+    const Figure figure = drawFigure(stage, viewOf(stage), measure, {});
+    const std::string tex = tikzFigure(figure, Theme::Light);
+    auto count = [&](const std::string& pattern) {
+        const std::regex re(pattern);
+        return std::size_t(std::distance(std::sregex_iterator(tex.begin(), tex.end(), re), std::sregex_iterator()));
+    };
+    EXPECT_EQ(count("\n\\\\(fill|draw)\\[vp (?!leader)[A-Za-z]+( face)?[\\],]"), figure.shapes.size());
+    EXPECT_EQ(count("\n\\\\node\\[vp [A-Za-z]+ label\\]"), figure.labels.size());
+    EXPECT_NE(tex.find("\\definecolor{vpDOP}"), std::string::npos);
+    EXPECT_NE(tex.find("vp DOP/.style={draw=vpDOP"), std::string::npos);
+    EXPECT_NE(tex.find("{$\\mathrm{PRP}$}"), std::string::npos);
+    EXPECT_NE(tex.find("\\documentclass[tikz,border=0pt]{standalone}"), std::string::npos);
+    const std::string all = tikzFiguresDocument({{"00-world-tikz", "0. World coordinates"}, {"01-t-vrp-tikz", "1. T(-VRP)"}});
+    EXPECT_NE(all.find("\\usepackage{standalone}"), std::string::npos);
+    EXPECT_NE(all.find("\\input{01-t-vrp-tikz}"), std::string::npos);
+}
+
+} // namespace
+} // namespace viewpipe
