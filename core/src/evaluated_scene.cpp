@@ -2,11 +2,14 @@
 
 #include <algorithm>
 #include <cmath>
+#include <functional>
 #include <limits>
 #include <sstream>
 #include <system_error>
 
+#include "viewpipe/animation.hpp"
 #include "viewpipe/classical.hpp"
+#include "viewpipe/format.hpp"
 #include "viewpipe/mesh_io.hpp"
 
 namespace viewpipe {
@@ -60,10 +63,10 @@ public:
 
     void marker(const Marker& marker) { out_.markers.push_back(marker); }
 
-    void label(Element element, const std::string& text, const Vec3<double>& anchor)
+    void label(Element element, const std::string& text, const Vec3<double>& anchor, bool fixed = false)
     {
         if (!text.empty())
-            out_.labels.push_back({element, text, anchor});
+            out_.labels.push_back({element, text, anchor, fixed});
     }
 
 private:
@@ -370,6 +373,31 @@ ObjectsShown addObjects(Builder& add, const EvaluatedScene& out)
     return shown;
 }
 
+// The canonical volume's planes, named on their faces: x = -z ... z = z_min for
+// Foley's perspective volume, x = 1 ... z = 0 for its parallel one, and the
+// cube of normalized device coordinates for OpenGL.
+void addCanonicalLabels(Builder& add, const Pipeline<double>& pipeline, const ViewSetup<double>& setup)
+{
+    const bool foley = pipeline.convention == Convention::Foley;
+    const bool perspective = foley && setup.perspective;
+    const auto& c = setup.canonical; // the front face, then the back one, each from (-x, -y) counter-clockwise
+    auto center = [&](std::initializer_list<std::size_t> corners) {
+        Vec3<double> sum = Vec3<double>::Zero();
+        for (std::size_t k : corners)
+            sum += c[k];
+        return Vec3<double>(sum / double(corners.size()));
+    };
+    const std::vector<std::pair<std::string, Vec3<double>>> planes = {
+        {perspective ? "x = -z" : "x = 1", center({1, 2, 5, 6})},
+        {perspective ? "x = z" : "x = -1", center({0, 3, 4, 7})},
+        {perspective ? "y = -z" : "y = 1", center({2, 3, 6, 7})},
+        {perspective ? "y = z" : "y = -1", center({0, 1, 4, 5})},
+        {perspective ? "z = z_min" : foley ? "z = 0" : "z = -1 (near)", center({0, 1, 2, 3})},
+        {foley ? "z = -1" : "z = 1 (far)", center({4, 5, 6, 7})}};
+    for (const auto& [text, anchor] : planes)
+        add.label(Element::Canonical, text, anchor, true);
+}
+
 // The viewing set-up: the world and view axes, VRP, PRP, the window and CW,
 // the DOP, the view volume with its planes, the projectors, the canonical volume.
 void addSetUp(Builder& add, const EvaluatedScene& out, bool farCut)
@@ -436,6 +464,7 @@ void addSetUp(Builder& add, const EvaluatedScene& out, bool farCut)
     }
     add.lines(Element::Projectors, projectors, 0.7);
     add.lines(Element::Canonical, boxEdges(setup.canonical), 1.0).canonical = true; // drawn where it is
+    addCanonicalLabels(add, out.pipeline, setup);
 }
 
 // The legends name what this scene shows, each view its own.
@@ -474,6 +503,100 @@ void fillLegends(EvaluatedScene& out, const ObjectsShown& shown, bool farCut)
     projected.insert(projected.end(), effectEntries.begin(), effectEntries.end());
     if (out.outcomes.raster)
         projected.push_back({"raster pixels, a color per object", Element::Objects, Swatch::Pixels});
+}
+
+// A fact about the set-up that a stage may make true, checked on the images of its points.
+struct Fact {
+    std::string text;
+    std::function<bool(const std::function<std::optional<Vec3<double>>(const Vec3<double>&)>&)> holds;
+};
+
+std::vector<std::string> stageClaims(const Pipeline<double>& pipeline, const ViewSetup<double>& s)
+{
+    using Image = std::function<std::optional<Vec3<double>>(const Vec3<double>&)>;
+    using V = Vec3<double>;
+    const bool foley = pipeline.convention == Convention::Foley;
+    // Equal to within 1e-9 of the volume's size at that stage (or of 1).
+    double scale = 1;
+    auto same = [&](double a, double b) { return std::abs(a - b) <= 1e-9 * scale; };
+    auto corners = [&](const Image& image, const std::function<bool(const V&, std::size_t)>& each) {
+        for (std::size_t k = 0; k < 8; ++k) {
+            const std::optional<V> c = image(s.volume[k]);
+            if (!c || !each(*c, k))
+                return false;
+        }
+        return true;
+    };
+    auto atOrigin = [&](const V& p) {
+        return [&, p](const Image& image) {
+            const std::optional<V> q = image(p);
+            return q && same(q->norm(), 0);
+        };
+    };
+    std::vector<Fact> facts = {{foley ? "VRP at the origin" : "eye at the origin", atOrigin(s.origin)}};
+    if (foley && s.perspective)
+        facts.push_back({"PRP at the origin", atOrigin(s.prp)});
+    facts.push_back({foley ? "u, v, n along x, y, z" : "s, u, -f along x, y, -z: the eye looks down -z",
+                     [&](const Image& image) {
+                         const std::optional<V> o = image(s.origin);
+                         for (int k = 0; k < 3 && o; ++k) {
+                             const std::optional<V> tip = image(s.origin + s.axes.rotation().row(k).transpose());
+                             if (!tip || !same(((*tip - *o).normalized() - V::Unit(k)).norm(), 0))
+                                 return false;
+                         }
+                         return o.has_value();
+                     }});
+    facts.push_back({"DOP along the z axis", [&](const Image& image) {
+                         const std::optional<V> from = image(s.prp), to = image(s.windowCenter);
+                         return from && to && same(from->x(), to->x()) && same(from->y(), to->y()) &&
+                                !same(from->z(), to->z());
+                     }});
+    if (s.perspective)
+        facts.push_back({"sides on x = \u00b1z, y = \u00b1z", [&](const Image& image) {
+                             return corners(image, [&](const V& c, std::size_t) {
+                                 return same(std::abs(c.x()), std::abs(c.z())) && same(std::abs(c.y()), std::abs(c.z()));
+                             });
+                         }});
+    if (s.perspective && foley && pipeline.zmin)
+        facts.push_back({"back at z = -1, front at z_min = " + formatSignificant(*pipeline.zmin, 3),
+                         [&](const Image& image) {
+                             return corners(image, [&](const V& c, std::size_t k) {
+                                 return same(c.z(), k < 4 ? *pipeline.zmin : -1.0);
+                             });
+                         }});
+    if (!s.perspective && foley)
+        facts.push_back({"the volume is -1 \u2264 x, y \u2264 1, -1 \u2264 z \u2264 0", [&](const Image& image) {
+                             return corners(image, [&](const V& c, std::size_t k) {
+                                 return same(std::abs(c.x()), 1) && same(std::abs(c.y()), 1) && same(c.z(), k < 4 ? 0 : -1);
+                             });
+                         }});
+    if (!foley)
+        facts.push_back({"the volume is the cube -1 \u2264 x, y, z \u2264 1: near at z = -1, far at z = 1",
+                         [&](const Image& image) {
+                             return corners(image, [&](const V& c, std::size_t k) {
+                                 return same(std::abs(c.x()), 1) && same(std::abs(c.y()), 1) && same(c.z(), k < 4 ? -1 : 1);
+                             });
+                         }});
+
+    std::vector<std::string> claims(pipeline.stages.size() + 1);
+    std::vector<bool> before(facts.size());
+    for (std::size_t k = 0; k <= pipeline.stages.size(); ++k) {
+        const Mat4<double> m = drawnAt(pipeline.stages, double(k));
+        const Image image = [&](const V& p) { return projectPoint(m, p); };
+        scale = 1;
+        for (const V& c : s.volume)
+            if (const std::optional<V> q = image(c))
+                scale = std::max(scale, q->cwiseAbs().maxCoeff());
+        for (std::size_t f = 0; f < facts.size(); ++f) {
+            const bool now = facts[f].holds(image);
+            if (now && !before[f] && k > 0)
+                claims[k] += (claims[k].empty() ? "" : "; ") + facts[f].text;
+            before[f] = now;
+        }
+        if (k > 0 && claims[k].empty() && !pipeline.stages[k - 1].divides && pipeline.stages[k - 1].matrix.isIdentity(0))
+            claims[k] = "the identity here: nothing moves";
+    }
+    return claims;
 }
 
 std::shared_ptr<const EvaluatedScene> evaluate(const Scene& scene, MeshCache* cache)
@@ -523,6 +646,7 @@ std::shared_ptr<const EvaluatedScene> evaluate(const Scene& scene, MeshCache* ca
     out.zFightingRing = ringAround(shown.fighting, out.pipeline.clipMatrix());
     out.effectsNote = describeEffects(scene.effects, out.outcomes, out.pipeline, out.bands);
     fillLegends(out, shown, farCut);
+    out.stageClaims = stageClaims(out.pipeline, out.setup);
     return evaluated;
 }
 
@@ -584,6 +708,15 @@ std::shared_ptr<const EvaluatedScene> SceneEvaluator::evaluate(const Scene& scen
 std::shared_ptr<const EvaluatedScene> evaluateScene(const Scene& scene)
 {
     return evaluate(scene, nullptr);
+}
+
+std::string stageCaption(const EvaluatedScene& scene, std::size_t k, StageText text)
+{
+    const auto& stages = scene.pipeline.stages;
+    std::string note = k < scene.stageClaims.size() ? scene.stageClaims[k] : "";
+    if (k > 0 && framedTogether(stages, int(k)).first == int(k))
+        note += std::string(note.empty() ? "" : " ") + "(framed anew: this stage changes sizes)";
+    return stageText(stages, k, text) + (note.empty() ? "" : "\n" + note);
 }
 
 std::optional<Vec3<double>> projectPoint(const Mat4<double>& m, const Vec3<double>& p)

@@ -647,7 +647,7 @@ void MainWindow::showRestingStage()
 
 void MainWindow::updateCaptions()
 {
-    painter_->setCaptions(stageText(document_->pipeline().stages, std::size_t(stage_), StageText::Caption),
+    painter_->setCaptions(stageCaption(*document_->evaluated(), std::size_t(stage_), StageText::Caption),
                           tr("What the camera sees").toStdString());
 }
 

@@ -268,13 +268,10 @@ std::vector<fs::path> exportStages(const std::shared_ptr<const EvaluatedScene>& 
             framing = painter.framingOf(all, true);
         }
 
-        auto showAt = [&](double position, const std::string& caption) {
-            painter.show(drawnAt(stages, position), StageTransition::canonicalOpacity(position, stages.size()));
+        auto showAt = [&](int k, const std::string& caption) {
+            painter.show(drawnAt(stages, k), StageTransition::canonicalOpacity(k, stages.size()));
             painter.setCaptions(caption, "");
-            if (options.fixedFraming)
-                painter.frameOn(framing);
-            else
-                painter.frame();
+            painter.frameOn(options.fixedFraming ? framing : StageTransition::framingAt(painter, stages, k));
             window->Render();
         };
 
@@ -282,7 +279,7 @@ std::vector<fs::path> exportStages(const std::shared_ptr<const EvaluatedScene>& 
         for (int k : chosen) {
             const std::string base = (k < 10 ? "0" : "") + std::to_string(k) + "-" +
                                      (k == 0 ? std::string("world") : slug(stages[std::size_t(k - 1)].symbol));
-            const std::string caption = stageText(stages, std::size_t(k), StageText::Heading);
+            const std::string caption = stageCaption(*evaluated, std::size_t(k), StageText::Heading);
             showAt(k, caption);
             const StageShown shown(*evaluated, drawnAt(stages, k),
                                    StageTransition::canonicalOpacity(k, stages.size()));
@@ -318,22 +315,28 @@ std::vector<fs::path> exportStages(const std::shared_ptr<const EvaluatedScene>& 
             const fs::path frames = temporary / "frames";
             fs::create_directories(frames);
             int frame = 0;
-            auto emit = [&](double position, const std::string& caption) {
+            auto emit = [&] {
                 char name[32];
                 std::snprintf(name, sizeof name, "%05d.png", frame++);
                 step("frame " + std::to_string(frame) + " of " + std::to_string(frameCount));
-                showAt(position, caption);
+                if (options.fixedFraming)
+                    painter.frameOn(framing);
+                window->Render();
                 writeWindowPng(window, false, frames / name);
             };
             for (int k = 0; k <= n; ++k) {
-                const std::string caption = stageText(stages, std::size_t(k), StageText::Heading);
-                if (k > 0)
+                const std::string caption = stageCaption(*evaluated, std::size_t(k), StageText::Heading);
+                painter.setCaptions(caption, "");
+                if (k > 0) { // the app's transition: the same motion and framing
+                    StageTransition transition(painter, stages, k - 1, k);
                     for (int f = 1; f <= options.fps; ++f) {
-                        const double u = double(f) / options.fps;
-                        emit(k - 1 + StageTransition::smooth(u), caption);
+                        transition.apply(double(f) / options.fps);
+                        emit();
                     }
+                }
+                showAt(k, caption);
                 for (int f = 0; f < hold; ++f)
-                    emit(k, caption);
+                    emit();
             }
             // H.264 in MP4 with yuv420p plays in browsers and in slide software.
             const int status = runProgram({"ffmpeg", "-hide_banner", "-loglevel", "error", "-y", "-framerate",

@@ -1,5 +1,7 @@
 #include "VectorFigure.h"
 
+#include "painter/VtkGeometry.h"
+
 #include <QBuffer>
 #include <QFont>
 #include <QFontMetricsF>
@@ -40,10 +42,21 @@ QFont font(double pixels, bool bold)
     return f;
 }
 
-// Where the PNG's painter puts them: the caption at the top left, the legend at the top right.
+// The legend's text is two thirds of the caption's size, as in the PNG.
+double legendSize(double fontSize)
+{
+    return std::max(8.0, std::floor(fontSize * 2 / 3));
+}
+
+// The effects' note is three quarters of the caption's size, as in the PNG.
+double noteSize(double fontSize)
+{
+    return std::max(8.0, fontSize * 3 / 4);
+}
+
+// The legend's entries and sizes, and where the caption, the legend and the note go: as in the PNG.
 struct Layout {
-    QPointF captionAt;
-    Box2 caption, legend;
+    PictureLayout picture;
     std::vector<const LegendEntry*> entries;
     double rowHeight = 0, swatchWidth = 0, padding = 0;
 };
@@ -52,26 +65,27 @@ Layout layoutOf(const VectorFigure& f)
 {
     Layout layout;
     const FigureView& v = f.view;
-    const QFontMetricsF title(font(v.fontSize, true));
-    layout.captionAt = QPointF(0.02 * v.width, 0.04 * v.height);
-    layout.caption = {Vec2<double>(layout.captionAt.x(), layout.captionAt.y()),
-                      Vec2<double>(layout.captionAt.x() + title.horizontalAdvance(QString::fromStdString(f.caption)),
-                                   layout.captionAt.y() + title.height())};
     for (const LegendEntry& entry : f.stage->scene->worldLegend)
         if (entry.element != Element::Canonical || f.stage->canonicalOpacity > 0)
             layout.entries.push_back(&entry);
-    const QFontMetricsF small(font(std::max(8.0, v.fontSize * 2 / 3), false));
-    double textWidth = 0;
-    for (const LegendEntry* entry : layout.entries)
-        textWidth = std::max(textWidth, small.horizontalAdvance(QString::fromStdString(entry->text)));
-    layout.rowHeight = std::ceil(1.3 * small.height());
-    layout.swatchWidth = 3 * small.height();
-    layout.padding = std::max(3.0, v.fontSize / 4);
-    const double width = textWidth + layout.swatchWidth + 3 * layout.padding;
-    const double height = double(layout.entries.size()) * layout.rowHeight + 2 * layout.padding;
-    const double margin = std::max(4.0, v.fontSize / 2);
-    const double top = 0.04 * v.height + 1.6 * v.fontSize;
-    layout.legend = {Vec2<double>(v.width - margin - width, top), Vec2<double>(v.width - margin, top + height)};
+    // Sized as the PNG's legend (gui/painter/Legend.cpp) sizes itself.
+    double textWidth = 0, textHeight = 0;
+    for (const LegendEntry* entry : layout.entries) {
+        const Vec2<double> size = figureTextSize(entry->text, legendSize(v.fontSize), false);
+        textWidth = std::max(textWidth, size.x());
+        textHeight = std::max(textHeight, size.y());
+    }
+    layout.rowHeight = std::ceil(1.3 * textHeight);
+    layout.swatchWidth = 3 * textHeight;
+    layout.padding = std::max(3, int(v.fontSize) / 4);
+    const Vec2<double> legend = layout.entries.empty()
+                                    ? Vec2<double>::Zero()
+                                    : Vec2<double>(textWidth + layout.swatchWidth + 2 * layout.padding + 2,
+                                                   double(layout.entries.size()) * layout.rowHeight + 2 * layout.padding);
+    layout.picture = layoutPicture(
+        v.width, v.height, v.fontSize, legend, f.caption,
+        [&](const std::string& t) { return figureTextSize(t, v.fontSize, true); }, f.stage->scene->effectsNote,
+        [&](const std::string& t) { return figureTextSize(t, noteSize(v.fontSize), false); });
     return layout;
 }
 
@@ -79,12 +93,12 @@ void drawLegend(QPainter& painter, const Layout& layout, const VectorFigure& f)
 {
     if (layout.entries.empty())
         return;
-    const Box2& box = layout.legend;
+    const Box2& box = layout.picture.legend;
     const QRectF frame(box.min.x(), box.min.y(), box.max.x() - box.min.x(), box.max.y() - box.min.y());
     painter.setPen(QPen(qtColor(elementColor(Element::Frame, f.theme)), 1));
     painter.setBrush(qtColor(backgroundColor(f.theme, false), 0.85));
     painter.drawRect(frame);
-    painter.setFont(font(std::max(8.0, f.view.fontSize * 2 / 3), false));
+    painter.setFont(font(legendSize(f.view.fontSize), false));
     const double h = layout.rowHeight;
     for (std::size_t k = 0; k < layout.entries.size(); ++k) {
         const LegendEntry& entry = *layout.entries[k];
@@ -137,10 +151,10 @@ void paint(QPainter& painter, const Figure& figure, const Layout& layout, const 
             painter.drawPolyline(polygon);
         }
     }
-    const QFont labelFont = font(f.view.fontSize, true);
-    painter.setFont(labelFont);
-    const QFontMetricsF metrics(labelFont);
+    const QFont labelFont = font(f.view.fontSize, true), minorFont = font(noteSize(f.view.fontSize), false);
     for (const PlacedLabel& l : figure.labels) {
+        painter.setFont(l.minor ? minorFont : labelFont);
+        const QFontMetricsF metrics(painter.font());
         const QColor c = qtColor(elementColor(l.element, f.theme));
         if (l.leader) {
             const Vec2<double> end = l.anchor.cwiseMax(l.box.min).cwiseMin(l.box.max);
@@ -148,12 +162,26 @@ void paint(QPainter& painter, const Figure& figure, const Layout& layout, const 
             painter.drawLine(QPointF(l.anchor.x(), l.anchor.y()), QPointF(end.x(), end.y()));
         }
         painter.setPen(c);
-        painter.drawText(QPointF(l.box.min.x(), l.box.min.y() + metrics.ascent()), QString::fromStdString(l.text));
+        // The box is the text's from the lowest descender up, as VTK measures it.
+        painter.drawText(QPointF(l.box.min.x(), l.box.max.y() - metrics.descent()), QString::fromStdString(l.text));
     }
     painter.setPen(qtColor(elementColor(Element::Objects, f.theme)));
-    painter.setFont(font(f.view.fontSize, true));
-    painter.drawText(QPointF(layout.captionAt.x(), layout.captionAt.y() + QFontMetricsF(painter.font()).ascent()),
-                     QString::fromStdString(f.caption));
+    auto drawLines = [&](const std::vector<std::string>& lines, const QFont& qfont, const Box2& box, double line) {
+        if (lines.empty())
+            return;
+        // On the background, as in the PNG: lines behind do not cross the text.
+        painter.fillRect(QRectF(box.min.x(), box.min.y(), box.max.x() - box.min.x(), box.max.y() - box.min.y()),
+                         qtColor(backgroundColor(f.theme, false), 0.85));
+        painter.setFont(qfont);
+        const QFontMetricsF metrics(qfont);
+        // Lines as VTK sets them: each as high as it measures, 1.1 of that apart.
+        for (std::size_t k = 0; k < lines.size(); ++k)
+            painter.drawText(QPointF(box.min.x(), box.min.y() + (1 + 1.1 * double(k)) * line - metrics.descent()),
+                             QString::fromStdString(lines[k]));
+    };
+    const PictureLayout& p = layout.picture;
+    drawLines(p.captionLines, font(f.view.fontSize, true), p.caption, p.captionLine);
+    drawLines(p.noteLines, font(noteSize(f.view.fontSize), false), p.note, p.noteLine);
     drawLegend(painter, layout, f);
 }
 
@@ -163,13 +191,14 @@ Figure flatFigure(const VectorFigure& f)
 {
     ensureGuiApplication();
     const Layout layout = layoutOf(f);
-    const QFontMetricsF metrics(font(f.view.fontSize, true));
-    const TextMeasure measure = [&](const std::string& text) {
-        return Vec2<double>(metrics.horizontalAdvance(QString::fromStdString(text)), metrics.height());
+    // Measured as the PNG's painter measures them: both pictures place their labels alike.
+    const LabelMeasure measure = [&](const Label& label) {
+        return label.minor ? figureTextSize(label.text, noteSize(f.view.fontSize), false)
+                           : figureTextSize(label.text, f.view.fontSize, true);
     };
-    std::vector<Box2> reserved = {layout.caption};
+    std::vector<Box2> reserved = {layout.picture.caption, layout.picture.note};
     if (!layout.entries.empty())
-        reserved.push_back(layout.legend);
+        reserved.push_back(layout.picture.legend);
     return drawFigure(*f.stage, f.view, measure, reserved);
 }
 

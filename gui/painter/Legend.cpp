@@ -11,7 +11,6 @@
 #include <vtkRenderWindow.h>
 #include <vtkRenderer.h>
 #include <vtkTextProperty.h>
-#include <vtkTextRenderer.h>
 #include <vtkUnsignedCharArray.h>
 
 #include <algorithm>
@@ -130,10 +129,9 @@ void fillLegend(vtkLegendBoxActor* legend, vtkRenderer* renderer, const std::vec
             symbol = stripes({c}, entry.swatch == Swatch::Line ? 0.12 : 0.4);
         legend->SetEntrySymbol(int(k), symbol);
         legend->SetEntryString(int(k), entry.text.c_str());
-        int box[4];
-        vtkTextRenderer::GetInstance()->GetBoundingBox(text, entry.text, box, dpi);
-        textWidth = std::max(textWidth, box[1] - box[0] + 1);
-        textHeight = std::max(textHeight, box[3] - box[2] + 1);
+        const Vec2<double> size = textSize(text, entry.text, dpi);
+        textWidth = std::max(textWidth, int(size.x()));
+        textHeight = std::max(textHeight, int(size.y()));
     }
     // VTK fits the text to the box: a box made to the text's size keeps the
     // font size asked for. Symbols take kSymbolWidth times the text's height.

@@ -7,7 +7,6 @@
 #include <vtkCoordinate.h>
 #include <vtkPolyDataMapper2D.h>
 #include <vtkProperty2D.h>
-#include <vtkTextRenderer.h>
 #include <vtkUnsignedCharArray.h>
 #include <vtkCallbackCommand.h>
 #include <vtkCamera.h>
@@ -29,7 +28,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <sstream>
 
 #include "DepthColoring.h"
 #include "EigenVtk.h"
@@ -73,35 +71,6 @@ bool extendThrough(Eigen::AlignedBox<double, 3>& box, const Primitive& primitive
     }
     box.extend(through);
     return true;
-}
-
-// Text broken into lines at spaces so that each line is at most `width` pixels wide (a word longer stays whole).
-std::string wrapText(const std::string& text, vtkTextProperty* font, double width, int dpi)
-{
-    auto fits = [&](const std::string& line) {
-        int box[4] = {0, 0, 0, 0};
-        vtkTextRenderer::GetInstance()->GetBoundingBox(font, line, box, dpi);
-        return box[1] - box[0] + 1 <= width;
-    };
-    std::string wrapped;
-    std::istringstream lines(text);
-    for (std::string line; std::getline(lines, line);) {
-        std::string current;
-        std::istringstream words(line);
-        for (std::string word; words >> word;) {
-            const std::string longer = current.empty() ? word : current + " " + word;
-            if (current.empty() || fits(longer)) {
-                current = longer;
-            } else {
-                wrapped += current + "\n";
-                current = word;
-            }
-        }
-        wrapped += current + "\n";
-    }
-    if (!wrapped.empty())
-        wrapped.pop_back();
-    return wrapped;
 }
 
 // Lines in a view's pixels (y up), one color each.
@@ -220,7 +189,7 @@ void ScenePainter::addLayer(const Primitive& primitive, vtkSmartPointer<vtkPolyD
     layers_.push_back(layer);
 }
 
-void ScenePainter::addLabel(const viewpipe::Label& text)
+ScenePainter::Label ScenePainter::newLabel(const viewpipe::Label& text)
 {
     // Drawn over the picture where the placement step puts it (never hidden behind a face).
     Label label{&text, vtkSmartPointer<vtkTextActor>::New()};
@@ -230,8 +199,23 @@ void ScenePainter::addLabel(const viewpipe::Label& text)
     useFigureFont(label.actor->GetTextProperty(), true);
     label.actor->GetTextProperty()->SetJustificationToLeft();
     label.actor->GetTextProperty()->SetVerticalJustificationToBottom();
+    styleLabel(label);
     world_->AddActor2D(label.actor);
-    labels_.push_back(label);
+    return label;
+}
+
+void ScenePainter::addLabel(const viewpipe::Label& text)
+{
+    labels_.push_back(newLabel(text));
+}
+
+void ScenePainter::styleLabel(Label& label) const
+{
+    const Rgb c = elementColor(label.label->element, theme_);
+    vtkTextProperty* text = label.actor->GetTextProperty();
+    text->SetColor(c.r, c.g, c.b);
+    text->SetFontSize(label.label->minor ? std::max(8, fontSize_ * 3 / 4) : fontSize_);
+    text->SetBold(!label.label->minor);
 }
 
 void ScenePainter::setScene(std::shared_ptr<const EvaluatedScene> scene)
@@ -325,13 +309,27 @@ void ScenePainter::fitCaptions()
 {
     vtkRenderWindow* window = world_->GetRenderWindow();
     const int dpi = window ? window->GetDPI() : 72;
-    const double room = 0.96 * world_->GetSize()[0];
-    for (const auto& [caption, text] : {std::pair{worldCaption_.Get(), &worldCaptionText_},
-                                        std::pair{effectsCaption_.Get(), &effectsNote_}}) {
-        const std::string wrapped = wrapText(*text, caption->GetTextProperty(), room, dpi);
-        if (wrapped != (caption->GetInput() ? caption->GetInput() : ""))
-            caption->SetInput(wrapped.c_str());
+    const int* size = world_->GetSize();
+    const double* legendSize = legend_->GetPosition2Coordinate()->GetValue();
+    vtkTextProperty* captionFont = worldCaption_->GetTextProperty();
+    vtkTextProperty* noteFont = effectsCaption_->GetTextProperty();
+    const PictureLayout layout = layoutPicture(
+        size[0], size[1], fontSize_,
+        legend_->GetVisibility() ? Vec2<double>(legendSize[0], legendSize[1]) : Vec2<double>::Zero(),
+        worldCaptionText_, [&](const std::string& t) { return textSize(captionFont, t, dpi); },
+        effectsCaption_->GetVisibility() ? effectsNote_ : "", [&](const std::string& t) { return textSize(noteFont, t, dpi); });
+    for (const auto& [caption, lines] : {std::pair{worldCaption_.Get(), &layout.captionLines},
+                                         std::pair{effectsCaption_.Get(), &layout.noteLines}}) {
+        std::string joined;
+        for (const std::string& line : *lines)
+            joined += (joined.empty() ? "" : "\n") + line;
+        if (joined != (caption->GetInput() ? caption->GetInput() : ""))
+            caption->SetInput(joined.c_str());
     }
+    // The legend's lower left corner, from the view's top right corner less 4 % (y up).
+    const Vec2<double> corner(layout.legend.min.x() - size[0], 0.04 * size[1] - layout.legend.max.y());
+    if (legend_->GetVisibility() && (corner - Vec2<double>(legend_->GetPositionCoordinate()->GetValue())).norm() > 0.5)
+        legend_->GetPositionCoordinate()->SetValue(corner.x(), corner.y());
 }
 
 FigureView ScenePainter::figureView() const
@@ -379,6 +377,8 @@ void ScenePainter::placeLabels()
     std::vector<FigureShape> markerShown;
     for (Label& label : labels_)
         label.actor->SetVisibility(false);
+    for (Label& label : frameLabels_)
+        label.actor->SetVisibility(false);
     if (scene_) {
         std::vector<Marker> markers = scene_->markers;
         if (tracedMarker_)
@@ -396,28 +396,34 @@ void ScenePainter::placeLabels()
 void ScenePainter::placeLabelsOf(const StageShown& stage, const FigureView& view, const std::vector<Marker>& markers,
                                  std::vector<Segment2>& leaders, std::vector<Rgb>& leaderColors)
 {
+    std::vector<Label*> all; // the scene's, the traced vertex's, then the frame's
+    for (Label& label : labels_)
+        all.push_back(&label);
+    for (Label& label : frameLabels_)
+        all.push_back(&label);
     std::vector<const viewpipe::Label*> texts;
-    for (const Label& label : labels_)
-        texts.push_back(label.label);
+    for (const Label* label : all)
+        texts.push_back(label->label);
     vtkRenderWindow* window = world_->GetRenderWindow();
     const int dpi = window ? window->GetDPI() : 72;
     vtkNew<vtkTextProperty> font; // as every label's
     useFigureFont(font, true);
     font->SetFontSize(fontSize_);
-    const TextMeasure measure = [&](const std::string& text) {
-        int box[4] = {0, 0, 0, 0};
-        vtkTextRenderer::GetInstance()->GetBoundingBox(font, text, box, dpi);
-        return Vec2<double>(box[1] - box[0] + 1, box[3] - box[2] + 1);
+    vtkNew<vtkTextProperty> minorFont; // as tick numbers
+    useFigureFont(minorFont, false);
+    minorFont->SetFontSize(std::max(8, fontSize_ * 3 / 4));
+    const LabelMeasure measure = [&](const viewpipe::Label& label) {
+        return textSize(label.minor ? minorFont.Get() : font.Get(), label.text, dpi);
     };
     // Viewport pixels are y up, the placement's y down.
     auto up = [&](const Vec2<double>& p) { return Vec2<double>(p.x(), view.height - p.y()); };
     const auto placed = placeSceneLabels(stage, view, texts, markers, measure, captionBoxes());
-    for (std::size_t k = 0; k < labels_.size(); ++k) {
+    for (std::size_t k = 0; k < all.size(); ++k) {
         if (!placed[k])
             continue;
         const PlacedLabel& p = *placed[k];
-        labels_[k].actor->SetVisibility(true);
-        labels_[k].actor->SetPosition(p.box.min.x(), view.height - p.box.max.y()); // the text's lower left corner
+        all[k]->actor->SetVisibility(true);
+        all[k]->actor->SetPosition(p.box.min.x(), view.height - p.box.max.y()); // the text's lower left corner
         if (p.leader) {
             leaders.push_back({up(p.anchor), up(p.anchor.cwiseMax(p.box.min).cwiseMin(p.box.max))});
             leaderColors.push_back(elementColor(p.element, theme_));
@@ -481,12 +487,23 @@ void ScenePainter::frameOn(const Framing& framing)
     camera->SetFocalPoint(focal.data());
     camera->SetPosition(position.data());
     framed_ = framing;
-    // The fixed axes reach across everything in view.
-    const double reach = framing.center.norm() + 1.5 * framing.radius;
-    std::vector<Vec3<double>> axes;
-    for (int k = 0; k < 3; ++k)
-        axes.insert(axes.end(), {-reach * Vec3<double>::Unit(k), reach * Vec3<double>::Unit(k)});
-    static_cast<vtkPolyDataMapper*>(frameAxes_->GetMapper())->SetInputData(linesData(axes));
+    // The fixed axes reach across everything in view, with their ticks and labels.
+    const FrameMarks marks = frameMarks(framing.center.norm() + 1.5 * framing.radius);
+    static_cast<vtkPolyDataMapper*>(frameAxes_->GetMapper())->SetInputData(linesData(marks.lines));
+    const bool sameTexts = marks.labels.size() == frameLabelTexts_.size() &&
+                           std::equal(marks.labels.begin(), marks.labels.end(), frameLabelTexts_.begin(),
+                                      [](const viewpipe::Label& a, const viewpipe::Label& b) { return a.text == b.text; });
+    if (sameTexts) {
+        for (std::size_t k = 0; k < marks.labels.size(); ++k)
+            frameLabelTexts_[k].anchor = marks.labels[k].anchor; // the actors keep pointing here
+    } else {
+        for (const Label& label : frameLabels_)
+            world_->RemoveActor2D(label.actor);
+        frameLabels_.clear();
+        frameLabelTexts_ = marks.labels;
+        for (const viewpipe::Label& text : frameLabelTexts_)
+            frameLabels_.push_back(newLabel(text));
+    }
     fitClippingRange();
 }
 
@@ -644,16 +661,19 @@ void ScenePainter::applyStyle()
                                 p.element == Element::ZFighting;
         property->SetLineWidth(lineScale_ * (surface ? 1 : (emphasised ? 3.5 : 2.0)));
     }
-    for (Label& label : labels_) {
-        const Rgb c = elementColor(label.label->element, theme_);
-        label.actor->GetTextProperty()->SetColor(c.r, c.g, c.b);
-        label.actor->GetTextProperty()->SetFontSize(fontSize_);
-    }
+    for (Label& label : labels_)
+        styleLabel(label);
+    for (Label& label : frameLabels_)
+        styleLabel(label);
     const Rgb ink = elementColor(Element::Objects, theme_);
     worldCaption_->GetTextProperty()->SetColor(ink.r, ink.g, ink.b);
     worldCaption_->GetTextProperty()->SetFontSize(fontSize_);
     effectsCaption_->GetTextProperty()->SetColor(ink.r, ink.g, ink.b);
     effectsCaption_->GetTextProperty()->SetFontSize(std::max(8, fontSize_ * 3 / 4));
+    for (vtkTextActor* caption : {worldCaption_.Get(), effectsCaption_.Get()}) { // lines behind do not cross them
+        caption->GetTextProperty()->SetBackgroundColor(back.r, back.g, back.b);
+        caption->GetTextProperty()->SetBackgroundOpacity(0.85);
+    }
     effectsCaption_->SetVisibility(textVisible_ && scene_ && !scene_->effectsNote.empty());
     const Rgb frame = elementColor(Element::Frame, theme_);
     frameAxes_->GetProperty()->SetColor(frame.r, frame.g, frame.b);

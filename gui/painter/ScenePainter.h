@@ -105,7 +105,9 @@ private:
     };
     void clear();
     void addLayer(const Primitive& primitive, vtkSmartPointer<vtkPolyData> data);
+    Label newLabel(const viewpipe::Label& text);
     void addLabel(const viewpipe::Label& label);
+    void styleLabel(Label& label) const;
     void applyStyle();
     // Places every label with the one placement step the figures use, for the camera of the coming frame.
     void placeLabels();
@@ -143,6 +145,9 @@ private:
     std::string worldCaptionText_, effectsNote_; // as given, before fitting
     std::vector<Layer> layers_;
     std::vector<Label> labels_;
+    // The frame axes' names and tick numbers, which change with the framing.
+    std::vector<viewpipe::Label> frameLabelTexts_;
+    std::vector<Label> frameLabels_;
     // The traced vertex's marker and label (not part of the scene).
     std::optional<Marker> tracedMarker_;
     std::unique_ptr<viewpipe::Label> tracedLabel_;

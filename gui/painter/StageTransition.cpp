@@ -32,16 +32,30 @@ double StageTransition::canonicalOpacity(double position, std::size_t stageCount
 void StageTransition::showStage(ScenePainter& painter, const std::vector<Stage<double>>& stages, int stage)
 {
     painter.show(drawnAt(stages, stage), canonicalOpacity(stage, stages.size()));
-    painter.frame();
+    painter.frameOn(framingAt(painter, stages, stage));
+}
+
+ScenePainter::Framing StageTransition::framingAt(const ScenePainter& painter, const std::vector<Stage<double>>& stages,
+                                                 int stage)
+{
+    const auto [first, last] = framedTogether(stages, stage);
+    std::vector<Mat4<double>> positions;
+    for (int k = first * kSweepSamples; k <= last * kSweepSamples; ++k)
+        positions.push_back(drawnAt(stages, double(k) / kSweepSamples));
+    return painter.framingOf(positions, canonicalOpacity(stage, stages.size()) > 0);
 }
 
 StageTransition::StageTransition(ScenePainter& painter, const std::vector<Stage<double>>& stages, int from, int to)
     : painter_(painter), stages_(stages), from_(from), to_(to)
 {
+    start_ = framingAt(painter, stages, from);
+    end_ = framingAt(painter, stages, to);
+    if (framedTogether(stages, from) == framedTogether(stages, to)) {
+        sweep_ = start_; // one framing: the motion is seen against it
+        return;
+    }
     const bool canonicalAtStart = canonicalOpacity(from, stages.size()) > 0;
     const bool canonicalAtEnd = canonicalOpacity(to, stages.size()) > 0;
-    start_ = painter.framingOf({drawnAt(stages, from)}, canonicalAtStart);
-    end_ = painter.framingOf({drawnAt(stages, to)}, canonicalAtEnd);
     std::vector<Mat4<double>> sweep;
     for (int k = 0; k <= kSweepSamples; ++k)
         sweep.push_back(drawnAt(stages, from + (to - from) * double(k) / kSweepSamples));

@@ -25,8 +25,13 @@ public:
 
     // The canonical outline fades in while the last stage is reached.
     static double canonicalOpacity(double position, std::size_t stageCount);
-    // Shows a stage at rest, framed.
+    // Shows a stage at rest, framed with the stages that keep its sizes.
     static void showStage(ScenePainter& painter, const std::vector<Stage<double>>& stages, int stage);
+    // The framing of a stage: one for all the stages framed together with it
+    // (translations and rotations between them are seen moving, rotations'
+    // sweeps included).
+    static ScenePainter::Framing framingAt(const ScenePainter& painter, const std::vector<Stage<double>>& stages,
+                                           int stage);
 
 private:
     ScenePainter& painter_;

@@ -1,6 +1,7 @@
 #include "VtkGeometry.h"
 
 #include <vtkActor.h>
+#include <vtkNew.h>
 #include <vtkCellArray.h>
 #include <vtkIdTypeArray.h>
 #include <vtkPoints.h>
@@ -8,7 +9,9 @@
 #include <vtkPolyDataMapper.h>
 #include <vtkProperty.h>
 #include <vtkTextProperty.h>
+#include <vtkTextRenderer.h>
 
+#include <cmath>
 #include <fstream>
 
 namespace viewpipe::gui {
@@ -95,6 +98,21 @@ vtkSmartPointer<vtkPolyData> primitiveData(const Primitive& primitive)
 
 // Text in the font the vector figures use (DejaVu Sans, Debian's fonts-dejavu-core), so that a label
 // takes the same room in every picture; VTK's own font where it is missing.
+Vec2<double> textSize(vtkTextProperty* font, const std::string& text, int dpi)
+{
+    int box[4] = {0, 0, 0, 0};
+    vtkTextRenderer::GetInstance()->GetBoundingBox(font, text, box, dpi);
+    return Vec2<double>(box[1] - box[0] + 1, box[3] - box[2] + 1);
+}
+
+Vec2<double> figureTextSize(const std::string& text, double fontSize, bool bold)
+{
+    vtkNew<vtkTextProperty> font;
+    useFigureFont(font, bold);
+    font->SetFontSize(int(std::lround(fontSize)));
+    return textSize(font, text, 72);
+}
+
 void useFigureFont(vtkTextProperty* text, bool bold)
 {
     const char* file = bold ? "/usr/share/fonts/truetype/dejavu/DejaVuSans-Bold.ttf"

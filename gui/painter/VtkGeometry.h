@@ -28,5 +28,9 @@ vtkSmartPointer<vtkActor> unlitActor(vtkPolyData* data);
 // Text in the font the vector figures use (DejaVu Sans, Debian's fonts-dejavu-core), so that a label
 // takes the same room in every picture; VTK's own font where it is missing.
 void useFigureFont(vtkTextProperty* text, bool bold);
+// The pixels a text takes in a font at a resolution: width, height.
+Vec2<double> textSize(vtkTextProperty* font, const std::string& text, int dpi);
+// The same for the pictures' font at a size, at 72 dots per inch: what every figure measures its texts with.
+Vec2<double> figureTextSize(const std::string& text, double fontSize, bool bold);
 
 } // namespace viewpipe::gui

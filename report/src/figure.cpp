@@ -1,9 +1,13 @@
 #include "viewpipe/report/figure.hpp"
 
+#include "viewpipe/format.hpp"
+
 #include <algorithm>
 #include <array>
 #include <cmath>
 #include <limits>
+#include <sstream>
+#include <tuple>
 
 namespace viewpipe {
 namespace {
@@ -153,16 +157,82 @@ double meanDepth(const std::vector<Vec3d>& pixels)
     return sum / double(pixels.size());
 }
 
-// The fixed axes of the coordinates the stage maps into, as segments.
-std::vector<Vec3d> frameAxes(double reach)
-{
-    std::vector<Vec3d> axes;
-    for (int k = 0; k < 3; ++k)
-        axes.insert(axes.end(), {-reach * Vec3d::Unit(k), reach * Vec3d::Unit(k)});
-    return axes;
-}
 
 } // namespace
+
+std::vector<std::string> wrapLines(const std::string& text, double width, const TextMeasure& measure)
+{
+    std::vector<std::string> wrapped;
+    std::istringstream lines(text);
+    for (std::string line; std::getline(lines, line);) {
+        std::string current;
+        std::istringstream words(line);
+        for (std::string word; words >> word;) {
+            const std::string longer = current.empty() ? word : current + " " + word;
+            if (current.empty() || measure(longer).x() <= width) {
+                current = longer;
+            } else {
+                wrapped.push_back(current);
+                current = word;
+            }
+        }
+        wrapped.push_back(current);
+    }
+    return wrapped;
+}
+
+FrameMarks frameMarks(double reach)
+{
+    FrameMarks marks;
+    if (!(reach > 0))
+        return marks;
+    // Ticks at a round step (1, 2 or 5 times a power of ten), two or three each way.
+    const double rough = reach / 3, power = std::pow(10.0, std::floor(std::log10(rough)));
+    const double step = power * (rough >= 5 * power ? 5 : rough >= 2 * power ? 2 : 1);
+    const char* names[] = {"x", "y", "z"};
+    for (int axis = 0; axis < 3; ++axis) {
+        const Vec3d along = Vec3d::Unit(axis), across = Vec3d::Unit(axis == 0 ? 1 : 0);
+        marks.lines.insert(marks.lines.end(), {-reach * along, reach * along});
+        marks.labels.push_back({Element::Frame, names[axis], reach * along, true});
+        for (int j = -int(std::floor(reach / step * 0.999)); step * j <= 0.999 * reach; ++j) {
+            if (j == 0)
+                continue;
+            const Vec3d at = step * j * along;
+            marks.lines.insert(marks.lines.end(), {at - 0.02 * reach * across, at + 0.02 * reach * across});
+            marks.labels.push_back({Element::Frame, formatShortest(step * j), at, true, true});
+        }
+    }
+    return marks;
+}
+
+PictureLayout layoutPicture(int width, int height, double fontSize, const Vec2<double>& legendSize,
+                            const std::string& caption, const TextMeasure& captionMeasure, const std::string& note,
+                            const TextMeasure& noteMeasure)
+{
+    PictureLayout layout;
+    const double left = 0.02 * width, margin = std::max(4.0, fontSize / 2);
+    const bool legend = legendSize.x() > 0 && legendSize.y() > 0;
+    const double legendLeft = width - margin - legendSize.x();
+    const bool beside = !legend || legendLeft - margin - left >= 0.5 * width;
+    auto place = [&](const std::string& text, const TextMeasure& measure, double room, double& line, bool fromBottom) {
+        std::vector<std::string> lines = text.empty() ? std::vector<std::string>{} : wrapLines(text, room, measure);
+        line = measure("Ag").y();
+        double wide = 0;
+        for (const std::string& l : lines)
+            wide = std::max(wide, measure(l).x());
+        const double high = lines.empty() ? 0 : (1 + 1.1 * double(lines.size() - 1)) * line;
+        const double top = fromBottom ? 0.98 * height - high : 0.04 * height;
+        return std::pair{lines, Box2{Vec2<double>(left, top), Vec2<double>(left + wide, top + high)}};
+    };
+    std::tie(layout.captionLines, layout.caption) =
+        place(caption, captionMeasure, beside && legend ? legendLeft - margin - left : 0.96 * width, layout.captionLine, false);
+    std::tie(layout.noteLines, layout.note) = place(note, noteMeasure, 0.96 * width, layout.noteLine, true);
+    if (legend) {
+        const double top = beside ? 0.04 * height + 1.6 * fontSize : layout.caption.max.y() + 0.6 * fontSize;
+        layout.legend = {Vec2<double>(legendLeft, top), Vec2<double>(width - margin, top + legendSize.y())};
+    }
+    return layout;
+}
 
 bool Box2::overlaps(const Box2& other) const
 {
@@ -271,7 +341,7 @@ std::vector<std::optional<PlacedLabel>> placeLabels(const std::vector<LabelReque
                 bestLeader = leader;
             }
         };
-        for (std::size_t d = 0; d < distances.size(); ++d) {
+        for (std::size_t d = 0; d < (r.minor ? 1 : distances.size()); ++d) {
             for (std::size_t j = 0; j < directions.size(); ++j) {
                 const Vec2d dir = directions[j];
                 // The box's corner or edge middle nearest the anchor sits `distance` away along dir.
@@ -285,7 +355,7 @@ std::vector<std::optional<PlacedLabel>> placeLabels(const std::vector<LabelReque
             if (best && bestCost < double(d) + 1)
                 break; // nothing further out can do better
         }
-        if (!best) { // crowded: the nearest free place anywhere, with a leader
+        if (!best && !r.minor) { // crowded: the nearest free place anywhere, with a leader
             for (double y = picture.min.y(); y + r.size.y() <= picture.max.y(); y += 8)
                 for (double x = picture.min.x(); x + r.size.x() <= picture.max.x(); x += 8) {
                     const Box2 box{Vec2d(x, y), Vec2d(x, y) + r.size};
@@ -294,7 +364,7 @@ std::vector<std::optional<PlacedLabel>> placeLabels(const std::vector<LabelReque
         }
         if (best) {
             taken.push_back(*best);
-            placed[k] = PlacedLabel{r.element, r.text, r.anchor, *best, bestLeader};
+            placed[k] = PlacedLabel{r.element, r.text, r.anchor, *best, bestLeader, r.minor};
         }
     }
     return placed;
@@ -375,13 +445,11 @@ LabelObstacles labelObstacles(const StageShown& stage, const FigureView& view, c
             obstacles.objects.push_back(convexHull(std::move(outline)));
         }
     }
-    if (view.frameReach > 0) {
-        const std::vector<Vec3d> axes = frameAxes(view.frameReach);
-        for (std::size_t k = 0; k < axes.size(); k += 2) {
-            const auto a = view.pixel(axes[k]), b = view.pixel(axes[k + 1]);
-            if (a && b)
-                obstacles.lines.push_back({a->head<2>(), b->head<2>()});
-        }
+    const std::vector<Vec3d> axes = frameMarks(view.frameReach).lines;
+    for (std::size_t k = 0; k + 1 < axes.size(); k += 2) {
+        const auto a = view.pixel(axes[k]), b = view.pixel(axes[k + 1]);
+        if (a && b)
+            obstacles.lines.push_back({a->head<2>(), b->head<2>()});
     }
     return obstacles;
 }
@@ -391,7 +459,7 @@ LabelObstacles labelObstacles(const StageShown& stage, const FigureView& view, c
 std::vector<std::optional<PlacedLabel>> placeSceneLabels(const StageShown& stage, const FigureView& view,
                                                          const std::vector<const Label*>& labels,
                                                          const std::vector<Marker>& markers,
-                                                         const TextMeasure& measure,
+                                                         const LabelMeasure& measure,
                                                          const std::vector<Box2>& reserved)
 {
     std::vector<LabelRequest> requests;
@@ -399,13 +467,21 @@ std::vector<std::optional<PlacedLabel>> placeSceneLabels(const StageShown& stage
     const Box2 picture{Vec2d::Zero(), Vec2d(view.width, view.height)};
     for (std::size_t k = 0; k < labels.size(); ++k) {
         const Label& label = *labels[k];
-        if (!stage.shows(label.anchor))
+        const bool shown = label.fixed ? label.element != Element::Canonical || stage.canonicalOpacity > 0
+                                       : stage.shows(label.anchor);
+        if (!shown)
             continue;
-        const auto q = projectPoint(stage.cumulative, label.anchor);
+        auto q = label.fixed ? std::optional<Vec3d>(label.anchor) : projectPoint(stage.cumulative, label.anchor);
+        if (label.element == Element::Frame && !label.minor) // an axis's name: at the end of it the picture shows
+            for (double t = 1; t > 0.05; t -= 0.025)
+                if (const auto end = view.pixel(t * label.anchor); end && picture.grown(-0.05 * view.height).contains(Box2{end->head<2>(), end->head<2>()})) {
+                    q = t * label.anchor;
+                    break;
+                }
         const auto px = q ? view.pixel(*q) : std::nullopt;
         if (!px || !picture.contains(Box2{px->head<2>(), px->head<2>()}))
             continue;
-        requests.push_back({label.element, label.text, px->head<2>(), measure(label.text)});
+        requests.push_back({label.element, label.text, px->head<2>(), measure(label), label.minor});
         from.push_back(k);
     }
     LabelObstacles obstacles = labelObstacles(stage, view, markers);
@@ -417,7 +493,7 @@ std::vector<std::optional<PlacedLabel>> placeSceneLabels(const StageShown& stage
     return result;
 }
 
-Figure drawFigure(const StageShown& stage, const FigureView& view, const TextMeasure& measure,
+Figure drawFigure(const StageShown& stage, const FigureView& view, const LabelMeasure& measure,
                   const std::vector<Box2>& reserved)
 {
     Figure figure;
@@ -449,10 +525,11 @@ Figure drawFigure(const StageShown& stage, const FigureView& view, const TextMea
             add(p.element, true, opacity, throughView(stage, view, m, corners, true, !p.canonical));
         }
     }
-    if (view.frameReach > 0) {
-        const std::vector<Vec3d> axes = frameAxes(view.frameReach);
+    const FrameMarks frame = frameMarks(view.frameReach);
+    {
+        const std::vector<Vec3d>& axes = frame.lines;
         static const Mat4<double> identity = Mat4<double>::Identity();
-        for (std::size_t k = 0; k < axes.size(); k += 2) {
+        for (std::size_t k = 0; k + 1 < axes.size(); k += 2) {
             add(Element::Frame, false, 1, throughView(stage, view, identity, {axes[k], axes[k + 1]}, false, false));
             if (!figure.shapes.empty() && figure.shapes.back().element == Element::Frame)
                 figure.shapes.back().depth = std::numeric_limits<double>::infinity(); // behind all: the world axes lie on them at first
@@ -466,6 +543,8 @@ Figure drawFigure(const StageShown& stage, const FigureView& view, const TextMea
     figure.shapes.insert(figure.shapes.end(), markers.begin(), markers.end()); // over everything
     std::vector<const Label*> labels;
     for (const Label& label : stage.scene->labels)
+        labels.push_back(&label);
+    for (const Label& label : frame.labels)
         labels.push_back(&label);
     for (auto& placed : placeSceneLabels(stage, view, labels, stage.scene->markers, measure, reserved))
         if (placed)

@@ -55,7 +55,18 @@ std::string point(const Vec2<double>& p)
 std::string escaped(const std::string& text)
 {
     std::string out;
-    for (const char c : text) {
+    for (std::size_t k = 0; k < text.size(); ++k) {
+        const char c = text[k];
+        // The signs the captions use beyond ASCII, which pdflatex does not know as text.
+        bool sign = false;
+        for (const auto& [utf8, tex] : {std::pair<std::string, std::string>{"\u00b1", "$\\pm$"}, {"\u2264", "$\\le$"}})
+            if (text.compare(k, utf8.size(), utf8) == 0) {
+                out += tex;
+                k += utf8.size() - 1;
+                sign = true;
+            }
+        if (sign)
+            continue;
         switch (c) {
         case '\\': out += "\\textbackslash{}"; break;
         case '&': case '%': case '$': case '#': case '_': case '{': case '}': out += std::string("\\") + c; break;
@@ -76,7 +87,17 @@ std::string texLabel(const std::string& text)
         {"-f", "$-f$"}, {"VRP", "$\\mathrm{VRP}$"}, {"PRP", "$\\mathrm{PRP}$"}, {"DOP", "$\\mathrm{DOP}$"},
         {"CW", "$\\mathrm{CW}$"}, {"front (F)", "front ($F$)"}, {"back (B)", "back ($B$)"}};
     const auto found = usual.find(text);
-    return found != usual.end() ? found->second : escaped(text);
+    if (found != usual.end())
+        return found->second;
+    // A plane's equation, "z = z_min" or "z = 1 (far)": math, and the words after it as text.
+    if (text.size() > 4 && (text[0] == 'x' || text[0] == 'y' || text[0] == 'z') && text.compare(1, 3, " = ") == 0) {
+        const std::size_t words = text.find(" (");
+        std::string math = text.substr(0, words);
+        if (const std::size_t min = math.find("z_min"); min != std::string::npos)
+            math.replace(min, 5, "z_{\\min}");
+        return "$" + math + "$" + (words == std::string::npos ? "" : escaped(text.substr(words)));
+    }
+    return escaped(text);
 }
 
 std::string tikzFigure(const Figure& figure, Theme theme)
@@ -101,6 +122,8 @@ std::string tikzFigure(const Figure& figure, Theme theme)
     const double pt = unit / 2.54 * 72.27;
     tex << "\\tikzset{\n  vp label/.style={inner sep=0pt, anchor=north west, font=\\sffamily\\bfseries"
            "\\fontsize{" << number(0.8 * figure.fontSize * pt) << "}{" << number(figure.fontSize * pt) << "}\\selectfont},\n";
+    tex << "  vp tick label/.style={vp label, text=vpFrame, font=\\sffamily\\fontsize{" << number(0.6 * figure.fontSize * pt)
+        << "}{" << number(0.75 * figure.fontSize * pt) << "}\\selectfont},\n";
     tex << "  vp leader/.style={line width=" << number(figure.lineScale * pt) << "pt},\n";
     for (const Element e : used) {
         const std::string key = elementKey(e);
@@ -128,7 +151,8 @@ std::string tikzFigure(const Figure& figure, Theme theme)
             const Vec2<double> end = l.anchor.cwiseMax(l.box.min).cwiseMin(l.box.max);
             tex << "\\draw[vp leader, draw=vp" << key << "] " << point(l.anchor) << " -- " << point(end) << ";\n";
         }
-        tex << "\\node[vp " << key << " label] at " << point(l.box.min) << " {" << texLabel(l.text) << "};\n";
+        tex << "\\node[vp " << (l.minor ? std::string("tick") : key) << " label] at " << point(l.box.min) << " {"
+            << texLabel(l.text) << "};\n";
     }
     tex << "\\end{tikzpicture}\n\\end{document}\n";
     return tex.str();

@@ -212,6 +212,27 @@ TEST_F(MeshCacheTest, AFileThatCannotBeReadIsRefusedByItsField)
     EXPECT_EQ(evaluator.evaluate(scene_)->meshes[1]->faces.size(), 1u);
 }
 
+// Each stage's picture says what the stage achieved, as checked on the set-up.
+TEST(EvaluatedScene, StagesClaimWhatTheyAchieve)
+{
+    // The house: VRP at the origin and VPN along z already, so T(-VRP) and R are identities here.
+    const auto house = evaluateScene(loadScene(std::string(VIEWPIPE_DATA_DIR) + "/scenes/house.json"));
+    EXPECT_EQ(house->stageClaims, (std::vector<std::string>{"", "the identity here: nothing moves",
+                                                            "the identity here: nothing moves", "PRP at the origin",
+                                                            "DOP along the z axis",
+                                                            "sides on x = \u00b1z, y = \u00b1z; back at z = -1, "
+                                                            "front at z_min = -0.407"}));
+    const auto gl = evaluateScene(loadScene(std::string(VIEWPIPE_DATA_DIR) + "/scenes/opengl-perspective.json"));
+    EXPECT_EQ(gl->stageClaims,
+              (std::vector<std::string>{"", "eye at the origin",
+                                        "s, u, -f along x, y, -z: the eye looks down -z; DOP along the z axis",
+                                        "sides on x = \u00b1z, y = \u00b1z",
+                                        "the volume is the cube -1 \u2264 x, y, z \u2264 1: near at z = -1, far at z = 1"}));
+    const auto parallel =
+        evaluateScene(loadScene(std::string(VIEWPIPE_DATA_DIR) + "/scenes/house-parallel-oblique.json"));
+    EXPECT_EQ(parallel->stageClaims.back(), "the volume is -1 \u2264 x, y \u2264 1, -1 \u2264 z \u2264 0");
+}
+
 TEST(EvaluatedScene, PointsAreMarkedWhereTheyAre)
 {
     // The house scene: PRP (8, 6, 84); CW at the origin (the window [-50, 50]^2 about VRP); the DOP's head at CW.

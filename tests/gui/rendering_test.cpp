@@ -80,6 +80,7 @@ Run viewpipe(const QStringList& arguments, const QProcessEnvironment& environmen
 const QString kHouse = QString(VIEWPIPE_DATA_DIR) + "/scenes/house.json";
 
 // Pixels that differ from white (the light theme's background) by more than a little.
+constexpr int kDrawn = 40;
 std::vector<bool> drawnPixels(const QImage& image)
 {
     const QImage x = image.convertToFormat(QImage::Format_RGB32);
@@ -88,7 +89,7 @@ std::vector<bool> drawnPixels(const QImage& image)
         for (int col = 0; col < x.width(); ++col) {
             const QRgb c = reinterpret_cast<const QRgb*>(x.constScanLine(row))[col];
             drawn[std::size_t(row) * std::size_t(x.width()) + std::size_t(col)] =
-                std::min({qRed(c), qGreen(c), qBlue(c)}) < 255 - 40;
+                std::min({qRed(c), qGreen(c), qBlue(c)}) < 255 - kDrawn;
         }
     return drawn;
 }
@@ -292,6 +293,7 @@ private slots:
             svg.render(&painter);
             painter.end();
             const double svgAgreement = drawnAgreement(png, fromSvg);
+            qInfo("%s: SVG and PNG agree on %.1f %% of drawn pixels", qPrintable(name), 100 * svgAgreement);
             QVERIFY2(svgAgreement >= 0.9, qPrintable(name + " svg: " + QString::number(svgAgreement)));
 
             // PDF: vector (no image), its fonts embedded, small; rasterized by poppler, the PNG's drawing.
@@ -312,6 +314,7 @@ private slots:
             const QImage fromPdf(out + "/from-pdf.png");
             QCOMPARE(fromPdf.size(), png.size());
             const double pdfAgreement = drawnAgreement(png, fromPdf);
+            qInfo("%s: PDF and PNG agree on %.1f %% of drawn pixels", qPrintable(name), 100 * pdfAgreement);
             QVERIFY2(pdfAgreement >= 0.9, qPrintable(name + " pdf: " + QString::number(pdfAgreement)));
         }
     }

@@ -18,10 +18,11 @@ namespace {
 
 namespace fs = std::filesystem;
 
-// Text as wide as 0.6 of the font size a character, one font size high.
-Vec2<double> measure(const std::string& text)
+// Text as wide as 0.6 of the font size a character, one font size high (15 for minor labels).
+Vec2<double> measure(const Label& label)
 {
-    return {0.6 * 20 * double(text.size()), 20};
+    const double size = label.minor ? 15 : 20;
+    return {0.6 * size * double(label.text.size()), size};
 }
 
 bool inside(const Box2& box, int width, int height)
@@ -171,6 +172,8 @@ TEST(Tikz, LabelsInTheirUsualNotation)
     EXPECT_EQ(texLabel("n"), "$n$");
     EXPECT_EQ(texLabel("front (F)"), "front ($F$)");
     EXPECT_EQ(texLabel("far at infinity (volume cut)"), "far at infinity (volume cut)");
+    EXPECT_EQ(texLabel("z = z_min"), "$z = z_{\\min}$");
+    EXPECT_EQ(texLabel("z = 1 (far)"), "$z = 1$ (far)");
     EXPECT_EQ(texLabel("50% & more_"), "50\\% \\& more\\_");
 }
 

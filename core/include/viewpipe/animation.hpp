@@ -48,6 +48,29 @@ template <class T> Mat4<T> cumulativeAt(const std::vector<Stage<T>>& stages, dou
     return m;
 }
 
+// Whether a stage keeps lengths and angles (translations, rotations, their
+// products): pictures of the stages it joins share one framing, so that they
+// show what it moved instead of following it.
+template <class T> bool keepsShape(const Stage<T>& stage)
+{
+    const Mat4<T>& m = stage.matrix;
+    const Mat3<T> r = m.template topLeftCorner<3, 3>();
+    return !stage.divides && m.template bottomLeftCorner<1, 3>().isZero(T(0)) && m(3, 3) == T(1) &&
+           (r * r.transpose()).isIdentity(T(64) * epsilonOf<T>());
+}
+
+// The stages pictured with one framing together with stage k (0 being the
+// world): from the last one that changed shapes up to the next one.
+template <class T> std::pair<int, int> framedTogether(const std::vector<Stage<T>>& stages, int k)
+{
+    int first = k, last = k;
+    while (first > 0 && keepsShape(stages[std::size_t(first - 1)]))
+        --first;
+    while (last < int(stages.size()) && keepsShape(stages[std::size_t(last)]))
+        ++last;
+    return {first, last};
+}
+
 // The matrix a picture draws stage `position` with. Where the pipeline has a
 // divide stage, the stages before it are drawn undivided (clip coordinates
 // x, y, z: w left out), and the divide brings w in: the picture changes where

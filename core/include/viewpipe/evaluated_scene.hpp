@@ -63,7 +63,12 @@ struct Marker {
 struct Label {
     Element element;
     std::string text;
-    Vec3<double> anchor; // world coordinates
+    Vec3<double> anchor; // world coordinates, or the stage's where `fixed`
+    // In the stage's coordinates, not moved by its matrix: the canonical
+    // volume's (shown with it) and the frame axes'.
+    bool fixed = false;
+    // Placed right beside its anchor or left out, never led away (tick numbers).
+    bool minor = false;
 };
 
 // A line of a view's legend: a swatch of how an element is drawn, and what it is.
@@ -100,6 +105,11 @@ struct EvaluatedScene {
     std::vector<Segment2> zFightingRing;
     // One line per listed effect: what it found.
     std::string effectsNote;
+    // What each stage achieves, for its picture: element k (0 to the number
+    // of stages) lists the facts about the set-up that hold after stage k and
+    // did not before ("PRP at the origin", "DOP along the z axis"), checked on
+    // the set-up's points as the pictures draw them; empty for the world.
+    std::vector<std::string> stageClaims;
     // Under a projective stage what lies between the eye and the near plane
     // is thrown out towards infinity by the divide: pictures cut elements at
     // this plane (world coordinates, kept where p . (x, y, z, 1) >= 0), 9/10
@@ -150,6 +160,11 @@ Eigen::AlignedBox<double, 3> boundsOf(const std::vector<std::shared_ptr<const Po
 
 // One evaluation without a cache (the CLI's: each file is read once anyway).
 std::shared_ptr<const EvaluatedScene> evaluateScene(const Scene& scene);
+
+// The caption of stage k's picture: its name (as `text` asks), and on a
+// second line what the stage achieved and whether the picture was framed anew
+// because the stage changed sizes.
+std::string stageCaption(const EvaluatedScene& scene, std::size_t k, StageText text);
 
 // A point through a cumulative matrix and the divide; nothing when it has no
 // image (behind the eye, on the eye plane, or not finite).

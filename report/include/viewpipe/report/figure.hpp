@@ -54,14 +54,34 @@ struct FigureView {
     std::optional<Vec3<double>> pixel(const Vec3<double>& stagePoint) const;
 };
 
-// A label's text size in pixels, as the writer that draws it measures it.
+// A text's size in pixels, as the writer that draws it measures it.
 using TextMeasure = std::function<Vec2<double>(const std::string& text)>;
+// A label's (minor ones are set smaller).
+using LabelMeasure = std::function<Vec2<double>(const Label& label)>;
+
+// Text broken into lines at spaces (and at its own line breaks) so that each
+// line is at most `width` wide; a word wider stays whole on its line.
+std::vector<std::string> wrapLines(const std::string& text, double width, const TextMeasure& measure);
+
+// Where a picture's caption (top left), legend (top right) and effects note
+// (bottom left) go, in pixels: the caption beside the legend where that leaves
+// it half the width, above it otherwise; both texts wrapped to fit. Lines are
+// as high as "Ag" measures and 1.1 of that apart.
+struct PictureLayout {
+    std::vector<std::string> captionLines, noteLines;
+    Box2 caption, legend, note;
+    double captionLine = 0, noteLine = 0; // line heights
+};
+PictureLayout layoutPicture(int width, int height, double fontSize, const Vec2<double>& legendSize,
+                            const std::string& caption, const TextMeasure& captionMeasure, const std::string& note,
+                            const TextMeasure& noteMeasure);
 
 struct LabelRequest {
     Element element;
     std::string text;
     Vec2<double> anchor; // pixels
     Vec2<double> size;   // pixels
+    bool minor = false;  // right beside the anchor or not at all
 };
 
 // What labels keep clear of: the lines drawn, each object's outline (a
@@ -78,6 +98,7 @@ struct PlacedLabel {
     Vec2<double> anchor;
     Box2 box;            // where the text goes
     bool leader = false; // drawn away from its anchor: a line joins them
+    bool minor = false;  // set smaller (tick numbers)
 };
 
 // Places each label near its anchor: inside the picture, on no other label
@@ -96,8 +117,17 @@ int labelOverlaps(const std::vector<PlacedLabel>& labels);
 std::vector<std::optional<PlacedLabel>> placeSceneLabels(const StageShown& stage, const FigureView& view,
                                                          const std::vector<const Label*>& labels,
                                                          const std::vector<Marker>& markers,
-                                                         const TextMeasure& measure,
+                                                         const LabelMeasure& measure,
                                                          const std::vector<Box2>& reserved);
+
+// The fixed axes of the coordinates a stage maps into, reaching `reach` each
+// way: the axes and their ticks (end points by pairs) and the labels naming
+// them and numbering the ticks, all in the stage's coordinates.
+struct FrameMarks {
+    std::vector<Vec3<double>> lines;
+    std::vector<Label> labels;
+};
+FrameMarks frameMarks(double reach);
 
 // One filled polygon or one line of the flat figure.
 struct FigureShape {
@@ -123,7 +153,7 @@ struct Figure {
 
 // The flat figure of a stage; `reserved`: boxes the writer keeps for its
 // caption and legend.
-Figure drawFigure(const StageShown& stage, const FigureView& view, const TextMeasure& measure,
+Figure drawFigure(const StageShown& stage, const FigureView& view, const LabelMeasure& measure,
                   const std::vector<Box2>& reserved);
 
 // The line width the pictures draw an element's lines with, in pixels at lineScale 1.
