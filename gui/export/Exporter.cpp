@@ -34,7 +34,7 @@ namespace fs = std::filesystem;
 
 namespace {
 
-constexpr int kBaseFontSize = 20;
+constexpr int kBaseFontSize = 20; // at 1280x720; other sizes scale it, so that a picture keeps its look
 constexpr double kHoldSeconds = 0.6; // the animation rests this long at each stage
 
 struct Cancelled {};
@@ -253,7 +253,9 @@ std::vector<fs::path> exportStages(const std::shared_ptr<const EvaluatedScene>& 
         window->AddRenderer(renderer);
         ScenePainter painter(renderer, nullptr);
         painter.setTheme(options.theme);
-        painter.setFontSize(kBaseFontSize * options.scale);
+        const double sizeShare = std::sqrt(double(options.width) * options.height / (1280.0 * 720.0));
+        painter.setFontSize(int(std::lround(std::clamp(kBaseFontSize * sizeShare, 10.0, 2.0 * kBaseFontSize))) *
+                            options.scale);
         painter.setLineScale(options.scale);
         painter.setScene(evaluated);
         if (options.transparent)

@@ -174,9 +174,9 @@ void paint(QPainter& painter, const Figure& figure, const Layout& layout, const 
                          qtColor(backgroundColor(f.theme, false), 0.85));
         painter.setFont(qfont);
         const QFontMetricsF metrics(qfont);
-        // Lines as VTK sets them: each as high as it measures, 1.1 of that apart.
+        // Lines as VTK sets them: the last one's descent at the box's bottom, `line` apart.
         for (std::size_t k = 0; k < lines.size(); ++k)
-            painter.drawText(QPointF(box.min.x(), box.min.y() + (1 + 1.1 * double(k)) * line - metrics.descent()),
+            painter.drawText(QPointF(box.min.x(), box.max.y() - double(lines.size() - 1 - k) * line - metrics.descent()),
                              QString::fromStdString(lines[k]));
     };
     const PictureLayout& p = layout.picture;

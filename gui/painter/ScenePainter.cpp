@@ -362,9 +362,11 @@ std::vector<Box2> ScenePainter::captionBoxes() const
             boxes.push_back(box(placed));
         }
     if (legend_->GetVisibility()) {
+        // Position2 is relative to Position: computed, it is the upper right corner.
         const int* low = legend_->GetPositionCoordinate()->GetComputedViewportValue(world_);
-        const int* size = legend_->GetPosition2Coordinate()->GetComputedViewportValue(world_);
-        const double corners[4] = {double(low[0]), double(low[0] + size[0]), double(low[1]), double(low[1] + size[1])};
+        const double x0 = low[0], y0 = low[1];
+        const int* high = legend_->GetPosition2Coordinate()->GetComputedViewportValue(world_);
+        const double corners[4] = {x0, double(high[0]), y0, double(high[1])};
         boxes.push_back(box(corners));
     }
     return boxes;

@@ -213,19 +213,24 @@ PictureLayout layoutPicture(int width, int height, double fontSize, const Vec2<d
     const double left = 0.02 * width, margin = std::max(4.0, fontSize / 2);
     const bool legend = legendSize.x() > 0 && legendSize.y() > 0;
     const double legendLeft = width - margin - legendSize.x();
-    const bool beside = !legend || legendLeft - margin - left >= 0.5 * width;
+    bool beside = !legend || legendLeft - margin - left >= 0.5 * width;
     auto place = [&](const std::string& text, const TextMeasure& measure, double room, double& line, bool fromBottom) {
         std::vector<std::string> lines = text.empty() ? std::vector<std::string>{} : wrapLines(text, room, measure);
-        line = measure("Ag").y();
-        double wide = 0;
+        std::string joined;
         for (const std::string& l : lines)
-            wide = std::max(wide, measure(l).x());
-        const double high = lines.empty() ? 0 : (1 + 1.1 * double(lines.size() - 1)) * line;
+            joined += (joined.empty() ? "" : "\n") + l;
+        const Vec2<double> size = lines.empty() ? Vec2<double>::Zero() : measure(joined); // as drawn, all lines
+        const double wide = size.x(), high = size.y();
+        line = lines.size() > 1 ? (high - measure("Ag").y()) / double(lines.size() - 1) : 0;
         const double top = fromBottom ? 0.98 * height - high : 0.04 * height;
         return std::pair{lines, Box2{Vec2<double>(left, top), Vec2<double>(left + wide, top + high)}};
     };
     std::tie(layout.captionLines, layout.caption) =
         place(caption, captionMeasure, beside && legend ? legendLeft - margin - left : 0.96 * width, layout.captionLine, false);
+    if (beside && legend && layout.captionLines.size() > 2) { // a narrow column: above the legend, the width's
+        std::tie(layout.captionLines, layout.caption) = place(caption, captionMeasure, 0.96 * width, layout.captionLine, false);
+        beside = false;
+    }
     std::tie(layout.noteLines, layout.note) = place(note, noteMeasure, 0.96 * width, layout.noteLine, true);
     if (legend) {
         const double top = beside ? 0.04 * height + 1.6 * fontSize : layout.caption.max.y() + 0.6 * fontSize;

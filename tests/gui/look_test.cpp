@@ -116,9 +116,11 @@ DrawnTexts drawnTexts(vtkRenderer* view)
             box = {box[0] + at[0], box[1] + at[0], box[2] + at[1], box[3] + at[1]};
             drawn.texts.emplace_back(text->GetInput(), box);
         } else if (auto* legend = vtkLegendBoxActor::SafeDownCast(actor)) {
+            // Position2 is relative to Position: computed, it is the upper right corner.
             const int* low = legend->GetPositionCoordinate()->GetComputedViewportValue(view);
-            const int* size = legend->GetPosition2Coordinate()->GetComputedViewportValue(view);
-            drawn.legend = {double(low[0]), double(low[0] + size[0]), double(low[1]), double(low[1] + size[1])};
+            const double x0 = low[0], y0 = low[1];
+            const int* high = legend->GetPosition2Coordinate()->GetComputedViewportValue(view);
+            drawn.legend = {x0, double(high[0]), y0, double(high[1])};
         }
     }
     return drawn;
@@ -225,7 +227,9 @@ private slots:
                     QVERIFY2(box[0] >= 0 && box[1] <= size[0] && box[2] >= 0 && box[3] <= size[1],
                              qPrintable(where + "\"" + text + "\" leaves the view"));
                     QVERIFY2(!drawn.legend || !overlap(box, *drawn.legend),
-                             qPrintable(where + "\"" + text + "\" covers the legend"));
+                             qPrintable(where + "\"" + text + "\" covers the legend " +
+                                        QString("(%1 %2 %3 %4 / %5 %6 %7 %8)").arg(box[0]).arg(box[1]).arg(box[2]).arg(box[3])
+                                            .arg((*drawn.legend)[0]).arg((*drawn.legend)[1]).arg((*drawn.legend)[2]).arg((*drawn.legend)[3])));
                     for (std::size_t j = i + 1; j < drawn.texts.size(); ++j)
                         QVERIFY2(!overlap(box, drawn.texts[j].second),
                                  qPrintable(where + "\"" + text + "\" overlaps \"" + drawn.texts[j].first + "\""));

@@ -333,6 +333,15 @@ private slots:
         QVERIFY(readAll(out + "/figures.tex").contains("\\input{05-s-per-tikz}"));
         for (const char* file : {"00-world-tikz.tex", "05-s-per-tikz.tex", "figures.tex"})
             QVERIFY2(compilesWithPdflatex(out, file), qPrintable(file));
+
+        // The README's Beamer example, as it says to make it.
+        const QString slides = dir.filePath("slides");
+        QVERIFY(QDir().mkpath(slides));
+        QVERIFY(QFile::copy(QString(VIEWPIPE_SOURCE_DIR) + "/docs/examples/beamer.tex", slides + "/beamer.tex"));
+        const Run figures = viewpipe({"export", kHouse, "--out", slides + "/figures", "--stages", "4", "--format", "tikz",
+                                      "--size", "800x450", "--quiet"});
+        QVERIFY2(figures.exitCode == 0, qPrintable(figures.err));
+        QVERIFY(compilesWithPdflatex(slides, "beamer.tex"));
     }
 
     // The seeds' glOrtho example (seed 001): entries 1/25, -1/5, 1/20, -3/2, -1/4.

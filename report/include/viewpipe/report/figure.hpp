@@ -65,12 +65,13 @@ std::vector<std::string> wrapLines(const std::string& text, double width, const 
 
 // Where a picture's caption (top left), legend (top right) and effects note
 // (bottom left) go, in pixels: the caption beside the legend where that leaves
-// it half the width, above it otherwise; both texts wrapped to fit. Lines are
-// as high as "Ag" measures and 1.1 of that apart.
+// it half the width and two lines at most, above it otherwise; both texts
+// wrapped to fit; each box as high as its lines measure together (the
+// measure takes line breaks).
 struct PictureLayout {
     std::vector<std::string> captionLines, noteLines;
     Box2 caption, legend, note;
-    double captionLine = 0, noteLine = 0; // line heights
+    double captionLine = 0, noteLine = 0; // from one line's baseline to the next
 };
 PictureLayout layoutPicture(int width, int height, double fontSize, const Vec2<double>& legendSize,
                             const std::string& caption, const TextMeasure& captionMeasure, const std::string& note,
