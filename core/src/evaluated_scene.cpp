@@ -375,7 +375,7 @@ ObjectsShown addObjects(Builder& add, const EvaluatedScene& out)
 
 // The canonical volume's planes, named on their faces: x = -z ... z = z_min for
 // Foley's perspective volume, x = 1 ... z = 0 for its parallel one, and the
-// cube of normalized device coordinates for OpenGL.
+// cube of normalized device coordinates for OpenGL; and two of its corners.
 void addCanonicalLabels(Builder& add, const Pipeline<double>& pipeline, const ViewSetup<double>& setup)
 {
     const bool foley = pipeline.convention == Convention::Foley;
@@ -396,6 +396,12 @@ void addCanonicalLabels(Builder& add, const Pipeline<double>& pipeline, const Vi
         {foley ? "z = -1" : "z = 1 (far)", center({4, 5, 6, 7})}};
     for (const auto& [text, anchor] : planes)
         add.label(Element::Canonical, text, anchor, true);
+    // Two opposite corners with their coordinates: the front face's upper right, the back face's lower left.
+    for (const std::size_t k : {std::size_t(2), std::size_t(4)})
+        add.label(Element::Canonical,
+                  "(" + formatSignificant(c[k].x(), 3) + ", " + formatSignificant(c[k].y(), 3) + ", " +
+                      formatSignificant(c[k].z(), 3) + ")",
+                  c[k], true);
 }
 
 // The viewing set-up: the world and view axes, VRP, PRP, the window and CW,
@@ -564,6 +570,18 @@ std::vector<std::string> stageClaims(const Pipeline<double>& pipeline, const Vie
                                  return same(c.z(), k < 4 ? *pipeline.zmin : -1.0);
                              });
                          }});
+    if (!s.perspective) // T_par's and glOrtho's centring translation
+        facts.push_back({foley ? "the front face's center at the origin" : "the volume's center at the origin",
+                         [&](const Image& image) {
+                             V sum = V::Zero();
+                             for (std::size_t k = 0; k < (foley ? 4u : 8u); ++k) {
+                                 const std::optional<V> c = image(s.volume[k]);
+                                 if (!c)
+                                     return false;
+                                 sum += *c;
+                             }
+                             return same(sum.norm() / (foley ? 4 : 8), 0);
+                         }});
     if (!s.perspective && foley)
         facts.push_back({"the volume is -1 \u2264 x, y \u2264 1, -1 \u2264 z \u2264 0", [&](const Image& image) {
                              return corners(image, [&](const V& c, std::size_t k) {
@@ -716,6 +734,8 @@ std::string stageCaption(const EvaluatedScene& scene, std::size_t k, StageText t
     std::string note = k < scene.stageClaims.size() ? scene.stageClaims[k] : "";
     if (k > 0 && framedTogether(stages, int(k)).first == int(k))
         note += std::string(note.empty() ? "" : " ") + "(framed anew: this stage changes sizes)";
+    if (ghostAt(stages, int(k)))
+        note += std::string(note.empty() ? "" : " ") + "(faint: where it was before)";
     return stageText(stages, k, text) + (note.empty() ? "" : "\n" + note);
 }
 

@@ -272,6 +272,7 @@ std::vector<fs::path> exportStages(const std::shared_ptr<const EvaluatedScene>& 
 
         auto showAt = [&](int k, const std::string& caption) {
             painter.show(drawnAt(stages, k), StageTransition::canonicalOpacity(k, stages.size()));
+            painter.setGhost(ghostAt(stages, k));
             painter.setCaptions(caption, "");
             painter.frameOn(options.fixedFraming ? framing : StageTransition::framingAt(painter, stages, k));
             window->Render();
@@ -283,8 +284,8 @@ std::vector<fs::path> exportStages(const std::shared_ptr<const EvaluatedScene>& 
                                      (k == 0 ? std::string("world") : slug(stages[std::size_t(k - 1)].symbol));
             const std::string caption = stageCaption(*evaluated, std::size_t(k), StageText::Heading);
             showAt(k, caption);
-            const StageShown shown(*evaluated, drawnAt(stages, k),
-                                   StageTransition::canonicalOpacity(k, stages.size()));
+            StageShown shown(*evaluated, drawnAt(stages, k), StageTransition::canonicalOpacity(k, stages.size()));
+            shown.ghost = ghostAt(stages, k);
             const VectorFigure vector{&shown, painter.figureView(), caption, options.theme};
             for (const std::string& format : options.formats) {
                 // "-tikz.tex": pdflatex makes "-tikz.pdf" of it, not the PDF export's file.

@@ -166,8 +166,11 @@ void ScenePainter::clear()
 {
     for (const Layer& layer : layers_)
         world_->RemoveActor(layer.actor);
+    for (const Layer& ghost : ghosts_)
+        world_->RemoveActor(ghost.actor);
     for (const Label& label : labels_)
         world_->RemoveActor2D(label.actor);
+    ghosts_.clear();
     layers_.clear();
     labels_.clear();
 }
@@ -243,6 +246,14 @@ void ScenePainter::setScene(std::shared_ptr<const EvaluatedScene> scene)
         } else {
             addLayer(p, p.kind == PrimitiveKind::Faces ? meshData(*p.faces) : linesData(p.segments));
         }
+        if (StageShown::ghosted(p)) {
+            Layer ghost{&p, unlitActor(static_cast<vtkPolyDataMapper*>(layers_.back().actor->GetMapper())->GetInput())};
+            ghost.actor->SetPickable(false);
+            ghost.actor->SetUseBounds(false);
+            ghost.actor->SetVisibility(false);
+            world_->AddActor(ghost.actor);
+            ghosts_.push_back(ghost);
+        }
     }
     for (const viewpipe::Label& label : s.labels)
         addLabel(label);
@@ -269,6 +280,16 @@ void ScenePainter::show(const Mat4<double>& cumulative, double canonicalOpacity)
         } else {
             layer.actor->SetUserMatrix(matrix);
         }
+    }
+}
+
+void ScenePainter::setGhost(const std::optional<Mat4<double>>& ghost)
+{
+    const vtkSmartPointer<vtkMatrix4x4> matrix = ghost ? toVtk(*ghost) : nullptr;
+    for (Layer& layer : ghosts_) {
+        layer.actor->SetVisibility(ghost.has_value());
+        if (ghost)
+            layer.actor->SetUserMatrix(matrix);
     }
 }
 
@@ -658,10 +679,13 @@ void ScenePainter::applyStyle()
         vtkProperty* property = layer.actor->GetProperty();
         property->SetColor(c.r, c.g, c.b);
         property->SetOpacity(p.canonical ? canonicalOpacity_ : p.opacity);
-        const bool emphasised = p.element == Element::WorldAxes || p.element == Element::ViewAxes ||
-                                p.element == Element::Canonical || p.element == Element::Dop ||
-                                p.element == Element::ZFighting;
-        property->SetLineWidth(lineScale_ * (surface ? 1 : (emphasised ? 3.5 : 2.0)));
+        property->SetLineWidth(lineScale_ * lineWidthOf(p.element, surface));
+    }
+    for (Layer& ghost : ghosts_) {
+        const Rgb c = elementColor(ghost.primitive->element, theme_);
+        ghost.actor->GetProperty()->SetColor(c.r, c.g, c.b);
+        ghost.actor->GetProperty()->SetOpacity(kGhostOpacity);
+        ghost.actor->GetProperty()->SetLineWidth(lineScale_ * lineWidthOf(ghost.primitive->element, false));
     }
     for (Label& label : labels_)
         styleLabel(label);

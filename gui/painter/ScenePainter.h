@@ -51,6 +51,9 @@ public:
     // Shows every element through `cumulative`; the canonical volume's outline
     // is drawn with the given opacity (0 hides it).
     void show(const Mat4<double>& cumulative, double canonicalOpacity);
+    // Shows the objects' edges and the view volume faintly through `ghost` as
+    // well (where they were a stage before), or not.
+    void setGhost(const std::optional<Mat4<double>>& ghost);
 
     // Shows or hides every text: labels and captions.
     void setTextVisible(bool visible);
@@ -144,6 +147,7 @@ private:
     bool cutting_ = false;
     std::string worldCaptionText_, effectsNote_; // as given, before fitting
     std::vector<Layer> layers_;
+    std::vector<Layer> ghosts_; // the ghosted primitives again, faint, through the ghost's matrix
     std::vector<Label> labels_;
     // The frame axes' names and tick numbers, which change with the framing.
     std::vector<viewpipe::Label> frameLabelTexts_;

@@ -32,6 +32,7 @@ double StageTransition::canonicalOpacity(double position, std::size_t stageCount
 void StageTransition::showStage(ScenePainter& painter, const std::vector<Stage<double>>& stages, int stage)
 {
     painter.show(drawnAt(stages, stage), canonicalOpacity(stage, stages.size()));
+    painter.setGhost(ghostAt(stages, stage));
     painter.frameOn(framingAt(painter, stages, stage));
 }
 
@@ -48,6 +49,7 @@ ScenePainter::Framing StageTransition::framingAt(const ScenePainter& painter, co
 StageTransition::StageTransition(ScenePainter& painter, const std::vector<Stage<double>>& stages, int from, int to)
     : painter_(painter), stages_(stages), from_(from), to_(to)
 {
+    ghost_ = to == from + 1 ? ghostAt(stages, to) : std::nullopt; // where it starts, while it moves
     start_ = framingAt(painter, stages, from);
     end_ = framingAt(painter, stages, to);
     if (framedTogether(stages, from) == framedTogether(stages, to)) {
@@ -67,6 +69,7 @@ void StageTransition::apply(double s)
     const double motion = smooth((s - kWiden) / (1 - kWiden - kSettle));
     const double position = from_ + (to_ - from_) * motion;
     painter_.show(drawnAt(stages_, position), canonicalOpacity(position, stages_.size()));
+    painter_.setGhost(ghost_);
     if (s < kWiden)
         painter_.frameOn(blend(start_, sweep_, smooth(s / kWiden)));
     else if (s <= 1 - kSettle)

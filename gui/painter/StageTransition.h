@@ -7,6 +7,7 @@
 // closes in on the result. Nothing jumps: every phase starts where the last
 // one ended.
 
+#include <optional>
 #include <vector>
 
 #include "ScenePainter.h"
@@ -38,6 +39,7 @@ private:
     std::vector<Stage<double>> stages_;
     int from_, to_;
     ScenePainter::Framing start_, sweep_, end_;
+    std::optional<Mat4<double>> ghost_;
 };
 
 } // namespace viewpipe::gui

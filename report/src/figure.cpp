@@ -272,6 +272,12 @@ bool StageShown::shows(const Vec3<double>& world) const
     return !(cut && cut->dot(world.homogeneous()) < 0) && projectPoint(cumulative, world).has_value();
 }
 
+bool StageShown::ghosted(const Primitive& primitive)
+{
+    return primitive.kind == PrimitiveKind::Lines && !primitive.canonical &&
+           (primitive.element == Element::Objects || primitive.element == Element::Volume);
+}
+
 bool StageShown::draws(const Primitive& primitive) const
 {
     return !primitive.canonical || canonicalOpacity > 0;
@@ -322,11 +328,20 @@ std::vector<std::optional<PlacedLabel>> placeLabels(const std::vector<LabelReque
             c += 6 * shareInside(box, object);
         return c;
     };
-    auto free = [&](const Box2& box) {
+    std::vector<Segment2> leaders; // of the labels placed so far
+    // Free: inside the picture, off every box taken and (while leaders are
+    // kept apart) every leader drawn; with a leader to `anchor`, that leader
+    // crosses no box taken either.
+    bool leadersApart = true;
+    auto free = [&](const Box2& box, const std::optional<Vec2d>& anchor) {
         if (!picture.contains(box))
             return false;
+        const Segment2 leader = {anchor.value_or(box.min), anchor ? anchor->cwiseMax(box.min).cwiseMin(box.max) : box.min};
         for (const Box2& other : taken)
-            if (box.overlaps(other.grown(kPadding)))
+            if (box.overlaps(other.grown(kPadding)) || (leadersApart && anchor && segmentCrossesBox(leader, other.grown(1))))
+                return false;
+        for (const Segment2& line : leaders)
+            if (leadersApart && segmentCrossesBox(line, box.grown(1)))
                 return false;
         return true;
     };
@@ -337,7 +352,7 @@ std::vector<std::optional<PlacedLabel>> placeLabels(const std::vector<LabelReque
         double bestCost = 0;
         bool bestLeader = false;
         auto consider = [&](const Box2& box, double penalty, bool leader) {
-            if (!free(box))
+            if (!free(box, leader ? std::optional<Vec2d>(r.anchor) : std::nullopt))
                 return;
             const double c = cost(box) + penalty;
             if (!best || c < bestCost) {
@@ -360,15 +375,22 @@ std::vector<std::optional<PlacedLabel>> placeLabels(const std::vector<LabelReque
             if (best && bestCost < double(d) + 1)
                 break; // nothing further out can do better
         }
-        if (!best && !r.minor) { // crowded: the nearest free place anywhere, with a leader
+        // Crowded: the nearest free place anywhere, with a leader; failing that, one whose leader crosses others.
+        for (const bool apart : {true, false}) {
+            if (best || r.minor)
+                break;
+            leadersApart = apart;
             for (double y = picture.min.y(); y + r.size.y() <= picture.max.y(); y += 8)
                 for (double x = picture.min.x(); x + r.size.x() <= picture.max.x(); x += 8) {
                     const Box2 box{Vec2d(x, y), Vec2d(x, y) + r.size};
                     consider(box, 0.02 * (box.min + r.size / 2 - r.anchor).norm(), true);
                 }
         }
+        leadersApart = true;
         if (best) {
             taken.push_back(*best);
+            if (bestLeader)
+                leaders.push_back({r.anchor, r.anchor.cwiseMax(best->min).cwiseMin(best->max)});
             placed[k] = PlacedLabel{r.element, r.text, r.anchor, *best, bestLeader, r.minor};
         }
     }
@@ -477,6 +499,8 @@ std::vector<std::optional<PlacedLabel>> placeSceneLabels(const StageShown& stage
         if (!shown)
             continue;
         auto q = label.fixed ? std::optional<Vec3d>(label.anchor) : projectPoint(stage.cumulative, label.anchor);
+        if (label.element == Element::Frame && !label.minor && stage.cumulative.isIdentity(0))
+            continue; // the world's own axes name them
         if (label.element == Element::Frame && !label.minor) // an axis's name: at the end of it the picture shows
             for (double t = 1; t > 0.05; t -= 0.025)
                 if (const auto end = view.pixel(t * label.anchor); end && picture.grown(-0.05 * view.height).contains(Box2{end->head<2>(), end->head<2>()})) {
@@ -540,6 +564,16 @@ Figure drawFigure(const StageShown& stage, const FigureView& view, const LabelMe
                 figure.shapes.back().depth = std::numeric_limits<double>::infinity(); // behind all: the world axes lie on them at first
         }
     }
+    if (stage.ghost) // behind everything, faint
+        for (const Primitive& p : stage.scene->primitives)
+            if (StageShown::ghosted(p))
+                for (std::size_t k = 0; k + 1 < p.segments.size(); k += 2) {
+                    const std::size_t before = figure.shapes.size();
+                    add(p.element, false, kGhostOpacity,
+                        throughView(stage, view, *stage.ghost, {p.segments[k], p.segments[k + 1]}, false, false));
+                    if (figure.shapes.size() > before)
+                        figure.shapes.back().depth = std::numeric_limits<double>::infinity();
+                }
     // Back to front; at equal depth lines over faces.
     std::stable_sort(figure.shapes.begin(), figure.shapes.end(), [](const FigureShape& a, const FigureShape& b) {
         return a.depth > b.depth || (a.depth == b.depth && a.surface && !b.surface);

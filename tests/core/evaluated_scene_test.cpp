@@ -233,6 +233,24 @@ TEST(EvaluatedScene, StagesClaimWhatTheyAchieve)
     EXPECT_EQ(parallel->stageClaims.back(), "the volume is -1 \u2264 x, y \u2264 1, -1 \u2264 z \u2264 0");
 }
 
+// The canonical volume's planes and two corners are named where they are (not moved by a stage).
+TEST(EvaluatedScene, CanonicalVolumeIsLabelled)
+{
+    const auto scene = evaluateScene(house());
+    std::map<std::string, Vec3<double>> at;
+    for (const Label& label : scene->labels)
+        if (label.element == Element::Canonical) {
+            EXPECT_TRUE(label.fixed);
+            at[label.text] = label.anchor;
+        }
+    const double zmin = -24.0 / 59; // Foley's house: z_min = -(PRP_n - F) / (PRP_n - B) = -24/59
+    expectNear(at.at("z = -1"), Vec3<double>(0, 0, -1));
+    expectNear(at.at("z = z_min"), Vec3<double>(0, 0, zmin));
+    expectNear(at.at("x = -z"), Vec3<double>((-zmin + 1) / 2, 0, (zmin - 1) / 2));
+    expectNear(at.at("(0.407, 0.407, -0.407)"), Vec3<double>(-zmin, -zmin, zmin));
+    expectNear(at.at("(-1, -1, -1)"), Vec3<double>(-1, -1, -1));
+}
+
 TEST(EvaluatedScene, PointsAreMarkedWhereTheyAre)
 {
     // The house scene: PRP (8, 6, 84); CW at the origin (the window [-50, 50]^2 about VRP); the DOP's head at CW.

@@ -166,6 +166,38 @@ TEST(Figure, LabelsAnchorWhereTheirPointsAreSeen)
     EXPECT_NEAR((dot.points[0] - prp->anchor).norm(), 7, 1e-9);
 }
 
+// After a translation the objects' edges and the view volume are drawn again,
+// faint, where they were a stage before; not after the identity or a shear.
+TEST(Figure, TranslationsShowWhereThingsWere)
+{
+    const auto scene = evaluateScene(loadScene(fs::path(VIEWPIPE_DATA_DIR) / "scenes/house.json"));
+    const auto& stages = scene->pipeline.stages;
+    EXPECT_FALSE(ghostAt(stages, 1)); // T(-VRP) is the identity here: VRP is the origin
+    EXPECT_FALSE(ghostAt(stages, 4)); // SH_per changes shapes
+    ASSERT_TRUE(ghostAt(stages, 3));  // T(-PRP)
+    EXPECT_TRUE(ghostAt(stages, 3)->isApprox(drawnAt(stages, 2)));
+    EXPECT_NE(stageCaption(*scene, 3, StageText::Caption).find("faint: where it was before"), std::string::npos);
+
+    StageShown after(*scene, drawnAt(stages, 3), 0), before(*scene, drawnAt(stages, 2), 0);
+    after.ghost = ghostAt(stages, 3);
+    const FigureView view = viewOf(after);
+    const Figure now = drawFigure(after, view, measure, {}), then = drawFigure(before, view, measure, {});
+    std::vector<const FigureShape*> ghosts, moved;
+    for (const FigureShape& s : now.shapes)
+        if (s.opacity == kGhostOpacity)
+            ghosts.push_back(&s);
+    for (const FigureShape& s : then.shapes)
+        if (!s.surface && (s.element == Element::Objects || s.element == Element::Volume))
+            moved.push_back(&s);
+    ASSERT_EQ(ghosts.size(), moved.size());
+    ASSERT_GT(ghosts.size(), 20u);
+    for (const FigureShape* g : ghosts) // each ghost line lies where a line was before
+        EXPECT_TRUE(std::any_of(moved.begin(), moved.end(), [&](const FigureShape* m) {
+            return m->element == g->element && (m->points[0] - g->points[0]).norm() < 1e-6 &&
+                   (m->points[1] - g->points[1]).norm() < 1e-6;
+        }));
+}
+
 TEST(Tikz, LabelsInTheirUsualNotation)
 {
     EXPECT_EQ(texLabel("PRP"), "$\\mathrm{PRP}$");

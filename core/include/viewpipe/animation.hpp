@@ -9,6 +9,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <optional>
 #include <vector>
 
 #include "viewpipe/stage.hpp"
@@ -87,6 +88,19 @@ template <class T> Mat4<T> drawnAt(const std::vector<Stage<T>>& stages, double p
     const Eigen::Matrix<T, 1, 4> affine(T(0), T(0), T(0), T(1));
     m.row(3) = affine + share * (m.row(3) - affine);
     return m;
+}
+
+// The matrix of a faint ghost that pictures of stage k show: the stage
+// before, after a translation or rotation that moves something, so that a
+// student sees where things came from. None after other stages.
+template <class T> std::optional<Mat4<T>> ghostAt(const std::vector<Stage<T>>& stages, int k)
+{
+    if (k <= 0 || k > int(stages.size()))
+        return std::nullopt;
+    const Stage<T>& stage = stages[std::size_t(k - 1)];
+    if (!keepsShape(stage) || stage.matrix.isIdentity(T(0)))
+        return std::nullopt;
+    return drawnAt(stages, double(k - 1));
 }
 
 } // namespace viewpipe

@@ -33,6 +33,10 @@ struct StageShown {
     Mat4<double> cumulative;
     double canonicalOpacity;
     std::optional<Vec4<double>> cut; // world coordinates, kept where cut . p >= 0
+    // Where the objects' edges and the view volume's were a stage before, drawn faint (see ghostAt).
+    std::optional<Mat4<double>> ghost;
+    // The primitives a ghost repeats.
+    static bool ghosted(const Primitive& primitive);
     // Whether a world point is drawn: it has an image and is not cut away.
     bool shows(const Vec3<double>& world) const;
     // Whether a primitive is drawn at all (the canonical outline only while it has an opacity).
@@ -159,5 +163,7 @@ Figure drawFigure(const StageShown& stage, const FigureView& view, const LabelMe
 
 // The line width the pictures draw an element's lines with, in pixels at lineScale 1.
 double lineWidthOf(Element element, bool surface);
+// How much of its color a ghost's line keeps.
+constexpr double kGhostOpacity = 0.3;
 
 } // namespace viewpipe
