@@ -157,7 +157,7 @@ void paint(QPainter& painter, const Figure& figure, const Layout& layout, const 
         const QFontMetricsF metrics(painter.font());
         const QColor c = qtColor(elementColor(l.element, f.theme));
         if (l.leader) {
-            const Vec2<double> end = l.anchor.cwiseMax(l.box.min).cwiseMin(l.box.max);
+            const Vec2<double> end = l.box.nearest(l.anchor);
             painter.setPen(QPen(c, 1.5 * f.view.lineScale));
             painter.drawLine(QPointF(l.anchor.x(), l.anchor.y()), QPointF(end.x(), end.y()));
         }

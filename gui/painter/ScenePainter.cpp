@@ -448,7 +448,7 @@ void ScenePainter::placeLabelsOf(const StageShown& stage, const FigureView& view
         all[k]->actor->SetVisibility(true);
         all[k]->actor->SetPosition(p.box.min.x(), view.height - p.box.max.y()); // the text's lower left corner
         if (p.leader) {
-            leaders.push_back({up(p.anchor), up(p.anchor.cwiseMax(p.box.min).cwiseMin(p.box.max))});
+            leaders.push_back({up(p.anchor), up(p.box.nearest(p.anchor))});
             leaderColors.push_back(elementColor(p.element, theme_));
         }
     }

@@ -336,7 +336,7 @@ std::vector<std::optional<PlacedLabel>> placeLabels(const std::vector<LabelReque
     auto free = [&](const Box2& box, const std::optional<Vec2d>& anchor) {
         if (!picture.contains(box))
             return false;
-        const Segment2 leader = {anchor.value_or(box.min), anchor ? anchor->cwiseMax(box.min).cwiseMin(box.max) : box.min};
+        const Segment2 leader = {anchor.value_or(box.min), anchor ? box.nearest(*anchor) : box.min};
         for (const Box2& other : taken)
             if (box.overlaps(other.grown(kPadding)) || (leadersApart && anchor && segmentCrossesBox(leader, other.grown(1))))
                 return false;
@@ -390,7 +390,7 @@ std::vector<std::optional<PlacedLabel>> placeLabels(const std::vector<LabelReque
         if (best) {
             taken.push_back(*best);
             if (bestLeader)
-                leaders.push_back({r.anchor, r.anchor.cwiseMax(best->min).cwiseMin(best->max)});
+                leaders.push_back({r.anchor, best->nearest(r.anchor)});
             placed[k] = PlacedLabel{r.element, r.text, r.anchor, *best, bestLeader, r.minor};
         }
     }

@@ -148,7 +148,7 @@ std::string tikzFigure(const Figure& figure, Theme theme)
     for (const PlacedLabel& l : figure.labels) {
         const std::string key = elementKey(l.element);
         if (l.leader) {
-            const Vec2<double> end = l.anchor.cwiseMax(l.box.min).cwiseMin(l.box.max);
+            const Vec2<double> end = l.box.nearest(l.anchor);
             tex << "\\draw[vp leader, draw=vp" << key << "] " << point(l.anchor) << " -- " << point(end) << ";\n";
         }
         tex << "\\node[vp " << (l.minor ? std::string("tick") : key) << " label] at " << point(l.box.min) << " {"

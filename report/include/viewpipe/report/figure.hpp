@@ -22,6 +22,8 @@ struct Box2 {
     bool overlaps(const Box2& other) const;
     bool contains(const Box2& other) const;
     Box2 grown(double by) const;
+    // The box's point nearest `p`: where a leader line from p meets it.
+    Vec2<double> nearest(const Vec2<double>& p) const { return p.cwiseMax(min).cwiseMin(max); }
 };
 
 // A stage as the pictures show it: every element through the stage's
