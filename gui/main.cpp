@@ -25,6 +25,8 @@ int main(int argc, char** argv)
     addExportCommand(app);
     addClassifyCommand(app);
     addClassicalCommand(app);
+    addConvertCommand(app);
+    addCodeCommand(app);
     addSheetCommand(app);
     addBenchCommand(app, writeBenchPlot);
     return runCommandLine(app, argc, argv);

@@ -17,13 +17,15 @@ const std::array<std::pair<EffectKind, const char*>, 5> kEffectNames = {{{Effect
                                                                          {EffectKind::Raster, "raster"},
                                                                          {EffectKind::Cull, "cull"}}};
 
-// The six boundary values of a homogeneous point: inside where all are >= 0.
+// The six boundary values of a homogeneous point, in the order left, right,
+// bottom, top, near, far: inside where all are >= 0.
 std::array<double, 6> boundaries(const Vec4<double>& p, ClipVolume volume)
 {
     const double w = p.w();
-    const double zFar = p.z() + w;                                             // z >= -w
-    const double zNear = volume == ClipVolume::FoleyParallel ? -p.z() : w - p.z(); // z <= 0, or z <= w
-    return {w + p.x(), w - p.x(), w + p.y(), w - p.y(), zNear, zFar};
+    const double nearZ = nearPlaneZ(volume), farZ = farPlaneZ(volume);
+    const double towardFar = farZ > nearZ ? 1 : -1;
+    return {w + p.x(), w - p.x(), w + p.y(), w - p.y(), (p.z() - nearZ * w) * towardFar,
+            (farZ * w - p.z()) * towardFar};
 }
 
 } // namespace
@@ -155,7 +157,7 @@ std::vector<std::array<int, 2>> meshEdgeIndices(const PolygonMesh& mesh)
 double windowDepth(const Vec4<double>& clip, ClipVolume volume)
 {
     const double z = clip.z() / clip.w();
-    return volume == ClipVolume::FoleyParallel ? -z : (z + 1) / 2;
+    return (z - nearPlaneZ(volume)) / (farPlaneZ(volume) - nearPlaneZ(volume));
 }
 
 double storedDepth(double depth, const DepthOptions& options)
@@ -212,12 +214,11 @@ constexpr std::size_t kMaxFightFaces = 4000;
 std::array<Vec3<double>, 2> centerLine(const Pipeline<double>& p)
 {
     const Mat4<double> inverse = p.clipMatrix().inverse();
-    const bool foley = p.clipVolume == ClipVolume::FoleyParallel;
     auto world = [&inverse](double z) {
         const Vec4<double> h = inverse * Vec4<double>(0, 0, z, 1);
         return Vec3<double>(h.head<3>() / h.w());
     };
-    return {world(foley ? 0 : -1), world(foley ? -1 : 1)};
+    return {world(nearPlaneZ(p.clipVolume)), world(farPlaneZ(p.clipVolume))};
 }
 
 // The stored value at a distance along the center line, and the next place
@@ -377,9 +378,11 @@ std::vector<DepthSample> depthResolution(const Pipeline<double>& pipeline, const
 
 namespace {
 
-RasterOutcome rasterize(ClipVolume volume, const std::vector<PolygonMesh>& objects, const ClipPoints& points,
-                        const RasterOptions& options, const std::vector<std::vector<bool>>* culled)
+RasterOutcome rasterize(ClipVolume volume, bool ndcYDown, const std::vector<PolygonMesh>& objects,
+                        const ClipPoints& points, const RasterOptions& options,
+                        const std::vector<std::vector<bool>>* culled)
 {
+    const double up = ndcYDown ? -1 : 1;
     RasterOutcome out;
     out.width = options.width;
     out.height = options.height;
@@ -399,7 +402,7 @@ RasterOutcome rasterize(ClipVolume volume, const std::vector<PolygonMesh>& objec
             // To pixels: x, y in [0, width] x [0, height], and window depth.
             std::vector<Vec3<double>> screen;
             for (const Vec4<double>& h : polygon)
-                screen.emplace_back((h.x() / h.w() + 1) / 2 * options.width, (h.y() / h.w() + 1) / 2 * options.height,
+                screen.emplace_back((h.x() / h.w() + 1) / 2 * options.width, (up * h.y() / h.w() + 1) / 2 * options.height,
                                     windowDepth(h, volume));
             for (std::size_t k = 1; k + 1 < screen.size(); ++k) {
                 const Vec3<double>& a = screen[0];
@@ -441,7 +444,8 @@ RasterOutcome rasterize(ClipVolume volume, const std::vector<PolygonMesh>& objec
 RasterOutcome rasterize(const Pipeline<double>& pipeline, const std::vector<PolygonMesh>& objects,
                         const RasterOptions& options, const std::vector<std::vector<bool>>* culled)
 {
-    return rasterize(pipeline.clipVolume, objects, clipPoints(pipeline.clipMatrix(), objects), options, culled);
+    return rasterize(pipeline.clipVolume, pipeline.ndcYDown, objects, clipPoints(pipeline.clipMatrix(), objects),
+                     options, culled);
 }
 
 EffectOutcomes runEffects(const Pipeline<double>& pipeline, const std::vector<PolygonMesh>& objects,
@@ -490,7 +494,9 @@ EffectOutcomes runEffects(const Pipeline<double>& pipeline, const std::vector<Po
     }
     if (effects.depth) {
         outcomes.computed.push_back(EffectKind::Depth);
-        outcomes.depth = depthOutcome(pipeline, objects, points, *effects.depth);
+        DepthOptions options = *effects.depth;
+        options.reversed = options.reversed || reversedDepth(pipeline.clipVolume); // the matrix reverses it
+        outcomes.depth = depthOutcome(pipeline, objects, points, options);
     }
     if (effects.has(EffectKind::Cull)) {
         outcomes.computed.push_back(EffectKind::Cull);
@@ -500,7 +506,8 @@ EffectOutcomes runEffects(const Pipeline<double>& pipeline, const std::vector<Po
             for (const std::vector<int>& face : objects[o].faces) {
                 // Signed area of the face in the picture (x, y after the
                 // divide), faces wound counter-clockwise seen from outside:
-                // a front face keeps that winding seen from the viewer (+z).
+                // a front face keeps that winding seen from the viewer (+z),
+                // or turns clockwise where the picture is mirrored.
                 double area = 0;
                 bool behind = false;
                 for (std::size_t k = 0; k < face.size(); ++k) {
@@ -509,7 +516,7 @@ EffectOutcomes runEffects(const Pipeline<double>& pipeline, const std::vector<Po
                     behind = behind || p.w() <= 0;
                     area += (p.x() / p.w()) * (q.y() / q.w()) - (q.x() / q.w()) * (p.y() / p.w());
                 }
-                const bool back = !behind && area <= 0;
+                const bool back = !behind && (pipeline.frontFacesClockwise ? area >= 0 : area <= 0);
                 culled.push_back(back);
                 ++c.faces;
                 c.culled += back;
@@ -520,7 +527,7 @@ EffectOutcomes runEffects(const Pipeline<double>& pipeline, const std::vector<Po
     }
     if (effects.raster) {
         outcomes.computed.push_back(EffectKind::Raster);
-        outcomes.raster = rasterize(pipeline.clipVolume, objects, points, *effects.raster,
+        outcomes.raster = rasterize(pipeline.clipVolume, pipeline.ndcYDown, objects, points, *effects.raster,
                                     outcomes.cull ? &outcomes.cull->culledFaces : nullptr);
     }
     return outcomes;

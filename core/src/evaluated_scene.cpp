@@ -188,12 +188,12 @@ std::vector<Segment2> vanishingLines(const CameraSpec<double>& camera, const Pip
                                      const std::vector<Segment>& edges)
 {
     std::vector<Segment2> picture;
-    const Mat4<double> image = pipeline.clipMatrix();
+    const Mat4<double> image = screenClipMatrix(pipeline);
     for (int axis = 0; axis < 3; ++axis) {
-        const std::optional<VanishingPoint> vp = vanishingPoint(camera, axis);
-        if (!vp)
+        if (!vanishingPoint(camera, axis))
             continue;
-        const Vec2<double> target = vp->image.head<2>();
+        const Vec4<double> h = image * Vec4<double>::Unit(axis); // the image of the axis' direction
+        const Vec2<double> target = h.head<2>() / h.w();
         const double arm = 0.04;
         picture.push_back({target - Vec2<double>(arm, 0), target + Vec2<double>(arm, 0)});
         picture.push_back({target - Vec2<double>(0, arm), target + Vec2<double>(0, arm)});
@@ -387,13 +387,18 @@ void addCanonicalLabels(Builder& add, const Pipeline<double>& pipeline, const Vi
             sum += c[k];
         return Vec3<double>(sum / double(corners.size()));
     };
+    // A camera's planes are named by where its API puts them: z from its depth
+    // range, and top and bottom because Vulkan's y points down.
+    auto plane = [&](const char* axis, double value, const char* end) {
+        return std::string(axis) + " = " + formatSignificant(value, 3) + (foley ? "" : std::string(" (") + end + ")");
+    };
     const std::vector<std::pair<std::string, Vec3<double>>> planes = {
-        {perspective ? "x = -z" : "x = 1", center({1, 2, 5, 6})},
-        {perspective ? "x = z" : "x = -1", center({0, 3, 4, 7})},
-        {perspective ? "y = -z" : "y = 1", center({2, 3, 6, 7})},
-        {perspective ? "y = z" : "y = -1", center({0, 1, 4, 5})},
-        {perspective ? "z = z_min" : foley ? "z = 0" : "z = -1 (near)", center({0, 1, 2, 3})},
-        {foley ? "z = -1" : "z = 1 (far)", center({4, 5, 6, 7})}};
+        {perspective ? "x = -z" : plane("x", c[1].x(), "right"), center({1, 2, 5, 6})},
+        {perspective ? "x = z" : plane("x", c[0].x(), "left"), center({0, 3, 4, 7})},
+        {perspective ? "y = -z" : plane("y", c[2].y(), "top"), center({2, 3, 6, 7})},
+        {perspective ? "y = z" : plane("y", c[0].y(), "bottom"), center({0, 1, 4, 5})},
+        {perspective ? "z = z_min" : plane("z", c[0].z(), "near"), center({0, 1, 2, 3})},
+        {plane("z", c[4].z(), "far"), center({4, 5, 6, 7})}};
     for (const auto& [text, anchor] : planes)
         add.label(Element::Canonical, text, anchor, true);
     // Two opposite corners with their coordinates: the front face's upper right, the back face's lower left.
@@ -422,12 +427,16 @@ void addSetUp(Builder& add, const EvaluatedScene& out, bool farCut)
 
     const bool foley = out.pipeline.convention == Convention::Foley;
     const Vec3<double>& vrp = setup.origin;
+    // A left-handed eye's axes: x = up x f = -s, y = u, z = f (glm's lookAtLH calls its x axis s).
+    const double mirror = setup.leftHanded ? -1 : 1;
     add.lines(Element::ViewAxes,
-              {{vrp, vrp + setup.axes.u * axis}, {vrp, vrp + setup.axes.v * axis}, {vrp, vrp + setup.axes.n * axis}},
+              {{vrp, vrp + mirror * setup.axes.u * axis},
+               {vrp, vrp + setup.axes.v * axis},
+               {vrp, vrp + mirror * setup.axes.n * axis}},
               1.0);
-    add.label(Element::ViewAxes, foley ? "u" : "s", vrp + setup.axes.u * axis);
+    add.label(Element::ViewAxes, foley ? "u" : "s", vrp + mirror * setup.axes.u * axis);
     add.label(Element::ViewAxes, foley ? "v" : "u", vrp + setup.axes.v * axis);
-    add.label(Element::ViewAxes, foley ? "n" : "-f", vrp + setup.axes.n * axis);
+    add.label(Element::ViewAxes, foley ? "n" : setup.leftHanded ? "f" : "-f", vrp + mirror * setup.axes.n * axis);
     if (foley)
         add.label(Element::ViewAxes, "VRP", vrp);
 
@@ -484,7 +493,10 @@ void fillLegends(EvaluatedScene& out, const ObjectsShown& shown, bool farCut)
     if (out.bands)
         effectEntries.push_back({"depth bands, near to far", Element::Objects, Swatch::Bands});
     auto& world = out.worldLegend;
-    world = {{foley ? "VRP and the VRC axes u, v, n" : "eye axes s, u, -f", Element::ViewAxes, Swatch::Line}};
+    world = {{foley                     ? "VRP and the VRC axes u, v, n"
+              : out.setup.leftHanded ? "eye axes s = up \u00d7 f, u, f (left-handed)"
+                                     : "eye axes s, u, -f",
+              Element::ViewAxes, Swatch::Line}};
     if (out.setup.perspective)
         world.push_back(
             {foley ? "PRP, center of projection" : "eye, center of projection", Element::Prp, Swatch::Dot});
@@ -542,11 +554,15 @@ std::vector<std::string> stageClaims(const Pipeline<double>& pipeline, const Vie
     std::vector<Fact> facts = {{foley ? "VRP at the origin" : "eye at the origin", atOrigin(s.origin)}};
     if (foley && s.perspective)
         facts.push_back({"PRP at the origin", atOrigin(s.prp)});
-    facts.push_back({foley ? "u, v, n along x, y, z" : "s, u, -f along x, y, -z: the eye looks down -z",
+    const Mat3<double> eyeRows = s.leftHanded ? Mat3<double>(Vec3<double>(-1, 1, -1).asDiagonal() * s.axes.rotation())
+                                              : s.axes.rotation();
+    facts.push_back({foley          ? "u, v, n along x, y, z"
+                     : s.leftHanded ? "s, u, f along x, y, z: the eye looks down +z"
+                                    : "s, u, -f along x, y, -z: the eye looks down -z",
                      [&](const Image& image) {
                          const std::optional<V> o = image(s.origin);
                          for (int k = 0; k < 3 && o; ++k) {
-                             const std::optional<V> tip = image(s.origin + s.axes.rotation().row(k).transpose());
+                             const std::optional<V> tip = image(s.origin + eyeRows.row(k).transpose());
                              if (!tip || !same(((*tip - *o).normalized() - V::Unit(k)).norm(), 0))
                                  return false;
                          }
@@ -588,13 +604,27 @@ std::vector<std::string> stageClaims(const Pipeline<double>& pipeline, const Vie
                                  return same(std::abs(c.x()), 1) && same(std::abs(c.y()), 1) && same(c.z(), k < 4 ? 0 : -1);
                              });
                          }});
-    if (!foley)
+    // OpenGL's cube after the projection, then the API's volume after the step to its clip coordinates.
+    auto volumeIs = [&](const std::array<V, 8>& canonical) {
+        return [&, canonical](const Image& image) {
+            return corners(image, [&](const V& c, std::size_t k) { return same((c - canonical[k]).norm(), 0); });
+        };
+    };
+    if (!foley) {
+        std::array<V, 8> cube;
+        for (std::size_t k = 0; k < 8; ++k)
+            cube[k] = V((k % 4 == 1 || k % 4 == 2) ? 1 : -1, k % 4 >= 2 ? 1 : -1, k < 4 ? -1 : 1);
         facts.push_back({"the volume is the cube -1 \u2264 x, y, z \u2264 1: near at z = -1, far at z = 1",
-                         [&](const Image& image) {
-                             return corners(image, [&](const V& c, std::size_t k) {
-                                 return same(std::abs(c.x()), 1) && same(std::abs(c.y()), 1) && same(c.z(), k < 4 ? -1 : 1);
-                             });
-                         }});
+                         volumeIs(cube)});
+        if (s.canonical != cube) {
+            const double nearZ = s.canonical[0].z(), farZ = s.canonical[4].z();
+            facts.push_back({"the volume is -1 \u2264 x, y \u2264 1, " + formatSignificant(std::min(nearZ, farZ), 3) +
+                                 " \u2264 z \u2264 " + formatSignificant(std::max(nearZ, farZ), 3) +
+                                 ": near at z = " + formatSignificant(nearZ, 3) + ", far at z = " +
+                                 formatSignificant(farZ, 3) + (s.canonical[0].y() > 0 ? "; y points down" : ""),
+                             volumeIs(s.canonical)});
+        }
+    }
 
     std::vector<std::string> claims(pipeline.stages.size() + 1);
     std::vector<bool> before(facts.size());
@@ -661,7 +691,7 @@ std::shared_ptr<const EvaluatedScene> evaluate(const Scene& scene, MeshCache* ca
     const ObjectsShown shown = addObjects(add, out);
     addSetUp(add, out, farCut);
     out.vanishingLines = vanishingLines(drawn, out.pipeline, shown.builtInEdges); // x and y do not depend on the far plane
-    out.zFightingRing = ringAround(shown.fighting, out.pipeline.clipMatrix());
+    out.zFightingRing = ringAround(shown.fighting, screenClipMatrix(out.pipeline));
     out.effectsNote = describeEffects(scene.effects, out.outcomes, out.pipeline, out.bands);
     fillLegends(out, shown, farCut);
     out.stageClaims = stageClaims(out.pipeline, out.setup);

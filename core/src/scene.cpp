@@ -157,7 +157,7 @@ gl::ProjectionSpec<double> readGlProjection(const Json& j)
 
 gl::Camera<double> readCamera(const Json& j)
 {
-    requireObject(j, "camera", {"look_at", "projection"}, {"look_at", "projection"});
+    requireObject(j, "camera", {"look_at", "projection", "api", "handedness", "depth"}, {"look_at", "projection"});
     const std::set<std::string> lookKeys = {"eye", "center", "up"};
     requireObject(j["look_at"], "camera.look_at", lookKeys, lookKeys);
     gl::Camera<double> camera;
@@ -166,6 +166,23 @@ gl::Camera<double> readCamera(const Json& j)
                      readVec3(j["look_at"]["up"], "camera.look_at.up")};
     gl::eyeBasis(camera.lookAt);
     camera.projection = readGlProjection(j["projection"]);
+    if (j.contains("api"))
+        camera.api = gl::apiNamed(readString(j["api"], "camera.api"), "camera.api");
+    camera.handedness = gl::defaultHandedness(camera.api);
+    if (j.contains("handedness")) {
+        const std::string handedness = readString(j["handedness"], "camera.handedness");
+        if (handedness != "right" && handedness != "left")
+            throw InputError("camera.handedness", "must be \"right\" (the eye looks down -z) or \"left\" (down +z) (got \"" +
+                                                      handedness + "\")");
+        camera.handedness = handedness == "left" ? gl::Handedness::Left : gl::Handedness::Right;
+    }
+    if (j.contains("depth")) {
+        const std::string depth = readString(j["depth"], "camera.depth");
+        if (depth != "standard" && depth != "reversed")
+            throw InputError("camera.depth", "must be \"standard\" or \"reversed\" (near and far exchanged) (got \"" +
+                                                 depth + "\")");
+        camera.depth = depth == "reversed" ? gl::DepthMode::Reversed : gl::DepthMode::Standard;
+    }
     return camera;
 }
 
@@ -317,10 +334,17 @@ Json cameraJson(const CameraSpec<double>& camera)
         projection = {{"type", "ortho"}, {"left", o.left},   {"right", o.right}, {"bottom", o.bottom},
                       {"top", o.top},    {"near", o.zNear}, {"far", o.zFar}};
     }
-    return {{"camera",
-             {{"look_at",
-               {{"eye", vec3Json(gl.lookAt.eye)}, {"center", vec3Json(gl.lookAt.center)}, {"up", vec3Json(gl.lookAt.up)}}},
-              {"projection", projection}}}};
+    Json out = {{"look_at",
+                 {{"eye", vec3Json(gl.lookAt.eye)}, {"center", vec3Json(gl.lookAt.center)}, {"up", vec3Json(gl.lookAt.up)}}},
+                {"projection", projection}};
+    // The conventions only where they differ from the defaults: OpenGL scenes stay as they were written.
+    if (gl.api != gl::Api::OpenGL)
+        out["api"] = gl::apiName(gl.api);
+    if (gl.handedness != gl::defaultHandedness(gl.api))
+        out["handedness"] = gl::handednessName(gl.handedness);
+    if (gl.depth != gl::DepthMode::Standard)
+        out["depth"] = gl::depthModeName(gl.depth);
+    return {{"camera", out}};
 }
 
 // nlohmann's DOM builder, told where each value goes, so that a number too

@@ -451,8 +451,11 @@ void MainWindow::updateEffectsMenu()
         effects.depth ? QString("%1,%2").arg(effects.depth->bits).arg(effects.depth->floating ? 1 : 0) : QString();
     for (QAction* action : depthGroup_->actions())
         action->setChecked(action->data().toString() == format);
-    reversedAction_->setChecked(effects.depth && effects.depth->reversed);
-    reversedAction_->setEnabled(effects.depth.has_value());
+    // A camera with reversed depth reverses the buffer itself (Parameters ▸ Depth).
+    const auto* camera = std::get_if<gl::Camera<double>>(&document_->scene().camera);
+    const bool cameraReversed = camera && camera->depth == gl::DepthMode::Reversed;
+    reversedAction_->setChecked(effects.depth && (effects.depth->reversed || cameraReversed));
+    reversedAction_->setEnabled(effects.depth.has_value() && !cameraReversed);
     // A size from the scene file that the menu does not offer leaves all unchecked.
     const QSize size = effects.raster ? QSize(effects.raster->width, effects.raster->height) : QSize();
     for (QAction* action : rasterGroup_->actions())
@@ -824,6 +827,7 @@ void MainWindow::rebuildPresetMenu()
     };
     addScenes(presetMenu_, QDir(scenesDirectory()));
     addScenes(presetMenu_->addMenu(tr("Classical projections")), QDir(scenesDirectory() + "/classical"));
+    addScenes(presetMenu_->addMenu(tr("Graphics APIs")), QDir(scenesDirectory() + "/apis"));
 }
 
 void MainWindow::chooseClassicalProjection()

@@ -281,6 +281,20 @@ void ParameterPanel::addFields(const CameraSpec<double>& camera)
     addRow("camera.look_at.up", tr("Up"), {"upX", "upY", "upZ"},
            tr("gluLookAt up: the up direction, in world coordinates; any length but zero, not parallel to "
               "center − eye."));
+    QStringList apis;
+    for (const gl::Api api : gl::kApis)
+        apis << QString::fromStdString(gl::apiTitle(api));
+    addChoice("camera.api", tr("API"), apis,
+              tooltip(tr("API"), tr("Whose conventions the projection follows: OpenGL's depth runs from -1 (near) to "
+                                    "1 (far), the others' from 0 to 1, and Vulkan's y points down. A stage after "
+                                    "the projection takes OpenGL's clip coordinates to the API's.")));
+    addChoice("camera.handedness", tr("Handedness"), {tr("right: the eye looks down -z"), tr("left: down +z")},
+              tooltip(tr("Handedness"), tr("Right-handed (gluLookAt, glm::lookAtRH): eye axes s, u, -f. "
+                                           "Left-handed (XMMatrixLookAtLH, glm::lookAtLH): eye axes up × f, u, f; "
+                                           "with the same numbers the picture is mirrored.")));
+    addChoice("camera.depth", tr("Depth"), {tr("standard: near to the low end"), tr("reversed: near to 1")},
+              tooltip(tr("Depth"), tr("Reversed depth exchanges near and far in the depth range: with a float "
+                                      "depth buffer, precision then stays nearly even with distance.")));
     addChoice("camera.projection.type", tr("Projection"), {"glFrustum", "glOrtho", "gluPerspective"},
               tooltip(tr("Projection"), tr("The projection matrix: glFrustum, glOrtho or gluPerspective. Switching "
                                            "keeps near, far and the size of the near plane's rectangle.")));
@@ -430,11 +444,19 @@ void ParameterPanel::fill(const QWidget* except)
     }
     for (QBoxLayout* numbers : numbers_)
         numbers->invalidate(); // their texts decide between side by side and one under another
-    const auto* spec = std::get_if<foley::ViewSpec<double>>(&camera_);
-    QComboBox* choice = choices_.value(spec ? "view.projection" : "camera.projection.type");
-    if (choice != except)
-        choice->setCurrentIndex(spec ? (spec->projection == foley::Projection::Perspective ? 0 : 1)
-                                     : int(std::get<gl::Camera<double>>(camera_).projection.index()));
+    QMap<QString, int> chosen;
+    if (const auto* spec = std::get_if<foley::ViewSpec<double>>(&camera_)) {
+        chosen["view.projection"] = spec->projection == foley::Projection::Perspective ? 0 : 1;
+    } else {
+        const auto& gl = std::get<gl::Camera<double>>(camera_);
+        chosen["camera.projection.type"] = int(gl.projection.index());
+        chosen["camera.api"] = int(gl.api); // in the order of gl::kApis
+        chosen["camera.handedness"] = gl.handedness == gl::Handedness::Right ? 0 : 1;
+        chosen["camera.depth"] = gl.depth == gl::DepthMode::Standard ? 0 : 1;
+    }
+    for (auto c = chosen.cbegin(); c != chosen.cend(); ++c)
+        if (QComboBox* choice = choices_.value(c.key()); choice && choice != except)
+            choice->setCurrentIndex(c.value());
     filling_ = false;
 }
 
@@ -477,7 +499,14 @@ void ParameterPanel::choose(const QString& field, int index)
         spec->projection = index == 0 ? foley::Projection::Perspective : foley::Projection::Parallel;
     } else {
         auto& gl = std::get<gl::Camera<double>>(candidate);
-        gl.projection = convertProjection(gl.projection, index);
+        if (field == "camera.api")
+            gl.api = gl::kApis[index];
+        else if (field == "camera.handedness")
+            gl.handedness = index == 0 ? gl::Handedness::Right : gl::Handedness::Left;
+        else if (field == "camera.depth")
+            gl.depth = index == 0 ? gl::DepthMode::Standard : gl::DepthMode::Reversed;
+        else
+            gl.projection = convertProjection(gl.projection, index);
     }
     fill(choices_.value(field));
     emitEdit(candidate, field);

@@ -17,6 +17,8 @@ void addTraceCommand(CLI::App& app);
 void addCheckCommand(CLI::App& app);
 void addClassifyCommand(CLI::App& app);
 void addClassicalCommand(CLI::App& app);
+void addConvertCommand(CLI::App& app);
+void addCodeCommand(CLI::App& app);
 
 // `bench --plot FILE` draws through `writePlot`, given by the drawing commands.
 using BenchPlotWriter = std::function<void(const cli::BenchResult& result, const std::string& file)>;

@@ -12,6 +12,8 @@ struct TraceOptions {
     std::vector<double> point;
     bool json = false;
     PrecisionOptions precision;
+    std::string api;                // "all" or an API's name: the point under each API's conventions
+    std::string viewport = "640x480";
 };
 
 int runTrace(const TraceOptions& options)
@@ -20,6 +22,16 @@ int runTrace(const TraceOptions& options)
         const Scene scene = loadScene(options.scene);
         const cli::PrecisionChoice precision = cli::parsePrecision(options.precision.precision, options.precision.bits);
         const Vec3<double> point(options.point[0], options.point[1], options.point[2]);
+        if (!options.api.empty()) {
+            if (precision.type != cli::Precision::Double)
+                throw InputError("--precision", "the --api table is computed in double precision");
+            const auto [width, height] = parseSize(options.viewport, "--viewport");
+            if (options.json)
+                std::cout << cli::apiTraceJson(scene, point, options.api, width, height).dump() << "\n";
+            else
+                cli::printApiTrace(std::cout, scene, point, options.api, width, height);
+            return 0;
+        }
         if (options.json)
             std::cout << cli::traceJson(scene, point, precision).dump() << "\n";
         else
@@ -37,6 +49,10 @@ void addTraceCommand(CLI::App& app)
     command->add_option("SCENE", options->scene, "Scene file (JSON)")->required();
     command->add_option("--point", options->point, "World coordinates X Y Z")->expected(3)->required();
     command->add_flag("--json", options->json, "One JSON object on stdout");
+    command->add_option("--api", options->api,
+                        "all, or opengl, direct3d, vulkan, metal, webgpu: the point through the camera's numbers "
+                        "under each API's conventions (handedness, depth), to clip, NDC and window coordinates");
+    command->add_option("--viewport", options->viewport, "With --api: the viewport's size WxH (default 640x480)");
     addPrecision(command, options->precision);
     setRun(command, [options] { return runTrace(*options); });
 }

@@ -31,16 +31,6 @@
 namespace viewpipe::gui {
 namespace {
 
-// Foley's canonical parallel volume (z in [-1, 0]) to OpenGL's NDC cube, so
-// that VTK's camera can show what a Foley view sees: z_gl = -2 z - w.
-Mat4<double> foleyToGlClip()
-{
-    Mat4<double> d = Mat4<double>::Identity();
-    d(2, 2) = -2;
-    d(2, 3) = -1;
-    return d;
-}
-
 vtkSmartPointer<vtkActor2D> overlay(vtkCoordinate* viewCoordinates)
 {
     auto actor = vtkSmartPointer<vtkActor2D>::New();
@@ -185,9 +175,7 @@ void ProjectedView::setScene(const EvaluatedScene& scene,
     for (const StyledActor& a : actors_)
         renderer_->AddActor(a.actor);
 
-    Mat4<double> clip = scene.pipeline.clipMatrix();
-    if (scene.pipeline.convention == Convention::Foley)
-        clip = foleyToGlClip() * clip;
+    const Mat4<double> clip = screenClipMatrix(scene.pipeline);
     std::vector<std::pair<Vec2<double>, int>> pixels;
     Vec2<double> pixelSize(0, 0);
     if (const auto& raster = scene.outcomes.raster) {

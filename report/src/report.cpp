@@ -9,6 +9,7 @@
 #include <type_traits>
 
 #include "viewpipe/accuracy.hpp"
+#include "viewpipe/api.hpp"
 #include "viewpipe/classical.hpp"
 #include "viewpipe/format.hpp"
 
@@ -156,9 +157,10 @@ template <class F> auto withPrecision(const PrecisionChoice& precision, F&& f)
     return f(double{});
 }
 
-std::string conventionName(Convention c)
+// "foley", or the camera's API: "opengl", "direct3d", ...
+template <class T> std::string conventionName(const Pipeline<T>& p)
 {
-    return c == Convention::Foley ? "foley" : "opengl";
+    return p.convention == Convention::Foley ? "foley" : gl::apiName(p.api);
 }
 
 } // namespace
@@ -191,7 +193,7 @@ Json pipelineJson(const Scene& scene, const PrecisionChoice& precision, const Ef
         using T = decltype(zero);
         const Pipeline<T> p = pipelineFor<T>(scene);
         const std::vector<Mat4<T>> cumulative = cumulativeProducts(p.stages);
-        Json out = {{"convention", conventionName(p.convention)},
+        Json out = {{"convention", conventionName(p)},
                     {"projection", projectionName(p.projection)},
                     {"precision", precisionName(precision)}};
         Json stages = Json::array();
@@ -210,8 +212,19 @@ Json pipelineJson(const Scene& scene, const PrecisionChoice& precision, const Ef
             out["zmin"] = number(*p.zmin);
         if (p.view)
             out["view"] = matrixJson(*p.view);
-        if (p.projectionMatrix)
+        if (p.projectionMatrix) {
             out["projection_matrix"] = matrixJson(*p.projectionMatrix);
+            const auto& camera = std::get<gl::Camera<double>>(scene.camera);
+            out["handedness"] = gl::handednessName(camera.handedness);
+            out["depth"] = gl::depthModeName(camera.depth);
+            out["api_matrix"] = matrixJson(gl::asDocumented(*p.projectionMatrix, p.api));
+            out["api_matrix_vectors"] = gl::rowVectors(p.api) ? "row" : "column";
+            Json order = Json::array();
+            for (const T& x : gl::memoryOrder(*p.projectionMatrix))
+                order.push_back(number(x));
+            out["memory_order"] = order;
+            out["memory_order_library"] = gl::memoryOrderLibrary(p.api);
+        }
         if (!scene.effects.empty())
             out["effects"] = effectsJson(scene, outcomes);
         return out;
@@ -226,7 +239,7 @@ void printPipeline(std::ostream& out, const Scene& scene, const PrecisionChoice&
         const Pipeline<T> p = pipelineFor<T>(scene);
         const Pipeline<double> names = pipelineFor<double>(scene);
         const std::vector<Mat4<T>> cumulative = cumulativeProducts(p.stages);
-        out << scene.name << ": " << (p.convention == Convention::Foley ? "Foley" : "OpenGL") << ", "
+        out << scene.name << ": " << (p.convention == Convention::Foley ? "Foley" : gl::apiTitle(p.api)) << ", "
             << projectionName(p.projection) << ", " << precisionName(precision) << " precision\n"
             << "Column vectors: p' = M p. Each stage's matrix, and the product of all stages so far.\n\n";
         std::string product;
@@ -250,8 +263,20 @@ void printPipeline(std::ostream& out, const Scene& scene, const PrecisionChoice&
                 << "  (canonical perspective volume: x = +-z, y = +-z, z = z_min, z = -1)\n";
         if (p.view && p.projectionMatrix) {
             out << "\n";
-            printSideBySide(out, matrixLines(*p.view), matrixLines(*p.projectionMatrix), "view (lookAt)",
-                            "projection (" + projectionName(p.projection) + ")");
+            const auto& camera = std::get<gl::Camera<double>>(scene.camera);
+            printSideBySide(out, matrixLines(*p.view), matrixLines(*p.projectionMatrix),
+                            "view (lookAt, " + gl::handednessName(camera.handedness) + "-handed)",
+                            "projection (" + projectionName(p.projection) + ", " + gl::depthModeName(camera.depth) +
+                                " depth)");
+            if (gl::rowVectors(p.api)) {
+                out << "\n    As " << gl::apiTitle(p.api) << "'s documentation writes it, for row vectors (p' = p M):\n";
+                for (const std::string& line : matrixLines(gl::asDocumented(*p.projectionMatrix, p.api)))
+                    out << "    " << line << "\n";
+            }
+            out << "\n    In memory (" << gl::memoryOrderLibrary(p.api) << "):\n    ";
+            for (const T& x : gl::memoryOrder(*p.projectionMatrix))
+                out << " " << shortNumber(x);
+            out << "\n";
         }
         if (!scene.effects.empty()) {
             const Json effects = effectsJson(scene, outcomes);
@@ -272,7 +297,7 @@ Json traceJson(const Scene& scene, const Vec3<double>& point, const PrecisionCho
         Json stages = Json::array();
         for (std::size_t k = 0; k < p.stages.size(); ++k)
             stages.push_back({{"symbol", p.stages[k].symbol}, {"point", vectorJson(trace.afterStage[k])}});
-        Json out{{"convention", conventionName(p.convention)},
+        Json out{{"convention", conventionName(p)},
                  {"projection", projectionName(p.projection)},
                  {"precision", precisionName(precision)},
                  {"point", vectorJson(point)},
@@ -291,6 +316,88 @@ Json traceJson(const Scene& scene, const Vec3<double>& point, const PrecisionCho
         }
         return out;
     });
+}
+
+Json apiTraceJson(const Scene& scene, const Vec3<double>& point, const std::string& apiChoice, int width, int height)
+{
+    std::optional<gl::Api> only;
+    std::string known = "\"all\"";
+    for (const gl::Api api : gl::kApis) {
+        known += ", \"" + gl::apiName(api) + "\"";
+        if (apiChoice == gl::apiName(api))
+            only = api;
+    }
+    if (!only && apiChoice != "all")
+        throw InputError("--api", "must be one of " + known + " (got \"" + apiChoice + "\")");
+    const auto* camera = std::get_if<gl::Camera<double>>(&scene.camera);
+    if (!camera)
+        throw InputError("--api", "needs a scene with a \"camera\" (look_at and projection); this scene has a "
+                                  "Foley view, which follows no graphics API");
+    Json rows = Json::array();
+    for (const gl::Api api : gl::kApis)
+        for (const gl::Handedness handedness : {gl::Handedness::Right, gl::Handedness::Left})
+            for (const gl::DepthMode depth : {gl::DepthMode::Standard, gl::DepthMode::Reversed}) {
+                if (only && api != *only)
+                    continue;
+                gl::Camera<double> variant = *camera;
+                variant.api = api;
+                variant.handedness = handedness;
+                variant.depth = depth;
+                const Pipeline<double> p = buildPipeline(variant);
+                const Vec4<double> clip = p.clipMatrix() * point.homogeneous();
+                Json row = {{"api", gl::apiName(api)},
+                            {"handedness", gl::handednessName(handedness)},
+                            {"depth", gl::depthModeName(depth)},
+                            {"clip", vectorJson(clip)},
+                            {"inside", insideClipVolume(clip, p.clipVolume)},
+                            {"window_origin", gl::windowOriginTopLeft(api) ? "top-left" : "bottom-left"}};
+                if (clip.w() != 0) {
+                    const Vec3<double> ndc = clip.head<3>() / clip.w();
+                    row["ndc"] = vectorJson(ndc);
+                    row["window"] = vectorJson(gl::windowCoordinates(api, ndc, width, height));
+                } else {
+                    row["ndc"] = row["window"] = nullptr;
+                }
+                rows.push_back(row);
+            }
+    return {{"point", vectorJson(point)}, {"viewport", {width, height}}, {"rows", rows}};
+}
+
+void printApiTrace(std::ostream& out, const Scene& scene, const Vec3<double>& point, const std::string& api,
+                   int width, int height)
+{
+    const Json t = apiTraceJson(scene, point, api, width, height);
+    auto show = [](const Json& v) {
+        if (v.is_null())
+            return std::string("none (w = 0)");
+        std::string s = "(";
+        for (std::size_t i = 0; i < v.size(); ++i)
+            s += (i ? ", " : "") + shortNumber(v[i].get<double>());
+        return s + ")";
+    };
+    out << "Point " << show(t["point"]) << " through the camera of " << scene.name
+        << " under each API's conventions, the same numbers in every row.\n"
+        << "Window coordinates: a " << width << " x " << height
+        << " viewport at (0, 0), depth range [0, 1]; the origin as each API puts it.\n\n";
+    std::vector<std::array<std::string, 8>> table = {
+        {"api", "hand", "depth", "clip (x, y, z, w)", "NDC (x, y, z)", "window (x, y, z)", "origin", ""}};
+    for (const Json& row : t["rows"])
+        table.push_back({gl::apiTitle(gl::apiNamed(row["api"], "api")), row["handedness"], row["depth"],
+                         show(row["clip"]), show(row["ndc"]), show(row["window"]), row["window_origin"],
+                         row["inside"].get<bool>() ? "inside" : "outside"});
+    std::array<std::size_t, 8> widths{};
+    for (const auto& line : table)
+        for (std::size_t c = 0; c < line.size(); ++c)
+            widths[c] = std::max(widths[c], line[c].size());
+    for (const auto& line : table) {
+        std::string text;
+        for (std::size_t c = 0; c < line.size(); ++c)
+            text += line[c] + std::string(c + 1 < line.size() ? widths[c] - line[c].size() + 2 : 0, ' ');
+        out << text.substr(0, text.find_last_not_of(' ') + 1) << "\n";
+    }
+    out << "\nLeft-handed rows see the world mirrored (the same numbers, lookAtLH): window x becomes " << width
+        << " - x.\nReversed rows exchange near and far: window z becomes 1 - z. Vulkan's clip y is negated and its "
+           "window y runs down, so the point lands where Direct3D, Metal and WebGPU put it.\n";
 }
 
 void printTrace(std::ostream& out, const Scene& scene, const Vec3<double>& point, const PrecisionChoice& precision)

@@ -100,7 +100,8 @@ struct EvaluatedScene {
     std::vector<Label> labels;
     std::vector<Marker> markers; // drawn over the primitives
     std::vector<LegendEntry> worldLegend, projectedLegend;
-    // The projected view's marks in the picture's coordinates (x, y in [-1, 1]).
+    // The projected view's marks in the picture's coordinates as a screen shows them (x, y in [-1, 1],
+    // y up: screenClipMatrix).
     std::vector<Segment2> vanishingLines;
     std::vector<Segment2> zFightingRing;
     // One line per listed effect: what it found.

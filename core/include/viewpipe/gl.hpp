@@ -5,6 +5,13 @@
 // clip space with NDC x, y, z in [-1, 1] after the divide. Column-vector
 // convention (p' = M p). glFrustum and gluPerspective accept far = +infinity
 // and return the infinite projection's exact limit.
+//
+// The other APIs' cameras are these forms with at most two more stages: a
+// left-handed camera (lookAtLH, eye looking down +z) mirrors z before the
+// projection, and each API's normalized device coordinates are reached from
+// OpenGL's by one linear map of clip space (depth in [0, 1], y down, reversed
+// depth). Their products are the APIs' own matrices (glm's *_NO/*_ZO,
+// DirectXMath's XMMatrix*LH/RH transposed), as tests/core/api_test.cpp checks.
 
 #include <array>
 #include <string>
@@ -34,15 +41,58 @@ template <class T> struct Perspective {
 
 template <class T> using ProjectionSpec = std::variant<Frustum<T>, Ortho<T>, Perspective<T>>;
 
+// The graphics API whose conventions the camera follows (scene key "api").
+enum class Api { OpenGL, Direct3D, Vulkan, Metal, WebGPU };
+enum class Handedness { Right, Left };   // right: the eye looks down -z; left: down +z
+enum class DepthMode { Standard, Reversed }; // reversed: near -> the far end of the depth range, far -> the near end
+
+inline constexpr Api kApis[] = {Api::OpenGL, Api::Direct3D, Api::Vulkan, Api::Metal, Api::WebGPU};
+
+// "opengl", "direct3d", "vulkan", "metal", "webgpu": as scene files name it.
+std::string apiName(Api api);
+// "OpenGL", "Direct3D", "Vulkan", "Metal", "WebGPU": as people name it.
+std::string apiTitle(Api api);
+// The API called `name`; throws InputError(field, ...) naming the known ones.
+Api apiNamed(const std::string& name, const std::string& field);
+std::string handednessName(Handedness handedness); // "right", "left"
+std::string depthModeName(DepthMode depth);        // "standard", "reversed"
+
+// Direct3D's cameras are left-handed by default, every other API's right-handed.
+inline Handedness defaultHandedness(Api api)
+{
+    return api == Api::Direct3D ? Handedness::Left : Handedness::Right;
+}
+// NDC depth in [0, 1] (every API but OpenGL, whose depth is in [-1, 1]).
+inline bool zeroToOneDepth(Api api)
+{
+    return api != Api::OpenGL;
+}
+// Vulkan's NDC y points down; its matrices negate clip y so that up stays up.
+inline bool yDown(Api api)
+{
+    return api == Api::Vulkan;
+}
+// Window (framebuffer) coordinates start at the top left, y down (OpenGL's at the bottom left, y up).
+inline bool windowOriginTopLeft(Api api)
+{
+    return api != Api::OpenGL;
+}
+
 template <class T> struct Camera {
     LookAt<T> lookAt;
     ProjectionSpec<T> projection;
+    Api api = Api::OpenGL;
+    Handedness handedness = Handedness::Right;
+    DepthMode depth = DepthMode::Standard;
 
     // Every number converted by `convert` (T to U).
     template <class U, class F> Camera<U> convert(F&& convert) const
     {
         auto v = [&](const Vec3<T>& x) { return Vec3<U>(convert(x.x()), convert(x.y()), convert(x.z())); };
         Camera<U> out;
+        out.api = api;
+        out.handedness = handedness;
+        out.depth = depth;
         out.lookAt = {v(lookAt.eye), v(lookAt.center), v(lookAt.up)};
         std::visit(
             [&](const auto& p) {
@@ -81,10 +131,21 @@ template <class T> Basis<T> eyeBasis(const LookAt<T>& look)
                                "camera.look_at.up");
 }
 
-template <class T> Mat4<T> lookAt(const LookAt<T>& look)
+// The rows of the view rotation: right-handed (gluLookAt, glm::lookAtRH) s, u, -f;
+// left-handed (glm::lookAtLH, XMMatrixLookAtLH) up x f = -s, u, f.
+template <class T> Mat3<T> eyeRotation(const LookAt<T>& look, Handedness handedness)
 {
-    const Basis<T> basis = eyeBasis(look);
-    const Mat3<T> r = basis.rotation();
+    Mat3<T> r = eyeBasis(look).rotation();
+    if (handedness == Handedness::Left) {
+        r.row(0) = -r.row(0);
+        r.row(2) = -r.row(2);
+    }
+    return r;
+}
+
+template <class T> Mat4<T> lookAt(const LookAt<T>& look, Handedness handedness = Handedness::Right)
+{
+    const Mat3<T> r = eyeRotation(look, handedness);
     Mat4<T> m = embedLinear(r);
     m.template topRightCorner<3, 1>() = -(r * look.eye);
     return m;
@@ -223,15 +284,76 @@ template <class T> Mat4<T> projectionMatrix(const ProjectionSpec<T>& spec)
         spec);
 }
 
-// The view transformation as stages: T(-eye), then R_eye (rows s, u, -f).
-template <class T> std::vector<Stage<T>> lookAtStages(const LookAt<T>& look)
+// A left-handed eye space (looking down +z) as the right-handed one the
+// OpenGL forms are written for: z mirrored. glm's *LH_* projections are its
+// *RH_* ones times this matrix, and so are DirectXMath's (glm 0.9.9's
+// frustumLH_* excepted: its off-center terms keep the RH signs, glm#982).
+template <class T> Mat4<T> handednessFlip()
 {
-    const Basis<T> basis = eyeBasis(look);
+    return scaling<T>(T(1), T(1), T(-1));
+}
+
+// OpenGL's clip coordinates to the API's, one linear map of (x, y, z, w):
+// depth in [0, 1] takes z' = (z + w)/2 (reversed: (w - z)/2), OpenGL's
+// reversed depth z' = -z, and Vulkan's y down y' = -y.
+template <class T> Mat4<T> ndcConversion(Api api, DepthMode depth)
+{
+    const bool reversed = depth == DepthMode::Reversed;
+    Mat4<T> m = Mat4<T>::Identity();
+    if (zeroToOneDepth(api)) {
+        m(2, 2) = T(reversed ? -1 : 1) / T(2);
+        m(2, 3) = T(1) / T(2);
+    } else if (reversed) {
+        m(2, 2) = T(-1);
+    }
+    if (yDown(api))
+        m(1, 1) = T(-1);
+    return m;
+}
+
+// The camera's projection in the column-vector convention: its API's matrix
+// (DirectXMath's transposed), with its handedness and depth.
+template <class T> Mat4<T> projectionMatrix(const Camera<T>& camera)
+{
+    Mat4<T> m = ndcConversion<T>(camera.api, camera.depth) * projectionMatrix(camera.projection);
+    if (camera.handedness == Handedness::Left)
+        m = m * handednessFlip<T>();
+    return m;
+}
+
+template <class T> Mat4<T> viewMatrix(const Camera<T>& camera)
+{
+    return lookAt(camera.lookAt, camera.handedness);
+}
+
+// The view transformation as stages: T(-eye), then R_eye (rows s, u, -f; left-handed -s, u, f).
+template <class T> std::vector<Stage<T>> lookAtStages(const LookAt<T>& look, Handedness handedness = Handedness::Right)
+{
     return {
         {"T(-eye)", "translate the eye to the origin", translation<T>(-look.eye)},
-        {"R_eye", "rotate so that the view direction becomes -z and up lies in the y-z plane",
-         embedLinear(basis.rotation())},
+        {"R_eye",
+         handedness == Handedness::Left
+             ? "rotate so that the view direction becomes +z and up lies in the y-z plane (left-handed)"
+             : "rotate so that the view direction becomes -z and up lies in the y-z plane",
+         embedLinear(eyeRotation(look, handedness))},
     };
+}
+
+// The stage after the projection that takes OpenGL's clip coordinates to the
+// API's: "NDC_direct3d", ..., "NDC_reversed" for OpenGL's reversed depth.
+template <class T> Stage<T> ndcStage(Api api, DepthMode depth)
+{
+    const bool reversed = depth == DepthMode::Reversed;
+    std::string what;
+    if (zeroToOneDepth(api))
+        what = reversed ? "z' = (w - z)/2, near 1, far 0" : "z' = (z + w)/2, near 0, far 1";
+    else
+        what = "z' = -z, near 1, far -1";
+    if (yDown(api))
+        what += "; y' = -y, as y points down (or: a negative viewport height)";
+    return {"NDC_" + (api == Api::OpenGL ? std::string("reversed") : apiName(api)),
+            "OpenGL's clip coordinates to " + apiTitle(api) + "'s" + (reversed ? ", reversed" : "") + ": " + what,
+            ndcConversion<T>(api, depth)};
 }
 
 // Each projection as stages whose product is its reference matrix.
@@ -273,17 +395,27 @@ template <class T> std::vector<Stage<T>> projectionStages(const ProjectionSpec<T
         spec);
 }
 
+// The camera's stages: the view, a mirror of z for a left-handed camera, the
+// OpenGL projection's stages, and the step to the API's clip coordinates.
 template <class T> std::vector<Stage<T>> stages(const Camera<T>& camera)
 {
-    std::vector<Stage<T>> all = lookAtStages(camera.lookAt);
+    std::vector<Stage<T>> all = lookAtStages(camera.lookAt, camera.handedness);
+    if (camera.handedness == Handedness::Left)
+        all.push_back({"Z_flip",
+                       "mirror z: the left-handed eye space, looking down +z, becomes the right-handed one the "
+                       "projection is written for",
+                       handednessFlip<T>()});
     for (Stage<T>& stage : projectionStages(camera.projection))
         all.push_back(std::move(stage));
+    if (camera.api != Api::OpenGL || camera.depth == DepthMode::Reversed)
+        all.push_back(ndcStage<T>(camera.api, camera.depth));
     return all;
 }
 
 // The view volume's 8 corners in world coordinates: near face first, then
-// far face, each in the order (l,b), (r,b), (r,t), (l,t). They map to the NDC
-// cube's corners, near face at z = -1.
+// far face, each in the order (l,b), (r,b), (r,t), (l,t) of the eye's x and y
+// (a left-handed eye's x is -s). They map to the NDC cube's corners, near face
+// at z = -1, before the step to the API's clip coordinates.
 template <class T> std::array<Vec3<T>, 8> viewVolumeCorners(const Camera<T>& camera)
 {
     using std::isinf;
@@ -313,7 +445,8 @@ template <class T> std::array<Vec3<T>, 8> viewVolumeCorners(const Camera<T>& cam
         const T depth = k < 4 ? box.zNear : box.zFar;
         // A frustum's far face is its near face scaled by far / near.
         const T spread = box.perspective ? depth / box.zNear : T(1);
-        const Vec3<T> eyePoint(face[k % 4][0] * spread, face[k % 4][1] * spread, -depth);
+        const T x = camera.handedness == Handedness::Left ? -face[k % 4][0] : face[k % 4][0];
+        const Vec3<T> eyePoint(x * spread, face[k % 4][1] * spread, -depth);
         corners[k] = camera.lookAt.eye + eyePoint.x() * basis.u + eyePoint.y() * basis.v + eyePoint.z() * basis.n;
     }
     return corners;

@@ -30,8 +30,46 @@ template <class U, class T, class F> CameraSpec<U> convertCamera(const CameraSpe
 
 // The canonical volume in clip (homogeneous) coordinates, tested without
 // dividing: Foley's parallel volume -w <= x, y <= w, -w <= z <= 0 (Foley's
-// perspective volume is taken there by M), OpenGL's -w <= x, y, z <= w; w > 0.
-enum class ClipVolume { FoleyParallel, OpenGL };
+// perspective volume is taken there by M), OpenGL's -w <= x, y, z <= w, the
+// other APIs' -w <= x, y <= w, 0 <= z <= w; w > 0. Reversed volumes are the
+// same sets with near and far exchanged.
+enum class ClipVolume { FoleyParallel, OpenGL, OpenGLReversed, ZeroToOne, ZeroToOneReversed };
+
+// The NDC z of the near (Foley: front) and far (back) planes.
+inline double nearPlaneZ(ClipVolume volume)
+{
+    switch (volume) {
+    case ClipVolume::FoleyParallel: return 0;
+    case ClipVolume::OpenGL: return -1;
+    case ClipVolume::ZeroToOne: return 0;
+    case ClipVolume::OpenGLReversed:
+    case ClipVolume::ZeroToOneReversed: return 1;
+    }
+    return 0;
+}
+inline double farPlaneZ(ClipVolume volume)
+{
+    switch (volume) {
+    case ClipVolume::FoleyParallel: return -1;
+    case ClipVolume::OpenGL:
+    case ClipVolume::ZeroToOne: return 1;
+    case ClipVolume::OpenGLReversed: return -1;
+    case ClipVolume::ZeroToOneReversed: return 0;
+    }
+    return 0;
+}
+inline bool reversedDepth(ClipVolume volume)
+{
+    return volume == ClipVolume::OpenGLReversed || volume == ClipVolume::ZeroToOneReversed;
+}
+
+inline ClipVolume clipVolumeOf(gl::Api api, gl::DepthMode depth)
+{
+    const bool reversed = depth == gl::DepthMode::Reversed;
+    if (gl::zeroToOneDepth(api))
+        return reversed ? ClipVolume::ZeroToOneReversed : ClipVolume::ZeroToOne;
+    return reversed ? ClipVolume::OpenGLReversed : ClipVolume::OpenGL;
+}
 
 // The projection a pipeline ends in: Foley's two, or OpenGL's three.
 enum class ProjectionKind { Perspective, Parallel, Frustum, Ortho };
@@ -56,6 +94,12 @@ template <class T> struct Pipeline {
     std::optional<Mat4<T>> projectionMatrix; // OpenGL: glFrustum, glOrtho or gluPerspective
     Mat4<T> toClip = Mat4<T>::Identity();  // after the composite, before the divide: Foley's M, or I
     ClipVolume clipVolume = ClipVolume::FoleyParallel;
+    gl::Api api = gl::Api::OpenGL;         // a camera's API (Foley's views: OpenGL's orientation rules)
+    // A face wound counter-clockwise seen from outside, turned toward the eye,
+    // winds clockwise in NDC x, y: the picture is mirrored (a left-handed
+    // camera, Vulkan's y down, left > right).
+    bool frontFacesClockwise = false;
+    bool ndcYDown = false;                 // Vulkan: NDC y = -1 is the top of the picture
 
     // World coordinates to clip coordinates: where the volume is tested and the divide taken.
     Mat4<T> clipMatrix() const { return toClip * composite; }
@@ -83,10 +127,16 @@ template <class T> Pipeline<T> buildPipeline(const gl::Camera<T>& camera)
     p.convention = Convention::OpenGL;
     p.projection = projectionKind(camera.projection);
     p.stages = gl::stages(camera);
-    p.view = gl::lookAt(camera.lookAt);
-    p.projectionMatrix = gl::projectionMatrix(camera.projection);
+    p.view = gl::viewMatrix(camera);
+    p.projectionMatrix = gl::projectionMatrix(camera);
     p.composite = *p.projectionMatrix * *p.view;
-    p.clipVolume = ClipVolume::OpenGL;
+    p.clipVolume = clipVolumeOf(camera.api, camera.depth);
+    p.api = camera.api;
+    p.ndcYDown = gl::yDown(camera.api);
+    // The winding in x, y follows the signs of the x and y scales, and which way the eye looks along z.
+    const T& xScale = (*p.projectionMatrix)(0, 0);
+    const T& yScale = (*p.projectionMatrix)(1, 1);
+    p.frontFacesClockwise = ((xScale > T(0)) != (yScale > T(0))) != (camera.handedness == gl::Handedness::Left);
     return p;
 }
 
@@ -95,14 +145,33 @@ template <class T> Pipeline<T> buildPipeline(const CameraSpec<T>& camera)
     return std::visit([](const auto& c) { return buildPipeline(c); }, camera);
 }
 
+// The picture as a screen shows it, in OpenGL's clip coordinates (what an
+// OpenGL renderer such as VTK draws with): Foley's parallel volume moved onto
+// OpenGL's cube (z_gl = -2z - w), an API's clip coordinates taken back to
+// OpenGL's, so that Vulkan's y down shows the right way up and reversed depth
+// still draws near things in front.
+template <class T> Mat4<T> screenClipMatrix(const Pipeline<T>& p)
+{
+    Mat4<T> toOpenGl = Mat4<T>::Identity();
+    if (p.convention == Convention::Foley) {
+        toOpenGl(2, 2) = T(-2);
+        toOpenGl(2, 3) = T(-1);
+    } else {
+        const gl::DepthMode depth = reversedDepth(p.clipVolume) ? gl::DepthMode::Reversed : gl::DepthMode::Standard;
+        toOpenGl = gl::ndcConversion<T>(p.api, depth).inverse();
+    }
+    return toOpenGl * p.clipMatrix();
+}
+
 template <class T> bool insideClipVolume(const Vec4<T>& clip, ClipVolume volume)
 {
     const T& w = clip.w();
     if (!(w > T(0)))
         return false; // behind the eye or on the eye plane: outside, no divide needed
     const bool xyInside = -w <= clip.x() && clip.x() <= w && -w <= clip.y() && clip.y() <= w;
+    const T zLow = volume == ClipVolume::ZeroToOne || volume == ClipVolume::ZeroToOneReversed ? T(0) : -w;
     const T zHigh = volume == ClipVolume::FoleyParallel ? T(0) : w;
-    return xyInside && -w <= clip.z() && clip.z() <= zHigh;
+    return xyInside && zLow <= clip.z() && clip.z() <= zHigh;
 }
 
 template <class T> struct PointTrace {

@@ -14,7 +14,8 @@ namespace viewpipe {
 
 template <class T> struct ViewSetup {
     Vec3<T> origin;                        // VRP, or the eye for OpenGL cameras
-    Basis<T> axes;                         // u, v, n (OpenGL: s, u, -f)
+    Basis<T> axes;                         // u, v, n (OpenGL: s, u, -f, whatever the camera's handedness)
+    bool leftHanded = false;               // a left-handed camera: its eye axes are -s, u, f
     Vec3<T> prp;                           // center of projection; for parallel views, PRP as given
     bool perspective = true;
     std::array<Vec3<T>, 4> window;         // on the view plane (OpenGL: the near plane)
@@ -55,8 +56,14 @@ template <class T> ViewSetup<T> viewSetup(const gl::Camera<T>& camera)
         s.window[k] = s.volume[k];
         s.windowCenter += s.volume[k] / T(4);
     }
-    for (std::size_t k = 0; k < 8; ++k)
-        s.canonical[k] = Vec3<T>((k % 4 == 1 || k % 4 == 2) ? 1 : -1, k % 4 >= 2 ? 1 : -1, k < 4 ? -1 : 1);
+    s.leftHanded = camera.handedness == gl::Handedness::Left;
+    // OpenGL's NDC cube, taken to the API's.
+    const Mat4<T> toApi = gl::ndcConversion<T>(camera.api, camera.depth);
+    for (std::size_t k = 0; k < 8; ++k) {
+        const Vec4<T> corner((k % 4 == 1 || k % 4 == 2) ? 1 : -1, k % 4 >= 2 ? 1 : -1, k < 4 ? -1 : 1, 1);
+        const Vec4<T> h = toApi * corner;
+        s.canonical[k] = h.template head<3>() / h.w();
+    }
     if (!s.perspective) // an orthographic camera's projectors run along -f from the near-plane corners
         s.prp = s.windowCenter + s.axes.n * (s.volume[4] - s.volume[0]).norm();
     return s;

@@ -32,6 +32,15 @@ void printPipeline(std::ostream& out, const Scene& scene, const PrecisionChoice&
 nlohmann::json traceJson(const Scene& scene, const Vec3<double>& point, const PrecisionChoice& precision);
 void printTrace(std::ostream& out, const Scene& scene, const Vec3<double>& point, const PrecisionChoice& precision);
 
+// `viewpipe trace --api all|NAME`: the point through the scene's camera
+// numbers under every API (or the one named), handedness and depth: clip
+// coordinates, NDC, and window coordinates in a width x height viewport.
+// Throws InputError("--api") for a Foley view or an unknown API.
+nlohmann::json apiTraceJson(const Scene& scene, const Vec3<double>& point, const std::string& api, int width,
+                            int height);
+void printApiTrace(std::ostream& out, const Scene& scene, const Vec3<double>& point, const std::string& api,
+                   int width, int height);
+
 // `viewpipe classify`: the classical projection a scene's camera realizes.
 nlohmann::json classifyJson(const Scene& scene);
 void printClassification(std::ostream& out, const Scene& scene);
