@@ -218,7 +218,13 @@ std::array<Vec3<double>, 2> centerLine(const Pipeline<double>& p)
         const Vec4<double> h = inverse * Vec4<double>(0, 0, z, 1);
         return Vec3<double>(h.head<3>() / h.w());
     };
-    return {world(nearPlaneZ(p.clipVolume)), world(farPlaneZ(p.clipVolume))};
+    const double nearZ = nearPlaneZ(p.clipVolume), farZ = farPlaneZ(p.clipVolume);
+    Vec3<double> far = world(farZ);
+    // A far plane at infinity: the line ends where depth has come 99.9 % of the
+    // way (a thousand times the near distance, for a perspective).
+    if (!far.allFinite())
+        far = world(nearZ + 0.999 * (farZ - nearZ));
+    return {world(nearZ), far};
 }
 
 // The stored value at a distance along the center line, and the next place

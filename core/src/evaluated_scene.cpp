@@ -619,9 +619,9 @@ std::vector<std::string> stageClaims(const Pipeline<double>& pipeline, const Vie
         if (s.canonical != cube) {
             const double nearZ = s.canonical[0].z(), farZ = s.canonical[4].z();
             facts.push_back({"the volume is -1 \u2264 x, y \u2264 1, " + formatSignificant(std::min(nearZ, farZ), 3) +
-                                 " \u2264 z \u2264 " + formatSignificant(std::max(nearZ, farZ), 3) +
-                                 ": near at z = " + formatSignificant(nearZ, 3) + ", far at z = " +
-                                 formatSignificant(farZ, 3) + (s.canonical[0].y() > 0 ? "; y points down" : ""),
+                                 " \u2264 z \u2264 " + formatSignificant(std::max(nearZ, farZ), 3) + " (near " +
+                                 formatSignificant(nearZ, 3) + ", far " + formatSignificant(farZ, 3) + ")" +
+                                 (s.canonical[0].y() > 0 ? "; y points down" : ""),
                              volumeIs(s.canonical)});
         }
     }

@@ -488,6 +488,16 @@ Scene parseScene(const std::string& text, const std::filesystem::path& baseDir)
     return scene;
 }
 
+const gl::Camera<double>& lookAtCamera(const Scene& scene, const std::string& purpose)
+{
+    const auto* camera = std::get_if<gl::Camera<double>>(&scene.camera);
+    if (!camera)
+        throw InputError("camera", "is missing: " + purpose +
+                                       " need a look_at camera; this scene has a Foley view (\"view\"), which "
+                                       "follows no graphics API");
+    return *camera;
+}
+
 Scene loadScene(const std::filesystem::path& file)
 {
     std::ifstream in(file, std::ios::binary);

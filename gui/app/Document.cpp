@@ -8,17 +8,26 @@ namespace {
 class SceneEdit : public QUndoCommand {
 public:
     using State = std::shared_ptr<const EvaluatedScene>;
-    SceneEdit(Document* document, State before, State after, const QString& text)
-        : QUndoCommand(text), document_(document), before_(std::move(before)), after_(std::move(after))
+    SceneEdit(Document* document, State before, State after, const QString& text, int gesture)
+        : QUndoCommand(text), document_(document), before_(std::move(before)), after_(std::move(after)),
+          gesture_(gesture)
     {
     }
     void undo() override { document_->restore(before_); }
     void redo() override { document_->restore(after_); }
+    int id() const override { return gesture_; }
+    // The same gesture goes on: one edit from where it started to where it is now.
+    bool mergeWith(const QUndoCommand* other) override
+    {
+        after_ = static_cast<const SceneEdit*>(other)->after_;
+        return true;
+    }
 
 private:
     Document* document_;
     State before_;
     State after_;
+    int gesture_;
 };
 
 } // namespace
@@ -50,11 +59,11 @@ void Document::save(const QString& path)
     emit fileChanged();
 }
 
-void Document::setCamera(const CameraSpec<double>& camera, const QString& description)
+void Document::setCamera(const CameraSpec<double>& camera, const QString& description, int gesture)
 {
     Scene next = scene();
     next.camera = camera;
-    replace(std::move(next), description);
+    replace(std::move(next), description, gesture);
 }
 
 void Document::setEffects(const EffectList& effects, const QString& description)
@@ -73,13 +82,13 @@ void Document::addObject(const SceneObject& object, const QString& description)
 
 void Document::markRecovered(const Scene& saved)
 {
-    undo_.push(new SceneEdit(this, evaluator_.evaluate(saved), evaluated_, tr("Recover unsaved changes")));
+    undo_.push(new SceneEdit(this, evaluator_.evaluate(saved), evaluated_, tr("Recover unsaved changes"), -1));
 }
 
-void Document::replace(Scene next, const QString& description)
+void Document::replace(Scene next, const QString& description, int gesture)
 {
     std::shared_ptr<const EvaluatedScene> after = evaluator_.evaluate(next); // throws InputError: nothing changes
-    undo_.push(new SceneEdit(this, evaluated_, std::move(after), description));
+    undo_.push(new SceneEdit(this, evaluated_, std::move(after), description, gesture));
 }
 
 void Document::restore(std::shared_ptr<const EvaluatedScene> state)

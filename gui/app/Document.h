@@ -40,9 +40,10 @@ public:
     // Throws InputError when the file cannot be written.
     void save(const QString& path);
 
-    // Validates with the core; on success pushes an undoable edit and returns
-    // true, otherwise throws InputError and changes nothing.
-    void setCamera(const CameraSpec<double>& camera, const QString& description);
+    // Validates with the core; on success pushes an undoable edit, otherwise
+    // throws InputError and changes nothing. Consecutive edits with the same
+    // `gesture` (>= 0: one drag of a number) make one undoable edit.
+    void setCamera(const CameraSpec<double>& camera, const QString& description, int gesture = -1);
     void addObject(const SceneObject& object, const QString& description);
     void setEffects(const EffectList& effects, const QString& description);
 
@@ -58,7 +59,7 @@ signals:
     void fileChanged();
 
 private:
-    void replace(Scene next, const QString& description);
+    void replace(Scene next, const QString& description, int gesture = -1);
 
     SceneEvaluator evaluator_;
     std::shared_ptr<const EvaluatedScene> evaluated_;

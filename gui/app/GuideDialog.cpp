@@ -93,6 +93,22 @@ axis, <b>S_frustum</b> scales its sides to x = &plusmn;z, y = &plusmn;z, then
 <p>With the Divide effect an OpenGL camera gains the stage <b>divide</b>:
 clip coordinates become normalized device coordinates (NDC).</p>
 
+<h3>Direct3D, Vulkan, Metal and WebGPU</h3>
+<p>The Parameters panel's API, Handedness and Depth choices (the scene's
+"api", "handedness" and "depth") give the same camera another API's
+conventions, as extra stages around OpenGL's projection:</p>
+<ul>
+<li><b>Z_flip</b>, after R_eye for a left-handed camera (XMMatrixLookAtLH,
+glm::lookAtLH: the eye looks down +z): z is mirrored so that the projection's
+stages apply.</li>
+<li><b>NDC_direct3d</b>, <b>NDC_vulkan</b>, <b>NDC_metal</b>,
+<b>NDC_webgpu</b>: OpenGL's clip coordinates to the API's, depth from 0 (near)
+to 1 (far), and for Vulkan y' = -y; with reversed depth near goes to 1 and far
+to 0 (OpenGL's own reversed depth: <b>NDC_reversed</b>).</li>
+</ul>
+<p>The products are the APIs' own matrices (glm, DirectXMath). The presets
+under Graphics APIs show one view in each.</p>
+
 <h3>The panels</h3>
 <ul>
 <li><b>Matrices</b>: the current stage's matrix, symbolic (with the formulas
@@ -103,6 +119,10 @@ traced vertex.</li>
 window, F and B; or eye, center, up and the projection). Edit one and the
 pipeline is rebuilt; a value the mathematics refuses is explained beside its
 field and the last valid scene stays.</li>
+<li><b>The camera as code</b>, below the parameters: the camera in legacy
+OpenGL, glm, DirectXMath, three.js or wgpu-matrix. Drag a marked number, or Tab to it and press Up or
+Down, or double-click it to type; paste a call (Ctrl+V over the code) to set
+the camera; Copy copies the code.</li>
 <li><b>Accuracy</b>: how exact the pipeline is in float, double, long double,
 double-double, float128 and MPFR, against an MPFR reference of 256 bits, and
 how long each takes: a table and two charts of error against time.</li>

@@ -46,6 +46,7 @@
 #include "GuideDialog.h"
 #include "viewpipe/report/latex.hpp"
 #include "MatrixPanel.h"
+#include "CodePanel.h"
 #include "ParameterPanel.h"
 #include "Theme.h"
 
@@ -92,6 +93,14 @@ MainWindow::MainWindow(QWidget* parent)
     connect(document_, &Document::changed, this, &MainWindow::onDocumentChanged);
     connect(document_, &Document::fileChanged, this, &MainWindow::updateTitle);
     connect(parameters_, &ParameterPanel::cameraEdited, this, &MainWindow::onCameraEdited);
+    connect(code_, &CodePanel::cameraEdited, this,
+            [this](const CameraSpec<double>& camera, const QString& field, int gesture) {
+                try {
+                    document_->setCamera(camera, tr("Edit %1").arg(field), gesture);
+                } catch (const InputError& e) {
+                    code_->showError(QString::fromUtf8(e.what())); // the last valid camera stays
+                }
+            });
     fitToScreen();
 }
 
@@ -212,8 +221,18 @@ void MainWindow::buildDocks()
     dock(tr("Stages"), "stagesDock", stepper, Qt::LeftDockWidgetArea);
     matrices_ = new MatrixPanel;
     QDockWidget* matrixDock = dock(tr("Matrices"), "matricesDock", matrices_, Qt::RightDockWidgetArea);
+    // The camera's numbers, and below them the same camera as code: two ways to edit one camera, one tab.
     parameters_ = new ParameterPanel;
-    QDockWidget* parametersDock = dock(tr("Parameters"), "parametersDock", parameters_, Qt::RightDockWidgetArea);
+    code_ = new CodePanel;
+    auto* camera = new QWidget;
+    auto* cameraLayout = new QVBoxLayout(camera);
+    cameraLayout->setContentsMargins(0, 0, 0, 0);
+    cameraLayout->addWidget(parameters_);
+    auto* codeHeading = new QLabel(tr("<b>The camera as code</b>"));
+    codeHeading->setObjectName("codeHeading");
+    cameraLayout->addWidget(codeHeading);
+    cameraLayout->addWidget(code_);
+    QDockWidget* parametersDock = dock(tr("Parameters"), "parametersDock", camera, Qt::RightDockWidgetArea);
     accuracy_ = new AccuracyPanel;
     accuracy_->setSceneSource([this] { return document_->evaluated(); });
     QDockWidget* accuracyDock = dock(tr("Accuracy"), "accuracyDock", accuracy_, Qt::RightDockWidgetArea);
@@ -566,6 +585,7 @@ void MainWindow::onDocumentChanged()
 void MainWindow::refreshWidgets()
 {
     parameters_->setCamera(document_->scene().camera);
+    code_->setCamera(document_->scene().camera);
     updateEffectsMenu();
     depth_->showDepth(document_->pipeline(), document_->evaluated()->outcomes.depth, painter_->theme());
     const auto& stages = document_->pipeline().stages;
@@ -698,8 +718,14 @@ void MainWindow::setFontSize(int points)
 
 void MainWindow::showPanel(const QString& name)
 {
-    if (auto* dock = findChild<QDockWidget*>(name + "Dock"))
+    const bool code = name == "code"; // below the parameters, in their dock
+    if (auto* dock = findChild<QDockWidget*>(code ? QString("parametersDock") : name + "Dock"))
         dock->raise();
+    if (code) // once the raised dock is laid out
+        QTimer::singleShot(0, this, [this] {
+            if (auto* scroll = qobject_cast<QScrollArea*>(findChild<QDockWidget*>("parametersDock")->widget()))
+                scroll->ensureWidgetVisible(code_, 0, 0);
+        });
 }
 
 void MainWindow::setProjectedViewVisible(bool visible)

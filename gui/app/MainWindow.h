@@ -34,6 +34,7 @@ class AccuracyPanel;
 class Autosave;
 class DepthPanel;
 class MatrixPanel;
+class CodePanel;
 class ParameterPanel;
 
 class MainWindow : public QMainWindow {
@@ -97,6 +98,7 @@ public:
 
     Document* document() { return document_; }
     ParameterPanel* parameters() { return parameters_; }
+    CodePanel* codePanel() { return code_; }
     MatrixPanel* matrices() { return matrices_; }
     AccuracyPanel* accuracy() { return accuracy_; }
     DepthPanel* depth() { return depth_; }
@@ -150,6 +152,7 @@ private:
     AccuracyPanel* accuracy_ = nullptr;
     DepthPanel* depth_ = nullptr;
     ParameterPanel* parameters_ = nullptr;
+    CodePanel* code_ = nullptr;
     QVariantAnimation* animation_ = nullptr;
     QMenu* recentMenu_ = nullptr;
     QMenu* presetMenu_ = nullptr;

@@ -11,10 +11,9 @@
 #include <QStyleOptionFrame>
 #include <QVBoxLayout>
 
-#include <charconv>
 #include <cmath>
-#include <cstring>
 
+#include "NumberText.h"
 #include "viewpipe/format.hpp"
 
 namespace viewpipe::gui {
@@ -89,42 +88,6 @@ QList<double*> numbersOf(CameraSpec<double>& camera, const QString& field)
 }
 
 // The shortest text that reads back as the same double, with a '.' whatever the locale.
-QString numberText(double value)
-{
-    if (std::isinf(value))
-        return value > 0 ? "infinity" : "-infinity";
-    return QString::fromStdString(formatShortest(value));
-}
-
-// Reads a number in the C locale (a '.' decimal point, an optional exponent),
-// correctly rounded; returns why the text is not one, or nothing.
-QString readNumber(const QString& text, bool infinityAllowed, double& value)
-{
-    const QString trimmed = text.trimmed();
-    const QByteArray bytes = trimmed.toUtf8();
-    const char* first = bytes.constData();
-    const char* last = first + bytes.size();
-    if (first == last)
-        return ParameterPanel::tr("is empty: a number is needed");
-    if (*first == '+' && last - first > 1 && first[1] != '+' && first[1] != '-')
-        ++first; // from_chars takes no plus sign
-    const auto [end, error] = std::from_chars(first, last, value);
-    const QString quoted = "\"" + trimmed + "\"";
-    if (error == std::errc::result_out_of_range)
-        return ParameterPanel::tr("%1 is out of the range of a double").arg(quoted);
-    if (error != std::errc() || end != last)
-        return trimmed.contains(',') ? ParameterPanel::tr("%1 is not a number (the decimal point is '.')").arg(quoted)
-                                     : ParameterPanel::tr("%1 is not a number").arg(quoted);
-    if (std::isnan(value) || (std::isinf(value) && !infinityAllowed))
-        return ParameterPanel::tr("%1 is not a finite number").arg(quoted);
-    return {};
-}
-
-bool sameBits(double a, double b)
-{
-    return std::memcmp(&a, &b, sizeof a) == 0;
-}
-
 // Switching an OpenGL camera between a box (frustum, ortho) and gluPerspective
 // keeps near, far and the near-plane rectangle's size.
 gl::ProjectionSpec<double> convertProjection(const gl::ProjectionSpec<double>& from, int type)

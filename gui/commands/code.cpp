@@ -45,11 +45,7 @@ int runCode(const CodeOptions& options)
     return guarded(options.scene, "viewpipe: internal error", [&] {
         const code::Dialect dialect = code::dialectNamed(options.dialect, "--dialect");
         const Scene scene = loadScene(options.scene);
-        const auto* camera = std::get_if<gl::Camera<double>>(&scene.camera);
-        if (!camera)
-            throw InputError("camera", "is missing: the code dialects describe look_at cameras; this scene has a "
-                                       "Foley view (\"view\")");
-        const code::CameraCode written = code::cameraCode(*camera, dialect);
+        const code::CameraCode written = code::cameraCode(lookAtCamera(scene, "the code dialects"), dialect);
         if (options.json)
             std::cout << codeJson(dialect, written).dump() << "\n";
         else

@@ -35,6 +35,8 @@ std::pair<int, int> parseSize(const std::string& text, const std::string& option
     std::istringstream in(text);
     if (!(in >> width >> x >> height) || x != 'x' || !in.eof())
         throw InputError(option, "must be WxH, e.g. 1280x720 (got \"" + text + "\")");
+    if (width < 1 || height < 1)
+        throw InputError(option, "needs a width and a height of at least 1 pixel (got \"" + text + "\")");
     return {width, height};
 }
 

@@ -18,24 +18,22 @@ struct ConvertOptions {
 int runConvert(const ConvertOptions& options)
 {
     return guarded(options.scene, "viewpipe: internal error", [&] {
-        Scene scene = loadScene(options.scene);
-        auto* camera = std::get_if<gl::Camera<double>>(&scene.camera);
-        if (!camera)
-            throw InputError("view", "a Foley view follows no graphics API: convert needs a scene with a \"camera\"");
         const gl::Api api = gl::apiNamed(options.api, "--api");
+        Scene scene = loadScene(options.scene);
+        const gl::Camera<double>& camera = lookAtCamera(scene, "API conversions");
         gl::Handedness handedness = gl::defaultHandedness(api);
         if (!options.handedness.empty()) {
             if (options.handedness != "right" && options.handedness != "left")
                 throw InputError("--handedness", "must be right or left (got \"" + options.handedness + "\")");
             handedness = options.handedness == "left" ? gl::Handedness::Left : gl::Handedness::Right;
         }
-        gl::DepthMode depth = camera->depth;
+        gl::DepthMode depth = camera.depth;
         if (!options.depth.empty()) {
             if (options.depth != "standard" && options.depth != "reversed")
                 throw InputError("--depth", "must be standard or reversed (got \"" + options.depth + "\")");
             depth = options.depth == "reversed" ? gl::DepthMode::Reversed : gl::DepthMode::Standard;
         }
-        *camera = gl::convertCamera(*camera, api, handedness, depth);
+        scene.camera = gl::convertCamera(camera, api, handedness, depth);
         std::cout << sceneToJson(scene);
         return 0;
     });

@@ -40,8 +40,8 @@ void addOpenCommand(CLI::App& app, int argc, char** argv)
     command->add_option("--size", options->size,
                         "Window size WxH (default: 1600x950 for a screenshot, else fitted to the screen)");
     command->add_option("--theme", options->theme, "dark or light")->check(CLI::IsMember({"dark", "light"}));
-    command->add_option("--panel", open.panel, "Dock in front: stages, matrices, parameters, accuracy (measured) or depth")
-        ->check(CLI::IsMember({"stages", "matrices", "parameters", "accuracy", "depth"}));
+    command->add_option("--panel", open.panel, "Dock in front: stages, matrices, parameters, code (below the parameters), accuracy (measured) or depth")
+        ->check(CLI::IsMember({"stages", "matrices", "parameters", "code", "accuracy", "depth"}));
     setRun(command, [options, argc, argv] { return runOpen(argc, argv, *options); });
 }
 

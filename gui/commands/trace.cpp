@@ -12,7 +12,8 @@ struct TraceOptions {
     std::vector<double> point;
     bool json = false;
     PrecisionOptions precision;
-    std::string api;                // "all" or an API's name: the point under each API's conventions
+    std::string api; // "all" or an API's name: the point under each API's conventions
+    bool apiGiven = false;
     std::string viewport = "640x480";
 };
 
@@ -22,7 +23,7 @@ int runTrace(const TraceOptions& options)
         const Scene scene = loadScene(options.scene);
         const cli::PrecisionChoice precision = cli::parsePrecision(options.precision.precision, options.precision.bits);
         const Vec3<double> point(options.point[0], options.point[1], options.point[2]);
-        if (!options.api.empty()) {
+        if (options.apiGiven) {
             if (precision.type != cli::Precision::Double)
                 throw InputError("--precision", "the --api table is computed in double precision");
             const auto [width, height] = parseSize(options.viewport, "--viewport");
@@ -49,12 +50,17 @@ void addTraceCommand(CLI::App& app)
     command->add_option("SCENE", options->scene, "Scene file (JSON)")->required();
     command->add_option("--point", options->point, "World coordinates X Y Z")->expected(3)->required();
     command->add_flag("--json", options->json, "One JSON object on stdout");
-    command->add_option("--api", options->api,
-                        "all, or opengl, direct3d, vulkan, metal, webgpu: the point through the camera's numbers "
-                        "under each API's conventions (handedness, depth), to clip, NDC and window coordinates");
-    command->add_option("--viewport", options->viewport, "With --api: the viewport's size WxH (default 640x480)");
+    CLI::Option* api = command->add_option(
+        "--api", options->api,
+        "all, or opengl, direct3d, vulkan, metal, webgpu: the point through the camera's numbers under each API's "
+        "conventions (handedness, depth), to clip, NDC and window coordinates");
+    command->add_option("--viewport", options->viewport, "With --api: the viewport's size WxH (default 640x480)")
+        ->needs(api);
     addPrecision(command, options->precision);
-    setRun(command, [options] { return runTrace(*options); });
+    setRun(command, [options, api] {
+        options->apiGiven = api->count() > 0;
+        return runTrace(*options);
+    });
 }
 
 } // namespace viewpipe::commands

@@ -65,7 +65,7 @@ void drawDepthChart(vtkChartXY* chart, const Pipeline<double>& pipeline, const D
         x->SetName("distance");
         y->SetName((depthFormatName(format.options) + format.note + (scene ? " (this scene)" : "")).c_str());
         for (const DepthSample& sample : curve) {
-            if (sample.pastFar)
+            if (sample.pastFar || !std::isfinite(sample.step) || !(sample.step > 0))
                 continue; // a level cut short by the far plane is no measure of resolution
             x->InsertNextValue(sample.distance);
             y->InsertNextValue(std::log10(sample.step));
@@ -84,6 +84,8 @@ void drawDepthChart(vtkChartXY* chart, const Pipeline<double>& pipeline, const D
         plot->SetWidth(format.width + (scene ? 2.0f : 0.0f));
         plot->GetPen()->SetLineType(format.line);
     }
+    if (!(low <= high && reach > 0)) // no curve: VTK's axes would search forever for ticks over no range
+        low = 1e-3, high = 1, reach = 1;
     vtkAxis* bottom = chart->GetAxis(vtkAxis::BOTTOM);
     styleAxis(bottom, foley ? "distance from the front plane (F), along the view" : "distance from the near plane, along the view",
               theme);

@@ -329,32 +329,29 @@ Json apiTraceJson(const Scene& scene, const Vec3<double>& point, const std::stri
     }
     if (!only && apiChoice != "all")
         throw InputError("--api", "must be one of " + known + " (got \"" + apiChoice + "\")");
-    const auto* camera = std::get_if<gl::Camera<double>>(&scene.camera);
-    if (!camera)
-        throw InputError("--api", "needs a scene with a \"camera\" (look_at and projection); this scene has a "
-                                  "Foley view, which follows no graphics API");
+    const gl::Camera<double>& camera = lookAtCamera(scene, "API conventions");
     Json rows = Json::array();
     for (const gl::Api api : gl::kApis)
         for (const gl::Handedness handedness : {gl::Handedness::Right, gl::Handedness::Left})
             for (const gl::DepthMode depth : {gl::DepthMode::Standard, gl::DepthMode::Reversed}) {
                 if (only && api != *only)
                     continue;
-                gl::Camera<double> variant = *camera;
+                gl::Camera<double> variant = camera;
                 variant.api = api;
                 variant.handedness = handedness;
                 variant.depth = depth;
-                const Pipeline<double> p = buildPipeline(variant);
-                const Vec4<double> clip = p.clipMatrix() * point.homogeneous();
+                // Stage by stage, as `trace` goes: a point on the eye plane gets w = 0 exactly.
+                const PointTrace<double> trace = tracePoint(buildPipeline(variant), point);
                 Json row = {{"api", gl::apiName(api)},
                             {"handedness", gl::handednessName(handedness)},
                             {"depth", gl::depthModeName(depth)},
-                            {"clip", vectorJson(clip)},
-                            {"inside", insideClipVolume(clip, p.clipVolume)},
+                            {"clip", vectorJson(trace.clip)},
+                            {"inside", trace.inside},
+                            {"behind_eye", trace.clip.w() < 0},
                             {"window_origin", gl::windowOriginTopLeft(api) ? "top-left" : "bottom-left"}};
-                if (clip.w() != 0) {
-                    const Vec3<double> ndc = clip.head<3>() / clip.w();
-                    row["ndc"] = vectorJson(ndc);
-                    row["window"] = vectorJson(gl::windowCoordinates(api, ndc, width, height));
+                if (trace.divided) {
+                    row["ndc"] = vectorJson(*trace.divided);
+                    row["window"] = vectorJson(gl::windowCoordinates(api, *trace.divided, width, height));
                 } else {
                     row["ndc"] = row["window"] = nullptr;
                 }
@@ -384,7 +381,9 @@ void printApiTrace(std::ostream& out, const Scene& scene, const Vec3<double>& po
     for (const Json& row : t["rows"])
         table.push_back({gl::apiTitle(gl::apiNamed(row["api"], "api")), row["handedness"], row["depth"],
                          show(row["clip"]), show(row["ndc"]), show(row["window"]), row["window_origin"],
-                         row["inside"].get<bool>() ? "inside" : "outside"});
+                         row["behind_eye"].get<bool>() ? "behind the eye (w < 0): a false image"
+                         : row["inside"].get<bool>()   ? "inside"
+                                                       : "outside"});
     std::array<std::size_t, 8> widths{};
     for (const auto& line : table)
         for (std::size_t c = 0; c < line.size(); ++c)
@@ -395,8 +394,8 @@ void printApiTrace(std::ostream& out, const Scene& scene, const Vec3<double>& po
             text += line[c] + std::string(c + 1 < line.size() ? widths[c] - line[c].size() + 2 : 0, ' ');
         out << text.substr(0, text.find_last_not_of(' ') + 1) << "\n";
     }
-    out << "\nLeft-handed rows see the world mirrored (the same numbers, lookAtLH): window x becomes " << width
-        << " - x.\nReversed rows exchange near and far: window z becomes 1 - z. Vulkan's clip y is negated and its "
+    out << "\nLeft-handed rows take the same numbers through lookAtLH: the picture is mirrored left to right.\n"
+           "Reversed rows exchange near and far: window z becomes 1 - z. Vulkan's clip y is negated and its "
            "window y runs down, so the point lands where Direct3D, Metal and WebGPU put it.\n";
 }
 

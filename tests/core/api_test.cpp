@@ -404,7 +404,8 @@ TEST(Api, ScenesNameTheApiHandednessAndDepth)
     auto parse = [&](const std::string& extra) {
         return parseScene(R"({"camera": {)" + lookAt + extra + "}}", ".");
     };
-    const auto& d3d = std::get<gl::Camera<double>>(parse(R"(, "api": "direct3d")").camera);
+    const Scene direct3d = parse(R"(, "api": "direct3d")");
+    const auto& d3d = std::get<gl::Camera<double>>(direct3d.camera);
     EXPECT_EQ(d3d.api, Api::Direct3D);
     EXPECT_EQ(d3d.handedness, Handedness::Left);
     const Scene vulkan = parse(R"(, "api": "vulkan", "handedness": "left", "depth": "reversed")");

@@ -49,7 +49,7 @@ Vec3<double> windowCoordinates(Api api, const Vec3<double>& ndc, double width, d
 // A camera for `api` with `handedness` and `depth` that draws the same picture
 // as `camera`: the same window x and y (from the top left) and the same depth
 // order. Across handedness the eye's x is mirrored, so left and right are
-// negated (a gluPerspective or ortho camera becomes off-center: frustum, ortho).
+// negated (left > right: a gluPerspective camera becomes such a frustum).
 Camera<double> convertCamera(const Camera<double>& camera, Api api, Handedness handedness, DepthMode depth);
 
 } // namespace viewpipe::gl

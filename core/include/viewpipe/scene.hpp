@@ -32,6 +32,10 @@ struct Scene {
     std::filesystem::path file; // where it was loaded from; empty for a scene made in memory
 };
 
+// The scene's look-at camera; throws InputError("camera") naming `purpose`
+// ("the code dialects") when the scene has a Foley view instead.
+const gl::Camera<double>& lookAtCamera(const Scene& scene, const std::string& purpose);
+
 // Parses and validates a scene; mesh paths are resolved against baseDir and
 // must name a readable .obj, .ply or .stl file.
 Scene parseScene(const std::string& text, const std::filesystem::path& baseDir);

@@ -1,0 +1,433 @@
+#include "CodePanel.h"
+
+#include <QApplication>
+#include <QClipboard>
+#include <QComboBox>
+#include <QFontDatabase>
+#include <QHBoxLayout>
+#include <QHelpEvent>
+#include <QKeyEvent>
+#include <QLabel>
+#include <QLineEdit>
+#include <QMouseEvent>
+#include <QPainter>
+#include <QPlainTextEdit>
+#include <QPushButton>
+#include <QScrollArea>
+#include <QScrollBar>
+#include <QSettings>
+#include <QToolTip>
+#include <QVBoxLayout>
+
+#include <cmath>
+#include <utility>
+
+#include "NumberText.h"
+
+namespace viewpipe::gui {
+namespace {
+
+// The code's characters are bytes of UTF-8; the view counts in them too.
+struct TextLayout {
+    QFontMetrics metrics;
+    std::vector<std::size_t> lineStarts; // byte offsets
+
+    TextLayout(const QFont& font, const std::string& text) : metrics(font)
+    {
+        lineStarts.push_back(0);
+        for (std::size_t i = 0; i < text.size(); ++i)
+            if (text[i] == '\n')
+                lineStarts.push_back(i + 1);
+    }
+    std::size_t lineOf(std::size_t offset) const
+    {
+        return std::size_t(std::upper_bound(lineStarts.begin(), lineStarts.end(), offset) - lineStarts.begin()) - 1;
+    }
+};
+
+constexpr int kMargin = 6;
+
+} // namespace
+
+CodeView::CodeView(QWidget* parent) : QWidget(parent)
+{
+    setFont(QFontDatabase::systemFont(QFontDatabase::FixedFont));
+    setFocusPolicy(Qt::StrongFocus);
+    setMouseTracking(true);
+    setAccessibleName(tr("The camera as code"));
+}
+
+void CodeView::setCode(const code::CameraCode& code)
+{
+    code_ = code;
+    if (selected_ && *selected_ >= code_.numbers.size())
+        selected_.reset();
+    hovered_.reset();
+    updateGeometry();
+    update();
+}
+
+QSize CodeView::sizeHint() const
+{
+    const TextLayout layout(font(), code_.text);
+    int width = 0;
+    std::size_t start = 0;
+    for (std::size_t end = 0; end <= code_.text.size(); ++end)
+        if (end == code_.text.size() || code_.text[end] == '\n') {
+            width = std::max(width, layout.metrics.horizontalAdvance(
+                                        QString::fromUtf8(code_.text.data() + start, int(end - start))));
+            start = end + 1;
+        }
+    return {width + 2 * kMargin, int(layout.lineStarts.size()) * layout.metrics.lineSpacing() + 2 * kMargin};
+}
+
+QSize CodeView::minimumSizeHint() const
+{
+    return sizeHint(); // long lines scroll sideways in the panel rather than being cut
+}
+
+QRect CodeView::numberRect(std::size_t index) const
+{
+    if (index >= code_.numbers.size())
+        return {};
+    const code::CodeNumber& n = code_.numbers[index];
+    const TextLayout layout(font(), code_.text);
+    const std::size_t line = layout.lineOf(n.offset);
+    const std::size_t start = layout.lineStarts[line];
+    const int x = layout.metrics.horizontalAdvance(QString::fromUtf8(code_.text.data() + start, int(n.offset - start)));
+    const int width = layout.metrics.horizontalAdvance(QString::fromUtf8(code_.text.data() + n.offset, int(n.length)));
+    return {kMargin + x, kMargin + int(line) * layout.metrics.lineSpacing(), width, layout.metrics.lineSpacing()};
+}
+
+std::optional<std::size_t> CodeView::numberAt(const QPoint& point) const
+{
+    for (std::size_t k = 0; k < code_.numbers.size(); ++k)
+        if (numberRect(k).adjusted(-2, 0, 2, 0).contains(point))
+            return k;
+    return std::nullopt;
+}
+
+void CodeView::paintEvent(QPaintEvent*)
+{
+    QPainter painter(this);
+    const TextLayout layout(font(), code_.text);
+    const QPalette& p = palette();
+    painter.fillRect(rect(), p.color(QPalette::Base));
+    for (std::size_t k = 0; k < code_.numbers.size(); ++k) {
+        const QRect r = numberRect(k);
+        const bool active = (selected_ && *selected_ == k && hasFocus()) || (hovered_ && *hovered_ == k) ||
+                            (drag_ && drag_->index == k);
+        QColor back = p.color(QPalette::Highlight);
+        back.setAlpha(active ? 110 : 40);
+        painter.fillRect(r.adjusted(-1, 0, 1, 0), back);
+        painter.setPen(QPen(p.color(QPalette::Highlight), 1, Qt::DotLine));
+        painter.drawLine(r.bottomLeft(), r.bottomRight());
+    }
+    painter.setPen(p.color(QPalette::Text));
+    for (std::size_t line = 0; line < layout.lineStarts.size(); ++line) {
+        const std::size_t start = layout.lineStarts[line];
+        const std::size_t end = line + 1 < layout.lineStarts.size() ? layout.lineStarts[line + 1] - 1 : code_.text.size();
+        painter.drawText(kMargin, kMargin + int(line) * layout.metrics.lineSpacing() + layout.metrics.ascent(),
+                         QString::fromUtf8(code_.text.data() + start, int(end - start)));
+    }
+}
+
+bool CodeView::event(QEvent* event)
+{
+    if (event->type() == QEvent::ToolTip) {
+        const auto* help = static_cast<QHelpEvent*>(event);
+        if (const std::optional<std::size_t> k = numberAt(help->pos()))
+            QToolTip::showText(help->globalPos(),
+                               QString::fromStdString(code_.numbers[*k].tooltip) + "\n" +
+                                   tr("Drag left or right to change it, or double-click to type a value."),
+                               this, numberRect(*k));
+        else
+            QToolTip::hideText();
+        return true;
+    }
+    return QWidget::event(event);
+}
+
+double CodeView::stepFor(double value)
+{
+    // A two-hundredth of the number's size (at least of 1), as a power of ten: 40 moves by 0.1, 0.5 by 0.001.
+    return std::pow(10.0, std::floor(std::log10(std::max(std::abs(value), 1.0) * 0.005)));
+}
+
+void CodeView::step(std::size_t index, int steps, int gesture)
+{
+    const double from = drag_ ? drag_->startValue : code_.numbers[index].value;
+    if (!std::isfinite(from))
+        return; // an infinite far plane is typed, not dragged
+    const double unit = stepFor(from);
+    // Whole steps of a power of ten, divided rather than multiplied when below 1: 40.3, not 40.300000000000004.
+    const double scale = unit < 1 ? std::round(1 / unit) : unit;
+    const double count = std::round(from / unit) + steps;
+    const double value = unit < 1 ? count / scale : count * scale;
+    emit numberChanged(index, value, gesture);
+}
+
+void CodeView::select(std::size_t index)
+{
+    if (index < code_.numbers.size())
+        selected_ = index;
+    update();
+}
+
+void CodeView::mousePressEvent(QMouseEvent* event)
+{
+    const std::optional<std::size_t> k = numberAt(event->pos());
+    if (event->button() != Qt::LeftButton || !k)
+        return QWidget::mousePressEvent(event);
+    select(*k);
+    drag_ = Drag{*k, event->pos().x(), code_.numbers[*k].value, ++gestures_};
+}
+
+void CodeView::mouseMoveEvent(QMouseEvent* event)
+{
+    if (drag_) {
+        step(drag_->index, event->pos().x() - drag_->startX, drag_->gesture);
+        return;
+    }
+    const std::optional<std::size_t> k = numberAt(event->pos());
+    if (k != hovered_) {
+        hovered_ = k;
+        setCursor(k ? Qt::SizeHorCursor : Qt::ArrowCursor);
+        update();
+    }
+}
+
+void CodeView::mouseReleaseEvent(QMouseEvent* event)
+{
+    if (drag_ && event->button() == Qt::LeftButton) {
+        drag_.reset();
+        update();
+    }
+}
+
+void CodeView::mouseDoubleClickEvent(QMouseEvent* event)
+{
+    drag_.reset();
+    if (const std::optional<std::size_t> k = numberAt(event->pos()))
+        openEditor(*k);
+}
+
+void CodeView::openEditor(std::size_t index)
+{
+    select(index);
+    closeEditor(false);
+    editor_ = new QLineEdit(this);
+    editor_->setObjectName("codeNumberEditor");
+    editor_->setText(numberText(code_.numbers[index].value));
+    editor_->selectAll();
+    const QRect r = numberRect(index);
+    editor_->setGeometry(r.x() - 2, r.y(), std::max(r.width() + 40, fontMetrics().averageCharWidth() * 14),
+                         r.height() + 4);
+    editor_->installEventFilter(this);
+    editor_->show();
+    editor_->setFocus();
+    // Enter or leaving the box types the value in, as the Parameters panel's fields do; Escape does not.
+    connect(editor_, &QLineEdit::editingFinished, this, [this] { closeEditor(true); });
+}
+
+void CodeView::closeEditor(bool commit)
+{
+    if (!editor_)
+        return;
+    QLineEdit* editor = std::exchange(editor_, nullptr);
+    editor->disconnect(this);
+    editor->removeEventFilter(this);
+    editor->hide();
+    editor->deleteLater();
+    setFocus();
+    if (commit && selected_)
+        emit numberTyped(*selected_, editor->text());
+}
+
+bool CodeView::eventFilter(QObject* watched, QEvent* event)
+{
+    if (watched == editor_ && event->type() == QEvent::KeyPress) {
+        // Handled here: passed on, Return would reach the view and open the editor again.
+        const int key = static_cast<QKeyEvent*>(event)->key();
+        if (key == Qt::Key_Escape || key == Qt::Key_Return || key == Qt::Key_Enter) {
+            closeEditor(key != Qt::Key_Escape);
+            return true;
+        }
+    }
+    return QWidget::eventFilter(watched, event);
+}
+
+void CodeView::keyPressEvent(QKeyEvent* event)
+{
+    if (event->matches(QKeySequence::Paste)) {
+        emit pasted(QApplication::clipboard()->text());
+        return;
+    }
+    if (!selected_)
+        return QWidget::keyPressEvent(event);
+    switch (event->key()) {
+    case Qt::Key_Up: step(*selected_, 1, -1); break;
+    case Qt::Key_Down: step(*selected_, -1, -1); break;
+    case Qt::Key_Return:
+    case Qt::Key_Enter: openEditor(*selected_); break;
+    default: QWidget::keyPressEvent(event);
+    }
+}
+
+// Tab moves from number to number, then on to the next widget.
+bool CodeView::focusNextPrevChild(bool next)
+{
+    const std::size_t count = code_.numbers.size();
+    if (count > 0 && hasFocus()) {
+        if (!selected_) {
+            select(next ? 0 : count - 1);
+            return true;
+        }
+        if ((next && *selected_ + 1 < count) || (!next && *selected_ > 0)) {
+            select(next ? *selected_ + 1 : *selected_ - 1);
+            return true;
+        }
+        selected_.reset();
+    }
+    return QWidget::focusNextPrevChild(next);
+}
+
+CodePanel::CodePanel(QWidget* parent) : QWidget(parent)
+{
+    auto* layout = new QVBoxLayout(this);
+    auto* top = new QHBoxLayout;
+    dialects_ = new QComboBox;
+    dialects_->setObjectName("codeDialect");
+    for (const code::Dialect d : code::kDialects)
+        dialects_->addItem(QString::fromStdString(code::dialectTitle(d)));
+    dialects_->setToolTip(tr("The library whose calls write the camera"));
+    auto* copy = new QPushButton(tr("&Copy"));
+    copy->setObjectName("codeCopy");
+    copy->setToolTip(tr("Put the code on the clipboard"));
+    top->addWidget(new QLabel(tr("Dialect")));
+    top->addWidget(dialects_, 1);
+    top->addWidget(copy);
+    layout->addLayout(top);
+
+    note_ = new QLabel;
+    note_->setWordWrap(true);
+    layout->addWidget(note_);
+    view_ = new CodeView;
+    view_->setObjectName("codeView");
+    scroll_ = new QScrollArea;
+    scroll_->setWidget(view_);
+    scroll_->setWidgetResizable(true);
+    scroll_->setVerticalScrollBarPolicy(Qt::ScrollBarAlwaysOff);
+    layout->addWidget(scroll_);
+    error_ = new QLabel;
+    error_->setObjectName("codeError");
+    error_->setWordWrap(true);
+    error_->setStyleSheet("color: #d55e00");
+    error_->hide();
+    layout->addWidget(error_);
+
+    auto* pasteNote = new QLabel(tr("Paste a call to set the camera, e.g. gluPerspective(45, 1.333, 0.1, 100):"));
+    pasteNote->setWordWrap(true);
+    layout->addWidget(pasteNote);
+    paste_ = new QPlainTextEdit;
+    paste_->setObjectName("codePaste");
+    paste_->setFont(QFontDatabase::systemFont(QFontDatabase::FixedFont));
+    paste_->setMaximumHeight(paste_->fontMetrics().lineSpacing() * 5);
+    layout->addWidget(paste_);
+    auto* apply = new QPushButton(tr("&Apply"));
+    apply->setObjectName("codeApply");
+    layout->addWidget(apply, 0, Qt::AlignRight);
+    layout->addStretch(1);
+
+    const int saved = QSettings().value("codeDialect", int(code::Dialect::Glm)).toInt();
+    dialects_->setCurrentIndex(std::clamp(saved, 0, dialects_->count() - 1));
+    connect(dialects_, QOverload<int>::of(&QComboBox::currentIndexChanged), this, [this](int index) {
+        QSettings().setValue("codeDialect", index);
+        regenerate();
+    });
+    connect(copy, &QPushButton::clicked, this, [this] { QApplication::clipboard()->setText(QString::fromStdString(code_.text)); });
+    connect(apply, &QPushButton::clicked, this, [this] { applyCode(paste_->toPlainText()); });
+    connect(view_, &CodeView::pasted, this, &CodePanel::applyCode);
+    connect(view_, &CodeView::numberChanged, this, &CodePanel::setNumber);
+    connect(view_, &CodeView::numberTyped, this, [this](std::size_t index, const QString& text) {
+        if (index >= code_.numbers.size())
+            return;
+        double value = 0;
+        const QString reason = readNumber(text, code_.numbers[index].field == gl::kProjectionField + "far", value);
+        if (!reason.isEmpty())
+            return showError(QString::fromStdString(code_.numbers[index].field) + ": " + reason);
+        setNumber(index, value, -1);
+    });
+}
+
+void CodePanel::setDialect(code::Dialect dialect)
+{
+    dialects_->setCurrentIndex(int(dialect)); // in the order of code::kDialects
+}
+
+void CodePanel::setCamera(const CameraSpec<double>& camera)
+{
+    const auto* gl = std::get_if<gl::Camera<double>>(&camera);
+    camera_ = gl ? std::optional<gl::Camera<double>>(*gl) : std::nullopt;
+    regenerate();
+}
+
+void CodePanel::regenerate()
+{
+    const bool code = camera_.has_value();
+    scroll_->setVisible(code);
+    paste_->setEnabled(code);
+    note_->setText(code ? tr("Drag a marked number left or right, or double-click it to type. Each change is one "
+                             "undoable edit.")
+                        : tr("This scene's camera is a Foley view (VRP, VPN, VUP, PRP): no graphics API writes it "
+                             "as code. Open a scene with a look-at camera, such as the presets under Graphics "
+                             "APIs."));
+    code_ = code ? code::cameraCode(*camera_, code::kDialects[dialects_->currentIndex()]) : code::CameraCode{};
+    view_->setCode(code_);
+    // All lines show; only the width scrolls.
+    scroll_->setFixedHeight(view_->sizeHint().height() + scroll_->horizontalScrollBar()->sizeHint().height() +
+                            2 * scroll_->frameWidth());
+}
+
+void CodePanel::setNumber(std::size_t index, double value, int gesture)
+{
+    if (!camera_ || index >= code_.numbers.size())
+        return;
+    const std::string& field = code_.numbers[index].field;
+    if (sameBits(value, code_.numbers[index].value))
+        return; // the value it has: no edit
+    try {
+        const gl::Camera<double> candidate = code::withField(*camera_, field, value);
+        clearError();
+        emit cameraEdited(candidate, QString::fromStdString(field), gesture);
+    } catch (const InputError& e) {
+        showError(QString::fromUtf8(e.what()));
+    }
+}
+
+void CodePanel::applyCode(const QString& text)
+{
+    if (!camera_)
+        return;
+    try {
+        const gl::Camera<double> candidate = code::applyCode(*camera_, text.toStdString());
+        clearError();
+        emit cameraEdited(candidate, tr("pasted code"), -1);
+    } catch (const InputError& e) {
+        showError(QString::fromUtf8(e.what()));
+    }
+}
+
+void CodePanel::showError(const QString& reason)
+{
+    error_->setText(reason);
+    error_->show();
+}
+
+void CodePanel::clearError()
+{
+    error_->clear();
+    error_->hide();
+}
+
+} // namespace viewpipe::gui
