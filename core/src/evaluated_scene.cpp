@@ -390,13 +390,14 @@ void addCanonicalLabels(Builder& add, const Pipeline<double>& pipeline, const Vi
     // A camera's planes are named by where its API puts them: z from its depth
     // range, and top and bottom because Vulkan's y points down.
     auto plane = [&](const char* axis, double value, const char* end) {
-        return std::string(axis) + " = " + formatSignificant(value, 3) + (foley ? "" : std::string(" (") + end + ")");
+        return std::string(axis) + " = " + formatSignificant(value, 3) +
+               (foley || !*end ? "" : std::string(" (") + end + ")");
     };
     const std::vector<std::pair<std::string, Vec3<double>>> planes = {
-        {perspective ? "x = -z" : plane("x", c[1].x(), "right"), center({1, 2, 5, 6})},
-        {perspective ? "x = z" : plane("x", c[0].x(), "left"), center({0, 3, 4, 7})},
-        {perspective ? "y = -z" : plane("y", c[2].y(), "top"), center({2, 3, 6, 7})},
-        {perspective ? "y = z" : plane("y", c[0].y(), "bottom"), center({0, 1, 4, 5})},
+        {perspective ? "x = -z" : plane("x", c[1].x(), ""), center({1, 2, 5, 6})},
+        {perspective ? "x = z" : plane("x", c[0].x(), ""), center({0, 3, 4, 7})},
+        {perspective ? "y = -z" : plane("y", c[2].y(), "image top"), center({2, 3, 6, 7})},
+        {perspective ? "y = z" : plane("y", c[0].y(), "image bottom"), center({0, 1, 4, 5})},
         {perspective ? "z = z_min" : plane("z", c[0].z(), "near"), center({0, 1, 2, 3})},
         {plane("z", c[4].z(), "far"), center({4, 5, 6, 7})}};
     for (const auto& [text, anchor] : planes)
@@ -619,9 +620,8 @@ std::vector<std::string> stageClaims(const Pipeline<double>& pipeline, const Vie
         if (s.canonical != cube) {
             const double nearZ = s.canonical[0].z(), farZ = s.canonical[4].z();
             facts.push_back({"the volume is -1 \u2264 x, y \u2264 1, " + formatSignificant(std::min(nearZ, farZ), 3) +
-                                 " \u2264 z \u2264 " + formatSignificant(std::max(nearZ, farZ), 3) + " (near " +
-                                 formatSignificant(nearZ, 3) + ", far " + formatSignificant(farZ, 3) + ")" +
-                                 (s.canonical[0].y() > 0 ? "; y points down" : ""),
+                                 " \u2264 z \u2264 " + formatSignificant(std::max(nearZ, farZ), 3) +
+                                 (s.canonical[0].y() > 0 ? "; y points down in the image" : ""),
                              volumeIs(s.canonical)});
         }
     }

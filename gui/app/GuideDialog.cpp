@@ -104,7 +104,9 @@ stages apply.</li>
 <li><b>NDC_direct3d</b>, <b>NDC_vulkan</b>, <b>NDC_metal</b>,
 <b>NDC_webgpu</b>: OpenGL's clip coordinates to the API's, depth from 0 (near)
 to 1 (far), and for Vulkan y' = -y; with reversed depth near goes to 1 and far
-to 0 (OpenGL's own reversed depth: <b>NDC_reversed</b>).</li>
+to 0, and the stage is <b>NDC_direct3d_reversed</b>, <b>NDC_vulkan_reversed</b>,
+<b>NDC_metal_reversed</b> or <b>NDC_webgpu_reversed</b> (OpenGL's own reversed
+depth: <b>NDC_reversed</b>).</li>
 </ul>
 <p>The products are the APIs' own matrices (glm, DirectXMath). The presets
 under Graphics APIs show one view in each.</p>

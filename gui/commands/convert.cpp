@@ -34,6 +34,8 @@ int runConvert(const ConvertOptions& options)
             depth = options.depth == "reversed" ? gl::DepthMode::Reversed : gl::DepthMode::Standard;
         }
         scene.camera = gl::convertCamera(camera, api, handedness, depth);
+        scene.name += " (as " + gl::apiTitle(api) + ", " + gl::handednessName(handedness) + "-handed, " +
+                      gl::depthModeName(depth) + " depth)";
         std::cout << sceneToJson(scene);
         return 0;
     });

@@ -313,7 +313,8 @@ std::array<std::array<std::string, 4>, 4> writeInfiniteLimit(CodeWriter& out, co
     rows[2][3] = "-2 * zNear";
     rows[3][2] = "-1";
     const Spelling& spelling = out.spelling();
-    out << "// " << callName << " can't take far = infinity: its limit as far -> infinity, written out.\n"
+    out << "// " << callName << " can't take far = infinity. OpenGL's limit as far -> infinity (depth [-1, 1]),\n"
+        << "// written out; the API's own depth range follows from it below.\n"
         << spelling.constant;
     const std::vector<Arg> args = projectionArgs(camera.projection, false, false);
     const std::vector<std::string> names = std::holds_alternative<gl::Perspective<double>>(camera.projection)
@@ -370,6 +371,9 @@ void writeOpenGL(CodeWriter& out, const Camera& camera, const Plan& plan)
     out << "// Legacy OpenGL: column vectors (p' = M p); each call multiplies the current matrix on the right.\n"
         << "glMatrixMode(GL_PROJECTION);\nglLoadIdentity();\n";
     if (plan.convertsClip()) {
+        if (gl::zeroToOneDepth(camera.api))
+            out << "// OpenGL clips z to [-w, w]: for depth in [0, 1] call glClipControl(GL_LOWER_LEFT,\n"
+                << "// GL_ZERO_TO_ONE) (OpenGL 4.5) as well, or near objects are clipped as if at depth -1.\n";
         out << clipConversionComment(camera, plan) << "const GLdouble clipConversion[16] = {";
         out.matrix(plan.clipConversion) << "}; // column by column\nglMultMatrixd(clipConversion);\n";
     }
@@ -453,7 +457,8 @@ void writeGlm(CodeWriter& out, const Camera& camera, const Plan& plan)
 void writeDirectXMath(CodeWriter& out, const Camera& camera, const Plan& plan)
 {
     out << "// DirectXMath: row vectors (p' = p * M), so each matrix is the transpose of ViewPipe's\n"
-        << "// column-vector one; depth in [0, 1].\n#include <DirectXMath.h>\nusing namespace DirectX;\n\n"
+        << "// column-vector one; depth in [0, 1].\n#include <DirectXMath.h>\n"
+        << (plan.explicitLimit ? "#include <cmath>\n" : "") << "using namespace DirectX;\n\n"
         << "XMMATRIX view = XMMatrixLookAt" << handSuffix(camera) << "(";
     out.vector(camera, "eye", "XMVectorSet(", ", 0.0f), ")
         .vector(camera, "center", "XMVectorSet(", ", 0.0f), ")
@@ -510,6 +515,9 @@ void writeThreeJs(CodeWriter& out, const Camera& camera, const Plan& plan)
         out.numbers(projectionArgs(camera.projection, true, false)) << ");\n";
     }
     if (plan.convertsClip()) {
+        if (gl::zeroToOneDepth(camera.api))
+            out << "// WebGLRenderer clips z to [-w, w]: this matrix is for a renderer whose depth is [0, 1]\n"
+                << "// (three.js's WebGPURenderer: camera.coordinateSystem = THREE.WebGPUCoordinateSystem).\n";
         out << clipConversionComment(camera, plan) << "camera.projectionMatrix.premultiply(new THREE.Matrix4().set(";
         out.matrix(plan.clipConversion) << "));\n";
     }

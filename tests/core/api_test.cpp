@@ -14,6 +14,7 @@
 #include "support.hpp"
 #include "viewpipe/api.hpp"
 #include "viewpipe/effects.hpp"
+#include "viewpipe/evaluated_scene.hpp"
 #include "viewpipe/scene.hpp"
 
 namespace viewpipe {
@@ -440,7 +441,21 @@ TEST(Api, StagesShowTheStepToEachApisVolume)
     std::vector<std::string> symbols;
     for (const Stage<double>& s : gl::stages(left))
         symbols.push_back(s.symbol);
-    EXPECT_EQ(symbols, (std::vector<std::string>{"T(-eye)", "R_eye", "Z_flip", "T_ortho", "S_ortho", "NDC_direct3d"}));
+    EXPECT_EQ(symbols, (std::vector<std::string>{"T(-eye)", "R_eye", "Z_flip", "T_ortho", "S_ortho", "NDC_direct3d_reversed"}));
+}
+
+// The picture of Vulkan's volume says where its y points: the last stage's claim and the planes' labels.
+TEST(Api, VulkansVolumeIsLabelledWithItsYDown)
+{
+    const Scene scene = loadScene(std::string(VIEWPIPE_DATA_DIR) + "/scenes/apis/vulkan.json");
+    const std::shared_ptr<const EvaluatedScene> evaluated = evaluateScene(scene);
+    EXPECT_EQ(evaluated->stageClaims.back(), "the volume is -1 \u2264 x, y \u2264 1, 0 \u2264 z \u2264 1; y points down in the image");
+    std::set<std::string> labels;
+    for (const Label& label : evaluated->labels)
+        if (label.element == Element::Canonical)
+            labels.insert(label.text);
+    for (const char* text : {"y = -1 (image top)", "y = 1 (image bottom)", "z = 0 (near)", "z = 1 (far)", "x = 1"})
+        EXPECT_TRUE(labels.count(text)) << text;
 }
 
 } // namespace

@@ -340,7 +340,8 @@ template <class T> std::vector<Stage<T>> lookAtStages(const LookAt<T>& look, Han
 }
 
 // The stage after the projection that takes OpenGL's clip coordinates to the
-// API's: "NDC_direct3d", ..., "NDC_reversed" for OpenGL's reversed depth.
+// API's: "NDC_direct3d", ..., "NDC_vulkan_reversed" with reversed depth, and
+// "NDC_reversed" for OpenGL's reversed depth.
 template <class T> Stage<T> ndcStage(Api api, DepthMode depth)
 {
     const bool reversed = depth == DepthMode::Reversed;
@@ -350,9 +351,9 @@ template <class T> Stage<T> ndcStage(Api api, DepthMode depth)
     else
         what = "z' = -z, near 1, far -1";
     if (yDown(api))
-        what += "; y' = -y, as y points down (or: a negative viewport height)";
-    return {"NDC_" + (api == Api::OpenGL ? std::string("reversed") : apiName(api)),
-            "OpenGL's clip coordinates to " + apiTitle(api) + "'s" + (reversed ? ", reversed" : "") + ": " + what,
+        what += "; y' = -y (or: a negative viewport height)";
+    return {"NDC_" + (api == Api::OpenGL ? std::string("reversed") : apiName(api) + (reversed ? "_reversed" : "")),
+            "to " + apiTitle(api) + "'s clip coordinates" + (reversed ? ", reversed" : "") + ": " + what,
             ndcConversion<T>(api, depth)};
 }
 
