@@ -12,12 +12,14 @@ packages=(
   qtbase5-dev libqt5svg5-dev libvtk9-dev libvtk9-qt-dev
   xvfb xauth libgl1-mesa-dri fonts-dejavu-core
   ffmpeg
+  libjs-three libjs-katex
 )
 # Only the tests need these (sanitizers, libFuzzer, TeX to compile the LaTeX and
-# TikZ exports, poppler to rasterize PDFs): `make run` stays quick.
+# TikZ exports, poppler to rasterize PDFs, Chromium to open the web page):
+# `make run` stays quick.
 if [ "${1:-}" = "--test" ]; then
   packages+=(clang libclang-rt-14-dev texlive-latex-base texlive-latex-recommended texlive-latex-extra
-             texlive-pictures texlive-fonts-recommended poppler-utils)
+             texlive-pictures texlive-fonts-recommended poppler-utils chromium)
 fi
 
 missing=()

@@ -777,4 +777,13 @@ std::optional<Vec3<double>> projectPoint(const Mat4<double>& m, const Vec3<doubl
     return Vec3<double>(h.head<3>() / h.w());
 }
 
+std::vector<Vec3<double>> pictureWindowOutline(const EvaluatedScene& scene)
+{
+    const auto& v = scene.setup.volume;
+    std::vector<Vec3<double>> border;
+    for (std::size_t k = 0; k < 4; ++k)
+        border.insert(border.end(), {(v[k] + v[k + 4]) / 2, (v[(k + 1) % 4] + v[(k + 1) % 4 + 4]) / 2});
+    return border;
+}
+
 } // namespace viewpipe

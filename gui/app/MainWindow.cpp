@@ -9,6 +9,7 @@
 #include <QDockWidget>
 #include <QFileDialog>
 #include <QFileInfo>
+#include <QRegularExpression>
 #include <QHBoxLayout>
 #include <QLabel>
 #include <QListWidget>
@@ -303,6 +304,15 @@ void MainWindow::buildMenus()
             showMessage(QString::fromStdString(e.what()));
         }
     }, QKeySequence(Qt::CTRL | Qt::Key_E));
+    file->addAction(tr("Export as &Web Page…"), this, [this] {
+        QString name = QString::fromStdString(document_->scene().name).toLower();
+        name = name.replace(QRegularExpression("[^a-z0-9]+"), "-").remove(QRegularExpression("^-+|-+$"));
+        const QString path = QFileDialog::getSaveFileName(
+            this, tr("Export as a web page"), ExportDialog::defaultFolder() + "/" + (name.isEmpty() ? "scene" : name) + ".html",
+            tr("Web pages (*.html)"));
+        if (!path.isEmpty())
+            exportWebPage(path);
+    });
     file->addAction(tr("Export CAD &Sheet…"), this, [this] {
         const QString path = QFileDialog::getSaveFileName(this, tr("Export the CAD sheet"), "sheet.png",
                                                           tr("PNG images (*.png)"));
@@ -895,6 +905,32 @@ std::vector<std::filesystem::path> MainWindow::exportStages(const ExportOptions&
     } catch (const std::exception& e) {
         showMessage(tr("Export failed; nothing was written: %1").arg(e.what()));
         return {};
+    }
+}
+
+void MainWindow::exportWebPage(const QString& path)
+{
+    QProgressDialog progress(tr("Exporting the web page…"), tr("Cancel"), 0, 100, this);
+    progress.setWindowModality(Qt::WindowModal);
+    progress.setMinimumDuration(0);
+    std::atomic<bool> cancel{false};
+    try {
+        QDir().mkpath(QFileInfo(path).absolutePath());
+        gui::exportWebPage(
+            document_->evaluated(), path.toStdString(), painter_->theme(),
+            [&progress, &cancel](int done, int total, const std::string& what) {
+                progress.setMaximum(total);
+                progress.setValue(done);
+                progress.setLabelText(QString::fromStdString(what));
+                QApplication::processEvents();
+                cancel = progress.wasCanceled();
+            },
+            cancel);
+        progress.setValue(progress.maximum());
+        if (!cancel)
+            statusBar()->showMessage(tr("Exported %1: open it in any browser").arg(path), 8000);
+    } catch (const std::exception& e) {
+        showMessage(tr("Export failed; nothing was written: %1").arg(e.what()));
     }
 }
 

@@ -68,6 +68,8 @@ public:
 
     // Exports with a progress dialog that can cancel; returns the files written
     // (none when cancelled or failed, with the reason shown).
+    // Writes the scene as one web page; failures are shown, not thrown.
+    void exportWebPage(const QString& path);
     std::vector<std::filesystem::path> exportStages(const ExportOptions& options);
     // Edit > Copy Matrix as LaTeX: the current stage's matrix (all of them at stage 0).
     void copyMatrixAsLatex();

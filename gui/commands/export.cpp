@@ -94,7 +94,7 @@ void addExportCommand(CLI::App& app)
         ->check(CLI::IsMember({"light", "dark"}))
         ->capture_default_str();
     command->add_flag("--transparent", options->transparent, "Transparent background (PNG)");
-    command->add_option("--format", options->formats, "png, svg, pdf, tikz, comma-separated")->capture_default_str();
+    command->add_option("--format", options->formats, "png, svg, pdf, tikz, html (one self-contained page), comma-separated")->capture_default_str();
     command->add_flag("--animate", options->animate, "Also the animated transition, animation.mp4");
     command->add_option("--fps", options->fps, "Frames per second of the animation")->capture_default_str();
     command->add_option("--digits", options->digits, "Significant digits of inexact entries in matrices.tex")

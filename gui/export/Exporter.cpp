@@ -36,6 +36,7 @@ namespace {
 
 constexpr int kBaseFontSize = 20; // at 1280x720; other sizes scale it, so that a picture keeps its look
 constexpr double kHoldSeconds = 0.6; // the animation rests this long at each stage
+constexpr int kWebFramesPerStep = 30;     // the web page's transitions: frames recorded per step
 
 struct Cancelled {};
 
@@ -79,13 +80,33 @@ void validate(const ExportOptions& o)
     if (o.digits < 1 || o.digits > 17)
         throw InputError("--digits", "must be 1 to 17");
     for (const std::string& f : o.formats)
-        if (f != "png" && f != "svg" && f != "pdf" && f != "tikz")
-            throw InputError("--format", "unknown format \"" + f + "\" (png, svg, pdf, tikz)");
+        if (f != "png" && f != "svg" && f != "pdf" && f != "tikz" && f != "html")
+            throw InputError("--format", "unknown format \"" + f + "\" (png, svg, pdf, tikz, html)");
     if (o.formats.empty())
         throw InputError("--format", "names no format");
 }
 
 } // namespace
+
+void exportWebPage(const std::shared_ptr<const EvaluatedScene>& scene, const fs::path& file, Theme theme,
+                   const ExportProgress& progress, const std::atomic<bool>& cancel)
+{
+    ExportOptions options;
+    options.out = file.parent_path() / (".viewpipe-web-" + std::to_string(::getpid()));
+    options.formats = {"html"};
+    options.theme = theme;
+    std::error_code error;
+    fs::remove_all(options.out, error);
+    try {
+        exportStages(scene, options, progress, cancel);
+        if (!cancel)
+            fs::rename(options.out / "scene.html", file);
+    } catch (...) {
+        fs::remove_all(options.out, error);
+        throw;
+    }
+    fs::remove_all(options.out, error);
+}
 
 void exportSheet(const EvaluatedScene& scene, const fs::path& file, int width, int height, Theme theme)
 {
@@ -216,7 +237,10 @@ std::vector<fs::path> exportStages(const std::shared_ptr<const EvaluatedScene>& 
     // Each step takes fps frames, and every stage is held for `hold` frames.
     const int hold = int(std::lround(options.fps * kHoldSeconds));
     const int frameCount = options.animate ? n * options.fps + (n + 1) * hold : 0;
-    const int total = int(chosen.size() * options.formats.size()) + 2 + int(options.formats.count("tikz")) + (scene.effects.depth ? 1 : 0) + frameCount;
+    const bool webPage = options.formats.count("html") > 0;
+    const std::size_t pictureFormats = options.formats.size() - (webPage ? 1 : 0);
+    const int total = int(chosen.size() * pictureFormats) + 2 + int(options.formats.count("tikz")) +
+                      (scene.effects.depth ? 1 : 0) + frameCount + (webPage ? n + 2 : 0);
     int done = 0;
     auto step = [&](const std::string& what) {
         if (cancel)
@@ -288,6 +312,8 @@ std::vector<fs::path> exportStages(const std::shared_ptr<const EvaluatedScene>& 
             shown.ghost = ghostAt(stages, k);
             const VectorFigure vector{&shown, painter.figureView(), caption, options.theme};
             for (const std::string& format : options.formats) {
+                if (format == "html")
+                    continue; // one page for every stage, below
                 // "-tikz.tex": pdflatex makes "-tikz.pdf" of it, not the PDF export's file.
                 const std::string file = base + (format == "tikz" ? "-tikz.tex" : "." + format);
                 step("stage " + std::to_string(k) + " of " + std::to_string(n) + ": " + file);
@@ -303,6 +329,34 @@ std::vector<fs::path> exportStages(const std::shared_ptr<const EvaluatedScene>& 
         if (options.formats.count("tikz")) {
             step("figures.tex");
             writeFileAtomically(temporary / "figures.tex", tikzFiguresDocument(figures));
+        }
+
+        if (webPage) {
+            WebPageViews views;
+            views.width = options.width * options.scale;
+            views.height = options.height * options.scale;
+            views.fontSize = painter.figureView().fontSize;
+            views.theme = options.theme;
+            for (int k = 0; k <= n; ++k) {
+                step("web page: stage " + std::to_string(k) + " of " + std::to_string(n));
+                const std::string caption = stageCaption(*evaluated, std::size_t(k), StageText::Heading);
+                if (k > 0) { // the app's transition, frame by frame
+                    std::vector<WebFrame> frames;
+                    StageTransition transition(painter, stages, k - 1, k);
+                    for (int f = 1; f <= kWebFramesPerStep; ++f) {
+                        transition.apply(double(f) / kWebFramesPerStep);
+                        frames.push_back(painter.webFrame());
+                    }
+                    views.transitions.push_back(std::move(frames));
+                }
+                showAt(k, caption);
+                StageShown shown(*evaluated, drawnAt(stages, k), StageTransition::canonicalOpacity(k, stages.size()));
+                shown.ghost = ghostAt(stages, k);
+                const VectorFigure vector{&shown, painter.figureView(), caption, options.theme};
+                views.stages.push_back({painter.webFrame(), shown.ghost, vector.view.frameReach, flatFigure(vector).labels});
+            }
+            step("scene.html");
+            writeFileAtomically(temporary / "scene.html", viewpipe::webPage(*evaluated, views, loadWebAssets()));
         }
 
         step("matrices.tex");

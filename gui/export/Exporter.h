@@ -2,7 +2,8 @@
 
 // Exports the stages of a scene as images for slides: one picture per stage
 // drawn by the scene painter, true vector SVG/PDF and TikZ figures of the same
-// stage with the same framing (and figures.tex showing them all), the matrices as LaTeX and JSON, and
+// stage with the same framing (and figures.tex showing them all), the scene
+// as one web page (scene.html), the matrices as LaTeX and JSON, and
 // the animated transition as an MP4 video (H.264, encoded by ffmpeg). Files
 // are written into a temporary folder and moved into place only when all are
 // complete: a failed or cancelled export leaves nothing half-written.
@@ -28,7 +29,7 @@ struct ExportOptions {
     std::vector<int> stages;     // empty: all, 0 (the world) to n
     Theme theme = Theme::Light;
     bool transparent = false;
-    std::set<std::string> formats = {"png"}; // png, svg, pdf, tikz
+    std::set<std::string> formats = {"png"}; // png, svg, pdf, tikz, html
     bool animate = false;
     int fps = 30;
     int digits = 4;              // decimals in matrices.tex
@@ -48,6 +49,11 @@ using ExportProgress = std::function<void(int done, int total, const std::string
 // up, when `cancel` becomes true (then returns nothing).
 std::vector<std::filesystem::path> exportStages(const std::shared_ptr<const EvaluatedScene>& scene, const ExportOptions& options,
                                                 const ExportProgress& progress, const std::atomic<bool>& cancel);
+
+// The scene as one self-contained web page at `file` (export's html format),
+// written atomically; throws as exportStages does.
+void exportWebPage(const std::shared_ptr<const EvaluatedScene>& scene, const std::filesystem::path& file, Theme theme,
+                   const ExportProgress& progress, const std::atomic<bool>& cancel);
 
 // The CAD layout of seed 001 for a scene's objects, as one PNG: the top view
 // above the front view, the (right) side view beside it, and the isometric

@@ -167,11 +167,7 @@ void ProjectedView::setScene(const EvaluatedScene& scene,
             }
     }
     // The window's outline, at mid depth so that no clipping plane cuts it.
-    const auto& v = scene.setup.volume;
-    std::vector<Vec3<double>> border;
-    for (std::size_t k = 0; k < 4; ++k)
-        border.insert(border.end(), {(v[k] + v[k + 4]) / 2, (v[(k + 1) % 4] + v[(k + 1) % 4 + 4]) / 2});
-    actors_.push_back({unlitActor(linesData(border)), Element::Window, false});
+    actors_.push_back({unlitActor(linesData(pictureWindowOutline(scene))), Element::Window, false});
     for (const StyledActor& a : actors_)
         renderer_->AddActor(a.actor);
 

@@ -366,6 +366,20 @@ FigureView ScenePainter::figureView() const
     return view;
 }
 
+WebFrame ScenePainter::webFrame() const
+{
+    vtkCamera* camera = world_->GetActiveCamera();
+    WebFrame frame;
+    frame.view = fromVtk(camera->GetViewTransformMatrix());
+    frame.projection = fromVtk(camera->GetProjectionTransformMatrix(world_->GetTiledAspectRatio(), -1, 1));
+    frame.focalPoint = Vec3<double>(camera->GetFocalPoint());
+    frame.shown = shownMatrix_;
+    frame.canonicalOpacity = canonicalOpacity_;
+    if (scene_)
+        frame.cut = StageShown(*scene_, shownMatrix_, canonicalOpacity_).cut;
+    return frame;
+}
+
 std::vector<Box2> ScenePainter::captionBoxes() const
 {
     // Viewport coordinates (y up) to the view's pixels (y down).

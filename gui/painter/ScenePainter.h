@@ -17,6 +17,7 @@
 #include <vector>
 
 #include "viewpipe/report/figure.hpp"
+#include "viewpipe/report/web_page.hpp"
 #include "viewpipe/report/style.hpp"
 
 class vtkActor;
@@ -96,6 +97,8 @@ public:
 
     // How the world view sees the stage shown, for figures drawn as it is.
     FigureView figureView() const;
+    // The frame shown, for the web page: the camera and what it draws.
+    WebFrame webFrame() const;
 
 private:
     struct Layer {

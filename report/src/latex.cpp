@@ -140,4 +140,14 @@ std::string stageLatex(const Scene& scene, int stage, int digits)
     return stageEquation(p.stages.at(std::size_t(stage - 1)), digits);
 }
 
+std::vector<StageLatex> stagesLatex(const Scene& scene, int digits)
+{
+    const Pipeline<Exact> p = exactPipeline(scene);
+    const std::vector<Mat4<Exact>> products = cumulativeProducts(p.stages);
+    std::vector<StageLatex> out;
+    for (std::size_t k = 0; k < p.stages.size(); ++k)
+        out.push_back({stageEquation(p.stages[k], digits), bmatrix(products[k], digits)});
+    return out;
+}
+
 } // namespace viewpipe::cli

@@ -3,6 +3,7 @@
 
 #include <QApplication>
 #include <QClipboard>
+#include <QFileDialog>
 #include <QProgressDialog>
 #include <QTableWidget>
 #include <QTimer>
@@ -316,6 +317,35 @@ private slots:
         options.animate = true;
         QVERIFY(w.exportStages(options).empty());
         QVERIFY(!QDir(dir.filePath("cancelled")).exists());
+    }
+
+    void exportsTheSceneAsAWebPage()
+    {
+        MainWindow& w = *window_;
+        QAction* action = nullptr;
+        for (QAction* a : w.findChildren<QAction*>())
+            if (a->text() == "Export as &Web Page…")
+                action = a;
+        QVERIFY2(action, "File has Export as Web Page");
+        QTemporaryDir dir;
+        QDir(dir.path()).mkpath("lecture");
+        const QString page = dir.filePath("lecture/house.html");
+        // Through the menu: the save dialog (Qt's own under the tests) answered with the file name.
+        QTimer::singleShot(0, [page] {
+            for (QWidget* top : QApplication::topLevelWidgets())
+                if (auto* dialog = qobject_cast<QFileDialog*>(top)) {
+                    dialog->selectFile(page);
+                    QMetaObject::invokeMethod(dialog, "accept"); // as the Save button does
+                }
+        });
+        action->trigger();
+        QFile file(page);
+        QVERIFY2(file.open(QIODevice::ReadOnly), "the page was written where the dialog said");
+        const QByteArray html = file.readAll();
+        QVERIFY(html.startsWith("<!DOCTYPE html>"));
+        QVERIFY(html.contains("<title>Foley's house · ViewPipe</title>"));
+        QVERIFY(html.contains("\"transitions\""));
+        QCOMPARE(QDir(dir.filePath("lecture")).entryList(QDir::Files | QDir::Hidden).size(), 1); // nothing left beside it
     }
 
     void accuracyPanelMeasuresInTheBackground()

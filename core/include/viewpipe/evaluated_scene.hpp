@@ -167,6 +167,10 @@ std::shared_ptr<const EvaluatedScene> evaluateScene(const Scene& scene);
 // because the stage changed sizes.
 std::string stageCaption(const EvaluatedScene& scene, std::size_t k, StageText text);
 
+// The window as the projected view outlines it: the mid-section of the view
+// volume's side edges (end points by pairs, world coordinates).
+std::vector<Vec3<double>> pictureWindowOutline(const EvaluatedScene& scene);
+
 // A point through a cumulative matrix and the divide; nothing when it has no
 // image (behind the eye, on the eye plane, or not finite).
 std::optional<Vec3<double>> projectPoint(const Mat4<double>& m, const Vec3<double>& p);

@@ -7,6 +7,7 @@
 // fraction (glOrtho's 1/25 and -3/2), any other entry as a decimal.
 
 #include <string>
+#include <vector>
 
 #include "viewpipe/scene.hpp"
 
@@ -16,6 +17,12 @@ std::string matricesLatex(const Scene& scene, int digits);
 
 // One stage's matrix (stage >= 1) as "symbol = \begin{bmatrix}...\end{bmatrix}".
 std::string stageLatex(const Scene& scene, int stage, int digits);
+
+// Each stage's equation (as stageLatex) and the product of the stages so far.
+struct StageLatex {
+    std::string equation, cumulative;
+};
+std::vector<StageLatex> stagesLatex(const Scene& scene, int digits);
 
 // A stage symbol as LaTeX math: "SH_per" -> "\mathit{SH}_{\mathrm{per}}".
 std::string latexSymbol(const std::string& symbol);

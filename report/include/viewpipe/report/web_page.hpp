@@ -1,0 +1,59 @@
+#pragma once
+
+// The scene as one self-contained web page: the evaluated scene's primitives,
+// labels and markers drawn by three.js through each stage's matrix, the
+// stepper with the app's transitions (their frames recorded by the painter),
+// the matrices typeset by KaTeX, a vertex traced on click. Scripts, styles
+// and fonts are inlined from Debian's libjs-three and libjs-katex: the page
+// makes no network request and opens from file://. No VTK, no Qt.
+
+#include <filesystem>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "viewpipe/report/figure.hpp"
+#include "viewpipe/report/style.hpp"
+
+namespace viewpipe {
+
+// One frame of the world view: its camera and what it draws.
+struct WebFrame {
+    Mat4<double> view = Mat4<double>::Identity();       // stage coordinates -> eye coordinates
+    Mat4<double> projection = Mat4<double>::Identity(); // eye -> OpenGL clip coordinates
+    Vec3<double> focalPoint = Vec3<double>::Zero();      // what an orbit turns about
+    Mat4<double> shown = Mat4<double>::Identity();       // the matrix the primitives are drawn through
+    double canonicalOpacity = 0;
+    std::optional<Vec4<double>> cut; // world coordinates, kept where cut . (x, y, z, 1) >= 0
+};
+
+// A stage at rest: its frame, the ghost of the stage before, the fixed
+// axes' reach and the labels as the app places them (pixels of the page's size).
+struct WebStage {
+    WebFrame rest;
+    std::optional<Mat4<double>> ghost;
+    double frameReach = 0;
+    std::vector<PlacedLabel> labels;
+};
+
+struct WebPageViews {
+    int width = 1280, height = 720; // the pixels the frames and labels were made for
+    double fontSize = 20;
+    std::vector<WebStage> stages;                   // 0 (the world) to the number of stages
+    std::vector<std::vector<WebFrame>> transitions; // k: from stage k to k + 1, evenly in time, the last at rest
+    Theme theme = Theme::Light;
+};
+
+// The libraries, read from Debian's packages; KaTeX's fonts inlined into its
+// style sheet as data. Throws std::runtime_error naming the package missing.
+struct WebAssets {
+    std::string three, katex, katexCss;
+};
+WebAssets loadWebAssets(const std::filesystem::path& javascript = "/usr/share/javascript");
+
+// The page's data (what the script draws), as JSON.
+std::string webPageData(const EvaluatedScene& scene, const WebPageViews& views);
+// The whole page.
+std::string webPage(const EvaluatedScene& scene, const WebPageViews& views, const WebAssets& assets);
+
+} // namespace viewpipe

@@ -1,0 +1,288 @@
+#include "viewpipe/report/web_page.hpp"
+
+#include <nlohmann/json.hpp>
+
+#include <map>
+#include <fstream>
+#include <regex>
+#include <sstream>
+#include <stdexcept>
+
+#include "viewpipe/report/latex.hpp"
+#include "web_template.hpp" // generated from report/web: kPageHtml, kPageCss, kPageJs
+
+namespace viewpipe {
+namespace {
+
+using nlohmann::json;
+
+std::string readFile(const std::filesystem::path& file, const char* package)
+{
+    std::ifstream in(file, std::ios::binary);
+    if (!in)
+        throw std::runtime_error("cannot read " + file.string() + " (Debian package " + package + ")");
+    std::ostringstream text;
+    text << in.rdbuf();
+    return text.str();
+}
+
+std::string base64(const void* data, std::size_t size)
+{
+    static const char* digits = "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789+/";
+    const auto* bytes = static_cast<const unsigned char*>(data);
+    std::string out;
+    out.reserve((size + 2) / 3 * 4);
+    for (std::size_t k = 0; k < size; k += 3) {
+        const unsigned n = unsigned(bytes[k]) << 16 | (k + 1 < size ? unsigned(bytes[k + 1]) << 8 : 0u) |
+                           (k + 2 < size ? unsigned(bytes[k + 2]) : 0u);
+        out += digits[n >> 18 & 63];
+        out += digits[n >> 12 & 63];
+        out += k + 1 < size ? digits[n >> 6 & 63] : '=';
+        out += k + 2 < size ? digits[n & 63] : '=';
+    }
+    return out;
+}
+
+// Geometry as little-endian binary (what typed arrays read), in base64.
+std::string floats(const std::vector<Vec3<double>>& points)
+{
+    std::vector<float> packed;
+    packed.reserve(points.size() * 3);
+    for (const Vec3<double>& p : points)
+        packed.insert(packed.end(), {float(p.x()), float(p.y()), float(p.z())});
+    return base64(packed.data(), packed.size() * sizeof(float));
+}
+
+json matrix(const Mat4<double>& m) // row by row, as three.js's Matrix4.set takes it
+{
+    json rows = json::array();
+    for (int r = 0; r < 4; ++r)
+        for (int c = 0; c < 4; ++c)
+            rows.push_back(m(r, c));
+    return rows;
+}
+
+json vec(const Vec3<double>& v)
+{
+    return {v.x(), v.y(), v.z()};
+}
+
+json color(const Rgb& c)
+{
+    return {c.r, c.g, c.b};
+}
+
+json frameJson(const WebFrame& f)
+{
+    json out = {{"view", matrix(f.view)},
+                {"projection", matrix(f.projection)},
+                {"focal", vec(f.focalPoint)},
+                {"shown", matrix(f.shown)},
+                {"canonical", f.canonicalOpacity}};
+    if (f.cut)
+        out["cut"] = {f.cut->x(), f.cut->y(), f.cut->z(), f.cut->w()};
+    return out;
+}
+
+json primitiveJson(const Primitive& p, Theme theme)
+{
+    const bool surface = p.kind == PrimitiveKind::Faces;
+    json out = {{"surface", surface},
+                {"color", color(styledColor(p.element, surface, theme))},
+                {"opacity", p.opacity},
+                {"lineWidth", lineWidthOf(p.element, surface)},
+                {"canonical", p.canonical},
+                {"ghosted", StageShown::ghosted(p)},
+                {"object", p.object}};
+    if (!surface) {
+        out["positions"] = floats(p.segments);
+        return out;
+    }
+    std::vector<std::uint32_t> triangles; // each polygon as a fan
+    for (const std::vector<int>& face : p.faces->faces)
+        for (std::size_t k = 1; k + 1 < face.size(); ++k)
+            triangles.insert(triangles.end(), {std::uint32_t(face[0]), std::uint32_t(face[k]), std::uint32_t(face[k + 1])});
+    out["positions"] = floats(p.faces->vertices);
+    out["triangles"] = base64(triangles.data(), triangles.size() * sizeof(std::uint32_t));
+    return out;
+}
+
+json labelJson(const Label& l, Theme theme)
+{
+    return {{"text", l.text}, {"anchor", vec(l.anchor)}, {"fixed", l.fixed}, {"minor", l.minor},
+            {"color", color(elementColor(l.element, theme))}};
+}
+
+json legendJson(const std::vector<LegendEntry>& entries, Theme theme)
+{
+    json out = json::array();
+    for (const LegendEntry& e : entries) {
+        const bool surface = e.swatch == LegendEntry::Swatch::Face;
+        const char* swatch = e.swatch == LegendEntry::Swatch::Line ? "line"
+                             : e.swatch == LegendEntry::Swatch::Dot ? "dot"
+                                                                    : "face";
+        out.push_back({{"text", e.text}, {"swatch", swatch}, {"color", color(styledColor(e.element, surface, theme))},
+                       {"opacity", e.opacity}});
+    }
+    return out;
+}
+
+std::string escapeForScript(std::string text)
+{
+    // Inside <script>, "</" could end the element: JSON and JavaScript both read "<\/" as "</".
+    std::string out;
+    out.reserve(text.size());
+    for (std::size_t k = 0; k < text.size(); ++k) {
+        out += text[k];
+        if (text[k] == '<' && k + 1 < text.size() && text[k + 1] == '/')
+            out += '\\';
+    }
+    return out;
+}
+
+// The template with each "{{name}}" replaced by its value; the values are not searched.
+std::string fill(const std::string& text, const std::map<std::string, std::string>& values)
+{
+    std::string out;
+    std::size_t at = 0;
+    while (true) {
+        const std::size_t open = text.find("{{", at);
+        if (open == std::string::npos)
+            return out + text.substr(at);
+        const std::size_t close = text.find("}}", open);
+        const auto value = values.find(text.substr(open + 2, close - open - 2));
+        if (close == std::string::npos || value == values.end())
+            throw std::logic_error("the web page template names an unknown value at " + std::to_string(open));
+        out += text.substr(at, open - at) + value->second;
+        at = close + 2;
+    }
+}
+
+} // namespace
+
+WebAssets loadWebAssets(const std::filesystem::path& javascript)
+{
+    WebAssets assets;
+    assets.three = readFile(javascript / "three" / "build" / "three.min.js", "libjs-three");
+    assets.katex = readFile(javascript / "katex" / "katex.min.js", "libjs-katex");
+    std::string css = readFile(javascript / "katex" / "katex.min.css", "libjs-katex");
+    // Each @font-face keeps its woff2 source, inlined; browsers all read woff2.
+    const std::regex source(R"(src:url\((fonts/[A-Za-z0-9_-]+)\.woff2\) format\(['"]woff2['"]\)[^;}]*)");
+    std::string inlined;
+    std::size_t last = 0;
+    for (auto it = std::sregex_iterator(css.begin(), css.end(), source); it != std::sregex_iterator(); ++it) {
+        const std::string font = readFile(javascript / "katex" / ((*it)[1].str() + ".woff2"), "fonts-katex");
+        inlined += css.substr(last, std::size_t(it->position()) - last) + "src:url(data:font/woff2;base64," +
+                   base64(font.data(), font.size()) + ") format(\"woff2\")";
+        last = std::size_t(it->position() + it->length());
+    }
+    assets.katexCss = inlined + css.substr(last);
+    if (assets.katexCss.find("url(fonts/") != std::string::npos)
+        throw std::runtime_error("KaTeX's style sheet names a font file that could not be inlined");
+    return assets;
+}
+
+std::string webPageData(const EvaluatedScene& scene, const WebPageViews& views)
+{
+    const Theme theme = views.theme;
+    const std::vector<Stage<double>>& stages = scene.pipeline.stages;
+    const std::vector<cli::StageLatex> latex = cli::stagesLatex(scene.scene, 4);
+    json stageList = json::array();
+    for (std::size_t k = 0; k < views.stages.size(); ++k) {
+        const WebStage& s = views.stages[k];
+        json labels = json::array();
+        for (const PlacedLabel& l : s.labels)
+            labels.push_back({{"text", l.text},
+                              {"anchor", {l.anchor.x(), l.anchor.y()}},
+                              {"box", {l.box.min.x(), l.box.min.y(), l.box.max.x(), l.box.max.y()}},
+                              {"leader", l.leader},
+                              {"minor", l.minor},
+                              {"color", color(elementColor(l.element, theme))}});
+        const FrameMarks marks = frameMarks(s.frameReach);
+        json entry = {{"list", stageText(stages, k, StageText::ListEntry)},
+                      {"caption", stageCaption(scene, k, StageText::Caption)},
+                      {"claim", k < scene.stageClaims.size() ? scene.stageClaims[k] : ""},
+                      {"rest", frameJson(s.rest)},
+                      {"labels", labels},
+                      {"frame", floats(marks.lines)}};
+        if (s.ghost)
+            entry["ghost"] = matrix(*s.ghost);
+        if (k > 0) {
+            const Stage<double>& stage = stages[k - 1];
+            entry["symbol"] = stage.symbol;
+            entry["matrix"] = matrix(stage.matrix);
+            entry["divides"] = stage.divides;
+            entry["latex"] = latex[k - 1].equation;
+            entry["cumulativeLatex"] = latex[k - 1].cumulative;
+        }
+        stageList.push_back(entry);
+    }
+    json transitions = json::array();
+    for (const std::vector<WebFrame>& frames : views.transitions) {
+        json list = json::array();
+        for (const WebFrame& f : frames)
+            list.push_back(frameJson(f));
+        transitions.push_back(list);
+    }
+    json primitives = json::array();
+    for (const Primitive& p : scene.primitives)
+        primitives.push_back(primitiveJson(p, theme));
+    json labels = json::array();
+    for (const Label& l : scene.labels)
+        labels.push_back(labelJson(l, theme));
+    json markers = json::array();
+    for (const Marker& m : scene.markers)
+        markers.push_back({{"arrow", m.shape == Marker::Shape::ArrowHead},
+                           {"point", vec(m.point)},
+                           {"from", vec(m.from)},
+                           {"size", m.size},
+                           {"color", color(elementColor(m.element, theme))}});
+    std::vector<Vec3<double>> vertices = scene.objectVertices();
+
+    json projected = {{"clip", matrix(screenClipMatrix(scene.pipeline))},
+                      {"window", floats(pictureWindowOutline(scene))},
+                      {"windowColor", color(elementColor(Element::Window, theme))},
+                      {"vanishingColor", color(elementColor(Element::Vanishing, theme))},
+                      {"legend", legendJson(scene.projectedLegend, theme)}};
+    json vanishing = json::array();
+    for (const Segment2& s : scene.vanishingLines)
+        vanishing.push_back({s[0].x(), s[0].y(), s[1].x(), s[1].y()});
+    projected["vanishing"] = vanishing;
+
+    const json data = {{"title", scene.scene.name},
+                       {"width", views.width},
+                       {"height", views.height},
+                       {"fontSize", views.fontSize},
+                       {"background", color(backgroundColor(theme, false))},
+                       {"projectedBackground", color(backgroundColor(theme, true))},
+                       {"ink", color(elementColor(Element::Objects, theme))},
+                       {"dark", theme == Theme::Dark},
+                       {"ghostOpacity", kGhostOpacity},
+                       {"frameColor", color(elementColor(Element::Frame, theme))},
+                       {"stages", stageList},
+                       {"transitions", transitions},
+                       {"primitives", primitives},
+                       {"labels", labels},
+                       {"markers", markers},
+                       {"vertices", floats(vertices)},
+                       {"legend", legendJson(scene.worldLegend, theme)},
+                       {"note", scene.effectsNote},
+                       {"projected", projected}};
+    return data.dump();
+}
+
+std::string webPage(const EvaluatedScene& scene, const WebPageViews& views, const WebAssets& assets)
+{
+    std::string title;
+    for (char c : scene.scene.name)
+        title += c == '<' ? "&lt;" : c == '>' ? "&gt;" : c == '&' ? "&amp;" : std::string(1, c);
+    return fill(web::kPageHtml, {{"title", title},
+                                 {"katex-css", assets.katexCss},
+                                 {"page-css", web::kPageCss},
+                                 {"data", escapeForScript(webPageData(scene, views))},
+                                 {"three", escapeForScript(assets.three)},
+                                 {"katex", escapeForScript(assets.katex)},
+                                 {"page-js", escapeForScript(web::kPageJs)}});
+}
+
+} // namespace viewpipe

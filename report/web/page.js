@@ -1,0 +1,557 @@
+// ViewPipe's page: draws the evaluated scene that the export wrote into
+// #scene-data. Every matrix, framing, label place and transition frame comes
+// from the app; this script only draws them, as the app's painter does.
+(function () {
+  'use strict';
+  const data = JSON.parse(document.getElementById('scene-data').textContent);
+  const stages = data.stages;
+  const last = stages.length - 1;
+  const body = document.body;
+  if (data.dark) body.classList.add('dark');
+
+  function bytesOf(base64) {
+    const text = atob(base64);
+    const bytes = new Uint8Array(text.length);
+    for (let k = 0; k < text.length; ++k) bytes[k] = text.charCodeAt(k);
+    return bytes.buffer;
+  }
+  const floatsOf = (base64) => new Float32Array(bytesOf(base64));
+  const matrixOf = (rows) => new THREE.Matrix4().set(...rows);
+  const cssColor = (c, alpha = 1) =>
+    `rgba(${Math.round(c[0] * 255)}, ${Math.round(c[1] * 255)}, ${Math.round(c[2] * 255)}, ${alpha})`;
+  const identity = new THREE.Matrix4();
+
+  // Unlit color; fragments on the eye's side of the near cut are thrown away
+  // (under a perspective matrix they would be flung out towards infinity).
+  const vertexShader = `
+    uniform vec4 cut;
+    varying float kept;
+    void main() {
+      kept = dot(cut, vec4(position, 1.0));
+      gl_Position = projectionMatrix * modelViewMatrix * vec4(position, 1.0);
+    }`;
+  const fragmentShader = `
+    uniform vec3 color;
+    uniform float opacity;
+    varying float kept;
+    void main() {
+      if (kept < 0.0) discard;
+      gl_FragColor = vec4(color, opacity);
+    }`;
+  const noCut = new THREE.Vector4(0, 0, 0, 1);
+  function material(color, opacity, surface) {
+    return new THREE.ShaderMaterial({
+      uniforms: {
+        color: { value: new THREE.Color(color[0], color[1], color[2]) },
+        opacity: { value: opacity },
+        cut: { value: noCut.clone() },
+      },
+      vertexShader, fragmentShader,
+      transparent: opacity < 1,
+      depthWrite: !surface && opacity >= 1,
+      side: THREE.DoubleSide,
+    });
+  }
+  function geometryOf(primitive) {
+    const geometry = new THREE.BufferGeometry();
+    geometry.setAttribute('position', new THREE.BufferAttribute(floatsOf(primitive.positions), 3));
+    if (primitive.triangles) geometry.setIndex(new THREE.BufferAttribute(new Uint32Array(bytesOf(primitive.triangles)), 1));
+    return geometry;
+  }
+  function drawable(geometry, primitive, opacity, order) {
+    const object = primitive.surface ? new THREE.Mesh(geometry, material(primitive.color, opacity, true))
+                                     : new THREE.LineSegments(geometry, material(primitive.color, opacity, false));
+    object.matrixAutoUpdate = false;
+    object.frustumCulled = false;
+    object.renderOrder = order;
+    return object;
+  }
+
+  function makeRenderer(canvas) {
+    try {
+      const renderer = new THREE.WebGLRenderer({ canvas, antialias: true, preserveDrawingBuffer: true });
+      renderer.sortObjects = true; // by renderOrder: the scene's drawing order, back to front
+      renderer.setPixelRatio(window.devicePixelRatio || 1);
+      return renderer;
+    } catch (error) {
+      document.getElementById('caption').textContent = 'This page needs WebGL, which this browser did not give it.';
+      throw error;
+    }
+  }
+
+  // ---- The world view -------------------------------------------------------
+  const worldCanvas = document.getElementById('world-canvas');
+  const worldOverlay = document.getElementById('world-overlay');
+  const world = makeRenderer(worldCanvas);
+  const worldScene = new THREE.Scene();
+  worldScene.background = new THREE.Color(...data.background);
+  const camera = new THREE.Camera();
+  camera.matrixAutoUpdate = false;
+  const items = []; // {object, primitive, ghost}
+  data.primitives.forEach((primitive, k) => {
+    const geometry = geometryOf(primitive);
+    const object = drawable(geometry, primitive, primitive.opacity, 2 * k + 1);
+    worldScene.add(object);
+    items.push({ object, primitive, ghost: false });
+    if (primitive.ghosted) {
+      const ghost = drawable(geometry, primitive, primitive.opacity * data.ghostOpacity, 2 * k);
+      worldScene.add(ghost);
+      items.push({ object: ghost, primitive, ghost: true });
+    }
+  });
+  let frameAxes = null; // the fixed axes of the stage shown at rest
+
+  // ---- What the camera sees ---------------------------------------------------
+  const projectedCanvas = document.getElementById('projected-canvas');
+  const projectedOverlay = document.getElementById('projected-overlay');
+  const projected = makeRenderer(projectedCanvas);
+  const projectedScene = new THREE.Scene();
+  projectedScene.background = new THREE.Color(...data.projectedBackground);
+  const projectedCamera = new THREE.Camera();
+  projectedCamera.matrixAutoUpdate = false;
+  data.primitives.forEach((primitive, k) => {
+    if (primitive.object < 0 || primitive.opacity < 1 && !primitive.surface) return; // objects as the camera sees them
+    projectedScene.add(drawable(geometryOf(primitive), primitive, primitive.surface ? 0.35 : 1, k));
+  });
+  const windowOutline = { surface: false, positions: data.projected.window, color: data.projected.windowColor };
+  projectedScene.add(drawable(geometryOf(windowOutline), windowOutline, 1, data.primitives.length));
+
+  // ---- State ------------------------------------------------------------------
+  const state = { stage: 0, yaw: 0, pitch: 0, zoom: 1, figure: false, traced: null };
+  let shown = null; // the frame drawn: {frame, atRest, ghost}
+  let animation = null;
+  let playing = null;
+
+  function readFragment() {
+    const values = new URLSearchParams(location.hash.slice(1));
+    const number = (name, fallback) => {
+      const value = Number(values.get(name));
+      return values.has(name) && Number.isFinite(value) ? value : fallback;
+    };
+    state.stage = Math.min(last, Math.max(0, Math.round(number('stage', 0))));
+    state.yaw = number('yaw', 0);
+    state.pitch = Math.max(-89, Math.min(89, number('pitch', 0)));
+    state.zoom = Math.max(0.1, Math.min(20, number('zoom', 1)));
+    state.figure = values.has('figure');
+    body.classList.toggle('figure', state.figure);
+  }
+  function writeFragment() {
+    const values = new URLSearchParams();
+    values.set('stage', state.stage);
+    if (state.yaw) values.set('yaw', state.yaw.toFixed(1));
+    if (state.pitch) values.set('pitch', state.pitch.toFixed(1));
+    if (state.zoom !== 1) values.set('zoom', state.zoom.toFixed(3));
+    if (state.figure) values.set('figure', '');
+    history.replaceState(null, '', '#' + values.toString().replace(/=$|=(?=&)/g, ''));
+  }
+  const userMoved = () => state.yaw !== 0 || state.pitch !== 0 || state.zoom !== 1;
+
+  // ---- Drawing ----------------------------------------------------------------
+  function sizeOf(canvas) {
+    const box = canvas.parentElement.getBoundingClientRect();
+    return { width: Math.max(1, Math.round(box.width)), height: Math.max(1, Math.round(box.height)) };
+  }
+  function fitOverlay(overlay, size) {
+    const ratio = window.devicePixelRatio || 1;
+    overlay.width = size.width * ratio;
+    overlay.height = size.height * ratio;
+    const context = overlay.getContext('2d');
+    context.setTransform(ratio, 0, 0, ratio, 0, 0);
+    context.clearRect(0, 0, size.width, size.height);
+    return context;
+  }
+  // The export's picture fitted into the view, whole: pixels per export pixel.
+  function fitScale(size) {
+    return Math.min(size.width / data.width, size.height / data.height);
+  }
+
+  // The frame's camera with the user's orbit (about the focal point, in eye axes) and zoom.
+  function cameraMatrices(frame, size) {
+    const view = matrixOf(frame.view);
+    const focal = new THREE.Vector3(...frame.focal).applyMatrix4(view);
+    const turn = new THREE.Matrix4().makeRotationX(state.pitch * Math.PI / 180)
+      .multiply(new THREE.Matrix4().makeRotationY(state.yaw * Math.PI / 180));
+    const orbit = new THREE.Matrix4().makeTranslation(focal.x, focal.y, focal.z).multiply(turn)
+      .multiply(new THREE.Matrix4().makeTranslation(-focal.x, -focal.y, -focal.z));
+    const s = fitScale(size);
+    // z scaled down: nothing in front of the eye is clipped by near and far planes while orbiting.
+    const fit = new THREE.Matrix4().makeScale(data.width * s / size.width * state.zoom,
+                                              data.height * s / size.height * state.zoom, 0.02);
+    return { view: orbit.multiply(view), projection: fit.multiply(matrixOf(frame.projection)) };
+  }
+
+  function project(clipFromPoint, point, size) {
+    const p = new THREE.Vector4(point[0], point[1], point[2], 1).applyMatrix4(clipFromPoint);
+    if (!(p.w > 1e-12)) return null;
+    return { x: (p.x / p.w + 1) / 2 * size.width, y: (1 - p.y / p.w) / 2 * size.height };
+  }
+  const kept = (cut, point) => !cut || cut[0] * point[0] + cut[1] * point[1] + cut[2] * point[2] + cut[3] >= 0;
+
+  function drawWorld() {
+    if (!shown) return;
+    const { frame, atRest, ghost } = shown;
+    const size = sizeOf(worldCanvas);
+    world.setSize(size.width, size.height, false);
+    const { view, projection } = cameraMatrices(frame, size);
+    camera.matrix.getInverse(view);
+    camera.matrixWorldNeedsUpdate = true;
+    camera.projectionMatrix.copy(projection);
+    camera.projectionMatrixInverse.getInverse(projection);
+    const stageMatrix = matrixOf(frame.shown);
+    const ghostMatrix = ghost ? matrixOf(ghost) : null;
+    const cut = frame.cut ? new THREE.Vector4(...frame.cut) : noCut;
+    for (const { object, primitive, ghost: isGhost } of items) {
+      const uniforms = object.material.uniforms;
+      if (primitive.canonical) {
+        object.matrix.copy(identity);
+        object.visible = frame.canonical > 0;
+        uniforms.opacity.value = primitive.opacity * frame.canonical;
+        object.material.transparent = uniforms.opacity.value < 1;
+        uniforms.cut.value.copy(noCut);
+      } else if (isGhost) {
+        object.visible = !!ghostMatrix;
+        if (ghostMatrix) object.matrix.copy(ghostMatrix);
+        uniforms.cut.value.copy(cut);
+      } else {
+        object.matrix.copy(stageMatrix);
+        uniforms.cut.value.copy(cut);
+      }
+      object.matrixWorldNeedsUpdate = true;
+    }
+    if (frameAxes) frameAxes.visible = atRest;
+    world.render(worldScene, camera);
+
+    const context = fitOverlay(worldOverlay, size);
+    const clipFromStage = projection.clone().multiply(view);
+    const clipFromWorld = clipFromStage.clone().multiply(stageMatrix);
+    const s = fitScale(size);
+    const markerScale = Math.max(0.5, s);
+    for (const marker of data.markers) {
+      if (!kept(frame.cut, marker.point)) continue;
+      const tip = project(clipFromWorld, marker.point, size);
+      if (!tip) continue;
+      context.fillStyle = cssColor(marker.color);
+      context.beginPath();
+      if (marker.arrow) {
+        const from = project(clipFromWorld, marker.from, size);
+        if (!from) continue;
+        const dx = tip.x - from.x, dy = tip.y - from.y, length = Math.hypot(dx, dy) || 1;
+        const ux = dx / length, uy = dy / length, l = 3 * marker.size * markerScale, w = marker.size * markerScale;
+        context.moveTo(tip.x, tip.y);
+        context.lineTo(tip.x - l * ux - w * uy, tip.y - l * uy + w * ux);
+        context.lineTo(tip.x - l * ux + w * uy, tip.y - l * uy - w * ux);
+      } else {
+        context.arc(tip.x, tip.y, marker.size * markerScale, 0, 2 * Math.PI);
+      }
+      context.fill();
+    }
+    if (state.traced) {
+      const at = project(clipFromWorld, state.traced, size);
+      if (at && kept(frame.cut, state.traced)) {
+        context.strokeStyle = cssColor(data.ink);
+        context.lineWidth = 2;
+        context.beginPath();
+        context.arc(at.x, at.y, 7, 0, 2 * Math.PI);
+        context.stroke();
+      }
+    }
+    const font = (px) => `${px}px "DejaVu Sans", "Segoe UI", Helvetica, Arial, sans-serif`;
+    if (atRest && !userMoved()) {
+      // Where the app put them: export pixels, fitted.
+      const place = (x, y) => ({ x: (x - data.width / 2) * s + size.width / 2, y: (y - data.height / 2) * s + size.height / 2 });
+      context.textBaseline = 'top';
+      for (const label of stages[state.stage].labels) {
+        const [x0, y0, x1, y1] = label.box;
+        const corner = place(x0, y0);
+        let px = (label.minor ? 0.7 : 1) * data.fontSize * s;
+        const weight = label.minor ? '' : 'bold ';
+        context.font = weight + font(px);
+        const width = context.measureText(label.text).width;
+        if (width > (x1 - x0) * s) px *= (x1 - x0) * s / width;
+        context.font = weight + font(px);
+        context.fillStyle = cssColor(label.color);
+        context.fillText(label.text, corner.x, corner.y + ((y1 - y0) * s - px) / 2);
+        if (label.leader) {
+          const anchor = place(label.anchor[0], label.anchor[1]);
+          const nearest = place(Math.min(Math.max(label.anchor[0], x0), x1), Math.min(Math.max(label.anchor[1], y0), y1));
+          context.strokeStyle = cssColor(label.color, 0.8);
+          context.lineWidth = 1;
+          context.beginPath();
+          context.moveTo(anchor.x, anchor.y);
+          context.lineTo(nearest.x, nearest.y);
+          context.stroke();
+        }
+      }
+    } else {
+      // Moving: each label beside its anchor (the app places them anew when the motion stops).
+      context.textBaseline = 'bottom';
+      context.font = 'bold ' + font(data.fontSize * Math.max(0.6, s));
+      for (const label of data.labels) {
+        if (label.minor || (label.fixed && frame.canonical < 0.5)) continue;
+        if (!label.fixed && !kept(frame.cut, label.anchor)) continue;
+        const at = project(label.fixed ? clipFromStage : clipFromWorld, label.anchor, size);
+        if (!at) continue;
+        context.fillStyle = cssColor(label.color);
+        context.fillText(label.text, at.x + 4, at.y - 4);
+      }
+    }
+  }
+
+  function drawProjected() {
+    const size = sizeOf(projectedCanvas);
+    projected.setSize(size.width, size.height, false);
+    // The window square on screen whatever the view's shape, as in the app.
+    const aspect = size.width / size.height;
+    const lx = 0.92 * (aspect > 1 ? 1 / aspect : 1), ly = 0.92 * (aspect > 1 ? 1 : aspect);
+    projectedCamera.projectionMatrix.copy(new THREE.Matrix4().makeScale(lx, ly, 1).multiply(matrixOf(data.projected.clip)));
+    projectedCamera.projectionMatrixInverse.getInverse(projectedCamera.projectionMatrix);
+    projected.render(projectedScene, projectedCamera);
+    const context = fitOverlay(projectedOverlay, size);
+    context.strokeStyle = cssColor(data.projected.vanishingColor, 0.85);
+    context.lineWidth = 1.5;
+    context.beginPath();
+    for (const [x0, y0, x1, y1] of data.projected.vanishing) {
+      context.moveTo((x0 * lx + 1) / 2 * size.width, (1 - y0 * ly) / 2 * size.height);
+      context.lineTo((x1 * lx + 1) / 2 * size.width, (1 - y1 * ly) / 2 * size.height);
+    }
+    context.stroke();
+  }
+
+  // ---- Panels -------------------------------------------------------------------
+  const list = document.getElementById('stage-list');
+  stages.forEach((stage, k) => {
+    const item = document.createElement('li');
+    item.textContent = stage.list;
+    item.tabIndex = -1;
+    item.addEventListener('click', () => goTo(k));
+    list.appendChild(item);
+  });
+  function legend(element, entries) {
+    element.textContent = '';
+    for (const entry of entries) {
+      const row = document.createElement('div');
+      const swatch = document.createElement('i');
+      if (entry.swatch === 'line') swatch.style.borderBottom = `3px solid ${cssColor(entry.color, entry.opacity)}`;
+      else if (entry.swatch === 'dot') Object.assign(swatch.style, { width: '0.7em', borderRadius: '50%', background: cssColor(entry.color) });
+      else swatch.style.background = cssColor(entry.color, Math.max(0.35, entry.opacity));
+      row.append(swatch, entry.text);
+      element.appendChild(row);
+    }
+    element.hidden = entries.length === 0;
+  }
+  legend(document.getElementById('legend'), data.legend);
+  legend(document.getElementById('projected-legend'), data.projected.legend);
+  document.getElementById('note').textContent = data.note;
+
+  function typeset(element, latex) {
+    try {
+      katex.render(latex, element, { displayMode: true, throwOnError: true });
+    } catch (error) {
+      element.textContent = latex;
+    }
+  }
+  function format(x) {
+    return Math.abs(x) < 1e-12 ? '0' : Number(x.toPrecision(6)).toString();
+  }
+  function showTrace() {
+    const element = document.getElementById('trace');
+    if (!state.traced) return;
+    const table = document.createElement('table');
+    table.innerHTML = '<caption>The traced vertex after each stage</caption><tr><th>stage</th><th>x</th><th>y</th><th>z</th><th>w</th></tr>';
+    let p = new THREE.Vector4(...state.traced, 1);
+    stages.forEach((stage, k) => {
+      if (k > 0) p = stage.divides ? (p.w !== 0 ? p.clone().divideScalar(p.w) : p) : p.clone().applyMatrix4(matrixOf(stage.matrix));
+      const row = table.insertRow();
+      row.insertCell().textContent = k === 0 ? 'world' : stage.symbol;
+      for (const value of [p.x, p.y, p.z, p.w]) row.insertCell().textContent = format(value);
+      if (k === state.stage) row.style.fontWeight = 'bold';
+    });
+    element.replaceChildren(table);
+  }
+  function showPanels() {
+    const stage = stages[state.stage];
+    list.querySelectorAll('li').forEach((item, k) => {
+      if (k === state.stage) item.setAttribute('aria-current', 'step');
+      else item.removeAttribute('aria-current');
+    });
+    document.getElementById('caption').textContent = stage.caption;
+    document.getElementById('matrix-title').textContent = stage.list;
+    if (state.stage === 0) {
+      document.getElementById('matrix').textContent = 'The world: no matrix yet.';
+      document.getElementById('cumulative').textContent = '';
+    } else {
+      typeset(document.getElementById('matrix'), stage.latex);
+      typeset(document.getElementById('cumulative'), stage.cumulativeLatex);
+    }
+    showTrace();
+    document.getElementById('live').textContent =
+      `Stage ${state.stage} of ${last}: ${stage.list}.` + (stage.claim ? ' ' + stage.claim + '.' : '');
+    body.dataset.stage = state.stage;
+  }
+
+  function showRest(k) {
+    if (frameAxes) worldScene.remove(frameAxes);
+    const stage = stages[k];
+    const axes = { surface: false, positions: stage.frame, color: data.frameColor };
+    frameAxes = drawable(geometryOf(axes), axes, 1, 2 * data.primitives.length + 1);
+    worldScene.add(frameAxes);
+    shown = { frame: stage.rest, atRest: true, ghost: stage.ghost };
+    drawWorld();
+  }
+
+  // ---- Moving between stages ------------------------------------------------------
+  const kStepMilliseconds = 600;
+  function goTo(k, animate) {
+    k = Math.max(0, Math.min(last, k));
+    if (animation) cancelAnimationFrame(animation.request);
+    animation = null;
+    const from = state.stage;
+    state.stage = k;
+    showPanels();
+    writeFragment();
+    if (!animate || Math.abs(k - from) !== 1) {
+      showRest(k);
+      body.dataset.moving = '';
+      return;
+    }
+    // The app's transition, frame by frame; stepping back plays it backwards.
+    const frames = data.transitions[Math.min(from, k)];
+    const backwards = k < from;
+    const start = performance.now();
+    body.dataset.moving = '1';
+    const tick = (now) => {
+      const t = Math.min(1, (now - start) / kStepMilliseconds);
+      if (t >= 1) {
+        animation = null;
+        body.dataset.moving = '';
+        showRest(k);
+        return;
+      }
+      const progress = backwards ? 1 - t : t;
+      const index = Math.round(progress * frames.length) - 1;
+      shown = { frame: index < 0 ? stages[Math.min(from, k)].rest : frames[index], atRest: false, ghost: null };
+      drawWorld();
+      animation = { request: requestAnimationFrame(tick) };
+    };
+    animation = { request: requestAnimationFrame(tick) };
+  }
+  function play() {
+    const button = document.getElementById('play');
+    if (playing) {
+      clearInterval(playing);
+      playing = null;
+      button.textContent = 'Play';
+      return;
+    }
+    if (state.stage === last) goTo(0);
+    button.textContent = 'Pause';
+    playing = setInterval(() => {
+      if (state.stage >= last) return play();
+      goTo(state.stage + 1, true);
+    }, kStepMilliseconds + 900);
+  }
+  document.getElementById('previous').addEventListener('click', () => goTo(state.stage - 1, true));
+  document.getElementById('next').addEventListener('click', () => goTo(state.stage + 1, true));
+  document.getElementById('play').addEventListener('click', play);
+
+  function changeView(change) {
+    Object.assign(state, change);
+    state.pitch = Math.max(-89, Math.min(89, state.pitch));
+    state.zoom = Math.max(0.1, Math.min(20, state.zoom));
+    writeFragment();
+    drawWorld();
+  }
+  document.addEventListener('keydown', (event) => {
+    if (event.altKey || event.ctrlKey || event.metaKey) return;
+    const onButton = event.target instanceof HTMLButtonElement;
+    const orbit = event.shiftKey ? 10 : 0;
+    switch (event.key) {
+      case 'ArrowRight': if (orbit) changeView({ yaw: state.yaw + orbit }); else goTo(state.stage + 1, true); break;
+      case 'ArrowLeft': if (orbit) changeView({ yaw: state.yaw - orbit }); else goTo(state.stage - 1, true); break;
+      case 'ArrowUp': if (orbit) changeView({ pitch: state.pitch - orbit }); else return; break;
+      case 'ArrowDown': if (orbit) changeView({ pitch: state.pitch + orbit }); else return; break;
+      case 'PageDown': goTo(state.stage + 1, true); break;
+      case 'PageUp': case 'Backspace': goTo(state.stage - 1, true); break;
+      case 'Home': goTo(0); break;
+      case 'End': goTo(last); break;
+      case ' ': if (onButton) return; play(); break;
+      case '+': case '=': changeView({ zoom: state.zoom * 1.25 }); break;
+      case '-': changeView({ zoom: state.zoom / 1.25 }); break;
+      case '0': changeView({ yaw: 0, pitch: 0, zoom: 1 }); break;
+      default: return;
+    }
+    event.preventDefault();
+  });
+
+  // Drag to orbit, wheel to zoom, click to trace the nearest vertex.
+  const worldSection = document.getElementById('world');
+  let drag = null;
+  worldSection.addEventListener('pointerdown', (event) => {
+    drag = { x: event.clientX, y: event.clientY, yaw: state.yaw, pitch: state.pitch, moved: false };
+    worldSection.setPointerCapture(event.pointerId);
+  });
+  worldSection.addEventListener('pointermove', (event) => {
+    if (!drag) return;
+    const dx = event.clientX - drag.x, dy = event.clientY - drag.y;
+    if (Math.hypot(dx, dy) > 3) drag.moved = true;
+    if (drag.moved) changeView({ yaw: drag.yaw + dx * 0.4, pitch: drag.pitch + dy * 0.4 });
+  });
+  worldSection.addEventListener('pointerup', (event) => {
+    if (drag && !drag.moved) trace(event);
+    drag = null;
+  });
+  worldSection.addEventListener('wheel', (event) => {
+    event.preventDefault();
+    changeView({ zoom: state.zoom * Math.pow(1.1, -Math.sign(event.deltaY)) });
+  }, { passive: false });
+
+  const vertices = floatsOf(data.vertices);
+  function trace(event) {
+    if (!shown) return;
+    const rect = worldCanvas.getBoundingClientRect();
+    const size = sizeOf(worldCanvas);
+    const { view, projection } = cameraMatrices(shown.frame, size);
+    const clipFromWorld = projection.multiply(view).multiply(matrixOf(shown.frame.shown));
+    let best = null, bestDistance = 12;
+    for (let k = 0; k < vertices.length; k += 3) {
+      const point = [vertices[k], vertices[k + 1], vertices[k + 2]];
+      const at = project(clipFromWorld, point, size);
+      if (!at || !kept(shown.frame.cut, point)) continue;
+      const distance = Math.hypot(at.x - (event.clientX - rect.left), at.y - (event.clientY - rect.top));
+      if (distance < bestDistance) best = point, bestDistance = distance;
+    }
+    state.traced = best;
+    showTrace();
+    drawWorld();
+    if (best) document.getElementById('live').textContent =
+      `Traced the vertex (${best.map(format).join(', ')}): its coordinates after each stage are in the table.`;
+  }
+
+  window.addEventListener('hashchange', () => {
+    const before = state.stage;
+    readFragment();
+    const k = state.stage;
+    state.stage = before;
+    goTo(k);
+    drawProjected();
+  });
+  window.addEventListener('resize', () => { drawWorld(); drawProjected(); });
+
+  // For scripts (and the browser tests): where a world point is drawn now, in client pixels.
+  window.viewpipe = {
+    pixelOf(point) {
+      const size = sizeOf(worldCanvas);
+      const { view, projection } = cameraMatrices(shown.frame, size);
+      const at = project(projection.multiply(view).multiply(matrixOf(shown.frame.shown)), point, size);
+      const rect = worldCanvas.getBoundingClientRect();
+      return at && { x: rect.left + at.x, y: rect.top + at.y };
+    },
+  };
+
+  readFragment();
+  const first = state.stage;
+  state.stage = -1;
+  goTo(first);
+  drawProjected();
+  body.dataset.ready = '1';
+})();

@@ -1,0 +1,411 @@
+// The exported web page in a real browser: Debian's Chromium, headless, with
+// WebGL through SwiftShader, driven over the DevTools protocol on a pipe
+// (--remote-debugging-pipe: messages are JSON ended by a NUL byte). The page
+// is stepped with key presses only; each stage's picture is compared with
+// the app's export of the same stage, and the console must stay free of errors.
+
+#include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
+
+#include <QByteArray>
+#include <QImage>
+#include <QProcess>
+#include <QStringList>
+
+#include <fcntl.h>
+#include <poll.h>
+#include <signal.h>
+#include <spawn.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <stdexcept>
+#include <string>
+#include <thread>
+#include <vector>
+
+extern char** environ;
+
+namespace {
+
+namespace fs = std::filesystem;
+using nlohmann::json;
+
+const std::string kData = VIEWPIPE_DATA_DIR;
+constexpr int kWidth = 960, kHeight = 540; // the export's picture and the browser's window
+
+struct Finished {
+    int exitCode;
+    std::string output;
+};
+
+Finished viewpipe(const QStringList& arguments)
+{
+    QProcess process;
+    process.setProcessChannelMode(QProcess::MergedChannels);
+    process.start(VIEWPIPE_EXE, arguments);
+    process.waitForFinished(600000);
+    return {process.exitStatus() == QProcess::NormalExit ? process.exitCode() : -1,
+            process.readAll().toStdString()};
+}
+
+// A headless Chromium and one page in it.
+class Browser {
+public:
+    explicit Browser(const fs::path& profile)
+    {
+        int toBrowser[2], fromBrowser[2];
+        if (::pipe(toBrowser) != 0 || ::pipe(fromBrowser) != 0)
+            throw std::runtime_error("pipe failed");
+        // Out of the way of 3 and 4, where Chromium expects them.
+        const int read = ::fcntl(toBrowser[0], F_DUPFD_CLOEXEC, 10), write = ::fcntl(fromBrowser[1], F_DUPFD_CLOEXEC, 10);
+        ::close(toBrowser[0]);
+        ::close(fromBrowser[1]);
+        in_ = fromBrowser[0];
+        out_ = toBrowser[1];
+        ::fcntl(in_, F_SETFD, FD_CLOEXEC);
+        ::fcntl(out_, F_SETFD, FD_CLOEXEC);
+        posix_spawn_file_actions_t actions;
+        posix_spawn_file_actions_init(&actions);
+        posix_spawn_file_actions_adddup2(&actions, read, 3);
+        posix_spawn_file_actions_adddup2(&actions, write, 4);
+        // Its own messages (D-Bus, fonts) go to a log beside the profile.
+        posix_spawn_file_actions_addopen(&actions, 2, (profile.string() + ".log").c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
+        std::vector<std::string> arguments = {
+            "chromium", "--headless", "--no-sandbox", "--use-angle=swiftshader", "--enable-unsafe-swiftshader",
+            "--remote-debugging-pipe", "--hide-scrollbars", "--mute-audio", "--no-first-run",
+            "--user-data-dir=" + profile.string(), "--window-size=" + std::to_string(kWidth) + "," + std::to_string(kHeight),
+            "about:blank"};
+        std::vector<char*> argv;
+        for (std::string& a : arguments)
+            argv.push_back(a.data());
+        argv.push_back(nullptr);
+        const int status = ::posix_spawnp(&pid_, "chromium", &actions, nullptr, argv.data(), environ);
+        posix_spawn_file_actions_destroy(&actions);
+        ::close(read);
+        ::close(write);
+        if (status != 0)
+            throw std::runtime_error("cannot start chromium (Debian package chromium)");
+        const json targets = call("Target.getTargets");
+        for (const json& t : targets["targetInfos"])
+            if (t["type"] == "page")
+                session_ = call("Target.attachToTarget", {{"targetId", t["targetId"]}, {"flatten", true}})["sessionId"];
+        if (session_.empty())
+            throw std::runtime_error("chromium has no page");
+        for (const char* domain : {"Runtime.enable", "Log.enable", "Page.enable", "Network.enable"})
+            call(domain, json::object(), session_);
+        call("Emulation.setDeviceMetricsOverride",
+             {{"width", kWidth}, {"height", kHeight}, {"deviceScaleFactor", 1}, {"mobile", false}}, session_);
+    }
+    ~Browser()
+    {
+        try {
+            send("Browser.close", json::object(), "");
+        } catch (...) {
+        }
+        for (int k = 0; k < 50 && ::waitpid(pid_, nullptr, WNOHANG) == 0; ++k)
+            std::this_thread::sleep_for(std::chrono::milliseconds(100));
+        ::kill(pid_, SIGKILL);
+        ::waitpid(pid_, nullptr, 0);
+        ::close(in_);
+        ::close(out_);
+    }
+
+    json call(const std::string& method, const json& params = json::object(), const std::string& session = "")
+    {
+        const int id = send(method, params, session);
+        while (true) {
+            json message = receive();
+            if (message.contains("id") && message["id"] == id) {
+                if (message.contains("error"))
+                    throw std::runtime_error(method + ": " + message["error"].dump());
+                return message["result"];
+            }
+            events.push_back(std::move(message));
+        }
+    }
+    json page(const std::string& method, const json& params = json::object()) { return call(method, params, session_); }
+
+    json evaluate(const std::string& expression)
+    {
+        return page("Runtime.evaluate", {{"expression", expression}, {"returnByValue", true}})["result"].value("value", json());
+    }
+    // Waits until the expression is true; false after `seconds`.
+    bool waitFor(const std::string& expression, double seconds = 30)
+    {
+        const auto end = std::chrono::steady_clock::now() + std::chrono::duration<double>(seconds);
+        while (std::chrono::steady_clock::now() < end) {
+            if (evaluate(expression) == json(true))
+                return true;
+            std::this_thread::sleep_for(std::chrono::milliseconds(50));
+        }
+        return false;
+    }
+    void press(const std::string& key, int keyCode)
+    {
+        for (const char* type : {"rawKeyDown", "keyUp"})
+            page("Input.dispatchKeyEvent",
+                 {{"type", type}, {"key", key}, {"code", key}, {"windowsVirtualKeyCode", keyCode}});
+    }
+    QImage screenshot()
+    {
+        const std::string png = page("Page.captureScreenshot", {{"format", "png"}})["data"];
+        return QImage::fromData(QByteArray::fromBase64(QByteArray::fromStdString(png)), "PNG");
+    }
+
+    // What went wrong in the page: exceptions, console errors, requests that left the file.
+    std::vector<std::string> problems() const
+    {
+        std::vector<std::string> found;
+        for (const json& e : events) {
+            const std::string method = e.value("method", "");
+            const json& p = e.contains("params") ? e["params"] : json();
+            if (method == "Runtime.exceptionThrown")
+                found.push_back("exception: " + p["exceptionDetails"].dump());
+            else if (method == "Runtime.consoleAPICalled" && p["type"] == "error")
+                found.push_back("console.error: " + p["args"].dump());
+            else if (method == "Log.entryAdded" && p["entry"]["level"] == "error")
+                found.push_back("log: " + p["entry"]["text"].get<std::string>());
+            else if (method == "Network.requestWillBeSent") {
+                const std::string url = p["request"]["url"];
+                if (url.rfind("file:", 0) != 0 && url.rfind("data:", 0) != 0 && url != "about:blank")
+                    found.push_back("network request: " + url);
+            }
+        }
+        return found;
+    }
+
+    std::vector<json> events;
+
+private:
+    int send(const std::string& method, const json& params, const std::string& session)
+    {
+        json message = {{"id", ++id_}, {"method", method}, {"params", params}};
+        if (!session.empty())
+            message["sessionId"] = session;
+        const std::string text = message.dump() + '\0';
+        for (std::size_t done = 0; done < text.size();) {
+            const ssize_t n = ::write(out_, text.data() + done, text.size() - done);
+            if (n <= 0)
+                throw std::runtime_error("chromium's pipe closed");
+            done += std::size_t(n);
+        }
+        return id_;
+    }
+    json receive()
+    {
+        while (true) {
+            const std::size_t end = buffer_.find('\0');
+            if (end != std::string::npos) {
+                json message = json::parse(buffer_.substr(0, end));
+                buffer_.erase(0, end + 1);
+                return message;
+            }
+            pollfd p{in_, POLLIN, 0};
+            if (::poll(&p, 1, 60000) <= 0)
+                throw std::runtime_error("chromium did not answer within a minute");
+            char chunk[65536];
+            const ssize_t n = ::read(in_, chunk, sizeof chunk);
+            if (n <= 0)
+                throw std::runtime_error("chromium ended");
+            buffer_.append(chunk, std::size_t(n));
+        }
+    }
+
+    pid_t pid_ = -1;
+    int in_ = -1, out_ = -1, id_ = 0;
+    std::string session_, buffer_;
+};
+
+// Pixels that are not the (white) background.
+std::vector<bool> drawn(const QImage& image)
+{
+    const QImage rgb = image.convertToFormat(QImage::Format_RGB32);
+    std::vector<bool> mask(std::size_t(rgb.width() * rgb.height()));
+    for (int y = 0; y < rgb.height(); ++y)
+        for (int x = 0; x < rgb.width(); ++x) {
+            const QRgb c = rgb.pixel(x, y);
+            mask[std::size_t(y * rgb.width() + x)] = std::min({qRed(c), qGreen(c), qBlue(c)}) < 215;
+        }
+    return mask;
+}
+
+// The share of `a`'s drawn pixels with a drawn pixel of `b` within `reach` pixels.
+double coveredShare(const std::vector<bool>& a, const std::vector<bool>& b, int width, int height, int reach)
+{
+    long total = 0, covered = 0;
+    for (int y = 0; y < height; ++y)
+        for (int x = 0; x < width; ++x) {
+            if (!a[std::size_t(y * width + x)])
+                continue;
+            ++total;
+            bool near = false;
+            for (int dy = -reach; dy <= reach && !near; ++dy)
+                for (int dx = -reach; dx <= reach && !near; ++dx) {
+                    const int u = x + dx, v = y + dy;
+                    near = u >= 0 && v >= 0 && u < width && v < height && b[std::size_t(v * width + u)];
+                }
+            covered += near;
+        }
+    return total ? double(covered) / double(total) : 0;
+}
+
+class WebPage : public ::testing::Test {
+protected:
+    static void SetUpTestSuite()
+    {
+        dir_ = new fs::path(fs::temp_directory_path() / ("viewpipe-web-" + std::to_string(::getpid())));
+        fs::remove_all(*dir_);
+        const Finished run = viewpipe({"export", QString::fromStdString(kData + "/scenes/house.json"), "--out",
+                                  QString::fromStdString((*dir_ / "house").string()), "--format", "html,png", "--size",
+                                  QString("%1x%2").arg(kWidth).arg(kHeight), "--quiet"});
+        ASSERT_EQ(run.exitCode, 0) << run.output;
+    }
+    static void TearDownTestSuite()
+    {
+        fs::remove_all(*dir_);
+        delete dir_;
+    }
+    static fs::path* dir_;
+};
+fs::path* WebPage::dir_ = nullptr;
+
+TEST_F(WebPage, IsOneFileThatAsksTheNetworkForNothing)
+{
+    const fs::path page = *dir_ / "house" / "scene.html";
+    ASSERT_TRUE(fs::exists(page));
+    EXPECT_LE(fs::file_size(page), 3u << 20) << "the house's page must stay under 3 MB";
+    std::ifstream in(page);
+    std::stringstream text;
+    text << in.rdbuf();
+    // Everything inline: no script, style sheet or font fetched (the browser test watches the network too).
+    for (const char* outside : {"<script src", "<link", "url(http", "url(fonts/"})
+        EXPECT_EQ(text.str().find(outside), std::string::npos) << outside;
+}
+
+TEST_F(WebPage, StepsWithKeysAndDrawsEachStageAsTheAppDoes)
+{
+    const fs::path page = *dir_ / "house" / "scene.html";
+    Browser browser(*dir_ / "profile");
+    browser.page("Page.navigate", {{"url", "file://" + page.string() + "#figure"}});
+    ASSERT_TRUE(browser.waitFor("document.body.dataset.ready === '1'")) << "the page never got ready";
+    const int stages = browser.evaluate("document.querySelectorAll('#stage-list li').length").get<int>();
+    ASSERT_EQ(stages, 6); // the world and Foley's five stages
+    const std::vector<std::string> names = {"00-world", "01-t-vrp", "02-r", "03-t-prp", "04-sh-per", "05-s-per"};
+    std::vector<std::vector<bool>> app, shown;
+    for (int k = 0; k < stages; ++k) {
+        if (k > 0)
+            browser.press("ArrowRight", 39);
+        ASSERT_TRUE(browser.waitFor("document.body.dataset.stage === '" + std::to_string(k) +
+                                    "' && !document.body.dataset.moving"))
+            << "stage " << k << " not reached";
+        const std::string live = browser.evaluate("document.getElementById('live').textContent");
+        EXPECT_NE(live.find("Stage " + std::to_string(k) + " of 5"), std::string::npos) << live;
+        const QImage shot = browser.screenshot();
+        ASSERT_EQ(shot.size(), QSize(kWidth, kHeight));
+        shot.save(QString::fromStdString((*dir_ / ("page-" + names[std::size_t(k)] + ".png")).string()));
+        const QImage picture(QString::fromStdString((*dir_ / "house" / (names[std::size_t(k)] + ".png")).string()));
+        ASSERT_EQ(picture.size(), shot.size());
+        app.push_back(drawn(picture));
+        shown.push_back(drawn(shot));
+    }
+    // Each stage's page picture matches the app's picture of that stage, as
+    // well as any other (stages framed together look much alike: T(-VRP) is
+    // the identity here), and the measure tells pictures apart.
+    for (int k = 0; k < stages; ++k) {
+        std::vector<double> share;
+        for (int j = 0; j < stages; ++j)
+            share.push_back(std::min(coveredShare(app[std::size_t(j)], shown[std::size_t(k)], kWidth, kHeight, 3),
+                                     coveredShare(shown[std::size_t(k)], app[std::size_t(j)], kWidth, kHeight, 3)));
+        std::cout << "page stage " << k << " against the app's stages:";
+        for (double x : share)
+            std::cout << " " << x;
+        std::cout << "\n";
+        EXPECT_GE(share[std::size_t(k)], 0.8) << "stage " << k;
+        EXPECT_GE(share[std::size_t(k)], *std::max_element(share.begin(), share.end()) - 0.02) << "stage " << k;
+        EXPECT_LT(*std::min_element(share.begin(), share.end()), 0.6) << "stage " << k;
+    }
+    for (const std::string& problem : browser.problems())
+        ADD_FAILURE() << problem;
+}
+
+TEST_F(WebPage, LinksToAMomentTracesAVertexAndTypesetsTheMatrices)
+{
+    const fs::path page = *dir_ / "house" / "scene.html";
+    Browser browser(*dir_ / "profile-links");
+    browser.page("Page.navigate", {{"url", "file://" + page.string() + "#stage=4&yaw=20"}});
+    ASSERT_TRUE(browser.waitFor("document.body.dataset.ready === '1'"));
+    EXPECT_EQ(browser.evaluate("document.body.dataset.stage"), "4");
+    EXPECT_EQ(browser.evaluate("document.querySelector('[aria-current=step]').textContent.startsWith('4. SH_per')"), true);
+    // KaTeX typeset the stage's matrix and the product so far.
+    EXPECT_EQ(browser.evaluate("document.querySelectorAll('#matrix .katex, #cumulative .katex').length"), 2);
+    EXPECT_NE(browser.evaluate("document.getElementById('matrix').textContent").get<std::string>().find("SH"),
+              std::string::npos);
+
+    // The clicker's and the keyboard's keys; the fragment follows.
+    browser.press("PageDown", 34);
+    ASSERT_TRUE(browser.waitFor("document.body.dataset.stage === '5' && !document.body.dataset.moving"));
+    EXPECT_NE(browser.evaluate("location.hash").get<std::string>().find("stage=5"), std::string::npos);
+    browser.press("Home", 36);
+    ASSERT_TRUE(browser.waitFor("document.body.dataset.stage === '0'"));
+    browser.press("End", 35);
+    ASSERT_TRUE(browser.waitFor("document.body.dataset.stage === '5'"));
+    browser.press("PageUp", 33);
+    ASSERT_TRUE(browser.waitFor("document.body.dataset.stage === '4' && !document.body.dataset.moving"));
+
+    // A click on a vertex traces it: a corner of the house's front, clicked where the page draws it.
+    const json at = browser.evaluate("JSON.stringify(window.viewpipe.pixelOf([0, 0, 54]))");
+    ASSERT_TRUE(at.is_string());
+    const json pixel = json::parse(at.get<std::string>());
+    for (const char* type : {"mousePressed", "mouseReleased"})
+        browser.page("Input.dispatchMouseEvent", {{"type", type}, {"x", pixel["x"]}, {"y", pixel["y"]},
+                                                  {"button", "left"}, {"clickCount", 1}});
+    ASSERT_TRUE(browser.waitFor("document.querySelectorAll('#trace tr').length === 7"));
+    // After T(-PRP), the PRP being (8, 6, 84) in VRC = world here, the corner is at (-8, -6, -30).
+    EXPECT_EQ(browser.evaluate("[...document.querySelectorAll('#trace tr')[4].cells].map(c => c.textContent).join(' ')"),
+              "T(-PRP) -8 -6 -30 1");
+    for (const std::string& problem : browser.problems())
+        ADD_FAILURE() << problem;
+}
+
+TEST(WebPageSize, AHundredThousandTriangleMeshStaysUnderTenMegabytes)
+{
+    const fs::path dir = fs::temp_directory_path() / ("viewpipe-web-mesh-" + std::to_string(::getpid()));
+    fs::remove_all(dir);
+    fs::create_directories(dir);
+    {
+        // A 224 x 224 grid of squares, two triangles each: 100352 triangles, a hill 40 units across.
+        std::ofstream obj(dir / "hill.obj");
+        const int n = 224;
+        for (int y = 0; y <= n; ++y)
+            for (int x = 0; x <= n; ++x) {
+                const double u = 40.0 * x / n - 20, v = 40.0 * y / n - 20;
+                obj << "v " << u << " " << 10 * std::exp(-(u * u + v * v) / 100) << " " << v << "\n";
+            }
+        for (int y = 0; y < n; ++y)
+            for (int x = 0; x < n; ++x) {
+                const int a = y * (n + 1) + x + 1, b = a + 1, c = a + n + 1, d = c + 1;
+                obj << "f " << a << " " << c << " " << b << "\nf " << b << " " << c << " " << d << "\n";
+            }
+        std::ofstream scene(dir / "hill.json");
+        scene << R"({"name": "A hill of 100352 triangles",
+                     "camera": {"look_at": {"eye": [30, 40, 60], "center": [0, 0, 0], "up": [0, 1, 0]},
+                                "projection": {"type": "perspective", "fovy_deg": 50, "aspect": 1.5, "near": 10, "far": 200}},
+                     "objects": [{"type": "mesh", "path": "hill.obj"}]})";
+    }
+    const Finished run = viewpipe({"export", QString::fromStdString((dir / "hill.json").string()), "--out",
+                                   QString::fromStdString((dir / "out").string()), "--format", "html", "--quiet"});
+    ASSERT_EQ(run.exitCode, 0) << run.output;
+    const std::uintmax_t bytes = fs::file_size(dir / "out" / "scene.html");
+    std::cout << "page of the 100352-triangle mesh: " << bytes << " bytes\n";
+    EXPECT_LE(bytes, 10u << 20);
+    fs::remove_all(dir);
+}
+
+} // namespace
