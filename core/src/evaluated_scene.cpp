@@ -786,4 +786,11 @@ std::vector<Vec3<double>> pictureWindowOutline(const EvaluatedScene& scene)
     return border;
 }
 
+double pictureAspect(const EvaluatedScene& scene)
+{
+    const std::vector<Vec3<double>> border = pictureWindowOutline(scene); // bottom, right, top, left
+    const double width = (border[1] - border[0]).norm(), height = (border[3] - border[2]).norm();
+    return height > 0 && std::isfinite(width / height) ? width / height : 1;
+}
+
 } // namespace viewpipe

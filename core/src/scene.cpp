@@ -68,6 +68,8 @@ double readFar(const Json& j, const std::string& path)
 {
     if (j.is_string() && j.get<std::string>() == "infinity")
         return std::numeric_limits<double>::infinity();
+    if (j.is_string())
+        throw InputError(path, "must be a number or \"infinity\" (got \"" + j.get<std::string>() + "\")");
     if (!j.is_number())
         throw InputError(path, "must be a number or \"infinity\" (got " + typeName(j) + ")");
     return readNumber(j, path);
@@ -147,6 +149,8 @@ gl::ProjectionSpec<double> readGlProjection(const Json& j)
     }
     if (type == "ortho") {
         requireObject(j, path, keys, keys);
+        if (j["far"] == "infinity")
+            throw InputError(path + ".far", "cannot be \"infinity\" for an ortho projection (its depth would have no scale)");
         gl::Ortho<double> p{number("left"), number("right"), number("bottom"),
                             number("top"),  number("near"),  number("far")};
         gl::validate(p);

@@ -369,6 +369,7 @@ void CodePanel::setCamera(const CameraSpec<double>& camera)
 {
     const auto* gl = std::get_if<gl::Camera<double>>(&camera);
     camera_ = gl ? std::optional<gl::Camera<double>>(*gl) : std::nullopt;
+    clearError(); // a new camera: what was refused before no longer applies
     regenerate();
 }
 

@@ -33,6 +33,7 @@ QString readNumber(const QString& text, bool infinityAllowed, double& value)
         return QCoreApplication::translate("NumberText", "%1 is out of the range of a double").arg(quoted);
     if (error != std::errc() || end != last)
         return trimmed.contains(',') ? QCoreApplication::translate("NumberText", "%1 is not a number (the decimal point is '.')").arg(quoted)
+               : infinityAllowed     ? QCoreApplication::translate("NumberText", "%1 is not a number or infinity").arg(quoted)
                                      : QCoreApplication::translate("NumberText", "%1 is not a number").arg(quoted);
     if (std::isnan(value) || (std::isinf(value) && !infinityAllowed))
         return QCoreApplication::translate("NumberText", "%1 is not a finite number").arg(quoted);

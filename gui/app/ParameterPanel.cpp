@@ -437,7 +437,11 @@ void ParameterPanel::commit(QLineEdit* box)
     // left in other fields (refused or not applied) is not part of it.
     fill(box);
     double value = 0;
-    const QString reason = readNumber(box->text(), field == kProjectionPrefix + "far", value);
+    // Far may be infinity where the projection allows it (not glOrtho's).
+    const auto* glCamera = std::get_if<gl::Camera<double>>(&camera_);
+    const bool infinityAllowed = field == kProjectionPrefix + "far" && glCamera &&
+                                 !std::holds_alternative<gl::Ortho<double>>(glCamera->projection);
+    const QString reason = readNumber(box->text(), infinityAllowed, value);
     if (!reason.isEmpty()) {
         refuse(field, field, reason);
         return;

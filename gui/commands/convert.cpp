@@ -34,6 +34,10 @@ int runConvert(const ConvertOptions& options)
             depth = options.depth == "reversed" ? gl::DepthMode::Reversed : gl::DepthMode::Standard;
         }
         scene.camera = gl::convertCamera(camera, api, handedness, depth);
+        // One suffix, however often converted.
+        const std::size_t earlier = scene.name.find(" (as ");
+        if (earlier != std::string::npos && scene.name.back() == ')')
+            scene.name.erase(earlier);
         scene.name += " (as " + gl::apiTitle(api) + ", " + gl::handednessName(handedness) + "-handed, " +
                       gl::depthModeName(depth) + " depth)";
         std::cout << sceneToJson(scene);

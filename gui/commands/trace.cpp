@@ -23,6 +23,8 @@ int runTrace(const TraceOptions& options)
         const Scene scene = loadScene(options.scene);
         const cli::PrecisionChoice precision = cli::parsePrecision(options.precision.precision, options.precision.bits);
         const Vec3<double> point(options.point[0], options.point[1], options.point[2]);
+        if (!point.allFinite())
+            throw InputError("--point", "must be three finite numbers");
         if (options.apiGiven) {
             if (precision.type != cli::Precision::Double)
                 throw InputError("--precision", "the --api table is computed in double precision");

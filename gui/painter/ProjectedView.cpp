@@ -47,6 +47,7 @@ vtkSmartPointer<vtkActor2D> overlay(vtkCoordinate* viewCoordinates)
 // the viewport's shape before each frame.
 struct ProjectedView::Picture {
     Mat4<double> clip;
+    double aspect; // the picture's width over its height
     std::vector<std::pair<vtkActor2D*, std::vector<Segment2>>> lines;
     std::vector<std::pair<Vec2<double>, int>> pixels; // lower-left corner, object
     Vec2<double> pixelSize;
@@ -87,13 +88,13 @@ ProjectedView::ProjectedView(vtkRenderer* renderer)
         const Picture* c = static_cast<ProjectedView*>(view)->picture_.get();
         if (!c)
             return;
-        // Keep the window square on screen whatever the viewport's shape.
-        const double aspect = renderer->GetTiledAspectRatio();
+        // The window at the picture's shape on screen, whole, whatever the viewport's shape.
+        const double stretch = c->aspect / renderer->GetTiledAspectRatio();
         Mat4<double> letterbox = Mat4<double>::Identity();
-        if (aspect > 1)
-            letterbox(0, 0) = 1 / aspect;
+        if (stretch > 1)
+            letterbox(1, 1) = 1 / stretch;
         else
-            letterbox(1, 1) = aspect;
+            letterbox(0, 0) = stretch;
         letterbox(0, 0) *= 0.92;
         letterbox(1, 1) *= 0.92;
         renderer->GetActiveCamera()->SetExplicitProjectionTransformMatrix(toVtk(letterbox * c->clip));
@@ -187,7 +188,7 @@ void ProjectedView::setScene(const EvaluatedScene& scene,
     vanishing_->SetVisibility(!scene.vanishingLines.empty());
     zFightingRing_->SetVisibility(!scene.zFightingRing.empty());
     picture_ = std::make_unique<Picture>(Picture{
-        clip, {{vanishing_, scene.vanishingLines}, {zFightingRing_, scene.zFightingRing}}, pixels, pixelSize, rasterGrid_});
+        clip, pictureAspect(scene), {{vanishing_, scene.vanishingLines}, {zFightingRing_, scene.zFightingRing}}, pixels, pixelSize, rasterGrid_});
     layout_->Execute(renderer_, vtkCommand::StartEvent, nullptr); // the first frame needs the matrix too
     entries_ = scene.projectedLegend;
 }

@@ -372,8 +372,11 @@ void writeOpenGL(CodeWriter& out, const Camera& camera, const Plan& plan)
         << "glMatrixMode(GL_PROJECTION);\nglLoadIdentity();\n";
     if (plan.convertsClip()) {
         if (gl::zeroToOneDepth(camera.api))
-            out << "// OpenGL clips z to [-w, w]: for depth in [0, 1] call glClipControl(GL_LOWER_LEFT,\n"
-                << "// GL_ZERO_TO_ONE) (OpenGL 4.5) as well, or near objects are clipped as if at depth -1.\n";
+            out << "// OpenGL clips z to [-w, w]: for depth in [0, 1] call glClipControl("
+                << (gl::yDown(camera.api) ? "GL_UPPER_LEFT" : "GL_LOWER_LEFT") << ",\n"
+                << "// GL_ZERO_TO_ONE) (OpenGL 4.5) as well, or near objects are clipped as if at depth -1"
+                << (gl::yDown(camera.api) ? ";\n// GL_UPPER_LEFT takes the y this matrix negates back to OpenGL's window y" : "")
+                << ".\n";
         out << clipConversionComment(camera, plan) << "const GLdouble clipConversion[16] = {";
         out.matrix(plan.clipConversion) << "}; // column by column\nglMultMatrixd(clipConversion);\n";
     }
@@ -1055,7 +1058,8 @@ void readProjection(Pasted& pasted, const std::string& call, const CallForm& for
     // Near and far exchanged in a perspective or ortho call is the reversed-depth idiom: its matrix is the
     // reversed camera's. A frustum's is not (its x and y scale with near), so it is read as written.
     const double zNear = numbers[full - 2].value(), zFar = numbers[full - 1].value();
-    const bool swapped = form.sets != Sets::Frustum && zNear > zFar;
+    // A perspective's far at or behind the eye is no exchange but a bad far, refused as such below.
+    const bool swapped = form.sets != Sets::Frustum && zNear > zFar && (!perspective || zFar > 0);
     pasted.projectionArgs = projectionArgs(spec, form.topBeforeBottom, swapped);
     for (std::size_t i = 0; i < full; ++i) {
         const Arg& arg = pasted.projectionArgs[i];

@@ -372,8 +372,8 @@ void printApiTrace(std::ostream& out, const Scene& scene, const Vec3<double>& po
             s += (i ? ", " : "") + shortNumber(v[i].get<double>());
         return s + ")";
     };
-    out << "Point " << show(t["point"]) << " through the camera of " << scene.name
-        << " under each API's conventions, the same numbers in every row.\n"
+    out << "Point " << show(t["point"]) << " through the camera of \"" << scene.name
+        << "\" under each API's conventions, the same numbers in every row.\n"
         << "Window coordinates: a " << width << " x " << height
         << " viewport at (0, 0), depth range [0, 1]; the origin as each API puts it.\n\n";
     std::vector<std::array<std::string, 8>> table = {
@@ -395,8 +395,12 @@ void printApiTrace(std::ostream& out, const Scene& scene, const Vec3<double>& po
         out << text.substr(0, text.find_last_not_of(' ') + 1) << "\n";
     }
     out << "\nLeft-handed rows take the same numbers through lookAtLH: the picture is mirrored left to right.\n"
-           "Reversed rows exchange near and far: window z becomes 1 - z. Vulkan's clip y is negated and its "
-           "window y runs down, so the point lands where Direct3D, Metal and WebGPU put it.\n";
+           "Reversed rows exchange near and far: window z becomes 1 - z.";
+    const bool vulkan = std::any_of(t["rows"].begin(), t["rows"].end(), [](const Json& row) { return row["api"] == "vulkan"; });
+    out << (vulkan ? " Vulkan's clip y is negated and its window y runs down, so the point lands where Direct3D, "
+                     "Metal and WebGPU put it."
+                   : "")
+        << "\n";
 }
 
 void printTrace(std::ostream& out, const Scene& scene, const Vec3<double>& point, const PrecisionChoice& precision)

@@ -240,6 +240,7 @@ std::string webPageData(const EvaluatedScene& scene, const WebPageViews& views)
     std::vector<Vec3<double>> vertices = scene.objectVertices();
 
     json projected = {{"clip", matrix(screenClipMatrix(scene.pipeline))},
+                      {"aspect", pictureAspect(scene)},
                       {"window", floats(pictureWindowOutline(scene))},
                       {"windowColor", color(elementColor(Element::Window, theme))},
                       {"vanishingColor", color(elementColor(Element::Vanishing, theme))},

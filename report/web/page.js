@@ -300,9 +300,9 @@
   function drawProjected() {
     const size = sizeOf(projectedCanvas);
     projected.setSize(size.width, size.height, false);
-    // The window square on screen whatever the view's shape, as in the app.
-    const aspect = size.width / size.height;
-    const lx = 0.92 * (aspect > 1 ? 1 / aspect : 1), ly = 0.92 * (aspect > 1 ? 1 : aspect);
+    // The window at the picture's shape, whole, as in the app.
+    const stretch = data.projected.aspect / (size.width / size.height);
+    const lx = 0.92 * Math.min(1, stretch), ly = 0.92 * Math.min(1, 1 / stretch);
     projectedCamera.projectionMatrix.copy(new THREE.Matrix4().makeScale(lx, ly, 1).multiply(matrixOf(data.projected.clip)));
     projectedCamera.projectionMatrixInverse.getInverse(projectedCamera.projectionMatrix);
     projected.render(projectedScene, projectedCamera);

@@ -159,6 +159,14 @@ TEST(Cli, CheckAndExitCodes)
     EXPECT_EQ(r.exitCode, 2);
     EXPECT_NE(r.err.find(junk + ": objects[0].path: the file is too short for a binary STL"), std::string::npos) << r.err;
 
+    // A point that is not three finite numbers is refused, in every form of trace.
+    for (const std::string point : {"1 2 nan", "1 2 1e400", "inf 0 0"})
+        for (const std::string form : {"", " --json", " --api all"}) {
+            r = run("trace " + kHouse + " --point " + point + form);
+            EXPECT_EQ(r.exitCode, 2) << point << form;
+            EXPECT_NE(r.err.find("--point: must be three finite numbers"), std::string::npos) << r.err;
+        }
+
     r = run("check /nonexistent/scene.json");
     EXPECT_EQ(r.exitCode, 2);
     EXPECT_EQ(r.err, "/nonexistent/scene.json: $: cannot read the scene file: No such file or directory\n");

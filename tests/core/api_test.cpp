@@ -420,6 +420,15 @@ TEST(Api, ScenesNameTheApiHandednessAndDepth)
     expectRefused([&] { parse(R"(, "api": 3)"); }, "camera.api", "string");
     expectRefused([&] { parse(R"(, "handedness": "up")"); }, "camera.handedness", "\"left\"");
     expectRefused([&] { parse(R"(, "depth": "deep")"); }, "camera.depth", "\"reversed\"");
+    // Far's refusals show what was written, and glOrtho's far has no infinity.
+    const auto withProjection = [](const std::string& projection) {
+        return parseScene(R"({"camera": {"look_at": {"eye": [0, 0, 5], "center": [0, 0, 0], "up": [0, 1, 0]},
+                                         "projection": )" + projection + "}}", ".");
+    };
+    expectRefused([&] { withProjection(R"({"type": "perspective", "fovy_deg": 60, "aspect": 1, "near": 1, "far": "inf"})"); },
+                  "camera.projection.far", "(got \"inf\")");
+    expectRefused([&] { withProjection(R"({"type": "ortho", "left": -1, "right": 1, "bottom": -1, "top": 1, "near": 1, "far": "infinity"})"); },
+                  "camera.projection.far", "cannot be \"infinity\" for an ortho projection");
 }
 
 // Each API's canonical volume is what the last stage's claim and the labels say.

@@ -326,7 +326,9 @@ private slots:
 
         // Text that is not a number is refused by the panel itself.
         type(fieldOf(w, field, 0), "abc");
-        QCOMPARE(panel->errorText(field), QString("\"abc\" is not a number"));
+        const bool infinityAllowed = field.endsWith(".far") && !QString(QTest::currentDataTag()).startsWith("ortho");
+        QCOMPARE(panel->errorText(field),
+                 QString(infinityAllowed ? "\"abc\" is not a number or infinity" : "\"abc\" is not a number"));
         QCOMPARE(documentJson(w), before);
         QCOMPARE(w.document()->undoStack()->count(), undoCount);
     }

@@ -423,6 +423,9 @@ TEST(CodeRefusals, ApplyCodeNamesTheCallAndItsArgument)
     expectRefused(paste("glm::perspective(glm::radians(45.0f), 0.0f, 0.1f, 100.0f)"), "code",
                   "glm::perspective argument 2 (aspect)");
     expectRefused(paste("glOrtho(-1, 1, 2, 2, 0.1, 100);"), "code", "glOrtho argument 4 (top)");
+    // A far behind the eye is a bad far, not near and far exchanged (reversed depth).
+    expectRefused(paste("glm::perspective(glm::radians(45.0f), 1.5f, 1.0f, -5.0f)"), "code",
+                  "glm::perspective argument 4 (far)");
     expectRefused(paste("gluPerspective(45, 1.5, 0.1);"), "code", "takes 4");
     expectRefused(paste("gluPerspective(fovy, 1.5, 0.1, 100);"), "code", "unknown name 'fovy'");
     expectRefused(paste("gluPerspective(45, 1.5, 0.1, 100"), "code", "expected ')'");

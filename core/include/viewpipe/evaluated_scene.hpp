@@ -170,6 +170,8 @@ std::string stageCaption(const EvaluatedScene& scene, std::size_t k, StageText t
 // The window as the projected view outlines it: the mid-section of the view
 // volume's side edges (end points by pairs, world coordinates).
 std::vector<Vec3<double>> pictureWindowOutline(const EvaluatedScene& scene);
+// The picture's width over its height: the window's sides.
+double pictureAspect(const EvaluatedScene& scene);
 
 // A point through a cumulative matrix and the divide; nothing when it has no
 // image (behind the eye, on the eye plane, or not finite).
