@@ -4,7 +4,7 @@
 #include <QScrollArea>
 #include <QVBoxLayout>
 
-#include "StageSymbols.h"
+#include "viewpipe/report/stage_symbols.hpp"
 #include "viewpipe/format.hpp"
 
 namespace viewpipe::gui {
@@ -87,11 +87,14 @@ void MatrixPanel::showStage(const Pipeline<double>& pipeline, int stage)
                 std::abs(now(r, c) - before(r, c)) > 1e-12 * std::max(1.0, std::abs(before(r, c)));
     const QString symbol = QString::fromStdString(s.symbol);
     QString html;
-    const SymbolicForm symbolic = symbolicMatrix(symbol);
-    if (!symbolic.cells[0].isEmpty()) {
-        html += table(symbol + tr(" (symbolic)"), symbolic.cells);
-        for (const QString& note : symbolic.notes)
-            html += "<div style='margin-bottom:4px'><i>" + note.toHtmlEscaped() + "</i></div>";
+    const SymbolicForm symbolic = symbolicMatrix(s.symbol);
+    if (!symbolic.cells[0].empty()) {
+        std::array<QString, 16> cells;
+        for (std::size_t k = 0; k < cells.size(); ++k)
+            cells[k] = QString::fromStdString(symbolic.cells[k]);
+        html += table(symbol + tr(" (symbolic)"), cells);
+        for (const std::string& note : symbolic.notes)
+            html += "<div style='margin-bottom:4px'><i>" + QString::fromStdString(note).toHtmlEscaped() + "</i></div>";
     }
     if (s.divides) // no matrix does this: each point is divided by its own w
         html += "<p><b>" + symbol.toHtmlEscaped() + "</b>: " + QString(kDivideMapping).toHtmlEscaped() + "<br><i>" +

@@ -9,6 +9,7 @@
 #include <stdexcept>
 
 #include "viewpipe/report/latex.hpp"
+#include "viewpipe/report/stage_symbols.hpp"
 #include "web_template.hpp" // generated from report/web: kPageHtml, kPageCss, kPageJs
 
 namespace viewpipe {
@@ -122,7 +123,7 @@ json legendJson(const std::vector<LegendEntry>& entries, Theme theme)
                              : e.swatch == LegendEntry::Swatch::Dot ? "dot"
                                                                     : "face";
         out.push_back({{"text", e.text}, {"swatch", swatch}, {"color", color(styledColor(e.element, surface, theme))},
-                       {"opacity", e.opacity}});
+                       {"opacity", e.opacity}, {"canonical", e.element == Element::Canonical}});
     }
     return out;
 }
@@ -214,6 +215,9 @@ std::string webPageData(const EvaluatedScene& scene, const WebPageViews& views)
             entry["divides"] = stage.divides;
             entry["latex"] = latex[k - 1].equation;
             entry["cumulativeLatex"] = latex[k - 1].cumulative;
+            const SymbolicForm symbolic = symbolicMatrix(stage.symbol);
+            if (!symbolic.cells[0].empty())
+                entry["symbolic"] = {{"cells", symbolic.cells}, {"notes", symbolic.notes}};
         }
         stageList.push_back(entry);
     }
@@ -249,6 +253,11 @@ std::string webPageData(const EvaluatedScene& scene, const WebPageViews& views)
     for (const Segment2& s : scene.vanishingLines)
         vanishing.push_back({s[0].x(), s[0].y(), s[1].x(), s[1].y()});
     projected["vanishing"] = vanishing;
+    json ring = json::array();
+    for (const Segment2& s : scene.zFightingRing)
+        ring.push_back({s[0].x(), s[0].y(), s[1].x(), s[1].y()});
+    projected["zFighting"] = ring;
+    projected["zFightingColor"] = color(elementColor(Element::ZFighting, theme));
 
     const json data = {{"title", scene.scene.name},
                        {"width", views.width},

@@ -219,6 +219,8 @@
       object.matrixWorldNeedsUpdate = true;
     }
     if (frameAxes) frameAxes.visible = atRest;
+    // The canonical volume's line of the legend while it is drawn, as in the app.
+    document.querySelectorAll('#legend [data-canonical]').forEach((row) => { row.hidden = !(frame.canonical > 0); });
     world.render(worldScene, camera);
 
     const context = fitOverlay(worldOverlay, size);
@@ -302,19 +304,24 @@
     projected.setSize(size.width, size.height, false);
     // The window at the picture's shape, whole, as in the app.
     const stretch = data.projected.aspect / (size.width / size.height);
-    const lx = 0.92 * Math.min(1, stretch), ly = 0.92 * Math.min(1, 1 / stretch);
+    const lx = 0.8 * Math.min(1, stretch), ly = 0.8 * Math.min(1, 1 / stretch); // room for the caption and legend
     projectedCamera.projectionMatrix.copy(new THREE.Matrix4().makeScale(lx, ly, 1).multiply(matrixOf(data.projected.clip)));
     projectedCamera.projectionMatrixInverse.getInverse(projectedCamera.projectionMatrix);
     projected.render(projectedScene, projectedCamera);
     const context = fitOverlay(projectedOverlay, size);
-    context.strokeStyle = cssColor(data.projected.vanishingColor, 0.85);
-    context.lineWidth = 1.5;
-    context.beginPath();
-    for (const [x0, y0, x1, y1] of data.projected.vanishing) {
-      context.moveTo((x0 * lx + 1) / 2 * size.width, (1 - y0 * ly) / 2 * size.height);
-      context.lineTo((x1 * lx + 1) / 2 * size.width, (1 - y1 * ly) / 2 * size.height);
-    }
-    context.stroke();
+    // Marks in the picture's coordinates: the vanishing lines, the ring around faces that fight for depth.
+    const marks = (segments, color, width) => {
+      context.strokeStyle = color;
+      context.lineWidth = width;
+      context.beginPath();
+      for (const [x0, y0, x1, y1] of segments) {
+        context.moveTo((x0 * lx + 1) / 2 * size.width, (1 - y0 * ly) / 2 * size.height);
+        context.lineTo((x1 * lx + 1) / 2 * size.width, (1 - y1 * ly) / 2 * size.height);
+      }
+      context.stroke();
+    };
+    marks(data.projected.vanishing, cssColor(data.projected.vanishingColor, 0.85), 1.5);
+    marks(data.projected.zFighting, cssColor(data.projected.zFightingColor), 2.5);
   }
 
   // ---- Panels -------------------------------------------------------------------
@@ -335,6 +342,7 @@
       else if (entry.swatch === 'dot') Object.assign(swatch.style, { width: '0.7em', borderRadius: '50%', background: cssColor(entry.color) });
       else swatch.style.background = cssColor(entry.color, Math.max(0.35, entry.opacity));
       row.append(swatch, entry.text);
+      if (entry.canonical) row.dataset.canonical = '1';
       element.appendChild(row);
     }
     element.hidden = entries.length === 0;
@@ -378,8 +386,27 @@
     document.getElementById('matrix-title').textContent = stage.list;
     if (state.stage === 0) {
       document.getElementById('matrix').textContent = 'The world: no matrix yet.';
+      document.getElementById('symbolic').textContent = '';
       document.getElementById('cumulative').textContent = '';
     } else {
+      const symbolic = document.getElementById('symbolic');
+      symbolic.textContent = '';
+      if (stage.symbolic) {
+        const table = document.createElement('table');
+        table.className = 'symbolic';
+        table.createCaption().textContent = stage.symbol + ' (symbolic)';
+        for (let r = 0; r < 4; ++r) {
+          const row = table.insertRow();
+          for (let c = 0; c < 4; ++c) row.insertCell().textContent = stage.symbolic.cells[4 * r + c];
+        }
+        symbolic.appendChild(table);
+        for (const note of stage.symbolic.notes) {
+          const line = document.createElement('p');
+          line.className = 'definition';
+          line.textContent = note;
+          symbolic.appendChild(line);
+        }
+      }
       typeset(document.getElementById('matrix'), stage.latex);
       typeset(document.getElementById('cumulative'), stage.cumulativeLatex);
     }
@@ -478,6 +505,7 @@
       case '+': case '=': changeView({ zoom: state.zoom * 1.25 }); break;
       case '-': changeView({ zoom: state.zoom / 1.25 }); break;
       case '0': changeView({ yaw: 0, pitch: 0, zoom: 1 }); break;
+      case 't': case 'T': traceNext(event.shiftKey ? -1 : 1); break;
       default: return;
     }
     event.preventDefault();
@@ -520,11 +548,28 @@
       const distance = Math.hypot(at.x - (event.clientX - rect.left), at.y - (event.clientY - rect.top));
       if (distance < bestDistance) best = point, bestDistance = distance;
     }
-    state.traced = best;
+    setTraced(best);
+  }
+
+  // T traces the next vertex drawn (Shift+T the one before): tracing without a mouse.
+  let tracedIndex = -1;
+  function traceNext(step) {
+    const count = vertices.length / 3;
+    for (let n = 1; n <= count; ++n) {
+      const k = ((tracedIndex + step * n) % count + count) % count;
+      const point = [vertices[3 * k], vertices[3 * k + 1], vertices[3 * k + 2]];
+      if (!kept(shown.frame.cut, point)) continue;
+      tracedIndex = k;
+      setTraced(point);
+      return;
+    }
+  }
+  function setTraced(point) {
+    state.traced = point;
     showTrace();
     drawWorld();
-    if (best) document.getElementById('live').textContent =
-      `Traced the vertex (${best.map(format).join(', ')}): its coordinates after each stage are in the table.`;
+    if (point) document.getElementById('live').textContent =
+      `Traced the vertex (${point.map(format).join(', ')}): its coordinates after each stage are in the table.`;
   }
 
   window.addEventListener('hashchange', () => {

@@ -1,38 +1,38 @@
-#include "StageSymbols.h"
+#include "viewpipe/report/stage_symbols.hpp"
 
-#include <QMap>
+#include <map>
 
-namespace viewpipe::gui {
+namespace viewpipe {
 namespace {
 
-std::array<QString, 16> translation(const QString& x, const QString& y, const QString& z)
+std::array<std::string, 16> translation(const std::string& x, const std::string& y, const std::string& z)
 {
     return {"1", "0", "0", x, "0", "1", "0", y, "0", "0", "1", z, "0", "0", "0", "1"};
 }
 
-std::array<QString, 16> diagonal(const QString& x, const QString& y, const QString& z)
+std::array<std::string, 16> diagonal(const std::string& x, const std::string& y, const std::string& z)
 {
     return {x, "0", "0", "0", "0", y, "0", "0", "0", "0", z, "0", "0", "0", "0", "1"};
 }
 
-std::array<QString, 16> shear(const QString& x, const QString& y)
+std::array<std::string, 16> shear(const std::string& x, const std::string& y)
 {
     return {"1", "0", x, "0", "0", "1", y, "0", "0", "0", "1", "0", "0", "0", "0", "1"};
 }
 
 // OpenGL's clip coordinates to an API's whose depth runs from 0 to 1: z' = (±z + w)/2, and y' = y or -y.
-std::array<QString, 16> toZeroToOne(const QString& y, const QString& z)
+std::array<std::string, 16> toZeroToOne(const std::string& y, const std::string& z)
 {
     return {"1", "0", "0", "0", "0", y, "0", "0", "0", "0", z, "½", "0", "0", "0", "1"};
 }
 
 } // namespace
 
-SymbolicForm symbolicMatrix(const QString& symbol)
+SymbolicForm symbolicMatrix(const std::string& symbol)
 {
-    static const QMap<QString, SymbolicForm> forms = [] {
-        const QStringList dopShear = {"shx = −DOPx / DOPz,  shy = −DOPy / DOPz", "DOP = CW − PRP"};
-        QMap<QString, SymbolicForm> out = {
+    static const std::map<std::string, SymbolicForm> forms = [] {
+        const std::vector<std::string> dopShear = {"shx = −DOPx / DOPz,  shy = −DOPy / DOPz", "DOP = CW − PRP"};
+        std::map<std::string, SymbolicForm> out = {
             {"T(-VRP)", {translation("−VRPx", "−VRPy", "−VRPz"), {}}},
             {"R",
              {{"ux", "uy", "uz", "0", "vx", "vy", "vz", "0", "nx", "ny", "nz", "0", "0", "0", "0", "1"},
@@ -62,15 +62,16 @@ SymbolicForm symbolicMatrix(const QString& symbol)
             {"Z_flip", {diagonal("1", "1", "−1"), {"the left-handed eye's +z becomes the −z the projection expects"}}},
             {"NDC_reversed", {diagonal("1", "1", "−1"), {"z' = −z: near at 1, far at −1"}}},
         };
-        for (const QString api : {"direct3d", "metal", "webgpu", "vulkan"}) {
-            const QString y = api == "vulkan" ? "−1" : "1";
-            const QString yNote = api == "vulkan" ? ",  y' = −y" : "";
+        for (const std::string api : {"direct3d", "metal", "webgpu", "vulkan"}) {
+            const std::string y = api == "vulkan" ? "−1" : "1";
+            const std::string yNote = api == "vulkan" ? ",  y' = −y" : "";
             out["NDC_" + api] = {toZeroToOne(y, "½"), {"z' = (z + w) / 2: near at 0, far at 1" + yNote}};
             out["NDC_" + api + "_reversed"] = {toZeroToOne(y, "−½"), {"z' = (w − z) / 2: near at 1, far at 0" + yNote}};
         }
         return out;
     }();
-    return forms.value(symbol);
+    const auto form = forms.find(symbol);
+    return form == forms.end() ? SymbolicForm{} : form->second;
 }
 
-} // namespace viewpipe::gui
+} // namespace viewpipe
