@@ -28,6 +28,7 @@ int main(int argc, char** argv)
     addConvertCommand(app);
     addCodeCommand(app);
     addSheetCommand(app);
+    addLessonCommand(app);
     addBenchCommand(app, writeBenchPlot);
     return runCommandLine(app, argc, argv);
 }

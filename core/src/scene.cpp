@@ -1,5 +1,7 @@
 #include "viewpipe/scene.hpp"
 
+#include "json_fields.hpp"
+
 #include "viewpipe/mesh_io.hpp"
 
 #include <nlohmann/json.hpp>
@@ -17,9 +19,8 @@
 #include <unistd.h>
 
 namespace viewpipe {
-namespace {
 
-using Json = nlohmann::json;
+namespace fields {
 
 std::string typeName(const Json& j)
 {
@@ -63,18 +64,6 @@ double readNumber(const Json& j, const std::string& path)
     return x;
 }
 
-// A depth that may be "infinity" (far plane of glFrustum and gluPerspective).
-double readFar(const Json& j, const std::string& path)
-{
-    if (j.is_string() && j.get<std::string>() == "infinity")
-        return std::numeric_limits<double>::infinity();
-    if (j.is_string())
-        throw InputError(path, "must be a number or \"infinity\" (got \"" + j.get<std::string>() + "\")");
-    if (!j.is_number())
-        throw InputError(path, "must be a number or \"infinity\" (got " + typeName(j) + ")");
-    return readNumber(j, path);
-}
-
 std::vector<double> readNumbers(const Json& j, const std::string& path, std::size_t count)
 {
     if (!j.is_array() || j.size() != count)
@@ -97,6 +86,154 @@ std::string readString(const Json& j, const std::string& path)
         throw InputError(path, "must be a string (got " + typeName(j) + ")");
     return j.get<std::string>();
 }
+
+namespace {
+
+// nlohmann's DOM builder, told where each value goes, so that a number too
+// large for a double is refused with its field path ("view.vrp[0]"); nlohmann
+// alone reports it as a parse error at a byte.
+class PathTrackingBuilder {
+public:
+    explicit PathTrackingBuilder(Json& root) : dom_(root) {}
+
+    bool null() { return enter() && dom_.null(); }
+    bool boolean(bool value) { return enter() && dom_.boolean(value); }
+    bool number_integer(Json::number_integer_t value) { return enter() && dom_.number_integer(value); }
+    bool number_unsigned(Json::number_unsigned_t value) { return enter() && dom_.number_unsigned(value); }
+    bool number_float(Json::number_float_t value, const Json::string_t& text)
+    {
+        return enter() && dom_.number_float(value, text);
+    }
+    bool string(Json::string_t& value) { return enter() && dom_.string(value); }
+    bool binary(Json::binary_t& value) { return enter() && dom_.binary(value); }
+
+    bool start_object(std::size_t size)
+    {
+        const bool ok = enter() && dom_.start_object(size);
+        frames_.push_back({true, {}, 0});
+        return ok;
+    }
+    bool key(Json::string_t& key)
+    {
+        frames_.back().key = key;
+        return dom_.key(key);
+    }
+    bool end_object()
+    {
+        frames_.pop_back();
+        return dom_.end_object();
+    }
+    bool start_array(std::size_t size)
+    {
+        const bool ok = enter() && dom_.start_array(size);
+        frames_.push_back({false, {}, 0});
+        return ok;
+    }
+    bool end_array()
+    {
+        frames_.pop_back();
+        return dom_.end_array();
+    }
+
+    template <class Exception>
+    bool parse_error(std::size_t position, const std::string& token, const Exception& error)
+    {
+        constexpr int kNumberOverflow = 406;
+        if (error.id == kNumberOverflow)
+            throw InputError(pendingPath(), "not a finite number");
+        return dom_.parse_error(position, token, error);
+    }
+
+private:
+    struct Frame {
+        bool object;
+        std::string key; // objects: the key of the value being read
+        std::size_t next; // arrays: the index of the next value
+    };
+
+    // A value starts: in an array, it takes the next index.
+    bool enter()
+    {
+        if (!frames_.empty() && !frames_.back().object)
+            ++frames_.back().next;
+        return true;
+    }
+
+    // The path of the value being read (arrays have counted it already unless it failed to parse).
+    std::string pendingPath() const
+    {
+        std::string path;
+        for (std::size_t k = 0; k < frames_.size(); ++k) {
+            const Frame& frame = frames_[k];
+            const bool last = k + 1 == frames_.size();
+            path = frame.object ? child(path, frame.key) : element(path, last ? frame.next : frame.next - 1);
+        }
+        return path.empty() ? "$" : path;
+    }
+
+    nlohmann::detail::json_sax_dom_parser<Json> dom_;
+    std::vector<Frame> frames_;
+};
+
+// nlohmann's syntax error as a position: its byte offset counted into lines
+// and columns as nlohmann's own message does, and the message's last part
+// ("unexpected '}'; expected ']'").
+InputError syntaxError(const Json::parse_error& error, const std::string& text)
+{
+    const std::size_t end = std::min<std::size_t>(error.byte, text.size());
+    const std::size_t line = 1 + std::size_t(std::count(text.begin(), text.begin() + std::ptrdiff_t(end), '\n'));
+    const std::size_t lineStart = text.rfind('\n', end == 0 ? std::string::npos : end - 1);
+    const std::size_t column = error.byte - (lineStart == std::string::npos ? 0 : lineStart + 1);
+    // "[json.exception.parse_error.101] parse error at line 4, column 3: syntax error while parsing array - ...".
+    const std::string what = error.what();
+    std::size_t start = what.find(": ", what.find("column"));
+    start = start == std::string::npos ? 0 : start + 2;
+    const std::size_t dash = what.find(" - ", start);
+    return InputError::at(line, column, what.substr(dash == std::string::npos ? start : dash + 3));
+}
+
+} // namespace
+
+std::string readInputFile(const std::filesystem::path& file, const std::string& what)
+{
+    std::ifstream in(file, std::ios::binary);
+    if (!in)
+        throw InputError("$", "cannot read the " + what + " file: " + std::strerror(errno));
+    std::ostringstream text;
+    text << in.rdbuf();
+    return text.str();
+}
+
+Json parseJson(const std::string& text)
+{
+    Json root;
+    try {
+        PathTrackingBuilder builder(root);
+        Json::sax_parse(text, &builder);
+    } catch (const Json::parse_error& e) {
+        throw syntaxError(e, text);
+    }
+    return root;
+}
+
+} // namespace fields
+
+namespace {
+
+using namespace fields;
+
+// A depth that may be "infinity" (far plane of glFrustum and gluPerspective).
+double readFar(const Json& j, const std::string& path)
+{
+    if (j.is_string() && j.get<std::string>() == "infinity")
+        return std::numeric_limits<double>::infinity();
+    if (j.is_string())
+        throw InputError(path, "must be a number or \"infinity\" (got \"" + j.get<std::string>() + "\")");
+    if (!j.is_number())
+        throw InputError(path, "must be a number or \"infinity\" (got " + typeName(j) + ")");
+    return readNumber(j, path);
+}
+
 
 foley::ViewSpec<double> readView(const Json& j)
 {
@@ -351,120 +488,11 @@ Json cameraJson(const CameraSpec<double>& camera)
     return {{"camera", out}};
 }
 
-// nlohmann's DOM builder, told where each value goes, so that a number too
-// large for a double is refused with its field path ("view.vrp[0]"); nlohmann
-// alone reports it as a parse error at a byte.
-class PathTrackingBuilder {
-public:
-    explicit PathTrackingBuilder(Json& root) : dom_(root) {}
-
-    bool null() { return enter() && dom_.null(); }
-    bool boolean(bool value) { return enter() && dom_.boolean(value); }
-    bool number_integer(Json::number_integer_t value) { return enter() && dom_.number_integer(value); }
-    bool number_unsigned(Json::number_unsigned_t value) { return enter() && dom_.number_unsigned(value); }
-    bool number_float(Json::number_float_t value, const Json::string_t& text)
-    {
-        return enter() && dom_.number_float(value, text);
-    }
-    bool string(Json::string_t& value) { return enter() && dom_.string(value); }
-    bool binary(Json::binary_t& value) { return enter() && dom_.binary(value); }
-
-    bool start_object(std::size_t size)
-    {
-        const bool ok = enter() && dom_.start_object(size);
-        frames_.push_back({true, {}, 0});
-        return ok;
-    }
-    bool key(Json::string_t& key)
-    {
-        frames_.back().key = key;
-        return dom_.key(key);
-    }
-    bool end_object()
-    {
-        frames_.pop_back();
-        return dom_.end_object();
-    }
-    bool start_array(std::size_t size)
-    {
-        const bool ok = enter() && dom_.start_array(size);
-        frames_.push_back({false, {}, 0});
-        return ok;
-    }
-    bool end_array()
-    {
-        frames_.pop_back();
-        return dom_.end_array();
-    }
-
-    template <class Exception>
-    bool parse_error(std::size_t position, const std::string& token, const Exception& error)
-    {
-        constexpr int kNumberOverflow = 406;
-        if (error.id == kNumberOverflow)
-            throw InputError(pendingPath(), "not a finite number");
-        return dom_.parse_error(position, token, error);
-    }
-
-private:
-    struct Frame {
-        bool object;
-        std::string key; // objects: the key of the value being read
-        std::size_t next; // arrays: the index of the next value
-    };
-
-    // A value starts: in an array, it takes the next index.
-    bool enter()
-    {
-        if (!frames_.empty() && !frames_.back().object)
-            ++frames_.back().next;
-        return true;
-    }
-
-    // The path of the value being read (arrays have counted it already unless it failed to parse).
-    std::string pendingPath() const
-    {
-        std::string path;
-        for (std::size_t k = 0; k < frames_.size(); ++k) {
-            const Frame& frame = frames_[k];
-            const bool last = k + 1 == frames_.size();
-            path = frame.object ? child(path, frame.key) : element(path, last ? frame.next : frame.next - 1);
-        }
-        return path.empty() ? "$" : path;
-    }
-
-    nlohmann::detail::json_sax_dom_parser<Json> dom_;
-    std::vector<Frame> frames_;
-};
-
-// nlohmann's syntax error as a position: its byte offset counted into lines
-// and columns as nlohmann's own message does, and the message's last part
-// ("unexpected '}'; expected ']'").
-InputError syntaxError(const Json::parse_error& error, const std::string& text)
-{
-    const std::size_t end = std::min<std::size_t>(error.byte, text.size());
-    const std::size_t line = 1 + std::size_t(std::count(text.begin(), text.begin() + std::ptrdiff_t(end), '\n'));
-    const std::size_t lineStart = text.rfind('\n', end == 0 ? std::string::npos : end - 1);
-    const std::size_t column = error.byte - (lineStart == std::string::npos ? 0 : lineStart + 1);
-    // "[json.exception.parse_error.101] parse error at line 4, column 3: syntax error while parsing array - ...".
-    const std::string what = error.what();
-    std::size_t start = what.find(": ", what.find("column"));
-    start = start == std::string::npos ? 0 : start + 2;
-    const std::size_t dash = what.find(" - ", start);
-    return InputError::at(line, column, what.substr(dash == std::string::npos ? start : dash + 3));
-}
-
 } // namespace
 
 Scene parseScene(const std::string& text, const std::filesystem::path& baseDir)
 {
-    Json root;
-    try {
-        PathTrackingBuilder builder(root);
-        Json::sax_parse(text, &builder);
-    } catch (const Json::parse_error& e) {
-        throw syntaxError(e, text);
-    }
+    const Json root = parseJson(text);
     requireObject(root, "", {"name", "view", "camera", "objects", "effects"}, {});
     if (root.contains("view") == root.contains("camera"))
         throw InputError("$", "needs exactly one of \"view\" (Foley) or \"camera\" (OpenGL)");
@@ -504,12 +532,7 @@ const gl::Camera<double>& lookAtCamera(const Scene& scene, const std::string& pu
 
 Scene loadScene(const std::filesystem::path& file)
 {
-    std::ifstream in(file, std::ios::binary);
-    if (!in)
-        throw InputError("$", std::string("cannot read the scene file: ") + std::strerror(errno));
-    std::ostringstream text;
-    text << in.rdbuf();
-    Scene scene = parseScene(text.str(), file.parent_path());
+    Scene scene = parseScene(readInputFile(file, "scene"), file.parent_path());
     scene.file = file;
     if (scene.name.empty())
         scene.name = file.stem().string();

@@ -15,6 +15,7 @@ namespace viewpipe::commands {
 void addOpenCommand(CLI::App& app, int argc, char** argv);
 void addExportCommand(CLI::App& app);
 void addSheetCommand(CLI::App& app);
+void addLessonCommand(CLI::App& app);
 
 // `bench --plot`: the error-against-time chart as a PNG, on a virtual display if there is none.
 void writeBenchPlot(const cli::BenchResult& result, const std::string& file);

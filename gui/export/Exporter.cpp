@@ -219,6 +219,76 @@ std::vector<int> parseStages(const std::string& text, int stageCount)
     return stages;
 }
 
+namespace {
+
+// An offscreen window and the scene painter in it, sized and styled as the
+// export draws: fonts and lines scale with the picture.
+struct OffscreenPainter {
+    OffscreenPainter(const std::shared_ptr<const EvaluatedScene>& scene, int width, int height, int scale, Theme theme,
+                     bool transparent)
+    {
+        window->SetOffScreenRendering(1);
+        window->SetSize(width * scale, height * scale);
+        window->SetAlphaBitPlanes(transparent ? 1 : 0);
+        window->SetMultiSamples(0);
+        renderer->UseFXAAOn();
+        window->AddRenderer(renderer);
+        painter = std::make_unique<ScenePainter>(renderer, nullptr);
+        painter->setTheme(theme);
+        const double sizeShare = std::sqrt(double(width) * height / (1280.0 * 720.0));
+        painter->setFontSize(int(std::lround(std::clamp(kBaseFontSize * sizeShare, 10.0, 2.0 * kBaseFontSize))) *
+                             scale);
+        painter->setLineScale(scale);
+        painter->setScene(scene);
+        if (transparent)
+            renderer->SetBackgroundAlpha(0);
+        window->Render(); // sizes the renderer before framing
+        painter->resetView();
+    }
+    vtkNew<vtkRenderWindow> window;
+    vtkNew<vtkRenderer> renderer;
+    std::unique_ptr<ScenePainter> painter;
+};
+
+} // namespace
+
+WebPageViews recordWebViews(const std::shared_ptr<const EvaluatedScene>& evaluated, int width, int height, Theme theme,
+                            const std::function<void(const std::string&)>& step)
+{
+    OffscreenPainter offscreen(evaluated, width, height, 1, theme, false);
+    ScenePainter& painter = *offscreen.painter;
+    const std::vector<Stage<double>>& stages = evaluated->pipeline.stages;
+    const int n = int(stages.size());
+    WebPageViews views;
+    views.width = width;
+    views.height = height;
+    views.fontSize = painter.figureView().fontSize;
+    views.theme = theme;
+    for (int k = 0; k <= n; ++k) {
+        step("web page: stage " + std::to_string(k) + " of " + std::to_string(n));
+        if (k > 0) { // the app's transition, frame by frame
+            std::vector<WebFrame> frames;
+            StageTransition transition(painter, stages, k - 1, k);
+            for (int f = 1; f <= kWebFramesPerStep; ++f) {
+                transition.apply(double(f) / kWebFramesPerStep);
+                frames.push_back(painter.webFrame());
+            }
+            views.transitions.push_back(std::move(frames));
+        }
+        const std::string caption = stageCaption(*evaluated, std::size_t(k), StageText::Heading);
+        StageShown shown(*evaluated, drawnAt(stages, k), StageTransition::canonicalOpacity(k, stages.size()));
+        shown.ghost = ghostAt(stages, k);
+        painter.show(shown.cumulative, shown.canonicalOpacity);
+        painter.setGhost(shown.ghost);
+        painter.setCaptions(caption, "");
+        painter.frameOn(StageTransition::framingAt(painter, stages, k));
+        offscreen.window->Render();
+        const VectorFigure vector{&shown, painter.figureView(), caption, theme};
+        views.stages.push_back({painter.webFrame(), shown.ghost, vector.view.frameReach, flatFigure(vector).labels});
+    }
+    return views;
+}
+
 std::vector<fs::path> exportStages(const std::shared_ptr<const EvaluatedScene>& evaluated, const ExportOptions& options,
                                    const ExportProgress& progress, const std::atomic<bool>& cancel)
 {
@@ -267,25 +337,10 @@ std::vector<fs::path> exportStages(const std::shared_ptr<const EvaluatedScene>& 
 
     try {
         // One offscreen window, one painter, one camera framing every stage.
-        vtkNew<vtkRenderWindow> window;
-        window->SetOffScreenRendering(1);
-        window->SetSize(options.width * options.scale, options.height * options.scale);
-        window->SetAlphaBitPlanes(options.transparent ? 1 : 0);
-        window->SetMultiSamples(0);
-        vtkNew<vtkRenderer> renderer;
-        renderer->UseFXAAOn();
-        window->AddRenderer(renderer);
-        ScenePainter painter(renderer, nullptr);
-        painter.setTheme(options.theme);
-        const double sizeShare = std::sqrt(double(options.width) * options.height / (1280.0 * 720.0));
-        painter.setFontSize(int(std::lround(std::clamp(kBaseFontSize * sizeShare, 10.0, 2.0 * kBaseFontSize))) *
-                            options.scale);
-        painter.setLineScale(options.scale);
-        painter.setScene(evaluated);
-        if (options.transparent)
-            renderer->SetBackgroundAlpha(0);
-        window->Render(); // sizes the renderer before framing
-        painter.resetView();
+        OffscreenPainter offscreen(evaluated, options.width, options.height, options.scale, options.theme,
+                                   options.transparent);
+        vtkRenderWindow* window = offscreen.window;
+        ScenePainter& painter = *offscreen.painter;
         ScenePainter::Framing framing; // with fixedFraming, one that holds every stage
         if (options.fixedFraming) {
             std::vector<Mat4<double>> all;
@@ -332,29 +387,8 @@ std::vector<fs::path> exportStages(const std::shared_ptr<const EvaluatedScene>& 
         }
 
         if (webPage) {
-            WebPageViews views;
-            views.width = options.width * options.scale;
-            views.height = options.height * options.scale;
-            views.fontSize = painter.figureView().fontSize;
-            views.theme = options.theme;
-            for (int k = 0; k <= n; ++k) {
-                step("web page: stage " + std::to_string(k) + " of " + std::to_string(n));
-                const std::string caption = stageCaption(*evaluated, std::size_t(k), StageText::Heading);
-                if (k > 0) { // the app's transition, frame by frame
-                    std::vector<WebFrame> frames;
-                    StageTransition transition(painter, stages, k - 1, k);
-                    for (int f = 1; f <= kWebFramesPerStep; ++f) {
-                        transition.apply(double(f) / kWebFramesPerStep);
-                        frames.push_back(painter.webFrame());
-                    }
-                    views.transitions.push_back(std::move(frames));
-                }
-                showAt(k, caption);
-                StageShown shown(*evaluated, drawnAt(stages, k), StageTransition::canonicalOpacity(k, stages.size()));
-                shown.ghost = ghostAt(stages, k);
-                const VectorFigure vector{&shown, painter.figureView(), caption, options.theme};
-                views.stages.push_back({painter.webFrame(), shown.ghost, vector.view.frameReach, flatFigure(vector).labels});
-            }
+            const WebPageViews views = recordWebViews(evaluated, options.width * options.scale,
+                                                      options.height * options.scale, options.theme, step);
             step("scene.html");
             writeFileAtomically(temporary / "scene.html", viewpipe::webPage(*evaluated, views, loadWebAssets()));
         }

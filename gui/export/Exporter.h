@@ -55,6 +55,12 @@ std::vector<std::filesystem::path> exportStages(const std::shared_ptr<const Eval
 void exportWebPage(const std::shared_ptr<const EvaluatedScene>& scene, const std::filesystem::path& file, Theme theme,
                    const ExportProgress& progress, const std::atomic<bool>& cancel);
 
+// What the web page of a scene draws (report/web_page.hpp): every stage at
+// rest and the app's transitions frame by frame, recorded from an offscreen
+// painter of width x height pixels. `step` hears of each stage.
+WebPageViews recordWebViews(const std::shared_ptr<const EvaluatedScene>& scene, int width, int height, Theme theme,
+                            const std::function<void(const std::string&)>& step);
+
 // The CAD layout of seed 001 for a scene's objects, as one PNG: the top view
 // above the front view, the (right) side view beside it, and the isometric
 // view in the remaining corner. Written atomically; throws InputError for a

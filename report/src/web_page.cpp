@@ -118,6 +118,8 @@ json legendJson(const std::vector<LegendEntry>& entries, Theme theme)
 {
     json out = json::array();
     for (const LegendEntry& e : entries) {
+        if (e.swatch == LegendEntry::Swatch::Bands || e.swatch == LegendEntry::Swatch::Pixels)
+            continue; // the page draws neither the depth bands nor the raster's pixels
         const bool surface = e.swatch == LegendEntry::Swatch::Face;
         const char* swatch = e.swatch == LegendEntry::Swatch::Line ? "line"
                              : e.swatch == LegendEntry::Swatch::Dot ? "dot"
@@ -183,7 +185,9 @@ WebAssets loadWebAssets(const std::filesystem::path& javascript)
     return assets;
 }
 
-std::string webPageData(const EvaluatedScene& scene, const WebPageViews& views)
+namespace {
+
+json sceneData(const EvaluatedScene& scene, const WebPageViews& views)
 {
     const Theme theme = views.theme;
     const std::vector<Stage<double>>& stages = scene.pipeline.stages;
@@ -278,21 +282,72 @@ std::string webPageData(const EvaluatedScene& scene, const WebPageViews& views)
                        {"legend", legendJson(scene.worldLegend, theme)},
                        {"note", scene.effectsNote},
                        {"projected", projected}};
-    return data.dump();
+    return data;
+}
+
+json questionData(const Question& q)
+{
+    json out = {{"kind", questionKindName(q.kind)}, {"prompt", q.prompt}, {"explanation", q.explanation}};
+    switch (q.kind) {
+    case QuestionKind::Where:
+        out.update({{"point", vec(q.point)}, {"stage", q.stage}, {"tolerance", q.tolerance}, {"answer", vec(q.where)}});
+        break;
+    case QuestionKind::Inside: out.update({{"point", vec(q.point)}, {"answer", q.inside}}); break;
+    case QuestionKind::SignW: out.update({{"point", vec(q.point)}, {"stage", q.stage}, {"answer", q.signW}}); break;
+    case QuestionKind::WhichStage: out.update({{"stage", q.stage}, {"choices", q.choices}, {"answer", q.correct}}); break;
+    case QuestionKind::Order: out.update({{"choices", q.choices}}); break;
+    case QuestionKind::Entry:
+        out.update({{"stage", q.stage}, {"row", q.row}, {"column", q.column}, {"answer", q.entry}});
+        break;
+    case QuestionKind::Choice: out.update({{"choices", q.choices}, {"answer", q.correct}}); break;
+    }
+    return out;
+}
+
+std::string page(const std::string& title, const json& data, const WebAssets& assets)
+{
+    std::string escaped;
+    for (char c : title)
+        escaped += c == '<' ? "&lt;" : c == '>' ? "&gt;" : c == '&' ? "&amp;" : std::string(1, c);
+    return fill(web::kPageHtml, {{"title", escaped},
+                                 {"katex-css", assets.katexCss},
+                                 {"page-css", web::kPageCss},
+                                 {"data", escapeForScript(data.dump())},
+                                 {"three", escapeForScript(assets.three)},
+                                 {"katex", escapeForScript(assets.katex)},
+                                 {"page-js", escapeForScript(web::kPageJs)}});
+}
+
+} // namespace
+
+std::string webPageData(const EvaluatedScene& scene, const WebPageViews& views)
+{
+    return json{{"scenes", {sceneData(scene, views)}}}.dump();
 }
 
 std::string webPage(const EvaluatedScene& scene, const WebPageViews& views, const WebAssets& assets)
 {
-    std::string title;
-    for (char c : scene.scene.name)
-        title += c == '<' ? "&lt;" : c == '>' ? "&gt;" : c == '&' ? "&amp;" : std::string(1, c);
-    return fill(web::kPageHtml, {{"title", title},
-                                 {"katex-css", assets.katexCss},
-                                 {"page-css", web::kPageCss},
-                                 {"data", escapeForScript(webPageData(scene, views))},
-                                 {"three", escapeForScript(assets.three)},
-                                 {"katex", escapeForScript(assets.katex)},
-                                 {"page-js", escapeForScript(web::kPageJs)}});
+    return page(scene.scene.name, {{"scenes", {sceneData(scene, views)}}}, assets);
+}
+
+std::string lessonPage(const Lesson& lesson, const std::vector<int>& stepScenes, const std::vector<LessonScene>& scenes,
+                       const WebAssets& assets)
+{
+    json steps = json::array();
+    for (std::size_t k = 0; k < lesson.steps.size(); ++k) {
+        const LessonStep& step = lesson.steps[k];
+        json entry = {{"scene", stepScenes.at(k)}, {"stage", step.stage}, {"yaw", step.yaw},
+                      {"pitch", step.pitch},       {"zoom", step.zoom},   {"caption", step.caption}};
+        if (step.trace)
+            entry["trace"] = vec(*step.trace);
+        if (step.question)
+            entry["question"] = questionData(*step.question);
+        steps.push_back(entry);
+    }
+    json sceneList = json::array();
+    for (const LessonScene& s : scenes)
+        sceneList.push_back(sceneData(*s.scene, s.views));
+    return page(lesson.title, {{"lesson", {{"title", lesson.title}, {"steps", steps}}}, {"scenes", sceneList}}, assets);
 }
 
 } // namespace viewpipe

@@ -3,9 +3,11 @@
 // from the app; this script only draws them, as the app's painter does.
 (function () {
   'use strict';
-  const data = JSON.parse(document.getElementById('scene-data').textContent);
-  const stages = data.stages;
-  const last = stages.length - 1;
+  const page = JSON.parse(document.getElementById('scene-data').textContent);
+  const lesson = page.lesson || null;
+  let data = page.scenes[0]; // the scene shown
+  let stages = data.stages;
+  let last = stages.length - 1;
   const body = document.body;
   if (data.dark) body.classList.add('dark');
 
@@ -84,21 +86,9 @@
   const worldOverlay = document.getElementById('world-overlay');
   const world = makeRenderer(worldCanvas);
   const worldScene = new THREE.Scene();
-  worldScene.background = new THREE.Color(...data.background);
   const camera = new THREE.Camera();
   camera.matrixAutoUpdate = false;
-  const items = []; // {object, primitive, ghost}
-  data.primitives.forEach((primitive, k) => {
-    const geometry = geometryOf(primitive);
-    const object = drawable(geometry, primitive, primitive.opacity, 2 * k + 1);
-    worldScene.add(object);
-    items.push({ object, primitive, ghost: false });
-    if (primitive.ghosted) {
-      const ghost = drawable(geometry, primitive, primitive.opacity * data.ghostOpacity, 2 * k);
-      worldScene.add(ghost);
-      items.push({ object: ghost, primitive, ghost: true });
-    }
-  });
+  let items = []; // {object, primitive, ghost}
   let frameAxes = null; // the fixed axes of the stage shown at rest
 
   // ---- What the camera sees ---------------------------------------------------
@@ -106,18 +96,43 @@
   const projectedOverlay = document.getElementById('projected-overlay');
   const projected = makeRenderer(projectedCanvas);
   const projectedScene = new THREE.Scene();
-  projectedScene.background = new THREE.Color(...data.projectedBackground);
   const projectedCamera = new THREE.Camera();
   projectedCamera.matrixAutoUpdate = false;
-  data.primitives.forEach((primitive, k) => {
-    if (primitive.object < 0 || primitive.opacity < 1 && !primitive.surface) return; // objects as the camera sees them
-    projectedScene.add(drawable(geometryOf(primitive), primitive, primitive.surface ? 0.35 : 1, k));
-  });
-  const windowOutline = { surface: false, positions: data.projected.window, color: data.projected.windowColor };
-  projectedScene.add(drawable(geometryOf(windowOutline), windowOutline, 1, data.primitives.length));
+  function clear(scene) {
+    for (const child of [...scene.children]) {
+      scene.remove(child);
+      child.geometry.dispose();
+      child.material.dispose();
+    }
+  }
+  // The drawables of the scene shown, in both views.
+  function buildViews() {
+    clear(worldScene);
+    clear(projectedScene);
+    frameAxes = null;
+    items = [];
+    worldScene.background = new THREE.Color(...data.background);
+    projectedScene.background = new THREE.Color(...data.projectedBackground);
+    data.primitives.forEach((primitive, k) => {
+      const geometry = geometryOf(primitive);
+      const object = drawable(geometry, primitive, primitive.opacity, 2 * k + 1);
+      worldScene.add(object);
+      items.push({ object, primitive, ghost: false });
+      if (primitive.ghosted) {
+        const ghost = drawable(geometry, primitive, primitive.opacity * data.ghostOpacity, 2 * k);
+        worldScene.add(ghost);
+        items.push({ object: ghost, primitive, ghost: true });
+      }
+      // What the camera sees: the objects.
+      if (primitive.object >= 0 && (primitive.surface || primitive.opacity >= 1))
+        projectedScene.add(drawable(geometryOf(primitive), primitive, primitive.surface ? 0.35 : 1, k));
+    });
+    const windowOutline = { surface: false, positions: data.projected.window, color: data.projected.windowColor };
+    projectedScene.add(drawable(geometryOf(windowOutline), windowOutline, 1, data.primitives.length));
+  }
 
   // ---- State ------------------------------------------------------------------
-  const state = { stage: 0, yaw: 0, pitch: 0, zoom: 1, figure: false, traced: null };
+  const state = { stage: 0, step: 0, yaw: 0, pitch: 0, zoom: 1, figure: false, traced: null };
   let shown = null; // the frame drawn: {frame, atRest, ghost}
   let animation = null;
   let playing = null;
@@ -129,6 +144,7 @@
       return values.has(name) && Number.isFinite(value) ? value : fallback;
     };
     state.stage = Math.min(last, Math.max(0, Math.round(number('stage', 0))));
+    state.step = lesson ? Math.min(lesson.steps.length - 1, Math.max(0, Math.round(number('step', 1) - 1))) : 0;
     state.yaw = number('yaw', 0);
     state.pitch = Math.max(-89, Math.min(89, number('pitch', 0)));
     state.zoom = Math.max(0.1, Math.min(20, number('zoom', 1)));
@@ -137,6 +153,7 @@
   }
   function writeFragment() {
     const values = new URLSearchParams();
+    if (lesson) values.set('step', state.step + 1);
     values.set('stage', state.stage);
     if (state.yaw) values.set('yaw', state.yaw.toFixed(1));
     if (state.pitch) values.set('pitch', state.pitch.toFixed(1));
@@ -326,13 +343,20 @@
 
   // ---- Panels -------------------------------------------------------------------
   const list = document.getElementById('stage-list');
-  stages.forEach((stage, k) => {
-    const item = document.createElement('li');
-    item.textContent = stage.list;
-    item.tabIndex = -1;
-    item.addEventListener('click', () => goTo(k));
-    list.appendChild(item);
-  });
+  function buildPanels() {
+    list.textContent = '';
+    stages.forEach((stage, k) => {
+      const item = document.createElement('li');
+      item.textContent = stage.list;
+      item.tabIndex = -1;
+      item.addEventListener('click', () => goTo(k, false));
+      list.appendChild(item);
+    });
+    legend(document.getElementById('legend'), data.legend);
+    legend(document.getElementById('projected-legend'), data.projected.legend);
+    document.getElementById('note').textContent = data.note;
+    vertices = floatsOf(data.vertices);
+  }
   function legend(element, entries) {
     element.textContent = '';
     for (const entry of entries) {
@@ -347,9 +371,6 @@
     }
     element.hidden = entries.length === 0;
   }
-  legend(document.getElementById('legend'), data.legend);
-  legend(document.getElementById('projected-legend'), data.projected.legend);
-  document.getElementById('note').textContent = data.note;
 
   function typeset(element, latex) {
     try {
@@ -477,8 +498,8 @@
       goTo(state.stage + 1, true);
     }, kStepMilliseconds + 900);
   }
-  document.getElementById('previous').addEventListener('click', () => goTo(state.stage - 1, true));
-  document.getElementById('next').addEventListener('click', () => goTo(state.stage + 1, true));
+  document.getElementById('previous').addEventListener('click', back);
+  document.getElementById('next').addEventListener('click', forward);
   document.getElementById('play').addEventListener('click', play);
 
   function changeView(change) {
@@ -488,20 +509,24 @@
     writeFragment();
     drawWorld();
   }
+  // A lesson steps through its steps; a scene through its stages.
+  function forward() { if (lesson) goToStep(state.step + 1); else goTo(state.stage + 1, true); }
+  function back() { if (lesson) goToStep(state.step - 1); else goTo(state.stage - 1, true); }
   document.addEventListener('keydown', (event) => {
     if (event.altKey || event.ctrlKey || event.metaKey) return;
+    if (event.target instanceof HTMLInputElement) return; // typing an answer
     const onButton = event.target instanceof HTMLButtonElement;
     const orbit = event.shiftKey ? 10 : 0;
     switch (event.key) {
-      case 'ArrowRight': if (orbit) changeView({ yaw: state.yaw + orbit }); else goTo(state.stage + 1, true); break;
-      case 'ArrowLeft': if (orbit) changeView({ yaw: state.yaw - orbit }); else goTo(state.stage - 1, true); break;
+      case 'ArrowRight': if (orbit) changeView({ yaw: state.yaw + orbit }); else forward(); break;
+      case 'ArrowLeft': if (orbit) changeView({ yaw: state.yaw - orbit }); else back(); break;
       case 'ArrowUp': if (orbit) changeView({ pitch: state.pitch - orbit }); else return; break;
       case 'ArrowDown': if (orbit) changeView({ pitch: state.pitch + orbit }); else return; break;
-      case 'PageDown': goTo(state.stage + 1, true); break;
-      case 'PageUp': case 'Backspace': goTo(state.stage - 1, true); break;
-      case 'Home': goTo(0); break;
-      case 'End': goTo(last); break;
-      case ' ': if (onButton) return; play(); break;
+      case 'PageDown': forward(); break;
+      case 'PageUp': case 'Backspace': back(); break;
+      case 'Home': if (lesson) goToStep(0); else goTo(0); break;
+      case 'End': if (lesson) goToStep(lesson.steps.length - 1); else goTo(last); break;
+      case ' ': if (onButton) return; if (lesson) forward(); else play(); break;
       case '+': case '=': changeView({ zoom: state.zoom * 1.25 }); break;
       case '-': changeView({ zoom: state.zoom / 1.25 }); break;
       case '0': changeView({ yaw: 0, pitch: 0, zoom: 1 }); break;
@@ -533,7 +558,7 @@
     changeView({ zoom: state.zoom * Math.pow(1.1, -Math.sign(event.deltaY)) });
   }, { passive: false });
 
-  const vertices = floatsOf(data.vertices);
+  let vertices = new Float32Array(0);
   function trace(event) {
     if (!shown) return;
     const rect = worldCanvas.getBoundingClientRect();
@@ -573,14 +598,274 @@
   }
 
   window.addEventListener('hashchange', () => {
-    const before = state.stage;
+    const before = { stage: state.stage, step: state.step };
     readFragment();
-    const k = state.stage;
-    state.stage = before;
-    goTo(k);
-    drawProjected();
+    const wanted = { stage: state.stage, step: state.step };
+    Object.assign(state, before);
+    if (lesson) goToStep(wanted.step, true);
+    else goTo(wanted.stage);
   });
   window.addEventListener('resize', () => { drawWorld(); drawProjected(); });
+
+  // ---- Scenes and lessons -------------------------------------------------------
+  let shownScene = -1;
+  function useScene(index) {
+    if (index === shownScene) return;
+    shownScene = index;
+    data = page.scenes[index];
+    stages = data.stages;
+    last = stages.length - 1;
+    state.traced = null;
+    buildViews();
+    buildPanels();
+    drawProjected();
+  }
+
+  // Text with inline math between dollar signs, typeset ("\$" is a dollar).
+  function setRichText(element, text) {
+    element.textContent = '';
+    const parts = text.split(/(?<!\\)\$/);
+    parts.forEach((part, k) => {
+      if (k % 2 === 0) {
+        element.append(part.replace(/\\\$/g, '$'));
+      } else {
+        const math = document.createElement('span');
+        try {
+          katex.render(part, math, { throwOnError: true });
+        } catch (error) {
+          math.textContent = part;
+        }
+        element.appendChild(math);
+      }
+    });
+  }
+
+  const results = []; // one entry per question answered: {step, kind, answer, correct}
+  function buildLesson() {
+    document.getElementById('title').textContent = lesson.title;
+    document.getElementById('lesson').hidden = false;
+    body.classList.add('lesson');
+    document.querySelector('header .keys').textContent =
+      'Keys: ← → (or Page Up, Page Down, Space) go through the steps, Home and End; Shift+arrows or drag orbit, ' +
+      '+ − zoom, 0 resets the view; answer a question, then Check (Enter).';
+    document.querySelector('#stepper .buttons #play').hidden = true;
+    document.getElementById('save').addEventListener('click', () => {
+      const blob = new Blob([JSON.stringify({ lesson: lesson.title, answers: results }, null, 2)],
+                            { type: 'application/json' });
+      const link = document.createElement('a');
+      link.href = URL.createObjectURL(blob);
+      link.download = 'lesson-results.json';
+      link.click();
+      URL.revokeObjectURL(link.href);
+    });
+  }
+
+  function numberTyped(text) {
+    const fraction = /^\s*([+-]?\d+(?:\.\d*)?)\s*\/\s*([+-]?\d+(?:\.\d*)?)\s*$/.exec(text);
+    if (fraction) return Number(fraction[1]) / Number(fraction[2]);
+    return text.trim() === '' ? NaN : Number(text);
+  }
+  const near = (x, a, tolerance) => Math.abs(x - a) <= tolerance * Math.max(1, Math.abs(a));
+  const signName = (s) => (s > 0 ? 'positive' : s < 0 ? 'negative' : 'zero');
+  function matrixLatex(rows) {
+    let latex = '\\begin{bmatrix}';
+    for (let r = 0; r < 4; ++r)
+      latex += rows.slice(4 * r, 4 * r + 4).map(format).join(' & ') + (r < 3 ? ' \\\\ ' : '');
+    return latex + '\\end{bmatrix}';
+  }
+
+  // The question of a step: the student answers, the answer is checked, then shown.
+  function showQuestion(step, index) {
+    const box = document.getElementById('question');
+    box.textContent = '';
+    const question = step.question;
+    body.classList.toggle('asking', !!question);
+    if (!question) return;
+    const prompt = document.createElement('p');
+    prompt.className = 'prompt';
+    setRichText(prompt, question.prompt);
+    box.appendChild(prompt);
+    const form = document.createElement('form');
+    box.appendChild(form);
+    const feedback = document.createElement('p');
+    feedback.className = 'feedback';
+    feedback.setAttribute('role', 'status');
+    let read = null; // returns [answer, correct] or null when nothing usable was given
+    const input = (label) => {
+      const field = document.createElement('input');
+      field.type = 'text';
+      field.inputMode = 'decimal';
+      field.setAttribute('aria-label', label);
+      field.placeholder = label;
+      form.appendChild(field);
+      return field;
+    };
+    const picks = (labels) => {
+      const group = document.createElement('div');
+      group.setAttribute('role', 'radiogroup');
+      labels.forEach((label, k) => {
+        const option = document.createElement('label');
+        const radio = document.createElement('input');
+        radio.type = 'radio';
+        radio.name = 'answer-' + index;
+        radio.value = k;
+        option.append(radio, ' ', label);
+        group.appendChild(option);
+      });
+      form.appendChild(group);
+      return () => {
+        const chosen = form.querySelector('input[type=radio]:checked');
+        return chosen ? Number(chosen.value) : null;
+      };
+    };
+    let answerText = '';
+    switch (question.kind) {
+      case 'where': {
+        const fields = ['x', 'y', 'z'].map(input);
+        read = () => {
+          const typed = fields.map((f) => numberTyped(f.value));
+          if (typed.some((x) => !Number.isFinite(x))) return null;
+          const size = Math.hypot(...question.answer);
+          const off = Math.hypot(...typed.map((x, k) => x - question.answer[k]));
+          return [typed, off <= question.tolerance * Math.max(1, size)];
+        };
+        answerText = `(${question.answer.map(format).join(', ')})`;
+        break;
+      }
+      case 'inside': {
+        const chosen = picks(['inside the view volume', 'clipped away']);
+        read = () => (chosen() === null ? null : [chosen() === 0, (chosen() === 0) === question.answer]);
+        answerText = question.answer ? 'inside the view volume' : 'clipped away';
+        break;
+      }
+      case 'sign_w': {
+        const signs = [1, 0, -1];
+        const chosen = picks(['positive', 'zero', 'negative']);
+        read = () => (chosen() === null ? null : [signName(signs[chosen()]), signs[chosen()] === question.answer]);
+        answerText = `w is ${signName(question.answer)}`;
+        break;
+      }
+      case 'which_stage': {
+        const shownMatrix = document.createElement('div');
+        typeset(shownMatrix, matrixLatex(data.stages[question.stage].matrix));
+        form.appendChild(shownMatrix);
+        const chosen = picks(question.choices);
+        read = () => (chosen() === null ? null : [question.choices[chosen()], chosen() === question.answer]);
+        answerText = question.choices[question.answer];
+        break;
+      }
+      case 'choice': {
+        const labels = question.choices.map((choice) => {
+          const span = document.createElement('span');
+          setRichText(span, choice);
+          return span;
+        });
+        const chosen = picks(labels);
+        read = () => (chosen() === null ? null : [chosen(), chosen() === question.answer]);
+        answerText = question.choices[question.answer];
+        break;
+      }
+      case 'entry': {
+        const field = input(`entry (${question.row}, ${question.column})`);
+        read = () => {
+          const x = numberTyped(field.value);
+          return Number.isFinite(x) ? [x, near(x, question.answer, 1e-3)] : null;
+        };
+        answerText = format(question.answer);
+        break;
+      }
+      case 'order': {
+        // The stages shuffled the same way every time (a fixed rotation and reversal), moved with buttons.
+        const order = question.choices.map((_, k) => k).reverse();
+        order.push(order.shift());
+        const listOf = document.createElement('ol');
+        listOf.className = 'order';
+        const draw = () => {
+          listOf.textContent = '';
+          order.forEach((k, at) => {
+            const item = document.createElement('li');
+            item.append(question.choices[k] + ' ');
+            for (const [label, by] of [['↑', -1], ['↓', 1]]) {
+              const button = document.createElement('button');
+              button.type = 'button';
+              button.textContent = label;
+              button.setAttribute('aria-label', `move ${question.choices[k]} ${by < 0 ? 'up' : 'down'}`);
+              button.disabled = at + by < 0 || at + by >= order.length;
+              button.addEventListener('click', () => {
+                [order[at], order[at + by]] = [order[at + by], order[at]];
+                draw();
+                listOf.querySelectorAll('button')[2 * (at + by) + (by < 0 ? 0 : 1)].focus();
+              });
+              item.appendChild(button);
+            }
+            listOf.appendChild(item);
+          });
+        };
+        draw();
+        form.appendChild(listOf);
+        read = () => [order.map((k) => question.choices[k]), order.every((k, at) => k === at)];
+        answerText = question.choices.join(', ');
+        break;
+      }
+    }
+    const check = document.createElement('button');
+    check.type = 'submit';
+    check.textContent = 'Check';
+    form.appendChild(check);
+    box.appendChild(feedback);
+    const reveal = document.createElement('div');
+    reveal.className = 'reveal';
+    reveal.hidden = true;
+    box.appendChild(reveal);
+    form.addEventListener('submit', (event) => {
+      event.preventDefault();
+      const outcome = read();
+      if (!outcome) {
+        feedback.textContent = 'Answer first: every field needs a number (a fraction such as -2/21 is fine).';
+        return;
+      }
+      const [answer, correct] = outcome;
+      results[index] = { step: index + 1, kind: question.kind, answer, correct };
+      feedback.textContent = correct ? 'Right.' : `Not quite: the answer is ${answerText}.`;
+      feedback.className = 'feedback ' + (correct ? 'right' : 'wrong');
+      // Revealed: the answer, why, and the stage it is about.
+      body.classList.remove('asking');
+      reveal.hidden = false;
+      reveal.textContent = '';
+      const said = document.createElement('p');
+      said.textContent = `Answer: ${answerText}.`;
+      reveal.appendChild(said);
+      if (question.explanation) {
+        const why = document.createElement('p');
+        setRichText(why, question.explanation);
+        reveal.appendChild(why);
+      }
+      if (question.point) state.traced = question.point;
+      if (question.stage && question.stage !== state.stage) goTo(question.stage, true);
+      else { showPanels(); drawWorld(); }
+      document.getElementById('live').textContent = feedback.textContent + ' ' + reveal.textContent;
+      body.dataset.answered = String(results.filter(Boolean).length);
+    });
+  }
+
+  function goToStep(index, jump) {
+    index = Math.max(0, Math.min(lesson.steps.length - 1, index));
+    const step = lesson.steps[index];
+    const sameScene = step.scene === shownScene;
+    state.step = index;
+    useScene(step.scene);
+    Object.assign(state, { yaw: step.yaw, pitch: step.pitch, zoom: step.zoom });
+    state.traced = step.trace || null;
+    document.getElementById('step-title').textContent = `Step ${index + 1} of ${lesson.steps.length}`;
+    setRichText(document.getElementById('step-caption'), step.caption);
+    showQuestion(step, index);
+    const from = state.stage;
+    if (sameScene && !jump && Math.abs(step.stage - from) === 1) goTo(step.stage, true);
+    else { state.stage = from; goTo(step.stage, false); }
+    document.getElementById('live').textContent =
+      `Step ${index + 1} of ${lesson.steps.length}. ${document.getElementById('step-caption').textContent}` +
+      (step.question ? ' Question: ' + step.question.prompt : '');
+  }
 
   // For scripts (and the browser tests): where a world point is drawn now, in client pixels.
   window.viewpipe = {
@@ -594,9 +879,15 @@
   };
 
   readFragment();
-  const first = state.stage;
+  const first = { stage: state.stage, step: state.step };
   state.stage = -1;
-  goTo(first);
-  drawProjected();
+  if (lesson) {
+    buildLesson();
+    shownScene = -1;
+    goToStep(first.step, true);
+  } else {
+    useScene(0);
+    goTo(first.stage);
+  }
   body.dataset.ready = '1';
 })();

@@ -167,6 +167,15 @@ TEST(Cli, CheckAndExitCodes)
             EXPECT_NE(r.err.find("--point: must be three finite numbers"), std::string::npos) << r.err;
         }
 
+    // Lessons are checked as scenes are: one line, the field's path, exit 2.
+    const std::string lesson = writeScene("viewpipe-bad-lesson.json", R"({"title": "t", "steps": [
+        {"scene": ")" + kHouse + R"(", "caption": "c", "question": {"kind": "where", "prompt": "p",
+         "point": [8, 6, 84], "after": 3, "answer": [1, 2, 3]}}]})");
+    r = run("lesson check " + lesson);
+    EXPECT_EQ(r.exitCode, 2);
+    EXPECT_EQ(r.err, lesson + ": steps[0].question.answer: is (1, 2, 3) but the scene gives (0, 0, 0)\n");
+    EXPECT_EQ(run("lesson export " + lesson + " --out /tmp/viewpipe-no-lesson").exitCode, 2);
+
     r = run("check /nonexistent/scene.json");
     EXPECT_EQ(r.exitCode, 2);
     EXPECT_EQ(r.err, "/nonexistent/scene.json: $: cannot read the scene file: No such file or directory\n");

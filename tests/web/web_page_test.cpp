@@ -149,9 +149,14 @@ public:
     }
     void press(const std::string& key, int keyCode)
     {
-        for (const char* type : {"rawKeyDown", "keyUp"})
-            page("Input.dispatchKeyEvent",
-                 {{"type", type}, {"key", key}, {"code", key}, {"windowsVirtualKeyCode", keyCode}});
+        // Enter types a character too: that is what submits a form.
+        const bool enter = key == "Enter";
+        for (const char* type : {enter ? "keyDown" : "rawKeyDown", "keyUp"}) {
+            json event = {{"type", type}, {"key", key}, {"code", key}, {"windowsVirtualKeyCode", keyCode}};
+            if (enter && std::string(type) == "keyDown")
+                event["text"] = "\r";
+            page("Input.dispatchKeyEvent", event);
+        }
     }
     QImage screenshot()
     {
@@ -372,6 +377,64 @@ TEST_F(WebPage, LinksToAMomentTracesAVertexAndTypesetsTheMatrices)
               "T(-PRP) -8 -6 -30 1");
     for (const std::string& problem : browser.problems())
         ADD_FAILURE() << problem;
+}
+
+TEST(LessonPage, QuestionsAreAnsweredCheckedAndRevealed)
+{
+    const fs::path dir = fs::temp_directory_path() / ("viewpipe-web-lesson-" + std::to_string(::getpid()));
+    fs::remove_all(dir);
+    fs::create_directories(dir);
+    {
+        std::ofstream lesson(dir / "lesson.json");
+        lesson << R"({"title": "Two questions",
+          "steps": [
+            {"scene": ")" << kData << R"(/scenes/house.json", "stage": 2, "caption": "After $R$ the VRC axes are the world's.",
+             "question": {"kind": "where", "prompt": "Where is the PRP after $T(-\\mathit{PRP})$?",
+                          "point": [8, 6, 84], "after": 3, "explanation": "It moves by $-\\mathit{PRP}$."}},
+            {"scene": ")" << kData << R"(/scenes/house.json", "stage": 3, "caption": "The shear comes next.",
+             "question": {"kind": "entry", "prompt": "Entry (1, 3) of $SH_{per}$?", "stage": 4, "row": 1, "column": 3}}]})";
+    }
+    const Finished run = viewpipe({"lesson", "export", QString::fromStdString((dir / "lesson.json").string()), "--out",
+                                   QString::fromStdString((dir / "out").string()), "--quiet"});
+    ASSERT_EQ(run.exitCode, 0) << run.output;
+    Browser browser(dir / "profile");
+    browser.page("Page.navigate", {{"url", "file://" + (dir / "out" / "lesson.html").string()}});
+    ASSERT_TRUE(browser.waitFor("document.body.dataset.ready === '1'"));
+    EXPECT_EQ(browser.evaluate("document.getElementById('step-title').textContent"), "Step 1 of 2");
+    // Asking: the caption and the matrices that would give the answer away are hidden.
+    EXPECT_EQ(browser.evaluate("getComputedStyle(document.getElementById('matrices')).visibility"), "hidden");
+    EXPECT_EQ(browser.evaluate("document.querySelectorAll('#step-caption .katex').length"), 1);
+
+    // A wrong answer first (typed into the fields, Enter), then the page says what is right.
+    const auto answer = [&](const std::vector<std::string>& values) {
+        for (std::size_t k = 0; k < values.size(); ++k) {
+            browser.evaluate("document.querySelectorAll('#question input[type=text]')[" + std::to_string(k) + "].focus()");
+            browser.evaluate("document.activeElement.value = ''");
+            browser.page("Input.insertText", {{"text", values[k]}});
+        }
+        browser.press("Enter", 13);
+    };
+    answer({"8", "6", "84"});
+    ASSERT_TRUE(browser.waitFor("document.body.dataset.answered === '1'"));
+    EXPECT_EQ(browser.evaluate("document.querySelector('#question .feedback').textContent"),
+              "Not quite: the answer is (0, 0, 0).");
+    // Revealed: the explanation, the stage the question is about reached by its transition.
+    EXPECT_EQ(browser.evaluate("getComputedStyle(document.getElementById('matrices')).visibility"), "visible");
+    ASSERT_TRUE(browser.waitFor("document.body.dataset.stage === '3' && !document.body.dataset.moving"));
+    answer({"0", "0", "0"});
+    ASSERT_TRUE(browser.waitFor("document.querySelector('#question .feedback').textContent === 'Right.'"));
+
+    // The clicker's key to the next step; an exact fraction is an answer.
+    browser.evaluate("document.activeElement.blur()");
+    browser.press("PageDown", 34);
+    ASSERT_TRUE(browser.waitFor("document.getElementById('step-title').textContent === 'Step 2 of 2'"));
+    answer({"-2/21"});
+    ASSERT_TRUE(browser.waitFor("document.querySelector('#question .feedback').textContent === 'Right.'"));
+    ASSERT_TRUE(browser.waitFor("document.body.dataset.stage === '4' && !document.body.dataset.moving"));
+    EXPECT_NE(browser.evaluate("location.hash").get<std::string>().find("step=2"), std::string::npos);
+    for (const std::string& problem : browser.problems())
+        ADD_FAILURE() << problem;
+    fs::remove_all(dir);
 }
 
 TEST(WebPageSize, AHundredThousandTriangleMeshStaysUnderTenMegabytes)

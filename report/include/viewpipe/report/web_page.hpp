@@ -8,10 +8,12 @@
 // makes no network request and opens from file://. No VTK, no Qt.
 
 #include <filesystem>
+#include <memory>
 #include <optional>
 #include <string>
 #include <vector>
 
+#include "viewpipe/lesson.hpp"
 #include "viewpipe/report/figure.hpp"
 #include "viewpipe/report/style.hpp"
 
@@ -51,9 +53,19 @@ struct WebAssets {
 };
 WebAssets loadWebAssets(const std::filesystem::path& javascript = "/usr/share/javascript");
 
-// The page's data (what the script draws), as JSON.
+// The page's data (what the script draws), as JSON: {"scenes": [the scene's]}.
 std::string webPageData(const EvaluatedScene& scene, const WebPageViews& views);
 // The whole page.
 std::string webPage(const EvaluatedScene& scene, const WebPageViews& views, const WebAssets& assets);
+
+// A lesson's page: its steps with captions and questions (their answers as
+// the lesson computed them), each step showing one of `scenes`
+// (`stepScenes[k]` is step k's index into them).
+struct LessonScene {
+    std::shared_ptr<const EvaluatedScene> scene;
+    WebPageViews views;
+};
+std::string lessonPage(const Lesson& lesson, const std::vector<int>& stepScenes, const std::vector<LessonScene>& scenes,
+                       const WebAssets& assets);
 
 } // namespace viewpipe

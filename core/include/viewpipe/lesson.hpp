@@ -1,0 +1,56 @@
+#pragma once
+
+// Lesson files (JSON, see docs/lesson-format.md): steps through scenes, each
+// a stage with a caption and perhaps a question the student answers before
+// the answer shows. Every answer the scene determines is computed here, so a
+// lesson cannot state a wrong one; an answer the lesson writes anyway must
+// agree. Refusals are InputErrors naming the field ("steps[3].question.answer").
+
+#include <filesystem>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "viewpipe/scene.hpp"
+
+namespace viewpipe {
+
+enum class QuestionKind { Where, Inside, SignW, WhichStage, Order, Entry, Choice };
+const char* questionKindName(QuestionKind kind); // "where", "sign_w", ...
+
+struct Question {
+    QuestionKind kind = QuestionKind::Choice;
+    std::string prompt, explanation;
+    Vec3<double> point = Vec3<double>::Zero(); // where, inside, sign_w
+    int stage = 0;                             // where and sign_w: after it; which_stage, entry: its matrix
+    int row = 0, column = 0;                   // entry, from 1
+    double tolerance = 0.01;                   // where: relative to the answer's size
+    std::vector<std::string> choices;          // choice; which_stage and order: the scene's stage symbols
+    // The answer, as the scene gives it (a choice's: as the lesson names it).
+    Vec3<double> where = Vec3<double>::Zero();
+    bool inside = false;
+    int signW = 0;       // -1, 0 or 1
+    int correct = 0;     // choice, which_stage: the index into `choices`
+    double entry = 0;
+};
+
+struct LessonStep {
+    Scene scene;
+    int stage = 0;
+    double yaw = 0, pitch = 0, zoom = 1;
+    std::string caption;
+    std::optional<Vec3<double>> trace;
+    std::optional<Question> question;
+};
+
+struct Lesson {
+    std::string title;
+    std::vector<LessonStep> steps;
+};
+
+// Scene paths are read relative to baseDir.
+Lesson parseLesson(const std::string& text, const std::filesystem::path& baseDir);
+// Throws InputError("$", ...) when the file cannot be read.
+Lesson loadLesson(const std::filesystem::path& file);
+
+} // namespace viewpipe

@@ -1,0 +1,35 @@
+#pragma once
+
+// Reading JSON with the path of each field in every refusal ("view.vup[2]",
+// "steps[3].question.answer"; "$" is the root): the scene and lesson readers'.
+
+#include <nlohmann/json.hpp>
+
+#include <filesystem>
+#include <set>
+#include <string>
+#include <vector>
+
+#include "viewpipe/error.hpp"
+#include "viewpipe/linalg.hpp"
+
+namespace viewpipe::fields {
+
+using Json = nlohmann::json;
+
+std::string typeName(const Json& j);
+std::string child(const std::string& parent, const std::string& key);
+std::string element(const std::string& parent, std::size_t index);
+// An object with only `allowed` keys and every `required` one.
+void requireObject(const Json& j, const std::string& path, const std::set<std::string>& allowed,
+                   const std::set<std::string>& required);
+double readNumber(const Json& j, const std::string& path); // finite
+std::vector<double> readNumbers(const Json& j, const std::string& path, std::size_t count);
+Vec3<double> readVec3(const Json& j, const std::string& path);
+std::string readString(const Json& j, const std::string& path);
+// A whole file; InputError("$", "cannot read the WHAT file: reason") when it cannot be read.
+std::string readInputFile(const std::filesystem::path& file, const std::string& what);
+// Syntax errors at LINE:COLUMN; a number too large for a double refused with its field path.
+Json parseJson(const std::string& text);
+
+} // namespace viewpipe::fields

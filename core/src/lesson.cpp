@@ -1,0 +1,260 @@
+#include "viewpipe/lesson.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include "json_fields.hpp"
+#include "viewpipe/format.hpp"
+
+namespace viewpipe {
+namespace {
+
+using namespace fields;
+
+constexpr std::size_t kMaxSteps = 200;
+
+const std::pair<QuestionKind, const char*> kKindNames[] = {
+    {QuestionKind::Where, "where"},          {QuestionKind::Inside, "inside"}, {QuestionKind::SignW, "sign_w"},
+    {QuestionKind::WhichStage, "which_stage"}, {QuestionKind::Order, "order"}, {QuestionKind::Entry, "entry"},
+    {QuestionKind::Choice, "choice"}};
+
+double readIn(const Json& j, const std::string& path, double low, double high)
+{
+    const double x = readNumber(j, path);
+    if (x < low || x > high)
+        throw InputError(path, "must lie between " + formatShortest(low) + " and " + formatShortest(high) + " (got " +
+                                   formatShortest(x) + ")");
+    return x;
+}
+
+int readIndex(const Json& j, const std::string& path, int low, int high)
+{
+    if (!j.is_number_integer())
+        throw InputError(path, "must be a whole number (got " + (j.is_number() ? formatShortest(j.get<double>()) : typeName(j)) + ")");
+    const long long k = j.get<long long>();
+    if (k < low || k > high)
+        throw InputError(path, "must lie between " + std::to_string(low) + " and " + std::to_string(high) +
+                                   " (got " + std::to_string(k) + ")");
+    return int(k);
+}
+
+// Inline math between unescaped dollar signs must close.
+std::string readCaption(const Json& j, const std::string& path, bool required)
+{
+    const std::string text = readString(j, path);
+    if (required && text.find_first_not_of(" \t\n") == std::string::npos)
+        throw InputError(path, "is empty");
+    int dollars = 0;
+    for (std::size_t k = 0; k < text.size(); ++k)
+        if (text[k] == '$' && (k == 0 || text[k - 1] != '\\'))
+            ++dollars;
+    if (dollars % 2)
+        throw InputError(path, "has a $ that opens math and none that closes it (write \\$ for a dollar sign)");
+    return text;
+}
+
+std::string vecText(const Vec3<double>& v)
+{
+    return "(" + formatShortest(v.x()) + ", " + formatShortest(v.y()) + ", " + formatShortest(v.z()) + ")";
+}
+
+Scene readStepScene(const Json& j, const std::string& path, const std::filesystem::path& baseDir)
+{
+    if (j.is_string()) {
+        const std::filesystem::path file = baseDir / j.get<std::string>();
+        try {
+            return loadScene(file);
+        } catch (const InputError& e) {
+            throw InputError(path, j.get<std::string>() + ": " + e.what());
+        }
+    }
+    if (!j.is_object())
+        throw InputError(path, "must be a scene file's path or a scene object (got " + typeName(j) + ")");
+    try {
+        Scene scene = parseScene(j.dump(), baseDir);
+        if (scene.name.empty())
+            scene.name = "inline scene";
+        return scene;
+    } catch (const InputError& e) {
+        throw InputError(path + "." + e.field(), e.reason());
+    }
+}
+
+Question readQuestion(const Json& j, const std::string& path, const Pipeline<double>& pipeline)
+{
+    if (!j.is_object())
+        throw InputError(path, "must be an object (got " + typeName(j) + ")");
+    if (!j.contains("kind"))
+        throw InputError(child(path, "kind"), "is missing");
+    const std::string kindName = readString(j["kind"], child(path, "kind"));
+    const auto named = std::find_if(std::begin(kKindNames), std::end(kKindNames),
+                                    [&](const auto& entry) { return kindName == entry.second; });
+    if (named == std::end(kKindNames))
+        throw InputError(child(path, "kind"), "must be one of where, inside, sign_w, which_stage, order, entry, "
+                                              "choice (got \"" + kindName + "\")");
+    Question q;
+    q.kind = named->first;
+    const std::set<std::string> common = {"kind", "prompt", "explanation", "answer"};
+    auto keys = [&](std::set<std::string> own, std::set<std::string> required) {
+        own.insert(common.begin(), common.end());
+        required.insert({"kind", "prompt"});
+        requireObject(j, path, own, required);
+    };
+    const int n = int(pipeline.stages.size());
+    switch (q.kind) {
+    case QuestionKind::Where: keys({"point", "after", "tolerance"}, {"point", "after"}); break;
+    case QuestionKind::Inside: keys({"point"}, {"point"}); break;
+    case QuestionKind::SignW: keys({"point", "after"}, {"point", "after"}); break;
+    case QuestionKind::WhichStage: keys({"stage"}, {"stage"}); break;
+    case QuestionKind::Order: keys({}, {}); break;
+    case QuestionKind::Entry: keys({"stage", "row", "column"}, {"stage", "row", "column"}); break;
+    case QuestionKind::Choice: keys({"choices"}, {"choices", "answer"}); break;
+    }
+    q.prompt = readCaption(j["prompt"], child(path, "prompt"), true);
+    if (j.contains("explanation"))
+        q.explanation = readCaption(j["explanation"], child(path, "explanation"), false);
+    if (j.contains("point"))
+        q.point = readVec3(j["point"], child(path, "point"));
+    if (j.contains("after"))
+        q.stage = readIndex(j["after"], child(path, "after"), 1, n);
+    if (j.contains("stage"))
+        q.stage = readIndex(j["stage"], child(path, "stage"), 1, n);
+    if (j.contains("tolerance"))
+        q.tolerance = readIn(j["tolerance"], child(path, "tolerance"), 1e-9, 1);
+    for (const Stage<double>& stage : pipeline.stages)
+        if (q.kind == QuestionKind::WhichStage || q.kind == QuestionKind::Order)
+            q.choices.push_back(stage.symbol);
+
+    const PointTrace<double> trace = tracePoint(pipeline, q.point);
+    const std::string answerPath = child(path, "answer");
+    const Json* answer = j.contains("answer") ? &j["answer"] : nullptr;
+    switch (q.kind) {
+    case QuestionKind::Where: {
+        const Vec4<double> p = trace.afterStage[std::size_t(q.stage - 1)];
+        if (!(std::abs(p.w()) > 1e-12))
+            throw InputError(child(path, "point"), "has w = 0 after stage " + std::to_string(q.stage) +
+                                                       ": it lands nowhere (at infinity)");
+        q.where = p.head<3>() / p.w();
+        if (answer) {
+            const Vec3<double> written = readVec3(*answer, answerPath);
+            if ((written - q.where).norm() > q.tolerance * std::max(1.0, q.where.norm()))
+                throw InputError(answerPath, "is " + vecText(written) + " but the scene gives " + vecText(q.where));
+        }
+        break;
+    }
+    case QuestionKind::Inside:
+        q.inside = trace.inside;
+        if (answer) {
+            if (!answer->is_boolean())
+                throw InputError(answerPath, "must be true or false (got " + typeName(*answer) + ")");
+            if (answer->get<bool>() != q.inside)
+                throw InputError(answerPath, std::string("is ") + (answer->get<bool>() ? "true" : "false") +
+                                                 " but the point is " + (q.inside ? "inside" : "outside"));
+        }
+        break;
+    case QuestionKind::SignW: {
+        const double w = trace.afterStage[std::size_t(q.stage - 1)].w();
+        q.signW = w > 0 ? 1 : w < 0 ? -1 : 0;
+        if (answer) {
+            const std::string written = readString(*answer, answerPath);
+            const std::string sign = q.signW > 0 ? "positive" : q.signW < 0 ? "negative" : "zero";
+            if (written != "positive" && written != "zero" && written != "negative")
+                throw InputError(answerPath, "must be \"positive\", \"zero\" or \"negative\" (got \"" + written + "\")");
+            if (written != sign)
+                throw InputError(answerPath, "is " + written + " but w is " + formatShortest(w) + " (" + sign + ")");
+        }
+        break;
+    }
+    case QuestionKind::WhichStage:
+        q.correct = q.stage - 1;
+        if (answer && readString(*answer, answerPath) != q.choices[std::size_t(q.correct)])
+            throw InputError(answerPath, "is \"" + answer->get<std::string>() + "\" but stage " +
+                                             std::to_string(q.stage) + " is " + q.choices[std::size_t(q.correct)]);
+        break;
+    case QuestionKind::Order:
+        if (answer)
+            throw InputError(answerPath, "is the scene's order of stages: leave it out");
+        if (n < 2)
+            throw InputError(path, "needs a scene with two stages or more");
+        break;
+    case QuestionKind::Entry: {
+        q.row = readIndex(j["row"], child(path, "row"), 1, 4);
+        q.column = readIndex(j["column"], child(path, "column"), 1, 4);
+        const Stage<double>& stage = pipeline.stages[std::size_t(q.stage - 1)];
+        if (stage.divides)
+            throw InputError(child(path, "stage"), "is the divide, which has no matrix");
+        q.entry = stage.matrix(q.row - 1, q.column - 1);
+        if (answer) {
+            const double written = readNumber(*answer, answerPath);
+            if (std::abs(written - q.entry) > 1e-9 * std::max(1.0, std::abs(q.entry)))
+                throw InputError(answerPath, "is " + formatShortest(written) + " but the entry is " + formatShortest(q.entry));
+        }
+        break;
+    }
+    case QuestionKind::Choice: {
+        const Json& choices = j["choices"];
+        if (!choices.is_array() || choices.size() < 2 || choices.size() > 8)
+            throw InputError(child(path, "choices"), "must be an array of 2 to 8 strings");
+        for (std::size_t k = 0; k < choices.size(); ++k)
+            q.choices.push_back(readCaption(choices[k], element(child(path, "choices"), k), true));
+        q.correct = readIndex(*answer, answerPath, 0, int(choices.size()) - 1);
+        break;
+    }
+    }
+    return q;
+}
+
+LessonStep readStep(const Json& j, const std::string& path, const std::filesystem::path& baseDir)
+{
+    requireObject(j, path, {"scene", "stage", "camera", "caption", "trace", "question"}, {"scene", "caption"});
+    LessonStep step;
+    step.scene = readStepScene(j["scene"], child(path, "scene"), baseDir);
+    const Pipeline<double> pipeline = buildPipeline(step.scene.camera, step.scene.effects);
+    if (j.contains("stage"))
+        step.stage = readIndex(j["stage"], child(path, "stage"), 0, int(pipeline.stages.size()));
+    if (j.contains("camera")) {
+        const std::string at = child(path, "camera");
+        requireObject(j["camera"], at, {"yaw", "pitch", "zoom"}, {});
+        const Json& c = j["camera"];
+        step.yaw = c.contains("yaw") ? readIn(c["yaw"], child(at, "yaw"), -180, 180) : 0;
+        step.pitch = c.contains("pitch") ? readIn(c["pitch"], child(at, "pitch"), -89, 89) : 0;
+        step.zoom = c.contains("zoom") ? readIn(c["zoom"], child(at, "zoom"), 0.1, 20) : 1;
+    }
+    step.caption = readCaption(j["caption"], child(path, "caption"), true);
+    if (j.contains("trace"))
+        step.trace = readVec3(j["trace"], child(path, "trace"));
+    if (j.contains("question"))
+        step.question = readQuestion(j["question"], child(path, "question"), pipeline);
+    return step;
+}
+
+} // namespace
+
+const char* questionKindName(QuestionKind kind)
+{
+    for (const auto& [k, name] : kKindNames)
+        if (k == kind)
+            return name;
+    return "";
+}
+
+Lesson parseLesson(const std::string& text, const std::filesystem::path& baseDir)
+{
+    const Json root = parseJson(text);
+    requireObject(root, "", {"title", "steps"}, {"title", "steps"});
+    Lesson lesson;
+    lesson.title = readCaption(root["title"], "title", true);
+    const Json& steps = root["steps"];
+    if (!steps.is_array() || steps.empty() || steps.size() > kMaxSteps)
+        throw InputError("steps", "must be an array of 1 to " + std::to_string(kMaxSteps) + " steps");
+    for (std::size_t k = 0; k < steps.size(); ++k)
+        lesson.steps.push_back(readStep(steps[k], element("steps", k), baseDir));
+    return lesson;
+}
+
+Lesson loadLesson(const std::filesystem::path& file)
+{
+    return parseLesson(readInputFile(file, "lesson"), file.parent_path());
+}
+
+} // namespace viewpipe

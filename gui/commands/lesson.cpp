@@ -1,0 +1,93 @@
+// `viewpipe lesson check FILE` and `viewpipe lesson export FILE --out DIR --format html`.
+
+#include <filesystem>
+#include <iostream>
+#include <map>
+
+#include "command.hpp"
+#include "drawing_commands.hpp"
+#include "export/Exporter.h"
+#include "export/VirtualDisplay.h"
+#include "viewpipe/lesson.hpp"
+#include "viewpipe/report/web_page.hpp"
+
+namespace viewpipe::commands {
+namespace {
+
+namespace fs = std::filesystem;
+
+struct LessonOptions {
+    std::string file, out, format = "html", size = "1280x720", theme = "light";
+    bool quiet = false;
+};
+
+int runExport(const LessonOptions& options)
+{
+    return guarded(options.file, "viewpipe lesson export", [&] {
+        const Lesson lesson = loadLesson(options.file);
+        if (options.format != "html")
+            throw InputError("--format", "must be html (got \"" + options.format + "\")");
+        const auto [width, height] = parseSize(options.size, "--size");
+        const Theme theme = options.theme == "dark" ? Theme::Dark : Theme::Light;
+        std::error_code error;
+        fs::create_directories(options.out, error);
+        if (error || !fs::is_directory(options.out))
+            throw InputError("--out", "cannot create the folder \"" + options.out + "\": " + error.message());
+
+        const gui::VirtualDisplay display;
+        // Each scene once, however many steps show it.
+        std::map<std::string, int> known;
+        std::vector<int> stepScenes;
+        std::vector<LessonScene> scenes;
+        for (const LessonStep& step : lesson.steps) {
+            const std::string key = sceneToJson(step.scene) + step.scene.file.string();
+            auto found = known.find(key);
+            if (found == known.end()) {
+                const auto evaluated = evaluateScene(step.scene);
+                if (!options.quiet)
+                    std::cerr << "recording " << step.scene.name << "\n";
+                scenes.push_back({evaluated, gui::recordWebViews(evaluated, width, height, theme, [](const std::string&) {})});
+                found = known.emplace(key, int(scenes.size()) - 1).first;
+            }
+            stepScenes.push_back(found->second);
+        }
+        const fs::path page = fs::path(options.out) / "lesson.html";
+        writeFileAtomically(page, lessonPage(lesson, stepScenes, scenes, loadWebAssets()));
+        if (!options.quiet)
+            std::cout << page.string() << "\n";
+        return 0;
+    });
+}
+
+} // namespace
+
+void addLessonCommand(CLI::App& app)
+{
+    CLI::App* lesson = app.add_subcommand("lesson", "Check a lesson file, or export it as a web page");
+    lesson->require_subcommand(1);
+
+    auto file = std::make_shared<std::string>();
+    CLI::App* check = lesson->add_subcommand("check", "Validate a lesson; print nothing and exit 0 if it is valid");
+    check->add_option("FILE", *file, "Lesson file (JSON, docs/lesson-format.md)")->required();
+    setRun(check, [file] {
+        return guarded(*file, "viewpipe: internal error", [&] {
+            for (const LessonStep& step : loadLesson(*file).steps)
+                objectMeshes(step.scene);
+            return 0;
+        });
+    });
+
+    auto options = std::make_shared<LessonOptions>();
+    CLI::App* exportCommand = lesson->add_subcommand("export", "Write the lesson as one web page, lesson.html");
+    exportCommand->add_option("FILE", options->file, "Lesson file (JSON)")->required();
+    exportCommand->add_option("--out", options->out, "Folder for lesson.html (created if missing)")->required();
+    exportCommand->add_option("--format", options->format, "html: one self-contained page")->capture_default_str();
+    exportCommand->add_option("--size", options->size, "The pictures' size WxH, as export's")->capture_default_str();
+    exportCommand->add_option("--theme", options->theme, "light or dark")
+        ->check(CLI::IsMember({"light", "dark"}))
+        ->capture_default_str();
+    exportCommand->add_flag("--quiet", options->quiet, "Print nothing");
+    setRun(exportCommand, [options] { return runExport(*options); });
+}
+
+} // namespace viewpipe::commands
