@@ -29,12 +29,12 @@ double readIn(const Json& j, const std::string& path, double low, double high)
 
 int readIndex(const Json& j, const std::string& path, int low, int high)
 {
-    if (!j.is_number_integer())
-        throw InputError(path, "must be a whole number (got " + (j.is_number() ? formatShortest(j.get<double>()) : typeName(j)) + ")");
-    const long long k = j.get<long long>();
-    if (k < low || k > high)
-        throw InputError(path, "must lie between " + std::to_string(low) + " and " + std::to_string(high) +
-                                   " (got " + std::to_string(k) + ")");
+    const std::string range = "must be a whole number from " + std::to_string(low) + " to " + std::to_string(high);
+    if (!j.is_number())
+        throw InputError(path, range + " (got " + typeName(j) + ")");
+    const double k = j.get<double>(); // 2.0 is 2; 2^64 is out of range, not -1
+    if (!(k >= low && k <= high) || k != std::floor(k))
+        throw InputError(path, range + " (got " + j.dump() + ")");
     return int(k);
 }
 
@@ -135,6 +135,8 @@ Question readQuestion(const Json& j, const std::string& path, const Pipeline<dou
             throw InputError(child(path, "point"), "has w = 0 after stage " + std::to_string(q.stage) +
                                                        ": it lands nowhere (at infinity)");
         q.where = p.head<3>() / p.w();
+        if (!q.where.allFinite())
+            throw InputError(child(path, "point"), "has no finite image after stage " + std::to_string(q.stage));
         if (answer) {
             const Vec3<double> written = readVec3(*answer, answerPath);
             if ((written - q.where).norm() > q.tolerance * std::max(1.0, q.where.norm()))
@@ -143,6 +145,8 @@ Question readQuestion(const Json& j, const std::string& path, const Pipeline<dou
         break;
     }
     case QuestionKind::Inside:
+        if (!trace.clip.allFinite())
+            throw InputError(child(path, "point"), "has no finite clip coordinates");
         q.inside = trace.inside;
         if (answer) {
             if (!answer->is_boolean())
@@ -154,6 +158,8 @@ Question readQuestion(const Json& j, const std::string& path, const Pipeline<dou
         break;
     case QuestionKind::SignW: {
         const double w = trace.afterStage[std::size_t(q.stage - 1)].w();
+        if (!std::isfinite(w))
+            throw InputError(child(path, "point"), "has no finite w after stage " + std::to_string(q.stage));
         q.signW = w > 0 ? 1 : w < 0 ? -1 : 0;
         if (answer) {
             const std::string written = readString(*answer, answerPath);
@@ -243,7 +249,9 @@ Lesson parseLesson(const std::string& text, const std::filesystem::path& baseDir
     const Json root = parseJson(text);
     requireObject(root, "", {"title", "steps"}, {"title", "steps"});
     Lesson lesson;
-    lesson.title = readCaption(root["title"], "title", true);
+    lesson.title = readString(root["title"], "title"); // plain text: a page's title and heading
+    if (lesson.title.find_first_not_of(" \t\n") == std::string::npos)
+        throw InputError("title", "is empty");
     const Json& steps = root["steps"];
     if (!steps.is_array() || steps.empty() || steps.size() > kMaxSteps)
         throw InputError("steps", "must be an array of 1 to " + std::to_string(kMaxSteps) + " steps");

@@ -18,7 +18,9 @@
 #include <QMimeData>
 #include <QProgressDialog>
 #include <QPushButton>
+#include <QResizeEvent>
 #include <QScreen>
+#include <QWindow>
 #include <QScrollArea>
 #include <QScrollBar>
 #include <QSettings>
@@ -206,6 +208,33 @@ void MainWindow::buildDocks()
     auto* right = new QShortcut(QKeySequence(Qt::Key_Right), this);
     connect(left, &QShortcut::activated, this, [this] { goToStage(target_ - 1); });
     connect(right, &QShortcut::activated, this, [this] { goToStage(target_ + 1); });
+    // A presenter's clicker sends Page Down and Page Up; they step anywhere. Space,
+    // Backspace and B would get in the way of typing: only while presenting.
+    for (const auto& [key, step] : {std::pair{Qt::Key_PageDown, 1}, std::pair{Qt::Key_PageUp, -1}}) {
+        auto* shortcut = new QShortcut(QKeySequence(key), this);
+        connect(shortcut, &QShortcut::activated, this, [this, step = step] { goToStage(target_ + step); });
+    }
+    for (const auto& [key, step] : {std::pair{Qt::Key_Space, 1}, std::pair{Qt::Key_Backspace, -1}}) {
+        auto* shortcut = new QShortcut(QKeySequence(key), this);
+        connect(shortcut, &QShortcut::activated, this, [this, step = step] { goToStage(target_ + step); });
+        presentingKeys_.append(shortcut);
+    }
+    auto* black = new QShortcut(QKeySequence(Qt::Key_B), this);
+    connect(black, &QShortcut::activated, this, [this] {
+        blackout_->setGeometry(rect());
+        blackout_->raise();
+        blackout_->setVisible(!blackout_->isVisible());
+    });
+    auto* leave = new QShortcut(QKeySequence(Qt::Key_Escape), this);
+    connect(leave, &QShortcut::activated, this, [this] { setPresenting(false); });
+    presentingKeys_ << black << leave;
+    for (QShortcut* shortcut : presentingKeys_)
+        shortcut->setEnabled(false);
+    blackout_ = new QWidget(this);
+    blackout_->setObjectName("blackout");
+    blackout_->setStyleSheet("background: black");
+    blackout_->setAttribute(Qt::WA_StyledBackground);
+    blackout_->hide();
 
     auto dock = [this](const QString& title, const QString& name, QWidget* content, Qt::DockWidgetArea area) {
         auto* scroll = new QScrollArea;
@@ -361,6 +390,19 @@ void MainWindow::buildMenus()
         themes->addAction(a);
     }
     dark->setChecked(true);
+    view->addSeparator();
+    QAction* present = view->addAction(tr("&Present"), this, [this] { setPresenting(!isPresenting()); },
+                                       QKeySequence(Qt::Key_F5));
+    present->setObjectName("presentAction");
+    // Present mode stays reachable with the menu bar hidden.
+    addAction(present);
+    QMenu* presentOn = view->addMenu(tr("Present &On"));
+    connect(presentOn, &QMenu::aboutToShow, this, [this, presentOn] {
+        presentOn->clear();
+        for (QScreen* screen : QGuiApplication::screens())
+            presentOn->addAction(QString("%1 (%2 x %3)").arg(screen->name()).arg(screen->size().width()).arg(screen->size().height()),
+                                 this, [this, screen] { setPresenting(true, screen); });
+    });
     view->addSeparator();
     view->addAction(tr("&Larger Text"), this, [this] { setFontSize(fontSize_ + 2); }, QKeySequence::ZoomIn);
     view->addAction(tr("&Smaller Text"), this, [this] { setFontSize(fontSize_ - 2); }, QKeySequence::ZoomOut);
@@ -711,6 +753,52 @@ void MainWindow::setTheme(Theme theme)
     applyTheme(theme);
     QSettings().setValue("theme", theme == Theme::Light ? "light" : "dark");
     renderNow();
+}
+
+void MainWindow::setPresenting(bool on, QScreen* screen)
+{
+    if (on == isPresenting())
+        return;
+    if (on) {
+        presentation_ =
+            Presentation{saveState(), saveGeometry(), windowState(), painter_->theme(), fontSize_, QApplication::font()};
+        for (QDockWidget* dock : findChildren<QDockWidget*>())
+            dock->hide();
+        menuBar()->hide();
+        statusBar()->hide();
+        setTheme(Theme::Light); // black on white carries best on a projector
+        setFontSize(std::max(fontSize_ * 3 / 2, 16));
+        if (screen && windowHandle())
+            windowHandle()->setScreen(screen);
+        showFullScreen();
+    } else {
+        const Presentation before = *presentation_;
+        presentation_.reset();
+        blackout_->hide();
+        menuBar()->show();
+        statusBar()->show();
+        setTheme(before.theme);
+        setFontSize(before.fontSize);
+        QApplication::setFont(before.appFont);
+        setWindowState(before.states);
+        restoreGeometry(before.geometry);
+        restoreState(before.docks);
+    }
+    for (QShortcut* shortcut : presentingKeys_)
+        shortcut->setEnabled(on);
+    renderNow();
+}
+
+bool MainWindow::isBlackedOut() const
+{
+    return blackout_->isVisible();
+}
+
+void MainWindow::resizeEvent(QResizeEvent* event)
+{
+    QMainWindow::resizeEvent(event);
+    blackout_->setGeometry(rect());
+    blackout_->raise();
 }
 
 void MainWindow::setFontSize(int points)

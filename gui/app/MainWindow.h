@@ -4,6 +4,7 @@
 // the matrix panel and the parameter panel. Slots forward user intent to the
 // Document or the stepper and re-render; the math is in core.
 
+#include <QFont>
 #include <QMainWindow>
 #include <QPointer>
 
@@ -22,6 +23,8 @@ class QLabel;
 class QListWidget;
 class QMenu;
 class QPushButton;
+class QScreen;
+class QShortcut;
 class QSlider;
 class QVariantAnimation;
 class QVTKOpenGLNativeWidget;
@@ -66,10 +69,10 @@ public:
     // VTK cannot read is refused with its reason and changes nothing.
     bool importMesh(const QString& path);
 
-    // Exports with a progress dialog that can cancel; returns the files written
-    // (none when cancelled or failed, with the reason shown).
     // Writes the scene as one web page; failures are shown, not thrown.
     void exportWebPage(const QString& path);
+    // Exports with a progress dialog that can cancel; returns the files written
+    // (none when cancelled or failed, with the reason shown).
     std::vector<std::filesystem::path> exportStages(const ExportOptions& options);
     // Edit > Copy Matrix as LaTeX: the current stage's matrix (all of them at stage 0).
     void copyMatrixAsLatex();
@@ -85,6 +88,14 @@ public:
     void setPopupsEnabled(bool enabled) { popups_ = enabled; }
     void setTheme(Theme theme);
     void setFontSize(int points);
+    // View > Present (F5): the two views alone, full screen on `screen` (the
+    // window's own by default), with the projector theme (light, text half as
+    // large again). PageDown, Space and Right step on; PageUp, Backspace and
+    // Left step back (a presenter's clicker sends these); B blacks the screen
+    // out and back; Esc or F5 leaves, restoring the window as it was.
+    void setPresenting(bool on, QScreen* screen = nullptr);
+    bool isPresenting() const { return presentation_.has_value(); }
+    bool isBlackedOut() const;
     void setProjectedViewVisible(bool visible);
     // Effects menu: turns an effect on or off (with its parameters) as one
     // undoable edit of the scene's effect list.
@@ -109,6 +120,7 @@ public:
 
 protected:
     void closeEvent(QCloseEvent* event) override;
+    void resizeEvent(QResizeEvent* event) override;
     void dragEnterEvent(QDragEnterEvent* event) override;
     void dropEvent(QDropEvent* event) override;
 
@@ -172,6 +184,17 @@ private:
     std::unique_ptr<StageTransition> transition_;
     std::optional<Vec3<double>> traced_;
     int fontSize_ = 11;
+    // What presenting changed, to be restored.
+    struct Presentation {
+        QByteArray docks, geometry;
+        Qt::WindowStates states;
+        Theme theme;
+        int fontSize;
+        QFont appFont; // the widgets' (before any Larger Text, the system's)
+    };
+    std::optional<Presentation> presentation_;
+    QWidget* blackout_ = nullptr;
+    QList<QShortcut*> presentingKeys_; // active only while presenting
     bool popups_ = true;
     QString lastMessage_;
 };

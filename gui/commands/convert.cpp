@@ -34,9 +34,11 @@ int runConvert(const ConvertOptions& options)
             depth = options.depth == "reversed" ? gl::DepthMode::Reversed : gl::DepthMode::Standard;
         }
         scene.camera = gl::convertCamera(camera, api, handedness, depth);
-        // One suffix, however often converted.
-        const std::size_t earlier = scene.name.find(" (as ");
-        if (earlier != std::string::npos && scene.name.back() == ')')
+        // One suffix, however often converted: an earlier one of ours is replaced.
+        const std::size_t earlier = scene.name.rfind(" (as ");
+        if (earlier != std::string::npos && scene.name.size() > 7 &&
+            scene.name.compare(scene.name.size() - 7, 7, " depth)") == 0 &&
+            scene.name.find("-handed, ", earlier) != std::string::npos)
             scene.name.erase(earlier);
         scene.name += " (as " + gl::apiTitle(api) + ", " + gl::handednessName(handedness) + "-handed, " +
                       gl::depthModeName(depth) + " depth)";

@@ -21,6 +21,29 @@ struct LessonOptions {
     bool quiet = false;
 };
 
+// Each step's scene evaluated (its meshes read), each scene once however many
+// steps show it; a refusal names the step. `stepScenes[k]` is step k's.
+std::vector<std::shared_ptr<const EvaluatedScene>> evaluateSteps(const Lesson& lesson, std::vector<int>& stepScenes)
+{
+    std::map<std::string, int> known;
+    std::vector<std::shared_ptr<const EvaluatedScene>> scenes;
+    for (std::size_t k = 0; k < lesson.steps.size(); ++k) {
+        const Scene& scene = lesson.steps[k].scene;
+        const std::string key = sceneToJson(scene) + scene.file.string();
+        auto found = known.find(key);
+        if (found == known.end()) {
+            try {
+                scenes.push_back(evaluateScene(scene));
+            } catch (const InputError& e) {
+                throw InputError("steps[" + std::to_string(k) + "].scene." + e.field(), e.reason());
+            }
+            found = known.emplace(key, int(scenes.size()) - 1).first;
+        }
+        stepScenes.push_back(found->second);
+    }
+    return scenes;
+}
+
 int runExport(const LessonOptions& options)
 {
     return guarded(options.file, "viewpipe lesson export", [&] {
@@ -29,32 +52,27 @@ int runExport(const LessonOptions& options)
             throw InputError("--format", "must be html (got \"" + options.format + "\")");
         const auto [width, height] = parseSize(options.size, "--size");
         const Theme theme = options.theme == "dark" ? Theme::Dark : Theme::Light;
+        std::vector<int> stepScenes;
+        const auto evaluated = evaluateSteps(lesson, stepScenes);
+        const WebAssets assets = loadWebAssets();
+
+        const gui::VirtualDisplay display;
+        std::vector<LessonScene> scenes;
+        for (const auto& scene : evaluated) {
+            if (!options.quiet)
+                std::cerr << "recording " << scene->scene.name << "\n";
+            scenes.push_back({scene, gui::recordWebViews(scene, width, height, 1, theme, false, [](const std::string&) {})});
+        }
+        // Only now that the page is made: nothing is created for a lesson that fails.
+        const std::string page = lessonPage(lesson, stepScenes, scenes, assets);
         std::error_code error;
         fs::create_directories(options.out, error);
         if (error || !fs::is_directory(options.out))
             throw InputError("--out", "cannot create the folder \"" + options.out + "\": " + error.message());
-
-        const gui::VirtualDisplay display;
-        // Each scene once, however many steps show it.
-        std::map<std::string, int> known;
-        std::vector<int> stepScenes;
-        std::vector<LessonScene> scenes;
-        for (const LessonStep& step : lesson.steps) {
-            const std::string key = sceneToJson(step.scene) + step.scene.file.string();
-            auto found = known.find(key);
-            if (found == known.end()) {
-                const auto evaluated = evaluateScene(step.scene);
-                if (!options.quiet)
-                    std::cerr << "recording " << step.scene.name << "\n";
-                scenes.push_back({evaluated, gui::recordWebViews(evaluated, width, height, theme, [](const std::string&) {})});
-                found = known.emplace(key, int(scenes.size()) - 1).first;
-            }
-            stepScenes.push_back(found->second);
-        }
-        const fs::path page = fs::path(options.out) / "lesson.html";
-        writeFileAtomically(page, lessonPage(lesson, stepScenes, scenes, loadWebAssets()));
+        const fs::path file = fs::path(options.out) / "lesson.html";
+        writeFileAtomically(file, page);
         if (!options.quiet)
-            std::cout << page.string() << "\n";
+            std::cout << file.string() << "\n";
         return 0;
     });
 }
@@ -71,8 +89,8 @@ void addLessonCommand(CLI::App& app)
     check->add_option("FILE", *file, "Lesson file (JSON, docs/lesson-format.md)")->required();
     setRun(check, [file] {
         return guarded(*file, "viewpipe: internal error", [&] {
-            for (const LessonStep& step : loadLesson(*file).steps)
-                objectMeshes(step.scene);
+            std::vector<int> stepScenes;
+            evaluateSteps(loadLesson(*file), stepScenes);
             return 0;
         });
     });

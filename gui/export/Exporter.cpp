@@ -69,12 +69,17 @@ void writeWindowPng(vtkRenderWindow* window, bool transparent, const fs::path& f
 
 namespace {
 
+void validatePictureSize(int width, int height, int scale)
+{
+    if (width < 64 || height < 64 || width > 8192 || height > 8192)
+        throw InputError("--size", "must be WxH with 64 <= W, H <= 8192");
+    if (scale < 1 || scale > 4 || width * scale > 16384 || height * scale > 16384)
+        throw InputError("--scale", "must be 1 to 4, and size times scale at most 16384");
+}
+
 void validate(const ExportOptions& o)
 {
-    if (o.width < 64 || o.height < 64 || o.width > 8192 || o.height > 8192)
-        throw InputError("--size", "must be WxH with 64 <= W, H <= 8192");
-    if (o.scale < 1 || o.scale > 4 || o.width * o.scale > 16384 || o.height * o.scale > 16384)
-        throw InputError("--scale", "must be 1 to 4, and size times scale at most 16384");
+    validatePictureSize(o.width, o.height, o.scale);
     if (o.fps < 1 || o.fps > 120)
         throw InputError("--fps", "must be 1 to 120");
     if (o.digits < 1 || o.digits > 17)
@@ -250,18 +255,49 @@ struct OffscreenPainter {
     std::unique_ptr<ScenePainter> painter;
 };
 
+// Stage k at rest as its picture shows it (the ghost of the stage before,
+// the caption, its framing or the fixed one), rendered; the stage as shown.
+StageShown showStageAtRest(const OffscreenPainter& offscreen, const EvaluatedScene& scene, int k, const std::string& caption,
+                           const std::optional<ScenePainter::Framing>& fixedFraming)
+{
+    const std::vector<Stage<double>>& stages = scene.pipeline.stages;
+    StageShown shown(scene, drawnAt(stages, k), StageTransition::canonicalOpacity(k, stages.size()));
+    shown.ghost = ghostAt(stages, k);
+    ScenePainter& painter = *offscreen.painter;
+    painter.show(shown.cumulative, shown.canonicalOpacity);
+    painter.setGhost(shown.ghost);
+    painter.setCaptions(caption, "");
+    painter.frameOn(fixedFraming ? *fixedFraming : StageTransition::framingAt(painter, stages, k));
+    offscreen.window->Render();
+    return shown;
+}
+
+// With fixed framing: one framing that holds every stage.
+std::optional<ScenePainter::Framing> fixedFramingOf(const ScenePainter& painter, const std::vector<Stage<double>>& stages,
+                                                    bool fixed)
+{
+    if (!fixed)
+        return std::nullopt;
+    std::vector<Mat4<double>> all;
+    for (std::size_t k = 0; k <= stages.size(); ++k)
+        all.push_back(drawnAt(stages, double(k)));
+    return painter.framingOf(all, true);
+}
+
 } // namespace
 
-WebPageViews recordWebViews(const std::shared_ptr<const EvaluatedScene>& evaluated, int width, int height, Theme theme,
-                            const std::function<void(const std::string&)>& step)
+WebPageViews recordWebViews(const std::shared_ptr<const EvaluatedScene>& evaluated, int width, int height, int scale,
+                            Theme theme, bool fixedFraming, const std::function<void(const std::string&)>& step)
 {
-    OffscreenPainter offscreen(evaluated, width, height, 1, theme, false);
+    validatePictureSize(width, height, scale);
+    OffscreenPainter offscreen(evaluated, width, height, scale, theme, false);
     ScenePainter& painter = *offscreen.painter;
     const std::vector<Stage<double>>& stages = evaluated->pipeline.stages;
+    const std::optional<ScenePainter::Framing> framing = fixedFramingOf(painter, stages, fixedFraming);
     const int n = int(stages.size());
     WebPageViews views;
-    views.width = width;
-    views.height = height;
+    views.width = width * scale;
+    views.height = height * scale;
     views.fontSize = painter.figureView().fontSize;
     views.theme = theme;
     for (int k = 0; k <= n; ++k) {
@@ -276,13 +312,7 @@ WebPageViews recordWebViews(const std::shared_ptr<const EvaluatedScene>& evaluat
             views.transitions.push_back(std::move(frames));
         }
         const std::string caption = stageCaption(*evaluated, std::size_t(k), StageText::Heading);
-        StageShown shown(*evaluated, drawnAt(stages, k), StageTransition::canonicalOpacity(k, stages.size()));
-        shown.ghost = ghostAt(stages, k);
-        painter.show(shown.cumulative, shown.canonicalOpacity);
-        painter.setGhost(shown.ghost);
-        painter.setCaptions(caption, "");
-        painter.frameOn(StageTransition::framingAt(painter, stages, k));
-        offscreen.window->Render();
+        const StageShown shown = showStageAtRest(offscreen, *evaluated, k, caption, framing);
         const VectorFigure vector{&shown, painter.figureView(), caption, theme};
         views.stages.push_back({painter.webFrame(), shown.ghost, vector.view.frameReach, flatFigure(vector).labels});
     }
@@ -341,20 +371,9 @@ std::vector<fs::path> exportStages(const std::shared_ptr<const EvaluatedScene>& 
                                    options.transparent);
         vtkRenderWindow* window = offscreen.window;
         ScenePainter& painter = *offscreen.painter;
-        ScenePainter::Framing framing; // with fixedFraming, one that holds every stage
-        if (options.fixedFraming) {
-            std::vector<Mat4<double>> all;
-            for (int k = 0; k <= n; ++k)
-                all.push_back(drawnAt(stages, k));
-            framing = painter.framingOf(all, true);
-        }
-
+        const std::optional<ScenePainter::Framing> framing = fixedFramingOf(painter, stages, options.fixedFraming);
         auto showAt = [&](int k, const std::string& caption) {
-            painter.show(drawnAt(stages, k), StageTransition::canonicalOpacity(k, stages.size()));
-            painter.setGhost(ghostAt(stages, k));
-            painter.setCaptions(caption, "");
-            painter.frameOn(options.fixedFraming ? framing : StageTransition::framingAt(painter, stages, k));
-            window->Render();
+            return showStageAtRest(offscreen, *evaluated, k, caption, framing);
         };
 
         std::vector<std::pair<std::string, std::string>> figures; // file name without extension, caption
@@ -362,9 +381,7 @@ std::vector<fs::path> exportStages(const std::shared_ptr<const EvaluatedScene>& 
             const std::string base = (k < 10 ? "0" : "") + std::to_string(k) + "-" +
                                      (k == 0 ? std::string("world") : slug(stages[std::size_t(k - 1)].symbol));
             const std::string caption = stageCaption(*evaluated, std::size_t(k), StageText::Heading);
-            showAt(k, caption);
-            StageShown shown(*evaluated, drawnAt(stages, k), StageTransition::canonicalOpacity(k, stages.size()));
-            shown.ghost = ghostAt(stages, k);
+            const StageShown shown = showAt(k, caption);
             const VectorFigure vector{&shown, painter.figureView(), caption, options.theme};
             for (const std::string& format : options.formats) {
                 if (format == "html")
@@ -387,8 +404,8 @@ std::vector<fs::path> exportStages(const std::shared_ptr<const EvaluatedScene>& 
         }
 
         if (webPage) {
-            const WebPageViews views = recordWebViews(evaluated, options.width * options.scale,
-                                                      options.height * options.scale, options.theme, step);
+            const WebPageViews views = recordWebViews(evaluated, options.width, options.height, options.scale,
+                                                      options.theme, options.fixedFraming, step);
             step("scene.html");
             writeFileAtomically(temporary / "scene.html", viewpipe::webPage(*evaluated, views, loadWebAssets()));
         }
@@ -410,8 +427,8 @@ std::vector<fs::path> exportStages(const std::shared_ptr<const EvaluatedScene>& 
                 char name[32];
                 std::snprintf(name, sizeof name, "%05d.png", frame++);
                 step("frame " + std::to_string(frame) + " of " + std::to_string(frameCount));
-                if (options.fixedFraming)
-                    painter.frameOn(framing);
+                if (framing)
+                    painter.frameOn(*framing);
                 window->Render();
                 writeWindowPng(window, false, frames / name);
             };

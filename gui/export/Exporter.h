@@ -56,10 +56,11 @@ void exportWebPage(const std::shared_ptr<const EvaluatedScene>& scene, const std
                    const ExportProgress& progress, const std::atomic<bool>& cancel);
 
 // What the web page of a scene draws (report/web_page.hpp): every stage at
-// rest and the app's transitions frame by frame, recorded from an offscreen
-// painter of width x height pixels. `step` hears of each stage.
-WebPageViews recordWebViews(const std::shared_ptr<const EvaluatedScene>& scene, int width, int height, Theme theme,
-                            const std::function<void(const std::string&)>& step);
+// rest as its picture of that size, scale and framing shows it, and the
+// app's transitions frame by frame. Throws InputError for a bad size or
+// scale; `step` hears of each stage.
+WebPageViews recordWebViews(const std::shared_ptr<const EvaluatedScene>& scene, int width, int height, int scale,
+                            Theme theme, bool fixedFraming, const std::function<void(const std::string&)>& step);
 
 // The CAD layout of seed 001 for a scene's objects, as one PNG: the top view
 // above the front view, the (right) side view beside it, and the isometric

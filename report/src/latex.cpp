@@ -140,6 +140,14 @@ std::string stageLatex(const Scene& scene, int stage, int digits)
     return stageEquation(p.stages.at(std::size_t(stage - 1)), digits);
 }
 
+std::string entryLatex(const Scene& scene, int stage, int row, int column, int digits)
+{
+    const Pipeline<Exact> p = exactPipeline(scene);
+    const Exact& x = p.stages.at(std::size_t(stage - 1)).matrix(row - 1, column - 1);
+    std::string cell;
+    return asFraction(x, cell) ? cell : decimal(x, digits);
+}
+
 std::vector<StageLatex> stagesLatex(const Scene& scene, int digits)
 {
     const Pipeline<Exact> p = exactPipeline(scene);

@@ -130,6 +130,17 @@ json legendJson(const std::vector<LegendEntry>& entries, Theme theme)
     return out;
 }
 
+// JSON inside <script>: every "<" written as \u003c, which JSON reads as "<"
+// and after which no text of a lesson ("</script>", "<!--") can end or
+// change the script element.
+std::string scriptJson(const json& data)
+{
+    std::string out;
+    for (char c : data.dump())
+        out += c == '<' ? std::string("\\u003c") : std::string(1, c);
+    return out;
+}
+
 std::string escapeForScript(std::string text)
 {
     // Inside <script>, "</" could end the element: JSON and JavaScript both read "<\/" as "</".
@@ -217,8 +228,8 @@ json sceneData(const EvaluatedScene& scene, const WebPageViews& views)
             entry["symbol"] = stage.symbol;
             entry["matrix"] = matrix(stage.matrix);
             entry["divides"] = stage.divides;
-            entry["latex"] = latex[k - 1].equation;
-            entry["cumulativeLatex"] = latex[k - 1].cumulative;
+            entry["latex"] = latex.at(k - 1).equation;
+            entry["cumulativeLatex"] = latex.at(k - 1).cumulative;
             const SymbolicForm symbolic = symbolicMatrix(stage.symbol);
             if (!symbolic.cells[0].empty())
                 entry["symbolic"] = {{"cells", symbolic.cells}, {"notes", symbolic.notes}};
@@ -312,7 +323,7 @@ std::string page(const std::string& title, const json& data, const WebAssets& as
     return fill(web::kPageHtml, {{"title", escaped},
                                  {"katex-css", assets.katexCss},
                                  {"page-css", web::kPageCss},
-                                 {"data", escapeForScript(data.dump())},
+                                 {"data", scriptJson(data)},
                                  {"three", escapeForScript(assets.three)},
                                  {"katex", escapeForScript(assets.katex)},
                                  {"page-js", escapeForScript(web::kPageJs)}});
@@ -322,7 +333,7 @@ std::string page(const std::string& title, const json& data, const WebAssets& as
 
 std::string webPageData(const EvaluatedScene& scene, const WebPageViews& views)
 {
-    return json{{"scenes", {sceneData(scene, views)}}}.dump();
+    return scriptJson({{"scenes", {sceneData(scene, views)}}});
 }
 
 std::string webPage(const EvaluatedScene& scene, const WebPageViews& views, const WebAssets& assets)
@@ -340,8 +351,12 @@ std::string lessonPage(const Lesson& lesson, const std::vector<int>& stepScenes,
                       {"pitch", step.pitch},       {"zoom", step.zoom},   {"caption", step.caption}};
         if (step.trace)
             entry["trace"] = vec(*step.trace);
-        if (step.question)
+        if (step.question) {
             entry["question"] = questionData(*step.question);
+            if (step.question->kind == QuestionKind::Entry)
+                entry["question"]["exact"] =
+                    cli::entryLatex(step.scene, step.question->stage, step.question->row, step.question->column, 6);
+        }
         steps.push_back(entry);
     }
     json sceneList = json::array();

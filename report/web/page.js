@@ -153,8 +153,9 @@
   }
   function writeFragment() {
     const values = new URLSearchParams();
+    // A lesson's moment is its step (its stage would name a which_stage answer).
     if (lesson) values.set('step', state.step + 1);
-    values.set('stage', state.stage);
+    else values.set('stage', state.stage);
     if (state.yaw) values.set('yaw', state.yaw.toFixed(1));
     if (state.pitch) values.set('pitch', state.pitch.toFixed(1));
     if (state.zoom !== 1) values.set('zoom', state.zoom.toFixed(3));
@@ -384,7 +385,10 @@
   }
   function showTrace() {
     const element = document.getElementById('trace');
-    if (!state.traced) return;
+    if (!state.traced) {
+      element.innerHTML = '<p>Click a vertex of an object (or press T) to trace it through the stages.</p>';
+      return;
+    }
     const table = document.createElement('table');
     table.innerHTML = '<caption>The traced vertex after each stage</caption><tr><th>stage</th><th>x</th><th>y</th><th>z</th><th>w</th></tr>';
     let p = new THREE.Vector4(...state.traced, 1);
@@ -438,7 +442,11 @@
   }
 
   function showRest(k) {
-    if (frameAxes) worldScene.remove(frameAxes);
+    if (frameAxes) {
+      worldScene.remove(frameAxes);
+      frameAxes.geometry.dispose();
+      frameAxes.material.dispose();
+    }
     const stage = stages[k];
     const axes = { surface: false, positions: stage.frame, color: data.frameColor };
     frameAxes = drawable(geometryOf(axes), axes, 1, 2 * data.primitives.length + 1);
@@ -641,6 +649,8 @@
   }
 
   const results = []; // one entry per question answered: {step, kind, answer, correct}
+  // Text for a screen reader: the math's source without its dollar signs and backslashes.
+  const spoken = (text) => text.replace(/(?<!\\)\$/g, '').replace(/\\(mathit|mathrm|text)\{([^}]*)\}/g, '$2').replace(/\\/g, '');
   function buildLesson() {
     document.getElementById('title').textContent = lesson.title;
     document.getElementById('lesson').hidden = false;
@@ -650,7 +660,7 @@
       '+ − zoom, 0 resets the view; answer a question, then Check (Enter).';
     document.querySelector('#stepper .buttons #play').hidden = true;
     document.getElementById('save').addEventListener('click', () => {
-      const blob = new Blob([JSON.stringify({ lesson: lesson.title, answers: results }, null, 2)],
+      const blob = new Blob([JSON.stringify({ lesson: lesson.title, answers: results.filter(Boolean) }, null, 2)],
                             { type: 'application/json' });
       const link = document.createElement('a');
       link.href = URL.createObjectURL(blob);
@@ -660,12 +670,12 @@
     });
   }
 
-  function numberTyped(text) {
+  function numberTyped(typed) {
+    const text = typed.replace(/\u2212/g, '-'); // the minus sign the typeset math shows
     const fraction = /^\s*([+-]?\d+(?:\.\d*)?)\s*\/\s*([+-]?\d+(?:\.\d*)?)\s*$/.exec(text);
     if (fraction) return Number(fraction[1]) / Number(fraction[2]);
     return text.trim() === '' ? NaN : Number(text);
   }
-  const near = (x, a, tolerance) => Math.abs(x - a) <= tolerance * Math.max(1, Math.abs(a));
   const signName = (s) => (s > 0 ? 'positive' : s < 0 ? 'negative' : 'zero');
   function matrixLatex(rows) {
     let latex = '\\begin{bmatrix}';
@@ -685,6 +695,15 @@
     prompt.className = 'prompt';
     setRichText(prompt, question.prompt);
     box.appendChild(prompt);
+    // Which stage the question is about, where naming it gives nothing away.
+    if (question.stage && question.kind !== 'which_stage') {
+      const about = document.createElement('p');
+      about.className = 'about';
+      const symbol = data.stages[question.stage].symbol;
+      about.textContent = question.kind === 'entry' ? `The matrix of stage ${question.stage}, ${symbol}.`
+                                                    : `After stage ${question.stage}, ${symbol}.`;
+      box.appendChild(about);
+    }
     const form = document.createElement('form');
     box.appendChild(form);
     const feedback = document.createElement('p');
@@ -749,8 +768,15 @@
         const shownMatrix = document.createElement('div');
         typeset(shownMatrix, matrixLatex(data.stages[question.stage].matrix));
         form.appendChild(shownMatrix);
-        const chosen = picks(question.choices);
-        read = () => (chosen() === null ? null : [question.choices[chosen()], chosen() === question.answer]);
+        // Offered in alphabetical order: the pipeline's order would give the answer's place away.
+        const shownOrder = question.choices.map((_, k) => k)
+          .sort((a, b) => question.choices[a].localeCompare(question.choices[b]));
+        const chosen = picks(shownOrder.map((k) => question.choices[k]));
+        read = () => {
+          if (chosen() === null) return null;
+          const k = shownOrder[chosen()];
+          return [question.choices[k], k === question.answer];
+        };
         answerText = question.choices[question.answer];
         break;
       }
@@ -769,15 +795,15 @@
         const field = input(`entry (${question.row}, ${question.column})`);
         read = () => {
           const x = numberTyped(field.value);
-          return Number.isFinite(x) ? [x, near(x, question.answer, 1e-3)] : null;
+          return Number.isFinite(x) ? [x, Math.abs(x - question.answer) <= 5e-3 * Math.abs(question.answer) + 1e-9] : null;
         };
-        answerText = format(question.answer);
+        answerText = question.exact ? `$${question.exact}$ (${format(question.answer)})` : format(question.answer);
         break;
       }
       case 'order': {
         // The stages shuffled the same way every time (a fixed rotation and reversal), moved with buttons.
         const order = question.choices.map((_, k) => k).reverse();
-        order.push(order.shift());
+        if (order.length > 2) order.push(order.shift()); // reversed alone would be solved by one look
         const listOf = document.createElement('ol');
         listOf.className = 'order';
         const draw = () => {
@@ -825,15 +851,17 @@
         return;
       }
       const [answer, correct] = outcome;
+      // One answer a question: the first, which the revealed answer cannot change.
       results[index] = { step: index + 1, kind: question.kind, answer, correct };
-      feedback.textContent = correct ? 'Right.' : `Not quite: the answer is ${answerText}.`;
+      form.querySelectorAll('input, button').forEach((control) => { control.disabled = true; });
+      setRichText(feedback, correct ? 'Right.' : `Not quite: the answer is ${answerText}.`);
       feedback.className = 'feedback ' + (correct ? 'right' : 'wrong');
       // Revealed: the answer, why, and the stage it is about.
       body.classList.remove('asking');
       reveal.hidden = false;
       reveal.textContent = '';
       const said = document.createElement('p');
-      said.textContent = `Answer: ${answerText}.`;
+      setRichText(said, `Answer: ${answerText}.`);
       reveal.appendChild(said);
       if (question.explanation) {
         const why = document.createElement('p');
@@ -841,9 +869,11 @@
         reveal.appendChild(why);
       }
       if (question.point) state.traced = question.point;
-      if (question.stage && question.stage !== state.stage) goTo(question.stage, true);
+      const revealed = question.stage ? Math.max(lesson.steps[index].stage, question.stage) : state.stage;
+      if (revealed !== state.stage) goTo(revealed, true);
       else { showPanels(); drawWorld(); }
-      document.getElementById('live').textContent = feedback.textContent + ' ' + reveal.textContent;
+      document.getElementById('live').textContent = spoken(correct ? 'Right.' : `Not quite: the answer is ${answerText}.`) +
+        (question.explanation ? ' ' + spoken(question.explanation) : '');
       body.dataset.answered = String(results.filter(Boolean).length);
     });
   }
@@ -859,12 +889,16 @@
     document.getElementById('step-title').textContent = `Step ${index + 1} of ${lesson.steps.length}`;
     setRichText(document.getElementById('step-caption'), step.caption);
     showQuestion(step, index);
+    // Asking about stage K, the view waits before it: the answer comes with K's transition.
+    const question = step.question;
+    const shownStage = question && question.stage && question.kind !== 'entry'
+      ? Math.min(step.stage, question.stage - 1) : step.stage;
     const from = state.stage;
-    if (sameScene && !jump && Math.abs(step.stage - from) === 1) goTo(step.stage, true);
-    else { state.stage = from; goTo(step.stage, false); }
+    if (sameScene && !jump && Math.abs(shownStage - from) === 1) goTo(shownStage, true);
+    else goTo(shownStage, false);
     document.getElementById('live').textContent =
-      `Step ${index + 1} of ${lesson.steps.length}. ${document.getElementById('step-caption').textContent}` +
-      (step.question ? ' Question: ' + step.question.prompt : '');
+      `Step ${index + 1} of ${lesson.steps.length}. ${spoken(step.caption)}` +
+      (step.question ? ' Question: ' + spoken(step.question.prompt) : '');
   }
 
   // For scripts (and the browser tests): where a world point is drawn now, in client pixels.

@@ -60,14 +60,20 @@ TEST(Lesson, BadLessonsAreRefusedWithTheirFieldPaths)
             "steps[0].question.answer", "is (0, 0, -1) but the scene gives (0, 0, 0)");
     refused(houseStep(R"({"kind": "guess", "prompt": "p"})"), "steps[0].question.kind", "\"guess\"");
     refused(houseStep(R"({"kind": "where", "prompt": "p", "point": [8, 6, 84], "after": 6})"),
-            "steps[0].question.after", "between 1 and 5");
+            "steps[0].question.after", "a whole number from 1 to 5 (got 6)");
     refused(houseStep(R"({"kind": "choice", "prompt": "p", "choices": ["a", "b"]})"), "steps[0].question.answer",
             "is missing");
     refused(houseStep(R"({"kind": "choice", "prompt": "p", "choices": ["a", "b"], "answer": 2})"),
-            "steps[0].question.answer", "between 0 and 1");
+            "steps[0].question.answer", "from 0 to 1");
     refused(houseStep(R"({"kind": "sign_w", "prompt": "p", "point": [0, 0, 0], "after": 1, "answer": "negative"})"),
             "steps[0].question.answer", "is negative but w is 1 (positive)");
-    refused(R"({"scene": "house.json", "stage": 9, "caption": "c"})", "steps[0].stage", "between 0 and 5");
+    refused(R"({"scene": "house.json", "stage": 9, "caption": "c"})", "steps[0].stage", "from 0 to 5 (got 9)");
+    refused(R"({"scene": "house.json", "stage": 18446744073709551615, "caption": "c"})", "steps[0].stage",
+            "(got 18446744073709551615)");
+    EXPECT_EQ(lessonWith(R"({"scene": "house.json", "stage": 2.0, "caption": "c"})").steps[0].stage, 2);
+    // A point whose image overflows has no answer: refused, not answered with NaN.
+    refused(houseStep(R"({"kind": "where", "prompt": "p", "point": [1.7e308, 0, -1.7e308], "after": 4})"),
+            "steps[0].question.point", "no finite image");
     refused(R"({"scene": "house.json", "caption": "costs $5"})", "steps[0].caption", "$");
     refused(R"({"scene": "nope.json", "caption": "c"})", "steps[0].scene", "nope.json: $: cannot read the scene file");
     refused(R"({"scene": {"view": {"projection": "perspective", "vrp": [0, 0, 0], "vpn": [0, 0, 1], "vup": [0, 0, 1],

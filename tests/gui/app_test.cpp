@@ -3,7 +3,9 @@
 
 #include <QApplication>
 #include <QClipboard>
+#include <QDockWidget>
 #include <QFileDialog>
+#include <QMenuBar>
 #include <QProgressDialog>
 #include <QTableWidget>
 #include <QTimer>
@@ -346,6 +348,55 @@ private slots:
         QVERIFY(html.contains("<title>Foley's house · ViewPipe</title>"));
         QVERIFY(html.contains("\"transitions\""));
         QCOMPARE(QDir(dir.filePath("lecture")).entryList(QDir::Files | QDir::Hidden).size(), 1); // nothing left beside it
+    }
+
+    void presentsFullScreenWithAClickersKeys()
+    {
+        MainWindow& w = *window_;
+        w.goToStage(0, false);
+        const int fontBefore = QApplication::font().pointSize();
+        const Theme themeBefore = w.painter()->theme();
+        QTest::keyClick(&w, Qt::Key_F5);
+        QVERIFY(w.isPresenting());
+        QTRY_VERIFY(w.isFullScreen());
+        QVERIFY(!w.menuBar()->isVisible());
+        for (QDockWidget* dock : w.findChildren<QDockWidget*>())
+            QVERIFY2(!dock->isVisible(), qPrintable(dock->objectName()));
+        QCOMPARE(w.painter()->theme(), Theme::Light);
+        QVERIFY(QApplication::font().pointSize() >= std::max(16, fontBefore));
+        // The world view fills the screen and its caption fits in it.
+        auto* world = w.findChild<QVTKOpenGLNativeWidget*>("worldView");
+        QTRY_VERIFY(world->width() > w.width() / 2);
+
+        // The clicker: Page Down and Space on, Page Up and Backspace back, through the transitions.
+        QTest::keyClick(&w, Qt::Key_PageDown);
+        QTRY_VERIFY(!w.isAnimating() && w.stage() == 1);
+        QTest::keyClick(&w, Qt::Key_Space);
+        QTRY_VERIFY(!w.isAnimating() && w.stage() == 2);
+        QTest::keyClick(&w, Qt::Key_Backspace);
+        QTRY_VERIFY(!w.isAnimating() && w.stage() == 1);
+        QTest::keyClick(&w, Qt::Key_PageUp);
+        QTRY_VERIFY(!w.isAnimating() && w.stage() == 0);
+        QVERIFY(w.painter()->worldCaption().find("World") != std::string::npos);
+
+        // B blacks the screen out and back.
+        QTest::keyClick(&w, Qt::Key_B);
+        QVERIFY(w.isBlackedOut());
+        QVERIFY(w.findChild<QWidget*>("blackout")->geometry().contains(world->geometry()));
+        QTest::keyClick(&w, Qt::Key_B);
+        QVERIFY(!w.isBlackedOut());
+
+        // Esc leaves, as the window was.
+        QTest::keyClick(&w, Qt::Key_Escape);
+        QVERIFY(!w.isPresenting());
+        QTRY_VERIFY(!w.isFullScreen());
+        QVERIFY(w.menuBar()->isVisible());
+        QTRY_VERIFY(w.findChild<QDockWidget*>("stagesDock")->isVisible());
+        QCOMPARE(QApplication::font().pointSize(), fontBefore);
+        QCOMPARE(w.painter()->theme(), themeBefore);
+        // Outside present mode B and Space are the keys they always were.
+        QTest::keyClick(&w, Qt::Key_B);
+        QVERIFY(!w.isBlackedOut());
     }
 
     void accuracyPanelMeasuresInTheBackground()

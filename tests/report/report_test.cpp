@@ -94,6 +94,14 @@ TEST(Latex, HouseStagesAreExact)
 }
 
 // cos 45 degrees is irrational: a decimal with the digits asked for.
+TEST(Latex, OneEntryIsExactWhereItIsAFraction)
+{
+    // Foley's SH_per for the house: shx = -DOPx/DOPz = -8/84 = -2/21.
+    const Scene house = loadScene(kScenes / "house.json");
+    EXPECT_EQ(cli::entryLatex(house, 4, 1, 3, 6), "-\\frac{2}{21}");
+    EXPECT_EQ(cli::entryLatex(house, 4, 1, 1, 6), "1");
+}
+
 TEST(Latex, IrrationalEntriesAreDecimals)
 {
     const Scene oblique = sceneFrom(R"({"view": {"projection": "parallel", "vrp": [0, 0, 0], "vpn": [1, 0, 1],

@@ -50,9 +50,10 @@ Finished viewpipe(const QStringList& arguments)
     QProcess process;
     process.setProcessChannelMode(QProcess::MergedChannels);
     process.start(VIEWPIPE_EXE, arguments);
-    process.waitForFinished(600000);
-    return {process.exitStatus() == QProcess::NormalExit ? process.exitCode() : -1,
-            process.readAll().toStdString()};
+    const bool finished = process.waitForFinished(600000);
+    const bool ran = finished && process.error() == QProcess::UnknownError && process.exitStatus() == QProcess::NormalExit;
+    return {ran ? process.exitCode() : -1, process.readAll().toStdString() + (ran ? "" : "\n(did not run to its end: " +
+                                                                               process.errorString().toStdString() + ")")};
 }
 
 // A headless Chromium and one page in it.
@@ -71,6 +72,14 @@ public:
         out_ = toBrowser[1];
         ::fcntl(in_, F_SETFD, FD_CLOEXEC);
         ::fcntl(out_, F_SETFD, FD_CLOEXEC);
+        if (read < 0 || write < 0) {
+            closeAll({read, write});
+            throw std::runtime_error("cannot move the pipes out of the way");
+        }
+        posix_spawnattr_t attributes; // its own process group: the renderers end with it
+        posix_spawnattr_init(&attributes);
+        posix_spawnattr_setflags(&attributes, POSIX_SPAWN_SETPGROUP);
+        posix_spawnattr_setpgroup(&attributes, 0);
         posix_spawn_file_actions_t actions;
         posix_spawn_file_actions_init(&actions);
         posix_spawn_file_actions_adddup2(&actions, read, 3);
@@ -86,36 +95,31 @@ public:
         for (std::string& a : arguments)
             argv.push_back(a.data());
         argv.push_back(nullptr);
-        const int status = ::posix_spawnp(&pid_, "chromium", &actions, nullptr, argv.data(), environ);
+        const int status = ::posix_spawnp(&pid_, "chromium", &actions, &attributes, argv.data(), environ);
         posix_spawn_file_actions_destroy(&actions);
-        ::close(read);
-        ::close(write);
-        if (status != 0)
+        posix_spawnattr_destroy(&attributes);
+        closeAll({read, write});
+        if (status != 0) {
+            closeAll({in_, out_});
             throw std::runtime_error("cannot start chromium (Debian package chromium)");
-        const json targets = call("Target.getTargets");
-        for (const json& t : targets["targetInfos"])
-            if (t["type"] == "page")
-                session_ = call("Target.attachToTarget", {{"targetId", t["targetId"]}, {"flatten", true}})["sessionId"];
-        if (session_.empty())
-            throw std::runtime_error("chromium has no page");
-        for (const char* domain : {"Runtime.enable", "Log.enable", "Page.enable", "Network.enable"})
-            call(domain, json::object(), session_);
-        call("Emulation.setDeviceMetricsOverride",
-             {{"width", kWidth}, {"height", kHeight}, {"deviceScaleFactor", 1}, {"mobile", false}}, session_);
-    }
-    ~Browser()
-    {
-        try {
-            send("Browser.close", json::object(), "");
-        } catch (...) {
         }
-        for (int k = 0; k < 50 && ::waitpid(pid_, nullptr, WNOHANG) == 0; ++k)
-            std::this_thread::sleep_for(std::chrono::milliseconds(100));
-        ::kill(pid_, SIGKILL);
-        ::waitpid(pid_, nullptr, 0);
-        ::close(in_);
-        ::close(out_);
+        try {
+            const json targets = call("Target.getTargets");
+            for (const json& t : targets["targetInfos"])
+                if (t["type"] == "page")
+                    session_ = call("Target.attachToTarget", {{"targetId", t["targetId"]}, {"flatten", true}})["sessionId"];
+            if (session_.empty())
+                throw std::runtime_error("chromium has no page");
+            for (const char* domain : {"Runtime.enable", "Log.enable", "Page.enable", "Network.enable"})
+                call(domain, json::object(), session_);
+            call("Emulation.setDeviceMetricsOverride",
+                 {{"width", kWidth}, {"height", kHeight}, {"deviceScaleFactor", 1}, {"mobile", false}}, session_);
+        } catch (...) {
+            stop();
+            throw;
+        }
     }
+    ~Browser() { stop(); }
 
     json call(const std::string& method, const json& params = json::object(), const std::string& session = "")
     {
@@ -189,6 +193,31 @@ public:
     std::vector<json> events;
 
 private:
+    static void closeAll(std::initializer_list<int> fds)
+    {
+        for (int fd : fds)
+            if (fd >= 0)
+                ::close(fd);
+    }
+    // Asks the browser to close, then ends its whole process group; reaps it once.
+    void stop()
+    {
+        try {
+            send("Browser.close", json::object(), "");
+        } catch (...) {
+        }
+        bool reaped = false;
+        for (int k = 0; k < 50 && !reaped; ++k) {
+            reaped = ::waitpid(pid_, nullptr, WNOHANG) == pid_;
+            if (!reaped)
+                std::this_thread::sleep_for(std::chrono::milliseconds(100));
+        }
+        ::kill(-pid_, SIGKILL); // the group: renderers and the GPU process too
+        if (!reaped)
+            ::waitpid(pid_, nullptr, 0);
+        closeAll({in_, out_});
+    }
+
     int send(const std::string& method, const json& params, const std::string& session)
     {
         json message = {{"id", ++id_}, {"method", method}, {"params", params}};
@@ -397,44 +426,49 @@ TEST(LessonPage, QuestionsAreAnsweredCheckedAndRevealed)
     const Finished run = viewpipe({"lesson", "export", QString::fromStdString((dir / "lesson.json").string()), "--out",
                                    QString::fromStdString((dir / "out").string()), "--quiet"});
     ASSERT_EQ(run.exitCode, 0) << run.output;
-    Browser browser(dir / "profile");
-    browser.page("Page.navigate", {{"url", "file://" + (dir / "out" / "lesson.html").string()}});
-    ASSERT_TRUE(browser.waitFor("document.body.dataset.ready === '1'"));
-    EXPECT_EQ(browser.evaluate("document.getElementById('step-title').textContent"), "Step 1 of 2");
-    // Asking: the caption and the matrices that would give the answer away are hidden.
-    EXPECT_EQ(browser.evaluate("getComputedStyle(document.getElementById('matrices')).visibility"), "hidden");
-    EXPECT_EQ(browser.evaluate("document.querySelectorAll('#step-caption .katex').length"), 1);
+    {
+        Browser browser(dir / "profile");
+        browser.page("Page.navigate", {{"url", "file://" + (dir / "out" / "lesson.html").string()}});
+        ASSERT_TRUE(browser.waitFor("document.body.dataset.ready === '1'"));
+        EXPECT_EQ(browser.evaluate("document.getElementById('step-title').textContent"), "Step 1 of 2");
+        // Asking: the caption and the matrices that would give the answer away are hidden.
+        EXPECT_EQ(browser.evaluate("getComputedStyle(document.getElementById('matrices')).visibility"), "hidden");
+        EXPECT_EQ(browser.evaluate("document.querySelectorAll('#step-caption .katex').length"), 1);
 
-    // A wrong answer first (typed into the fields, Enter), then the page says what is right.
-    const auto answer = [&](const std::vector<std::string>& values) {
-        for (std::size_t k = 0; k < values.size(); ++k) {
-            browser.evaluate("document.querySelectorAll('#question input[type=text]')[" + std::to_string(k) + "].focus()");
-            browser.evaluate("document.activeElement.value = ''");
-            browser.page("Input.insertText", {{"text", values[k]}});
-        }
-        browser.press("Enter", 13);
-    };
-    answer({"8", "6", "84"});
-    ASSERT_TRUE(browser.waitFor("document.body.dataset.answered === '1'"));
-    EXPECT_EQ(browser.evaluate("document.querySelector('#question .feedback').textContent"),
-              "Not quite: the answer is (0, 0, 0).");
-    // Revealed: the explanation, the stage the question is about reached by its transition.
-    EXPECT_EQ(browser.evaluate("getComputedStyle(document.getElementById('matrices')).visibility"), "visible");
-    ASSERT_TRUE(browser.waitFor("document.body.dataset.stage === '3' && !document.body.dataset.moving"));
-    answer({"0", "0", "0"});
-    ASSERT_TRUE(browser.waitFor("document.querySelector('#question .feedback').textContent === 'Right.'"));
+        // A wrong answer first (typed into the fields, Enter), then the page says what is right.
+        const auto answer = [&](const std::vector<std::string>& values) {
+            for (std::size_t k = 0; k < values.size(); ++k) {
+                browser.evaluate("document.querySelectorAll('#question input[type=text]')[" + std::to_string(k) + "].focus()");
+                browser.evaluate("document.activeElement.value = ''");
+                browser.page("Input.insertText", {{"text", values[k]}});
+            }
+            browser.press("Enter", 13);
+        };
+        answer({"8", "6", "84"});
+        ASSERT_TRUE(browser.waitFor("document.body.dataset.answered === '1'"));
+        EXPECT_EQ(browser.evaluate("document.querySelector('#question .feedback').textContent"),
+                  "Not quite: the answer is (0, 0, 0).");
+        // Revealed: the explanation, the stage the question is about reached by its transition.
+        EXPECT_EQ(browser.evaluate("getComputedStyle(document.getElementById('matrices')).visibility"), "visible");
+        ASSERT_TRUE(browser.waitFor("document.body.dataset.stage === '3' && !document.body.dataset.moving"));
+        // One answer a question: once revealed, the form is closed.
+        EXPECT_EQ(browser.evaluate("[...document.querySelectorAll('#question input')].every(i => i.disabled)"), true);
 
-    // The clicker's key to the next step; an exact fraction is an answer.
-    browser.evaluate("document.activeElement.blur()");
-    browser.press("PageDown", 34);
-    ASSERT_TRUE(browser.waitFor("document.getElementById('step-title').textContent === 'Step 2 of 2'"));
-    answer({"-2/21"});
-    ASSERT_TRUE(browser.waitFor("document.querySelector('#question .feedback').textContent === 'Right.'"));
-    ASSERT_TRUE(browser.waitFor("document.body.dataset.stage === '4' && !document.body.dataset.moving"));
-    EXPECT_NE(browser.evaluate("location.hash").get<std::string>().find("step=2"), std::string::npos);
-    for (const std::string& problem : browser.problems())
-        ADD_FAILURE() << problem;
-    fs::remove_all(dir);
+        // The clicker's key to the next step; an exact fraction is an answer.
+        browser.evaluate("document.activeElement.blur()");
+        browser.press("PageDown", 34);
+        ASSERT_TRUE(browser.waitFor("document.getElementById('step-title').textContent === 'Step 2 of 2'"));
+        answer({"-2/21"});
+        ASSERT_TRUE(browser.waitFor("document.querySelector('#question .feedback').textContent === 'Right.'"));
+        ASSERT_TRUE(browser.waitFor("document.body.dataset.stage === '4' && !document.body.dataset.moving"));
+        const std::string hash = browser.evaluate("location.hash");
+        EXPECT_NE(hash.find("step=2"), std::string::npos);
+        EXPECT_EQ(hash.find("stage="), std::string::npos) << "the stage would name which_stage answers";
+        for (const std::string& problem : browser.problems())
+            ADD_FAILURE() << problem;
+    } // the browser ends before its profile is removed
+    std::error_code ignored;
+    fs::remove_all(dir, ignored);
 }
 
 TEST(WebPageSize, AHundredThousandTriangleMeshStaysUnderTenMegabytes)
