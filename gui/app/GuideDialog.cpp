@@ -41,8 +41,11 @@ hides it.</p>
 <p>The <b>Stages</b> panel lists the matrices in order; stage 0 is the world.
 Choosing a stage applies every matrix up to it to everything in the world view,
 so you watch the scene and the set-up move together. <b>Left</b> and
-<b>Right</b> (or Previous and Next) step back and forth, <b>Play</b> runs
-through all stages and <b>Stop</b> halts. The caption says which matrix was
+<b>Right</b> (or Previous and Next, or <b>Page Up</b> and <b>Page Down</b>)
+step back and forth, <b>Play</b> runs through all stages and <b>Stop</b> halts.
+<b>F5</b> presents: the two views alone, full screen, in large black on white;
+a presenter's clicker steps, <b>B</b> blacks the screen out and <b>Esc</b>
+leaves. The caption says which matrix was
 applied last. After the last stage the canonical view volume appears: the
 normalized volume every later step (clipping, projection) works in.
 A matrix that makes w vary (the perspective ones) is followed by the divide

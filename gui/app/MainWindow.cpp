@@ -770,6 +770,9 @@ void MainWindow::setPresenting(bool on, QScreen* screen)
         setFontSize(std::max(fontSize_ * 3 / 2, 16));
         if (screen && windowHandle())
             windowHandle()->setScreen(screen);
+        // The whole screen even where no window manager enlarges a full-screen window.
+        if (const QScreen* target = screen ? screen : (windowHandle() ? windowHandle()->screen() : nullptr))
+            setGeometry(target->geometry());
         showFullScreen();
     } else {
         const Presentation before = *presentation_;

@@ -9,6 +9,8 @@
 #include <QProgressDialog>
 #include <QTableWidget>
 #include <QTimer>
+#include <QScreen>
+#include <QWindow>
 #include <QLineEdit>
 #include <QListWidget>
 #include <QMenu>
@@ -359,6 +361,7 @@ private slots:
         QTest::keyClick(&w, Qt::Key_F5);
         QVERIFY(w.isPresenting());
         QTRY_VERIFY(w.isFullScreen());
+        QTRY_COMPARE(w.frameGeometry().size(), w.windowHandle()->screen()->geometry().size()); // no window manager here
         QVERIFY(!w.menuBar()->isVisible());
         for (QDockWidget* dock : w.findChildren<QDockWidget*>())
             QVERIFY2(!dock->isVisible(), qPrintable(dock->objectName()));
