@@ -54,6 +54,61 @@
       side: THREE.DoubleSide,
     });
   }
+  // Lines as wide as the app draws them: WebGL draws lines one pixel wide, so
+  // each segment is a quad whose ends are pushed apart on screen.
+  const wideVertexShader = `
+    uniform vec4 cut;
+    uniform vec2 viewport;
+    uniform float width;
+    attribute vec3 other;
+    attribute float side;
+    varying float kept;
+    void main() {
+      kept = dot(cut, vec4(position, 1.0));
+      vec4 p = projectionMatrix * modelViewMatrix * vec4(position, 1.0);
+      vec4 q = projectionMatrix * modelViewMatrix * vec4(other, 1.0);
+      vec2 along = (q.xy / q.w - p.xy / p.w) * viewport;
+      vec2 normal = length(along) > 0.0 ? normalize(vec2(-along.y, along.x)) : vec2(0.0);
+      p.xy += normal / viewport * width * side * p.w;
+      gl_Position = p;
+    }`;
+  function wideLines(primitive, opacity, order) {
+    const ends = floatsOf(primitive.positions);
+    const segments = ends.length / 6;
+    const position = new Float32Array(segments * 12), other = new Float32Array(segments * 12);
+    const side = new Float32Array(segments * 4), index = new Uint32Array(segments * 6);
+    for (let k = 0; k < segments; ++k) {
+      const a = ends.subarray(6 * k, 6 * k + 3), b = ends.subarray(6 * k + 3, 6 * k + 6);
+      [a, a, b, b].forEach((end, j) => position.set(end, 12 * k + 3 * j));
+      [b, b, a, a].forEach((end, j) => other.set(end, 12 * k + 3 * j));
+      side.set([1, -1, -1, 1], 4 * k); // b's normal points the other way
+      index.set([4 * k, 4 * k + 1, 4 * k + 2, 4 * k + 1, 4 * k + 3, 4 * k + 2], 6 * k);
+    }
+    const geometry = new THREE.BufferGeometry();
+    geometry.setAttribute('position', new THREE.BufferAttribute(position, 3));
+    geometry.setAttribute('other', new THREE.BufferAttribute(other, 3));
+    geometry.setAttribute('side', new THREE.BufferAttribute(side, 1));
+    geometry.setIndex(new THREE.BufferAttribute(index, 1));
+    const c = primitive.color;
+    const object = new THREE.Mesh(geometry, new THREE.ShaderMaterial({
+      uniforms: {
+        color: { value: new THREE.Color(c[0], c[1], c[2]) },
+        opacity: { value: opacity },
+        cut: { value: noCut.clone() },
+        viewport: { value: new THREE.Vector2(1, 1) },
+        width: { value: primitive.lineWidth },
+      },
+      vertexShader: wideVertexShader, fragmentShader,
+      transparent: opacity < 1,
+      depthWrite: opacity >= 1,
+      side: THREE.DoubleSide,
+    }));
+    object.matrixAutoUpdate = false;
+    object.frustumCulled = false;
+    object.renderOrder = order;
+    return object;
+  }
+
   function geometryOf(primitive) {
     const geometry = new THREE.BufferGeometry();
     geometry.setAttribute('position', new THREE.BufferAttribute(floatsOf(primitive.positions), 3));
@@ -115,14 +170,16 @@
     projectedScene.background = new THREE.Color(...data.projectedBackground);
     data.primitives.forEach((primitive, k) => {
       const geometry = geometryOf(primitive);
-      const object = drawable(geometry, primitive, primitive.opacity, 2 * k + 1);
-      worldScene.add(object);
-      items.push({ object, primitive, ghost: false });
-      if (primitive.ghosted) {
-        const ghost = drawable(geometry, primitive, primitive.opacity * data.ghostOpacity, 2 * k);
-        worldScene.add(ghost);
-        items.push({ object: ghost, primitive, ghost: true });
-      }
+      // Lines twice: wide, and one pixel wide where a divide's cut applies (a wide line's
+      // ends cannot be pushed apart on screen where one of them has no image).
+      const add = (opacity, order, ghost) => {
+        const object = drawable(geometry, primitive, opacity, order);
+        const wide = primitive.surface ? null : wideLines(primitive, opacity, order);
+        for (const o of [object, wide]) if (o) worldScene.add(o);
+        items.push({ object, wide, primitive, ghost });
+      };
+      add(primitive.opacity, 2 * k + 1, false);
+      if (primitive.ghosted) add(primitive.opacity * data.ghostOpacity, 2 * k, true);
       // What the camera sees: the objects.
       if (primitive.object >= 0 && (primitive.surface || primitive.opacity >= 1))
         projectedScene.add(drawable(geometryOf(primitive), primitive, primitive.surface ? 0.35 : 1, k));
@@ -218,23 +275,35 @@
     const stageMatrix = matrixOf(frame.shown);
     const ghostMatrix = ghost ? matrixOf(ghost) : null;
     const cut = frame.cut ? new THREE.Vector4(...frame.cut) : noCut;
-    for (const { object, primitive, ghost: isGhost } of items) {
-      const uniforms = object.material.uniforms;
-      if (primitive.canonical) {
-        object.matrix.copy(identity);
-        object.visible = frame.canonical > 0;
-        uniforms.opacity.value = primitive.opacity * frame.canonical;
-        object.material.transparent = uniforms.opacity.value < 1;
-        uniforms.cut.value.copy(noCut);
-      } else if (isGhost) {
-        object.visible = !!ghostMatrix;
-        if (ghostMatrix) object.matrix.copy(ghostMatrix);
-        uniforms.cut.value.copy(cut);
-      } else {
-        object.matrix.copy(stageMatrix);
-        uniforms.cut.value.copy(cut);
+    const ratio = window.devicePixelRatio || 1;
+    const widthScale = Math.max(1, fitScale(size) * state.zoom) * ratio;
+    for (const { object: thin, wide, primitive, ghost: isGhost } of items) {
+      for (const object of [thin, wide]) {
+        if (!object) continue;
+        const uniforms = object.material.uniforms;
+        let visible = true;
+        if (primitive.canonical) {
+          object.matrix.copy(identity);
+          visible = frame.canonical > 0;
+          uniforms.opacity.value = primitive.opacity * frame.canonical;
+          object.material.transparent = uniforms.opacity.value < 1;
+          uniforms.cut.value.copy(noCut);
+        } else if (isGhost) {
+          visible = !!ghostMatrix;
+          if (ghostMatrix) object.matrix.copy(ghostMatrix);
+          uniforms.cut.value.copy(cut);
+        } else {
+          object.matrix.copy(stageMatrix);
+          uniforms.cut.value.copy(cut);
+        }
+        const cutHere = !!frame.cut && !primitive.canonical;
+        object.visible = visible && (!wide || (object === wide) !== cutHere);
+        if (object === wide) {
+          uniforms.viewport.value.set(size.width * ratio, size.height * ratio);
+          uniforms.width.value = primitive.lineWidth * widthScale;
+        }
+        object.matrixWorldNeedsUpdate = true;
       }
-      object.matrixWorldNeedsUpdate = true;
     }
     if (frameAxes) frameAxes.visible = atRest;
     // The canonical volume's line of the legend while it is drawn, as in the app.
