@@ -143,7 +143,7 @@
   const worldScene = new THREE.Scene();
   const camera = new THREE.Camera();
   camera.matrixAutoUpdate = false;
-  let items = []; // {object, primitive, ghost}
+  let items = []; // {object, wide, primitive, ghost}: each drawable, its wide lines
   let frameAxes = null; // the fixed axes of the stage shown at rest
 
   // ---- What the camera sees ---------------------------------------------------
