@@ -13,8 +13,7 @@
 #include <QPainter>
 #include <QPlainTextEdit>
 #include <QPushButton>
-#include <QScrollArea>
-#include <QScrollBar>
+#include <QResizeEvent>
 #include <QSettings>
 #include <QToolTip>
 #include <QVBoxLayout>
@@ -27,25 +26,70 @@
 namespace viewpipe::gui {
 namespace {
 
-// The code's characters are bytes of UTF-8; the view counts in them too.
-struct TextLayout {
-    QFontMetrics metrics;
-    std::vector<std::size_t> lineStarts; // byte offsets
+constexpr int kMargin = 6;
+constexpr int kContinuationIndent = 4; // characters before a wrapped line's continuation
 
-    TextLayout(const QFont& font, const std::string& text) : metrics(font)
+// The code's lines as the view shows them, wrapped to a width after a space
+// or an opening parenthesis (never inside a number), continuations indented. The code's
+// characters are bytes of UTF-8; the view counts in them too.
+struct TextLayout {
+    struct Line {
+        std::size_t start, end; // byte offsets
+        int indent;             // pixels
+    };
+    QFontMetrics metrics;
+    std::vector<Line> lines;
+
+    // width <= 0: no wrapping.
+    TextLayout(const QFont& font, const std::string& text, int width) : metrics(font)
     {
-        lineStarts.push_back(0);
-        for (std::size_t i = 0; i < text.size(); ++i)
-            if (text[i] == '\n')
-                lineStarts.push_back(i + 1);
+        const int indent = kContinuationIndent * metrics.horizontalAdvance(' ');
+        std::size_t start = 0;
+        while (true) {
+            const std::size_t newline = text.find('\n', start);
+            const std::size_t end = newline == std::string::npos ? text.size() : newline;
+            wrap(text, start, end, width, indent);
+            if (newline == std::string::npos)
+                break;
+            start = newline + 1;
+        }
+    }
+    int advance(const std::string& text, std::size_t from, std::size_t to) const
+    {
+        return metrics.horizontalAdvance(QString::fromUtf8(text.data() + from, int(to - from)));
     }
     std::size_t lineOf(std::size_t offset) const
     {
-        return std::size_t(std::upper_bound(lineStarts.begin(), lineStarts.end(), offset) - lineStarts.begin()) - 1;
+        std::size_t k = 0;
+        while (k + 1 < lines.size() && lines[k + 1].start <= offset)
+            ++k;
+        return k;
+    }
+
+private:
+    void wrap(const std::string& text, std::size_t start, std::size_t end, int width, int indent)
+    {
+        int lead = 0;
+        while (width > 0 && advance(text, start, end) > width - lead) {
+            // The last break that fits, else the first there is.
+            std::size_t fits = std::string::npos, first = std::string::npos;
+            for (std::size_t i = start + 1; i < end; ++i)
+                if ((text[i - 1] == ' ' || text[i - 1] == '(') && text[i] != ' ' && text[i] != ')') {
+                    if (first == std::string::npos)
+                        first = i;
+                    if (advance(text, start, i) <= width - lead)
+                        fits = i;
+                }
+            const std::size_t at = fits != std::string::npos ? fits : first;
+            if (at == std::string::npos)
+                break;
+            lines.push_back({start, at, lead});
+            start = at;
+            lead = indent;
+        }
+        lines.push_back({start, end, lead});
     }
 };
-
-constexpr int kMargin = 6;
 
 } // namespace
 
@@ -69,21 +113,29 @@ void CodeView::setCode(const code::CameraCode& code)
 
 QSize CodeView::sizeHint() const
 {
-    const TextLayout layout(font(), code_.text);
-    int width = 0;
-    std::size_t start = 0;
-    for (std::size_t end = 0; end <= code_.text.size(); ++end)
-        if (end == code_.text.size() || code_.text[end] == '\n') {
-            width = std::max(width, layout.metrics.horizontalAdvance(
-                                        QString::fromUtf8(code_.text.data() + start, int(end - start))));
-            start = end + 1;
-        }
-    return {width + 2 * kMargin, int(layout.lineStarts.size()) * layout.metrics.lineSpacing() + 2 * kMargin};
+    return {40 * fontMetrics().horizontalAdvance('0') + 2 * kMargin, heightForWidth(width())};
 }
 
 QSize CodeView::minimumSizeHint() const
 {
-    return sizeHint(); // long lines scroll sideways in the panel rather than being cut
+    return {10 * fontMetrics().horizontalAdvance('0'), heightForWidth(width())};
+}
+
+bool CodeView::hasHeightForWidth() const
+{
+    return true;
+}
+
+int CodeView::heightForWidth(int width) const
+{
+    const TextLayout layout(font(), code_.text, width - 2 * kMargin);
+    return int(layout.lines.size()) * layout.metrics.lineSpacing() + 2 * kMargin;
+}
+
+void CodeView::resizeEvent(QResizeEvent* event)
+{
+    QWidget::resizeEvent(event);
+    updateGeometry(); // the lines wrap anew: the height follows
 }
 
 QRect CodeView::numberRect(std::size_t index) const
@@ -91,11 +143,11 @@ QRect CodeView::numberRect(std::size_t index) const
     if (index >= code_.numbers.size())
         return {};
     const code::CodeNumber& n = code_.numbers[index];
-    const TextLayout layout(font(), code_.text);
+    const TextLayout layout(font(), code_.text, width() - 2 * kMargin);
     const std::size_t line = layout.lineOf(n.offset);
-    const std::size_t start = layout.lineStarts[line];
-    const int x = layout.metrics.horizontalAdvance(QString::fromUtf8(code_.text.data() + start, int(n.offset - start)));
-    const int width = layout.metrics.horizontalAdvance(QString::fromUtf8(code_.text.data() + n.offset, int(n.length)));
+    const TextLayout::Line& l = layout.lines[line];
+    const int x = l.indent + layout.advance(code_.text, l.start, n.offset);
+    const int width = layout.advance(code_.text, n.offset, n.offset + n.length);
     return {kMargin + x, kMargin + int(line) * layout.metrics.lineSpacing(), width, layout.metrics.lineSpacing()};
 }
 
@@ -110,7 +162,7 @@ std::optional<std::size_t> CodeView::numberAt(const QPoint& point) const
 void CodeView::paintEvent(QPaintEvent*)
 {
     QPainter painter(this);
-    const TextLayout layout(font(), code_.text);
+    const TextLayout layout(font(), code_.text, width() - 2 * kMargin);
     const QPalette& p = palette();
     painter.fillRect(rect(), p.color(QPalette::Base));
     for (std::size_t k = 0; k < code_.numbers.size(); ++k) {
@@ -124,11 +176,10 @@ void CodeView::paintEvent(QPaintEvent*)
         painter.drawLine(r.bottomLeft(), r.bottomRight());
     }
     painter.setPen(p.color(QPalette::Text));
-    for (std::size_t line = 0; line < layout.lineStarts.size(); ++line) {
-        const std::size_t start = layout.lineStarts[line];
-        const std::size_t end = line + 1 < layout.lineStarts.size() ? layout.lineStarts[line + 1] - 1 : code_.text.size();
-        painter.drawText(kMargin, kMargin + int(line) * layout.metrics.lineSpacing() + layout.metrics.ascent(),
-                         QString::fromUtf8(code_.text.data() + start, int(end - start)));
+    for (std::size_t k = 0; k < layout.lines.size(); ++k) {
+        const TextLayout::Line& line = layout.lines[k];
+        painter.drawText(kMargin + line.indent, kMargin + int(k) * layout.metrics.lineSpacing() + layout.metrics.ascent(),
+                         QString::fromUtf8(code_.text.data() + line.start, int(line.end - line.start)));
     }
 }
 
@@ -314,11 +365,7 @@ CodePanel::CodePanel(QWidget* parent) : QWidget(parent)
     layout->addWidget(note_);
     view_ = new CodeView;
     view_->setObjectName("codeView");
-    scroll_ = new QScrollArea;
-    scroll_->setWidget(view_);
-    scroll_->setWidgetResizable(true);
-    scroll_->setVerticalScrollBarPolicy(Qt::ScrollBarAlwaysOff);
-    layout->addWidget(scroll_);
+    layout->addWidget(view_); // its lines wrap to the panel's width, its height follows
     error_ = new QLabel;
     error_->setObjectName("codeError");
     error_->setWordWrap(true);
@@ -376,7 +423,7 @@ void CodePanel::setCamera(const CameraSpec<double>& camera)
 void CodePanel::regenerate()
 {
     const bool code = camera_.has_value();
-    scroll_->setVisible(code);
+    view_->setVisible(code);
     paste_->setEnabled(code);
     note_->setText(code ? tr("Drag a marked number left or right, or double-click it to type. Each change is one "
                              "undoable edit.")
@@ -385,9 +432,7 @@ void CodePanel::regenerate()
                              "APIs."));
     code_ = code ? code::cameraCode(*camera_, code::kDialects[dialects_->currentIndex()]) : code::CameraCode{};
     view_->setCode(code_);
-    // All lines show; only the width scrolls.
-    scroll_->setFixedHeight(view_->sizeHint().height() + scroll_->horizontalScrollBar()->sizeHint().height() +
-                            2 * scroll_->frameWidth());
+
 }
 
 void CodePanel::setNumber(std::size_t index, double value, int gesture)

@@ -19,7 +19,6 @@ class QComboBox;
 class QLabel;
 class QLineEdit;
 class QPlainTextEdit;
-class QScrollArea;
 
 namespace viewpipe::gui {
 
@@ -51,7 +50,6 @@ private:
 
     QComboBox* dialects_ = nullptr;
     CodeView* view_ = nullptr;
-    QScrollArea* scroll_ = nullptr;
     QPlainTextEdit* paste_ = nullptr;
     QLabel* note_ = nullptr;
     QLabel* error_ = nullptr;
@@ -77,6 +75,8 @@ public:
     static double stepFor(double value);
     QSize sizeHint() const override;
     QSize minimumSizeHint() const override;
+    bool hasHeightForWidth() const override;
+    int heightForWidth(int width) const override;
 
 signals:
     void numberChanged(std::size_t index, double value, int gesture);
@@ -85,6 +85,7 @@ signals:
 
 protected:
     void paintEvent(QPaintEvent* event) override;
+    void resizeEvent(QResizeEvent* event) override;
     bool event(QEvent* event) override;
     void mousePressEvent(QMouseEvent* event) override;
     void mouseMoveEvent(QMouseEvent* event) override;

@@ -11,7 +11,6 @@
 #include <QLineEdit>
 #include <QPlainTextEdit>
 #include <QPushButton>
-#include <QScrollArea>
 
 #include "app_window.h"
 #include "app/CodePanel.h"
@@ -46,12 +45,10 @@ std::size_t numberFor(CodeView* view, const std::string& field)
     return numbers.size();
 }
 
-// Brings a number into the scroll area's view, and returns its center.
+// A number's center, where it is drawn (the code wraps: every number is in view).
 QPoint showNumber(CodeView* view, std::size_t index)
 {
-    const QRect r = view->numberRect(index);
-    qobject_cast<QScrollArea*>(view->parentWidget()->parentWidget())->ensureVisible(r.center().x(), r.center().y());
-    return r.center();
+    return view->numberRect(index).center();
 }
 
 } // namespace
@@ -72,6 +69,24 @@ private slots:
     }
 
     void cleanup() { closeWindow(window_); }
+
+    void longLinesWrapAndEveryNumberShows()
+    {
+        for (const code::Dialect dialect : code::kDialects) {
+            panel_->setDialect(dialect);
+            QApplication::processEvents();
+            QVERIFY(view_->isVisible());
+            QVERIFY(view_->height() >= view_->heightForWidth(view_->width()));
+            for (std::size_t k = 0; k < view_->code().numbers.size(); ++k)
+                QVERIFY2(view_->rect().contains(view_->numberRect(k)),
+                         qPrintable(QString("%1: number %2 outside a %3 px wide view")
+                                        .arg(QString::fromStdString(code::dialectTitle(dialect)))
+                                        .arg(k)
+                                        .arg(view_->width())));
+        }
+        // Narrower, the lines wrap more: the view grows taller rather than cutting them.
+        QVERIFY(view_->heightForWidth(300) > view_->heightForWidth(1200));
+    }
 
     void draggingANumberIsOneEdit()
     {
