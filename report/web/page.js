@@ -372,16 +372,29 @@
         }
       }
     } else {
-      // Moving: each label beside its anchor (the app places them anew when the motion stops).
-      context.textBaseline = 'bottom';
-      context.font = 'bold ' + font(data.fontSize * Math.max(0.6, s));
+      // Moving, or seen from elsewhere than the app's view: each label at a corner of
+      // its anchor that no label drawn before covers, or left out (the app's
+      // placement, with leader lines, is recorded for the views at rest only).
+      const px = data.fontSize * Math.max(0.6, s);
+      context.textBaseline = 'top';
+      context.font = 'bold ' + font(px);
+      const taken = [];
+      const overlaps = (a) => taken.some((b) => a.x0 < b.x1 && b.x0 < a.x1 && a.y0 < b.y1 && b.y0 < a.y1);
       for (const label of data.labels) {
         if (label.minor || (label.fixed && frame.canonical < 0.5)) continue;
         if (!label.fixed && !kept(frame.cut, label.anchor)) continue;
         const at = project(label.fixed ? clipFromStage : clipFromWorld, label.anchor, size);
         if (!at) continue;
-        context.fillStyle = cssColor(label.color);
-        context.fillText(label.text, at.x + 4, at.y - 4);
+        const width = context.measureText(label.text).width, gap = 4;
+        const corners = [[gap, -gap - px], [gap, gap], [-gap - width, -gap - px], [-gap - width, gap]];
+        for (const [dx, dy] of corners) {
+          const box = { x0: at.x + dx, y0: at.y + dy, x1: at.x + dx + width, y1: at.y + dy + px };
+          if (overlaps(box)) continue;
+          taken.push(box);
+          context.fillStyle = cssColor(label.color);
+          context.fillText(label.text, box.x0, box.y0);
+          break;
+        }
       }
     }
   }
