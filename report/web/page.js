@@ -541,7 +541,10 @@
   const kStepMilliseconds = 600;
   function goTo(k, animate) {
     k = Math.max(0, Math.min(last, k));
-    if (animation) cancelAnimationFrame(animation.request);
+    if (animation) {
+      cancelAnimationFrame(animation.request);
+      clearTimeout(animation.deadline);
+    }
     animation = null;
     const from = state.stage;
     state.stage = k;
@@ -557,21 +560,25 @@
     const backwards = k < from;
     const start = performance.now();
     body.dataset.moving = '1';
-    const tick = (now) => {
-      const t = Math.min(1, (now - start) / kStepMilliseconds);
-      if (t >= 1) {
-        animation = null;
-        body.dataset.moving = '';
-        showRest(k);
-        return;
-      }
+    // The step ends on time even where frames are not drawn (a hidden tab, a busy machine).
+    const finish = () => {
+      if (!animation) return;
+      cancelAnimationFrame(animation.request);
+      clearTimeout(animation.deadline);
+      animation = null;
+      body.dataset.moving = '';
+      showRest(k);
+    };
+    const tick = () => {
+      const t = Math.min(1, (performance.now() - start) / kStepMilliseconds);
+      if (t >= 1) return finish();
       const progress = backwards ? 1 - t : t;
       const index = Math.round(progress * frames.length) - 1;
       shown = { frame: index < 0 ? stages[Math.min(from, k)].rest : frames[index], atRest: false, ghost: null };
       drawWorld();
-      animation = { request: requestAnimationFrame(tick) };
+      animation.request = requestAnimationFrame(tick);
     };
-    animation = { request: requestAnimationFrame(tick) };
+    animation = { request: requestAnimationFrame(tick), deadline: setTimeout(finish, kStepMilliseconds + 100) };
   }
   function play() {
     const button = document.getElementById('play');
