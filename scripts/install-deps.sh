@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # Installs the Debian 12 packages ViewPipe needs, only those that are missing.
 # Idempotent: a second run installs nothing. Uses sudo when not root.
-# --test adds what only the tests need.
+# --test adds what only the tests need; --pdf only TeX Live, which a lesson's
+# handout and slides (`viewpipe lesson export --format pdf`) are set with.
 set -euo pipefail
 
 packages=(
@@ -17,10 +18,11 @@ packages=(
 # Only the tests need these (sanitizers, libFuzzer, TeX to compile the LaTeX and
 # TikZ exports, poppler to rasterize PDFs, Chromium to open the web page):
 # `make run` stays quick.
-if [ "${1:-}" = "--test" ]; then
-  packages+=(clang libclang-rt-14-dev texlive-latex-base texlive-latex-recommended texlive-latex-extra
-             texlive-pictures texlive-fonts-recommended poppler-utils chromium)
-fi
+tex=(texlive-latex-base texlive-latex-recommended texlive-latex-extra texlive-pictures texlive-fonts-recommended)
+case "${1:-}" in
+  --test) packages+=(clang libclang-rt-14-dev "${tex[@]}" poppler-utils chromium) ;;
+  --pdf) packages+=("${tex[@]}") ;;
+esac
 
 missing=()
 for p in "${packages[@]}"; do

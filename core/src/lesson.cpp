@@ -260,6 +260,17 @@ Lesson parseLesson(const std::string& text, const std::filesystem::path& baseDir
     return lesson;
 }
 
+int askingStage(const LessonStep& step)
+{
+    const std::optional<Question>& q = step.question;
+    return q && q->stage > 0 && q->kind != QuestionKind::Entry ? std::min(step.stage, q->stage - 1) : step.stage;
+}
+
+int revealedStage(const LessonStep& step)
+{
+    return step.question && step.question->stage > 0 ? std::max(step.stage, step.question->stage) : step.stage;
+}
+
 Lesson loadLesson(const std::filesystem::path& file)
 {
     return parseLesson(readInputFile(file, "lesson"), file.parent_path());

@@ -1,4 +1,4 @@
-// `viewpipe lesson check FILE` and `viewpipe lesson export FILE --out DIR --format html`.
+// `viewpipe lesson check FILE` and `viewpipe lesson export FILE --out DIR --format html|pdf`.
 
 #include <filesystem>
 #include <iostream>
@@ -7,6 +7,7 @@
 #include "command.hpp"
 #include "drawing_commands.hpp"
 #include "export/Exporter.h"
+#include "export/LessonExport.h"
 #include "export/VirtualDisplay.h"
 #include "viewpipe/lesson.hpp"
 #include "viewpipe/report/web_page.hpp"
@@ -48,19 +49,27 @@ int runExport(const LessonOptions& options)
 {
     return guarded(options.file, "viewpipe lesson export", [&] {
         const Lesson lesson = loadLesson(options.file);
-        if (options.format != "html")
-            throw InputError("--format", "must be html (got \"" + options.format + "\")");
+        if (options.format != "html" && options.format != "pdf")
+            throw InputError("--format", "must be html or pdf (got \"" + options.format + "\")");
         const auto [width, height] = parseSize(options.size, "--size");
         const Theme theme = options.theme == "dark" ? Theme::Dark : Theme::Light;
         std::vector<int> stepScenes;
         const auto evaluated = evaluateSteps(lesson, stepScenes);
-        const WebAssets assets = loadWebAssets();
-
         const gui::VirtualDisplay display;
+        auto say = [&](const std::string& what) {
+            if (!options.quiet)
+                std::cerr << what << "\n";
+        };
+        if (options.format == "pdf") {
+            for (const fs::path& file : gui::exportLessonPdf(lesson, stepScenes, evaluated, options.out, theme, say))
+                if (!options.quiet)
+                    std::cout << file.string() << "\n";
+            return 0;
+        }
+        const WebAssets assets = loadWebAssets();
         std::vector<LessonScene> scenes;
         for (const auto& scene : evaluated) {
-            if (!options.quiet)
-                std::cerr << "recording " << scene->scene.name << "\n";
+            say("recording " + scene->scene.name);
             scenes.push_back({scene, gui::recordWebViews(scene, width, height, 1, theme, false, [](const std::string&) {})});
         }
         // Only now that the page is made: nothing is created for a lesson that fails.
@@ -81,7 +90,7 @@ int runExport(const LessonOptions& options)
 
 void addLessonCommand(CLI::App& app)
 {
-    CLI::App* lesson = app.add_subcommand("lesson", "Check a lesson file, or export it as a web page");
+    CLI::App* lesson = app.add_subcommand("lesson", "Check a lesson file, or export it as a web page or as a handout and slides");
     lesson->require_subcommand(1);
 
     auto file = std::make_shared<std::string>();
@@ -96,10 +105,10 @@ void addLessonCommand(CLI::App& app)
     });
 
     auto options = std::make_shared<LessonOptions>();
-    CLI::App* exportCommand = lesson->add_subcommand("export", "Write the lesson as one web page, lesson.html");
+    CLI::App* exportCommand = lesson->add_subcommand("export", "Write the lesson as one web page (lesson.html), or as handout.pdf and slides.pdf");
     exportCommand->add_option("FILE", options->file, "Lesson file (JSON)")->required();
-    exportCommand->add_option("--out", options->out, "Folder for lesson.html (created if missing)")->required();
-    exportCommand->add_option("--format", options->format, "html: one self-contained page")->capture_default_str();
+    exportCommand->add_option("--out", options->out, "Folder for the files (created if missing)")->required();
+    exportCommand->add_option("--format", options->format, "html: one self-contained page; pdf: handout.pdf and 16:9 slides.pdf (needs pdflatex)")->capture_default_str();
     exportCommand->add_option("--size", options->size, "The pictures' size WxH, as export's")->capture_default_str();
     exportCommand->add_option("--theme", options->theme, "light or dark")
         ->check(CLI::IsMember({"light", "dark"}))

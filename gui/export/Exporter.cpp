@@ -20,6 +20,7 @@
 #include <unistd.h>
 
 #include "DepthPlot.h"
+#include "Offscreen.h"
 #include "Process.h"
 #include "VectorFigure.h"
 #include "viewpipe/report/tikz.hpp"
@@ -34,7 +35,6 @@ namespace fs = std::filesystem;
 
 namespace {
 
-constexpr int kBaseFontSize = 20; // at 1280x720; other sizes scale it, so that a picture keeps its look
 constexpr double kHoldSeconds = 0.6; // the animation rests this long at each stage
 constexpr int kWebFramesPerStep = 30;     // the web page's transitions: frames recorded per step
 
@@ -223,68 +223,6 @@ std::vector<int> parseStages(const std::string& text, int stageCount)
         throw InputError("--stages", "names no stage");
     return stages;
 }
-
-namespace {
-
-// An offscreen window and the scene painter in it, sized and styled as the
-// export draws: fonts and lines scale with the picture.
-struct OffscreenPainter {
-    OffscreenPainter(const std::shared_ptr<const EvaluatedScene>& scene, int width, int height, int scale, Theme theme,
-                     bool transparent)
-    {
-        window->SetOffScreenRendering(1);
-        window->SetSize(width * scale, height * scale);
-        window->SetAlphaBitPlanes(transparent ? 1 : 0);
-        window->SetMultiSamples(0);
-        renderer->UseFXAAOn();
-        window->AddRenderer(renderer);
-        painter = std::make_unique<ScenePainter>(renderer, nullptr);
-        painter->setTheme(theme);
-        const double sizeShare = std::sqrt(double(width) * height / (1280.0 * 720.0));
-        painter->setFontSize(int(std::lround(std::clamp(kBaseFontSize * sizeShare, 10.0, 2.0 * kBaseFontSize))) *
-                             scale);
-        painter->setLineScale(scale);
-        painter->setScene(scene);
-        if (transparent)
-            renderer->SetBackgroundAlpha(0);
-        window->Render(); // sizes the renderer before framing
-        painter->resetView();
-    }
-    vtkNew<vtkRenderWindow> window;
-    vtkNew<vtkRenderer> renderer;
-    std::unique_ptr<ScenePainter> painter;
-};
-
-// Stage k at rest as its picture shows it (the ghost of the stage before,
-// the caption, its framing or the fixed one), rendered; the stage as shown.
-StageShown showStageAtRest(const OffscreenPainter& offscreen, const EvaluatedScene& scene, int k, const std::string& caption,
-                           const std::optional<ScenePainter::Framing>& fixedFraming)
-{
-    const std::vector<Stage<double>>& stages = scene.pipeline.stages;
-    StageShown shown(scene, drawnAt(stages, k), StageTransition::canonicalOpacity(k, stages.size()));
-    shown.ghost = ghostAt(stages, k);
-    ScenePainter& painter = *offscreen.painter;
-    painter.show(shown.cumulative, shown.canonicalOpacity);
-    painter.setGhost(shown.ghost);
-    painter.setCaptions(caption, "");
-    painter.frameOn(fixedFraming ? *fixedFraming : StageTransition::framingAt(painter, stages, k));
-    offscreen.window->Render();
-    return shown;
-}
-
-// With fixed framing: one framing that holds every stage.
-std::optional<ScenePainter::Framing> fixedFramingOf(const ScenePainter& painter, const std::vector<Stage<double>>& stages,
-                                                    bool fixed)
-{
-    if (!fixed)
-        return std::nullopt;
-    std::vector<Mat4<double>> all;
-    for (std::size_t k = 0; k <= stages.size(); ++k)
-        all.push_back(drawnAt(stages, double(k)));
-    return painter.framingOf(all, true);
-}
-
-} // namespace
 
 WebPageViews recordWebViews(const std::shared_ptr<const EvaluatedScene>& evaluated, int width, int height, int scale,
                             Theme theme, bool fixedFraming, const std::function<void(const std::string&)>& step)

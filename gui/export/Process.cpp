@@ -22,8 +22,12 @@ pid_t startProgram(const std::vector<std::string>& arguments, const ChildStreams
         posix_spawn_file_actions_addclose(&actions, streams.closeInChild);
     if (streams.stdinFromNull)
         posix_spawn_file_actions_addopen(&actions, STDIN_FILENO, "/dev/null", O_RDONLY, 0);
+    if (streams.stdoutToNull)
+        posix_spawn_file_actions_addopen(&actions, STDOUT_FILENO, "/dev/null", O_WRONLY, 0);
     if (streams.stderrToNull)
         posix_spawn_file_actions_addopen(&actions, STDERR_FILENO, "/dev/null", O_WRONLY, 0);
+    if (!streams.workingDirectory.empty())
+        posix_spawn_file_actions_addchdir_np(&actions, streams.workingDirectory.c_str());
     pid_t child = -1;
     const int spawned = posix_spawnp(&child, argv[0], &actions, nullptr, argv.data(), environ);
     posix_spawn_file_actions_destroy(&actions);
@@ -38,9 +42,9 @@ int waitForProgram(pid_t child)
     return WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status);
 }
 
-int runProgram(const std::vector<std::string>& arguments)
+int runProgram(const std::vector<std::string>& arguments, const ChildStreams& given)
 {
-    ChildStreams streams;
+    ChildStreams streams = given;
     streams.stdinFromNull = true;
     const pid_t child = startProgram(arguments, streams);
     return child < 0 ? -1 : waitForProgram(child);

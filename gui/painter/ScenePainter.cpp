@@ -577,6 +577,16 @@ void ScenePainter::rememberUserCamera()
     userPan_ = (focal - framed_.center) / framed_.radius;
 }
 
+void ScenePainter::orbit(double yaw, double pitch, double zoom)
+{
+    vtkCamera* camera = world_->GetActiveCamera();
+    camera->Azimuth(-yaw);
+    camera->Elevation(-pitch);
+    camera->OrthogonalizeViewUp();
+    camera->Dolly(zoom);
+    rememberUserCamera();
+}
+
 void ScenePainter::resetView()
 {
     vtkCamera* camera = world_->GetActiveCamera();
@@ -652,8 +662,8 @@ void ScenePainter::markTraced(const std::optional<Vec3<double>>& point)
     tracedMarker_.reset();
     tracedLabel_.reset();
     if (point && scene_) {
-        tracedMarker_ = Marker{Element::Traced, Marker::Shape::Dot, *point, *point, 8};
-        tracedLabel_ = std::make_unique<viewpipe::Label>(viewpipe::Label{Element::Traced, "traced", *point});
+        tracedMarker_ = tracedMarker(*point);
+        tracedLabel_ = std::make_unique<viewpipe::Label>(tracedLabel(*point));
         addLabel(*tracedLabel_);
         applyStyle();
     }

@@ -87,6 +87,10 @@ public:
     void frameOn(const Framing& framing);
     void frame();
     void resetView();
+    // Turns the world view's camera about its focal point, in degrees (yaw
+    // about the view's up, pitch about its right, as the web page turns) and
+    // zooms it, as a lesson step asks; later framing keeps both.
+    void orbit(double yaw, double pitch, double zoom);
     // Call when the user has moved the camera, to keep that change in frame().
     void rememberUserCamera();
 

@@ -522,6 +522,16 @@ std::vector<std::optional<PlacedLabel>> placeSceneLabels(const StageShown& stage
     return result;
 }
 
+Marker tracedMarker(const Vec3<double>& point)
+{
+    return Marker{Element::Traced, Marker::Shape::Dot, point, point, 8};
+}
+
+Label tracedLabel(const Vec3<double>& point)
+{
+    return Label{Element::Traced, "traced", point};
+}
+
 Figure drawFigure(const StageShown& stage, const FigureView& view, const LabelMeasure& measure,
                   const std::vector<Box2>& reserved)
 {
@@ -578,14 +588,20 @@ Figure drawFigure(const StageShown& stage, const FigureView& view, const LabelMe
     std::stable_sort(figure.shapes.begin(), figure.shapes.end(), [](const FigureShape& a, const FigureShape& b) {
         return a.depth > b.depth || (a.depth == b.depth && a.surface && !b.surface);
     });
-    const std::vector<FigureShape> markers = markerShapes(stage, view, stage.scene->markers);
-    figure.shapes.insert(figure.shapes.end(), markers.begin(), markers.end()); // over everything
+    std::vector<Marker> markers = stage.scene->markers;
     std::vector<const Label*> labels;
     for (const Label& label : stage.scene->labels)
         labels.push_back(&label);
     for (const Label& label : frame.labels)
         labels.push_back(&label);
-    for (auto& placed : placeSceneLabels(stage, view, labels, stage.scene->markers, measure, reserved))
+    const std::optional<Label> traced = stage.traced ? std::optional<Label>(tracedLabel(*stage.traced)) : std::nullopt;
+    if (traced) {
+        markers.push_back(tracedMarker(*stage.traced));
+        labels.push_back(&*traced);
+    }
+    const std::vector<FigureShape> markerFaces = markerShapes(stage, view, markers);
+    figure.shapes.insert(figure.shapes.end(), markerFaces.begin(), markerFaces.end()); // over everything
+    for (auto& placed : placeSceneLabels(stage, view, labels, markers, measure, reserved))
         if (placed)
             figure.labels.push_back(std::move(*placed));
     return figure;

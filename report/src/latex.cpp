@@ -140,6 +140,13 @@ std::string stageLatex(const Scene& scene, int stage, int digits)
     return stageEquation(p.stages.at(std::size_t(stage - 1)), digits);
 }
 
+std::string stageMatrixLatex(const Scene& scene, int stage, int digits)
+{
+    const Pipeline<Exact> p = exactPipeline(scene);
+    const Stage<Exact>& s = p.stages.at(std::size_t(stage - 1));
+    return s.divides ? stageEquation(s, digits) : bmatrix(s.matrix, digits);
+}
+
 std::string entryLatex(const Scene& scene, int stage, int row, int column, int digits)
 {
     const Pipeline<Exact> p = exactPipeline(scene);

@@ -52,18 +52,25 @@ std::string point(const Vec2<double>& p)
     return "(" + number(p.x()) + "," + number(p.y()) + ")";
 }
 
-std::string escaped(const std::string& text)
+} // namespace
+
+std::string texEscaped(const std::string& text)
 {
     std::string out;
     for (std::size_t k = 0; k < text.size(); ++k) {
         const char c = text[k];
         // The signs the captions use beyond ASCII, which pdflatex does not know as text.
         bool sign = false;
-        for (const auto& [utf8, tex] : {std::pair<std::string, std::string>{"\u00b1", "$\\pm$"}, {"\u2264", "$\\le$"}})
+        static const std::pair<std::string, std::string> signs[] = {
+            {"\u00b1", "$\\pm$"},    {"\u2264", "$\\le$"},     {"\u2265", "$\\ge$"},    {"\u2212", "$-$"},
+            {"\u00d7", "$\\times$"}, {"\u00b7", "$\\cdot$"},   {"\u2192", "$\\to$"},    {"\u2248", "$\\approx$"},
+            {"\u00b0", "$^\\circ$"}, {"\u221e", "$\\infty$"}, {"\u2013", "--"},        {"\u2014", "---"}};
+        for (const auto& [utf8, tex] : signs)
             if (text.compare(k, utf8.size(), utf8) == 0) {
                 out += tex;
                 k += utf8.size() - 1;
                 sign = true;
+                break;
             }
         if (sign)
             continue;
@@ -77,8 +84,6 @@ std::string escaped(const std::string& text)
     }
     return out;
 }
-
-} // namespace
 
 std::string texLabel(const std::string& text)
 {
@@ -95,9 +100,9 @@ std::string texLabel(const std::string& text)
         std::string math = text.substr(0, words);
         if (const std::size_t min = math.find("z_min"); min != std::string::npos)
             math.replace(min, 5, "z_{\\min}");
-        return "$" + math + "$" + (words == std::string::npos ? "" : escaped(text.substr(words)));
+        return "$" + math + "$" + (words == std::string::npos ? "" : texEscaped(text.substr(words)));
     }
-    return escaped(text);
+    return texEscaped(text);
 }
 
 std::string tikzFigure(const Figure& figure, Theme theme)
@@ -166,7 +171,7 @@ std::string tikzFiguresDocument(const std::vector<std::pair<std::string, std::st
            "\\usepackage{tikz}\n\\usepackage{standalone}\n\\begin{document}\n";
     for (const auto& [file, caption] : figures)
         tex << "\\begin{figure}[p]\n  \\centering\n  \\resizebox{\\linewidth}{!}{\\input{" << file
-            << "}}\n  \\caption{" << escaped(caption) << "}\n\\end{figure}\n";
+            << "}}\n  \\caption{" << texEscaped(caption) << "}\n\\end{figure}\n";
     tex << "\\end{document}\n";
     return tex.str();
 }

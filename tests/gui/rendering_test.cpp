@@ -14,6 +14,7 @@
 #include <QJsonDocument>
 #include <QJsonObject>
 #include <QProcess>
+#include <QRegularExpression>
 #include <QStandardPaths>
 #include <QTemporaryDir>
 #include <QXmlStreamReader>
@@ -445,6 +446,75 @@ private slots:
         QCOMPARE(process.exitCode(), 130);
         QCOMPARE(QDir(out).entryList(QDir::AllEntries | QDir::Hidden | QDir::NoDotAndDotDot), QStringList{"00-world.png"});
         QCOMPARE(readAll(out + "/00-world.png"), QString("previous"));
+    }
+
+    // A lesson on paper: handout.pdf, one page per step and the answer key
+    // after them, and slides.pdf, 16:9, one slide per step and one more for
+    // each answer. No step's text spills onto a page of its own, and no answer
+    // shows before the key.
+    void lessonHandoutAndSlides()
+    {
+        QTemporaryDir out;
+        const QString lesson = QString(VIEWPIPE_DATA_DIR) + "/lessons/foley-nper.json";
+        const Run run = viewpipe({"lesson", "export", lesson, "--out", out.path(), "--format", "pdf"});
+        QCOMPARE(run.exitCode, 0);
+        QCOMPARE(run.out, out.path() + "/handout.pdf\n" + out.path() + "/slides.pdf\n");
+        QCOMPARE(QDir(out.path()).entryList(QDir::Files | QDir::Hidden | QDir::AllDirs | QDir::NoDotAndDotDot),
+                 QStringList({"handout.pdf", "slides.pdf"}));
+        auto tool = [](const QString& name, const QStringList& arguments) {
+            QProcess process;
+            process.start(QStandardPaths::findExecutable(name), arguments);
+            process.waitForFinished(60000);
+            return QString::fromUtf8(process.readAllStandardOutput());
+        };
+        auto pages = [&](const QString& pdf) {
+            const QString info = tool("pdfinfo", {pdf});
+            const QRegularExpressionMatch match = QRegularExpression("Pages:\\s+(\\d+)").match(info);
+            return match.hasMatch() ? match.captured(1).toInt() : -1;
+        };
+        auto pageSize = [&](const QString& pdf) {
+            const QRegularExpressionMatch match =
+                QRegularExpression("Page size:\\s+([\\d.]+) x ([\\d.]+)").match(tool("pdfinfo", {pdf}));
+            return QSizeF(match.captured(1).toDouble(), match.captured(2).toDouble());
+        };
+        // The lesson: 9 steps, each with a question.
+        constexpr int kSteps = 9;
+        const QString handout = out.path() + "/handout.pdf", slides = out.path() + "/slides.pdf";
+        QCOMPARE(pages(slides), 2 * kSteps);
+        const QSizeF slide = pageSize(slides);
+        QVERIFY2(std::abs(slide.width() / slide.height() - 16.0 / 9.0) < 1e-3, qPrintable(QString::number(slide.width())));
+        const QSizeF a4 = pageSize(handout);
+        QVERIFY(std::abs(a4.width() - 595.28) < 1 && std::abs(a4.height() - 841.89) < 1);
+        const int handoutPages = pages(handout);
+        QVERIFY2(handoutPages >= kSteps + 1 && handoutPages <= kSteps + 4, qPrintable(QString::number(handoutPages)));
+        for (int page = 1; page <= kSteps; ++page) {
+            const QString text = tool("pdftotext", {"-f", QString::number(page), "-l", QString::number(page), handout, "-"});
+            QVERIFY2(text.contains(QString("Step %1 of 9").arg(page)), qPrintable(text));
+            QVERIFY2(text.contains(QString("Question %1.").arg(page)), qPrintable(text));
+            QVERIFY2(!text.contains("Answer"), qPrintable(text));
+        }
+        const QString key = tool("pdftotext", {"-f", QString::number(kSteps + 1), handout, "-"});
+        QVERIFY2(key.contains("Answer key"), qPrintable(key));
+        for (int question = 1; question <= kSteps; ++question)
+            QVERIFY2(key.contains(QString("Question %1 (step %1)").arg(question)), qPrintable(key));
+        // Question 6's entry is an exact fraction (-dop_x/dop_z = -8/84 = -2/21), typeset as one.
+        QVERIFY2(key.contains("Answer: −") && key.contains("21"), qPrintable(key));
+        // The slide after a question holds its answer; the question's slide does not.
+        const QString asking = tool("pdftotext", {"-f", "1", "-l", "1", slides, "-"});
+        const QString answered = tool("pdftotext", {"-f", "2", "-l", "2", slides, "-"});
+        QVERIFY2(asking.contains("Question 1.") && !asking.contains("Answer"), qPrintable(asking));
+        QVERIFY2(answered.contains("Answer:") && answered.contains("Step 1 of 9"), qPrintable(answered));
+        // The figures are drawn: a page rasterized is far from blank.
+        tool("pdftoppm", {"-png", "-r", "40", "-f", "2", "-l", "2", "-singlefile", slides, out.path() + "/slide"});
+        const QImage picture(out.path() + "/slide.png");
+        QVERIFY(!picture.isNull());
+        QVERIFY2(contentShare(picture) > 0.05, qPrintable(QString::number(contentShare(picture))));
+
+        // A bad format is refused before anything is made.
+        const Run bad = viewpipe({"lesson", "export", lesson, "--out", out.path() + "/none", "--format", "docx"});
+        QCOMPARE(bad.exitCode, 2);
+        QVERIFY2(bad.err.contains("--format: must be html or pdf"), qPrintable(bad.err));
+        QVERIFY(!QDir(out.path() + "/none").exists());
     }
 };
 

@@ -48,6 +48,13 @@ struct Lesson {
     std::vector<LessonStep> steps;
 };
 
+// The stage a step shows while its question is open: a question about stage K
+// waits at the stage before K (its answer comes with K's transition), except
+// an entry question, whose matrix is shown anyway.
+int askingStage(const LessonStep& step);
+// The stage a step shows once its question is answered, or all along without one.
+int revealedStage(const LessonStep& step);
+
 // Scene paths are read relative to baseDir.
 Lesson parseLesson(const std::string& text, const std::filesystem::path& baseDir);
 // Throws InputError("$", ...) when the file cannot be read.

@@ -37,6 +37,8 @@ struct StageShown {
     std::optional<Vec4<double>> cut; // world coordinates, kept where cut . p >= 0
     // Where the objects' edges and the view volume's were a stage before, drawn faint (see ghostAt).
     std::optional<Mat4<double>> ghost;
+    // A point marked as traced (world coordinates), as the app marks a vertex it traces.
+    std::optional<Vec3<double>> traced;
     // The primitives a ghost repeats.
     static bool ghosted(const Primitive& primitive);
     // Whether a world point is drawn: it has an image and is not cut away.
@@ -45,6 +47,10 @@ struct StageShown {
     bool draws(const Primitive& primitive) const;
     const Mat4<double>& matrixOf(const Primitive& primitive) const;
 };
+
+// The dot and label that mark a traced point (world coordinates), wherever it is drawn.
+Marker tracedMarker(const Vec3<double>& point);
+Label tracedLabel(const Vec3<double>& point);
 
 // A matrix divides when w is not 1 everywhere.
 bool isProjective(const Mat4<double>& m);

@@ -18,6 +18,8 @@ std::string matricesLatex(const Scene& scene, int digits);
 // One stage's matrix (stage >= 1) as "symbol = \begin{bmatrix}...\end{bmatrix}".
 std::string stageLatex(const Scene& scene, int stage, int digits);
 
+// The same without its symbol: the matrix alone (the divide's mapping as stageLatex's).
+std::string stageMatrixLatex(const Scene& scene, int stage, int digits);
 // Each stage's equation (as stageLatex) and the product of the stages so far.
 struct StageLatex {
     std::string equation, cumulative;

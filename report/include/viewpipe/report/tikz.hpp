@@ -21,6 +21,9 @@ std::string tikzFigure(const Figure& figure, Theme theme);
 // figure with its caption, through the standalone package.
 std::string tikzFiguresDocument(const std::vector<std::pair<std::string, std::string>>& figures);
 
+// Text as LaTeX sets it: its special characters escaped, the signs beyond
+// ASCII that pdflatex does not know as text written as math.
+std::string texEscaped(const std::string& text);
 // A label's text in its usual notation: "PRP" as $\mathrm{PRP}$, "u" as $u$, "front (F)" as front ($F$).
 std::string texLabel(const std::string& text);
 

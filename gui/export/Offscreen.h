@@ -1,0 +1,36 @@
+#pragma once
+// The exports' offscreen drawing: a window with the scene painter in it, and
+// a stage at rest as its picture shows it.
+#include <memory>
+#include <optional>
+#include <string>
+
+#include <vtkNew.h>
+#include <vtkRenderWindow.h>
+#include <vtkRenderer.h>
+
+#include "painter/ScenePainter.h"
+
+namespace viewpipe::gui {
+
+// An offscreen window and the scene painter in it, sized and styled as the
+// export draws: fonts and lines scale with the picture (fontScale enlarges
+// the text further, for slides).
+struct OffscreenPainter {
+    OffscreenPainter(const std::shared_ptr<const EvaluatedScene>& scene, int width, int height, int scale, Theme theme,
+                     bool transparent, double fontScale = 1);
+    vtkNew<vtkRenderWindow> window;
+    vtkNew<vtkRenderer> renderer;
+    std::unique_ptr<ScenePainter> painter;
+};
+
+// Stage k at rest as its picture shows it (the ghost of the stage before,
+// the caption, its framing or the fixed one), rendered; the stage as shown.
+StageShown showStageAtRest(const OffscreenPainter& offscreen, const EvaluatedScene& scene, int k,
+                           const std::string& caption, const std::optional<ScenePainter::Framing>& fixedFraming);
+
+// With fixed framing: one framing that holds every stage.
+std::optional<ScenePainter::Framing> fixedFramingOf(const ScenePainter& painter, const std::vector<Stage<double>>& stages,
+                                                    bool fixed);
+
+} // namespace viewpipe::gui

@@ -1,0 +1,28 @@
+#pragma once
+// A lesson on paper: the handout (one A4 page per step, the questions without
+// their answers, an answer key at the end) and 16:9 slides (one per step; a
+// question's step has a second slide with its answer), as LaTeX documents
+// that pdflatex compiles (packages: geometry, graphicx, amsmath). The
+// figures are PDF files beside the document; every number comes from the
+// lesson's scenes, so nothing here can state a wrong answer.
+#include <string>
+#include <vector>
+
+#include "viewpipe/lesson.hpp"
+
+namespace viewpipe {
+
+// A step's figure files: the view while its question is open (empty without
+// a question) and the view once answered.
+struct LessonFigures {
+    std::string asking, revealed;
+};
+
+std::string lessonHandoutLatex(const Lesson& lesson, const std::vector<LessonFigures>& figures);
+std::string lessonSlidesLatex(const Lesson& lesson, const std::vector<LessonFigures>& figures);
+
+// Text with inline math between `$` signs (`\$` a dollar sign) as LaTeX: the
+// text escaped, the math as written.
+std::string texRichText(const std::string& text);
+
+} // namespace viewpipe

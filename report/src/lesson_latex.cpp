@@ -1,0 +1,245 @@
+#include "viewpipe/report/lesson_latex.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <numeric>
+#include <sstream>
+
+#include "viewpipe/format.hpp"
+#include "viewpipe/pipeline.hpp"
+#include "viewpipe/report/latex.hpp"
+#include "viewpipe/report/tikz.hpp"
+
+namespace viewpipe {
+namespace {
+
+constexpr int kDigits = 4; // the matrices' decimals, as the app shows them
+
+// As the web page writes numbers: six significant digits, nothing below 1e-12.
+std::string number(double x)
+{
+    return std::abs(x) < 1e-12 ? "0" : formatSignificant(x, 6);
+}
+
+std::string point(const Vec3<double>& p)
+{
+    return "$(" + number(p.x()) + ", " + number(p.y()) + ", " + number(p.z()) + ")$";
+}
+
+std::string symbol(const std::string& stageSymbol)
+{
+    return "$" + cli::latexSymbol(stageSymbol) + "$";
+}
+
+// Wide matrices shrink to the line; narrow ones keep their size.
+std::string fitted(const std::string& math)
+{
+    return "\\begin{adjustbox}{max width=\\linewidth}$\\displaystyle " + math + "$\\end{adjustbox}\\par\n";
+}
+
+std::string stageSymbol(const LessonStep& step, int stage)
+{
+    return buildPipeline(step.scene.camera, step.scene.effects).stages.at(std::size_t(stage - 1)).symbol;
+}
+
+// The choices in the order the web page shows them: a scene's stage symbols
+// sorted, so that their order gives nothing away.
+std::vector<int> shownOrder(const Question& q)
+{
+    std::vector<int> order(q.choices.size());
+    std::iota(order.begin(), order.end(), 0);
+    if (q.kind == QuestionKind::WhichStage || q.kind == QuestionKind::Order)
+        std::sort(order.begin(), order.end(), [&](int a, int b) { return q.choices[std::size_t(a)] < q.choices[std::size_t(b)]; });
+    return order;
+}
+
+std::string boxes(const std::vector<std::string>& options)
+{
+    std::string out;
+    for (const std::string& option : options)
+        out += "\\quad\\mbox{$\\square$~" + option + "}";
+    return out + "\\par\n";
+}
+
+// A question as the student sees it before answering.
+std::string questionLatex(const LessonStep& step, int number)
+{
+    const Question& q = *step.question;
+    std::ostringstream out;
+    out << "\\textbf{Question " << number << ".} " << texRichText(q.prompt) << "\\par\n";
+    if (q.kind == QuestionKind::Where || q.kind == QuestionKind::SignW)
+        out << "After stage " << q.stage << ", " << symbol(stageSymbol(step, q.stage)) << ".\\par\n";
+    if (q.kind == QuestionKind::Entry)
+        out << "The matrix of stage " << q.stage << ", " << symbol(stageSymbol(step, q.stage)) << ".\\par\n";
+    const std::string blank = "\\rule{1.4cm}{0.4pt}";
+    std::vector<std::string> options;
+    switch (q.kind) {
+    case QuestionKind::Where:
+        out << "The point " << point(q.point) << " lands at\\\\ $($" << blank << ", " << blank << ", " << blank
+            << "$)$\\par\n";
+        break;
+    case QuestionKind::Inside: out << boxes({"inside the view volume", "clipped away"}); break;
+    case QuestionKind::SignW: out << "$w$ is " << boxes({"positive", "zero", "negative"}); break;
+    case QuestionKind::WhichStage:
+        out << fitted(cli::stageMatrixLatex(step.scene, q.stage, kDigits));
+        for (int k : shownOrder(q))
+            options.push_back(symbol(q.choices[std::size_t(k)]));
+        out << boxes(options);
+        break;
+    case QuestionKind::Order:
+        for (int k : shownOrder(q))
+            options.push_back(symbol(q.choices[std::size_t(k)]));
+        out << "In any order here: " << boxes(options) << "First to last: ";
+        for (std::size_t k = 0; k < q.choices.size(); ++k)
+            out << (k ? ", " : "") << "\\rule{1.5cm}{0.4pt}";
+        out << "\\par\n";
+        break;
+    case QuestionKind::Entry: out << "Entry $(" << q.row << ", " << q.column << ") = $ " << blank << "\\par\n"; break;
+    case QuestionKind::Choice:
+        for (std::size_t k = 0; k < q.choices.size(); ++k)
+            options.push_back("(" + std::string(1, char('a' + k)) + ") " + texRichText(q.choices[k]));
+        for (const std::string& option : options)
+            out << "$\\square$~" << option << "\\par\n";
+        break;
+    }
+    return out.str();
+}
+
+std::string answerLatex(const LessonStep& step)
+{
+    const Question& q = *step.question;
+    switch (q.kind) {
+    case QuestionKind::Where: return point(q.where);
+    case QuestionKind::Inside: return q.inside ? "inside the view volume" : "clipped away";
+    case QuestionKind::SignW: return std::string("$w$ is ") + (q.signW > 0 ? "positive" : q.signW < 0 ? "negative" : "zero");
+    case QuestionKind::WhichStage: return symbol(q.choices[std::size_t(q.correct)]);
+    case QuestionKind::Order: {
+        std::string out;
+        for (const std::string& choice : q.choices)
+            out += (out.empty() ? "" : ", ") + symbol(choice);
+        return out;
+    }
+    case QuestionKind::Entry:
+        return "$" + cli::entryLatex(step.scene, q.stage, q.row, q.column, 6) + "$";
+    case QuestionKind::Choice:
+        return "(" + std::string(1, char('a' + q.correct)) + ") " + texRichText(q.choices[std::size_t(q.correct)]);
+    }
+    return {};
+}
+
+// The stage's matrix a step shows once answered, if it shows one.
+std::string matrixLatex(const LessonStep& step)
+{
+    const int stage = revealedStage(step);
+    return stage > 0 ? fitted(cli::stageLatex(step.scene, stage, kDigits)) : std::string();
+}
+
+std::string answerParagraphs(const LessonStep& step)
+{
+    std::string out = "\\textbf{Answer:} " + answerLatex(step) + ".\\par\n";
+    if (!step.question->explanation.empty())
+        out += texRichText(step.question->explanation) + "\\par\n";
+    return out;
+}
+
+std::string figure(const std::string& file)
+{
+    return "\\includegraphics[width=\\linewidth]{" + file + "}\\par\n";
+}
+
+const char* kPreamble = "\\usepackage{graphicx}\n\\usepackage{amsmath}\n\\usepackage{amssymb}\n\\usepackage{adjustbox}\n"
+                        "\\setlength{\\parindent}{0pt}\n";
+
+} // namespace
+
+std::string texRichText(const std::string& text)
+{
+    std::string out, part;
+    bool math = false;
+    auto flush = [&] {
+        out += math ? "$" + part + "$" : texEscaped(part);
+        part.clear();
+    };
+    for (std::size_t k = 0; k < text.size(); ++k) {
+        if (text[k] == '\\' && k + 1 < text.size() && text[k + 1] == '$') {
+            part += math ? "\\$" : "$";
+            ++k;
+        } else if (text[k] == '$') {
+            flush();
+            math = !math;
+        } else {
+            part += text[k];
+        }
+    }
+    if (math) // an unclosed `$`: the dollar sign was meant
+        part = "$" + part, math = false;
+    flush();
+    return out;
+}
+
+std::string lessonHandoutLatex(const Lesson& lesson, const std::vector<LessonFigures>& figures)
+{
+    std::ostringstream out;
+    out << "% A ViewPipe lesson handout. Compile with pdflatex; the figures are the PDF files beside it.\n"
+        << "\\documentclass[11pt,a4paper]{article}\n\\usepackage[margin=2cm]{geometry}\n" << kPreamble
+        << "\\setlength{\\parskip}{0.5em}\n\\pagestyle{plain}\n\\begin{document}\n"
+        << "{\\Large\\bfseries " << texEscaped(lesson.title) << "\\par}\\vspace{0.5em}\n";
+    const std::size_t n = lesson.steps.size();
+    int questions = 0;
+    for (std::size_t k = 0; k < n; ++k) {
+        const LessonStep& step = lesson.steps[k];
+        out << "\\subsection*{Step " << k + 1 << " of " << n << "}\n";
+        if (step.question) {
+            out << figure(figures[k].asking) << questionLatex(step, ++questions);
+            out << "\\vspace{1em}\\textit{The step's text is in the answer key.}\\par\n";
+        } else {
+            out << figure(figures[k].revealed) << texRichText(step.caption) << "\\par\n" << matrixLatex(step);
+        }
+        out << "\\clearpage\n";
+    }
+    if (questions > 0) {
+        out << "\\section*{Answer key}\n";
+        questions = 0;
+        for (std::size_t k = 0; k < n; ++k) {
+            const LessonStep& step = lesson.steps[k];
+            if (!step.question)
+                continue;
+            out << "\\subsection*{Question " << ++questions << " (step " << k + 1 << ")}\n"
+                << answerParagraphs(step) << texRichText(step.caption) << "\\par\n" << matrixLatex(step);
+        }
+    }
+    out << "\\end{document}\n";
+    return out.str();
+}
+
+std::string lessonSlidesLatex(const Lesson& lesson, const std::vector<LessonFigures>& figures)
+{
+    std::ostringstream out;
+    out << "% A ViewPipe lesson's slides, 16:9. Compile with pdflatex; the figures are the PDF files beside it.\n"
+        << "\\documentclass[11pt]{article}\n"
+        << "\\usepackage[paperwidth=160mm,paperheight=90mm,margin=4mm,includefoot=false]{geometry}\n" << kPreamble
+        << "\\renewcommand{\\familydefault}{\\sfdefault}\n\\pagestyle{empty}\n\\begin{document}\n";
+    const std::size_t n = lesson.steps.size();
+    const std::string title = texEscaped(lesson.title);
+    // The figure at the left, `side` beside it, `below` under both.
+    auto slide = [&](std::size_t k, const std::string& file, const std::string& side, const std::string& below) {
+        out << "{\\footnotesize\\textbf{" << title << "}\\hfill Step " << k + 1 << " of " << n << "}\\par\\vspace{1mm}\n"
+            << "\\begin{minipage}[t]{0.63\\linewidth}\\vspace{0pt}" << figure(file) << "\\end{minipage}\\hfill\n"
+            << "\\begin{minipage}[t]{0.35\\linewidth}\\vspace{0pt}\\footnotesize\\setlength{\\parskip}{0.4em}\n"
+            << side << "\\end{minipage}\\par\\vspace{1mm}\n{\\small " << below << "\\par}\n\\clearpage\n";
+    };
+    int questions = 0;
+    for (std::size_t k = 0; k < n; ++k) {
+        const LessonStep& step = lesson.steps[k];
+        if (step.question) {
+            slide(k, figures[k].asking, questionLatex(step, ++questions), "");
+            slide(k, figures[k].revealed, answerParagraphs(step) + matrixLatex(step), texRichText(step.caption));
+        } else {
+            slide(k, figures[k].revealed, matrixLatex(step), texRichText(step.caption));
+        }
+    }
+    out << "\\end{document}\n";
+    return out.str();
+}
+
+} // namespace viewpipe
