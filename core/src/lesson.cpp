@@ -277,3 +277,154 @@ Lesson loadLesson(const std::filesystem::path& file)
 }
 
 } // namespace viewpipe
+
+namespace viewpipe {
+namespace {
+
+using namespace fields;
+
+Json vecJson(const Vec3<double>& v)
+{
+    return Json::array({v.x(), v.y(), v.z()});
+}
+
+Json questionJson(const Question& q)
+{
+    Json j = {{"kind", questionKindName(q.kind)}, {"prompt", q.prompt}};
+    switch (q.kind) {
+    case QuestionKind::Where:
+        j.update({{"point", vecJson(q.point)}, {"after", q.stage}, {"tolerance", q.tolerance}});
+        break;
+    case QuestionKind::Inside: j["point"] = vecJson(q.point); break;
+    case QuestionKind::SignW: j.update({{"point", vecJson(q.point)}, {"after", q.stage}}); break;
+    case QuestionKind::WhichStage: j["stage"] = q.stage; break;
+    case QuestionKind::Order: break;
+    case QuestionKind::Entry: j.update({{"stage", q.stage}, {"row", q.row}, {"column", q.column}}); break;
+    case QuestionKind::Choice: j.update({{"choices", q.choices}, {"answer", q.correct}}); break;
+    }
+    if (!q.explanation.empty())
+        j["explanation"] = q.explanation;
+    return j;
+}
+
+} // namespace
+
+bool isRight(const Question& q, const Answer& a)
+{
+    switch (q.kind) {
+    case QuestionKind::Where:
+        return a.where.allFinite() && (a.where - q.where).norm() <= q.tolerance * std::max(1.0, q.where.norm());
+    case QuestionKind::Inside: return a.inside == q.inside;
+    case QuestionKind::SignW: return a.signW == q.signW;
+    case QuestionKind::WhichStage:
+    case QuestionKind::Choice: return a.choice == q.correct;
+    case QuestionKind::Order: {
+        std::vector<int> inOrder(q.choices.size());
+        for (std::size_t k = 0; k < inOrder.size(); ++k)
+            inOrder[k] = int(k);
+        return a.order == inOrder;
+    }
+    case QuestionKind::Entry: return std::isfinite(a.entry) && std::abs(a.entry - q.entry) <= 5e-3 * std::abs(q.entry) + 1e-9;
+    }
+    return false;
+}
+
+std::optional<double> parseTypedNumber(const std::string& typed)
+{
+    std::string text;
+    for (std::size_t k = 0; k < typed.size(); ++k) {
+        if (typed.compare(k, 3, "\u2212") == 0) { // the typeset minus
+            text += '-';
+            k += 2;
+        } else if (typed[k] != ' ' && typed[k] != '\t') {
+            text += typed[k];
+        }
+    }
+    auto number = [](const std::string& part) -> std::optional<double> {
+        if (part.empty())
+            return std::nullopt;
+        std::size_t used = 0;
+        try {
+            const double x = std::stod(part, &used);
+            if (used == part.size() && std::isfinite(x))
+                return x;
+        } catch (const std::exception&) {
+        }
+        return std::nullopt;
+    };
+    const std::size_t slash = text.find('/');
+    if (slash == std::string::npos)
+        return number(text);
+    const auto top = number(text.substr(0, slash)), bottom = number(text.substr(slash + 1));
+    if (!top || !bottom || *bottom == 0 || !std::isfinite(*top / *bottom))
+        return std::nullopt;
+    return *top / *bottom;
+}
+
+std::string resultsToJson(const Lesson& lesson, const std::vector<std::optional<Answer>>& answers)
+{
+    Json entries = Json::array();
+    for (std::size_t k = 0; k < lesson.steps.size() && k < answers.size(); ++k) {
+        const std::optional<Question>& q = lesson.steps[k].question;
+        const std::optional<Answer>& a = answers[k];
+        if (!q || !a)
+            continue;
+        Json given;
+        switch (q->kind) {
+        case QuestionKind::Where: given = vecJson(a->where); break;
+        case QuestionKind::Inside: given = a->inside; break;
+        case QuestionKind::SignW: given = a->signW > 0 ? "positive" : a->signW < 0 ? "negative" : "zero"; break;
+        case QuestionKind::WhichStage:
+            given = a->choice >= 0 && a->choice < int(q->choices.size()) ? Json(q->choices[std::size_t(a->choice)]) : Json();
+            break;
+        case QuestionKind::Order:
+            given = Json::array();
+            for (int c : a->order)
+                given.push_back(q->choices.at(std::size_t(c)));
+            break;
+        case QuestionKind::Entry: given = a->entry; break;
+        case QuestionKind::Choice: given = a->choice; break;
+        }
+        entries.push_back({{"step", k + 1}, {"kind", questionKindName(q->kind)}, {"answer", given}, {"correct", isRight(*q, *a)}});
+    }
+    return Json{{"lesson", lesson.title}, {"answers", entries}}.dump(2) + "\n";
+}
+
+std::string lessonToJson(const Lesson& lesson, const std::filesystem::path& baseDir)
+{
+    Json steps = Json::array();
+    for (const LessonStep& step : lesson.steps) {
+        Json entry;
+        if (!step.scene.file.empty()) {
+            entry["scene"] = std::filesystem::proximate(step.scene.file, baseDir).generic_string();
+        } else {
+            Scene inline_ = step.scene;
+            for (SceneObject& object : inline_.objects)
+                if (object.type == ObjectType::Mesh)
+                    object.path = std::filesystem::proximate(object.resolvedPath, baseDir).generic_string();
+            entry["scene"] = Json::parse(sceneToJson(inline_));
+        }
+        entry["stage"] = step.stage;
+        if (step.yaw != 0 || step.pitch != 0 || step.zoom != 1)
+            entry["camera"] = {{"yaw", step.yaw}, {"pitch", step.pitch}, {"zoom", step.zoom}};
+        entry["caption"] = step.caption;
+        if (step.trace)
+            entry["trace"] = vecJson(*step.trace);
+        if (step.question)
+            entry["question"] = questionJson(*step.question);
+        steps.push_back(entry);
+    }
+    return Json{{"title", lesson.title}, {"steps", steps}}.dump(2) + "\n";
+}
+
+Question parseQuestion(const std::string& text, const Scene& scene)
+{
+    return readQuestion(parseJson(text), "question", buildPipeline(scene.camera, scene.effects));
+}
+
+std::string questionToJson(const Question& question)
+{
+    return questionJson(question).dump(2);
+}
+
+} // namespace viewpipe

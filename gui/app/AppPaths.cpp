@@ -2,10 +2,22 @@
 
 namespace viewpipe::gui {
 
-QString scenesDirectory()
+namespace {
+QString dataDirectory()
 {
     const QByteArray data = qgetenv("VIEWPIPE_DATA");
-    return (data.isEmpty() ? QString(VIEWPIPE_DATA_DIR) : QString::fromLocal8Bit(data)) + "/scenes";
+    return data.isEmpty() ? QString(VIEWPIPE_DATA_DIR) : QString::fromLocal8Bit(data);
+}
+} // namespace
+
+QString scenesDirectory()
+{
+    return dataDirectory() + "/scenes";
+}
+
+QString lessonsDirectory()
+{
+    return dataDirectory() + "/lessons";
 }
 
 } // namespace viewpipe::gui

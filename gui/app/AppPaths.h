@@ -6,5 +6,7 @@ namespace viewpipe::gui {
 
 // The built-in scenes: $VIEWPIPE_DATA/scenes if set, else the source tree's data/scenes.
 QString scenesDirectory();
+// The built-in lessons: data/lessons, beside the scenes.
+QString lessonsDirectory();
 
 } // namespace viewpipe::gui

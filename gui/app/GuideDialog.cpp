@@ -162,6 +162,21 @@ every stage as PNG, SVG or PDF pictures, the matrices as LaTeX and JSON, and on
 request an MP4 animation, into a folder of your pictures. <b>Edit</b> copies the
 current matrix as LaTeX or the world view as an image.</p>
 
+<h3>Lessons</h3>
+<p><b>Lesson &#9656; Built-in Lessons</b> or <b>Open Lesson</b> (Ctrl+L) opens a
+lesson in the Lesson panel: each step shows its scene, stage and view with a
+caption. A step with a question waits at the stage before the one it asks
+about, with the stage names, the matrices and the caption hidden: type the
+coordinates or the entry (fractions such as -2/21 are fine), click a choice,
+or put the stages in order, then <b>Check</b> (Enter). The answer comes with
+the transition to the stage and its explanation; <b>Show Answer</b> reveals it
+without one. <b>Save My Answers</b> writes your answers and whether each was
+right. Page Down goes on (a question first shows its answer), Page Up back;
+in present mode (F5) the lesson stays beside the views. <b>Edit the lesson</b>
+in the panel adds the current view as a step, reorders steps and edits the
+title, the caption and the question (as JSON, checked as the file is);
+<b>Lesson &#9656; Save Lesson</b> writes it.</p>
+
 <h3>Themes and text size</h3>
 <p><b>View &#9656; Dark Theme</b> suits the screen, <b>Light Theme</b> slides
 and print; exports choose their own theme. <b>Larger Text</b> and <b>Smaller
@@ -170,6 +185,9 @@ Text</b> change the size of all text, in the views too.</p>
 <h3>Keys</h3>
 <table cellspacing="0" cellpadding="3">
 <tr><td><b>Left</b> / <b>Right</b></td><td>previous / next stage</td></tr>
+<tr><td><b>Page Up</b> / <b>Page Down</b></td><td>previous / next lesson step (or stage without a lesson)</td></tr>
+<tr><td><b>F5</b></td><td>present; then Space and Backspace step, B blacks out, Esc leaves</td></tr>
+<tr><td><b>Ctrl+L</b></td><td>open a lesson</td></tr>
 <tr><td><b>Ctrl+Z</b></td><td>undo</td></tr>
 <tr><td><b>Ctrl+Shift+Z</b> or <b>Ctrl+Y</b></td><td>redo</td></tr>
 <tr><td><b>P</b></td><td>show or hide the projected view</td></tr>

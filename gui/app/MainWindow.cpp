@@ -9,6 +9,7 @@
 #include <QDockWidget>
 #include <QFileDialog>
 #include <QFileInfo>
+#include <QGroupBox>
 #include <QRegularExpression>
 #include <QHBoxLayout>
 #include <QLabel>
@@ -47,6 +48,8 @@
 #include "DepthPanel.h"
 #include "ExportDialog.h"
 #include "GuideDialog.h"
+#include "LessonDocument.h"
+#include "LessonPanel.h"
 #include "viewpipe/report/latex.hpp"
 #include "MatrixPanel.h"
 #include "CodePanel.h"
@@ -62,7 +65,8 @@ constexpr int kMaxRecent = 8;
 } // namespace
 
 MainWindow::MainWindow(QWidget* parent)
-    : QMainWindow(parent), document_(new Document(this)), autosave_(new Autosave(document_, this))
+    : QMainWindow(parent), document_(new Document(this)), autosave_(new Autosave(document_, this)),
+      lesson_(new LessonDocument(this))
 {
     setObjectName("ViewPipeMainWindow");
     setAcceptDrops(true);
@@ -95,6 +99,8 @@ MainWindow::MainWindow(QWidget* parent)
 
     connect(document_, &Document::changed, this, &MainWindow::onDocumentChanged);
     connect(document_, &Document::fileChanged, this, &MainWindow::updateTitle);
+    connect(lesson_, &LessonDocument::lessonChanged, this, &MainWindow::updateTitle);
+    connect(lesson_, &LessonDocument::stepChanged, this, &MainWindow::showLessonStep);
     connect(parameters_, &ParameterPanel::cameraEdited, this, &MainWindow::onCameraEdited);
     connect(code_, &CodePanel::cameraEdited, this,
             [this](const CameraSpec<double>& camera, const QString& field, int gesture) {
@@ -167,6 +173,11 @@ void MainWindow::buildDocks()
     stageList_->setWordWrap(true);
     stageList_->setToolTip(tr("The stages of the normalizing transformation: pick one to see the scene after its matrix"));
     v->addWidget(stageList_);
+    stagesWait_ = new QLabel(tr("<i>The stages' names follow the answer to the lesson's question.</i>"));
+    stagesWait_->setObjectName("stagesWait");
+    stagesWait_->setWordWrap(true);
+    stagesWait_->hide();
+    v->addWidget(stagesWait_);
     slider_ = new QSlider(Qt::Horizontal);
     slider_->setObjectName("stageSlider");
     slider_->setPageStep(1);
@@ -212,11 +223,11 @@ void MainWindow::buildDocks()
     // Backspace and B would get in the way of typing: only while presenting.
     for (const auto& [key, step] : {std::pair{Qt::Key_PageDown, 1}, std::pair{Qt::Key_PageUp, -1}}) {
         auto* shortcut = new QShortcut(QKeySequence(key), this);
-        connect(shortcut, &QShortcut::activated, this, [this, step = step] { goToStage(target_ + step); });
+        connect(shortcut, &QShortcut::activated, this, [this, step = step] { advance(step); });
     }
     for (const auto& [key, step] : {std::pair{Qt::Key_Space, 1}, std::pair{Qt::Key_Backspace, -1}}) {
         auto* shortcut = new QShortcut(QKeySequence(key), this);
-        connect(shortcut, &QShortcut::activated, this, [this, step = step] { goToStage(target_ + step); });
+        connect(shortcut, &QShortcut::activated, this, [this, step = step] { advance(step); });
         presentingKeys_.append(shortcut);
     }
     auto* black = new QShortcut(QKeySequence(Qt::Key_B), this);
@@ -273,6 +284,18 @@ void MainWindow::buildDocks()
     tabifyDockWidget(matrixDock, accuracyDock);
     tabifyDockWidget(matrixDock, depthDock);
     matrixDock->raise();
+    // The lesson under the stages, shown while a lesson is open.
+    lessonPanel_ = new LessonPanel(lesson_);
+    QDockWidget* lessonDock = dock(tr("Lesson"), "lessonDock", lessonPanel_, Qt::LeftDockWidgetArea);
+    lessonDock->hide();
+    connect(lessonPanel_, &LessonPanel::addStepRequested, this, &MainWindow::addLessonStepFromView);
+    connect(lessonPanel_, &LessonPanel::message, this, &MainWindow::showMessage);
+    connect(lessonPanel_, &LessonPanel::saveResultsRequested, this, [this] {
+        const QString path = QFileDialog::getSaveFileName(this, tr("Save my answers"), "lesson-results.json",
+                                                          tr("Results (*.json)"));
+        if (!path.isEmpty())
+            saveLessonResults(path);
+    });
     fitDocksToText();
 }
 
@@ -408,6 +431,47 @@ void MainWindow::buildMenus()
     view->addAction(tr("&Smaller Text"), this, [this] { setFontSize(fontSize_ - 2); }, QKeySequence::ZoomOut);
 
     buildEffectsMenu();
+
+    QMenu* lessonMenu = menuBar()->addMenu(tr("&Lesson"));
+    lessonMenu->addAction(tr("&Open Lesson…"), this, [this] {
+        if (!confirmDiscardLesson())
+            return;
+        const QString path = QFileDialog::getOpenFileName(this, tr("Open lesson"), lessonsDirectory(), tr("Lessons (*.json)"));
+        if (!path.isEmpty())
+            openLesson(path);
+    }, QKeySequence(Qt::CTRL | Qt::Key_L));
+    QMenu* builtIn = lessonMenu->addMenu(tr("&Built-in Lessons"));
+    for (const QFileInfo& info : QDir(lessonsDirectory()).entryInfoList({"*.json"}, QDir::Files, QDir::Name)) {
+        QString title = info.completeBaseName();
+        try {
+            title = QString::fromStdString(loadLesson(info.absoluteFilePath().toStdString()).title);
+        } catch (const InputError&) {
+            continue; // a broken lesson is not offered
+        }
+        builtIn->addAction(title, this, [this, path = info.absoluteFilePath()] {
+            if (confirmDiscardLesson())
+                openLesson(path);
+        });
+    }
+    lessonMenu->addAction(tr("&New Lesson From View"), this, [this] {
+        if (confirmDiscardLesson())
+            newLessonFromView();
+    });
+    lessonMenu->addSeparator();
+    // These need a lesson open.
+    const QList<QAction*> withLesson = {
+        lessonMenu->addAction(tr("&Save Lesson"), this, [this] { saveLessonAs(); }),
+        lessonMenu->addAction(tr("Save Lesson &As…"), this, [this] { saveLessonAs(true); }),
+        lessonMenu->addAction(tr("Add Step From &View"), this, &MainWindow::addLessonStepFromView),
+        lessonMenu->addAction(tr("Save My &Answers…"), lessonPanel_, &LessonPanel::saveResultsRequested),
+        lessonMenu->addAction(tr("&Close Lesson"), this, [this] {
+            if (confirmDiscardLesson())
+                lesson_->close();
+        })};
+    connect(lessonMenu, &QMenu::aboutToShow, this, [this, withLesson] {
+        for (QAction* action : withLesson)
+            action->setEnabled(lesson_->isOpen());
+    });
 
     QMenu* help = menuBar()->addMenu(tr("&Help"));
     help->addAction(tr("&Guide"), this, [this] { GuideDialog::showFor(this); }, QKeySequence::HelpContents);
@@ -545,7 +609,7 @@ bool MainWindow::openScene(const QString& path)
     return openScene(scene, path);
 }
 
-bool MainWindow::openScene(const Scene& scene, const QString& path)
+bool MainWindow::openScene(const Scene& scene, const QString& path, bool remember)
 {
     try {
         {
@@ -558,7 +622,7 @@ bool MainWindow::openScene(const Scene& scene, const QString& path)
         traceVertex(std::nullopt);
         accuracy_->clear();
         refreshWidgets();
-        if (!path.isEmpty())
+        if (remember && !path.isEmpty())
             addRecent(QFileInfo(path).absoluteFilePath());
         painter_->resetView();
         goToStage(0, false);
@@ -722,7 +786,8 @@ void MainWindow::showRestingStage()
 
 void MainWindow::updateCaptions()
 {
-    painter_->setCaptions(stageCaption(*document_->evaluated(), std::size_t(stage_), StageText::Caption),
+    painter_->setCaptions(hidesAnswers() ? std::string()
+                                         : stageCaption(*document_->evaluated(), std::size_t(stage_), StageText::Caption),
                           tr("What the camera sees").toStdString());
 }
 
@@ -732,6 +797,14 @@ void MainWindow::updateStageWidgets()
     const QSignalBlocker blockSlider(slider_);
     stageList_->setCurrentRow(target_);
     slider_->setValue(target_);
+    // A question waits: the stages' names and matrices would answer it.
+    const bool waiting = hidesAnswers();
+    stageList_->setVisible(!waiting);
+    stagesWait_->setVisible(waiting);
+    if (waiting) {
+        matrices_->showWaiting(tr("<i>The matrices follow the answer to the lesson's question.</i>"));
+        return;
+    }
     matrices_->showStage(document_->pipeline(), stage_);
     matrices_->showTrace(document_->pipeline(), traced_, stage_);
 }
@@ -763,7 +836,8 @@ void MainWindow::setPresenting(bool on, QScreen* screen)
         presentation_ =
             Presentation{saveState(), saveGeometry(), windowState(), painter_->theme(), fontSize_, QApplication::font()};
         for (QDockWidget* dock : findChildren<QDockWidget*>())
-            dock->hide();
+            if (dock->objectName() != "lessonDock") // a lesson's caption and questions stay in view
+                dock->hide();
         menuBar()->hide();
         statusBar()->hide();
         setTheme(Theme::Light); // black on white carries best on a projector
@@ -789,6 +863,8 @@ void MainWindow::setPresenting(bool on, QScreen* screen)
     }
     for (QShortcut* shortcut : presentingKeys_)
         shortcut->setEnabled(on);
+    // A class sees the lesson, not its editing.
+    lessonPanel_->findChild<QGroupBox*>("lessonEditor")->setVisible(!on);
     renderNow();
 }
 
@@ -839,7 +915,12 @@ void MainWindow::setProjectedViewVisible(bool visible)
 void MainWindow::updateTitle()
 {
     const QString name = document_->filePath().isEmpty() ? tr("untitled") : QFileInfo(document_->filePath()).fileName();
-    setWindowTitle(QString("%1%2 — ViewPipe").arg(name, document_->isModified() ? "*" : ""));
+    QString lesson;
+    if (lesson_->isOpen())
+        lesson = tr("lesson %1%2 — ")
+                     .arg(lesson_->filePath().isEmpty() ? tr("untitled") : QFileInfo(lesson_->filePath()).fileName(),
+                          lesson_->isModified() ? "*" : "");
+    setWindowTitle(QString("%1%2 — %3ViewPipe").arg(name, document_->isModified() ? "*" : "", lesson));
 }
 
 void MainWindow::showMessage(const QString& text)
@@ -869,7 +950,7 @@ bool MainWindow::confirmDiscard()
 
 void MainWindow::closeEvent(QCloseEvent* event)
 {
-    if (confirmDiscard())
+    if (confirmDiscardLesson() && confirmDiscard())
         event->accept();
     else
         event->ignore();
@@ -1051,6 +1132,166 @@ void MainWindow::traceVertex(const std::optional<Vec3<double>>& point)
     painter_->markTraced(traced_);
     matrices_->showTrace(document_->pipeline(), traced_, stage_);
     renderNow();
+}
+
+} // namespace viewpipe::gui
+
+namespace viewpipe::gui {
+
+bool MainWindow::hidesAnswers() const
+{
+    return lesson_->isAsking();
+}
+
+bool MainWindow::openLesson(const QString& path)
+{
+    try {
+        lesson_->open(path);
+    } catch (const InputError& e) {
+        showMessage(tr("Cannot open the lesson %1: %2").arg(path, QString::fromStdString(e.what())));
+        return false;
+    }
+    return true;
+}
+
+void MainWindow::showLessonStep()
+{
+    auto* dock = findChild<QDockWidget*>("lessonDock");
+    if (!lesson_->isOpen()) {
+        shownLessonStep_ = -1;
+        dock->hide();
+        updateStageWidgets();
+        updateCaptions();
+        renderNow();
+        return;
+    }
+    if (!dock->isVisible() && !isPresenting()) {
+        dock->show();
+        // The lesson's text and questions get the room; the stage list needs little.
+        resizeDocks({findChild<QDockWidget*>("stagesDock"), dock}, {height() / 3, 2 * height() / 3}, Qt::Vertical);
+    }
+    dock->show();
+    dock->raise();
+    const int k = lesson_->step();
+    const LessonStep& step = lesson_->currentStep();
+    const bool newStep = k != shownLessonStep_; // otherwise its question was just answered or revealed
+    const bool sameScene = sceneToJson(step.scene) == sceneToJson(document_->scene());
+    if (!sameScene) {
+        if (!confirmDiscard())
+            return;
+        if (!openScene(step.scene, QString::fromStdString(step.scene.file.string()), false))
+            return;
+    }
+    shownLessonStep_ = k;
+    if (newStep || !sameScene) {
+        painter_->resetView();
+        painter_->orbit(step.yaw, step.pitch, step.zoom);
+        traceVertex(step.trace);
+    }
+    const bool revealed = !step.question || lesson_->isRevealed(k);
+    if (revealed && step.question && !newStep &&
+        (step.question->kind == QuestionKind::Where || step.question->kind == QuestionKind::Inside ||
+         step.question->kind == QuestionKind::SignW))
+        traceVertex(step.question->point); // the point asked about, followed through the stages
+    const int stage = revealed ? revealedStage(step) : askingStage(step);
+    // The answer comes with the transition to the stage asked about; a step to the next stage plays it too.
+    goToStage(stage, sameScene && (!newStep || std::abs(stage - target_) == 1));
+    updateStageWidgets();
+    updateCaptions();
+    renderNow();
+}
+
+LessonStep MainWindow::stepFromView() const
+{
+    LessonStep step;
+    step.scene = document_->scene();
+    // A scene with unsaved changes goes into the lesson itself, not as its file.
+    step.scene.file = document_->isModified() || document_->filePath().isEmpty()
+                          ? std::filesystem::path()
+                          : std::filesystem::path(QFileInfo(document_->filePath()).absoluteFilePath().toStdString());
+    step.stage = target_;
+    const ScenePainter::Orbit orbit = painter_->orbitAngles();
+    // Readable numbers in the file: a tenth of a degree, a thousandth of the zoom.
+    step.yaw = std::clamp(std::round(orbit.yaw * 10) / 10, -180.0, 180.0);
+    step.pitch = std::clamp(std::round(orbit.pitch * 10) / 10, -89.0, 89.0);
+    step.zoom = std::clamp(std::round(orbit.zoom * 1000) / 1000, 0.1, 20.0);
+    step.caption = stageCaption(*document_->evaluated(), std::size_t(target_), StageText::Caption);
+    step.trace = traced_;
+    return step;
+}
+
+void MainWindow::newLessonFromView()
+{
+    lesson_->create(tr("A new lesson").toStdString(), stepFromView());
+    findChild<QGroupBox*>("lessonEditor")->setChecked(true);
+}
+
+void MainWindow::addLessonStepFromView()
+{
+    if (!lesson_->isOpen())
+        return newLessonFromView();
+    try {
+        // The step's view is the one on screen: no new camera for it.
+        shownLessonStep_ = lesson_->step() + 1;
+        lesson_->insertStep(lesson_->step() + 1, stepFromView());
+    } catch (const InputError& e) {
+        shownLessonStep_ = lesson_->step();
+        showMessage(tr("Cannot add the step: %1").arg(QString::fromStdString(e.what())));
+    }
+}
+
+bool MainWindow::saveLesson(const QString& path)
+{
+    try {
+        lesson_->save(path);
+        statusBar()->showMessage(tr("Saved %1").arg(path), 5000);
+        return true;
+    } catch (const InputError& e) {
+        showMessage(tr("Cannot save the lesson: %1").arg(QString::fromStdString(e.what())));
+        return false;
+    }
+}
+
+bool MainWindow::saveLessonAs(bool askForName)
+{
+    QString path = lesson_->filePath();
+    // A built-in lesson is a copy's starting point, not a file to overwrite.
+    if (askForName || path.isEmpty() || QFileInfo(path).absolutePath() == QDir(lessonsDirectory()).absolutePath())
+        path = QFileDialog::getSaveFileName(this, tr("Save lesson"), path.isEmpty() ? "lesson.json" : QFileInfo(path).fileName(),
+                                            tr("Lessons (*.json)"));
+    return !path.isEmpty() && saveLesson(path);
+}
+
+bool MainWindow::saveLessonResults(const QString& path)
+{
+    try {
+        lesson_->saveResults(path);
+        statusBar()->showMessage(tr("Saved your answers to %1").arg(path), 5000);
+        return true;
+    } catch (const InputError& e) {
+        showMessage(tr("Cannot save the answers: %1").arg(QString::fromStdString(e.what())));
+        return false;
+    }
+}
+
+bool MainWindow::confirmDiscardLesson()
+{
+    if (!lesson_->isModified())
+        return true;
+    const auto answer = QMessageBox::question(this, tr("Unsaved lesson"), tr("The lesson has unsaved changes. Save them first?"),
+                                              QMessageBox::Save | QMessageBox::Discard | QMessageBox::Cancel);
+    if (answer == QMessageBox::Save)
+        return saveLessonAs();
+    return answer == QMessageBox::Discard;
+}
+
+void MainWindow::advance(int by)
+{
+    if (!lesson_->isOpen())
+        return goToStage(target_ + by);
+    if (by > 0 && lesson_->isAsking())
+        return lesson_->reveal();
+    lesson_->goTo(lesson_->step() + by);
 }
 
 } // namespace viewpipe::gui

@@ -13,6 +13,7 @@
 #include <optional>
 
 #include "Document.h"
+#include "viewpipe/lesson.hpp"
 #include "export/Exporter.h"
 #include "painter/ScenePainter.h"
 #include "painter/StageTransition.h"
@@ -35,6 +36,8 @@ namespace viewpipe::gui {
 
 class AccuracyPanel;
 class Autosave;
+class LessonDocument;
+class LessonPanel;
 class DepthPanel;
 class MatrixPanel;
 class CodePanel;
@@ -48,8 +51,8 @@ public:
 
     // Opens a scene file; on failure shows the reason and keeps the current scene.
     bool openScene(const QString& path);
-    // The same for a scene already read from `path`.
-    bool openScene(const Scene& scene, const QString& path);
+    // The same for a scene already read from `path`; `remember` lists it under Open Recent.
+    bool openScene(const Scene& scene, const QString& path, bool remember = true);
     bool saveScene(const QString& path);
     // At start: offers the newest scene autosaved by a session that crashed;
     // returns true when it was recovered (open, with its changes unsaved).
@@ -83,6 +86,23 @@ public:
 
     // Follows a world point through the stages in the Matrices panel (a click on a vertex does this).
     void traceVertex(const std::optional<Vec3<double>>& point);
+
+    // Lessons (Lesson menu): opening one shows its first step, each step its
+    // scene, stage and world view; a question waits at the stage before the
+    // one it asks about, with the stage names, matrices and captions hidden,
+    // until it is answered or revealed. Failures are shown, not thrown.
+    bool openLesson(const QString& path);
+    bool saveLesson(const QString& path);
+    bool saveLessonResults(const QString& path);
+    // A new lesson whose first step is the current view.
+    void newLessonFromView();
+    // The current view as a step after the one shown.
+    void addLessonStepFromView();
+    // The clicker: with a lesson open, the next step (a question not answered
+    // yet is revealed first) or the one before; otherwise the next or previous stage.
+    void advance(int by);
+    LessonDocument* lesson() { return lesson_; }
+    LessonPanel* lessonPanel() { return lessonPanel_; }
 
     // Whether errors also open a message box (besides the status bar).
     void setPopupsEnabled(bool enabled) { popups_ = enabled; }
@@ -148,9 +168,19 @@ private:
     void rebuildRecentMenu();
     void rebuildPresetMenu();
     void pickAt(int x, int y);
+    void showLessonStep();
+    // The scene, stage and world view now, as a lesson step.
+    LessonStep stepFromView() const;
+    bool confirmDiscardLesson();
+    bool saveLessonAs(bool askForName = false);
+    // While a lesson's question waits: no stage names, matrices or captions.
+    bool hidesAnswers() const;
 
     Document* document_;
     Autosave* autosave_;
+    LessonDocument* lesson_;
+    LessonPanel* lessonPanel_ = nullptr;
+    int shownLessonStep_ = -1; // the step whose view is set up
     std::unique_ptr<ScenePainter> painter_;
     QVTKOpenGLNativeWidget* worldWidget_ = nullptr;
     QVTKOpenGLNativeWidget* projectedWidget_ = nullptr;
@@ -160,6 +190,7 @@ private:
     vtkRenderer* projectedRenderer_ = nullptr;
 
     QListWidget* stageList_ = nullptr;
+    QLabel* stagesWait_ = nullptr; // in the list's place while a lesson's question waits
     QSlider* slider_ = nullptr;
     QPushButton* playButton_ = nullptr;
     MatrixPanel* matrices_ = nullptr;

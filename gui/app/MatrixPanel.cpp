@@ -43,6 +43,11 @@ std::array<QString, 16> numbers(const Mat4<double>& m)
 
 } // namespace
 
+QString matrixTable(const QString& caption, const Mat4<double>& m)
+{
+    return table(caption, numbers(m));
+}
+
 MatrixPanel::MatrixPanel(QWidget* parent) : QWidget(parent)
 {
     auto* layout = new QVBoxLayout(this);
@@ -129,6 +134,13 @@ void MatrixPanel::showTrace(const Pipeline<double>& pipeline, const std::optiona
                                                          number(t.divided->z()));
     html += t.inside ? tr("inside the canonical volume.") : tr("outside the canonical volume.");
     trace_->setText(html);
+}
+
+void MatrixPanel::showWaiting(const QString& why)
+{
+    title_->setText(why);
+    matrices_->clear();
+    trace_->clear();
 }
 
 QString MatrixPanel::traceText() const

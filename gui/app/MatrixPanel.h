@@ -14,6 +14,9 @@ class QLabel;
 
 namespace viewpipe::gui {
 
+// A matrix in numbers as an HTML table under its caption, as the panel shows one.
+QString matrixTable(const QString& caption, const Mat4<double>& m);
+
 class MatrixPanel : public QWidget {
     Q_OBJECT
 public:
@@ -22,6 +25,8 @@ public:
     // stage 0 is the world (no matrix yet); stage k shows pipeline.stages[k-1].
     void showStage(const Pipeline<double>& pipeline, int stage);
     void showTrace(const Pipeline<double>& pipeline, const std::optional<Vec3<double>>& point, int stage);
+    // No matrix, and why (a lesson's question waits for its answer).
+    void showWaiting(const QString& why);
 
     QString stageText() const;
     QString traceText() const;

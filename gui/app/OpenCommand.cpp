@@ -17,7 +17,9 @@
 
 #include "AccuracyPanel.h"
 #include "AppPaths.h"
+#include "LessonDocument.h"
 #include "MainWindow.h"
+#include "viewpipe/lesson.hpp"
 #include "viewpipe/scene.hpp"
 
 namespace viewpipe::gui {
@@ -32,6 +34,13 @@ int runOpen(int argc, char** argv, const OpenOptions& options)
     if (options.stage < 0 || options.stage > stages)
         throw InputError("--stage", "must lie between 0 and " + std::to_string(stages) + " (got " +
                                         std::to_string(options.stage) + ")");
+
+    if (!options.lesson.empty()) {
+        const Lesson lesson = loadLesson(options.lesson);
+        if (options.step < 1 || options.step > int(lesson.steps.size()))
+            throw InputError("--step", "must lie between 1 and " + std::to_string(lesson.steps.size()) + " (got " +
+                                           std::to_string(options.step) + ")");
+    }
 
     QSurfaceFormat::setDefaultFormat(QVTKOpenGLNativeWidget::defaultFormat());
     QApplication::setOrganizationName("ViewPipe");
@@ -62,6 +71,17 @@ int runOpen(int argc, char** argv, const OpenOptions& options)
     if (!screenshot)
         window.offerRecovery();
     window.goToStage(options.stage, false);
+    if (!options.lesson.empty()) {
+        if (!window.openLesson(QString::fromStdString(options.lesson))) {
+            std::cerr << window.lastMessage().toStdString() << "\n";
+            return 2;
+        }
+        window.lesson()->goTo(options.step - 1);
+        if (options.reveal)
+            window.lesson()->reveal();
+    }
+    if (options.present)
+        window.setPresenting(true);
     if (!options.panel.empty())
         window.showPanel(QString::fromStdString(options.panel));
     if (!screenshot)
@@ -73,7 +93,9 @@ int runOpen(int argc, char** argv, const OpenOptions& options)
         wait.exec();
     }
 
-    // Let the window reach its size and the GL views their first frames.
+    // Let the window reach its size, a step's transition end and the GL views draw their frames.
+    while (window.isAnimating())
+        app.processEvents(QEventLoop::WaitForMoreEvents, 50);
     for (int i = 0; i < 5; ++i) {
         app.processEvents();
         window.renderNow();

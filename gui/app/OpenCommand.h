@@ -15,6 +15,10 @@ struct OpenOptions {
     int width = 0, height = 0;  // 0: 1600x950 for a screenshot, else as large as that fits the screen
     std::optional<std::string> theme; // "dark" or "light"; default: the user's setting
     std::string panel;                // "matrices", "parameters" or "accuracy" (measured first): shown in front
+    std::string lesson;               // a lesson to open, at `step` (from 1), its question revealed or not
+    int step = 1;
+    bool reveal = false;
+    bool present = false;             // full screen, as View > Present
 };
 
 // Returns the process exit code. Throws InputError for bad input.

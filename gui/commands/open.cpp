@@ -42,6 +42,10 @@ void addOpenCommand(CLI::App& app, int argc, char** argv)
     command->add_option("--theme", options->theme, "dark or light")->check(CLI::IsMember({"dark", "light"}));
     command->add_option("--panel", open.panel, "Dock in front: stages, matrices, parameters, code (below the parameters), accuracy (measured) or depth")
         ->check(CLI::IsMember({"stages", "matrices", "parameters", "code", "accuracy", "depth"}));
+    command->add_option("--lesson", open.lesson, "A lesson to open (JSON, docs/lesson-format.md), in the Lesson panel");
+    command->add_option("--step", open.step, "The lesson's step to show, from 1")->needs("--lesson");
+    command->add_flag("--reveal", open.reveal, "Show the step's answer, as Show Answer does")->needs("--lesson");
+    command->add_flag("--present", open.present, "Full screen, as View > Present (F5)");
     setRun(command, [options, argc, argv] { return runOpen(argc, argv, *options); });
 }
 

@@ -577,22 +577,43 @@ void ScenePainter::rememberUserCamera()
     userPan_ = (focal - framed_.center) / framed_.radius;
 }
 
+namespace {
+const Vec3<double> kDefaultPosition(1.7, 0.9, 1.0); // from the +x side, above: depth (z) runs across the picture
+const Vec3<double> kDefaultUp(0, 1, 0);
+} // namespace
+
+// The web page turns its points by RotX(pitch) RotY(yaw) in the default eye's
+// axes: the camera turns the other way, about its up, then about its right.
 void ScenePainter::orbit(double yaw, double pitch, double zoom)
 {
     vtkCamera* camera = world_->GetActiveCamera();
+    camera->OrthogonalizeViewUp();
     camera->Azimuth(-yaw);
-    camera->Elevation(-pitch);
+    camera->Elevation(pitch);
     camera->OrthogonalizeViewUp();
     camera->Dolly(zoom);
     rememberUserCamera();
+}
+
+ScenePainter::Orbit ScenePainter::orbitAngles() const
+{
+    // The direction of view in the default eye's axes is (cos p sin y, -sin p, -cos p cos y).
+    const Vec3<double> back = kDefaultPosition.normalized();
+    const Vec3<double> right = kDefaultUp.cross(back).normalized();
+    const Vec3<double> up = back.cross(right);
+    Vec3<double> direction;
+    world_->GetActiveCamera()->GetDirectionOfProjection(direction.data());
+    const Vec3<double> eye(direction.dot(right), direction.dot(up), direction.dot(back));
+    constexpr double degrees = 180 / 3.14159265358979323846;
+    return {std::atan2(eye.x(), -eye.z()) * degrees, std::asin(std::clamp(-eye.y(), -1.0, 1.0)) * degrees, 1 / userZoom_};
 }
 
 void ScenePainter::resetView()
 {
     vtkCamera* camera = world_->GetActiveCamera();
     camera->SetFocalPoint(0, 0, 0);
-    camera->SetPosition(1.7, 0.9, 1.0); // from the +x side, above: depth (z) runs across the picture
-    camera->SetViewUp(0, 1, 0);
+    camera->SetPosition(kDefaultPosition.data());
+    camera->SetViewUp(kDefaultUp.data());
     camera->SetViewAngle(30);
     userZoom_ = 1;
     userPan_.setZero();

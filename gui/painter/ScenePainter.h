@@ -91,6 +91,11 @@ public:
     // about the view's up, pitch about its right, as the web page turns) and
     // zooms it, as a lesson step asks; later framing keeps both.
     void orbit(double yaw, double pitch, double zoom);
+    // The world view's camera as orbit() sets it from the default viewpoint.
+    struct Orbit {
+        double yaw = 0, pitch = 0, zoom = 1;
+    };
+    Orbit orbitAngles() const;
     // Call when the user has moved the camera, to keep that change in frame().
     void rememberUserCamera();
 

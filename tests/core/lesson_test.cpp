@@ -6,6 +6,8 @@
 
 #include <filesystem>
 
+#include <nlohmann/json.hpp>
+
 #include "support.hpp"
 #include "viewpipe/lesson.hpp"
 
@@ -107,6 +109,95 @@ TEST(Lesson, TheBuiltInLessonsAreValid)
         EXPECT_GE(questions, 3) << entry.path(); // each asks, not only shows
     }
     EXPECT_GE(count, 5);
+}
+
+// What the app saves reads back as the same lesson, from another folder too:
+// scene files as relative paths, every question with the same answer.
+TEST(Lesson, ALessonSavedReadsBackTheSame)
+{
+    namespace fs = std::filesystem;
+    const fs::path elsewhere = fs::temp_directory_path() / "viewpipe-lesson-elsewhere";
+    fs::create_directories(elsewhere);
+    for (const auto& entry : fs::directory_iterator(std::string(VIEWPIPE_DATA_DIR) + "/lessons")) {
+        const Lesson lesson = loadLesson(entry.path());
+        for (const fs::path& folder : {entry.path().parent_path(), elsewhere}) {
+            const Lesson again = parseLesson(lessonToJson(lesson, folder), folder);
+            ASSERT_EQ(again.steps.size(), lesson.steps.size());
+            EXPECT_EQ(again.title, lesson.title);
+            for (std::size_t k = 0; k < lesson.steps.size(); ++k) {
+                const LessonStep &a = lesson.steps[k], &b = again.steps[k];
+                EXPECT_EQ(sceneToJson(a.scene), sceneToJson(b.scene)) << entry.path() << " step " << k;
+                EXPECT_EQ(fs::weakly_canonical(a.scene.file), fs::weakly_canonical(b.scene.file));
+                EXPECT_EQ(std::tie(a.stage, a.yaw, a.pitch, a.zoom, a.caption), std::tie(b.stage, b.yaw, b.pitch, b.zoom, b.caption));
+                EXPECT_EQ(a.trace.has_value(), b.trace.has_value());
+                ASSERT_EQ(a.question.has_value(), b.question.has_value());
+                if (!a.question)
+                    continue;
+                EXPECT_EQ(questionToJson(*a.question), questionToJson(*b.question));
+                EXPECT_EQ(a.question->correct, b.question->correct);
+                EXPECT_EQ(a.question->where, b.question->where);
+            }
+        }
+    }
+    // A scene made in memory goes inline, its mesh's path made relative to the lesson's folder.
+    const fs::path meshes = fs::temp_directory_path() / "viewpipe-lesson-meshes";
+    fs::create_directories(meshes);
+    writeFileAtomically(meshes / "tri.obj", "v 0 0 -1\nv 1 0 -1\nv 0 1 -1\nf 1 2 3\n");
+    Lesson made = lessonWith(R"({"scene": "house.json", "caption": "c"})");
+    Scene& scene = made.steps[0].scene;
+    nlohmann::json withMesh = nlohmann::json::parse(sceneToJson(scene));
+    withMesh["objects"] = nlohmann::json::parse(R"([{"type": "mesh", "path": "tri.obj"}])");
+    scene = parseScene(withMesh.dump(), meshes);
+    ASSERT_TRUE(scene.file.empty());
+    const Lesson inlined = parseLesson(lessonToJson(made, elsewhere), elsewhere);
+    ASSERT_EQ(inlined.steps[0].scene.objects.size(), 1u);
+    EXPECT_EQ(fs::weakly_canonical(inlined.steps[0].scene.objects[0].resolvedPath), fs::weakly_canonical(meshes / "tri.obj"));
+    fs::remove_all(meshes);
+    fs::remove_all(elsewhere);
+}
+
+TEST(Lesson, AnswersAreCheckedAsThePageChecksThem)
+{
+    const Lesson where = lessonWith(houseStep(R"({"kind": "where", "prompt": "p", "point": [16, 10, 30], "after": 3})"));
+    const Question& q = *where.steps[0].question;
+    Answer a;
+    a.where = q.where;
+    EXPECT_TRUE(isRight(q, a));
+    a.where.x() += 0.009 * std::max(1.0, q.where.norm()); // inside the 1 % tolerance
+    EXPECT_TRUE(isRight(q, a));
+    a.where.x() += 0.01 * q.where.norm();
+    EXPECT_FALSE(isRight(q, a));
+    a.where.x() = std::nan("");
+    EXPECT_FALSE(isRight(q, a));
+
+    const Lesson entry = lessonWith(houseStep(R"({"kind": "entry", "prompt": "p", "stage": 4, "row": 1, "column": 3})"));
+    Answer typed;
+    typed.entry = *parseTypedNumber("\u22122/21"); // the typeset minus, as the page prints it
+    EXPECT_TRUE(isRight(*entry.steps[0].question, typed));
+    typed.entry = *parseTypedNumber("-0.095");
+    EXPECT_TRUE(isRight(*entry.steps[0].question, typed));
+    typed.entry = *parseTypedNumber("-0.09");
+    EXPECT_FALSE(isRight(*entry.steps[0].question, typed));
+    for (const char* bad : {"", "x", "1/0", "nan", "inf", "1e400", "2/", "/3", "1.5.2", "1/2/3"})
+        EXPECT_FALSE(parseTypedNumber(bad).has_value()) << bad;
+    EXPECT_DOUBLE_EQ(*parseTypedNumber(" 3 / 4 "), 0.75);
+
+    const Lesson order = lessonWith(houseStep(R"({"kind": "order", "prompt": "p"})"));
+    Answer ordered;
+    ordered.order = {0, 1, 2, 3, 4};
+    EXPECT_TRUE(isRight(*order.steps[0].question, ordered));
+    ordered.order = {1, 0, 2, 3, 4};
+    EXPECT_FALSE(isRight(*order.steps[0].question, ordered));
+}
+
+// One question edited as JSON is read as the lesson reads it, with its field paths.
+TEST(Lesson, AQuestionIsEditedAsTheFileHoldsIt)
+{
+    const Scene house = loadScene(kScenes + "/house.json");
+    const Question q = parseQuestion(R"({"kind": "sign_w", "prompt": "p", "point": [8, 6, 84], "after": 5})", house);
+    EXPECT_EQ(q.signW, 1); // N_per's five stages are affine: w stays 1
+    expectRefused([&] { parseQuestion(R"({"kind": "entry", "prompt": "p", "stage": 9, "row": 1, "column": 1})", house); },
+                  "question.stage", "must be a whole number from 1 to 5");
 }
 
 } // namespace

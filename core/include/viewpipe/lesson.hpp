@@ -55,9 +55,41 @@ int askingStage(const LessonStep& step);
 // The stage a step shows once its question is answered, or all along without one.
 int revealedStage(const LessonStep& step);
 
+// A student's answer: the field its question's kind reads.
+struct Answer {
+    Vec3<double> where = Vec3<double>::Zero();
+    bool inside = false;
+    int signW = 0;          // -1, 0 or 1
+    int choice = -1;        // which_stage and choice: an index into the question's choices
+    std::vector<int> order; // order: indices into the choices, first to last
+    double entry = 0;
+};
+// Whether an answer is right, with the web page's tolerances: a point within
+// the question's tolerance relative to its size (at least 1), an entry within
+// 0.5 % (a fraction typed as a decimal to three places counts).
+bool isRight(const Question& question, const Answer& answer);
+// A typed number: a decimal or a fraction ("-2/21"), with an ASCII or a
+// typeset minus sign; nothing when the text is not one finite number.
+std::optional<double> parseTypedNumber(const std::string& text);
+
+// A student's answers as the web page saves them ("Save my answers"):
+// {"lesson": title, "answers": [{"step": 1, "kind": "where", "answer": ...,
+// "correct": true}, ...]}, one entry a question answered; answers[k] is
+// step k's.
+std::string resultsToJson(const Lesson& lesson, const std::vector<std::optional<Answer>>& answers);
+
 // Scene paths are read relative to baseDir.
 Lesson parseLesson(const std::string& text, const std::filesystem::path& baseDir);
 // Throws InputError("$", ...) when the file cannot be read.
 Lesson loadLesson(const std::filesystem::path& file);
+// The lesson as its file holds it, to be read from `baseDir`: a scene loaded
+// from a file as that file's path relative to baseDir, any other inline (its
+// meshes' paths made relative to baseDir); answers the scenes give are left out.
+std::string lessonToJson(const Lesson& lesson, const std::filesystem::path& baseDir);
+// Reads the question of a step from JSON, as a lesson file holds it (for
+// editing one question), checked against the step's scene.
+Question parseQuestion(const std::string& text, const Scene& scene);
+// The question as its lesson file holds it.
+std::string questionToJson(const Question& question);
 
 } // namespace viewpipe

@@ -1,0 +1,200 @@
+#include "LessonDocument.h"
+
+#include <QFileInfo>
+#include <QUndoCommand>
+
+namespace viewpipe::gui {
+namespace {
+
+class LessonEdit : public QUndoCommand {
+public:
+    LessonEdit(LessonDocument* document, Lesson before, int stepBefore, Lesson after, int stepAfter, const QString& text)
+        : QUndoCommand(text), document_(document), before_(std::move(before)), after_(std::move(after)),
+          stepBefore_(stepBefore), stepAfter_(stepAfter)
+    {
+    }
+    void undo() override { document_->restore(before_, stepBefore_); }
+    void redo() override { document_->restore(after_, stepAfter_); }
+
+private:
+    LessonDocument* document_;
+    Lesson before_, after_;
+    int stepBefore_, stepAfter_;
+};
+
+std::filesystem::path folderOf(const QString& path)
+{
+    return path.isEmpty() ? std::filesystem::current_path()
+                          : std::filesystem::path(QFileInfo(path).absolutePath().toStdString());
+}
+
+} // namespace
+
+LessonDocument::LessonDocument(QObject* parent) : QObject(parent)
+{
+    connect(&undo_, &QUndoStack::cleanChanged, this, &LessonDocument::lessonChanged);
+}
+
+LessonDocument::~LessonDocument()
+{
+    const QSignalBlocker silent(&undo_);
+    undo_.clear();
+}
+
+void LessonDocument::open(const QString& path)
+{
+    Lesson lesson = loadLesson(path.toStdString());
+    undo_.clear();
+    lesson_ = std::move(lesson);
+    filePath_ = path;
+    step_ = 0;
+    resetAnswers();
+    emit lessonChanged();
+    emit stepChanged();
+}
+
+void LessonDocument::create(const std::string& title, const LessonStep& first)
+{
+    undo_.clear();
+    lesson_ = Lesson{title, {first}};
+    filePath_.clear();
+    step_ = 0;
+    resetAnswers();
+    emit lessonChanged();
+    emit stepChanged();
+}
+
+void LessonDocument::close()
+{
+    undo_.clear();
+    lesson_ = Lesson{};
+    filePath_.clear();
+    step_ = 0;
+    resetAnswers();
+    emit lessonChanged();
+    emit stepChanged();
+}
+
+void LessonDocument::save(const QString& path)
+{
+    const std::filesystem::path folder = folderOf(path);
+    const std::string text = lessonToJson(lesson_, folder);
+    parseLesson(text, folder); // only a file that reads back is written
+    try {
+        writeFileAtomically(path.toStdString(), text);
+    } catch (const std::exception& e) {
+        throw InputError("$", std::string("cannot write the lesson: ") + e.what());
+    }
+    filePath_ = path;
+    undo_.setClean();
+    emit lessonChanged();
+}
+
+void LessonDocument::goTo(int step)
+{
+    if (!isOpen())
+        return;
+    step_ = std::clamp(step, 0, int(lesson_.steps.size()) - 1);
+    emit stepChanged();
+}
+
+bool LessonDocument::isAsking() const
+{
+    return isOpen() && currentStep().question && !revealed_[std::size_t(step_)];
+}
+
+bool LessonDocument::check(const Answer& answer)
+{
+    const bool right = isRight(*currentStep().question, answer);
+    if (!answers_[std::size_t(step_)]) // the first answer counts; the revealed one cannot change it
+        answers_[std::size_t(step_)] = answer;
+    revealed_[std::size_t(step_)] = true;
+    emit stepChanged();
+    return right;
+}
+
+void LessonDocument::reveal()
+{
+    if (!isOpen() || !currentStep().question)
+        return;
+    revealed_[std::size_t(step_)] = true;
+    emit stepChanged();
+}
+
+void LessonDocument::saveResults(const QString& path) const
+{
+    try {
+        writeFileAtomically(path.toStdString(), resultsJson());
+    } catch (const std::exception& e) {
+        throw InputError("$", std::string("cannot write the results: ") + e.what());
+    }
+}
+
+void LessonDocument::edit(Lesson next, int step, const QString& description)
+{
+    // The core reads the edited lesson as it would read the file: a bad edit changes nothing.
+    const std::filesystem::path folder = folderOf(filePath_);
+    const std::string text = lessonToJson(next, folder);
+    parseLesson(text, folder);
+    if (text == lessonToJson(lesson_, folder))
+        return; // nothing changed: no edit to undo
+    undo_.push(new LessonEdit(this, lesson_, step_, std::move(next), step, description));
+}
+
+void LessonDocument::restore(const Lesson& lesson, int step)
+{
+    lesson_ = lesson;
+    step_ = std::clamp(step, 0, int(lesson_.steps.size()) - 1);
+    resetAnswers(); // an edited lesson is asked afresh
+    emit lessonChanged();
+    emit stepChanged();
+}
+
+void LessonDocument::resetAnswers()
+{
+    answers_.assign(lesson_.steps.size(), std::nullopt);
+    revealed_.assign(lesson_.steps.size(), false);
+}
+
+void LessonDocument::insertStep(int at, const LessonStep& step)
+{
+    Lesson next = lesson_;
+    at = std::clamp(at, 0, int(next.steps.size()));
+    next.steps.insert(next.steps.begin() + at, step);
+    edit(std::move(next), at, tr("Add Step"));
+}
+
+void LessonDocument::removeStep(int step)
+{
+    if (lesson_.steps.size() < 2)
+        throw InputError("steps", "a lesson keeps at least one step");
+    Lesson next = lesson_;
+    next.steps.erase(next.steps.begin() + step);
+    edit(std::move(next), std::min(step, int(next.steps.size()) - 1), tr("Remove Step"));
+}
+
+void LessonDocument::moveStep(int from, int to)
+{
+    if (to < 0 || to >= int(lesson_.steps.size()) || from == to)
+        return;
+    Lesson next = lesson_;
+    LessonStep moved = next.steps[std::size_t(from)];
+    next.steps.erase(next.steps.begin() + from);
+    next.steps.insert(next.steps.begin() + to, std::move(moved));
+    edit(std::move(next), to, tr("Move Step"));
+}
+
+void LessonDocument::setTexts(int step, const std::string& title, const std::string& caption, const std::string& question)
+{
+    Lesson next = lesson_;
+    next.title = title;
+    LessonStep& edited = next.steps.at(std::size_t(step));
+    edited.caption = caption;
+    if (question.find_first_not_of(" \t\n\r") == std::string::npos)
+        edited.question.reset();
+    else
+        edited.question = parseQuestion(question, edited.scene);
+    edit(std::move(next), step, tr("Edit Step %1").arg(step + 1));
+}
+
+} // namespace viewpipe::gui

@@ -1,0 +1,85 @@
+#pragma once
+
+// The lesson open in the app: its steps, the step shown, the student's
+// answers (the first answer to each question, kept for the results file) and
+// which answers are revealed; an edit asks every question afresh. Edits (add a step, reorder, caption, question,
+// title) are checked by the core and are undoable; the lesson is saved
+// atomically, and only as a file that reads back.
+
+#include <QObject>
+#include <QString>
+#include <QUndoStack>
+
+#include <optional>
+#include <vector>
+
+#include "viewpipe/lesson.hpp"
+
+namespace viewpipe::gui {
+
+class LessonDocument : public QObject {
+    Q_OBJECT
+public:
+    explicit LessonDocument(QObject* parent = nullptr);
+    ~LessonDocument() override;
+
+    bool isOpen() const { return !lesson_.steps.empty(); }
+    const Lesson& lesson() const { return lesson_; }
+    QString filePath() const { return filePath_; }
+    bool isModified() const { return !undo_.isClean(); }
+    QUndoStack* undoStack() { return &undo_; }
+
+    // Throws InputError naming the field, keeping the lesson open before.
+    void open(const QString& path);
+    // A new lesson with one step.
+    void create(const std::string& title, const LessonStep& first);
+    void close();
+    // Throws InputError when the file cannot be written.
+    void save(const QString& path);
+
+    int step() const { return step_; }
+    const LessonStep& currentStep() const { return lesson_.steps.at(std::size_t(step_)); }
+    void goTo(int step);
+    // A question open and not yet answered or revealed.
+    bool isAsking() const;
+    bool isRevealed(int step) const { return revealed_.at(std::size_t(step)); }
+    const std::optional<Answer>& answer(int step) const { return answers_.at(std::size_t(step)); }
+    // Records the first answer to the current step's question and reveals it; returns whether it is right.
+    bool check(const Answer& answer);
+    // Shows the answer without taking one (a lecturer asking the room).
+    void reveal();
+    // The results file, as the web page saves it.
+    std::string resultsJson() const { return resultsToJson(lesson_, answers_); }
+    // Writes the results file atomically; throws InputError when it cannot.
+    void saveResults(const QString& path) const;
+
+    // Authoring: each an undoable edit; one the core refuses throws InputError and changes nothing.
+    void insertStep(int at, const LessonStep& step);
+    void removeStep(int step);
+    void moveStep(int from, int to);
+    // The lesson's title and a step's caption and question (as the lesson
+    // file holds it, JSON; none for empty text): all three, or nothing.
+    void setTexts(int step, const std::string& title, const std::string& caption, const std::string& question);
+
+    // Only for undo and redo.
+    void restore(const Lesson& lesson, int step);
+
+signals:
+    // The steps, the title or the file.
+    void lessonChanged();
+    // The step shown, or what is revealed of it.
+    void stepChanged();
+
+private:
+    void edit(Lesson next, int step, const QString& description);
+    void resetAnswers();
+
+    Lesson lesson_;
+    QString filePath_;
+    int step_ = 0;
+    std::vector<std::optional<Answer>> answers_;
+    std::vector<bool> revealed_;
+    QUndoStack undo_;
+};
+
+} // namespace viewpipe::gui

@@ -1,0 +1,496 @@
+#include "LessonPanel.h"
+
+#include <QAction>
+#include <QButtonGroup>
+#include <QGroupBox>
+#include <QHBoxLayout>
+#include <QLabel>
+#include <QLineEdit>
+#include <QMouseEvent>
+#include <QListWidget>
+#include <QPlainTextEdit>
+#include <QPushButton>
+#include <QRadioButton>
+#include <QTextDocumentFragment>
+#include <QUndoStack>
+#include <QVBoxLayout>
+
+#include <algorithm>
+#include <numeric>
+
+#include "LessonDocument.h"
+#include "MathText.h"
+#include "MatrixPanel.h"
+#include "viewpipe/format.hpp"
+#include "viewpipe/pipeline.hpp"
+#include "viewpipe/report/latex.hpp"
+
+namespace viewpipe::gui {
+namespace {
+
+QString number(double x)
+{
+    return QString::fromStdString(std::abs(x) < 1e-12 ? "0" : formatSignificant(x, 6));
+}
+
+QString symbolHtml(const std::string& symbol)
+{
+    return mathHtml("$" + cli::latexSymbol(symbol) + "$");
+}
+
+// The choices as they are offered: a scene's stage symbols sorted, so their order gives nothing away.
+std::vector<int> offeredOrder(const Question& q)
+{
+    std::vector<int> order(q.choices.size());
+    std::iota(order.begin(), order.end(), 0);
+    if (q.kind == QuestionKind::WhichStage || q.kind == QuestionKind::Order)
+        std::sort(order.begin(), order.end(), [&](int a, int b) { return q.choices[std::size_t(a)] < q.choices[std::size_t(b)]; });
+    return order;
+}
+
+QString answerHtml(const LessonStep& step)
+{
+    const Question& q = *step.question;
+    switch (q.kind) {
+    case QuestionKind::Where: return "(" + number(q.where.x()) + ", " + number(q.where.y()) + ", " + number(q.where.z()) + ")";
+    case QuestionKind::Inside: return q.inside ? QObject::tr("inside the view volume") : QObject::tr("clipped away");
+    case QuestionKind::SignW:
+        return QObject::tr("w is %1").arg(q.signW > 0 ? QObject::tr("positive") : q.signW < 0 ? QObject::tr("negative") : QObject::tr("zero"));
+    case QuestionKind::WhichStage: return symbolHtml(q.choices[std::size_t(q.correct)]);
+    case QuestionKind::Order: {
+        QStringList symbols;
+        for (const std::string& choice : q.choices)
+            symbols << symbolHtml(choice);
+        return symbols.join(", ");
+    }
+    case QuestionKind::Entry:
+        return mathHtml("$" + cli::entryLatex(step.scene, q.stage, q.row, q.column, 6) + "$") + " (" + number(q.entry) + ")";
+    case QuestionKind::Choice: return mathHtml(q.choices[std::size_t(q.correct)]);
+    }
+    return {};
+}
+
+// A choice's text beside its radio button, wrapped and with its math set; a click on it picks the choice.
+class ChoiceLabel : public QLabel {
+public:
+    ChoiceLabel(const QString& html, QRadioButton* radio) : radio_(radio)
+    {
+        setText(html);
+        setWordWrap(true);
+        setTextFormat(Qt::RichText);
+        setCursor(Qt::PointingHandCursor);
+    }
+
+protected:
+    void mouseReleaseEvent(QMouseEvent* event) override
+    {
+        QLabel::mouseReleaseEvent(event);
+        if (radio_->isEnabled())
+            radio_->click();
+    }
+
+private:
+    QRadioButton* radio_;
+};
+
+QLabel* richLabel(const QString& name)
+{
+    auto* label = new QLabel;
+    label->setObjectName(name);
+    label->setWordWrap(true);
+    label->setTextFormat(Qt::RichText);
+    return label;
+}
+
+} // namespace
+
+LessonPanel::LessonPanel(LessonDocument* lesson, QWidget* parent) : QWidget(parent), lesson_(lesson)
+{
+    auto* layout = new QVBoxLayout(this);
+    title_ = richLabel("lessonTitle");
+    layout->addWidget(title_);
+    auto* stepRow = new QHBoxLayout;
+    stepLabel_ = new QLabel;
+    stepLabel_->setObjectName("lessonStep");
+    auto* previous = new QPushButton(tr("◀ Step"));
+    auto* next = new QPushButton(tr("Step ▶"));
+    previous->setObjectName("lessonPrevious");
+    next->setObjectName("lessonNext");
+    previous->setToolTip(tr("The previous step (Page Up)"));
+    next->setToolTip(tr("The next step, or the answer of a question not answered yet (Page Down)"));
+    stepRow->addWidget(stepLabel_, 1);
+    stepRow->addWidget(previous);
+    stepRow->addWidget(next);
+    layout->addLayout(stepRow);
+    caption_ = richLabel("lessonCaption");
+    layout->addWidget(caption_);
+
+    question_ = new QGroupBox(tr("Question"));
+    question_->setObjectName("lessonQuestion");
+    auto* q = new QVBoxLayout(question_);
+    prompt_ = richLabel("questionPrompt");
+    about_ = richLabel("questionAbout");
+    q->addWidget(prompt_);
+    q->addWidget(about_);
+    inputs_ = new QWidget;
+    q->addWidget(inputs_);
+    auto* buttons = new QHBoxLayout;
+    check_ = new QPushButton(tr("Check"));
+    check_->setObjectName("checkButton");
+    check_->setToolTip(tr("Check your answer (Enter), then see the stage it is about"));
+    reveal_ = new QPushButton(tr("Show Answer"));
+    reveal_->setObjectName("revealButton");
+    reveal_->setToolTip(tr("Show the answer without answering: for a class that predicted aloud"));
+    buttons->addWidget(check_);
+    buttons->addWidget(reveal_);
+    buttons->addStretch();
+    q->addLayout(buttons);
+    feedback_ = richLabel("feedback");
+    q->addWidget(feedback_);
+    layout->addWidget(question_);
+
+    saveResults_ = new QPushButton(tr("Save My Answers…"));
+    saveResults_->setObjectName("saveResultsButton");
+    saveResults_->setToolTip(tr("Your answers and whether each was right, as a JSON file (the web page saves the same)"));
+    layout->addWidget(saveResults_, 0, Qt::AlignLeft);
+
+    // Authoring, folded away until asked for.
+    editor_ = new QGroupBox(tr("Edit the lesson"));
+    editor_->setObjectName("lessonEditor");
+    editor_->setCheckable(true);
+    editor_->setChecked(false);
+    auto* e = new QVBoxLayout(editor_);
+    auto* editorContent = new QWidget;
+    auto* c = new QVBoxLayout(editorContent);
+    c->setContentsMargins(0, 0, 0, 0);
+    c->addWidget(new QLabel(tr("Title")));
+    titleEdit_ = new QLineEdit;
+    titleEdit_->setObjectName("titleEdit");
+    c->addWidget(titleEdit_);
+    steps_ = new QListWidget;
+    steps_->setObjectName("lessonSteps");
+    steps_->setToolTip(tr("The steps: pick one to show it"));
+    steps_->setMaximumHeight(160);
+    c->addWidget(steps_);
+    auto* stepButtons = new QHBoxLayout;
+    auto* add = new QPushButton(tr("Add Step From View"));
+    add->setObjectName("addStepButton");
+    add->setToolTip(tr("A new step after this one: the scene, stage and world view as they are now"));
+    auto* up = new QPushButton(tr("Up"));
+    auto* down = new QPushButton(tr("Down"));
+    auto* remove = new QPushButton(tr("Remove"));
+    up->setObjectName("moveUpButton");
+    down->setObjectName("moveDownButton");
+    remove->setObjectName("removeStepButton");
+    stepButtons->addWidget(add);
+    stepButtons->addWidget(up);
+    stepButtons->addWidget(down);
+    stepButtons->addWidget(remove);
+    c->addLayout(stepButtons);
+    c->addWidget(new QLabel(tr("Caption (math between $ signs)")));
+    captionEdit_ = new QPlainTextEdit;
+    captionEdit_->setObjectName("captionEdit");
+    captionEdit_->setMaximumHeight(110);
+    c->addWidget(captionEdit_);
+    c->addWidget(new QLabel(tr("Question, as the lesson file holds it (JSON; empty for none)")));
+    questionEdit_ = new QPlainTextEdit;
+    questionEdit_->setObjectName("questionEdit");
+    questionEdit_->setMaximumHeight(160);
+    c->addWidget(questionEdit_);
+    auto* applyRow = new QHBoxLayout;
+    auto* apply = new QPushButton(tr("Apply"));
+    apply->setObjectName("applyEditsButton");
+    apply->setToolTip(tr("Check the title, caption and question and make them the step's (undoable)"));
+    QAction* undo = lesson_->undoStack()->createUndoAction(this, tr("Undo"));
+    QAction* redo = lesson_->undoStack()->createRedoAction(this, tr("Redo"));
+    auto* undoButton = new QPushButton(tr("Undo"));
+    auto* redoButton = new QPushButton(tr("Redo"));
+    undoButton->setObjectName("lessonUndo");
+    redoButton->setObjectName("lessonRedo");
+    connect(undoButton, &QPushButton::clicked, undo, &QAction::trigger);
+    connect(redoButton, &QPushButton::clicked, redo, &QAction::trigger);
+    connect(lesson_->undoStack(), &QUndoStack::canUndoChanged, undoButton, &QPushButton::setEnabled);
+    connect(lesson_->undoStack(), &QUndoStack::canRedoChanged, redoButton, &QPushButton::setEnabled);
+    undoButton->setEnabled(false);
+    redoButton->setEnabled(false);
+    applyRow->addWidget(apply);
+    applyRow->addWidget(undoButton);
+    applyRow->addWidget(redoButton);
+    applyRow->addStretch();
+    c->addLayout(applyRow);
+    editError_ = richLabel("editError");
+    editError_->setStyleSheet("color: #c0392b");
+    c->addWidget(editError_);
+    e->addWidget(editorContent);
+    editorContent->setVisible(false);
+    connect(editor_, &QGroupBox::toggled, editorContent, &QWidget::setVisible);
+    layout->addWidget(editor_);
+    layout->addStretch();
+
+    connect(previous, &QPushButton::clicked, this, [this] { lesson_->goTo(lesson_->step() - 1); });
+    connect(next, &QPushButton::clicked, this, [this] { lesson_->goTo(lesson_->step() + 1); });
+    connect(check_, &QPushButton::clicked, this, &LessonPanel::checkAnswer);
+    connect(reveal_, &QPushButton::clicked, lesson_, &LessonDocument::reveal);
+    connect(saveResults_, &QPushButton::clicked, this, &LessonPanel::saveResultsRequested);
+    connect(steps_, &QListWidget::currentRowChanged, this, [this](int row) {
+        if (row >= 0 && row != lesson_->step())
+            lesson_->goTo(row);
+    });
+    auto guarded = [this](const std::function<void()>& edit) {
+        try {
+            edit();
+            editError_->clear();
+        } catch (const InputError& error) {
+            editError_->setText(QString::fromStdString(error.what()).toHtmlEscaped());
+        }
+    };
+    connect(add, &QPushButton::clicked, this, &LessonPanel::addStepRequested);
+    connect(up, &QPushButton::clicked, this, [this, guarded] { guarded([this] { lesson_->moveStep(lesson_->step(), lesson_->step() - 1); }); });
+    connect(down, &QPushButton::clicked, this, [this, guarded] { guarded([this] { lesson_->moveStep(lesson_->step(), lesson_->step() + 1); }); });
+    connect(remove, &QPushButton::clicked, this, [this, guarded] { guarded([this] { lesson_->removeStep(lesson_->step()); }); });
+    connect(apply, &QPushButton::clicked, this, [this, guarded] { guarded([this] { applyEdits(); }); });
+
+    connect(lesson_, &LessonDocument::lessonChanged, this, &LessonPanel::refreshLesson);
+    connect(lesson_, &LessonDocument::stepChanged, this, &LessonPanel::refreshStep);
+    refreshLesson();
+    refreshStep();
+}
+
+void LessonPanel::refreshLesson()
+{
+    const Lesson& lesson = lesson_->lesson();
+    title_->setText("<b>" + QString::fromStdString(lesson.title).toHtmlEscaped() + "</b>");
+    titleEdit_->setText(QString::fromStdString(lesson.title));
+    const QSignalBlocker quiet(steps_);
+    steps_->clear();
+    for (std::size_t k = 0; k < lesson.steps.size(); ++k) {
+        const LessonStep& step = lesson.steps[k];
+        QString text = QString::fromStdString(step.caption).simplified();
+        if (text.size() > 60)
+            text = text.left(57) + "…";
+        steps_->addItem(QString("%1. %2%3").arg(k + 1).arg(step.question ? tr("[?] ") : "", text));
+    }
+    inputsFor_ = -1; // the steps may have moved: build the inputs afresh
+    refreshStep();
+}
+
+void LessonPanel::refreshStep()
+{
+    const bool open = lesson_->isOpen();
+    setEnabled(open);
+    if (!open) {
+        stepLabel_->setText(tr("No lesson open: Lesson ▸ Open Lesson…"));
+        caption_->clear();
+        question_->hide();
+        return;
+    }
+    const int k = lesson_->step();
+    const LessonStep& step = lesson_->currentStep();
+    const int n = int(lesson_->lesson().steps.size());
+    stepLabel_->setText(tr("Step %1 of %2").arg(k + 1).arg(n));
+    {
+        const QSignalBlocker quiet(steps_);
+        steps_->setCurrentRow(k);
+    }
+    captionEdit_->setPlainText(QString::fromStdString(step.caption));
+    questionEdit_->setPlainText(step.question ? QString::fromStdString(questionToJson(*step.question)) : QString());
+    const bool asking = lesson_->isAsking();
+    // The caption may give the answer away: it waits for it.
+    caption_->setText(asking ? "<i>" + tr("The step's text follows the answer.") + "</i>" : mathHtml(step.caption));
+    question_->setVisible(step.question.has_value());
+    saveResults_->setVisible(std::any_of(lesson_->lesson().steps.begin(), lesson_->lesson().steps.end(),
+                                         [](const LessonStep& s) { return s.question.has_value(); }));
+    if (!step.question)
+        return;
+    const Question& q = *step.question;
+    prompt_->setText(mathHtml(q.prompt));
+    QString about;
+    if (q.kind == QuestionKind::Where || q.kind == QuestionKind::SignW || q.kind == QuestionKind::Entry) {
+        const std::string symbol = buildPipeline(step.scene.camera, step.scene.effects).stages.at(std::size_t(q.stage - 1)).symbol;
+        about = (q.kind == QuestionKind::Entry ? tr("The matrix of stage %1, %2.") : tr("After stage %1, %2."))
+                    .arg(q.stage)
+                    .arg(symbolHtml(symbol));
+    }
+    if (q.kind == QuestionKind::Where || q.kind == QuestionKind::Inside || q.kind == QuestionKind::SignW)
+        about += (about.isEmpty() ? "" : " ") + tr("The point (%1, %2, %3).").arg(number(q.point.x()), number(q.point.y()), number(q.point.z()));
+    if (q.kind == QuestionKind::WhichStage)
+        about = matrixTable(tr("The matrix"),
+                            buildPipeline(step.scene.camera, step.scene.effects).stages.at(std::size_t(q.stage - 1)).matrix);
+    about_->setText(about);
+    about_->setVisible(!about.isEmpty());
+    if (inputsFor_ != k)
+        buildInputs();
+    inputs_->setEnabled(asking);
+    check_->setEnabled(asking);
+    reveal_->setEnabled(asking);
+    if (asking) {
+        feedback_->clear();
+        return;
+    }
+    const std::optional<Answer>& answer = lesson_->answer(k);
+    QString said = !answer                 ? tr("The answer: %1.").arg(answerHtml(step))
+                   : isRight(q, *answer) ? tr("<b>Right.</b> The answer: %1.").arg(answerHtml(step))
+                                         : tr("<b>Not quite:</b> the answer is %1.").arg(answerHtml(step));
+    if (!q.explanation.empty())
+        said += "<br>" + mathHtml(q.explanation);
+    feedback_->setText(said);
+}
+
+void LessonPanel::buildInputs()
+{
+    const int k = lesson_->step();
+    const Question& q = *lesson_->currentStep().question;
+    inputsFor_ = k;
+    auto* fresh = new QWidget;
+    auto* layout = new QVBoxLayout(fresh);
+    layout->setContentsMargins(0, 0, 0, 0);
+    auto line = [&](const QString& name, const QString& placeholder) {
+        auto* edit = new QLineEdit;
+        edit->setObjectName(name);
+        edit->setPlaceholderText(placeholder);
+        connect(edit, &QLineEdit::returnPressed, this, &LessonPanel::checkAnswer);
+        return edit;
+    };
+    // A radio button sets no rich text and does not wrap: its text is a label beside it.
+    auto radios = [&](const QStringList& texts) {
+        auto* group = new QButtonGroup(fresh);
+        for (int i = 0; i < texts.size(); ++i) {
+            auto* radio = new QRadioButton;
+            radio->setObjectName(QString("choice%1").arg(i));
+            radio->setAccessibleName(QTextDocumentFragment::fromHtml(texts[i]).toPlainText());
+            auto* label = new ChoiceLabel(texts[i], radio);
+            label->setObjectName(QString("choiceText%1").arg(i));
+            auto* row = new QHBoxLayout;
+            row->addWidget(radio, 0, Qt::AlignTop);
+            row->addWidget(label, 1);
+            layout->addLayout(row);
+            group->addButton(radio, i);
+        }
+    };
+    switch (q.kind) {
+    case QuestionKind::Where: {
+        auto* row = new QHBoxLayout;
+        row->addWidget(line("answerX", "x"));
+        row->addWidget(line("answerY", "y"));
+        row->addWidget(line("answerZ", "z"));
+        layout->addLayout(row);
+        auto* tolerance = new QLabel(tr("Within %1 % of the answer's size counts.").arg(q.tolerance * 100));
+        tolerance->setWordWrap(true);
+        layout->addWidget(tolerance);
+        break;
+    }
+    case QuestionKind::Inside: radios({tr("inside the view volume"), tr("clipped away")}); break;
+    case QuestionKind::SignW: radios({tr("w is positive"), tr("w is zero"), tr("w is negative")}); break;
+    case QuestionKind::WhichStage: {
+        QStringList texts;
+        for (int c : offeredOrder(q))
+            texts << symbolHtml(q.choices[std::size_t(c)]);
+        radios(texts);
+        break;
+    }
+    case QuestionKind::Choice: {
+        QStringList texts;
+        for (const std::string& choice : q.choices)
+            texts << mathHtml(choice);
+        radios(texts);
+        break;
+    }
+    case QuestionKind::Entry:
+        layout->addWidget(line("answerEntry", tr("a number or a fraction, such as -2/21")));
+        break;
+    case QuestionKind::Order: {
+        auto* list = new QListWidget;
+        list->setObjectName("orderList");
+        list->setDragDropMode(QAbstractItemView::InternalMove);
+        list->setToolTip(tr("Drag the stages into the order they apply to a point, first at the top"));
+        std::vector<int> shown(q.choices.size());
+        std::iota(shown.rbegin(), shown.rend(), 0); // last first: the right order is never the one offered
+        for (int c : shown) {
+            auto* item = new QListWidgetItem(QString::fromStdString(q.choices[std::size_t(c)]));
+            item->setData(Qt::UserRole, c);
+            list->addItem(item);
+        }
+        list->setMaximumHeight(list->sizeHintForRow(0) * int(q.choices.size() + 1));
+        layout->addWidget(list);
+        auto* row = new QHBoxLayout;
+        for (const auto& [text, name, by] : {std::tuple{tr("Earlier"), "orderUp", -1}, std::tuple{tr("Later"), "orderDown", 1}}) {
+            auto* button = new QPushButton(text);
+            button->setObjectName(name);
+            connect(button, &QPushButton::clicked, list, [list, by = by] {
+                const int row = list->currentRow(), to = row + by;
+                if (row < 0 || to < 0 || to >= list->count())
+                    return;
+                list->insertItem(to, list->takeItem(row));
+                list->setCurrentRow(to);
+            });
+            row->addWidget(button);
+        }
+        row->addStretch();
+        layout->addLayout(row);
+        break;
+    }
+    }
+    inputs_->parentWidget()->layout()->replaceWidget(inputs_, fresh);
+    delete inputs_;
+    inputs_ = fresh;
+}
+
+bool LessonPanel::checkAnswer()
+{
+    if (!lesson_->isAsking())
+        return false;
+    const Question& q = *lesson_->currentStep().question;
+    Answer answer;
+    auto typed = [this](const char* name) { return parseTypedNumber(inputs_->findChild<QLineEdit*>(name)->text().toStdString()); };
+    auto chosen = [this]() {
+        for (QRadioButton* radio : inputs_->findChildren<QRadioButton*>())
+            if (radio->isChecked())
+                return radio->objectName().mid(6).toInt();
+        return -1;
+    };
+    switch (q.kind) {
+    case QuestionKind::Where: {
+        const auto x = typed("answerX"), y = typed("answerY"), z = typed("answerZ");
+        if (!x || !y || !z) {
+            feedback_->setText(tr("Type three numbers: x, y and z (fractions such as 1/3 are fine)."));
+            return false;
+        }
+        answer.where = {*x, *y, *z};
+        break;
+    }
+    case QuestionKind::Entry: {
+        const auto x = typed("answerEntry");
+        if (!x) {
+            feedback_->setText(tr("Type a number or a fraction, such as -2/21."));
+            return false;
+        }
+        answer.entry = *x;
+        break;
+    }
+    case QuestionKind::Order:
+        for (int row = 0; row < inputs_->findChild<QListWidget*>("orderList")->count(); ++row)
+            answer.order.push_back(inputs_->findChild<QListWidget*>("orderList")->item(row)->data(Qt::UserRole).toInt());
+        break;
+    default: {
+        const int picked = chosen();
+        if (picked < 0) {
+            feedback_->setText(tr("Pick one answer."));
+            return false;
+        }
+        answer.inside = picked == 0;
+        answer.signW = picked == 0 ? 1 : picked == 1 ? 0 : -1;
+        answer.choice = q.kind == QuestionKind::WhichStage ? offeredOrder(q)[std::size_t(picked)] : picked;
+        break;
+    }
+    }
+    lesson_->check(answer);
+    return true;
+}
+
+void LessonPanel::applyEdits()
+{
+    lesson_->setTexts(lesson_->step(), titleEdit_->text().toStdString(), captionEdit_->toPlainText().toStdString(),
+                      questionEdit_->toPlainText().toStdString());
+}
+
+} // namespace viewpipe::gui

@@ -1,0 +1,300 @@
+// Lessons in the app, driven as a student and a lecturer use them: questions
+// answered with clicks and typing, then revealed with the stage's transition;
+// the answers saved; a lesson presented with a clicker's keys; a lesson made
+// from the views on screen, edited and saved.
+
+#include <QAbstractButton>
+#include <QDockWidget>
+#include <QFile>
+#include <QGroupBox>
+#include <QJsonArray>
+#include <QJsonDocument>
+#include <QJsonObject>
+#include <QLabel>
+#include <QLineEdit>
+#include <QListWidget>
+#include <QMenuBar>
+#include <QPlainTextEdit>
+#include <QPushButton>
+#include <QRadioButton>
+#include <QScreen>
+#include <QScrollArea>
+#include <QScrollBar>
+#include <QTemporaryDir>
+#include <QWindow>
+#include <QtTest>
+
+#include "app/LessonDocument.h"
+#include "app/LessonPanel.h"
+#include "app/MathText.h"
+#include "app/MainWindow.h"
+#include "app/MatrixPanel.h"
+#include "app_window.h"
+
+using namespace viewpipe;
+using namespace viewpipe::gui;
+
+namespace {
+
+const QString kHouse = QString(VIEWPIPE_DATA_DIR) + "/scenes/house.json";
+const QString kFoley = QString(VIEWPIPE_DATA_DIR) + "/lessons/foley-nper.json";
+
+template <class T> T* child(MainWindow& w, const QString& name)
+{
+    T* found = w.lessonPanel()->findChild<T*>(name);
+    if (!found)
+        qWarning("no %s", qPrintable(name));
+    return found;
+}
+
+// A click where a person clicks: a button's middle, a radio button's circle.
+void click(QWidget* widget)
+{
+    QVERIFY(widget && widget->isEnabled());
+    // A widget just shown is laid out by the event loop.
+    QVERIFY(QTest::qWaitFor([widget] { return widget->isVisible() && widget->width() > 4 && widget->height() > 4; }));
+    const bool radio = qobject_cast<QRadioButton*>(widget);
+    QTest::mouseClick(widget, Qt::LeftButton, {}, radio ? QPoint(8, widget->height() / 2) : widget->rect().center());
+}
+
+QString feedback(MainWindow& w)
+{
+    return child<QLabel>(w, "feedback")->text();
+}
+
+// The step's view has settled: no transition running.
+bool settled(MainWindow& w)
+{
+    return !w.isAnimating();
+}
+
+} // namespace
+
+class LessonTest : public QObject {
+    Q_OBJECT
+private slots:
+    void init() { window_ = openWindow(kHouse, {1280, 800}); }
+    void cleanup()
+    {
+        if (window_)
+            window_->lesson()->undoStack()->setClean();
+        closeWindow(window_);
+    }
+
+    void aStudentAnswersWithClicksAndTyping()
+    {
+        MainWindow& w = *window_;
+        QVERIFY(w.openLesson(kFoley));
+        QTRY_VERIFY(w.findChild<QDockWidget*>("lessonDock")->isVisible());
+        QCOMPARE(child<QLabel>(w, "lessonStep")->text(), QString("Step 1 of 9"));
+
+        // Step 1 asks for the order of the stages: while it waits, nothing names them.
+        QVERIFY(!w.stageList()->isVisible());
+        QVERIFY(w.findChild<QLabel*>("stagesWait")->isVisible());
+        QVERIFY(w.matrices()->stageText().contains("follow the answer"));
+        QCOMPARE(w.painter()->worldCaption(), std::string());
+        QVERIFY(child<QLabel>(w, "lessonCaption")->text().contains("follows the answer"));
+        // The stages offered last first; put them in order with the mouse.
+        auto* list = child<QListWidget>(w, "orderList");
+        const QStringList order = {"T(-VRP)", "R", "T(-PRP)", "SH_per", "S_per"};
+        QCOMPARE(list->item(0)->text(), order.last());
+        for (int target = 0; target < order.size(); ++target) {
+            int row = 0;
+            while (list->item(row)->text() != order[target])
+                ++row;
+            QTest::mouseClick(list->viewport(), Qt::LeftButton, {}, list->visualItemRect(list->item(row)).center());
+            QCOMPARE(list->currentRow(), row);
+            for (; row > target; --row)
+                click(child<QPushButton>(w, "orderUp"));
+        }
+        click(child<QPushButton>(w, "checkButton"));
+        QVERIFY2(feedback(w).contains("Right."), qPrintable(feedback(w)));
+        QVERIFY(w.stageList()->isVisible());
+        QVERIFY(w.matrices()->stageText().contains("World"));
+        QVERIFY(child<QLabel>(w, "lessonCaption")->text().contains("The house in world coordinates"));
+        QVERIFY(!child<QPushButton>(w, "checkButton")->isEnabled()); // one answer a question
+
+        // Step 2, a multiple choice: a click on the answer, then Check.
+        QTest::keyClick(&w, Qt::Key_PageDown);
+        QCOMPARE(child<QLabel>(w, "lessonStep")->text(), QString("Step 2 of 9"));
+        QVERIFY(!w.stageList()->isVisible());
+        click(child<QRadioButton>(w, "choice0"));
+        click(child<QPushButton>(w, "checkButton"));
+        QVERIFY2(feedback(w).contains("Right."), qPrintable(feedback(w)));
+
+        // Step 4: which stage is this matrix? It shows R's numbers; pick R.
+        w.lesson()->goTo(3);
+        QTRY_VERIFY(settled(w));
+        QVERIFY(child<QLabel>(w, "questionAbout")->text().contains("0.7071"));
+        QCOMPARE(w.stage(), 1); // waiting before the stage asked about
+        for (QRadioButton* radio : w.lessonPanel()->findChildren<QRadioButton*>())
+            if (radio->accessibleName() == "R")
+                click(radio);
+        click(child<QPushButton>(w, "checkButton"));
+        QVERIFY2(feedback(w).contains("Right."), qPrintable(feedback(w)));
+        QTRY_VERIFY(settled(w) && w.stage() == 2); // the answer comes with R's transition
+
+        // Step 5: where is the PRP after T(-PRP)? A wrong answer typed, and Enter.
+        QTest::keyClick(&w, Qt::Key_PageDown);
+        QTRY_VERIFY(settled(w));
+        QCOMPARE(w.stage(), 2);
+        QTest::keyClicks(child<QLineEdit>(w, "answerX"), "1");
+        QTest::keyClicks(child<QLineEdit>(w, "answerY"), "2");
+        QTest::keyClick(child<QLineEdit>(w, "answerY"), Qt::Key_Return);
+        QVERIFY2(feedback(w).contains("Type three numbers"), qPrintable(feedback(w))); // nothing recorded yet
+        QVERIFY(w.lesson()->isAsking());
+        QTest::keyClicks(child<QLineEdit>(w, "answerZ"), "3");
+        QTest::keyClick(child<QLineEdit>(w, "answerZ"), Qt::Key_Return);
+        QVERIFY2(feedback(w).contains("Not quite") && feedback(w).contains("(0, 0, 0)"), qPrintable(feedback(w)));
+        QTRY_VERIFY(settled(w) && w.stage() == 3);
+        QVERIFY(w.matrices()->traceText().contains("84")); // the PRP is followed through the stages
+
+        // Step 6: an entry as a fraction with the typeset minus sign.
+        QTest::keyClick(&w, Qt::Key_PageDown);
+        // The minus as a keyboard layout with it sends it (keyClicks takes ASCII only).
+        QTest::sendKeyEvent(QTest::Click, child<QLineEdit>(w, "answerEntry"), Qt::Key_unknown, QString::fromUtf8("\u2212"), {});
+        QTest::keyClicks(child<QLineEdit>(w, "answerEntry"), "2/21");
+        QTest::keyClick(child<QLineEdit>(w, "answerEntry"), Qt::Key_Return);
+        QVERIFY2(feedback(w).contains("Right."), qPrintable(feedback(w)));
+
+        // The answers as the web page saves them.
+        QTemporaryDir dir;
+        const QString results = dir.filePath("lesson-results.json");
+        QVERIFY(w.saveLessonResults(results));
+        QFile file(results);
+        QVERIFY(file.open(QIODevice::ReadOnly));
+        const QJsonObject saved = QJsonDocument::fromJson(file.readAll()).object();
+        QCOMPARE(saved["lesson"].toString(), QString("Foley's N_per, step by step"));
+        const QJsonArray answers = saved["answers"].toArray();
+        QCOMPARE(answers.size(), 5);
+        QCOMPARE(answers[0].toObject()["kind"].toString(), QString("order"));
+        QCOMPARE(answers[0].toObject()["answer"].toArray().first().toString(), QString("T(-VRP)"));
+        QCOMPARE(answers[3].toObject()["answer"].toArray(), QJsonArray({1, 2, 3}));
+        QCOMPARE(answers[3].toObject()["correct"].toBool(), false);
+        QCOMPARE(answers[4].toObject()["step"].toInt(), 6);
+        QCOMPARE(answers[4].toObject()["correct"].toBool(), true);
+    }
+
+    void aLecturerPresentsALessonWithAClicker()
+    {
+        MainWindow& w = *window_;
+        QVERIFY(w.openLesson(kFoley));
+        w.lesson()->goTo(4); // step 5: where is the PRP after T(-PRP)?
+        QTRY_VERIFY(settled(w));
+        QTest::keyClick(&w, Qt::Key_F5);
+        QVERIFY(w.isPresenting());
+        QTRY_VERIFY(w.isFullScreen());
+        QTRY_COMPARE(w.frameGeometry().size(), w.windowHandle()->screen()->geometry().size());
+        // The lesson stays beside the views; nothing else does.
+        for (QDockWidget* dock : w.findChildren<QDockWidget*>())
+            QCOMPARE(dock->isVisible(), dock->objectName() == "lessonDock");
+        // The clicker reveals the answer first, with its transition; then steps on.
+        QVERIFY(w.lesson()->isAsking());
+        QTest::keyClick(&w, Qt::Key_PageDown);
+        QVERIFY(!w.lesson()->isAsking());
+        QVERIFY2(feedback(w).contains("The answer: (0, 0, 0)"), qPrintable(feedback(w)));
+        QTRY_VERIFY(settled(w) && w.stage() == 3);
+        QTest::keyClick(&w, Qt::Key_Space);
+        QCOMPARE(w.lesson()->step(), 5);
+        QTest::keyClick(&w, Qt::Key_Backspace);
+        QCOMPARE(w.lesson()->step(), 4);
+        // Nothing is cut off at 1920 x 1080: every step's text fits the lesson panel without scrolling.
+        auto* scroll = qobject_cast<QScrollArea*>(w.findChild<QDockWidget*>("lessonDock")->widget());
+        for (int k = 0; k < 9; ++k) {
+            w.lesson()->goTo(k);
+            w.lesson()->reveal(); // the answer and its explanation: the longest the panel gets
+            QTRY_VERIFY(settled(w));
+            QApplication::processEvents();
+            QVERIFY2(!scroll->verticalScrollBar()->isVisible(), qPrintable(QString("step %1 scrolls").arg(k + 1)));
+            QVERIFY2(scroll->widget()->width() <= scroll->viewport()->width(),
+                     qPrintable(QString("%1 > %2").arg(scroll->widget()->width()).arg(scroll->viewport()->width())));
+        }
+        QTest::keyClick(&w, Qt::Key_Escape);
+        QTRY_VERIFY(!w.isFullScreen());
+        QVERIFY(w.findChild<QDockWidget*>("stagesDock")->isVisible());
+    }
+
+    void aLessonIsMadeFromTheViewsOnScreen()
+    {
+        MainWindow& w = *window_;
+        QTemporaryDir dir;
+        w.goToStage(3, false);
+        w.painter()->orbit(30, -15, 1.5);
+        w.newLessonFromView();
+        QVERIFY(w.lesson()->isOpen());
+        QVERIFY(child<QGroupBox>(w, "lessonEditor")->isChecked());
+        const LessonStep first = w.lesson()->lesson().steps[0];
+        QCOMPARE(first.stage, 3);
+        QCOMPARE(first.yaw, 30.0);
+        QCOMPARE(first.pitch, -15.0);
+        QCOMPARE(first.zoom, 1.5);
+        QCOMPARE(w.stage(), 3); // the view stays as it was
+
+        // A second step at stage 5, then its caption and a question, edited in the panel.
+        w.goToStage(5, false);
+        click(child<QPushButton>(w, "addStepButton"));
+        QCOMPARE(int(w.lesson()->lesson().steps.size()), 2);
+        QCOMPARE(w.lesson()->step(), 1);
+        QCOMPARE(w.stage(), 5);
+        auto* caption = child<QPlainTextEdit>(w, "captionEdit");
+        caption->setPlainText("After $S_{per}$ the volume is the canonical one.");
+        auto* question = child<QPlainTextEdit>(w, "questionEdit");
+        question->setPlainText(R"({"kind": "where", "prompt": "Where is the PRP?", "point": [8, 6, 84], "after": 9})");
+        click(child<QPushButton>(w, "applyEditsButton"));
+        // A bad question is refused with its field, and changes nothing.
+        QVERIFY2(child<QLabel>(w, "editError")->text().contains("question.after: must be a whole number from 1 to 5"),
+                 qPrintable(child<QLabel>(w, "editError")->text()));
+        QVERIFY(!w.lesson()->lesson().steps[1].question);
+        question->setPlainText(R"({"kind": "where", "prompt": "Where is the PRP?", "point": [8, 6, 84], "after": 3})");
+        click(child<QPushButton>(w, "applyEditsButton"));
+        QVERIFY(child<QLabel>(w, "editError")->text().isEmpty());
+        QVERIFY(w.lesson()->lesson().steps[1].question);
+        QCOMPARE(w.lesson()->lesson().steps[1].caption, std::string("After $S_{per}$ the volume is the canonical one."));
+        QVERIFY(w.lesson()->isAsking()); // the new question waits, and the caption with it
+        click(child<QPushButton>(w, "revealButton"));
+        QVERIFY(child<QLabel>(w, "lessonCaption")->text().contains("<i>S</i><sub><i>per</i></sub>"));
+
+        // Reordered, undone and redone.
+        click(child<QPushButton>(w, "moveUpButton"));
+        QCOMPARE(w.lesson()->lesson().steps[0].stage, 5);
+        click(child<QPushButton>(w, "lessonUndo"));
+        QCOMPARE(w.lesson()->lesson().steps[0].stage, 3);
+        click(child<QPushButton>(w, "lessonRedo"));
+        QCOMPARE(w.lesson()->lesson().steps[0].stage, 5);
+
+        // Saved atomically, and it reads back as the lesson it was.
+        const QString path = dir.filePath("made.json");
+        QVERIFY(w.saveLesson(path));
+        QVERIFY(!w.lesson()->isModified());
+        QVERIFY(w.windowTitle().contains("lesson made.json —"));
+        QCOMPARE(QDir(dir.path()).entryList(QDir::Files | QDir::Hidden), QStringList({"made.json"}));
+        const Lesson read = loadLesson(path.toStdString());
+        QCOMPARE(int(read.steps.size()), 2);
+        QCOMPARE(read.steps[0].stage, 5);
+        QVERIFY(read.steps[0].question && read.steps[0].question->where.norm() < 1e-12);
+        QCOMPARE(read.steps[1].yaw, 30.0);
+        QCOMPARE(std::filesystem::weakly_canonical(read.steps[1].scene.file),
+                 std::filesystem::weakly_canonical(kHouse.toStdString()));
+    }
+
+    // The lessons' math in the panel: italics, scripts and signs as KaTeX sets them on the page.
+    void mathIsSetWithScriptsAndSigns()
+    {
+        QCOMPARE(mathHtml("$\\mathit{SH}_\\mathit{par}$ costs \\$5"), QString("<i>SH</i><sub><i>par</i></sub> costs $5"));
+        QCOMPARE(mathHtml("$\\sqrt{2/3} \\approx 0.8165$"),
+                 QString("√<span style='text-decoration: overline'>2/3</span>≈0.8165"));
+        QCOMPARE(mathHtml("$-\\frac{2}{21}$"), QString("−2/21"));
+        QCOMPARE(mathHtml("$45^\\circ$ and $x^2 < y$"), QString("45° and <i>x</i><sup>2</sup>&lt;<i>y</i>"));
+        QCOMPARE(mathHtml("a <b> & $ unclosed"), QString("a &lt;b&gt; &amp; $ unclosed"));
+    }
+
+private:
+    std::unique_ptr<MainWindow> window_;
+};
+
+int main(int argc, char** argv)
+{
+    return runAppTests<LessonTest>(argc, argv);
+}
+
+#include "lesson_test.moc"
