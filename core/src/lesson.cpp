@@ -309,6 +309,17 @@ Json questionJson(const Question& q)
 
 } // namespace
 
+std::vector<int> offeredChoices(const Question& q)
+{
+    std::vector<int> order(q.choices.size());
+    for (std::size_t k = 0; k < order.size(); ++k)
+        order[k] = int(k);
+    if (q.kind == QuestionKind::WhichStage || q.kind == QuestionKind::Order)
+        std::sort(order.begin(), order.end(),
+                  [&](int a, int b) { return q.choices[std::size_t(a)] < q.choices[std::size_t(b)]; });
+    return order;
+}
+
 bool isRight(const Question& q, const Answer& a)
 {
     switch (q.kind) {

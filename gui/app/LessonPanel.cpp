@@ -38,16 +38,6 @@ QString symbolHtml(const std::string& symbol)
     return mathHtml("$" + cli::latexSymbol(symbol) + "$");
 }
 
-// The choices as they are offered: a scene's stage symbols sorted, so their order gives nothing away.
-std::vector<int> offeredOrder(const Question& q)
-{
-    std::vector<int> order(q.choices.size());
-    std::iota(order.begin(), order.end(), 0);
-    if (q.kind == QuestionKind::WhichStage || q.kind == QuestionKind::Order)
-        std::sort(order.begin(), order.end(), [&](int a, int b) { return q.choices[std::size_t(a)] < q.choices[std::size_t(b)]; });
-    return order;
-}
-
 QString answerHtml(const LessonStep& step)
 {
     const Question& q = *step.question;
@@ -383,7 +373,7 @@ void LessonPanel::buildInputs()
     case QuestionKind::SignW: radios({tr("w is positive"), tr("w is zero"), tr("w is negative")}); break;
     case QuestionKind::WhichStage: {
         QStringList texts;
-        for (int c : offeredOrder(q))
+        for (int c : offeredChoices(q))
             texts << symbolHtml(q.choices[std::size_t(c)]);
         radios(texts);
         break;
@@ -479,7 +469,7 @@ bool LessonPanel::checkAnswer()
         }
         answer.inside = picked == 0;
         answer.signW = picked == 0 ? 1 : picked == 1 ? 0 : -1;
-        answer.choice = q.kind == QuestionKind::WhichStage ? offeredOrder(q)[std::size_t(picked)] : picked;
+        answer.choice = q.kind == QuestionKind::WhichStage ? offeredChoices(q)[std::size_t(picked)] : picked;
         break;
     }
     }

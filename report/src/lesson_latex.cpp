@@ -2,7 +2,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <numeric>
 #include <sstream>
 
 #include "viewpipe/format.hpp"
@@ -42,17 +41,6 @@ std::string stageSymbol(const LessonStep& step, int stage)
     return buildPipeline(step.scene.camera, step.scene.effects).stages.at(std::size_t(stage - 1)).symbol;
 }
 
-// The choices in the order the web page shows them: a scene's stage symbols
-// sorted, so that their order gives nothing away.
-std::vector<int> shownOrder(const Question& q)
-{
-    std::vector<int> order(q.choices.size());
-    std::iota(order.begin(), order.end(), 0);
-    if (q.kind == QuestionKind::WhichStage || q.kind == QuestionKind::Order)
-        std::sort(order.begin(), order.end(), [&](int a, int b) { return q.choices[std::size_t(a)] < q.choices[std::size_t(b)]; });
-    return order;
-}
-
 std::string boxes(const std::vector<std::string>& options)
 {
     std::string out;
@@ -82,12 +70,12 @@ std::string questionLatex(const LessonStep& step, int number)
     case QuestionKind::SignW: out << "$w$ is " << boxes({"positive", "zero", "negative"}); break;
     case QuestionKind::WhichStage:
         out << fitted(cli::stageMatrixLatex(step.scene, q.stage, kDigits));
-        for (int k : shownOrder(q))
+        for (int k : offeredChoices(q))
             options.push_back(symbol(q.choices[std::size_t(k)]));
         out << boxes(options);
         break;
     case QuestionKind::Order:
-        for (int k : shownOrder(q))
+        for (int k : offeredChoices(q))
             options.push_back(symbol(q.choices[std::size_t(k)]));
         out << "In any order here: " << boxes(options) << "First to last: ";
         for (std::size_t k = 0; k < q.choices.size(); ++k)

@@ -55,6 +55,11 @@ int askingStage(const LessonStep& step);
 // The stage a step shows once its question is answered, or all along without one.
 int revealedStage(const LessonStep& step);
 
+// The order a question's choices are offered in, as indices: a choice
+// question's as written, a scene's stage symbols (which_stage, order) sorted,
+// so that their order gives nothing away.
+std::vector<int> offeredChoices(const Question& question);
+
 // A student's answer: the field its question's kind reads.
 struct Answer {
     Vec3<double> where = Vec3<double>::Zero();
