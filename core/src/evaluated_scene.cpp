@@ -530,7 +530,7 @@ struct Fact {
     std::function<bool(const std::function<std::optional<Vec3<double>>(const Vec3<double>&)>&)> holds;
 };
 
-std::vector<std::string> stageClaims(const Pipeline<double>& pipeline, const ViewSetup<double>& s)
+std::vector<std::string> stageClaims(const Pipeline<double>& pipeline, const ViewSetup<double>& s, bool farCut)
 {
     using Image = std::function<std::optional<Vec3<double>>(const Vec3<double>&)>;
     using V = Vec3<double>;
@@ -606,22 +606,31 @@ std::vector<std::string> stageClaims(const Pipeline<double>& pipeline, const Vie
                              });
                          }});
     // OpenGL's cube after the projection, then the API's volume after the step to its clip coordinates.
+    // A volume cut short of its far plane at infinity reaches the sides and the near face; its cut face
+    // lies between near and far.
     auto volumeIs = [&](const std::array<V, 8>& canonical) {
         return [&, canonical](const Image& image) {
-            return corners(image, [&](const V& c, std::size_t k) { return same((c - canonical[k]).norm(), 0); });
+            return corners(image, [&](const V& c, std::size_t k) {
+                if (!farCut || k < 4)
+                    return same((c - canonical[k]).norm(), 0);
+                const double nearZ = canonical[0].z(), farZ = canonical[4].z();
+                return same(c.x(), canonical[k].x()) && same(c.y(), canonical[k].y()) &&
+                       (c.z() - nearZ) * (farZ - c.z()) > 0;
+            });
         };
     };
+    const std::string cut = farCut ? " (far at infinity: the volume drawn is cut short of it)" : "";
     if (!foley) {
         std::array<V, 8> cube;
         for (std::size_t k = 0; k < 8; ++k)
             cube[k] = V((k % 4 == 1 || k % 4 == 2) ? 1 : -1, k % 4 >= 2 ? 1 : -1, k < 4 ? -1 : 1);
-        facts.push_back({"the volume is the cube -1 \u2264 x, y, z \u2264 1: near at z = -1, far at z = 1",
+        facts.push_back({"the volume is the cube -1 \u2264 x, y, z \u2264 1: near at z = -1, far at z = 1" + cut,
                          volumeIs(cube)});
         if (s.canonical != cube) {
             const double nearZ = s.canonical[0].z(), farZ = s.canonical[4].z();
             facts.push_back({"the volume is -1 \u2264 x, y \u2264 1, " + formatSignificant(std::min(nearZ, farZ), 3) +
                                  " \u2264 z \u2264 " + formatSignificant(std::max(nearZ, farZ), 3) +
-                                 (s.canonical[0].y() > 0 ? "; y points down in the image" : ""),
+                                 (s.canonical[0].y() > 0 ? "; y points down in the image" : "") + cut,
                              volumeIs(s.canonical)});
         }
     }
@@ -694,7 +703,7 @@ std::shared_ptr<const EvaluatedScene> evaluate(const Scene& scene, MeshCache* ca
     out.zFightingRing = ringAround(shown.fighting, screenClipMatrix(out.pipeline));
     out.effectsNote = describeEffects(scene.effects, out.outcomes, out.pipeline, out.bands);
     fillLegends(out, shown, farCut);
-    out.stageClaims = stageClaims(out.pipeline, out.setup);
+    out.stageClaims = stageClaims(out.pipeline, out.setup, farCut);
     return evaluated;
 }
 

@@ -468,4 +468,14 @@ TEST(Api, VulkansVolumeIsLabelledWithItsYDown)
 }
 
 } // namespace
+// With the far plane at infinity the volume drawn is cut short: the claim still holds for what is drawn
+// (sides and near face on the canonical volume, the cut face between near and far) and says so.
+TEST(Api, AVolumeCutShortOfAnInfiniteFarIsStillClaimed)
+{
+    const Scene scene = loadScene(std::string(VIEWPIPE_DATA_DIR) + "/scenes/apis/vulkan-reversed-infinite.json");
+    EXPECT_EQ(evaluateScene(scene)->stageClaims.back(),
+              "the volume is -1 \u2264 x, y \u2264 1, 0 \u2264 z \u2264 1; y points down in the image "
+              "(far at infinity: the volume drawn is cut short of it)");
+}
+
 } // namespace viewpipe
