@@ -41,14 +41,16 @@
       gl_FragColor = vec4(color, opacity);
     }`;
   const noCut = new THREE.Vector4(0, 0, 0, 1);
-  function material(color, opacity, surface) {
+  // `wide`: the wide lines' shader and its uniforms, for lines drawn as quads.
+  function material(color, opacity, surface, wide) {
     return new THREE.ShaderMaterial({
       uniforms: {
         color: { value: new THREE.Color(color[0], color[1], color[2]) },
         opacity: { value: opacity },
         cut: { value: noCut.clone() },
+        ...(wide ? wide.uniforms : {}),
       },
-      vertexShader, fragmentShader,
+      vertexShader: wide ? wide.vertexShader : vertexShader, fragmentShader,
       transparent: opacity < 1,
       depthWrite: !surface && opacity >= 1,
       side: THREE.DoubleSide,
@@ -89,19 +91,9 @@
     geometry.setAttribute('other', new THREE.BufferAttribute(other, 3));
     geometry.setAttribute('side', new THREE.BufferAttribute(side, 1));
     geometry.setIndex(new THREE.BufferAttribute(index, 1));
-    const c = primitive.color;
-    const object = new THREE.Mesh(geometry, new THREE.ShaderMaterial({
-      uniforms: {
-        color: { value: new THREE.Color(c[0], c[1], c[2]) },
-        opacity: { value: opacity },
-        cut: { value: noCut.clone() },
-        viewport: { value: new THREE.Vector2(1, 1) },
-        width: { value: primitive.lineWidth },
-      },
-      vertexShader: wideVertexShader, fragmentShader,
-      transparent: opacity < 1,
-      depthWrite: opacity >= 1,
-      side: THREE.DoubleSide,
+    const object = new THREE.Mesh(geometry, material(primitive.color, opacity, false, {
+      vertexShader: wideVertexShader,
+      uniforms: { viewport: { value: new THREE.Vector2(1, 1) }, width: { value: primitive.lineWidth } },
     }));
     object.matrixAutoUpdate = false;
     object.frustumCulled = false;
