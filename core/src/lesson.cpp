@@ -210,9 +210,80 @@ Question readQuestion(const Json& j, const std::string& path, const Pipeline<dou
     return q;
 }
 
+Element readElement(const Json& j, const std::string& path, bool labels, bool& isLabels)
+{
+    const std::string name = readString(j, path);
+    isLabels = labels && name == "labels";
+    if (isLabels)
+        return Element::Objects;
+    std::string names;
+    for (const auto& [element, known] : lessonElementNames()) {
+        if (name == known)
+            return element;
+        names += std::string(names.empty() ? "" : ", ") + known;
+    }
+    throw InputError(path, "must be one of " + names + (labels ? ", labels" : "") + " (got \"" + name + "\")");
+}
+
+void readShown(const Json& j, const std::string& path, LessonStep& step, const Pipeline<double>& pipeline)
+{
+    static const std::vector<std::string> panels = {"stages", "matrices", "parameters", "code", "accuracy", "depth"};
+    if (j.contains("hide")) {
+        const std::string at = child(path, "hide");
+        if (!j["hide"].is_array())
+            throw InputError(at, "must be an array of element names (got " + typeName(j["hide"]) + ")");
+        for (std::size_t k = 0; k < j["hide"].size(); ++k) {
+            bool labels = false;
+            const Element e = readElement(j["hide"][k], element(at, k), true, labels);
+            if (labels)
+                step.labelsHidden = true;
+            else
+                step.hidden.insert(e);
+        }
+    }
+    if (j.contains("highlight")) {
+        const std::string at = child(path, "highlight");
+        requireObject(j["highlight"], at, {"elements", "entries"}, {});
+        const Json& h = j["highlight"];
+        if (h.contains("elements")) {
+            const std::string list = child(at, "elements");
+            if (!h["elements"].is_array())
+                throw InputError(list, "must be an array of element names (got " + typeName(h["elements"]) + ")");
+            for (std::size_t k = 0; k < h["elements"].size(); ++k) {
+                bool labels = false;
+                step.highlighted.insert(readElement(h["elements"][k], element(list, k), false, labels));
+            }
+        }
+        if (h.contains("entries")) {
+            const std::string list = child(at, "entries");
+            const int stage = revealedStage(step);
+            if (stage == 0)
+                throw InputError(list, "the world (stage 0) has no matrix to highlight");
+            if (pipeline.stages[std::size_t(stage - 1)].divides)
+                throw InputError(list, "stage " + std::to_string(stage) + " is the divide, which has no matrix");
+            if (!h["entries"].is_array())
+                throw InputError(list, "must be an array of [row, column] pairs (got " + typeName(h["entries"]) + ")");
+            for (std::size_t k = 0; k < h["entries"].size(); ++k) {
+                const Json& entry = h["entries"][k];
+                const std::string item = element(list, k);
+                if (!entry.is_array() || entry.size() != 2)
+                    throw InputError(item, "must be [row, column] (got " + entry.dump() + ")");
+                step.entries.push_back({readIndex(entry[0], element(item, 0), 1, 4), readIndex(entry[1], element(item, 1), 1, 4)});
+            }
+        }
+    }
+    if (j.contains("panel")) {
+        step.panel = readString(j["panel"], child(path, "panel"));
+        if (std::find(panels.begin(), panels.end(), step.panel) == panels.end())
+            throw InputError(child(path, "panel"), "must be one of stages, matrices, parameters, code, accuracy, depth (got \"" +
+                                                       step.panel + "\")");
+    }
+}
+
 LessonStep readStep(const Json& j, const std::string& path, const std::filesystem::path& baseDir)
 {
-    requireObject(j, path, {"scene", "stage", "camera", "caption", "trace", "question"}, {"scene", "caption"});
+    requireObject(j, path, {"scene", "stage", "camera", "caption", "trace", "question", "hide", "highlight", "panel"},
+                  {"scene", "caption"});
     LessonStep step;
     step.scene = readStepScene(j["scene"], child(path, "scene"), baseDir);
     const Pipeline<double> pipeline = buildPipeline(step.scene.camera, step.scene.effects);
@@ -231,6 +302,7 @@ LessonStep readStep(const Json& j, const std::string& path, const std::filesyste
         step.trace = readVec3(j["trace"], child(path, "trace"));
     if (j.contains("question"))
         step.question = readQuestion(j["question"], child(path, "question"), pipeline);
+    readShown(j, path, step, pipeline); // after the question: entries are of the stage it reveals
     return step;
 }
 
@@ -258,6 +330,42 @@ Lesson parseLesson(const std::string& text, const std::filesystem::path& baseDir
     for (std::size_t k = 0; k < steps.size(); ++k)
         lesson.steps.push_back(readStep(steps[k], element("steps", k), baseDir));
     return lesson;
+}
+
+const std::vector<std::pair<Element, const char*>>& lessonElementNames()
+{
+    static const std::vector<std::pair<Element, const char*>> names = {
+        {Element::Objects, "objects"},         {Element::WorldAxes, "world_axes"}, {Element::ViewAxes, "view_axes"},
+        {Element::Prp, "prp"},                 {Element::Window, "window"},        {Element::Dop, "dop"},
+        {Element::Volume, "volume"},           {Element::FrontPlane, "front_plane"}, {Element::BackPlane, "back_plane"},
+        {Element::Projectors, "projectors"},   {Element::Canonical, "canonical"}};
+    return names;
+}
+
+std::shared_ptr<const EvaluatedScene> shownAtStep(const std::shared_ptr<const EvaluatedScene>& scene, const LessonStep& step)
+{
+    if (step.hidden.empty() && !step.labelsHidden && step.highlighted.empty())
+        return scene;
+    auto shown = std::make_shared<EvaluatedScene>(*scene);
+    auto hidden = [&](Element e) { return step.hidden.count(e) > 0; };
+    shown->primitives.clear();
+    for (Primitive p : scene->primitives) {
+        if (hidden(p.element))
+            continue;
+        if (step.highlighted.count(p.element))
+            p.widthScale = 2.5;
+        shown->primitives.push_back(std::move(p));
+    }
+    auto drop = [&](auto& list) {
+        list.erase(std::remove_if(list.begin(), list.end(), [&](const auto& item) { return hidden(item.element); }), list.end());
+    };
+    drop(shown->markers);
+    drop(shown->worldLegend);
+    if (step.labelsHidden)
+        shown->labels.clear();
+    else
+        drop(shown->labels);
+    return shown;
 }
 
 int askingStage(const LessonStep& step)
@@ -423,6 +531,29 @@ std::string lessonToJson(const Lesson& lesson, const std::filesystem::path& base
             entry["trace"] = vecJson(*step.trace);
         if (step.question)
             entry["question"] = questionJson(*step.question);
+        auto name = [](Element e) {
+            for (const auto& [element, known] : lessonElementNames())
+                if (element == e)
+                    return std::string(known);
+            return std::string();
+        };
+        Json hide = Json::array();
+        for (Element e : step.hidden)
+            hide.push_back(name(e));
+        if (step.labelsHidden)
+            hide.push_back("labels");
+        if (!hide.empty())
+            entry["hide"] = hide;
+        if (!step.highlighted.empty() || !step.entries.empty()) {
+            Json highlight = Json::object();
+            for (Element e : step.highlighted)
+                highlight["elements"].push_back(name(e));
+            for (const auto& [row, column] : step.entries)
+                highlight["entries"].push_back({row, column});
+            entry["highlight"] = highlight;
+        }
+        if (!step.panel.empty())
+            entry["panel"] = step.panel;
         steps.push_back(entry);
     }
     return Json{{"title", lesson.title}, {"steps", steps}}.dump(2) + "\n";

@@ -805,7 +805,11 @@ void MainWindow::updateStageWidgets()
         matrices_->showWaiting(tr("<i>The matrices follow the answer to the lesson's question.</i>"));
         return;
     }
-    matrices_->showStage(document_->pipeline(), stage_);
+    // A lesson step's highlighted entries, while its stage is shown.
+    const bool stepShown = lesson_->isOpen() && shownLessonStep_ == lesson_->step() &&
+                           stage_ == revealedStage(lesson_->currentStep());
+    matrices_->showStage(document_->pipeline(), stage_,
+                         stepShown ? lesson_->currentStep().entries : std::vector<std::array<int, 2>>{});
     matrices_->showTrace(document_->pipeline(), traced_, stage_);
 }
 
@@ -1183,6 +1187,11 @@ void MainWindow::showLessonStep()
             return;
     }
     shownLessonStep_ = k;
+    // What the step hides is not drawn, what it highlights is drawn wider.
+    painter_->setScene(shownAtStep(document_->evaluated(), step));
+    painter_->markTraced(traced_);
+    if (!step.panel.empty())
+        showPanel(QString::fromStdString(step.panel));
     if (newStep || !sameScene) {
         painter_->resetView();
         painter_->orbit(step.yaw, step.pitch, step.zoom);

@@ -72,7 +72,7 @@ MatrixPanel::MatrixPanel(QWidget* parent) : QWidget(parent)
     layout->addStretch();
 }
 
-void MatrixPanel::showStage(const Pipeline<double>& pipeline, int stage)
+void MatrixPanel::showStage(const Pipeline<double>& pipeline, int stage, const std::vector<std::array<int, 2>>& highlighted)
 {
     const std::vector<Mat4<double>> cumulative = cumulativeProducts(pipeline.stages);
     if (stage <= 0) {
@@ -105,8 +105,12 @@ void MatrixPanel::showStage(const Pipeline<double>& pipeline, int stage)
         html += "<p><b>" + symbol.toHtmlEscaped() + "</b>: " + QString(kDivideMapping).toHtmlEscaped() + "<br><i>" +
                 tr("Not a matrix: each point is divided by its own w. The cumulative matrix is unchanged; the "
                    "points it gives are divided.") + "</i></p>";
-    else
-        html += table(symbol, numbers(s.matrix));
+    else {
+        std::array<bool, 16> marked{};
+        for (const auto& [row, column] : highlighted)
+            marked[std::size_t((row - 1) * 4 + column - 1)] = true;
+        html += table(symbol, numbers(s.matrix), marked);
+    }
     html += table(tr("Cumulative (changed entries highlighted)"), numbers(now), changed);
     matrices_->setText(html);
 }
@@ -146,6 +150,11 @@ void MatrixPanel::showWaiting(const QString& why)
 QString MatrixPanel::traceText() const
 {
     return trace_->text();
+}
+
+QString MatrixPanel::matricesText() const
+{
+    return matrices_->text();
 }
 
 QString MatrixPanel::stageText() const

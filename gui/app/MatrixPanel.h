@@ -6,7 +6,9 @@
 
 #include <QWidget>
 
+#include <array>
 #include <optional>
+#include <vector>
 
 #include "viewpipe/pipeline.hpp"
 
@@ -22,14 +24,16 @@ class MatrixPanel : public QWidget {
 public:
     explicit MatrixPanel(QWidget* parent = nullptr);
 
-    // stage 0 is the world (no matrix yet); stage k shows pipeline.stages[k-1].
-    void showStage(const Pipeline<double>& pipeline, int stage);
+    // stage 0 is the world (no matrix yet); stage k shows pipeline.stages[k-1],
+    // the `highlighted` entries of its matrix (row, column from 1) marked.
+    void showStage(const Pipeline<double>& pipeline, int stage, const std::vector<std::array<int, 2>>& highlighted = {});
     void showTrace(const Pipeline<double>& pipeline, const std::optional<Vec3<double>>& point, int stage);
     // No matrix, and why (a lesson's question waits for its answer).
     void showWaiting(const QString& why);
 
     QString stageText() const;
     QString traceText() const;
+    QString matricesText() const; // the tables, as HTML
 
 private:
     QLabel* title_;

@@ -22,23 +22,34 @@ struct LessonOptions {
     bool quiet = false;
 };
 
-// Each step's scene evaluated (its meshes read), each scene once however many
-// steps show it; a refusal names the step. `stepScenes[k]` is step k's.
+// Each step's scene evaluated (its meshes read) and as the step shows it
+// (shownAtStep), each once however many steps show it alike; a refusal names
+// the step. `stepScenes[k]` is step k's.
 std::vector<std::shared_ptr<const EvaluatedScene>> evaluateSteps(const Lesson& lesson, std::vector<int>& stepScenes)
 {
+    std::map<std::string, std::shared_ptr<const EvaluatedScene>> evaluated;
     std::map<std::string, int> known;
     std::vector<std::shared_ptr<const EvaluatedScene>> scenes;
     for (std::size_t k = 0; k < lesson.steps.size(); ++k) {
-        const Scene& scene = lesson.steps[k].scene;
-        const std::string key = sceneToJson(scene) + scene.file.string();
-        auto found = known.find(key);
-        if (found == known.end()) {
+        const LessonStep& step = lesson.steps[k];
+        const std::string sceneKey = sceneToJson(step.scene) + step.scene.file.string();
+        auto& scene = evaluated[sceneKey];
+        if (!scene) {
             try {
-                scenes.push_back(evaluateScene(scene));
+                scene = evaluateScene(step.scene);
             } catch (const InputError& e) {
                 throw InputError("steps[" + std::to_string(k) + "].scene." + e.field(), e.reason());
             }
-            found = known.emplace(key, int(scenes.size()) - 1).first;
+        }
+        std::string shownKey = sceneKey + (step.labelsHidden ? "|labels" : "");
+        for (Element e : step.hidden)
+            shownKey += "|-" + std::to_string(int(e));
+        for (Element e : step.highlighted)
+            shownKey += "|+" + std::to_string(int(e));
+        auto found = known.find(shownKey);
+        if (found == known.end()) {
+            scenes.push_back(shownAtStep(scene, step));
+            found = known.emplace(shownKey, int(scenes.size()) - 1).first;
         }
         stepScenes.push_back(found->second);
     }

@@ -22,14 +22,16 @@ constexpr double kSlideFontScale = 1.5;
 
 // Step `step`'s view of `stage` as a PDF figure: its camera, its stage, the
 // stage named only when the step does not hide it.
-void writeStepFigure(const OffscreenPainter& offscreen, const EvaluatedScene& scene, const LessonStep& step, int stage,
-                     bool named, const std::optional<Vec3<double>>& traced, Theme theme, const fs::path& file)
+void writeStepFigure(const OffscreenPainter& offscreen, const std::shared_ptr<const EvaluatedScene>& scene,
+                     const LessonStep& step, int stage, bool named, const std::optional<Vec3<double>>& traced, Theme theme,
+                     const fs::path& file)
 {
     ScenePainter& painter = *offscreen.painter;
+    painter.setScene(scene);
     painter.resetView();
     painter.orbit(step.yaw, step.pitch, step.zoom);
-    const std::string caption = named ? stageCaption(scene, std::size_t(stage), StageText::Heading) : std::string();
-    StageShown shown = showStageAtRest(offscreen, scene, stage, caption, std::nullopt);
+    const std::string caption = named ? stageCaption(*scene, std::size_t(stage), StageText::Heading) : std::string();
+    StageShown shown = showStageAtRest(offscreen, *scene, stage, caption, std::nullopt);
     shown.traced = traced;
     writeVectorFigure({&shown, painter.figureView(), caption, theme}, "pdf", file);
 }
@@ -100,12 +102,12 @@ std::vector<fs::path> exportLessonPdf(const Lesson& lesson, const std::vector<in
                     const bool aboutPoint = question && (question->kind == QuestionKind::Where ||
                                                          question->kind == QuestionKind::Inside ||
                                                          question->kind == QuestionKind::SignW);
-                    writeStepFigure(offscreen, *scenes[s], lessonStep, revealedStage(lessonStep), true,
+                    writeStepFigure(offscreen, scenes[s], lessonStep, revealedStage(lessonStep), true,
                                     aboutPoint ? std::optional<Vec3<double>>(question->point) : lessonStep.trace, theme,
                                     temporary / files.revealed);
                     if (lessonStep.question) {
                         files.asking = prefix + name + "-asking.pdf";
-                        writeStepFigure(offscreen, *scenes[s], lessonStep, askingStage(lessonStep), false,
+                        writeStepFigure(offscreen, scenes[s], lessonStep, askingStage(lessonStep), false,
                                         lessonStep.trace, theme, temporary / files.asking);
                     }
                 };

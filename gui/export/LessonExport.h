@@ -15,7 +15,7 @@
 
 namespace viewpipe::gui {
 
-// `scenes[stepScenes[k]]` is step k's scene, evaluated. Both files are moved
+// `scenes[stepScenes[k]]` is step k's scene, evaluated and as the step shows it (shownAtStep). Both files are moved
 // into `out` only once both are made; throws std::runtime_error when pdflatex
 // is missing or fails, InputError when `out` cannot be made.
 std::vector<std::filesystem::path> exportLessonPdf(const Lesson& lesson, const std::vector<int>& stepScenes,

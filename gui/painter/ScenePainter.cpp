@@ -724,7 +724,7 @@ void ScenePainter::applyStyle()
         vtkProperty* property = layer.actor->GetProperty();
         property->SetColor(c.r, c.g, c.b);
         property->SetOpacity(p.canonical ? canonicalOpacity_ : p.opacity);
-        property->SetLineWidth(lineScale_ * lineWidthOf(p.element, surface));
+        property->SetLineWidth(lineScale_ * lineWidthOf(p));
     }
     for (Layer& ghost : ghosts_) {
         const Rgb c = elementColor(ghost.primitive->element, theme_);

@@ -308,6 +308,12 @@ double lineWidthOf(Element element, bool surface)
     return emphasised ? 3.5 : 2.0;
 }
 
+double lineWidthOf(const Primitive& primitive)
+{
+    const bool surface = primitive.kind == PrimitiveKind::Faces;
+    return lineWidthOf(primitive.element, surface) * (surface ? 1 : primitive.widthScale);
+}
+
 std::vector<std::optional<PlacedLabel>> placeLabels(const std::vector<LabelRequest>& requests,
                                                     const LabelObstacles& obstacles, int width, int height)
 {
@@ -540,10 +546,11 @@ Figure drawFigure(const StageShown& stage, const FigureView& view, const LabelMe
     figure.height = view.height;
     figure.fontSize = view.fontSize;
     figure.lineScale = view.lineScale;
-    auto add = [&](Element element, bool surface, double opacity, const std::vector<Vec3d>& pixels) {
+    auto add = [&](Element element, bool surface, double opacity, const std::vector<Vec3d>& pixels,
+                   double widthScale = 1) {
         if (pixels.size() < (surface ? 3u : 2u))
             return;
-        figure.shapes.push_back({element, surface, opacity, view.lineScale * lineWidthOf(element, surface),
+        figure.shapes.push_back({element, surface, opacity, view.lineScale * lineWidthOf(element, surface) * widthScale,
                                  flat(pixels), meanDepth(pixels)});
     };
     for (const Primitive& p : stage.scene->primitives) {
@@ -553,7 +560,8 @@ Figure drawFigure(const StageShown& stage, const FigureView& view, const LabelMe
         const double opacity = p.canonical ? stage.canonicalOpacity : p.opacity;
         if (p.kind == PrimitiveKind::Lines) {
             for (std::size_t k = 0; k + 1 < p.segments.size(); k += 2)
-                add(p.element, false, opacity, throughView(stage, view, m, {p.segments[k], p.segments[k + 1]}, false, !p.canonical));
+                add(p.element, false, opacity, throughView(stage, view, m, {p.segments[k], p.segments[k + 1]}, false, !p.canonical),
+                    p.widthScale);
             continue;
         }
         std::vector<Vec3d> corners;

@@ -1,3 +1,4 @@
+#include <algorithm>
 #include "viewpipe/report/latex.hpp"
 
 #include <cmath>
@@ -55,7 +56,8 @@ std::string decimal(const Exact& x, int digits)
     return s;
 }
 
-std::string bmatrix(const Mat4<Exact>& m, int digits)
+// `highlighted`: entries (row, column from 1) set on a colored box (xcolor).
+std::string bmatrix(const Mat4<Exact>& m, int digits, const std::vector<std::array<int, 2>>& highlighted = {})
 {
     std::string out = "\\begin{bmatrix}\n";
     for (int r = 0; r < 4; ++r) {
@@ -64,6 +66,8 @@ std::string bmatrix(const Mat4<Exact>& m, int digits)
             std::string cell;
             if (!asFraction(m(r, c), cell))
                 cell = decimal(m(r, c), digits);
+            if (std::find(highlighted.begin(), highlighted.end(), std::array<int, 2>{r + 1, c + 1}) != highlighted.end())
+                cell = "\\colorbox{yellow}{$" + cell + "$}"; // a color KaTeX and xcolor both name
             out += cell + (c < 3 ? " & " : (r < 3 ? " \\\\\n" : "\n"));
         }
     }
@@ -95,11 +99,11 @@ std::string latexSymbol(const std::string& symbol)
 namespace {
 
 // A stage's matrix, or the divide's mapping, which is no matrix.
-std::string stageEquation(const Stage<Exact>& stage, int digits)
+std::string stageEquation(const Stage<Exact>& stage, int digits, const std::vector<std::array<int, 2>>& highlighted = {})
 {
     if (stage.divides)
         return "\\text{divide:}\\quad (x, y, z, w) \\mapsto \\left(\\frac{x}{w}, \\frac{y}{w}, \\frac{z}{w}, 1\\right)";
-    return latexSymbol(stage.symbol) + " =\n" + bmatrix(stage.matrix, digits);
+    return latexSymbol(stage.symbol) + " =\n" + bmatrix(stage.matrix, digits, highlighted);
 }
 
 } // namespace
@@ -134,10 +138,10 @@ std::string matricesLatex(const Scene& scene, int digits)
 
 namespace viewpipe::cli {
 
-std::string stageLatex(const Scene& scene, int stage, int digits)
+std::string stageLatex(const Scene& scene, int stage, int digits, const std::vector<std::array<int, 2>>& highlighted)
 {
     const Pipeline<Exact> p = exactPipeline(scene);
-    return stageEquation(p.stages.at(std::size_t(stage - 1)), digits);
+    return stageEquation(p.stages.at(std::size_t(stage - 1)), digits, highlighted);
 }
 
 std::string stageMatrixLatex(const Scene& scene, int stage, int digits)

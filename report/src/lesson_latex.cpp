@@ -119,7 +119,7 @@ std::string answerLatex(const LessonStep& step)
 std::string matrixLatex(const LessonStep& step)
 {
     const int stage = revealedStage(step);
-    return stage > 0 ? fitted(cli::stageLatex(step.scene, stage, kDigits)) : std::string();
+    return stage > 0 ? fitted(cli::stageLatex(step.scene, stage, kDigits, step.entries)) : std::string();
 }
 
 std::string answerParagraphs(const LessonStep& step)
@@ -135,7 +135,7 @@ std::string figure(const std::string& file)
     return "\\includegraphics[width=\\linewidth]{" + file + "}\\par\n";
 }
 
-const char* kPreamble = "\\usepackage{graphicx}\n\\usepackage{amsmath}\n\\usepackage{amssymb}\n\\usepackage{adjustbox}\n"
+const char* kPreamble = "\\usepackage{graphicx}\n\\usepackage{amsmath}\n\\usepackage{amssymb}\n\\usepackage{adjustbox}\n\\usepackage{xcolor}\n"
                         "\\setlength{\\parindent}{0pt}\n";
 
 } // namespace

@@ -91,7 +91,7 @@ json primitiveJson(const Primitive& p, Theme theme)
     json out = {{"surface", surface},
                 {"color", color(styledColor(p.element, surface, theme))},
                 {"opacity", p.opacity},
-                {"lineWidth", lineWidthOf(p.element, surface)},
+                {"lineWidth", lineWidthOf(p)},
                 {"canonical", p.canonical},
                 {"ghosted", StageShown::ghosted(p)},
                 {"object", p.object}};
@@ -351,6 +351,10 @@ std::string lessonPage(const Lesson& lesson, const std::vector<int>& stepScenes,
                       {"pitch", step.pitch},       {"zoom", step.zoom},   {"caption", step.caption}};
         if (step.trace)
             entry["trace"] = vec(*step.trace);
+        if (!step.entries.empty()) { // the stage's equation with those entries marked, as the page's own shows it
+            entry["latexStage"] = revealedStage(step);
+            entry["latex"] = cli::stageLatex(step.scene, revealedStage(step), 4, step.entries);
+        }
         if (step.question) {
             entry["question"] = questionData(*step.question);
             if (step.question->kind == QuestionKind::Entry)

@@ -506,7 +506,10 @@
           symbolic.appendChild(line);
         }
       }
-      typeset(document.getElementById('matrix'), stage.latex);
+      // A lesson step's own form of its stage's matrix: the entries it highlights marked.
+      const step = lesson && lesson.steps[state.step];
+      const own = step && step.latex && step.latexStage === state.stage && step.scene === shownScene;
+      typeset(document.getElementById('matrix'), own ? step.latex : stage.latex);
       typeset(document.getElementById('cumulative'), stage.cumulativeLatex);
     }
     showTrace();

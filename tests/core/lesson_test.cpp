@@ -130,6 +130,8 @@ TEST(Lesson, ALessonSavedReadsBackTheSame)
                 EXPECT_EQ(fs::weakly_canonical(a.scene.file), fs::weakly_canonical(b.scene.file));
                 EXPECT_EQ(std::tie(a.stage, a.yaw, a.pitch, a.zoom, a.caption), std::tie(b.stage, b.yaw, b.pitch, b.zoom, b.caption));
                 EXPECT_EQ(a.trace.has_value(), b.trace.has_value());
+                EXPECT_EQ(std::tie(a.hidden, a.labelsHidden, a.highlighted, a.entries, a.panel),
+                          std::tie(b.hidden, b.labelsHidden, b.highlighted, b.entries, b.panel));
                 ASSERT_EQ(a.question.has_value(), b.question.has_value());
                 if (!a.question)
                     continue;
@@ -198,6 +200,41 @@ TEST(Lesson, AQuestionIsEditedAsTheFileHoldsIt)
     EXPECT_EQ(q.signW, 1); // N_per's five stages are affine: w stays 1
     expectRefused([&] { parseQuestion(R"({"kind": "entry", "prompt": "p", "stage": 9, "row": 1, "column": 1})", house); },
                   "question.stage", "must be a whole number from 1 to 5");
+}
+
+// What a step hides is not in the scene its pictures draw; what it highlights is wider there.
+TEST(Lesson, AStepHidesAndHighlightsElementsAndEntries)
+{
+    const Lesson lesson = lessonWith(R"({"scene": "house.json", "stage": 4, "caption": "c", "hide": ["projectors", "labels"],
+        "highlight": {"elements": ["window"], "entries": [[1, 3], [2, 3]]}, "panel": "matrices"})");
+    const LessonStep& step = lesson.steps[0];
+    EXPECT_EQ(step.hidden, std::set<Element>{Element::Projectors});
+    EXPECT_TRUE(step.labelsHidden);
+    EXPECT_EQ(step.entries, (std::vector<std::array<int, 2>>{{1, 3}, {2, 3}}));
+    const std::shared_ptr<const EvaluatedScene> full = evaluateScene(step.scene), shown = shownAtStep(full, step);
+    auto count = [](const EvaluatedScene& scene, Element e) {
+        return std::count_if(scene.primitives.begin(), scene.primitives.end(), [&](const Primitive& p) { return p.element == e; });
+    };
+    ASSERT_GT(count(*full, Element::Projectors), 0);
+    EXPECT_EQ(count(*shown, Element::Projectors), 0);
+    EXPECT_EQ(count(*shown, Element::Window), count(*full, Element::Window));
+    for (const Primitive& p : shown->primitives)
+        EXPECT_EQ(p.widthScale, p.element == Element::Window ? 2.5 : 1.0);
+    EXPECT_TRUE(shown->labels.empty());
+    EXPECT_FALSE(full->labels.empty());
+    // A step that changes nothing draws the scene itself.
+    EXPECT_EQ(shownAtStep(full, lessonWith(R"({"scene": "house.json", "caption": "c"})").steps[0]), full);
+
+    expectRefused([] { lessonWith(R"({"scene": "house.json", "caption": "c", "hide": ["walls"]})"); }, "steps[0].hide[0]",
+                  "must be one of objects, world_axes");
+    expectRefused([] { lessonWith(R"({"scene": "house.json", "caption": "c", "highlight": {"entries": [[1, 3]]}})"); },
+                  "steps[0].highlight.entries", "the world (stage 0) has no matrix");
+    expectRefused([] { lessonWith(R"({"scene": "house.json", "stage": 2, "caption": "c", "highlight": {"entries": [[1, 5]]}})"); },
+                  "steps[0].highlight.entries[0][1]", "must be a whole number from 1 to 4");
+    expectRefused([] { lessonWith(R"({"scene": "house.json", "caption": "c", "highlight": {"elements": ["labels"]}})"); },
+                  "steps[0].highlight.elements[0]", "must be one of");
+    expectRefused([] { lessonWith(R"({"scene": "house.json", "caption": "c", "panel": "tikz"})"); }, "steps[0].panel",
+                  "must be one of stages, matrices");
 }
 
 } // namespace

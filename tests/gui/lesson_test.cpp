@@ -156,6 +156,12 @@ private slots:
         QTest::keyClicks(child<QLineEdit>(w, "answerEntry"), "2/21");
         QTest::keyClick(child<QLineEdit>(w, "answerEntry"), Qt::Key_Return);
         QVERIFY2(feedback(w).contains("Right."), qPrintable(feedback(w)));
+        // Revealed, SH_per's matrix marks the entries the step highlights: -2/21 and -1/14, and nothing else.
+        QTRY_VERIFY(settled(w) && w.stage() == 4);
+        const QString tables = w.matrices()->matricesText();
+        const QString shear = tables.mid(tables.indexOf("<b>SH_per</b>"));
+        QCOMPARE(shear.left(shear.indexOf("</table>")).count("#f2c14e"), 2);
+        QVERIFY(w.findChild<QDockWidget*>("matricesDock")->isVisible()); // the panel the step puts in front
 
         // The answers as the web page saves them.
         QTemporaryDir dir;

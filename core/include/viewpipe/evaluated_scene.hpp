@@ -44,6 +44,7 @@ struct Primitive {
     int object = -1;            // the scene object drawn, or -1
     bool depthColored = false;  // faces colored by the level the depth buffer stores
     bool canonical = false;     // drawn where it is (not through the stage's matrix)
+    double widthScale = 1;      // its lines wider than its element's (a lesson highlights it)
     Eigen::AlignedBox<double, 3> bounds;
 };
 

@@ -6,11 +6,16 @@
 // lesson cannot state a wrong one; an answer the lesson writes anyway must
 // agree. Refusals are InputErrors naming the field ("steps[3].question.answer").
 
+#include <array>
 #include <filesystem>
 #include <optional>
 #include <string>
 #include <vector>
 
+#include <memory>
+#include <set>
+
+#include "viewpipe/evaluated_scene.hpp"
 #include "viewpipe/scene.hpp"
 
 namespace viewpipe {
@@ -41,7 +46,21 @@ struct LessonStep {
     std::string caption;
     std::optional<Vec3<double>> trace;
     std::optional<Question> question;
+    std::set<Element> hidden;           // not drawn at this step
+    bool labelsHidden = false;          // no label drawn at this step
+    std::set<Element> highlighted;      // drawn with wider lines
+    std::vector<std::array<int, 2>> entries; // the shown stage's matrix entries highlighted (row, column from 1)
+    std::string panel;                  // the app's panel in front: stages, matrices, parameters, code, accuracy, depth
 };
+
+// The elements a step can hide or highlight, by their names in the file
+// ("objects", "world_axes", "window", ...).
+const std::vector<std::pair<Element, const char*>>& lessonElementNames();
+
+// A scene as a step shows it: without the elements (and labels) it hides,
+// its highlighted elements' lines wider; the scene itself where the step
+// changes nothing. Every picture of the step draws this.
+std::shared_ptr<const EvaluatedScene> shownAtStep(const std::shared_ptr<const EvaluatedScene>& scene, const LessonStep& step);
 
 struct Lesson {
     std::string title;

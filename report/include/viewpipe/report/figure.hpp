@@ -171,6 +171,8 @@ Figure drawFigure(const StageShown& stage, const FigureView& view, const LabelMe
 
 // The line width the pictures draw an element's lines with, in pixels at lineScale 1.
 double lineWidthOf(Element element, bool surface);
+// A primitive's, wider where it is highlighted.
+double lineWidthOf(const Primitive& primitive);
 // How much of its color a ghost's line keeps.
 constexpr double kGhostOpacity = 0.3;
 

@@ -6,6 +6,7 @@
 // fraction of denominator at most 10^9 to 60 digits is printed as that exact
 // fraction (glOrtho's 1/25 and -3/2), any other entry as a decimal.
 
+#include <array>
 #include <string>
 #include <vector>
 
@@ -15,8 +16,9 @@ namespace viewpipe::cli {
 
 std::string matricesLatex(const Scene& scene, int digits);
 
-// One stage's matrix (stage >= 1) as "symbol = \begin{bmatrix}...\end{bmatrix}".
-std::string stageLatex(const Scene& scene, int stage, int digits);
+// One stage's matrix (stage >= 1) as "symbol = \begin{bmatrix}...\end{bmatrix}", the
+// `highlighted` entries (row, column from 1) on a colored box (needs xcolor).
+std::string stageLatex(const Scene& scene, int stage, int digits, const std::vector<std::array<int, 2>>& highlighted = {});
 
 // The same without its symbol: the matrix alone (the divide's mapping as stageLatex's).
 std::string stageMatrixLatex(const Scene& scene, int stage, int digits);
