@@ -1,9 +1,11 @@
 #include "viewpipe/lesson.hpp"
 
 #include <algorithm>
+#include <cctype>
 #include <cmath>
 
 #include "json_fields.hpp"
+#include "parse_number.hpp"
 #include "viewpipe/format.hpp"
 
 namespace viewpipe {
@@ -210,50 +212,42 @@ Question readQuestion(const Json& j, const std::string& path, const Pipeline<dou
     return q;
 }
 
-Element readElement(const Json& j, const std::string& path, bool labels, bool& isLabels)
+// An array of element names; "labels" too where `labels` is given (it says whether the array names them).
+std::set<Element> readElements(const Json& j, const std::string& path, bool* labels)
 {
-    const std::string name = readString(j, path);
-    isLabels = labels && name == "labels";
-    if (isLabels)
-        return Element::Objects;
-    std::string names;
-    for (const auto& [element, known] : lessonElementNames()) {
-        if (name == known)
-            return element;
-        names += std::string(names.empty() ? "" : ", ") + known;
+    if (!j.is_array())
+        throw InputError(path, "must be an array of element names (got " + typeName(j) + ")");
+    std::set<Element> elements;
+    for (std::size_t k = 0; k < j.size(); ++k) {
+        const std::string name = readString(j[k], element(path, k));
+        if (labels && name == "labels") {
+            *labels = true;
+            continue;
+        }
+        const auto& names = lessonElementNames();
+        const auto known = std::find_if(names.begin(), names.end(), [&](const auto& entry) { return name == entry.second; });
+        if (known == names.end()) {
+            std::string all;
+            for (const auto& entry : names)
+                all += std::string(all.empty() ? "" : ", ") + entry.second;
+            throw InputError(element(path, k), "must be one of " + all + (labels ? ", labels" : "") + " (got \"" + name + "\")");
+        }
+        elements.insert(known->first);
     }
-    throw InputError(path, "must be one of " + names + (labels ? ", labels" : "") + " (got \"" + name + "\")");
+    return elements;
 }
 
 void readShown(const Json& j, const std::string& path, LessonStep& step, const Pipeline<double>& pipeline)
 {
     static const std::vector<std::string> panels = {"stages", "matrices", "parameters", "code", "accuracy", "depth"};
-    if (j.contains("hide")) {
-        const std::string at = child(path, "hide");
-        if (!j["hide"].is_array())
-            throw InputError(at, "must be an array of element names (got " + typeName(j["hide"]) + ")");
-        for (std::size_t k = 0; k < j["hide"].size(); ++k) {
-            bool labels = false;
-            const Element e = readElement(j["hide"][k], element(at, k), true, labels);
-            if (labels)
-                step.labelsHidden = true;
-            else
-                step.hidden.insert(e);
-        }
-    }
+    if (j.contains("hide"))
+        step.hidden = readElements(j["hide"], child(path, "hide"), &step.labelsHidden);
     if (j.contains("highlight")) {
         const std::string at = child(path, "highlight");
         requireObject(j["highlight"], at, {"elements", "entries"}, {});
         const Json& h = j["highlight"];
-        if (h.contains("elements")) {
-            const std::string list = child(at, "elements");
-            if (!h["elements"].is_array())
-                throw InputError(list, "must be an array of element names (got " + typeName(h["elements"]) + ")");
-            for (std::size_t k = 0; k < h["elements"].size(); ++k) {
-                bool labels = false;
-                step.highlighted.insert(readElement(h["elements"][k], element(list, k), false, labels));
-            }
-        }
+        if (h.contains("elements"))
+            step.highlighted = readElements(h["elements"], child(at, "elements"), nullptr);
         if (h.contains("entries")) {
             const std::string list = child(at, "entries");
             const int stage = revealedStage(step);
@@ -379,6 +373,14 @@ int revealedStage(const LessonStep& step)
     return step.question && step.question->stage > 0 ? std::max(step.stage, step.question->stage) : step.stage;
 }
 
+std::optional<Vec3<double>> tracedAt(const LessonStep& step, bool revealed)
+{
+    const std::optional<Question>& q = step.question;
+    if (revealed && q && (q->kind == QuestionKind::Where || q->kind == QuestionKind::Inside || q->kind == QuestionKind::SignW))
+        return q->point;
+    return step.trace;
+}
+
 Lesson loadLesson(const std::filesystem::path& file)
 {
     return parseLesson(readInputFile(file, "lesson"), file.parent_path());
@@ -450,31 +452,21 @@ bool isRight(const Question& q, const Answer& a)
 
 std::optional<double> parseTypedNumber(const std::string& typed)
 {
-    std::string text;
-    for (std::size_t k = 0; k < typed.size(); ++k) {
-        if (typed.compare(k, 3, "\u2212") == 0) { // the typeset minus
-            text += '-';
-            k += 2;
-        } else if (typed[k] != ' ' && typed[k] != '\t') {
-            text += typed[k];
-        }
-    }
-    auto number = [](const std::string& part) -> std::optional<double> {
-        if (part.empty())
-            return std::nullopt;
-        std::size_t used = 0;
-        try {
-            const double x = std::stod(part, &used);
-            if (used == part.size() && std::isfinite(x))
-                return x;
-        } catch (const std::exception&) {
-        }
-        return std::nullopt;
+    std::string text = typed;
+    for (std::size_t at; (at = text.find("\u2212")) != std::string::npos;) // the typeset minus
+        text.replace(at, 3, "-");
+    auto number = [](std::string_view part) -> std::optional<double> {
+        while (!part.empty() && std::isspace(static_cast<unsigned char>(part.front())))
+            part.remove_prefix(1);
+        while (!part.empty() && std::isspace(static_cast<unsigned char>(part.back())))
+            part.remove_suffix(1);
+        const std::optional<double> x = parseDouble(part);
+        return x && std::isfinite(*x) ? x : std::nullopt;
     };
     const std::size_t slash = text.find('/');
     if (slash == std::string::npos)
         return number(text);
-    const auto top = number(text.substr(0, slash)), bottom = number(text.substr(slash + 1));
+    const auto top = number(std::string_view(text).substr(0, slash)), bottom = number(std::string_view(text).substr(slash + 1));
     if (!top || !bottom || *bottom == 0 || !std::isfinite(*top / *bottom))
         return std::nullopt;
     return *top / *bottom;
@@ -517,11 +509,7 @@ std::string lessonToJson(const Lesson& lesson, const std::filesystem::path& base
         if (!step.scene.file.empty()) {
             entry["scene"] = std::filesystem::proximate(step.scene.file, baseDir).generic_string();
         } else {
-            Scene inline_ = step.scene;
-            for (SceneObject& object : inline_.objects)
-                if (object.type == ObjectType::Mesh)
-                    object.path = std::filesystem::proximate(object.resolvedPath, baseDir).generic_string();
-            entry["scene"] = Json::parse(sceneToJson(inline_));
+            entry["scene"] = Json::parse(sceneToJson(step.scene, baseDir));
         }
         entry["stage"] = step.stage;
         if (step.yaw != 0 || step.pitch != 0 || step.zoom != 1)

@@ -1,5 +1,7 @@
 #include "viewpipe/mesh_io.hpp"
 
+#include "parse_number.hpp"
+
 #include <algorithm>
 #include <array>
 #include <cerrno>
@@ -95,8 +97,9 @@ bool overflows(std::string_view token)
     return magnitude + exponent > 0;
 }
 
-// A decimal number (from_chars: independent of the locale, which Qt sets from
-// the environment). An overflow gives an infinity, refused later as not
+} // namespace
+
+// Locale-independent (from_chars): Qt sets the locale from the environment. An overflow gives an infinity, refused later as not
 // finite; an underflow gives zero, as strtod would.
 std::optional<double> parseDouble(std::string_view token)
 {
@@ -116,6 +119,8 @@ std::optional<double> parseDouble(std::string_view token)
         return std::nullopt;
     return value;
 }
+
+namespace {
 
 // A whole number; one beyond long long saturates (the caller then finds it out of range).
 bool parseInteger(std::string_view token, long long& value)

@@ -604,15 +604,20 @@ void writeFileAtomically(const std::filesystem::path& file, const std::string& c
     }
 }
 
+std::string sceneToJson(const Scene& scene, const std::filesystem::path& folder)
+{
+    Scene moved = scene;
+    for (SceneObject& object : moved.objects)
+        if (object.type == ObjectType::Mesh)
+            object.path = std::filesystem::proximate(std::filesystem::absolute(object.resolvedPath),
+                                                     std::filesystem::absolute(folder))
+                              .generic_string();
+    return sceneToJson(moved);
+}
+
 void saveScene(const Scene& scene, const std::filesystem::path& file)
 {
-    // Mesh paths are written relative to the folder the scene is saved in.
-    Scene saved = scene;
-    const std::filesystem::path folder = std::filesystem::absolute(file).parent_path();
-    for (SceneObject& object : saved.objects)
-        if (object.type == ObjectType::Mesh)
-            object.path = std::filesystem::proximate(std::filesystem::absolute(object.resolvedPath), folder).string();
-    writeFileAtomically(file, sceneToJson(saved));
+    writeFileAtomically(file, sceneToJson(scene, std::filesystem::absolute(file).parent_path()));
 }
 
 } // namespace viewpipe

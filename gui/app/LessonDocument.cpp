@@ -44,6 +44,7 @@ LessonDocument::~LessonDocument()
 void LessonDocument::open(const QString& path)
 {
     Lesson lesson = loadLesson(path.toStdString());
+    ++generation_;
     undo_.clear();
     lesson_ = std::move(lesson);
     filePath_ = path;
@@ -55,8 +56,13 @@ void LessonDocument::open(const QString& path)
 
 void LessonDocument::create(const std::string& title, const LessonStep& first)
 {
+    Lesson lesson{title, {first}};
+    const std::filesystem::path folder = folderOf({});
+    parseLesson(lessonToJson(lesson, folder), folder); // as every edit is checked
+    ++generation_;
     undo_.clear();
-    lesson_ = Lesson{title, {first}};
+    undo_.resetClean(); // never saved: closing it asks
+    lesson_ = std::move(lesson);
     filePath_.clear();
     step_ = 0;
     resetAnswers();
@@ -66,6 +72,7 @@ void LessonDocument::create(const std::string& title, const LessonStep& first)
 
 void LessonDocument::close()
 {
+    ++generation_;
     undo_.clear();
     lesson_ = Lesson{};
     filePath_.clear();
@@ -143,6 +150,7 @@ void LessonDocument::edit(Lesson next, int step, const QString& description)
 
 void LessonDocument::restore(const Lesson& lesson, int step)
 {
+    ++generation_;
     lesson_ = lesson;
     step_ = std::clamp(step, 0, int(lesson_.steps.size()) - 1);
     resetAnswers(); // an edited lesson is asked afresh

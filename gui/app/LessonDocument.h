@@ -37,6 +37,8 @@ public:
     // Throws InputError when the file cannot be written.
     void save(const QString& path);
 
+    // Counts the lessons and versions of a lesson shown: opening one, an edit, an undo.
+    int generation() const { return generation_; }
     int step() const { return step_; }
     const LessonStep& currentStep() const { return lesson_.steps.at(std::size_t(step_)); }
     void goTo(int step);
@@ -77,6 +79,7 @@ private:
     Lesson lesson_;
     QString filePath_;
     int step_ = 0;
+    int generation_ = 0;
     std::vector<std::optional<Answer>> answers_;
     std::vector<bool> revealed_;
     QUndoStack undo_;

@@ -10,54 +10,28 @@
 #include <QListWidget>
 #include <QPlainTextEdit>
 #include <QPushButton>
+#include <QTimer>
+#include <QShortcut>
 #include <QRadioButton>
 #include <QTextDocumentFragment>
 #include <QUndoStack>
 #include <QVBoxLayout>
 
 #include <algorithm>
-#include <numeric>
 
 #include "LessonDocument.h"
 #include "MathText.h"
 #include "MatrixPanel.h"
-#include "viewpipe/format.hpp"
 #include "viewpipe/pipeline.hpp"
 #include "viewpipe/report/latex.hpp"
+#include "viewpipe/report/lesson_latex.hpp"
 
 namespace viewpipe::gui {
 namespace {
 
-QString number(double x)
-{
-    return QString::fromStdString(std::abs(x) < 1e-12 ? "0" : formatSignificant(x, 6));
-}
-
 QString symbolHtml(const std::string& symbol)
 {
     return mathHtml("$" + cli::latexSymbol(symbol) + "$");
-}
-
-QString answerHtml(const LessonStep& step)
-{
-    const Question& q = *step.question;
-    switch (q.kind) {
-    case QuestionKind::Where: return "(" + number(q.where.x()) + ", " + number(q.where.y()) + ", " + number(q.where.z()) + ")";
-    case QuestionKind::Inside: return q.inside ? QObject::tr("inside the view volume") : QObject::tr("clipped away");
-    case QuestionKind::SignW:
-        return QObject::tr("w is %1").arg(q.signW > 0 ? QObject::tr("positive") : q.signW < 0 ? QObject::tr("negative") : QObject::tr("zero"));
-    case QuestionKind::WhichStage: return symbolHtml(q.choices[std::size_t(q.correct)]);
-    case QuestionKind::Order: {
-        QStringList symbols;
-        for (const std::string& choice : q.choices)
-            symbols << symbolHtml(choice);
-        return symbols.join(", ");
-    }
-    case QuestionKind::Entry:
-        return mathHtml("$" + cli::entryLatex(step.scene, q.stage, q.row, q.column, 6) + "$") + " (" + number(q.entry) + ")";
-    case QuestionKind::Choice: return mathHtml(q.choices[std::size_t(q.correct)]);
-    }
-    return {};
 }
 
 // A choice's text beside its radio button, wrapped and with its math set; a click on it picks the choice.
@@ -137,6 +111,12 @@ LessonPanel::LessonPanel(LessonDocument* lesson, QWidget* parent) : QWidget(pare
     q->addLayout(buttons);
     feedback_ = richLabel("feedback");
     q->addWidget(feedback_);
+    // Enter checks, whatever in the question has the focus (a choice, the order, a number).
+    for (const auto key : {Qt::Key_Return, Qt::Key_Enter}) {
+        auto* enter = new QShortcut(QKeySequence(key), question_);
+        enter->setContext(Qt::WidgetWithChildrenShortcut);
+        connect(enter, &QShortcut::activated, this, &LessonPanel::checkAnswer);
+    }
     layout->addWidget(question_);
 
     saveResults_ = new QPushButton(tr("Save My Answers…"));
@@ -214,6 +194,10 @@ LessonPanel::LessonPanel(LessonDocument* lesson, QWidget* parent) : QWidget(pare
     e->addWidget(editorContent);
     editorContent->setVisible(false);
     connect(editor_, &QGroupBox::toggled, editorContent, &QWidget::setVisible);
+    connect(editor_, &QGroupBox::toggled, this, [this](bool open) {
+        if (open && lesson_->isAsking())
+            lesson_->reveal(); // the question's file form and the captions give the answer
+    });
     layout->addWidget(editor_);
     layout->addStretch();
 
@@ -250,7 +234,6 @@ void LessonPanel::refreshLesson()
 {
     const Lesson& lesson = lesson_->lesson();
     title_->setText("<b>" + QString::fromStdString(lesson.title).toHtmlEscaped() + "</b>");
-    titleEdit_->setText(QString::fromStdString(lesson.title));
     const QSignalBlocker quiet(steps_);
     steps_->clear();
     for (std::size_t k = 0; k < lesson.steps.size(); ++k) {
@@ -260,7 +243,6 @@ void LessonPanel::refreshLesson()
             text = text.left(57) + "…";
         steps_->addItem(QString("%1. %2%3").arg(k + 1).arg(step.question ? tr("[?] ") : "", text));
     }
-    inputsFor_ = -1; // the steps may have moved: build the inputs afresh
     refreshStep();
 }
 
@@ -282,8 +264,16 @@ void LessonPanel::refreshStep()
         const QSignalBlocker quiet(steps_);
         steps_->setCurrentRow(k);
     }
-    captionEdit_->setPlainText(QString::fromStdString(step.caption));
-    questionEdit_->setPlainText(step.question ? QString::fromStdString(questionToJson(*step.question)) : QString());
+    if (editorsFor_ != k || editorsGeneration_ != lesson_->generation()) { // what was typed and not applied stays
+        editorsFor_ = k;
+        editorsGeneration_ = lesson_->generation();
+        titleEdit_->setText(QString::fromStdString(lesson_->lesson().title));
+        captionEdit_->setPlainText(QString::fromStdString(step.caption));
+        questionEdit_->setPlainText(step.question ? QString::fromStdString(questionToJson(*step.question)) : QString());
+    }
+    if (editor_->isChecked() && lesson_->isAsking()) { // the editor shows the answers: so does the step
+        QTimer::singleShot(0, lesson_, &LessonDocument::reveal);
+    }
     const bool asking = lesson_->isAsking();
     // The caption may give the answer away: it waits for it.
     caption_->setText(asking ? "<i>" + tr("The step's text follows the answer.") + "</i>" : mathHtml(step.caption));
@@ -294,21 +284,13 @@ void LessonPanel::refreshStep()
         return;
     const Question& q = *step.question;
     prompt_->setText(mathHtml(q.prompt));
-    QString about;
-    if (q.kind == QuestionKind::Where || q.kind == QuestionKind::SignW || q.kind == QuestionKind::Entry) {
-        const std::string symbol = buildPipeline(step.scene.camera, step.scene.effects).stages.at(std::size_t(q.stage - 1)).symbol;
-        about = (q.kind == QuestionKind::Entry ? tr("The matrix of stage %1, %2.") : tr("After stage %1, %2."))
-                    .arg(q.stage)
-                    .arg(symbolHtml(symbol));
-    }
-    if (q.kind == QuestionKind::Where || q.kind == QuestionKind::Inside || q.kind == QuestionKind::SignW)
-        about += (about.isEmpty() ? "" : " ") + tr("The point (%1, %2, %3).").arg(number(q.point.x()), number(q.point.y()), number(q.point.z()));
+    QString about = mathHtml(questionContext(step));
     if (q.kind == QuestionKind::WhichStage)
         about = matrixTable(tr("The matrix"),
                             buildPipeline(step.scene.camera, step.scene.effects).stages.at(std::size_t(q.stage - 1)).matrix);
     about_->setText(about);
     about_->setVisible(!about.isEmpty());
-    if (inputsFor_ != k)
+    if (inputsFor_ != k || inputsGeneration_ != lesson_->generation())
         buildInputs();
     inputs_->setEnabled(asking);
     check_->setEnabled(asking);
@@ -318,9 +300,10 @@ void LessonPanel::refreshStep()
         return;
     }
     const std::optional<Answer>& answer = lesson_->answer(k);
-    QString said = !answer                 ? tr("The answer: %1.").arg(answerHtml(step))
-                   : isRight(q, *answer) ? tr("<b>Right.</b> The answer: %1.").arg(answerHtml(step))
-                                         : tr("<b>Not quite:</b> the answer is %1.").arg(answerHtml(step));
+    const QString answerHtml = mathHtml(answerText(step));
+    QString said = !answer                 ? tr("The answer: %1.").arg(answerHtml)
+                   : isRight(q, *answer) ? tr("<b>Right.</b> The answer: %1.").arg(answerHtml)
+                                         : tr("<b>Not quite:</b> the answer is %1.").arg(answerHtml);
     if (!q.explanation.empty())
         said += "<br>" + mathHtml(q.explanation);
     feedback_->setText(said);
@@ -331,6 +314,7 @@ void LessonPanel::buildInputs()
     const int k = lesson_->step();
     const Question& q = *lesson_->currentStep().question;
     inputsFor_ = k;
+    inputsGeneration_ = lesson_->generation();
     auto* fresh = new QWidget;
     auto* layout = new QVBoxLayout(fresh);
     layout->setContentsMargins(0, 0, 0, 0);
@@ -380,8 +364,8 @@ void LessonPanel::buildInputs()
     }
     case QuestionKind::Choice: {
         QStringList texts;
-        for (const std::string& choice : q.choices)
-            texts << mathHtml(choice);
+        for (std::size_t k = 0; k < q.choices.size(); ++k)
+            texts << mathHtml(choiceLetter(k) + " " + q.choices[k]);
         radios(texts);
         break;
     }
@@ -393,9 +377,7 @@ void LessonPanel::buildInputs()
         list->setObjectName("orderList");
         list->setDragDropMode(QAbstractItemView::InternalMove);
         list->setToolTip(tr("Drag the stages into the order they apply to a point, first at the top"));
-        std::vector<int> shown(q.choices.size());
-        std::iota(shown.rbegin(), shown.rend(), 0); // last first: the right order is never the one offered
-        for (int c : shown) {
+        for (int c : offeredChoices(q)) {
             auto* item = new QListWidgetItem(QString::fromStdString(q.choices[std::size_t(c)]));
             item->setData(Qt::UserRole, c);
             list->addItem(item);
@@ -475,6 +457,18 @@ bool LessonPanel::checkAnswer()
     }
     lesson_->check(answer);
     return true;
+}
+
+void LessonPanel::openEditor()
+{
+    editor_->setChecked(true);
+}
+
+void LessonPanel::setEditorAvailable(bool available)
+{
+    editor_->setVisible(available);
+    if (!available)
+        editor_->setChecked(false);
 }
 
 void LessonPanel::applyEdits()

@@ -27,6 +27,11 @@ public:
 
     // Checks what the inputs hold, as the Check button does; false when they hold no whole answer.
     bool checkAnswer();
+    // The editing below the lesson: opened (as for a new lesson), or out of
+    // reach (while presenting). Opening it shows the answers: a question's
+    // file form holds its answer.
+    void openEditor();
+    void setEditorAvailable(bool available);
 
 signals:
     void addStepRequested();
@@ -57,7 +62,10 @@ private:
     QPlainTextEdit* captionEdit_;
     QPlainTextEdit* questionEdit_;
     QLabel* editError_;
-    int inputsFor_ = -1; // the step the inputs were built for
+    // The step, and the lesson's generation, the inputs and editors were filled for: a
+    // refresh for an answer or a save keeps what was typed.
+    int inputsFor_ = -1, inputsGeneration_ = -1;
+    int editorsFor_ = -1, editorsGeneration_ = -1;
 };
 
 } // namespace viewpipe::gui

@@ -868,7 +868,7 @@ void MainWindow::setPresenting(bool on, QScreen* screen)
     for (QShortcut* shortcut : presentingKeys_)
         shortcut->setEnabled(on);
     // A class sees the lesson, not its editing.
-    lessonPanel_->findChild<QGroupBox*>("lessonEditor")->setVisible(!on);
+    lessonPanel_->setEditorAvailable(!on);
     renderNow();
 }
 
@@ -1150,6 +1150,14 @@ bool MainWindow::hidesAnswers() const
 bool MainWindow::openLesson(const QString& path)
 {
     try {
+        // Every step's scene is read now (its meshes too): a step that cannot be shown stops nothing later.
+        const Lesson lesson = loadLesson(path.toStdString());
+        for (std::size_t k = 0; k < lesson.steps.size(); ++k)
+            try {
+                evaluateScene(lesson.steps[k].scene);
+            } catch (const InputError& e) {
+                throw InputError("steps[" + std::to_string(k) + "].scene." + e.field(), e.reason());
+            }
         lesson_->open(path);
     } catch (const InputError& e) {
         showMessage(tr("Cannot open the lesson %1: %2").arg(path, QString::fromStdString(e.what())));
@@ -1178,30 +1186,30 @@ void MainWindow::showLessonStep()
     dock->raise();
     const int k = lesson_->step();
     const LessonStep& step = lesson_->currentStep();
-    const bool newStep = k != shownLessonStep_; // otherwise its question was just answered or revealed
+    // Otherwise the step shown was just answered or revealed, or is the view on screen just added.
+    const bool newStep = !keepLessonView_ && (k != shownLessonStep_ || lesson_->generation() != shownGeneration_);
+    keepLessonView_ = false;
     const bool sameScene = sceneToJson(step.scene) == sceneToJson(document_->scene());
-    if (!sameScene) {
-        if (!confirmDiscard())
-            return;
-        if (!openScene(step.scene, QString::fromStdString(step.scene.file.string()), false))
-            return;
+    if (!sameScene && !(confirmDiscard() && openScene(step.scene, QString::fromStdString(step.scene.file.string()), false))) {
+        // The lesson and the view must agree: back to the step shown, or no lesson at all.
+        if (shownLessonStep_ >= 0 && shownGeneration_ == lesson_->generation() && shownLessonStep_ != k)
+            lesson_->goTo(shownLessonStep_);
+        else if (shownLessonStep_ < 0 || shownGeneration_ != lesson_->generation())
+            lesson_->close();
+        return;
     }
     shownLessonStep_ = k;
+    shownGeneration_ = lesson_->generation();
     // What the step hides is not drawn, what it highlights is drawn wider.
     painter_->setScene(shownAtStep(document_->evaluated(), step));
-    painter_->markTraced(traced_);
     if (!step.panel.empty())
         showPanel(QString::fromStdString(step.panel));
     if (newStep || !sameScene) {
         painter_->resetView();
         painter_->orbit(step.yaw, step.pitch, step.zoom);
-        traceVertex(step.trace);
     }
     const bool revealed = !step.question || lesson_->isRevealed(k);
-    if (revealed && step.question && !newStep &&
-        (step.question->kind == QuestionKind::Where || step.question->kind == QuestionKind::Inside ||
-         step.question->kind == QuestionKind::SignW))
-        traceVertex(step.question->point); // the point asked about, followed through the stages
+    traceVertex(tracedAt(step, revealed)); // once answered, the point asked about, followed through the stages
     const int stage = revealed ? revealedStage(step) : askingStage(step);
     // The answer comes with the transition to the stage asked about; a step to the next stage plays it too.
     goToStage(stage, sameScene && (!newStep || std::abs(stage - target_) == 1));
@@ -1231,8 +1239,14 @@ LessonStep MainWindow::stepFromView() const
 
 void MainWindow::newLessonFromView()
 {
-    lesson_->create(tr("A new lesson").toStdString(), stepFromView());
-    findChild<QGroupBox*>("lessonEditor")->setChecked(true);
+    try {
+        keepLessonView_ = true;
+        lesson_->create(tr("A new lesson").toStdString(), stepFromView());
+        lessonPanel_->openEditor();
+    } catch (const InputError& e) {
+        showMessage(tr("Cannot make a lesson of this view: %1").arg(QString::fromStdString(e.what())));
+    }
+    keepLessonView_ = false;
 }
 
 void MainWindow::addLessonStepFromView()
@@ -1240,13 +1254,12 @@ void MainWindow::addLessonStepFromView()
     if (!lesson_->isOpen())
         return newLessonFromView();
     try {
-        // The step's view is the one on screen: no new camera for it.
-        shownLessonStep_ = lesson_->step() + 1;
+        keepLessonView_ = true; // the new step's view is the one on screen
         lesson_->insertStep(lesson_->step() + 1, stepFromView());
     } catch (const InputError& e) {
-        shownLessonStep_ = lesson_->step();
         showMessage(tr("Cannot add the step: %1").arg(QString::fromStdString(e.what())));
     }
+    keepLessonView_ = false;
 }
 
 bool MainWindow::saveLesson(const QString& path)

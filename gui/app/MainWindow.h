@@ -181,6 +181,8 @@ private:
     LessonDocument* lesson_;
     LessonPanel* lessonPanel_ = nullptr;
     int shownLessonStep_ = -1; // the step whose view is set up
+    int shownGeneration_ = -1; // of the lesson it was in
+    bool keepLessonView_ = false; // the step about to be shown is the view on screen
     std::unique_ptr<ScenePainter> painter_;
     QVTKOpenGLNativeWidget* worldWidget_ = nullptr;
     QVTKOpenGLNativeWidget* projectedWidget_ = nullptr;

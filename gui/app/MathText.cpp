@@ -30,8 +30,25 @@ public:
     QString read() { return group(false); }
 
 private:
+    // Nesting deeper than any lesson's math (a hostile file's thousands of braces) is shown as written.
+    static constexpr int kMaxDepth = 50;
+    struct Deeper {
+        explicit Deeper(int& depth) : depth_(depth) { ++depth_; }
+        ~Deeper() { --depth_; }
+        int& depth_;
+    };
+    QString rest()
+    {
+        const QString written = math_.mid(at_).toHtmlEscaped();
+        at_ = int(math_.size());
+        return written;
+    }
+
     QString group(bool braced)
     {
+        const Deeper deeper(depth_);
+        if (depth_ > kMaxDepth)
+            return rest();
         QString out;
         while (at_ < math_.size()) {
             const QChar c = math_[at_];
@@ -65,7 +82,8 @@ private:
             } else if (c.isSpace()) {
                 ++at_; // math ignores spaces; its own are commands
             } else {
-                out += (c == '=' || c == '+') ? QString("\u2009%1\u2009").arg(c) : QString(c);
+                // Spaced as math spaces them: relations and sums both sides, a comma after.
+                out += (c == '=' || c == '+') ? QString("\u2009%1\u2009").arg(c) : c == ',' ? QString(", ") : QString(c);
                 ++at_;
             }
         }
@@ -99,6 +117,9 @@ private:
 
     QString command()
     {
+        const Deeper deeper(depth_);
+        if (depth_ > kMaxDepth)
+            return rest();
         ++at_; // the backslash
         int end = at_;
         while (end < math_.size() && math_[end].isLetter())
@@ -126,6 +147,7 @@ private:
 
     QString math_;
     int at_ = 0;
+    int depth_ = 0;
 };
 
 } // namespace

@@ -72,7 +72,7 @@ int runExport(const LessonOptions& options)
                 std::cerr << what << "\n";
         };
         if (options.format == "pdf") {
-            for (const fs::path& file : gui::exportLessonPdf(lesson, stepScenes, evaluated, options.out, theme, say))
+            for (const fs::path& file : gui::exportLessonPdf(lesson, stepScenes, evaluated, options.out, width, height, theme, say))
                 if (!options.quiet)
                     std::cout << file.string() << "\n";
             return 0;
@@ -120,7 +120,7 @@ void addLessonCommand(CLI::App& app)
     exportCommand->add_option("FILE", options->file, "Lesson file (JSON)")->required();
     exportCommand->add_option("--out", options->out, "Folder for the files (created if missing)")->required();
     exportCommand->add_option("--format", options->format, "html: one self-contained page; pdf: handout.pdf and 16:9 slides.pdf (needs pdflatex)")->capture_default_str();
-    exportCommand->add_option("--size", options->size, "The pictures' size WxH, as export's")->capture_default_str();
+    exportCommand->add_option("--size", options->size, "The pictures' size WxH, as export's (the PDF's figures too)")->capture_default_str();
     exportCommand->add_option("--theme", options->theme, "light or dark")
         ->check(CLI::IsMember({"light", "dark"}))
         ->capture_default_str();

@@ -1,6 +1,7 @@
 #include "LessonExport.h"
 
 #include <cstdio>
+#include <cstdlib>
 #include <fstream>
 #include <sstream>
 #include <unistd.h>
@@ -16,8 +17,7 @@ namespace fs = std::filesystem;
 
 namespace {
 
-// The handout's figures at 16:9; the slides' text larger, as a projector needs.
-constexpr int kFigureWidth = 1280, kFigureHeight = 720;
+// The slides' text larger, as a projector needs.
 constexpr double kSlideFontScale = 1.5;
 
 // Step `step`'s view of `stage` as a PDF figure: its camera, its stage, the
@@ -36,45 +36,76 @@ void writeStepFigure(const OffscreenPainter& offscreen, const std::shared_ptr<co
     writeVectorFigure({&shown, painter.figureView(), caption, theme}, "pdf", file);
 }
 
-// The lines of pdflatex's log that say what went wrong ("! ..." and the line after).
-std::string latexErrors(const fs::path& log)
+// What pdflatex's log says went wrong ("! ..." and the lines after it), and
+// the line of the document it names ("l.123"), if any.
+std::pair<std::string, int> latexError(const fs::path& log)
 {
     std::ifstream in(log);
-    std::string line, out;
-    int after = 0;
-    while (std::getline(in, line) && out.size() < 600) {
+    std::string line, what;
+    int after = 0, at = 0;
+    while (std::getline(in, line) && what.size() < 600) {
         if (!line.empty() && line[0] == '!')
             after = 3;
+        if (line.rfind("l.", 0) == 0 && at == 0)
+            at = std::atoi(line.c_str() + 2);
         if (after > 0) {
-            out += (out.empty() ? "" : " ") + line;
+            what += (what.empty() ? "" : " ") + line;
             --after;
         }
     }
-    return out.empty() ? "see " + log.string() : out;
+    std::string squeezed; // the log pads its lines with spaces
+    for (char c : what)
+        if (!(c == ' ' && !squeezed.empty() && squeezed.back() == ' '))
+            squeezed += c;
+    return {squeezed.empty() ? "no reason given" : squeezed, at};
 }
 
+// The field of the lesson whose text is at `line` of the document: the step marked last before it.
+std::string fieldAt(const fs::path& document, int line)
+{
+    std::ifstream in(document);
+    std::string text, field = "title";
+    for (int k = 1; k <= line && std::getline(in, text); ++k)
+        if (text.rfind(kStepMark, 0) == 0)
+            field = "steps" + text.substr(std::string(kStepMark).size());
+    return field;
+}
+
+// pdflatex without its terminal talk, reading no file outside the folder
+// (openin_any=p), stopped after a minute (a lesson's macros could loop).
 void compile(const fs::path& folder, const std::string& document)
 {
     ChildStreams quiet;
     quiet.stdoutToNull = true;
+    quiet.stderrToNull = true; // its refusals are in the log, and in the message below
     quiet.workingDirectory = folder.string();
+    quiet.environment = {"openin_any=p", "openout_any=p"};
     const int status = runProgram({"pdflatex", "-interaction=batchmode", "-halt-on-error", "-no-shell-escape",
                                    document + ".tex"},
-                                  quiet);
+                                  quiet, 60);
     if (status == -1)
         throw std::runtime_error("the handout and slides need pdflatex (TeX Live), which was not found: "
                                  "scripts/install-deps.sh --pdf installs it");
-    if (status != 0)
-        throw std::runtime_error("pdflatex could not set " + document + ".tex: " + latexErrors(folder / (document + ".log")));
+    if (status == kTimedOut)
+        throw InputError("steps", "pdflatex did not finish in a minute: a caption's macros may never end");
+    if (status != 0) {
+        const auto [what, line] = latexError(folder / (document + ".log"));
+        if (line == 0)
+            throw std::runtime_error("pdflatex could not set " + document + ".tex: " + what);
+        // The lesson's text is what pdflatex could not set: bad input, named by its step.
+        throw InputError(fieldAt(folder / (document + ".tex"), line), "pdflatex cannot set its text: " + what);
+    }
 }
 
 } // namespace
 
 std::vector<fs::path> exportLessonPdf(const Lesson& lesson, const std::vector<int>& stepScenes,
                                       const std::vector<std::shared_ptr<const EvaluatedScene>>& scenes,
-                                      const fs::path& out, Theme theme,
+                                      const fs::path& out, int width, int height, Theme theme,
                                       const std::function<void(const std::string&)>& step)
 {
+    if (width < 64 || height < 64 || width > 8192 || height > 8192)
+        throw InputError("--size", "must be WxH with 64 <= W, H <= 8192");
     std::error_code error;
     const bool created = !fs::exists(out);
     fs::create_directories(out, error);
@@ -86,8 +117,8 @@ std::vector<fs::path> exportLessonPdf(const Lesson& lesson, const std::vector<in
     try {
         std::vector<LessonFigures> handout(lesson.steps.size()), slides(lesson.steps.size());
         for (std::size_t s = 0; s < scenes.size(); ++s) {
-            const OffscreenPainter paper(scenes[s], kFigureWidth, kFigureHeight, 1, theme, false);
-            const OffscreenPainter projector(scenes[s], kFigureWidth, kFigureHeight, 1, theme, false, kSlideFontScale);
+            const OffscreenPainter paper(scenes[s], width, height, 1, theme, false);
+            const OffscreenPainter projector(scenes[s], width, height, 1, theme, false, kSlideFontScale);
             for (std::size_t k = 0; k < lesson.steps.size(); ++k) {
                 if (stepScenes[k] != int(s))
                     continue;
@@ -97,18 +128,12 @@ std::vector<fs::path> exportLessonPdf(const Lesson& lesson, const std::vector<in
                 std::snprintf(name, sizeof name, "step-%02zu", k + 1);
                 auto figures = [&](const OffscreenPainter& offscreen, const std::string& prefix, LessonFigures& files) {
                     files.revealed = prefix + name + ".pdf";
-                    // Once answered, the point asked about is marked (as the web page marks it).
-                    const Question* question = lessonStep.question ? &*lessonStep.question : nullptr;
-                    const bool aboutPoint = question && (question->kind == QuestionKind::Where ||
-                                                         question->kind == QuestionKind::Inside ||
-                                                         question->kind == QuestionKind::SignW);
                     writeStepFigure(offscreen, scenes[s], lessonStep, revealedStage(lessonStep), true,
-                                    aboutPoint ? std::optional<Vec3<double>>(question->point) : lessonStep.trace, theme,
-                                    temporary / files.revealed);
+                                    tracedAt(lessonStep, true), theme, temporary / files.revealed);
                     if (lessonStep.question) {
                         files.asking = prefix + name + "-asking.pdf";
                         writeStepFigure(offscreen, scenes[s], lessonStep, askingStage(lessonStep), false,
-                                        lessonStep.trace, theme, temporary / files.asking);
+                                        tracedAt(lessonStep, false), theme, temporary / files.asking);
                     }
                 };
                 figures(paper, "", handout[k]);

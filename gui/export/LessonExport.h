@@ -16,11 +16,11 @@
 namespace viewpipe::gui {
 
 // `scenes[stepScenes[k]]` is step k's scene, evaluated and as the step shows it (shownAtStep). Both files are moved
-// into `out` only once both are made; throws std::runtime_error when pdflatex
+// into `out` only once both are made; the figures are `width` x `height` pixels; throws std::runtime_error when pdflatex
 // is missing or fails, InputError when `out` cannot be made.
 std::vector<std::filesystem::path> exportLessonPdf(const Lesson& lesson, const std::vector<int>& stepScenes,
                                                    const std::vector<std::shared_ptr<const EvaluatedScene>>& scenes,
-                                                   const std::filesystem::path& out, Theme theme,
+                                                   const std::filesystem::path& out, int width, int height, Theme theme,
                                                    const std::function<void(const std::string&)>& step);
 
 } // namespace viewpipe::gui

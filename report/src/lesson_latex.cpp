@@ -55,15 +55,13 @@ std::string questionLatex(const LessonStep& step, int number)
     const Question& q = *step.question;
     std::ostringstream out;
     out << "\\textbf{Question " << number << ".} " << texRichText(q.prompt) << "\\par\n";
-    if (q.kind == QuestionKind::Where || q.kind == QuestionKind::SignW)
-        out << "After stage " << q.stage << ", " << symbol(stageSymbol(step, q.stage)) << ".\\par\n";
-    if (q.kind == QuestionKind::Entry)
-        out << "The matrix of stage " << q.stage << ", " << symbol(stageSymbol(step, q.stage)) << ".\\par\n";
+    if (const std::string context = questionContext(step); !context.empty())
+        out << texRichText(context) << "\\par\n";
     const std::string blank = "\\rule{1.4cm}{0.4pt}";
     std::vector<std::string> options;
     switch (q.kind) {
     case QuestionKind::Where:
-        out << "The point " << point(q.point) << " lands at\\\\ $($" << blank << ", " << blank << ", " << blank
+        out << "It lands at\\\\ $($" << blank << ", " << blank << ", " << blank
             << "$)$\\par\n";
         break;
     case QuestionKind::Inside: out << boxes({"inside the view volume", "clipped away"}); break;
@@ -85,7 +83,7 @@ std::string questionLatex(const LessonStep& step, int number)
     case QuestionKind::Entry: out << "Entry $(" << q.row << ", " << q.column << ") = $ " << blank << "\\par\n"; break;
     case QuestionKind::Choice:
         for (std::size_t k = 0; k < q.choices.size(); ++k)
-            options.push_back("(" + std::string(1, char('a' + k)) + ") " + texRichText(q.choices[k]));
+            options.push_back(texRichText(choiceLetter(k) + " " + q.choices[k]));
         for (const std::string& option : options)
             out << "$\\square$~" << option << "\\par\n";
         break;
@@ -93,7 +91,56 @@ std::string questionLatex(const LessonStep& step, int number)
     return out.str();
 }
 
-std::string answerLatex(const LessonStep& step)
+// The stage's matrix a step shows once answered, if it shows one.
+std::string matrixLatex(const LessonStep& step)
+{
+    const int stage = revealedStage(step);
+    return stage > 0 ? fitted(cli::stageLatex(step.scene, stage, kDigits, step.entries)) : std::string();
+}
+
+std::string answerParagraphs(const LessonStep& step)
+{
+    std::string out = "\\textbf{Answer:} " + texRichText(answerText(step)) + ".\\par\n";
+    if (!step.question->explanation.empty())
+        out += texRichText(step.question->explanation) + "\\par\n";
+    return out;
+}
+
+// Where a step's text begins in the document: pdflatex's errors name a line, this names the step.
+std::string stepMark(std::size_t k)
+{
+    return std::string(kStepMark) + "[" + std::to_string(k) + "]\n";
+}
+
+std::string figure(const std::string& file)
+{
+    return "\\includegraphics[width=\\linewidth]{" + file + "}\\par\n";
+}
+
+const char* kPreamble = "\\usepackage{graphicx}\n\\usepackage{amsmath}\n\\usepackage{amssymb}\n\\usepackage{adjustbox}\n\\usepackage{xcolor}\n"
+                        "\\setlength{\\parindent}{0pt}\n\\sloppy\n";
+
+} // namespace
+
+std::string choiceLetter(std::size_t k)
+{
+    return "(" + std::string(1, char('a' + k)) + ")";
+}
+
+std::string questionContext(const LessonStep& step)
+{
+    const Question& q = *step.question;
+    std::string out;
+    if (q.kind == QuestionKind::Where || q.kind == QuestionKind::SignW)
+        out = "After stage " + std::to_string(q.stage) + ", " + symbol(stageSymbol(step, q.stage)) + ".";
+    if (q.kind == QuestionKind::Entry)
+        out = "The matrix of stage " + std::to_string(q.stage) + ", " + symbol(stageSymbol(step, q.stage)) + ".";
+    if (q.kind == QuestionKind::Where || q.kind == QuestionKind::Inside || q.kind == QuestionKind::SignW)
+        out += (out.empty() ? "" : " ") + std::string("The point ") + point(q.point) + ".";
+    return out;
+}
+
+std::string answerText(const LessonStep& step)
 {
     const Question& q = *step.question;
     switch (q.kind) {
@@ -107,45 +154,37 @@ std::string answerLatex(const LessonStep& step)
             out += (out.empty() ? "" : ", ") + symbol(choice);
         return out;
     }
-    case QuestionKind::Entry:
-        return "$" + cli::entryLatex(step.scene, q.stage, q.row, q.column, 6) + "$";
-    case QuestionKind::Choice:
-        return "(" + std::string(1, char('a' + q.correct)) + ") " + texRichText(q.choices[std::size_t(q.correct)]);
+    case QuestionKind::Entry: {
+        const std::string exact = cli::entryLatex(step.scene, q.stage, q.row, q.column, 6);
+        const std::string decimal = number(q.entry);
+        return "$" + exact + "$" + (exact == decimal ? "" : " ($" + decimal + "$)");
+    }
+    case QuestionKind::Choice: return choiceLetter(std::size_t(q.correct)) + " " + q.choices[std::size_t(q.correct)];
     }
     return {};
 }
-
-// The stage's matrix a step shows once answered, if it shows one.
-std::string matrixLatex(const LessonStep& step)
-{
-    const int stage = revealedStage(step);
-    return stage > 0 ? fitted(cli::stageLatex(step.scene, stage, kDigits, step.entries)) : std::string();
-}
-
-std::string answerParagraphs(const LessonStep& step)
-{
-    std::string out = "\\textbf{Answer:} " + answerLatex(step) + ".\\par\n";
-    if (!step.question->explanation.empty())
-        out += texRichText(step.question->explanation) + "\\par\n";
-    return out;
-}
-
-std::string figure(const std::string& file)
-{
-    return "\\includegraphics[width=\\linewidth]{" + file + "}\\par\n";
-}
-
-const char* kPreamble = "\\usepackage{graphicx}\n\\usepackage{amsmath}\n\\usepackage{amssymb}\n\\usepackage{adjustbox}\n\\usepackage{xcolor}\n"
-                        "\\setlength{\\parindent}{0pt}\n";
-
-} // namespace
 
 std::string texRichText(const std::string& text)
 {
     std::string out, part;
     bool math = false;
+    // A line may break after a comma of the math's outer level: "(1.4237, 1.4237, -1.4237)" fits a line.
+    auto breakable = [](const std::string& math) {
+        std::string out;
+        int depth = 0;
+        for (std::size_t k = 0; k < math.size(); ++k) {
+            depth += math[k] == '{' ? 1 : math[k] == '}' ? -1 : 0;
+            out += math[k];
+            if (math[k] == ',' && depth == 0 && (k == 0 || math[k - 1] != '\\'))
+                out += "\\allowbreak";
+        }
+        return out;
+    };
     auto flush = [&] {
-        out += math ? "$" + part + "$" : texEscaped(part);
+        if (!math)
+            out += texEscaped(part);
+        else if (part.find_first_not_of(" ") != std::string::npos) // "$$" would be display math
+            out += "$" + breakable(part) + "$";
         part.clear();
     };
     for (std::size_t k = 0; k < text.size(); ++k) {
@@ -176,7 +215,7 @@ std::string lessonHandoutLatex(const Lesson& lesson, const std::vector<LessonFig
     int questions = 0;
     for (std::size_t k = 0; k < n; ++k) {
         const LessonStep& step = lesson.steps[k];
-        out << "\\subsection*{Step " << k + 1 << " of " << n << "}\n";
+        out << stepMark(k) << "\\subsection*{Step " << k + 1 << " of " << n << "}\n";
         if (step.question) {
             out << figure(figures[k].asking) << questionLatex(step, ++questions);
             out << "\\vspace{1em}\\textit{The step's text is in the answer key.}\\par\n";
@@ -192,7 +231,7 @@ std::string lessonHandoutLatex(const Lesson& lesson, const std::vector<LessonFig
             const LessonStep& step = lesson.steps[k];
             if (!step.question)
                 continue;
-            out << "\\subsection*{Question " << ++questions << " (step " << k + 1 << ")}\n"
+            out << stepMark(k) << "\\subsection*{Question " << ++questions << " (step " << k + 1 << ")}\n"
                 << answerParagraphs(step) << texRichText(step.caption) << "\\par\n" << matrixLatex(step);
         }
     }
@@ -211,6 +250,7 @@ std::string lessonSlidesLatex(const Lesson& lesson, const std::vector<LessonFigu
     const std::string title = texEscaped(lesson.title);
     // The figure at the left, `side` beside it, `below` under both.
     auto slide = [&](std::size_t k, const std::string& file, const std::string& side, const std::string& below) {
+        out << stepMark(k);
         out << "{\\footnotesize\\textbf{" << title << "}\\hfill Step " << k + 1 << " of " << n << "}\\par\\vspace{1mm}\n"
             << "\\begin{minipage}[t]{0.63\\linewidth}\\vspace{0pt}" << figure(file) << "\\end{minipage}\\hfill\n"
             << "\\begin{minipage}[t]{0.35\\linewidth}\\vspace{0pt}\\footnotesize\\setlength{\\parskip}{0.4em}\n"

@@ -79,6 +79,9 @@ std::string texEscaped(const std::string& text)
         case '&': case '%': case '$': case '#': case '_': case '{': case '}': out += std::string("\\") + c; break;
         case '~': out += "\\textasciitilde{}"; break;
         case '^': out += "\\textasciicircum{}"; break;
+        case '<': out += "\\textless{}"; break; // OT1 fonts set the character as another
+        case '>': out += "\\textgreater{}"; break;
+        case '|': out += "\\textbar{}"; break;
         default: out += c;
         }
     }

@@ -9,6 +9,7 @@
 #include <stdexcept>
 
 #include "viewpipe/report/latex.hpp"
+#include "viewpipe/report/lesson_latex.hpp"
 #include "viewpipe/report/stage_symbols.hpp"
 #include "web_template.hpp" // generated from report/web: kPageHtml, kPageCss, kPageJs
 
@@ -357,9 +358,8 @@ std::string lessonPage(const Lesson& lesson, const std::vector<int>& stepScenes,
         }
         if (step.question) {
             entry["question"] = questionData(*step.question);
-            if (step.question->kind == QuestionKind::Entry)
-                entry["question"]["exact"] =
-                    cli::entryLatex(step.scene, step.question->stage, step.question->row, step.question->column, 6);
+            entry["question"]["answerText"] = answerText(step);
+            entry["question"]["offered"] = offeredChoices(*step.question);
         }
         steps.push_back(entry);
     }

@@ -821,7 +821,7 @@
         return chosen ? Number(chosen.value) : null;
       };
     };
-    let answerText = '';
+    const answerText = question.answerText; // as the app and the handout state it
     switch (question.kind) {
       case 'where': {
         const fields = ['x', 'y', 'z'].map(input);
@@ -832,47 +832,41 @@
           const off = Math.hypot(...typed.map((x, k) => x - question.answer[k]));
           return [typed, off <= question.tolerance * Math.max(1, size)];
         };
-        answerText = `(${question.answer.map(format).join(', ')})`;
         break;
       }
       case 'inside': {
         const chosen = picks(['inside the view volume', 'clipped away']);
         read = () => (chosen() === null ? null : [chosen() === 0, (chosen() === 0) === question.answer]);
-        answerText = question.answer ? 'inside the view volume' : 'clipped away';
         break;
       }
       case 'sign_w': {
         const signs = [1, 0, -1];
         const chosen = picks(['positive', 'zero', 'negative']);
         read = () => (chosen() === null ? null : [signName(signs[chosen()]), signs[chosen()] === question.answer]);
-        answerText = `w is ${signName(question.answer)}`;
         break;
       }
       case 'which_stage': {
         const shownMatrix = document.createElement('div');
         typeset(shownMatrix, matrixLatex(data.stages[question.stage].matrix));
         form.appendChild(shownMatrix);
-        // Offered in alphabetical order: the pipeline's order would give the answer's place away.
-        const shownOrder = question.choices.map((_, k) => k)
-          .sort((a, b) => question.choices[a].localeCompare(question.choices[b]));
+        // Offered as the app and the handout offer them: the pipeline's order would give the answer's place away.
+        const shownOrder = question.offered;
         const chosen = picks(shownOrder.map((k) => question.choices[k]));
         read = () => {
           if (chosen() === null) return null;
           const k = shownOrder[chosen()];
           return [question.choices[k], k === question.answer];
         };
-        answerText = question.choices[question.answer];
         break;
       }
       case 'choice': {
-        const labels = question.choices.map((choice) => {
+        const labels = question.choices.map((choice, k) => {
           const span = document.createElement('span');
-          setRichText(span, choice);
+          setRichText(span, `(${String.fromCharCode(97 + k)}) ${choice}`); // lettered as in the app and the handout
           return span;
         });
         const chosen = picks(labels);
         read = () => (chosen() === null ? null : [chosen(), chosen() === question.answer]);
-        answerText = question.choices[question.answer];
         break;
       }
       case 'entry': {
@@ -881,13 +875,11 @@
           const x = numberTyped(field.value);
           return Number.isFinite(x) ? [x, Math.abs(x - question.answer) <= 5e-3 * Math.abs(question.answer) + 1e-9] : null;
         };
-        answerText = question.exact ? `$${question.exact}$ (${format(question.answer)})` : format(question.answer);
         break;
       }
       case 'order': {
-        // The stages shuffled the same way every time (a fixed rotation and reversal), moved with buttons.
-        const order = question.choices.map((_, k) => k).reverse();
-        if (order.length > 2) order.push(order.shift()); // reversed alone would be solved by one look
+        // The stages offered as the app and the handout offer them, moved with buttons.
+        const order = question.offered.slice();
         const listOf = document.createElement('ol');
         listOf.className = 'order';
         const draw = () => {
@@ -914,7 +906,6 @@
         draw();
         form.appendChild(listOf);
         read = () => [order.map((k) => question.choices[k]), order.every((k, at) => k === at)];
-        answerText = question.choices.join(', ');
         break;
       }
     }

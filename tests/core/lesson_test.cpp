@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include <filesystem>
+#include <unistd.h>
 
 #include <nlohmann/json.hpp>
 
@@ -116,7 +117,7 @@ TEST(Lesson, TheBuiltInLessonsAreValid)
 TEST(Lesson, ALessonSavedReadsBackTheSame)
 {
     namespace fs = std::filesystem;
-    const fs::path elsewhere = fs::temp_directory_path() / "viewpipe-lesson-elsewhere";
+    const fs::path elsewhere = fs::temp_directory_path() / ("viewpipe-lesson-elsewhere-" + std::to_string(::getpid()));
     fs::create_directories(elsewhere);
     for (const auto& entry : fs::directory_iterator(std::string(VIEWPIPE_DATA_DIR) + "/lessons")) {
         const Lesson lesson = loadLesson(entry.path());
@@ -142,7 +143,7 @@ TEST(Lesson, ALessonSavedReadsBackTheSame)
         }
     }
     // A scene made in memory goes inline, its mesh's path made relative to the lesson's folder.
-    const fs::path meshes = fs::temp_directory_path() / "viewpipe-lesson-meshes";
+    const fs::path meshes = fs::temp_directory_path() / ("viewpipe-lesson-meshes-" + std::to_string(::getpid()));
     fs::create_directories(meshes);
     writeFileAtomically(meshes / "tri.obj", "v 0 0 -1\nv 1 0 -1\nv 0 1 -1\nf 1 2 3\n");
     Lesson made = lessonWith(R"({"scene": "house.json", "caption": "c"})");
@@ -180,7 +181,7 @@ TEST(Lesson, AnswersAreCheckedAsThePageChecksThem)
     EXPECT_TRUE(isRight(*entry.steps[0].question, typed));
     typed.entry = *parseTypedNumber("-0.09");
     EXPECT_FALSE(isRight(*entry.steps[0].question, typed));
-    for (const char* bad : {"", "x", "1/0", "nan", "inf", "1e400", "2/", "/3", "1.5.2", "1/2/3"})
+    for (const char* bad : {"", "x", "1/0", "nan", "inf", "1e400", "2/", "/3", "1.5.2", "1/2/3", "1 2", "0,5"})
         EXPECT_FALSE(parseTypedNumber(bad).has_value()) << bad;
     EXPECT_DOUBLE_EQ(*parseTypedNumber(" 3 / 4 "), 0.75);
 

@@ -11,6 +11,7 @@
 #include <QImage>
 #include <QPainter>
 #include <QSvgRenderer>
+#include <QJsonArray>
 #include <QJsonDocument>
 #include <QJsonObject>
 #include <QProcess>
@@ -455,8 +456,8 @@ private slots:
     void lessonHandoutAndSlides()
     {
         QTemporaryDir out;
-        const QString lesson = QString(VIEWPIPE_DATA_DIR) + "/lessons/foley-nper.json";
-        const Run run = viewpipe({"lesson", "export", lesson, "--out", out.path(), "--format", "pdf"});
+        const QString lessonPath = QString(VIEWPIPE_DATA_DIR) + "/lessons/foley-nper.json";
+        const Run run = viewpipe({"lesson", "export", lessonPath, "--out", out.path(), "--format", "pdf"});
         QCOMPARE(run.exitCode, 0);
         QCOMPARE(run.out, out.path() + "/handout.pdf\n" + out.path() + "/slides.pdf\n");
         QCOMPARE(QDir(out.path()).entryList(QDir::Files | QDir::Hidden | QDir::AllDirs | QDir::NoDotAndDotDot),
@@ -487,11 +488,17 @@ private slots:
         QVERIFY(std::abs(a4.width() - 595.28) < 1 && std::abs(a4.height() - 841.89) < 1);
         const int handoutPages = pages(handout);
         QVERIFY2(handoutPages >= kSteps + 1 && handoutPages <= kSteps + 4, qPrintable(QString::number(handoutPages)));
+        QFile lessonFile(lessonPath);
+        QVERIFY(lessonFile.open(QIODevice::ReadOnly));
+        const QJsonArray steps = QJsonDocument::fromJson(lessonFile.readAll()).object()["steps"].toArray();
         for (int page = 1; page <= kSteps; ++page) {
             const QString text = tool("pdftotext", {"-f", QString::number(page), "-l", QString::number(page), handout, "-"});
             QVERIFY2(text.contains(QString("Step %1 of 9").arg(page)), qPrintable(text));
             QVERIFY2(text.contains(QString("Question %1.").arg(page)), qPrintable(text));
             QVERIFY2(!text.contains("Answer"), qPrintable(text));
+            // The step's text, which may give the answer away, waits for the key.
+            const QString opening = steps[page - 1].toObject()["caption"].toString().left(30);
+            QVERIFY2(!text.simplified().contains(opening.simplified()), qPrintable(opening));
         }
         const QString key = tool("pdftotext", {"-f", QString::number(kSteps + 1), handout, "-"});
         QVERIFY2(key.contains("Answer key"), qPrintable(key));
@@ -511,10 +518,27 @@ private slots:
         QVERIFY2(contentShare(picture) > 0.05, qPrintable(QString::number(contentShare(picture))));
 
         // A bad format is refused before anything is made.
-        const Run bad = viewpipe({"lesson", "export", lesson, "--out", out.path() + "/none", "--format", "docx"});
+        const Run bad = viewpipe({"lesson", "export", lessonPath, "--out", out.path() + "/none", "--format", "docx"});
         QCOMPARE(bad.exitCode, 2);
         QVERIFY2(bad.err.contains("--format: must be html or pdf"), qPrintable(bad.err));
         QVERIFY(!QDir(out.path() + "/none").exists());
+
+        // Text pdflatex cannot set is bad input, named by its step; a file outside the lesson is not read.
+        const QString house = QString(VIEWPIPE_DATA_DIR) + "/scenes/house.json";
+        for (const auto& [caption, reason] : {std::pair<QString, QString>{"$\\\\nosuchmacro$", "Undefined control sequence"},
+                                              {"$\\\\input{/etc/hostname}$", "not found"}}) {
+            const QString broken = out.path() + "/broken.json";
+            QFile file(broken);
+            QVERIFY(file.open(QIODevice::WriteOnly));
+            file.write(QString(R"({"title": "t", "steps": [{"scene": "%1", "caption": "fine"},
+                                  {"scene": "%1", "caption": "%2"}]})").arg(house, caption).toUtf8());
+            file.close();
+            const Run refused = viewpipe({"lesson", "export", broken, "--out", out.path() + "/none", "--format", "pdf", "--quiet"});
+            QCOMPARE(refused.exitCode, 2);
+            QVERIFY2(refused.err.contains(broken + ": steps[1]: pdflatex cannot set its text:") && refused.err.contains(reason),
+                     qPrintable(refused.err));
+            QVERIFY(!QDir(out.path() + "/none").exists());
+        }
     }
 };
 

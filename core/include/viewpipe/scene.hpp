@@ -42,6 +42,8 @@ Scene parseScene(const std::string& text, const std::filesystem::path& baseDir);
 Scene loadScene(const std::filesystem::path& file);
 
 std::string sceneToJson(const Scene& scene);
+// The same, to be read from `folder`: mesh paths relative to it.
+std::string sceneToJson(const Scene& scene, const std::filesystem::path& folder);
 // Writes to a temporary file beside the target, then renames: a failed save
 // leaves the previous file untouched.
 void saveScene(const Scene& scene, const std::filesystem::path& file);

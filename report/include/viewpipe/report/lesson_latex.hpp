@@ -18,8 +18,23 @@ struct LessonFigures {
     std::string asking, revealed;
 };
 
+// Each step's text in the documents follows a line "% steps[K]" (K from 0),
+// the title none: an error pdflatex reports at a line is the text of the
+// step marked last before it.
+constexpr const char* kStepMark = "% steps";
+
 std::string lessonHandoutLatex(const Lesson& lesson, const std::vector<LessonFigures>& figures);
 std::string lessonSlidesLatex(const Lesson& lesson, const std::vector<LessonFigures>& figures);
+
+// A question's answer as lesson text (inline `$` math), as every writer
+// states it: "$(0, 0, 0)$", "$w$ is positive", "(b) ...", an entry exactly
+// and as a decimal.
+std::string answerText(const LessonStep& step);
+// What a question is about, as lesson text: "After stage 3, $T(-\mathit{PRP})$.
+// The point $(8, 6, 84)$."; empty where the prompt says it all.
+std::string questionContext(const LessonStep& step);
+// A choice's letter, "(a)" for the first.
+std::string choiceLetter(std::size_t k);
 
 // Text with inline math between `$` signs (`\$` a dollar sign) as LaTeX: the
 // text escaped, the math as written.
