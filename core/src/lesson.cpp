@@ -46,11 +46,25 @@ std::string readCaption(const Json& j, const std::string& path, bool required)
     const std::string text = readString(j, path);
     if (required && text.find_first_not_of(" \t\n") == std::string::npos)
         throw InputError(path, "is empty");
-    int dollars = 0;
-    for (std::size_t k = 0; k < text.size(); ++k)
-        if (text[k] == '$' && (k == 0 || text[k - 1] != '\\'))
-            ++dollars;
-    if (dollars % 2)
+    // Math that closes, with its braces in pairs: what KaTeX and pdflatex both read.
+    bool math = false;
+    int depth = 0;
+    std::size_t opened = 0;
+    for (std::size_t k = 0; k < text.size(); ++k) {
+        const bool escaped = k > 0 && text[k - 1] == '\\';
+        if (text[k] == '$' && !escaped) {
+            if (math && depth != 0)
+                throw InputError(path, "has math whose braces do not pair up: " + text.substr(opened, k + 1 - opened));
+            math = !math;
+            opened = k;
+            depth = 0;
+        } else if (math && !escaped && (text[k] == '{' || text[k] == '}')) {
+            depth += text[k] == '{' ? 1 : -1;
+            if (depth < 0)
+                throw InputError(path, "has math whose braces do not pair up: " + text.substr(opened, k + 1 - opened));
+        }
+    }
+    if (math)
         throw InputError(path, "has a $ that opens math and none that closes it (write \\$ for a dollar sign)");
     return text;
 }
@@ -66,8 +80,8 @@ Scene readStepScene(const Json& j, const std::string& path, const std::filesyste
         const std::filesystem::path file = baseDir / j.get<std::string>();
         try {
             return loadScene(file);
-        } catch (const InputError& e) {
-            throw InputError(path, j.get<std::string>() + ": " + e.what());
+        } catch (const InputError& e) { // "$" is the file as a whole: its reason alone
+            throw InputError(path, j.get<std::string>() + ": " + (e.field() == "$" ? e.reason() : e.what()));
         }
     }
     if (!j.is_object())

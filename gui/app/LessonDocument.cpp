@@ -113,8 +113,10 @@ bool LessonDocument::isAsking() const
 bool LessonDocument::check(const Answer& answer)
 {
     const bool right = isRight(*currentStep().question, answer);
-    if (!answers_[std::size_t(step_)]) // the first answer counts; the revealed one cannot change it
+    if (!answers_[std::size_t(step_)]) { // the first answer counts; the revealed one cannot change it
         answers_[std::size_t(step_)] = answer;
+        unsavedAnswers_ = true;
+    }
     revealed_[std::size_t(step_)] = true;
     emit stepChanged();
     return right;
@@ -128,13 +130,14 @@ void LessonDocument::reveal()
     emit stepChanged();
 }
 
-void LessonDocument::saveResults(const QString& path) const
+void LessonDocument::saveResults(const QString& path)
 {
     try {
         writeFileAtomically(path.toStdString(), resultsJson());
     } catch (const std::exception& e) {
         throw InputError("$", std::string("cannot write the results: ") + e.what());
     }
+    unsavedAnswers_ = false;
 }
 
 void LessonDocument::edit(Lesson next, int step, const QString& description)
@@ -162,6 +165,7 @@ void LessonDocument::resetAnswers()
 {
     answers_.assign(lesson_.steps.size(), std::nullopt);
     revealed_.assign(lesson_.steps.size(), false);
+    unsavedAnswers_ = false;
 }
 
 void LessonDocument::insertStep(int at, const LessonStep& step)

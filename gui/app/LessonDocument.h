@@ -53,7 +53,9 @@ public:
     // The results file, as the web page saves it.
     std::string resultsJson() const { return resultsToJson(lesson_, answers_); }
     // Writes the results file atomically; throws InputError when it cannot.
-    void saveResults(const QString& path) const;
+    void saveResults(const QString& path);
+    // Answers given since the results were last saved.
+    bool hasUnsavedAnswers() const { return unsavedAnswers_; }
 
     // Authoring: each an undoable edit; one the core refuses throws InputError and changes nothing.
     void insertStep(int at, const LessonStep& step);
@@ -82,6 +84,7 @@ private:
     int generation_ = 0;
     std::vector<std::optional<Answer>> answers_;
     std::vector<bool> revealed_;
+    bool unsavedAnswers_ = false;
     QUndoStack undo_;
 };
 

@@ -13,6 +13,7 @@
 #include <QTimer>
 #include <QShortcut>
 #include <QRadioButton>
+#include <QScrollArea>
 #include <QTextDocumentFragment>
 #include <QUndoStack>
 #include <QVBoxLayout>
@@ -55,6 +56,27 @@ protected:
 
 private:
     QRadioButton* radio_;
+};
+
+// A list as tall as its rows at the text size of the moment (presenting enlarges it): nothing to scroll.
+class FittedList : public QListWidget {
+public:
+    QSize sizeHint() const override
+    {
+        int height = 2 * frameWidth();
+        for (int row = 0; row < count(); ++row)
+            height += sizeHintForRow(row);
+        return {QListWidget::sizeHint().width(), height};
+    }
+    QSize minimumSizeHint() const override { return {QListWidget::minimumSizeHint().width(), sizeHint().height()}; }
+
+protected:
+    void changeEvent(QEvent* event) override
+    {
+        QListWidget::changeEvent(event);
+        if (event->type() == QEvent::FontChange)
+            updateGeometry();
+    }
 };
 
 QLabel* richLabel(const QString& name)
@@ -152,17 +174,24 @@ LessonPanel::LessonPanel(LessonDocument* lesson, QWidget* parent) : QWidget(pare
     up->setObjectName("moveUpButton");
     down->setObjectName("moveDownButton");
     remove->setObjectName("removeStepButton");
-    stepButtons->addWidget(add);
+    // Two rows: the panel stays as narrow as its dock at any text size.
+    c->addWidget(add);
     stepButtons->addWidget(up);
     stepButtons->addWidget(down);
     stepButtons->addWidget(remove);
+    stepButtons->addStretch();
     c->addLayout(stepButtons);
-    c->addWidget(new QLabel(tr("Caption (math between $ signs)")));
+    auto wrapped = [](const QString& text) {
+        auto* label = new QLabel(text);
+        label->setWordWrap(true);
+        return label;
+    };
+    c->addWidget(wrapped(tr("Caption (math between $ signs)")));
     captionEdit_ = new QPlainTextEdit;
     captionEdit_->setObjectName("captionEdit");
     captionEdit_->setMaximumHeight(110);
     c->addWidget(captionEdit_);
-    c->addWidget(new QLabel(tr("Question, as the lesson file holds it (JSON; empty for none)")));
+    c->addWidget(wrapped(tr("Question, as the lesson file holds it (JSON; empty for none)")));
     questionEdit_ = new QPlainTextEdit;
     questionEdit_->setObjectName("questionEdit");
     questionEdit_->setMaximumHeight(160);
@@ -201,14 +230,27 @@ LessonPanel::LessonPanel(LessonDocument* lesson, QWidget* parent) : QWidget(pare
     layout->addWidget(editor_);
     layout->addStretch();
 
-    connect(previous, &QPushButton::clicked, this, [this] { lesson_->goTo(lesson_->step() - 1); });
-    connect(next, &QPushButton::clicked, this, [this] { lesson_->goTo(lesson_->step() + 1); });
+    connect(previous, &QPushButton::clicked, this, [this] {
+        if (applyPendingEdits())
+            lesson_->goTo(lesson_->step() - 1);
+    });
+    connect(next, &QPushButton::clicked, this, [this] {
+        if (applyPendingEdits())
+            lesson_->goTo(lesson_->step() + 1);
+    });
+    connect(titleEdit_, &QLineEdit::returnPressed, this, &LessonPanel::applyPendingEdits);
     connect(check_, &QPushButton::clicked, this, &LessonPanel::checkAnswer);
     connect(reveal_, &QPushButton::clicked, lesson_, &LessonDocument::reveal);
     connect(saveResults_, &QPushButton::clicked, this, &LessonPanel::saveResultsRequested);
     connect(steps_, &QListWidget::currentRowChanged, this, [this](int row) {
-        if (row >= 0 && row != lesson_->step())
+        if (row < 0 || row == lesson_->step())
+            return;
+        if (applyPendingEdits()) {
             lesson_->goTo(row);
+        } else {
+            const QSignalBlocker quiet(steps_);
+            steps_->setCurrentRow(lesson_->step()); // the step with the refused edit stays
+        }
     });
     auto guarded = [this](const std::function<void()>& edit) {
         try {
@@ -297,6 +339,7 @@ void LessonPanel::refreshStep()
     reveal_->setEnabled(asking);
     if (asking) {
         feedback_->clear();
+        askingShown_ = k;
         return;
     }
     const std::optional<Answer>& answer = lesson_->answer(k);
@@ -307,6 +350,13 @@ void LessonPanel::refreshStep()
     if (!q.explanation.empty())
         said += "<br>" + mathHtml(q.explanation);
     feedback_->setText(said);
+    if (askingShown_ == k) // just answered: the answer into view, below the fold of a small screen
+        QTimer::singleShot(0, this, [this] {
+            for (QWidget* up = parentWidget(); up; up = up->parentWidget())
+                if (auto* scroll = qobject_cast<QScrollArea*>(up))
+                    return scroll->ensureWidgetVisible(feedback_);
+        });
+    askingShown_ = -1;
 }
 
 void LessonPanel::buildInputs()
@@ -348,7 +398,9 @@ void LessonPanel::buildInputs()
         row->addWidget(line("answerY", "y"));
         row->addWidget(line("answerZ", "z"));
         layout->addLayout(row);
-        auto* tolerance = new QLabel(tr("Within %1 % of the answer's size counts.").arg(q.tolerance * 100));
+        auto* tolerance = new QLabel(tr("Right within %1 % of the answer's length, or within %2 where it is shorter than 1.")
+                                         .arg(q.tolerance * 100)
+                                         .arg(q.tolerance));
         tolerance->setWordWrap(true);
         layout->addWidget(tolerance);
         break;
@@ -370,10 +422,10 @@ void LessonPanel::buildInputs()
         break;
     }
     case QuestionKind::Entry:
-        layout->addWidget(line("answerEntry", tr("a number or a fraction, such as -2/21")));
+        layout->addWidget(line("answerEntry", tr("e.g. -2/21 or -0.0952")));
         break;
     case QuestionKind::Order: {
-        auto* list = new QListWidget;
+        auto* list = new FittedList;
         list->setObjectName("orderList");
         list->setDragDropMode(QAbstractItemView::InternalMove);
         list->setToolTip(tr("Drag the stages into the order they apply to a point, first at the top"));
@@ -382,7 +434,7 @@ void LessonPanel::buildInputs()
             item->setData(Qt::UserRole, c);
             list->addItem(item);
         }
-        list->setMaximumHeight(list->sizeHintForRow(0) * int(q.choices.size() + 1));
+        list->setVerticalScrollBarPolicy(Qt::ScrollBarAlwaysOff);
         layout->addWidget(list);
         auto* row = new QHBoxLayout;
         for (const auto& [text, name, by] : {std::tuple{tr("Earlier"), "orderUp", -1}, std::tuple{tr("Later"), "orderDown", 1}}) {
@@ -469,6 +521,22 @@ void LessonPanel::setEditorAvailable(bool available)
     editor_->setVisible(available);
     if (!available)
         editor_->setChecked(false);
+}
+
+bool LessonPanel::applyPendingEdits()
+{
+    if (!lesson_->isOpen())
+        return true;
+    try {
+        applyEdits(); // nothing changed: no edit
+        editError_->clear();
+        return true;
+    } catch (const InputError& e) {
+        openEditor();
+        editError_->setText(QString::fromStdString(e.what()).toHtmlEscaped());
+        emit message(tr("The step's edits are not applied: %1").arg(QString::fromStdString(e.what())));
+        return false;
+    }
 }
 
 void LessonPanel::applyEdits()

@@ -32,6 +32,10 @@ public:
     // file form holds its answer.
     void openEditor();
     void setEditorAvailable(bool available);
+    // Makes the title, caption and question typed in the editor the lesson's
+    // (before the step changes, a save or a close); false, with the reason
+    // shown, when the core refuses them.
+    bool applyPendingEdits();
 
 signals:
     void addStepRequested();
@@ -66,6 +70,7 @@ private:
     // refresh for an answer or a save keeps what was typed.
     int inputsFor_ = -1, inputsGeneration_ = -1;
     int editorsFor_ = -1, editorsGeneration_ = -1;
+    int askingShown_ = -1; // the step whose question was last shown waiting
 };
 
 } // namespace viewpipe::gui

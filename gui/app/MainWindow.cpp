@@ -828,7 +828,8 @@ void MainWindow::setTheme(Theme theme)
     accuracy_->setTheme(theme);
     depth_->showDepth(document_->pipeline(), document_->evaluated()->outcomes.depth, theme);
     applyTheme(theme);
-    QSettings().setValue("theme", theme == Theme::Light ? "light" : "dark");
+    if (!isPresenting()) // the projector's look is not the user's setting
+        QSettings().setValue("theme", theme == Theme::Light ? "light" : "dark");
     renderNow();
 }
 
@@ -891,7 +892,8 @@ void MainWindow::setFontSize(int points)
     font.setPointSize(fontSize_);
     QApplication::setFont(font);
     painter_->setFontSize(int(std::lround(fontSize_ * 1.6)));
-    QSettings().setValue("fontSize", fontSize_);
+    if (!isPresenting())
+        QSettings().setValue("fontSize", fontSize_);
     // Once the widgets have taken the new font: the tabs' size hints follow it.
     QTimer::singleShot(0, this, &MainWindow::fitDocksToText);
     renderNow();
@@ -1112,6 +1114,10 @@ void MainWindow::exportWebPage(const QString& path)
 
 void MainWindow::copyMatrixAsLatex()
 {
+    if (hidesAnswers()) {
+        showMessage(tr("The matrices follow the answer to the lesson's question."));
+        return;
+    }
     const std::string latex = stage_ == 0 ? cli::matricesLatex(document_->scene(), 4)
                                           : cli::stageLatex(document_->scene(), stage_, 4);
     QApplication::clipboard()->setText(QString::fromStdString(latex));
@@ -1200,13 +1206,16 @@ void MainWindow::showLessonStep()
     }
     shownLessonStep_ = k;
     shownGeneration_ = lesson_->generation();
-    // What the step hides is not drawn, what it highlights is drawn wider.
-    painter_->setScene(shownAtStep(document_->evaluated(), step));
-    if (!step.panel.empty())
-        showPanel(QString::fromStdString(step.panel));
     if (newStep || !sameScene) {
+        if (isAnimating())
+            goToStage(target_, false);
+        // What the step hides is not drawn, what it highlights is drawn wider; the picture stays at its stage.
+        painter_->setScene(shownAtStep(document_->evaluated(), step));
+        if (!step.panel.empty())
+            showPanel(QString::fromStdString(step.panel));
         painter_->resetView();
         painter_->orbit(step.yaw, step.pitch, step.zoom);
+        showRestingStage();
     }
     const bool revealed = !step.question || lesson_->isRevealed(k);
     traceVertex(tracedAt(step, revealed)); // once answered, the point asked about, followed through the stages
@@ -1276,6 +1285,8 @@ bool MainWindow::saveLesson(const QString& path)
 
 bool MainWindow::saveLessonAs(bool askForName)
 {
+    if (!lessonPanel_->applyPendingEdits())
+        return false;
     QString path = lesson_->filePath();
     // A built-in lesson is a copy's starting point, not a file to overwrite.
     if (askForName || path.isEmpty() || QFileInfo(path).absolutePath() == QDir(lessonsDirectory()).absolutePath())
@@ -1298,6 +1309,21 @@ bool MainWindow::saveLessonResults(const QString& path)
 
 bool MainWindow::confirmDiscardLesson()
 {
+    if (!lessonPanel_->applyPendingEdits())
+        return false;
+    if (lesson_->hasUnsavedAnswers()) {
+        const auto answer = QMessageBox::question(this, tr("Unsaved answers"),
+                                                  tr("Your answers to the lesson's questions are not saved. Save them first?"),
+                                                  QMessageBox::Save | QMessageBox::Discard | QMessageBox::Cancel);
+        if (answer == QMessageBox::Cancel)
+            return false;
+        if (answer == QMessageBox::Save) {
+            const QString path = QFileDialog::getSaveFileName(this, tr("Save my answers"), "lesson-results.json",
+                                                              tr("Results (*.json)"));
+            if (path.isEmpty() || !saveLessonResults(path))
+                return false;
+        }
+    }
     if (!lesson_->isModified())
         return true;
     const auto answer = QMessageBox::question(this, tr("Unsaved lesson"), tr("The lesson has unsaved changes. Save them first?"),
@@ -1311,6 +1337,8 @@ void MainWindow::advance(int by)
 {
     if (!lesson_->isOpen())
         return goToStage(target_ + by);
+    if (!lessonPanel_->applyPendingEdits())
+        return;
     if (by > 0 && lesson_->isAsking())
         return lesson_->reveal();
     lesson_->goTo(lesson_->step() + by);

@@ -1,6 +1,7 @@
 #include "MathText.h"
 
 #include <QHash>
+#include <QRegularExpression>
 
 #include <cctype>
 
@@ -137,8 +138,10 @@ private:
             auto simple = [](const QString& s) { return !s.contains(' ') && !s.contains("−") && s.size() < 16; };
             return (simple(top) ? top : "(" + top + ")") + "/" + (simple(bottom) ? bottom : "(" + bottom + ")");
         }
-        if (name == "sqrt")
-            return "√<span style='text-decoration: overline'>" + argument() + "</span>";
+        if (name == "sqrt") { // an overline would run into the line above in a label
+            const QString radicand = argument();
+            return radicand.size() == 1 || !radicand.contains(QRegularExpression("\\W")) ? "√" + radicand : "√(" + radicand + ")";
+        }
         const auto sign = signs().constFind(name);
         if (sign != signs().constEnd())
             return *sign;

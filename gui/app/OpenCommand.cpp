@@ -36,7 +36,12 @@ int runOpen(int argc, char** argv, const OpenOptions& options)
                                         std::to_string(options.stage) + ")");
 
     if (!options.lesson.empty()) {
-        const Lesson lesson = loadLesson(options.lesson);
+        Lesson lesson;
+        try {
+            lesson = loadLesson(options.lesson);
+        } catch (const InputError& e) { // named by its file: the message's prefix is the scene's
+            throw InputError("--lesson", options.lesson + ": " + e.what());
+        }
         if (options.step < 1 || options.step > int(lesson.steps.size()))
             throw InputError("--step", "must lie between 1 and " + std::to_string(lesson.steps.size()) + " (got " +
                                            std::to_string(options.step) + ")");

@@ -17,8 +17,9 @@ namespace fs = std::filesystem;
 
 namespace {
 
-// The slides' text larger, as a projector needs.
-constexpr double kSlideFontScale = 1.5;
+// The figures' text larger than the pictures' at their size: a page shrinks
+// them to its width, a slide to two thirds of it.
+constexpr double kPaperFontScale = 1.3, kSlideFontScale = 1.7;
 
 // Step `step`'s view of `stage` as a PDF figure: its camera, its stage, the
 // stage named only when the step does not hide it.
@@ -117,7 +118,7 @@ std::vector<fs::path> exportLessonPdf(const Lesson& lesson, const std::vector<in
     try {
         std::vector<LessonFigures> handout(lesson.steps.size()), slides(lesson.steps.size());
         for (std::size_t s = 0; s < scenes.size(); ++s) {
-            const OffscreenPainter paper(scenes[s], width, height, 1, theme, false);
+            const OffscreenPainter paper(scenes[s], width, height, 1, theme, false, kPaperFontScale);
             const OffscreenPainter projector(scenes[s], width, height, 1, theme, false, kSlideFontScale);
             for (std::size_t k = 0; k < lesson.steps.size(); ++k) {
                 if (stepScenes[k] != int(s))

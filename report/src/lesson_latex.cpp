@@ -231,8 +231,10 @@ std::string lessonHandoutLatex(const Lesson& lesson, const std::vector<LessonFig
             const LessonStep& step = lesson.steps[k];
             if (!step.question)
                 continue;
-            out << stepMark(k) << "\\subsection*{Question " << ++questions << " (step " << k + 1 << ")}\n"
-                << answerParagraphs(step) << texRichText(step.caption) << "\\par\n" << matrixLatex(step);
+            // Each answer whole on one page: its heading, text and matrix together.
+            out << stepMark(k) << "\\begin{minipage}{\\linewidth}\\setlength{\\parskip}{0.5em}\n"
+                << "\\subsection*{Question " << ++questions << " (step " << k + 1 << ")}\n" << answerParagraphs(step)
+                << texRichText(step.caption) << "\\par\n" << matrixLatex(step) << "\\end{minipage}\\par\\bigskip\n";
         }
     }
     out << "\\end{document}\n";
@@ -253,7 +255,7 @@ std::string lessonSlidesLatex(const Lesson& lesson, const std::vector<LessonFigu
         out << stepMark(k);
         out << "{\\footnotesize\\textbf{" << title << "}\\hfill Step " << k + 1 << " of " << n << "}\\par\\vspace{1mm}\n"
             << "\\begin{minipage}[t]{0.63\\linewidth}\\vspace{0pt}" << figure(file) << "\\end{minipage}\\hfill\n"
-            << "\\begin{minipage}[t]{0.35\\linewidth}\\vspace{0pt}\\footnotesize\\setlength{\\parskip}{0.4em}\n"
+            << "\\begin{minipage}[t]{0.35\\linewidth}\\vspace{0pt}\\footnotesize\\raggedright\\setlength{\\parskip}{0.4em}\n"
             << side << "\\end{minipage}\\par\\vspace{1mm}\n{\\small " << below << "\\par}\n\\clearpage\n";
     };
     int questions = 0;

@@ -78,7 +78,7 @@ TEST(Lesson, BadLessonsAreRefusedWithTheirFieldPaths)
     refused(houseStep(R"({"kind": "where", "prompt": "p", "point": [1.7e308, 0, -1.7e308], "after": 4})"),
             "steps[0].question.point", "no finite image");
     refused(R"({"scene": "house.json", "caption": "costs $5"})", "steps[0].caption", "$");
-    refused(R"({"scene": "nope.json", "caption": "c"})", "steps[0].scene", "nope.json: $: cannot read the scene file");
+    refused(R"({"scene": "nope.json", "caption": "c"})", "steps[0].scene", "nope.json: cannot read the scene file");
     refused(R"({"scene": {"view": {"projection": "perspective", "vrp": [0, 0, 0], "vpn": [0, 0, 1], "vup": [0, 0, 1],
                 "prp": [8, 6, 84], "window": [-50, 50, -50, 50], "front": 60, "back": 25}}, "caption": "c"})",
             "steps[0].scene.view.vup", "parallel");
@@ -226,6 +226,11 @@ TEST(Lesson, AStepHidesAndHighlightsElementsAndEntries)
     // A step that changes nothing draws the scene itself.
     EXPECT_EQ(shownAtStep(full, lessonWith(R"({"scene": "house.json", "caption": "c"})").steps[0]), full);
 
+    expectRefused([] { lessonWith(R"({"scene": "house.json", "caption": "half $\\frac{1}{2$"})"); }, "steps[0].caption",
+                  "has math whose braces do not pair up: $\\frac{1}{2$");
+    expectRefused([] { lessonWith(R"({"scene": "house.json", "caption": "$x}{$"})"); }, "steps[0].caption",
+                  "braces do not pair up");
+    EXPECT_NO_THROW(lessonWith(R"({"scene": "house.json", "caption": "a set $\\{x\\}$ and \\$5 {plain}"})"));
     expectRefused([] { lessonWith(R"({"scene": "house.json", "caption": "c", "hide": ["walls"]})"); }, "steps[0].hide[0]",
                   "must be one of objects, world_axes");
     expectRefused([] { lessonWith(R"({"scene": "house.json", "caption": "c", "highlight": {"entries": [[1, 3]]}})"); },
