@@ -387,10 +387,10 @@ int revealedStage(const LessonStep& step)
     return step.question && step.question->stage > 0 ? std::max(step.stage, step.question->stage) : step.stage;
 }
 
-std::optional<Vec3<double>> tracedAt(const LessonStep& step, bool revealed)
+std::optional<Vec3<double>> tracedAt(const LessonStep& step)
 {
     const std::optional<Question>& q = step.question;
-    if (revealed && q && (q->kind == QuestionKind::Where || q->kind == QuestionKind::Inside || q->kind == QuestionKind::SignW))
+    if (q && (q->kind == QuestionKind::Where || q->kind == QuestionKind::Inside || q->kind == QuestionKind::SignW))
         return q->point;
     return step.trace;
 }

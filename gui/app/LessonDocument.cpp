@@ -202,10 +202,15 @@ void LessonDocument::setTexts(int step, const std::string& title, const std::str
     next.title = title;
     LessonStep& edited = next.steps.at(std::size_t(step));
     edited.caption = caption;
-    if (question.find_first_not_of(" \t\n\r") == std::string::npos)
+    if (question.find_first_not_of(" \t\n\r") == std::string::npos) {
         edited.question.reset();
-    else
-        edited.question = parseQuestion(question, edited.scene);
+    } else {
+        try {
+            edited.question = parseQuestion(question, edited.scene);
+        } catch (const InputError& e) { // named as the file names it, as the caption's refusals are
+            throw InputError("steps[" + std::to_string(step) + "]." + e.field(), e.reason());
+        }
+    }
     edit(std::move(next), step, tr("Edit Step %1").arg(step + 1));
 }
 

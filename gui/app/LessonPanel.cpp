@@ -163,6 +163,8 @@ LessonPanel::LessonPanel(LessonDocument* lesson, QWidget* parent) : QWidget(pare
     steps_->setObjectName("lessonSteps");
     steps_->setToolTip(tr("The steps: pick one to show it"));
     steps_->setMaximumHeight(160);
+    steps_->setWordWrap(true); // the numbers stay in view
+    steps_->setHorizontalScrollBarPolicy(Qt::ScrollBarAlwaysOff);
     c->addWidget(steps_);
     auto* stepButtons = new QHBoxLayout;
     auto* add = new QPushButton(tr("Add Step From View"));
@@ -350,8 +352,8 @@ void LessonPanel::refreshStep()
     if (!q.explanation.empty())
         said += "<br>" + mathHtml(q.explanation);
     feedback_->setText(said);
-    if (askingShown_ == k) // just answered: the answer into view, below the fold of a small screen
-        QTimer::singleShot(0, this, [this] {
+    if (askingShown_ == k) // just answered: the answer into view, below the fold of a small screen, once laid out
+        QTimer::singleShot(100, this, [this] {
             for (QWidget* up = parentWidget(); up; up = up->parentWidget())
                 if (auto* scroll = qobject_cast<QScrollArea*>(up))
                     return scroll->ensureWidgetVisible(feedback_);
@@ -537,6 +539,13 @@ bool LessonPanel::applyPendingEdits()
         emit message(tr("The step's edits are not applied: %1").arg(QString::fromStdString(e.what())));
         return false;
     }
+}
+
+void LessonPanel::discardPendingEdits()
+{
+    editorsFor_ = -1;
+    editError_->clear();
+    refreshStep();
 }
 
 void LessonPanel::applyEdits()

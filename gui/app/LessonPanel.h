@@ -36,6 +36,8 @@ public:
     // (before the step changes, a save or a close); false, with the reason
     // shown, when the core refuses them.
     bool applyPendingEdits();
+    // The editor shows the lesson's texts again, what was typed dropped.
+    void discardPendingEdits();
 
 signals:
     void addStepRequested();

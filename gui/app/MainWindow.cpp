@@ -378,7 +378,8 @@ void MainWindow::buildMenus()
         }
     });
     file->addSeparator();
-    file->addAction(tr("&Quit"), this, &QWidget::close, QKeySequence::Quit);
+    QAction* quit = file->addAction(tr("&Quit"), this, &QWidget::close, QKeySequence::Quit);
+    addAction(quit); // also while presenting, the menu bar hidden
     rebuildPresetMenu();
     rebuildRecentMenu();
 
@@ -1218,7 +1219,7 @@ void MainWindow::showLessonStep()
         showRestingStage();
     }
     const bool revealed = !step.question || lesson_->isRevealed(k);
-    traceVertex(tracedAt(step, revealed)); // once answered, the point asked about, followed through the stages
+    traceVertex(tracedAt(step)); // the point asked about, followed through the stages once answered
     const int stage = revealed ? revealedStage(step) : askingStage(step);
     // The answer comes with the transition to the stage asked about; a step to the next stage plays it too.
     goToStage(stage, sameScene && (!newStep || std::abs(stage - target_) == 1));
@@ -1309,8 +1310,14 @@ bool MainWindow::saveLessonResults(const QString& path)
 
 bool MainWindow::confirmDiscardLesson()
 {
-    if (!lessonPanel_->applyPendingEdits())
-        return false;
+    if (!lessonPanel_->applyPendingEdits()) {
+        const auto answer = QMessageBox::question(this, tr("Edits not applied"),
+                                                  tr("%1\n\nDiscard the step's edits?").arg(lastMessage_),
+                                                  QMessageBox::Discard | QMessageBox::Cancel);
+        if (answer != QMessageBox::Discard)
+            return false;
+        lessonPanel_->discardPendingEdits();
+    }
     if (lesson_->hasUnsavedAnswers()) {
         const auto answer = QMessageBox::question(this, tr("Unsaved answers"),
                                                   tr("Your answers to the lesson's questions are not saved. Save them first?"),

@@ -14,7 +14,7 @@ const QHash<QString, QString>& signs()
         {"alpha", "α"},  {"beta", "β"},   {"gamma", "γ"},   {"delta", "δ"},  {"epsilon", "ε"}, {"theta", "θ"},
         {"lambda", "λ"}, {"mu", "μ"},     {"pi", "π"},      {"rho", "ρ"},    {"sigma", "σ"},   {"tau", "τ"},
         {"phi", "φ"},    {"omega", "ω"},  {"Delta", "Δ"},   {"Theta", "Θ"},  {"Pi", "Π"},      {"Phi", "Φ"},
-        {"approx", "≈"}, {"cdot", "·"},   {"times", "×"},   {"le", "≤"},     {"leq", "≤"},     {"ge", "≥"},
+        {"approx", "≈\u200b"}, {"cdot", "·\u200b"},   {"times", "×\u200b"},   {"le", "≤"},     {"leq", "≤"},     {"ge", "≥"},
         {"geq", "≥"},    {"ne", "≠"},     {"neq", "≠"},     {"to", "→"},     {"rightarrow", "→"}, {"mapsto", "↦"},
         {"infty", "∞"},  {"pm", "±"},     {"circ", "°"},    {"ldots", "…"},  {"dots", "…"},    {"cdots", "⋯"},
         {"in", "∈"},     {"quad", "\u2003"}, {"qquad", "\u2003\u2003"}, {",", "\u2009"}, {";", "\u2005"},
@@ -85,6 +85,8 @@ private:
             } else {
                 // Spaced as math spaces them: relations and sums both sides, a comma after.
                 out += (c == '=' || c == '+') ? QString("\u2009%1\u2009").arg(c) : c == ',' ? QString(", ") : QString(c);
+                if (c == '=' || c == '+')
+                    out += "\u200b"; // a line may break here, as KaTeX breaks long math
                 ++at_;
             }
         }

@@ -15,7 +15,11 @@ QString number(double x)
     return QString::fromStdString(formatSignificant(x, 5));
 }
 
-QString table(const QString& caption, const std::array<QString, 16>& cells, const std::array<bool, 16>& highlight = {})
+constexpr const char* kChanged = "#f2c14e";  // the entries a stage changed in the product
+constexpr const char* kLessonMark = "#8ecae6"; // the entries a lesson step points at
+
+QString table(const QString& caption, const std::array<QString, 16>& cells, const std::array<bool, 16>& highlight = {},
+              const char* color = kChanged)
 {
     QString html = "<table cellspacing='0' cellpadding='3' style='margin-bottom:8px'><tr><td colspan='4'><b>" +
                    caption + "</b></td></tr>";
@@ -24,7 +28,7 @@ QString table(const QString& caption, const std::array<QString, 16>& cells, cons
         for (int c = 0; c < 4; ++c) {
             const bool h = highlight[std::size_t(r * 4 + c)];
             html += QString("<td align='right' style='%1'>%2</td>")
-                        .arg(h ? "background-color:#f2c14e; color:black; font-weight:bold;" : "")
+                        .arg(h ? QString("background-color:%1; color:black; font-weight:bold;").arg(color) : QString())
                         .arg(cells[std::size_t(r * 4 + c)].toHtmlEscaped());
         }
         html += "</tr>";
@@ -109,7 +113,7 @@ void MatrixPanel::showStage(const Pipeline<double>& pipeline, int stage, const s
         std::array<bool, 16> marked{};
         for (const auto& [row, column] : highlighted)
             marked[std::size_t((row - 1) * 4 + column - 1)] = true;
-        html += table(symbol, numbers(s.matrix), marked);
+        html += table(symbol, numbers(s.matrix), marked, kLessonMark);
     }
     html += table(tr("Cumulative (changed entries highlighted)"), numbers(now), changed);
     matrices_->setText(html);

@@ -130,11 +130,11 @@ std::vector<fs::path> exportLessonPdf(const Lesson& lesson, const std::vector<in
                 auto figures = [&](const OffscreenPainter& offscreen, const std::string& prefix, LessonFigures& files) {
                     files.revealed = prefix + name + ".pdf";
                     writeStepFigure(offscreen, scenes[s], lessonStep, revealedStage(lessonStep), true,
-                                    tracedAt(lessonStep, true), theme, temporary / files.revealed);
+                                    tracedAt(lessonStep), theme, temporary / files.revealed);
                     if (lessonStep.question) {
                         files.asking = prefix + name + "-asking.pdf";
                         writeStepFigure(offscreen, scenes[s], lessonStep, askingStage(lessonStep), false,
-                                        tracedAt(lessonStep, false), theme, temporary / files.asking);
+                                        tracedAt(lessonStep), theme, temporary / files.asking);
                     }
                 };
                 figures(paper, "", handout[k]);

@@ -93,7 +93,10 @@ std::string latexSymbol(const std::string& symbol)
     const std::string math = base.size() > 1 ? "\\mathit{" + base + "}" : base;
     if (underscore == std::string::npos)
         return math;
-    return math + "_{\\mathrm{" + symbol.substr(underscore + 1) + "}}";
+    std::string subscript = symbol.substr(underscore + 1);
+    for (std::size_t at = 0; (at = subscript.find('_', at)) != std::string::npos; at += 2)
+        subscript.replace(at, 1, "\\_"); // NDC_vulkan_reversed: one subscript with an underscore in it
+    return math + "_{\\mathrm{" + subscript + "}}";
 }
 
 namespace {

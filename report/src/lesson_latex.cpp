@@ -231,10 +231,12 @@ std::string lessonHandoutLatex(const Lesson& lesson, const std::vector<LessonFig
             const LessonStep& step = lesson.steps[k];
             if (!step.question)
                 continue;
-            // Each answer whole on one page: its heading, text and matrix together.
+            // Each answer whole on one page: its heading, the stage it shows, its text and matrix together.
             out << stepMark(k) << "\\begin{minipage}{\\linewidth}\\setlength{\\parskip}{0.5em}\n"
-                << "\\subsection*{Question " << ++questions << " (step " << k + 1 << ")}\n" << answerParagraphs(step)
-                << texRichText(step.caption) << "\\par\n" << matrixLatex(step) << "\\end{minipage}\\par\\bigskip\n";
+                << "\\subsection*{Question " << ++questions << " (step " << k + 1 << ")}\n"
+                << "\\begin{center}\\includegraphics[width=0.55\\linewidth]{" << figures[k].revealed << "}\\end{center}\n"
+                << answerParagraphs(step) << texRichText(step.caption) << "\\par\n" << matrixLatex(step)
+                << "\\end{minipage}\\par\\bigskip\n";
         }
     }
     out << "\\end{document}\n";

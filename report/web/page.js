@@ -960,7 +960,7 @@
     state.step = index;
     useScene(step.scene);
     Object.assign(state, { yaw: step.yaw, pitch: step.pitch, zoom: step.zoom });
-    state.traced = step.trace || null;
+    state.traced = (step.question && step.question.point) || step.trace || null; // the point asked about, as the app marks it
     document.getElementById('step-title').textContent = `Step ${index + 1} of ${lesson.steps.length}`;
     setRichText(document.getElementById('step-caption'), step.caption);
     showQuestion(step, index);

@@ -182,7 +182,7 @@ private slots:
         QTRY_VERIFY(settled(w) && w.stage() == 4);
         const QString tables = w.matrices()->matricesText();
         const QString shear = tables.mid(tables.indexOf("<b>SH_per</b>"));
-        QCOMPARE(shear.left(shear.indexOf("</table>")).count("#f2c14e"), 2);
+        QCOMPARE(shear.left(shear.indexOf("</table>")).count("#8ecae6"), 2);
         QVERIFY(w.findChild<QDockWidget*>("matricesDock")->isVisible()); // the panel the step puts in front
         // The stage is drawn as the stepper draws it (a step that hides nothing nor moves once drew a blank view).
         const QImage revealed = worldPicture(w);
@@ -275,7 +275,7 @@ private slots:
         question->setPlainText(R"({"kind": "where", "prompt": "Where is the PRP?", "point": [8, 6, 84], "after": 9})");
         click(child<QPushButton>(w, "applyEditsButton"));
         // A bad question is refused with its field, and changes nothing.
-        QVERIFY2(child<QLabel>(w, "editError")->text().contains("question.after: must be a whole number from 1 to 5"),
+        QVERIFY2(child<QLabel>(w, "editError")->text().contains("steps[1].question.after: must be a whole number from 1 to 5"),
                  qPrintable(child<QLabel>(w, "editError")->text()));
         QVERIFY(!w.lesson()->lesson().steps[1].question);
         question->setPlainText(R"({"kind": "where", "prompt": "Where is the PRP?", "point": [8, 6, 84], "after": 3})");
@@ -314,7 +314,7 @@ private slots:
     void mathIsSetWithScriptsAndSigns()
     {
         QCOMPARE(mathHtml("$\\mathit{SH}_\\mathit{par}$ costs \\$5"), QString("<i>SH</i><sub><i>par</i></sub> costs $5"));
-        QCOMPARE(mathHtml("$\\sqrt{2/3} \\approx 0.8165$"), QString("√(2/3)≈0.8165"));
+        QCOMPARE(mathHtml("$\\sqrt{2/3} \\approx 0.8165$"), QString("√(2/3)≈\u200b0.8165")); // a line may break after the sign
         QCOMPARE(mathHtml("$\\sqrt{4872}$"), QString("√4872"));
         QCOMPARE(mathHtml("$-\\frac{2}{21}$"), QString("−2/21"));
         QCOMPARE(mathHtml("$45^\\circ$ and $x^2 < y$"), QString("45° and <i>x</i><sup>2</sup>&lt;<i>y</i>"));

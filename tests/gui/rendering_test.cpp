@@ -487,7 +487,7 @@ private slots:
         const QSizeF a4 = pageSize(handout);
         QVERIFY(std::abs(a4.width() - 595.28) < 1 && std::abs(a4.height() - 841.89) < 1);
         const int handoutPages = pages(handout);
-        QVERIFY2(handoutPages >= kSteps + 1 && handoutPages <= kSteps + 4, qPrintable(QString::number(handoutPages)));
+        QVERIFY2(handoutPages >= kSteps + 1 && handoutPages <= 2 * kSteps, qPrintable(QString::number(handoutPages)));
         QFile lessonFile(lessonPath);
         QVERIFY(lessonFile.open(QIODevice::ReadOnly));
         const QJsonArray steps = QJsonDocument::fromJson(lessonFile.readAll()).object()["steps"].toArray();

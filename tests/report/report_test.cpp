@@ -115,6 +115,7 @@ TEST(Latex, Symbols)
     EXPECT_EQ(cli::latexSymbol("SH_per"), "\\mathit{SH}_{\\mathrm{per}}");
     EXPECT_EQ(cli::latexSymbol("T(-VRP)"), "T(-\\mathit{VRP})");
     EXPECT_EQ(cli::latexSymbol("R"), "R");
+    EXPECT_EQ(cli::latexSymbol("NDC_vulkan_reversed"), "\\mathit{NDC}_{\\mathrm{vulkan\\_reversed}}"); // one subscript
 }
 
 TEST(PipelineJson, HouseHasTheContractedKeys)

@@ -73,9 +73,9 @@ struct Lesson {
 int askingStage(const LessonStep& step);
 // The stage a step shows once its question is answered, or all along without one.
 int revealedStage(const LessonStep& step);
-// The point a step marks: once its question about a point (where, inside,
-// sign_w) is answered or revealed that point, otherwise the step's own trace.
-std::optional<Vec3<double>> tracedAt(const LessonStep& step, bool revealed);
+// The point a step marks: the point its question asks about (where, inside,
+// sign_w), otherwise the step's own trace.
+std::optional<Vec3<double>> tracedAt(const LessonStep& step);
 
 // The order a question's choices are offered in, as indices: a choice
 // question's as written, a scene's stage symbols (which_stage, order) sorted,

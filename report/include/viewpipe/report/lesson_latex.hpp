@@ -1,8 +1,9 @@
 #pragma once
 // A lesson on paper: the handout (one A4 page per step, the questions without
-// their answers, an answer key at the end) and 16:9 slides (one per step; a
-// question's step has a second slide with its answer), as LaTeX documents
-// that pdflatex compiles (packages: geometry, graphicx, amsmath). The
+// their answers, an answer key at the end with the picture of each answer)
+// and 16:9 slides (one per step; a question's step has a second slide with
+// its answer), as LaTeX documents that pdflatex compiles (packages: geometry,
+// graphicx, amsmath, amssymb, adjustbox, xcolor). The
 // figures are PDF files beside the document; every number comes from the
 // lesson's scenes, so nothing here can state a wrong answer.
 #include <string>
