@@ -456,7 +456,7 @@ void LessonPanel::buildInputs()
         break;
     }
     }
-    inputs_->parentWidget()->layout()->replaceWidget(inputs_, fresh);
+    delete inputs_->parentWidget()->layout()->replaceWidget(inputs_, fresh); // the old widget's item is ours
     delete inputs_;
     inputs_ = fresh;
 }
