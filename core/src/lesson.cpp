@@ -395,6 +395,15 @@ std::optional<Vec3<double>> tracedAt(const LessonStep& step)
     return step.trace;
 }
 
+std::shared_ptr<const EvaluatedScene> evaluateStepScene(const Lesson& lesson, std::size_t k)
+{
+    try {
+        return evaluateScene(lesson.steps.at(k).scene);
+    } catch (const InputError& e) {
+        throw InputError("steps[" + std::to_string(k) + "].scene." + e.field(), e.reason());
+    }
+}
+
 Lesson loadLesson(const std::filesystem::path& file)
 {
     return parseLesson(readInputFile(file, "lesson"), file.parent_path());

@@ -41,9 +41,8 @@ LessonDocument::~LessonDocument()
     undo_.clear();
 }
 
-void LessonDocument::open(const QString& path)
+void LessonDocument::open(Lesson lesson, const QString& path)
 {
-    Lesson lesson = loadLesson(path.toStdString());
     ++generation_;
     undo_.clear();
     lesson_ = std::move(lesson);

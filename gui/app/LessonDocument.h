@@ -29,8 +29,8 @@ public:
     bool isModified() const { return !undo_.isClean(); }
     QUndoStack* undoStack() { return &undo_; }
 
-    // Throws InputError naming the field, keeping the lesson open before.
-    void open(const QString& path);
+    // A lesson read from `path` (loadLesson) replaces the one open.
+    void open(Lesson lesson, const QString& path);
     // A new lesson with one step.
     void create(const std::string& title, const LessonStep& first);
     void close();

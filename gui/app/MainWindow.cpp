@@ -1158,14 +1158,10 @@ bool MainWindow::openLesson(const QString& path)
 {
     try {
         // Every step's scene is read now (its meshes too): a step that cannot be shown stops nothing later.
-        const Lesson lesson = loadLesson(path.toStdString());
+        Lesson lesson = loadLesson(path.toStdString());
         for (std::size_t k = 0; k < lesson.steps.size(); ++k)
-            try {
-                evaluateScene(lesson.steps[k].scene);
-            } catch (const InputError& e) {
-                throw InputError("steps[" + std::to_string(k) + "].scene." + e.field(), e.reason());
-            }
-        lesson_->open(path);
+            evaluateStepScene(lesson, k);
+        lesson_->open(std::move(lesson), path);
     } catch (const InputError& e) {
         showMessage(tr("Cannot open the lesson %1: %2").arg(path, QString::fromStdString(e.what())));
         return false;

@@ -34,13 +34,8 @@ std::vector<std::shared_ptr<const EvaluatedScene>> evaluateSteps(const Lesson& l
         const LessonStep& step = lesson.steps[k];
         const std::string sceneKey = sceneToJson(step.scene) + step.scene.file.string();
         auto& scene = evaluated[sceneKey];
-        if (!scene) {
-            try {
-                scene = evaluateScene(step.scene);
-            } catch (const InputError& e) {
-                throw InputError("steps[" + std::to_string(k) + "].scene." + e.field(), e.reason());
-            }
-        }
+        if (!scene)
+            scene = evaluateStepScene(lesson, k);
         std::string shownKey = sceneKey + (step.labelsHidden ? "|labels" : "");
         for (Element e : step.hidden)
             shownKey += "|-" + std::to_string(int(e));

@@ -109,6 +109,8 @@ std::string resultsToJson(const Lesson& lesson, const std::vector<std::optional<
 Lesson parseLesson(const std::string& text, const std::filesystem::path& baseDir);
 // Throws InputError("$", ...) when the file cannot be read.
 Lesson loadLesson(const std::filesystem::path& file);
+// Step k's scene evaluated (its meshes read); a refusal names the step ("steps[3].scene.objects[0].path").
+std::shared_ptr<const EvaluatedScene> evaluateStepScene(const Lesson& lesson, std::size_t k);
 // The lesson as its file holds it, to be read from `baseDir`: a scene loaded
 // from a file as that file's path relative to baseDir, any other inline (its
 // meshes' paths made relative to baseDir); answers the scenes give are left out.
