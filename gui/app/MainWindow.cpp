@@ -886,14 +886,15 @@ void MainWindow::resizeEvent(QResizeEvent* event)
     blackout_->raise();
 }
 
-void MainWindow::setFontSize(int points)
+void MainWindow::setFontSize(int points, bool remember)
 {
     fontSize_ = std::clamp(points, 7, 40);
     QFont font = QApplication::font();
     font.setPointSize(fontSize_);
     QApplication::setFont(font);
-    painter_->setFontSize(int(std::lround(fontSize_ * 1.6)));
-    if (!isPresenting())
+    // Where the text leaves too little room, the caption and legend may shrink back to the default size.
+    painter_->setFontSize(int(std::lround(fontSize_ * 1.6)), int(std::lround(kDefaultFontSize * 1.6)));
+    if (remember && !isPresenting())
         QSettings().setValue("fontSize", fontSize_);
     // Once the widgets have taken the new font: the tabs' size hints follow it.
     QTimer::singleShot(0, this, &MainWindow::fitDocksToText);

@@ -107,7 +107,10 @@ public:
     // Whether errors also open a message box (besides the status bar).
     void setPopupsEnabled(bool enabled) { popups_ = enabled; }
     void setTheme(Theme theme);
-    void setFontSize(int points);
+    // The text's size in points; 100 % of `open --text-scale` is kDefaultFontSize.
+    static constexpr int kDefaultFontSize = 11;
+    // `remember`: kept in the user's settings for the next start.
+    void setFontSize(int points, bool remember = true);
     // View > Present (F5): the two views alone, full screen on `screen` (the
     // window's own by default), with the projector theme (light, text half as
     // large again). PageDown, Space and Right step on; PageUp, Backspace and
@@ -216,7 +219,7 @@ private:
     int stepMilliseconds_ = 1000;
     std::unique_ptr<StageTransition> transition_;
     std::optional<Vec3<double>> traced_;
-    int fontSize_ = 11;
+    int fontSize_ = kDefaultFontSize;
     // What presenting changed, to be restored.
     struct Presentation {
         QByteArray docks, geometry;

@@ -67,7 +67,12 @@ int runOpen(int argc, char** argv, const OpenOptions& options)
         window.resize(1600, 950);
     else
         window.fitToScreen();
-    window.setFontSize(screenshot ? 11 : settings.value("fontSize", 11).toInt()); // fits the docks to the window too
+    // Fits the docks to the window too.
+    if (options.textScale > 0) // for this run only
+        window.setFontSize(int(std::lround(MainWindow::kDefaultFontSize * options.textScale / 100.0)), false);
+    else
+        window.setFontSize(screenshot ? MainWindow::kDefaultFontSize : settings.value("fontSize", MainWindow::kDefaultFontSize).toInt(),
+                           !screenshot);
     window.show();
     if (!window.openScene(scene, scenePath)) {
         std::cerr << window.lastMessage().toStdString() << "\n";

@@ -15,7 +15,7 @@ namespace {
 
 struct ExportCommandOptions {
     std::string scene, out, size = "1280x720", stages = "all", theme = "light", formats = "png";
-    int scale = 1, fps = 30, digits = 4;
+    int scale = 1, textScale = 100, fps = 30, digits = 4;
     bool transparent = false, animate = false, quiet = false;
     std::string framing = "per-stage";
 };
@@ -36,6 +36,7 @@ int runExport(const ExportCommandOptions& options)
         o.out = options.out;
         std::tie(o.width, o.height) = parseSize(options.size, "--size");
         o.scale = options.scale;
+        o.textScale = options.textScale;
         o.stages = gui::parseStages(options.stages, int(scene->pipeline.stages.size()));
         o.theme = options.theme == "dark" ? Theme::Dark : Theme::Light;
         o.transparent = options.transparent;
@@ -88,6 +89,9 @@ void addExportCommand(CLI::App& app)
     command->add_option("--out", options->out, "Folder for the files (created if missing)")->required();
     command->add_option("--size", options->size, "Picture size WxH")->capture_default_str();
     command->add_option("--scale", options->scale, "Pixels per unit of size, 1 to 4 (2 for high-DPI)")
+        ->capture_default_str();
+    command->add_option("--text-scale", options->textScale,
+                        "Text size in percent, 50 to 400 (labels at least 2.4 % of the width at 100)")
         ->capture_default_str();
     command->add_option("--stages", options->stages, "all, or a list such as 0,2,4-5")->capture_default_str();
     command->add_option("--theme", options->theme, "light or dark")

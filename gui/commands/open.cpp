@@ -10,6 +10,7 @@ namespace {
 struct OpenCommandOptions {
     gui::OpenOptions open;
     std::string size, theme;
+    int textScale = -1; // not given
 };
 
 int runOpen(int argc, char** argv, OpenCommandOptions& options)
@@ -20,6 +21,11 @@ int runOpen(int argc, char** argv, OpenCommandOptions& options)
             std::tie(open.width, open.height) = parseSize(options.size, "--size");
             if (open.width < 200 || open.height < 150 || open.width > 8192 || open.height > 8192)
                 throw InputError("--size", "must be WxH with 200 <= W <= 8192 and 150 <= H <= 8192");
+        }
+        if (options.textScale != -1) {
+            if (options.textScale < 70 || options.textScale > 360)
+                throw InputError("--text-scale", "must be a whole percent from 70 to 360 (got " + std::to_string(options.textScale) + ")");
+            open.textScale = options.textScale;
         }
         if (!options.theme.empty())
             open.theme = options.theme;
@@ -39,6 +45,8 @@ void addOpenCommand(CLI::App& app, int argc, char** argv)
     command->add_option("--screenshot", open.screenshot, "Save a PNG of the whole window and exit");
     command->add_option("--size", options->size,
                         "Window size WxH (default: 1600x950 for a screenshot, else fitted to the screen)");
+    command->add_option("--text-scale", options->textScale,
+                        "Text size in percent of the default, as View > Larger Text sets it (70 to 360)");
     command->add_option("--theme", options->theme, "dark or light")->check(CLI::IsMember({"dark", "light"}));
     command->add_option("--panel", open.panel, "Dock in front: stages, matrices, parameters, code (below the parameters), accuracy (measured) or depth")
         ->check(CLI::IsMember({"stages", "matrices", "parameters", "code", "accuracy", "depth"}));

@@ -80,6 +80,8 @@ void validatePictureSize(int width, int height, int scale)
 void validate(const ExportOptions& o)
 {
     validatePictureSize(o.width, o.height, o.scale);
+    if (o.textScale < 50 || o.textScale > 400)
+        throw InputError("--text-scale", "must be a whole percent from 50 to 400 (got " + std::to_string(o.textScale) + ")");
     if (o.fps < 1 || o.fps > 120)
         throw InputError("--fps", "must be 1 to 120");
     if (o.digits < 1 || o.digits > 17)
@@ -225,10 +227,11 @@ std::vector<int> parseStages(const std::string& text, int stageCount)
 }
 
 WebPageViews recordWebViews(const std::shared_ptr<const EvaluatedScene>& evaluated, int width, int height, int scale,
-                            Theme theme, bool fixedFraming, const std::function<void(const std::string&)>& step)
+                            Theme theme, bool fixedFraming, const std::function<void(const std::string&)>& step,
+                            double textScale)
 {
     validatePictureSize(width, height, scale);
-    OffscreenPainter offscreen(evaluated, width, height, scale, theme, false);
+    OffscreenPainter offscreen(evaluated, width, height, scale, theme, false, textScale);
     ScenePainter& painter = *offscreen.painter;
     const std::vector<Stage<double>>& stages = evaluated->pipeline.stages;
     const std::optional<ScenePainter::Framing> framing = fixedFramingOf(painter, stages, fixedFraming);
@@ -252,7 +255,9 @@ WebPageViews recordWebViews(const std::shared_ptr<const EvaluatedScene>& evaluat
         const std::string caption = stageCaption(*evaluated, std::size_t(k), StageText::Heading);
         const StageShown shown = showStageAtRest(offscreen, *evaluated, k, caption, framing);
         const VectorFigure vector{&shown, painter.figureView(), caption, theme};
-        views.stages.push_back({painter.webFrame(), shown.ghost, vector.view.frameReach, flatFigure(vector).labels});
+        Figure figure = flatFigure(vector);
+        views.stages.push_back({painter.webFrame(), shown.ghost, vector.view.frameReach, std::move(figure.labels),
+                                std::move(figure.layout)});
     }
     return views;
 }
@@ -306,7 +311,7 @@ std::vector<fs::path> exportStages(const std::shared_ptr<const EvaluatedScene>& 
     try {
         // One offscreen window, one painter, one camera framing every stage.
         OffscreenPainter offscreen(evaluated, options.width, options.height, options.scale, options.theme,
-                                   options.transparent);
+                                   options.transparent, options.textScale / 100.0);
         vtkRenderWindow* window = offscreen.window;
         ScenePainter& painter = *offscreen.painter;
         const std::optional<ScenePainter::Framing> framing = fixedFramingOf(painter, stages, options.fixedFraming);
@@ -343,7 +348,7 @@ std::vector<fs::path> exportStages(const std::shared_ptr<const EvaluatedScene>& 
 
         if (webPage) {
             const WebPageViews views = recordWebViews(evaluated, options.width, options.height, options.scale,
-                                                      options.theme, options.fixedFraming, step);
+                                                      options.theme, options.fixedFraming, step, options.textScale / 100.0);
             step("scene.html");
             writeFileAtomically(temporary / "scene.html", viewpipe::webPage(*evaluated, views, loadWebAssets()));
         }

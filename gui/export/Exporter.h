@@ -26,6 +26,7 @@ struct ExportOptions {
     std::filesystem::path out;
     int width = 1280, height = 720;
     int scale = 1;               // pixels per size unit: 2 for high-DPI slides
+    int textScale = 100;         // percent of the text's size (exportLabelSize)
     std::vector<int> stages;     // empty: all, 0 (the world) to n
     Theme theme = Theme::Light;
     bool transparent = false;
@@ -58,9 +59,10 @@ void exportWebPage(const std::shared_ptr<const EvaluatedScene>& scene, const std
 // What the web page of a scene draws (report/web_page.hpp): every stage at
 // rest as its picture of that size, scale and framing shows it, and the
 // app's transitions frame by frame. Throws InputError for a bad size or
-// scale; `step` hears of each stage.
+// scale; `step` hears of each stage. `textScale` as OffscreenPainter's.
 WebPageViews recordWebViews(const std::shared_ptr<const EvaluatedScene>& scene, int width, int height, int scale,
-                            Theme theme, bool fixedFraming, const std::function<void(const std::string&)>& step);
+                            Theme theme, bool fixedFraming, const std::function<void(const std::string&)>& step,
+                            double textScale = 1);
 
 // The CAD layout of seed 001 for a scene's objects, as one PNG: the top view
 // above the front view, the (right) side view beside it, and the isometric

@@ -19,7 +19,7 @@ namespace {
 
 // The figures' text larger than the pictures' at their size: a page shrinks
 // them to its width, a slide to two thirds of it.
-constexpr double kPaperFontScale = 1.3, kSlideFontScale = 1.7;
+constexpr double kPaperFontScale = 1.0, kSlideFontScale = 1.1;
 
 // Step `step`'s view of `stage` as a PDF figure: its camera, its stage, the
 // stage named only when the step does not hide it.

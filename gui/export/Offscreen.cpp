@@ -1,19 +1,12 @@
 #include "Offscreen.h"
 
-#include <algorithm>
-#include <cmath>
-
 #include "painter/StageTransition.h"
 #include "viewpipe/animation.hpp"
 
 namespace viewpipe::gui {
 
-namespace {
-constexpr int kBaseFontSize = 20; // at 1280x720; other sizes scale it, so that a picture keeps its look
-}
-
 OffscreenPainter::OffscreenPainter(const std::shared_ptr<const EvaluatedScene>& scene, int width, int height, int scale,
-                                   Theme theme, bool transparent, double fontScale)
+                                   Theme theme, bool transparent, double textScale)
 {
     window->SetOffScreenRendering(1);
     window->SetSize(width * scale, height * scale);
@@ -23,9 +16,7 @@ OffscreenPainter::OffscreenPainter(const std::shared_ptr<const EvaluatedScene>& 
     window->AddRenderer(renderer);
     painter = std::make_unique<ScenePainter>(renderer, nullptr);
     painter->setTheme(theme);
-    const double sizeShare = std::sqrt(double(width) * height / (1280.0 * 720.0));
-    const double points = std::clamp(kBaseFontSize * sizeShare, 10.0, 2.0 * kBaseFontSize) * fontScale;
-    painter->setFontSize(int(std::lround(points)) * scale);
+    painter->setFontSize(int(exportLabelSize(width * scale, textScale)), int(exportLabelSize(width * scale, 1)));
     painter->setLineScale(scale);
     painter->setScene(scene);
     if (transparent)

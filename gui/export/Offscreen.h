@@ -14,11 +14,11 @@
 namespace viewpipe::gui {
 
 // An offscreen window and the scene painter in it, sized and styled as the
-// export draws: fonts and lines scale with the picture (fontScale enlarges
-// the text further, for slides).
+// export draws: text sized by the picture's width (exportLabelSize; textScale
+// enlarges it, 1 is 100 %), lines by `scale`.
 struct OffscreenPainter {
     OffscreenPainter(const std::shared_ptr<const EvaluatedScene>& scene, int width, int height, int scale, Theme theme,
-                     bool transparent, double fontScale = 1);
+                     bool transparent, double textScale = 1);
     vtkNew<vtkRenderWindow> window;
     vtkNew<vtkRenderer> renderer;
     std::unique_ptr<ScenePainter> painter;

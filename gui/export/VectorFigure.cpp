@@ -9,6 +9,7 @@
 #include <QPainter>
 #include <QPainterPath>
 #include <QPdfWriter>
+#include <QRegularExpression>
 #include <QSvgGenerator>
 
 #include <algorithm>
@@ -42,68 +43,48 @@ QFont font(double pixels, bool bold)
     return f;
 }
 
-// The legend's text is two thirds of the caption's size, as in the PNG.
-double legendSize(double fontSize)
-{
-    return std::max(8.0, std::floor(fontSize * 2 / 3));
-}
-
-// The effects' note is three quarters of the caption's size, as in the PNG.
-double noteSize(double fontSize)
-{
-    return std::max(8.0, fontSize * 3 / 4);
-}
-
-// The legend's entries and sizes, and where the caption, the legend and the note go: as in the PNG.
+// The legend's entries, and where the caption, the legend and the note go: as in the PNG.
 struct Layout {
     PictureLayout picture;
-    std::vector<const LegendEntry*> entries;
-    double rowHeight = 0, swatchWidth = 0, padding = 0;
+    std::vector<const LegendEntry*> entries; // empty where the legend is left out
 };
 
 Layout layoutOf(const VectorFigure& f)
 {
     Layout layout;
     const FigureView& v = f.view;
-    for (const LegendEntry& entry : f.stage->scene->worldLegend)
-        if (entry.element != Element::Canonical || f.stage->canonicalOpacity > 0)
-            layout.entries.push_back(&entry);
-    // Sized as the PNG's legend (gui/painter/Legend.cpp) sizes itself.
-    double textWidth = 0, textHeight = 0;
-    for (const LegendEntry* entry : layout.entries) {
-        const Vec2<double> size = figureTextSize(entry->text, legendSize(v.fontSize), false);
-        textWidth = std::max(textWidth, size.x());
-        textHeight = std::max(textHeight, size.y());
-    }
-    layout.rowHeight = std::ceil(1.3 * textHeight);
-    layout.swatchWidth = 3 * textHeight;
-    layout.padding = std::max(3, int(v.fontSize) / 4);
-    const Vec2<double> legend = layout.entries.empty()
-                                    ? Vec2<double>::Zero()
-                                    : Vec2<double>(textWidth + layout.swatchWidth + 2 * layout.padding + 2,
-                                                   double(layout.entries.size()) * layout.rowHeight + 2 * layout.padding);
-    layout.picture = layoutPicture(
-        v.width, v.height, v.fontSize, legend, f.caption,
-        [&](const std::string& t) { return figureTextSize(t, v.fontSize, true); }, f.stage->scene->effectsNote,
-        [&](const std::string& t) { return figureTextSize(t, noteSize(v.fontSize), false); });
+    PictureText text;
+    text.fontSize = v.fontSize;
+    text.minFontSize = v.minFontSize;
+    text.caption = f.caption;
+    text.note = f.stage->scene->effectsNote;
+    text.legend = legendShown(f.stage->scene->worldLegend, f.stage->canonicalOpacity > 0);
+    layout.picture = layoutPicture(v.width, v.height, text, [](const std::string& t, double pixels, bool bold) {
+        return figureTextSize(t, pixels, bold);
+    });
+    if (!layout.picture.legend.isEmpty())
+        layout.entries = text.legend;
     return layout;
 }
 
-void drawLegend(QPainter& painter, const Layout& layout, const VectorFigure& f)
+void drawLegend(QPainter& painter, const Figure& figure, const VectorFigure& f)
 {
-    if (layout.entries.empty())
+    if (figure.legend.empty())
         return;
-    const Box2& box = layout.picture.legend;
+    const Box2& box = figure.layout.legend;
+    const LegendLayout& rows = figure.layout.legendRows;
     const QRectF frame(box.min.x(), box.min.y(), box.max.x() - box.min.x(), box.max.y() - box.min.y());
     painter.setPen(QPen(qtColor(elementColor(Element::Frame, f.theme)), 1));
     painter.setBrush(qtColor(backgroundColor(f.theme, false), 0.85));
     painter.drawRect(frame);
-    painter.setFont(font(legendSize(f.view.fontSize), false));
-    const double h = layout.rowHeight;
-    for (std::size_t k = 0; k < layout.entries.size(); ++k) {
-        const LegendEntry& entry = *layout.entries[k];
-        const double top = box.min.y() + layout.padding + double(k) * h;
-        const QRectF swatch(box.min.x() + layout.padding, top + 0.1 * h, layout.swatchWidth, 0.8 * h);
+    painter.setFont(font(rows.textSize, false));
+    const double h = rows.rowHeight;
+    for (std::size_t k = 0; k < figure.legend.size(); ++k) {
+        const LegendEntry& entry = *figure.legend[k];
+        const LegendRow at = legendRow(figure.layout, k);
+        const double top = at.row.min.y(), text = at.textHeight, slotRight = at.textLeft;
+        const QPointF middle(at.swatchCenter.x(), at.swatchCenter.y());
+        const QRectF swatch(middle.x() - 0.75 * text, middle.y() - 0.2 * text, 1.5 * text, 0.4 * text);
         const bool face = entry.swatch == LegendEntry::Swatch::Face;
         const QColor c = qtColor(styledColor(entry.element, face, f.theme), entry.opacity);
         painter.setPen(Qt::NoPen);
@@ -114,23 +95,23 @@ void drawLegend(QPainter& painter, const Layout& layout, const VectorFigure& f)
         };
         switch (entry.swatch) {
         case LegendEntry::Swatch::Line:
-            painter.fillRect(QRectF(swatch.left(), swatch.center().y() - 0.12 * h, swatch.width(), 0.24 * h), c);
+            painter.fillRect(QRectF(swatch.left(), middle.y() - 0.06 * text, swatch.width(), 0.12 * text), c);
             break;
         case LegendEntry::Swatch::Face: painter.fillRect(swatch, c); break;
         case LegendEntry::Swatch::Dot:
             painter.setBrush(c);
-            painter.drawEllipse(swatch.center(), 0.3 * h, 0.3 * h);
+            painter.drawEllipse(middle, 0.2 * text, 0.2 * text);
             break;
         case LegendEntry::Swatch::Bands: stripes(kBandRamp); break;
         case LegendEntry::Swatch::Pixels: stripes(kRasterPalette); break;
         }
         painter.setPen(qtColor(elementColor(Element::Objects, f.theme)));
-        painter.drawText(QRectF(swatch.right() + layout.padding, top, box.max.x() - swatch.right(), h),
+        painter.drawText(QRectF(slotRight, top, box.max.x() - slotRight, h),
                          Qt::AlignLeft | Qt::AlignVCenter, QString::fromStdString(entry.text));
     }
 }
 
-void paint(QPainter& painter, const Figure& figure, const Layout& layout, const VectorFigure& f)
+void paint(QPainter& painter, const Figure& figure, const VectorFigure& f)
 {
     painter.setRenderHint(QPainter::Antialiasing);
     const QRectF page(0, 0, figure.width, figure.height);
@@ -151,7 +132,7 @@ void paint(QPainter& painter, const Figure& figure, const Layout& layout, const 
             painter.drawPolyline(polygon);
         }
     }
-    const QFont labelFont = font(f.view.fontSize, true), minorFont = font(noteSize(f.view.fontSize), false);
+    const QFont labelFont = font(f.view.fontSize, true), minorFont = font(smallTextSize(f.view.fontSize), false);
     for (const PlacedLabel& l : figure.labels) {
         painter.setFont(l.minor ? minorFont : labelFont);
         const QFontMetricsF metrics(painter.font());
@@ -171,7 +152,7 @@ void paint(QPainter& painter, const Figure& figure, const Layout& layout, const 
             return;
         // On the background, as in the PNG: lines behind do not cross the text.
         painter.fillRect(QRectF(box.min.x(), box.min.y(), box.max.x() - box.min.x(), box.max.y() - box.min.y()),
-                         qtColor(backgroundColor(f.theme, false), 0.85));
+                         qtColor(backgroundColor(f.theme, false), 1.0));
         painter.setFont(qfont);
         const QFontMetricsF metrics(qfont);
         // Lines as VTK sets them: the last one's descent at the box's bottom, `line` apart.
@@ -179,10 +160,10 @@ void paint(QPainter& painter, const Figure& figure, const Layout& layout, const 
             painter.drawText(QPointF(box.min.x(), box.max.y() - double(lines.size() - 1 - k) * line - metrics.descent()),
                              QString::fromStdString(lines[k]));
     };
-    const PictureLayout& p = layout.picture;
-    drawLines(p.captionLines, font(f.view.fontSize, true), p.caption, p.captionLine);
-    drawLines(p.noteLines, font(noteSize(f.view.fontSize), false), p.note, p.noteLine);
-    drawLegend(painter, layout, f);
+    const PictureLayout& p = figure.layout;
+    drawLines(p.captionLines, font(p.captionSize, true), p.caption, p.captionLine);
+    drawLines(p.noteLines, font(p.noteSize, false), p.note, p.noteLine);
+    drawLegend(painter, figure, f);
 }
 
 } // namespace
@@ -193,48 +174,55 @@ Figure flatFigure(const VectorFigure& f)
     const Layout layout = layoutOf(f);
     // Measured as the PNG's painter measures them: both pictures place their labels alike.
     const LabelMeasure measure = [&](const Label& label) {
-        return label.minor ? figureTextSize(label.text, noteSize(f.view.fontSize), false)
+        return label.minor ? figureTextSize(label.text, smallTextSize(f.view.fontSize), false)
                            : figureTextSize(label.text, f.view.fontSize, true);
     };
     std::vector<Box2> reserved = {layout.picture.caption, layout.picture.note};
     if (!layout.entries.empty())
         reserved.push_back(layout.picture.legend);
-    return drawFigure(*f.stage, f.view, measure, reserved);
+    Figure figure = drawFigure(*f.stage, f.view, measure, reserved);
+    figure.layout = layout.picture;
+    figure.legend = layout.entries;
+    return figure;
 }
 
 void writeVectorFigure(const VectorFigure& f, const std::string& format, const std::filesystem::path& file)
 {
     ensureGuiApplication();
     const Figure figure = flatFigure(f);
-    const Layout layout = layoutOf(f);
     QBuffer buffer;
     buffer.open(QIODevice::WriteOnly);
+    std::unique_ptr<QPaintDevice> device;
     if (format == "svg") {
-        QSvgGenerator svg;
-        svg.setOutputDevice(&buffer);
-        svg.setSize(QSize(figure.width, figure.height));
-        svg.setViewBox(QRectF(0, 0, figure.width, figure.height));
-        svg.setResolution(72);
-        svg.setTitle(QString::fromStdString(f.caption));
-        QPainter painter;
-        if (!painter.begin(&svg))
-            throw std::runtime_error("cannot draw " + file.string());
-        paint(painter, figure, layout, f);
-        painter.end();
+        auto svg = std::make_unique<QSvgGenerator>();
+        svg->setOutputDevice(&buffer);
+        svg->setSize(QSize(figure.width, figure.height));
+        svg->setViewBox(QRectF(0, 0, figure.width, figure.height));
+        svg->setResolution(72);
+        svg->setTitle(QString::fromStdString(f.caption));
+        device = std::move(svg);
     } else {
-        QPdfWriter pdf(&buffer);
-        pdf.setResolution(72); // one pixel of the figure is one point of the page
-        pdf.setPageSize(QPageSize(QSizeF(figure.width, figure.height), QPageSize::Point));
-        pdf.setPageMargins(QMarginsF(0, 0, 0, 0));
-        pdf.setTitle(QString::fromStdString(f.caption));
-        pdf.setCreator("ViewPipe");
-        QPainter painter;
-        if (!painter.begin(&pdf))
-            throw std::runtime_error("cannot draw " + file.string());
-        paint(painter, figure, layout, f);
-        painter.end();
+        auto pdf = std::make_unique<QPdfWriter>(&buffer);
+        pdf->setResolution(72); // one pixel of the figure is one point of the page
+        pdf->setPageSize(QPageSize(QSizeF(figure.width, figure.height), QPageSize::Point));
+        pdf->setPageMargins(QMarginsF(0, 0, 0, 0));
+        pdf->setTitle(QString::fromStdString(f.caption));
+        pdf->setCreator("ViewPipe");
+        device = std::move(pdf);
     }
-    writeFileAtomically(file, buffer.data().toStdString());
+    QPainter painter;
+    if (!painter.begin(device.get()))
+        throw std::runtime_error("cannot draw " + file.string());
+    paint(painter, figure, f);
+    painter.end();
+    QByteArray bytes = buffer.data();
+    if (format == "svg") {
+        // QSvgGenerator states the size in millimetres at its resolution, and a
+        // browser opened a 1280-pixel figure 1707 pixels wide: in pixels.
+        const QString size = QString(R"(width="%1px" height="%2px")").arg(figure.width).arg(figure.height);
+        bytes = QString::fromUtf8(bytes).replace(QRegularExpression(R"re(width="[0-9.]+mm" height="[0-9.]+mm")re"), size).toUtf8();
+    }
+    writeFileAtomically(file, bytes.toStdString());
 }
 
 } // namespace viewpipe::gui

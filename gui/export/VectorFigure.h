@@ -20,7 +20,8 @@ struct VectorFigure {
     Theme theme = Theme::Light;
 };
 
-// The figure, with caption and legend boxes reserved as the PNG has them.
+// The figure, with its caption, legend and note laid out as the PNG has them
+// (their boxes kept clear of labels).
 Figure flatFigure(const VectorFigure& figure);
 
 // Writes `file` atomically as SVG or PDF (by `format`); throws std::runtime_error when it cannot.

@@ -10,6 +10,7 @@
 #include <vtkProperty2D.h>
 #include <vtkRenderWindow.h>
 #include <vtkRenderer.h>
+#include <vtkTextActor.h>
 #include <vtkTextProperty.h>
 #include <vtkUnsignedCharArray.h>
 
@@ -92,13 +93,14 @@ vtkSmartPointer<vtkLegendBoxActor> newLegend(bool top)
     return legend;
 }
 
-void fillLegend(vtkLegendBoxActor* legend, vtkRenderer* renderer, const std::vector<LegendEntry>& entries,
-                Theme theme, int fontSize, bool canonicalShown, bool top)
+void fillLegend(vtkLegendBoxActor* legend, vtkRenderer* renderer, const std::vector<const LegendEntry*>& shown,
+                Theme theme, double labelSize, bool top)
 {
-    std::vector<const LegendEntry*> shown;
-    for (const LegendEntry& entry : entries)
-        if (entry.element != Element::Canonical || canonicalShown)
-            shown.push_back(&entry);
+    vtkRenderWindow* window = renderer->GetRenderWindow();
+    const int dpi = window ? window->GetDPI() : 72;
+    const LegendLayout rows = legendLayout(shown, labelSize, [dpi](const std::string& t, double pixels, bool bold) {
+        return figureTextSize(t, pixels, bold, dpi);
+    });
     legend->SetNumberOfEntries(int(shown.size()));
     legend->SetVisibility(!shown.empty());
     const double* back = renderer->GetBackground();
@@ -108,13 +110,10 @@ void fillLegend(vtkLegendBoxActor* legend, vtkRenderer* renderer, const std::vec
     vtkTextProperty* text = legend->GetEntryTextProperty();
     useFigureFont(text, false);
     text->SetColor(ink.r, ink.g, ink.b);
-    text->SetFontSize(std::max(8, fontSize * 2 / 3));
+    text->SetFontSize(int(std::lround(rows.textSize)));
     text->Modified(); // new entries take the font and color from it at the next build only if it changed
 
     using Swatch = LegendEntry::Swatch;
-    vtkRenderWindow* window = renderer->GetRenderWindow();
-    const int dpi = window ? window->GetDPI() : 72;
-    int textWidth = 0, textHeight = 0;
     for (std::size_t k = 0; k < shown.size(); ++k) {
         const LegendEntry& entry = *shown[k];
         const Rgb c = blend(styledColor(entry.element, entry.swatch == Swatch::Face, theme), back, entry.opacity);
@@ -129,18 +128,50 @@ void fillLegend(vtkLegendBoxActor* legend, vtkRenderer* renderer, const std::vec
             symbol = stripes({c}, entry.swatch == Swatch::Line ? 0.12 : 0.4);
         legend->SetEntrySymbol(int(k), symbol);
         legend->SetEntryString(int(k), entry.text.c_str());
-        const Vec2<double> size = textSize(text, entry.text, dpi);
-        textWidth = std::max(textWidth, int(size.x()));
-        textHeight = std::max(textHeight, int(size.y()));
     }
     // VTK fits the text to the box: a box made to the text's size keeps the
     // font size asked for. Symbols take kSymbolWidth times the text's height.
-    const int padding = std::max(3, fontSize / 4), margin = std::max(4, fontSize / 2);
-    legend->SetPadding(padding);
-    const double width = textWidth + kSymbolWidth * textHeight + 2 * padding + 2;
-    const double height = double(shown.size()) * std::ceil(1.3 * textHeight) + 2 * padding;
-    legend->GetPosition2Coordinate()->SetValue(width, height);
-    legend->GetPositionCoordinate()->SetValue(-width - margin, top ? -height - 1.6 * fontSize : margin);
+    legend->SetPadding(int(rows.padding));
+    legend->GetPosition2Coordinate()->SetValue(rows.size.x(), rows.size.y());
+    const double margin = std::max(4.0, labelSize / 2);
+    legend->GetPositionCoordinate()->SetValue(-rows.size.x() - margin, top ? -rows.size.y() - 1.6 * labelSize : margin);
+}
+
+FontMeasure viewFontMeasure(vtkRenderer* renderer)
+{
+    vtkRenderWindow* window = renderer->GetRenderWindow();
+    const int dpi = window ? window->GetDPI() : 72;
+    return [dpi](const std::string& t, double pixels, bool bold) { return figureTextSize(t, pixels, bold, dpi); };
+}
+
+void setCaptionText(vtkTextActor* caption, const std::vector<std::string>& lines, double pixels)
+{
+    std::string joined;
+    for (const std::string& line : lines)
+        joined += (joined.empty() ? "" : "\n") + line;
+    if (joined != (caption->GetInput() ? caption->GetInput() : ""))
+        caption->SetInput(joined.c_str());
+    if (caption->GetTextProperty()->GetFontSize() != int(std::lround(pixels)))
+        caption->GetTextProperty()->SetFontSize(int(std::lround(pixels)));
+}
+
+void placeLegend(vtkLegendBoxActor* legend, vtkRenderer* renderer, const PictureLayout& layout,
+                 const std::vector<const LegendEntry*>& entries, Theme theme, double& filledSize)
+{
+    if (layout.legend.isEmpty()) {
+        legend->SetVisibility(false);
+        return;
+    }
+    if (filledSize != layout.captionSize) {
+        fillLegend(legend, renderer, entries, theme, layout.captionSize, true);
+        filledSize = layout.captionSize;
+    }
+    legend->SetVisibility(true);
+    // The legend's lower left corner, from the view's top right corner less 4 % (y up).
+    const int* size = renderer->GetSize();
+    const Vec2<double> corner(layout.legend.min.x() - size[0], 0.04 * size[1] - layout.legend.max.y());
+    if ((corner - Vec2<double>(legend->GetPositionCoordinate()->GetValue())).norm() > 0.5)
+        legend->GetPositionCoordinate()->SetValue(corner.x(), corner.y());
 }
 
 } // namespace viewpipe::gui

@@ -55,13 +55,13 @@ struct ProjectedView::Picture {
 };
 
 ProjectedView::ProjectedView(vtkRenderer* renderer)
-    : renderer_(renderer), caption_(vtkSmartPointer<vtkTextActor>::New()), legend_(newLegend(false)),
+    : renderer_(renderer), caption_(vtkSmartPointer<vtkTextActor>::New()), legend_(newLegend(true)),
       layout_(vtkSmartPointer<vtkCallbackCommand>::New())
 {
     caption_->GetPositionCoordinate()->SetCoordinateSystemToNormalizedViewport();
     caption_->SetPosition(0.02, 0.96);
     caption_->GetTextProperty()->SetVerticalJustificationToTop();
-    caption_->GetTextProperty()->SetBold(true);
+    useFigureFont(caption_->GetTextProperty(), true);
     caption_->SetPickable(false);
     vtkNew<vtkCoordinate> viewCoordinates;
     viewCoordinates->SetCoordinateSystemToView();
@@ -88,17 +88,22 @@ ProjectedView::ProjectedView(vtkRenderer* renderer)
         const Picture* c = static_cast<ProjectedView*>(view)->picture_.get();
         if (!c)
             return;
-        // The window at the picture's shape on screen, whole, whatever the viewport's shape.
-        const double stretch = c->aspect / renderer->GetTiledAspectRatio();
-        Mat4<double> letterbox = Mat4<double>::Identity();
-        if (stretch > 1)
-            letterbox(1, 1) = 1 / stretch;
-        else
-            letterbox(0, 0) = stretch;
-        letterbox(0, 0) *= 0.92;
-        letterbox(1, 1) *= 0.92;
+        // The window at the picture's shape on screen, whole, in the room the caption and legend leave.
+        const Box2 room = static_cast<ProjectedView*>(view)->layOutText();
+        const int* size = renderer->GetSize();
+        if (room.isEmpty())
+            return; // no viewport yet
+        const Vec2<double> extent = room.max - room.min;
+        const double width = 0.92 * std::min(extent.x(), extent.y() * c->aspect), height = width / c->aspect;
+        Mat4<double> letterbox = Mat4<double>::Identity(); // clip coordinates: x and y scaled, then moved by w
+        letterbox(0, 0) = width / std::max(1, size[0]);
+        letterbox(1, 1) = height / std::max(1, size[1]);
+        letterbox(0, 3) = (room.min.x() + room.max.x()) / std::max(1, size[0]) - 1;
+        letterbox(1, 3) = 1 - (room.min.y() + room.max.y()) / std::max(1, size[1]);
         renderer->GetActiveCamera()->SetExplicitProjectionTransformMatrix(toVtk(letterbox * c->clip));
-        auto place = [&](const Vec2<double>& q) { return Vec2<double>(q.x() * letterbox(0, 0), q.y() * letterbox(1, 1)); };
+        auto place = [&](const Vec2<double>& q) {
+            return Vec2<double>(q.x() * letterbox(0, 0) + letterbox(0, 3), q.y() * letterbox(1, 1) + letterbox(1, 3));
+        };
         for (const auto& [actor, segments] : c->lines) {
             std::vector<Segment2> placed;
             for (const Segment2& s : segments)
@@ -191,9 +196,10 @@ void ProjectedView::setScene(const EvaluatedScene& scene,
         clip, pictureAspect(scene), {{vanishing_, scene.vanishingLines}, {zFightingRing_, scene.zFightingRing}}, pixels, pixelSize, rasterGrid_});
     layout_->Execute(renderer_, vtkCommand::StartEvent, nullptr); // the first frame needs the matrix too
     entries_ = scene.projectedLegend;
+    legendFontSize_ = 0;
 }
 
-void ProjectedView::applyStyle(Theme theme, int fontSize)
+void ProjectedView::applyStyle(Theme theme, int fontSize, int minFontSize)
 {
     const Rgb back = backgroundColor(theme, true);
     renderer_->SetBackground(back.r, back.g, back.b);
@@ -202,26 +208,43 @@ void ProjectedView::applyStyle(Theme theme, int fontSize)
         a.actor->GetProperty()->SetColor(c.r, c.g, c.b);
         a.actor->GetProperty()->SetLineWidth(a.element == Element::ZFighting ? 3 : 2);
     }
+    theme_ = theme;
+    fontSize_ = fontSize;
+    minFontSize_ = minFontSize;
+    legendFontSize_ = 0; // filled anew in the theme's colors
     const Rgb ink = elementColor(Element::Objects, theme);
     caption_->GetTextProperty()->SetColor(ink.r, ink.g, ink.b);
-    caption_->GetTextProperty()->SetFontSize(fontSize);
     const Rgb vanishing = elementColor(Element::Vanishing, theme), fights = elementColor(Element::ZFighting, theme);
     vanishing_->GetProperty()->SetColor(vanishing.r, vanishing.g, vanishing.b);
     vanishing_->GetProperty()->SetOpacity(0.85);
     vanishing_->GetProperty()->SetLineWidth(1.5);
     zFightingRing_->GetProperty()->SetColor(fights.r, fights.g, fights.b);
     zFightingRing_->GetProperty()->SetLineWidth(2.5);
-    fillLegend(legend_, renderer_, entries_, theme, fontSize, false, false);
 }
 
 void ProjectedView::setCaption(const std::string& text)
 {
-    caption_->SetInput(text.c_str());
+    captionText_ = text;
 }
 
 void ProjectedView::setTextVisible(bool visible)
 {
+    textVisible_ = visible;
     caption_->SetVisibility(visible);
+}
+
+Box2 ProjectedView::layOutText()
+{
+    const int* size = renderer_->GetSize();
+    PictureText text;
+    text.fontSize = fontSize_;
+    text.minFontSize = std::min(fontSize_, minFontSize_);
+    text.caption = captionText_;
+    text.legend = legendShown(entries_, false);
+    const PictureLayout& layout = layoutCache_.layout(size[0], size[1], text, viewFontMeasure(renderer_));
+    setCaptionText(caption_, layout.captionLines, layout.captionSize);
+    placeLegend(legend_, renderer_, layout, text.legend, theme_, legendFontSize_);
+    return textVisible_ && !layout.scene.isEmpty() ? layout.scene : Box2{Vec2<double>::Zero(), Vec2<double>(size[0], size[1])};
 }
 
 } // namespace viewpipe::gui

@@ -12,6 +12,7 @@
 #include <string>
 #include <vector>
 
+#include "viewpipe/report/figure.hpp"
 #include "viewpipe/report/style.hpp"
 
 class vtkActor;
@@ -36,7 +37,8 @@ public:
     // `depthColored[k]`: object k's front faces with their depth levels, or null.
     void setScene(const EvaluatedScene& scene, const std::function<vtkSmartPointer<vtkPolyData>(const PolygonMesh&)>& dataOf,
                   const std::vector<vtkSmartPointer<vtkPolyData>>& depthColored);
-    void applyStyle(Theme theme, int fontSize);
+    // Text `fontSize` pixels high, the caption and legend shrinking to `minFontSize` where room runs out.
+    void applyStyle(Theme theme, int fontSize, int minFontSize);
     void setCaption(const std::string& text);
     void setTextVisible(bool visible);
 
@@ -48,6 +50,8 @@ private:
     };
     struct Picture; // what the renderer's start callback lays out for the viewport's shape
     void clear();
+    // The caption and legend laid out (layoutPicture) for the viewport; the room they leave the picture, in pixels.
+    Box2 layOutText();
 
     vtkRenderer* renderer_;
     vtkSmartPointer<vtkTextActor> caption_;
@@ -59,6 +63,12 @@ private:
     std::unique_ptr<Picture> picture_;
     std::vector<StyledActor> actors_;
     std::vector<LegendEntry> entries_;
+    Theme theme_ = Theme::Dark;
+    int fontSize_ = 18, minFontSize_ = 18;
+    double legendFontSize_ = 0; // the size the legend was last filled for; 0: to be filled
+    PictureLayoutCache layoutCache_;
+    std::string captionText_;
+    bool textVisible_ = true;
 };
 
 } // namespace viewpipe::gui

@@ -146,6 +146,8 @@ ScenePainter::ScenePainter(vtkRenderer* world, vtkRenderer* projected)
     world_->AddActor2D(legend_);
     world_->AddActor2D(markers_);
     world_->AddActor2D(leaders_);
+    leftOut_ = newLabel(leftOutText_);
+    leftOut_.actor->SetVisibility(false);
     // Props' bounds mean nothing under a projective matrix: no culling by them,
     // and the clipping range comes from the framing, before each frame.
     world_->GetCullers()->RemoveAllItems();
@@ -199,7 +201,6 @@ ScenePainter::Label ScenePainter::newLabel(const viewpipe::Label& text)
     label.actor->SetInput(text.text.c_str());
     label.actor->SetPickable(false);
     label.actor->GetPositionCoordinate()->SetCoordinateSystemToViewport();
-    useFigureFont(label.actor->GetTextProperty(), true);
     label.actor->GetTextProperty()->SetJustificationToLeft();
     label.actor->GetTextProperty()->SetVerticalJustificationToBottom();
     styleLabel(label);
@@ -217,8 +218,8 @@ void ScenePainter::styleLabel(Label& label) const
     const Rgb c = elementColor(label.label->element, theme_);
     vtkTextProperty* text = label.actor->GetTextProperty();
     text->SetColor(c.r, c.g, c.b);
-    text->SetFontSize(label.label->minor ? std::max(8, fontSize_ * 3 / 4) : fontSize_);
-    text->SetBold(!label.label->minor);
+    text->SetFontSize(label.label->minor ? int(smallTextSize(fontSize_)) : fontSize_);
+    useFigureFont(text, !label.label->minor); // the font file too: tick numbers were drawn bold, measured regular
 }
 
 void ScenePainter::setScene(std::shared_ptr<const EvaluatedScene> scene)
@@ -268,8 +269,10 @@ void ScenePainter::show(const Mat4<double>& cumulative, double canonicalOpacity)
 {
     const bool canonicalAppears = (canonicalOpacity > 0) != (canonicalOpacity_ > 0);
     canonicalOpacity_ = canonicalOpacity;
-    if (canonicalAppears && scene_) // the legend names it while it shows
-        fillLegend(legend_, world_, scene_->worldLegend, theme_, fontSize_, canonicalOpacity_ > 0, true);
+    if (canonicalAppears) { // the legend names it while it shows
+        legendFontSize_ = 0;
+        fitCaptions();
+    }
     shownMatrix_ = cumulative;
     cutNear(cumulative);
     const vtkSmartPointer<vtkMatrix4x4> matrix = toVtk(cumulative);
@@ -328,29 +331,24 @@ void ScenePainter::drawMarkers(const std::vector<FigureShape>& shapes)
 
 void ScenePainter::fitCaptions()
 {
-    vtkRenderWindow* window = world_->GetRenderWindow();
-    const int dpi = window ? window->GetDPI() : 72;
     const int* size = world_->GetSize();
-    const double* legendSize = legend_->GetPosition2Coordinate()->GetValue();
-    vtkTextProperty* captionFont = worldCaption_->GetTextProperty();
-    vtkTextProperty* noteFont = effectsCaption_->GetTextProperty();
-    const PictureLayout layout = layoutPicture(
-        size[0], size[1], fontSize_,
-        legend_->GetVisibility() ? Vec2<double>(legendSize[0], legendSize[1]) : Vec2<double>::Zero(),
-        worldCaptionText_, [&](const std::string& t) { return textSize(captionFont, t, dpi); },
-        effectsCaption_->GetVisibility() ? effectsNote_ : "", [&](const std::string& t) { return textSize(noteFont, t, dpi); });
-    for (const auto& [caption, lines] : {std::pair{worldCaption_.Get(), &layout.captionLines},
-                                         std::pair{effectsCaption_.Get(), &layout.noteLines}}) {
-        std::string joined;
-        for (const std::string& line : *lines)
-            joined += (joined.empty() ? "" : "\n") + line;
-        if (joined != (caption->GetInput() ? caption->GetInput() : ""))
-            caption->SetInput(joined.c_str());
+    PictureText text;
+    text.fontSize = fontSize_;
+    text.minFontSize = minFontSize_ > 0 ? minFontSize_ : fontSize_;
+    text.caption = worldCaptionText_;
+    text.note = effectsCaption_->GetVisibility() ? effectsNote_ : "";
+    if (scene_)
+        text.legend = legendShown(scene_->worldLegend, canonicalOpacity_ > 0);
+    const PictureLayout& layout = layoutCache_.layout(size[0], size[1], text, viewFontMeasure(world_));
+    setCaptionText(worldCaption_, layout.captionLines, layout.captionSize);
+    setCaptionText(effectsCaption_, layout.noteLines, layout.noteSize);
+    placeLegend(legend_, world_, layout, text.legend, theme_, legendFontSize_);
+    const Box2 area = textVisible_ ? layout.scene : Box2{Vec2<double>::Zero(), Vec2<double>(size[0], size[1])};
+    if ((area.min - sceneArea_.min).norm() + (area.max - sceneArea_.max).norm() > 0.5) {
+        sceneArea_ = area;
+        if (framed_.radius > 0)
+            frameOn(framed_); // the same framing, in the area the text leaves free
     }
-    // The legend's lower left corner, from the view's top right corner less 4 % (y up).
-    const Vec2<double> corner(layout.legend.min.x() - size[0], 0.04 * size[1] - layout.legend.max.y());
-    if (legend_->GetVisibility() && (corner - Vec2<double>(legend_->GetPositionCoordinate()->GetValue())).norm() > 0.5)
-        legend_->GetPositionCoordinate()->SetValue(corner.x(), corner.y());
 }
 
 FigureView ScenePainter::figureView() const
@@ -362,6 +360,7 @@ FigureView ScenePainter::figureView() const
     view.height = world_->GetSize()[1];
     view.frameReach = framed_.center.norm() + 1.5 * framed_.radius;
     view.fontSize = fontSize_;
+    view.minFontSize = minFontSize_ > 0 ? minFontSize_ : fontSize_;
     view.lineScale = lineScale_;
     return view;
 }
@@ -416,6 +415,7 @@ void ScenePainter::placeLabels()
         label.actor->SetVisibility(false);
     for (Label& label : frameLabels_)
         label.actor->SetVisibility(false);
+    leftOut_.actor->SetVisibility(false);
     if (scene_) {
         std::vector<Marker> markers = scene_->markers;
         if (tracedMarker_)
@@ -448,13 +448,19 @@ void ScenePainter::placeLabelsOf(const StageShown& stage, const FigureView& view
     font->SetFontSize(fontSize_);
     vtkNew<vtkTextProperty> minorFont; // as tick numbers
     useFigureFont(minorFont, false);
-    minorFont->SetFontSize(std::max(8, fontSize_ * 3 / 4));
+    minorFont->SetFontSize(int(smallTextSize(fontSize_)));
     const LabelMeasure measure = [&](const viewpipe::Label& label) {
         return textSize(label.minor ? minorFont.Get() : font.Get(), label.text, dpi);
     };
     // Viewport pixels are y up, the placement's y down.
     auto up = [&](const Vec2<double>& p) { return Vec2<double>(p.x(), view.height - p.y()); };
-    const auto placed = placeSceneLabels(stage, view, texts, markers, measure, captionBoxes());
+    const SceneLabels scene = placeSceneLabels(stage, view, texts, markers, measure, captionBoxes());
+    if (scene.leftOut) {
+        leftOut_.actor->SetInput(scene.leftOut->text.c_str());
+        leftOut_.actor->SetPosition(scene.leftOut->box.min.x(), view.height - scene.leftOut->box.max.y());
+        leftOut_.actor->SetVisibility(true);
+    }
+    const auto& placed = scene.placed;
     for (std::size_t k = 0; k < all.size(); ++k) {
         if (!placed[k])
             continue;
@@ -523,6 +529,14 @@ void ScenePainter::frameOn(const Framing& framing)
     const Vec3<double> position = focal - direction * distance;
     camera->SetFocalPoint(focal.data());
     camera->SetPosition(position.data());
+    // The focal point at the scene area's center (VTK's window center is the view's center's opposite).
+    const int* size = world_->GetSize();
+    if (size[0] > 0 && size[1] > 0 && !sceneArea_.isEmpty()) {
+        const Vec2<double> center = (sceneArea_.min + sceneArea_.max) / 2;
+        camera->SetWindowCenter(1 - 2 * center.x() / size[0], 2 * center.y() / size[1] - 1);
+    } else {
+        camera->SetWindowCenter(0, 0);
+    }
     framed_ = framing;
     // The fixed axes reach across everything in view, with their ticks and labels.
     const FrameMarks marks = frameMarks(framing.center.norm() + 1.5 * framing.radius);
@@ -561,10 +575,17 @@ void ScenePainter::fitClippingRange()
 
 double ScenePainter::fitDistance(double radius) const
 {
-    // Fit the bounding sphere in the narrower of the two view angles; it
+    // Fit the bounding sphere in the narrower of the two view angles of the
+    // scene area (where the picture's text leaves room); the sphere
     // overstates what most directions see, so come a little closer.
     const double halfVertical = world_->GetActiveCamera()->GetViewAngle() * M_PI / 360;
-    const double half = std::min(halfVertical, std::atan(std::tan(halfVertical) * world_->GetTiledAspectRatio()));
+    const int* size = world_->GetSize();
+    if (sceneArea_.isEmpty() || size[1] <= 0) {
+        const double half = std::min(halfVertical, std::atan(std::tan(halfVertical) * world_->GetTiledAspectRatio()));
+        return 0.95 * radius / std::sin(half);
+    }
+    const Vec2<double> extent = sceneArea_.max - sceneArea_.min;
+    const double half = std::atan(std::tan(halfVertical) * extent.minCoeff() / size[1]);
     return 0.95 * radius / std::sin(half);
 }
 
@@ -707,9 +728,10 @@ void ScenePainter::setLineScale(double scale)
     applyStyle();
 }
 
-void ScenePainter::setFontSize(int points)
+void ScenePainter::setFontSize(int points, int minPoints)
 {
     fontSize_ = points;
+    minFontSize_ = minPoints;
     applyStyle();
 }
 
@@ -736,23 +758,24 @@ void ScenePainter::applyStyle()
         styleLabel(label);
     for (Label& label : frameLabels_)
         styleLabel(label);
+    styleLabel(leftOut_);
     const Rgb ink = elementColor(Element::Objects, theme_);
     worldCaption_->GetTextProperty()->SetColor(ink.r, ink.g, ink.b);
     worldCaption_->GetTextProperty()->SetFontSize(fontSize_);
     effectsCaption_->GetTextProperty()->SetColor(ink.r, ink.g, ink.b);
-    effectsCaption_->GetTextProperty()->SetFontSize(std::max(8, fontSize_ * 3 / 4));
+    effectsCaption_->GetTextProperty()->SetFontSize(int(smallTextSize(fontSize_)));
     for (vtkTextActor* caption : {worldCaption_.Get(), effectsCaption_.Get()}) { // lines behind do not cross them
         caption->GetTextProperty()->SetBackgroundColor(back.r, back.g, back.b);
-        caption->GetTextProperty()->SetBackgroundOpacity(0.85);
+        caption->GetTextProperty()->SetBackgroundOpacity(1.0);
     }
     effectsCaption_->SetVisibility(textVisible_ && scene_ && !scene_->effectsNote.empty());
     const Rgb frame = elementColor(Element::Frame, theme_);
     frameAxes_->GetProperty()->SetColor(frame.r, frame.g, frame.b);
     frameAxes_->GetProperty()->SetLineWidth(1.5 * lineScale_);
-    fillLegend(legend_, world_, scene_ ? scene_->worldLegend : std::vector<LegendEntry>{}, theme_, fontSize_,
-               canonicalOpacity_ > 0, true);
+    legendFontSize_ = 0; // filled anew in the theme's colors
+    fitCaptions();
     if (projected_)
-        projected_->applyStyle(theme_, fontSize_);
+        projected_->applyStyle(theme_, fontSize_, minFontSize_ > 0 ? minFontSize_ : fontSize_);
 }
 
 } // namespace viewpipe::gui

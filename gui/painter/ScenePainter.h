@@ -67,7 +67,9 @@ public:
     void markTraced(const std::optional<Vec3<double>>& point);
 
     void setTheme(Theme theme);
-    void setFontSize(int points);
+    // Labels and captions `points` pixels high; where room runs out, the
+    // caption and legend may shrink to `minPoints` (0: they never do).
+    void setFontSize(int points, int minPoints = 0);
     // Line widths are multiplied by this (2 for a picture at twice the pixels).
     void setLineScale(double scale);
     Theme theme() const { return theme_; }
@@ -164,11 +166,16 @@ private:
     // The frame axes' names and tick numbers, which change with the framing.
     std::vector<viewpipe::Label> frameLabelTexts_;
     std::vector<Label> frameLabels_;
+    // "left out for room: ...", set as a tick number (placeSceneLabels).
+    viewpipe::Label leftOutText_{Element::Frame, "", Vec3<double>::Zero(), true, true};
+    Label leftOut_;
     // The traced vertex's marker and label (not part of the scene).
     std::optional<Marker> tracedMarker_;
     std::unique_ptr<viewpipe::Label> tracedLabel_;
     Theme theme_ = Theme::Dark;
     int fontSize_ = 18;
+    int minFontSize_ = 0; // 0: as fontSize_
+    double legendFontSize_ = 0; // the label size the legend was last filled for; 0: to be filled
     double lineScale_ = 1;
     double canonicalOpacity_ = 0;
     bool textVisible_ = true;
@@ -176,6 +183,9 @@ private:
     double userZoom_ = 1;
     Vec3<double> userPan_ = Vec3<double>::Zero();
     Framing framed_; // the last framing
+    // Where frameOn fits the stage (layoutPicture's scene area), in pixels, y down; empty: the whole view.
+    Box2 sceneArea_;
+    PictureLayoutCache layoutCache_;
     Mat4<double> shownMatrix_ = Mat4<double>::Identity();
 };
 

@@ -105,12 +105,12 @@ Vec2<double> textSize(vtkTextProperty* font, const std::string& text, int dpi)
     return Vec2<double>(box[1] - box[0] + 1, box[3] - box[2] + 1);
 }
 
-Vec2<double> figureTextSize(const std::string& text, double fontSize, bool bold)
+Vec2<double> figureTextSize(const std::string& text, double fontSize, bool bold, int dpi)
 {
     vtkNew<vtkTextProperty> font;
     useFigureFont(font, bold);
     font->SetFontSize(int(std::lround(fontSize)));
-    return textSize(font, text, 72);
+    return textSize(font, text, dpi);
 }
 
 void useFigureFont(vtkTextProperty* text, bool bold)
@@ -119,6 +119,7 @@ void useFigureFont(vtkTextProperty* text, bool bold)
                             : "/usr/share/fonts/truetype/dejavu/DejaVuSans.ttf";
     static const bool present = std::ifstream(file).good();
     text->SetBold(bold);
+    text->SetLineSpacing(1.25); // lines of a caption apart: at VTK's 1.1 the descenders touched the next line
     if (present) {
         text->SetFontFamily(VTK_FONT_FILE);
         text->SetFontFile(file);

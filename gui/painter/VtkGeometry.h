@@ -31,6 +31,6 @@ void useFigureFont(vtkTextProperty* text, bool bold);
 // The pixels a text takes in a font at a resolution: width, height.
 Vec2<double> textSize(vtkTextProperty* font, const std::string& text, int dpi);
 // The same for the pictures' font at a size, at 72 dots per inch: what every figure measures its texts with.
-Vec2<double> figureTextSize(const std::string& text, double fontSize, bool bold);
+Vec2<double> figureTextSize(const std::string& text, double fontSize, bool bold, int dpi = 72);
 
 } // namespace viewpipe::gui

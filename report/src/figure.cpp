@@ -1,6 +1,7 @@
 #include "viewpipe/report/figure.hpp"
 
 #include "viewpipe/format.hpp"
+#include "viewpipe/report/style.hpp"
 
 #include <algorithm>
 #include <array>
@@ -205,38 +206,131 @@ FrameMarks frameMarks(double reach)
     return marks;
 }
 
-PictureLayout layoutPicture(int width, int height, double fontSize, const Vec2<double>& legendSize,
-                            const std::string& caption, const TextMeasure& captionMeasure, const std::string& note,
-                            const TextMeasure& noteMeasure)
+std::vector<const LegendEntry*> legendShown(const std::vector<LegendEntry>& entries, bool canonicalShown)
+{
+    std::vector<const LegendEntry*> shown;
+    for (const LegendEntry& entry : entries)
+        if (entry.element != Element::Canonical || canonicalShown)
+            shown.push_back(&entry);
+    return shown;
+}
+
+LegendLayout legendLayout(const std::vector<const LegendEntry*>& entries, double labelSize, const FontMeasure& measure)
+{
+    LegendLayout rows;
+    rows.textSize = smallTextSize(labelSize);
+    double textWidth = 0, textHeight = 0;
+    for (const LegendEntry* entry : entries) {
+        const Vec2<double> size = measure(entry->text, rows.textSize, false);
+        textWidth = std::max(textWidth, size.x());
+        textHeight = std::max(textHeight, size.y());
+    }
+    rows.rowHeight = std::ceil(1.3 * textHeight);
+    rows.swatchWidth = 3 * textHeight;
+    rows.padding = std::max(3.0, std::floor(labelSize / 4));
+    if (!entries.empty())
+        rows.size = Vec2<double>(textWidth + rows.swatchWidth + 2 * rows.padding + 2,
+                                 double(entries.size()) * rows.rowHeight + 2 * rows.padding);
+    return rows;
+}
+
+PictureLayout layoutPicture(int width, int height, const PictureText& text, const FontMeasure& measure)
 {
     PictureLayout layout;
-    const double left = 0.02 * width, margin = std::max(4.0, fontSize / 2);
-    const bool legend = legendSize.x() > 0 && legendSize.y() > 0;
-    const double legendLeft = width - margin - legendSize.x();
-    bool beside = !legend || legendLeft - margin - left >= 0.5 * width;
-    auto place = [&](const std::string& text, const TextMeasure& measure, double room, double& line, bool fromBottom) {
-        std::vector<std::string> lines = text.empty() ? std::vector<std::string>{} : wrapLines(text, room, measure);
+    const double left = 0.02 * width, margin = std::max(4.0, text.fontSize / 2);
+    auto place = [&](const std::string& t, double size, bool bold, double room, double& line, bool fromBottom) {
+        const TextMeasure at = [&](const std::string& s) { return measure(s, size, bold); };
+        std::vector<std::string> lines = t.empty() ? std::vector<std::string>{} : wrapLines(t, room, at);
         std::string joined;
         for (const std::string& l : lines)
             joined += (joined.empty() ? "" : "\n") + l;
-        const Vec2<double> size = lines.empty() ? Vec2<double>::Zero() : measure(joined); // as drawn, all lines
-        const double wide = size.x(), high = size.y();
-        line = lines.size() > 1 ? (high - measure("Ag").y()) / double(lines.size() - 1) : 0;
-        const double top = fromBottom ? 0.98 * height - high : 0.04 * height;
-        return std::pair{lines, Box2{Vec2<double>(left, top), Vec2<double>(left + wide, top + high)}};
+        const Vec2<double> extent = lines.empty() ? Vec2<double>::Zero() : at(joined); // as drawn, all lines
+        line = lines.size() > 1 ? (extent.y() - at("Ag").y()) / double(lines.size() - 1) : 0;
+        const double top = fromBottom ? 0.98 * height - extent.y() : 0.04 * height;
+        return std::pair{lines, Box2{Vec2<double>(left, top), Vec2<double>(left + extent.x(), top + extent.y())}};
     };
-    std::tie(layout.captionLines, layout.caption) =
-        place(caption, captionMeasure, beside && legend ? legendLeft - margin - left : 0.96 * width, layout.captionLine, false);
-    if (beside && legend && layout.captionLines.size() > 2) { // a narrow column: above the legend, the width's
-        std::tie(layout.captionLines, layout.caption) = place(caption, captionMeasure, 0.96 * width, layout.captionLine, false);
-        beside = false;
-    }
-    std::tie(layout.noteLines, layout.note) = place(note, noteMeasure, 0.96 * width, layout.noteLine, true);
-    if (legend) {
-        const double top = beside ? 0.04 * height + 1.6 * fontSize : layout.caption.max.y() + 0.6 * fontSize;
-        layout.legend = {Vec2<double>(legendLeft, top), Vec2<double>(width - margin, top + legendSize.y())};
-    }
+    double bottom = height; // above the note
+
+    // The stage's room: the larger of the areas left of and below the legend, between the caption and the note.
+    auto sceneArea = [&](const PictureLayout& l) {
+        const Box2 full{Vec2<double>(0, l.caption.max.y() + margin), Vec2<double>(width, bottom)};
+        if (l.legend.isEmpty())
+            return full;
+        const Box2 beside{full.min, Vec2<double>(l.legend.min.x() - margin, bottom)};
+        const Box2 below{Vec2<double>(0, std::max(full.min.y(), l.legend.max.y() + margin)), full.max};
+        auto area = [](const Box2& b) { return b.isEmpty() ? 0.0 : (b.max.x() - b.min.x()) * (b.max.y() - b.min.y()); };
+        return area(beside) >= area(below) ? beside : below;
+    };
+    auto roomy = [&](const Box2& scene) {
+        return scene.max.x() - scene.min.x() >= 0.4 * width && scene.max.y() - scene.min.y() >= 0.4 * height;
+    };
+    std::vector<double> sizes; // largest first
+    for (double size = text.fontSize; size > text.minFontSize && size >= 1 && sizes.size() < 30; size = std::floor(0.9 * size))
+        sizes.push_back(size);
+    sizes.push_back(std::max(1.0, std::min(text.fontSize, text.minFontSize)));
+    // The largest size at which the caption takes at most 30 % of the height and the legend fits with room
+    // left for the stage; at the smallest, the caption as it falls. Where the legend fits at no size, none.
+    auto attempt = [&](bool withLegend) {
+        for (std::size_t k = 0; k < sizes.size(); ++k) {
+            const double size = sizes[k];
+            layout.captionSize = size;
+            layout.noteSize = smallTextSize(size); // the note no larger than the caption's lines
+            std::tie(layout.noteLines, layout.note) = place(text.note, layout.noteSize, false, 0.96 * width, layout.noteLine, true);
+            bottom = (layout.noteLines.empty() ? height : layout.note.min.y()) - margin;
+            const LegendLayout rows = legendLayout(withLegend ? text.legend : std::vector<const LegendEntry*>{}, size, measure);
+            const double legendLeft = width - margin - rows.size.x();
+            bool beside = !withLegend || legendLeft - margin - left >= 0.5 * width;
+            std::tie(layout.captionLines, layout.caption) = place(
+                text.caption, size, true, beside && withLegend ? legendLeft - margin - left : 0.96 * width, layout.captionLine, false);
+            if (beside && withLegend && layout.captionLines.size() > 2) { // a narrow column: above the legend, the width's
+                std::tie(layout.captionLines, layout.caption) = place(text.caption, size, true, 0.96 * width, layout.captionLine, false);
+                beside = false;
+            }
+            layout.legendRows = rows;
+            layout.legend = {};
+            if (withLegend) {
+                const double legendTop = beside ? 0.04 * height + 1.6 * size : layout.caption.max.y() + 0.6 * size;
+                layout.legend = {Vec2<double>(legendLeft, legendTop), Vec2<double>(width - margin, legendTop + rows.size.y())};
+            }
+            layout.scene = sceneArea(layout);
+            const bool captionFits = layout.caption.max.y() - layout.caption.min.y() <= 0.3 * height;
+            const bool legendFits = !withLegend || (layout.legend.max.y() <= bottom && rows.size.x() <= 0.96 * width && roomy(layout.scene));
+            if (legendFits && (captionFits || k + 1 == sizes.size()))
+                return true;
+        }
+        return false;
+    };
+    if (!attempt(!text.legend.empty()))
+        attempt(false);
+    if (!(layout.scene.max.x() - layout.scene.min.x() > 0.2 * width && layout.scene.max.y() - layout.scene.min.y() > 0.2 * height))
+        layout.scene = {Vec2<double>::Zero(), Vec2<double>(width, height)}; // no room apart: the whole picture
     return layout;
+}
+
+const PictureLayout& PictureLayoutCache::layout(int width, int height, const PictureText& text, const FontMeasure& measure)
+{
+    std::vector<std::string> legend; // the entries' texts: a new scene's entries may reuse an old one's addresses
+    for (const LegendEntry* entry : text.legend)
+        legend.push_back(entry->text);
+    auto key = std::make_tuple(width, height, text.fontSize, text.minFontSize, text.caption, text.note, std::move(legend));
+    if (key_ != key) {
+        layout_ = layoutPicture(width, height, text, measure);
+        key_ = std::move(key);
+    }
+    return layout_;
+}
+
+LegendRow legendRow(const PictureLayout& layout, std::size_t k)
+{
+    const LegendLayout& rows = layout.legendRows;
+    LegendRow row;
+    const double top = layout.legend.min.y() + rows.padding + double(k) * rows.rowHeight;
+    row.row = {Vec2<double>(layout.legend.min.x(), top), Vec2<double>(layout.legend.max.x(), top + rows.rowHeight)};
+    row.textHeight = rows.swatchWidth / 3;
+    row.swatchCenter = Vec2<double>(layout.legend.min.x() + rows.padding + rows.swatchWidth / 2,
+                                    top + rows.rowHeight / 2 + 0.25 * row.textHeight);
+    row.textLeft = layout.legend.min.x() + rows.padding + rows.swatchWidth;
+    return row;
 }
 
 bool Box2::overlaps(const Box2& other) const
@@ -323,6 +417,8 @@ std::vector<std::optional<PlacedLabel>> placeLabels(const std::vector<LabelReque
     const std::array<Vec2d, 8> directions = {{{1, -1}, {1, 0}, {1, 1}, {0, -1}, {-1, -1}, {-1, 0}, {-1, 1}, {0, 1}}};
     const std::array<double, 6> distances = {4, 24, 48, 80, 130, 200}; // pixels; from the second on, with a leader
     std::vector<Box2> taken = obstacles.reserved;
+    const std::size_t reserved = taken.size(); // captions and legends: no leader ever crosses them
+    const double farthest = 0.3 * std::hypot(width, height); // a leader longer than this would pile labels up
     std::vector<std::optional<PlacedLabel>> placed(requests.size());
 
     auto cost = [&](const Box2& box) {
@@ -343,9 +439,14 @@ std::vector<std::optional<PlacedLabel>> placeLabels(const std::vector<LabelReque
         if (!picture.contains(box))
             return false;
         const Segment2 leader = {anchor.value_or(box.min), anchor ? box.nearest(*anchor) : box.min};
-        for (const Box2& other : taken)
-            if (box.overlaps(other.grown(kPadding)) || (leadersApart && anchor && segmentCrossesBox(leader, other.grown(1))))
+        if (anchor && (leader[1] - leader[0]).norm() > farthest)
+            return false;
+        for (std::size_t k = 0; k < taken.size(); ++k) {
+            const Box2& other = taken[k];
+            if (box.overlaps(other.grown(kPadding)) ||
+                (anchor && (leadersApart || k < reserved) && segmentCrossesBox(leader, other.grown(1))))
                 return false;
+        }
         for (const Segment2& line : leaders)
             if (leadersApart && segmentCrossesBox(line, box.grown(1)))
                 return false;
@@ -489,42 +590,103 @@ LabelObstacles labelObstacles(const StageShown& stage, const FigureView& view, c
 
 } // namespace
 
-std::vector<std::optional<PlacedLabel>> placeSceneLabels(const StageShown& stage, const FigureView& view,
-                                                         const std::vector<const Label*>& labels,
-                                                         const std::vector<Marker>& markers,
-                                                         const LabelMeasure& measure,
-                                                         const std::vector<Box2>& reserved)
+SceneLabels placeSceneLabels(const StageShown& stage, const FigureView& view, const std::vector<const Label*>& labels,
+                             const std::vector<Marker>& markers, const LabelMeasure& measure,
+                             const std::vector<Box2>& reserved)
 {
     std::vector<LabelRequest> requests;
     std::vector<std::size_t> from; // each request's label
     const Box2 picture{Vec2d::Zero(), Vec2d(view.width, view.height)};
-    for (std::size_t k = 0; k < labels.size(); ++k) {
-        const Label& label = *labels[k];
-        const bool shown = label.fixed ? label.element != Element::Canonical || stage.canonicalOpacity > 0
-                                       : stage.shows(label.anchor);
-        if (!shown)
-            continue;
-        auto q = label.fixed ? std::optional<Vec3d>(label.anchor) : projectPoint(stage.cumulative, label.anchor);
-        if (label.element == Element::Frame && !label.minor && stage.cumulative.isIdentity(0))
-            continue; // the world's own axes name them
-        if (label.element == Element::Frame && !label.minor) // an axis's name: at the end of it the picture shows
-            for (double t = 1; t > 0.05; t -= 0.025)
-                if (const auto end = view.pixel(t * label.anchor); end && picture.grown(-0.05 * view.height).contains(Box2{end->head<2>(), end->head<2>()})) {
-                    q = t * label.anchor;
-                    break;
-                }
-        const auto px = q ? view.pixel(*q) : std::nullopt;
-        if (!px || !picture.contains(Box2{px->head<2>(), px->head<2>()}))
-            continue;
-        requests.push_back({label.element, label.text, px->head<2>(), measure(label), label.minor});
-        from.push_back(k);
-    }
+    // By priority: the canonical volume's labels (the point of the stage that shows it), the scene's
+    // names, the frame axes' names, tick numbers: where room runs out the last are left out first.
+    auto rank = [](const Label& label) {
+        return label.minor ? 3 : label.element == Element::Canonical ? 0 : label.element == Element::Frame ? 2 : 1;
+    };
+    for (int priority = 0; priority <= 3; ++priority)
+        for (std::size_t k = 0; k < labels.size(); ++k) {
+            const Label& label = *labels[k];
+            if (rank(label) != priority)
+                continue;
+            const bool shown = label.fixed ? label.element != Element::Canonical || stage.canonicalOpacity > 0
+                                           : stage.shows(label.anchor);
+            if (!shown)
+                continue;
+            auto q = label.fixed ? std::optional<Vec3d>(label.anchor) : projectPoint(stage.cumulative, label.anchor);
+            if (label.element == Element::Frame && !label.minor && stage.cumulative.isIdentity(0))
+                continue; // the world's own axes name them
+            if (label.element == Element::Frame && !label.minor) // an axis's name: at the end of it the picture shows
+                for (double t = 1; t > 0.05; t -= 0.025)
+                    if (const auto end = view.pixel(t * label.anchor); end && picture.grown(-0.05 * view.height).contains(Box2{end->head<2>(), end->head<2>()})) {
+                        q = t * label.anchor;
+                        break;
+                    }
+            const auto px = q ? view.pixel(*q) : std::nullopt;
+            if (!px || !picture.contains(Box2{px->head<2>(), px->head<2>()}))
+                continue;
+            requests.push_back({label.element, label.text, px->head<2>(), measure(label), label.minor});
+            from.push_back(k);
+        }
     LabelObstacles obstacles = labelObstacles(stage, view, markers);
     obstacles.reserved.insert(obstacles.reserved.end(), reserved.begin(), reserved.end());
+    auto notice = [&](const std::vector<std::optional<PlacedLabel>>& placed) {
+        int names = 0, ticks = 0;
+        for (std::size_t k = 0; k < placed.size(); ++k)
+            if (!placed[k])
+                ++(requests[k].minor ? ticks : names);
+        auto count = [](int n, const char* one, const char* many) { return std::to_string(n) + " " + (n == 1 ? one : many); };
+        return names + ticks == 0 ? std::string()
+                                  : "left out for room: " + (names ? count(names, "label", "labels") : "") +
+                                        (names && ticks ? ", " : "") + (ticks ? count(ticks, "tick number", "tick numbers") : "");
+    };
     std::vector<std::optional<PlacedLabel>> placed = placeLabels(requests, obstacles, view.width, view.height);
-    std::vector<std::optional<PlacedLabel>> result(labels.size());
+    SceneLabels result;
+    if (const std::string first = notice(placed); !first.empty()) {
+        // In the bottom right corner; else right above what is reserved at the bottom (the effects'
+        // note), at the right or the left; else below the caption. Nowhere free: not said.
+        constexpr double kEdge = 5;
+        const Box2 inside{Vec2d::Constant(kEdge), Vec2d(view.width, view.height) - Vec2d::Constant(kEdge)};
+        auto sizeOf = [&](const std::string& text) { return measure(Label{Element::Frame, text, Vec3d::Zero(), true, true}); };
+        auto corner = [&](const Vec2d& size) -> std::optional<Box2> {
+            double bottom = inside.max.y(), below = inside.min.y();
+            for (const Box2& other : reserved) {
+                if (other.max.y() >= 0.9 * view.height)
+                    bottom = std::min(bottom, other.min.y() - kEdge);
+                if (other.min.y() <= 0.1 * view.height)
+                    below = std::max(below, other.max.y() + kEdge);
+            }
+            for (const Box2& at : {Box2{inside.max - size, inside.max},
+                                   Box2{Vec2d(inside.max.x() - size.x(), bottom - size.y()), Vec2d(inside.max.x(), bottom)},
+                                   Box2{Vec2d(inside.min.x(), bottom - size.y()), Vec2d(inside.min.x() + size.x(), bottom)},
+                                   Box2{Vec2d(inside.min.x(), below), Vec2d(inside.min.x(), below) + size}})
+                if (inside.contains(at) &&
+                    std::none_of(reserved.begin(), reserved.end(), [&](const Box2& other) { return at.overlaps(other.grown(kEdge)); }))
+                    return at;
+            return std::nullopt;
+        };
+        // Room for the notice, the labels placed again around it; until the notice of what that
+        // pass left out fits the room (it grows by a few characters at most).
+        const std::size_t reservedBefore = obstacles.reserved.size();
+        std::string text = first;
+        for (int tries = 0; tries < 4 && !text.empty(); ++tries) {
+            const std::optional<Box2> room = corner(sizeOf(text + "8"));
+            if (!room)
+                break;
+            obstacles.reserved.resize(reservedBefore);
+            obstacles.reserved.push_back(*room);
+            placed = placeLabels(requests, obstacles, view.width, view.height);
+            text = notice(placed);
+            const Vec2d size = sizeOf(text);
+            if (text.empty() || size.x() > room->max.x() - room->min.x())
+                continue;
+            const bool right = room->max.x() >= inside.max.x() - 0.5;
+            const Vec2d min(right ? room->max.x() - size.x() : room->min.x(), room->max.y() - size.y());
+            result.leftOut = PlacedLabel{Element::Frame, text, min, Box2{min, min + size}, false, true};
+            break;
+        }
+    }
+    result.placed.resize(labels.size());
     for (std::size_t k = 0; k < placed.size(); ++k)
-        result[from[k]] = std::move(placed[k]);
+        result.placed[from[k]] = std::move(placed[k]);
     return result;
 }
 
@@ -550,8 +712,10 @@ Figure drawFigure(const StageShown& stage, const FigureView& view, const LabelMe
                    double widthScale = 1) {
         if (pixels.size() < (surface ? 3u : 2u))
             return;
+        // The viewing axes over the world axes where they coincide (after R), as the app draws them.
+        const double bias = element == Element::ViewAxes ? 1e-7 : 0;
         figure.shapes.push_back({element, surface, opacity, view.lineScale * lineWidthOf(element, surface) * widthScale,
-                                 flat(pixels), meanDepth(pixels)});
+                                 flat(pixels), meanDepth(pixels) - bias});
     };
     for (const Primitive& p : stage.scene->primitives) {
         if (!stage.draws(p))
@@ -609,9 +773,12 @@ Figure drawFigure(const StageShown& stage, const FigureView& view, const LabelMe
     }
     const std::vector<FigureShape> markerFaces = markerShapes(stage, view, markers);
     figure.shapes.insert(figure.shapes.end(), markerFaces.begin(), markerFaces.end()); // over everything
-    for (auto& placed : placeSceneLabels(stage, view, labels, markers, measure, reserved))
-        if (placed)
-            figure.labels.push_back(std::move(*placed));
+    SceneLabels placed = placeSceneLabels(stage, view, labels, markers, measure, reserved);
+    for (std::optional<PlacedLabel>& label : placed.placed)
+        if (label)
+            figure.labels.push_back(std::move(*label));
+    if (placed.leftOut)
+        figure.labels.push_back(std::move(*placed.leftOut));
     return figure;
 }
 

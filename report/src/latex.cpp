@@ -116,7 +116,9 @@ std::string matricesLatex(const Scene& scene, int digits)
     const Pipeline<Exact> p = exactPipeline(scene);
     std::ostringstream out;
     out << "% " << scene.name << ": the stages of the normalizing transformation (column vectors, p' = M p).\n"
-        << "% Made by viewpipe; needs \\usepackage{amsmath}. Exact fractions where the entry is rational.\n\n";
+        << "% Made by viewpipe; needs \\usepackage{amsmath}. Exact fractions where the entry is rational.\n"
+        << "% Fractions at full size, rows apart; each display fits a 12 cm column.\n"
+        << "\\begingroup\n\\renewcommand{\\arraystretch}{2.1}\n\\let\\frac\\dfrac\n\n";
     std::string product;
     for (std::size_t k = 0; k < p.stages.size(); ++k) {
         const Stage<Exact>& stage = p.stages[k];
@@ -129,11 +131,13 @@ std::string matricesLatex(const Scene& scene, int digits)
     const std::string name = p.convention == Convention::OpenGL            ? "P \\, V"
                              : p.projection == ProjectionKind::Perspective ? "N_{\\mathrm{per}}"
                                                                            : "N_{\\mathrm{par}}";
-    out << "% The composite\n\\[\n" << name << " = " << product << " =\n" << bmatrix(p.composite, digits)
-        << "\n\\]\n";
+    // The product on a line of its own: with the matrix beside it, it was wider than the text.
+    out << "% The composite\n\\begin{align*}\n" << name << " &= " << product << " \\\\\n&=\n"
+        << bmatrix(p.composite, digits) << "\n\\end{align*}\n";
     if (p.view && p.projectionMatrix)
         out << "\n% The view (gluLookAt) and projection matrices\n\\[\nV =\n" << bmatrix(*p.view, digits)
-            << ", \\qquad P =\n" << bmatrix(*p.projectionMatrix, digits) << "\n\\]\n";
+            << "\n\\]\n\\[\nP =\n" << bmatrix(*p.projectionMatrix, digits) << "\n\\]\n";
+    out << "\\endgroup\n";
     return out.str();
 }
 

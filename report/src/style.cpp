@@ -1,5 +1,6 @@
 #include "viewpipe/report/style.hpp"
 
+#include <algorithm>
 #include <cmath>
 
 namespace viewpipe {
@@ -50,6 +51,16 @@ std::array<unsigned char, 3> toBytes(const Rgb& color)
 {
     auto byte = [](double channel) { return static_cast<unsigned char>(std::lround(255 * channel)); };
     return {byte(color.r), byte(color.g), byte(color.b)};
+}
+
+double exportLabelSize(int widthPixels, double textScale)
+{
+    return std::max(10.0, std::ceil(kLabelWidthShare * widthPixels * textScale)); // readable however small the picture
+}
+
+double smallTextSize(double labelSize)
+{
+    return std::max(8.0, std::ceil(kSmallWidthShare / kLabelWidthShare * labelSize));
 }
 
 Rgb backgroundColor(Theme theme, bool projectedView)

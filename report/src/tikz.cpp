@@ -1,9 +1,12 @@
 #include "viewpipe/report/tikz.hpp"
 
+#include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <map>
 #include <set>
 #include <sstream>
+#include <vector>
 
 namespace viewpipe {
 namespace {
@@ -111,11 +114,21 @@ std::string texLabel(const std::string& text)
 std::string tikzFigure(const Figure& figure, Theme theme)
 {
     const double unit = kWidthCm / figure.width; // cm per pixel
-    std::set<Element> used;
+    std::set<Element> used = {Element::Objects, Element::Frame}; // the note's ink, the legend's border
     for (const FigureShape& s : figure.shapes)
         used.insert(s.element);
     for (const PlacedLabel& l : figure.labels)
         used.insert(l.element);
+    for (const LegendEntry* entry : figure.legend)
+        used.insert(entry->element);
+    // The document sets the caption: the picture begins below its band (and above any label or the legend).
+    const PictureLayout& layout = figure.layout;
+    double top = layout.caption.isEmpty() ? 0 : layout.caption.max.y() + 0.25 * figure.fontSize;
+    if (!layout.legend.isEmpty())
+        top = std::min(top, layout.legend.min.y() - 1);
+    for (const PlacedLabel& l : figure.labels)
+        top = std::min(top, l.box.min.y() - 1);
+    top = std::max(0.0, std::floor(top));
 
     std::ostringstream tex;
     tex << "% A ViewPipe figure. Compile with pdflatex, or \\input it in a document that loads\n"
@@ -128,11 +141,15 @@ std::string tikzFigure(const Figure& figure, Theme theme)
         tex << "\\definecolor{vp" << elementKey(e) << "}" << color(elementColor(e, theme)) << "\n";
     // One pixel of the picture is `unit` cm; line widths and the font follow.
     const double pt = unit / 2.54 * 72.27;
+    // Text as large as the picture's: labels and tick numbers take the same share of the width.
+    const double labelPt = figure.fontSize * pt, smallPt = smallTextSize(figure.fontSize) * pt;
     tex << "\\tikzset{\n  vp label/.style={inner sep=0pt, anchor=north west, font=\\sffamily\\bfseries"
-           "\\fontsize{" << number(0.8 * figure.fontSize * pt) << "}{" << number(figure.fontSize * pt) << "}\\selectfont},\n";
-    tex << "  vp tick label/.style={vp label, text=vpFrame, font=\\sffamily\\fontsize{" << number(0.6 * figure.fontSize * pt)
-        << "}{" << number(0.75 * figure.fontSize * pt) << "}\\selectfont},\n";
+           "\\fontsize{" << number(labelPt) << "}{" << number(1.2 * labelPt) << "}\\selectfont},\n";
+    tex << "  vp tick label/.style={vp label, text=vpFrame, font=\\sffamily\\fontsize{" << number(smallPt)
+        << "}{" << number(1.2 * smallPt) << "}\\selectfont},\n";
     tex << "  vp leader/.style={line width=" << number(figure.lineScale * pt) << "pt},\n";
+    tex << "  vp small text/.style={inner sep=0pt, anchor=west, text=vpObjects, font=\\sffamily\\fontsize{" << number(smallPt)
+        << "}{" << number(1.2 * smallPt) << "}\\selectfont},\n";
     for (const Element e : used) {
         const std::string key = elementKey(e);
         tex << "  vp " << key << "/.style={draw=vp" << key << ", line width=" << number(figure.lineScale * lineWidthOf(e, false) * pt) << "pt, line cap=round},\n";
@@ -141,8 +158,9 @@ std::string tikzFigure(const Figure& figure, Theme theme)
     }
     tex << "}\n";
     tex << "\\begin{tikzpicture}[x=" << unit << "cm, y=-" << unit << "cm]\n";
-    tex << "\\fill[vpBackground] (0,0) rectangle " << point(Vec2<double>(figure.width, figure.height)) << ";\n";
-    tex << "\\clip (0,0) rectangle " << point(Vec2<double>(figure.width, figure.height)) << ";\n";
+    const std::string corner = point(Vec2<double>(0, top)), far = point(Vec2<double>(figure.width, figure.height));
+    tex << "\\fill[vpBackground] " << corner << " rectangle " << far << ";\n";
+    tex << "\\clip " << corner << " rectangle " << far << ";\n";
     for (const FigureShape& s : figure.shapes) {
         const std::string key = elementKey(s.element);
         tex << (s.surface ? "\\fill[vp " + key + " face" : "\\draw[vp " + key);
@@ -153,14 +171,54 @@ std::string tikzFigure(const Figure& figure, Theme theme)
             tex << (k ? " -- " : "") << point(s.points[k]);
         tex << (s.surface ? " -- cycle;\n" : ";\n");
     }
-    for (const PlacedLabel& l : figure.labels) {
-        const std::string key = elementKey(l.element);
-        if (l.leader) {
-            const Vec2<double> end = l.box.nearest(l.anchor);
-            tex << "\\draw[vp leader, draw=vp" << key << "] " << point(l.anchor) << " -- " << point(end) << ";\n";
+    for (std::size_t k = 0; k < figure.labels.size(); ++k) {
+        const PlacedLabel& l = figure.labels[k];
+        const std::string key = elementKey(l.element), name = "vp label " + std::to_string(k);
+        tex << "\\node[vp " << (l.minor ? std::string("tick") : key) << " label] (" << name << ") at "
+            << point(l.box.min) << " {" << texLabel(l.text) << "};\n";
+        if (l.leader) // to the node's border as TeX sets the text, whose width differs from the picture's font
+            tex << "\\draw[vp leader, draw=vp" << key << "] " << point(l.anchor) << " -- (" << name << ");\n";
+    }
+    // The effects' note, line by line, and the legend, where the picture has them.
+    for (std::size_t k = 0; k < layout.noteLines.size(); ++k) {
+        // The box's bottom is the last line's descenders (about a fifth of the size below its baseline).
+        const double baseline = layout.note.max.y() - 0.22 * layout.noteSize - double(layout.noteLines.size() - 1 - k) * layout.noteLine;
+        tex << "\\node[vp small text, anchor=base west] at " << point(Vec2<double>(layout.note.min.x(), baseline))
+            << " {" << texEscaped(layout.noteLines[k]) << "};\n";
+    }
+    if (!figure.legend.empty()) {
+        tex << "\\draw[draw=vpFrame, fill=vpBackground] " << point(layout.legend.min) << " rectangle "
+            << point(layout.legend.max) << ";\n";
+        for (std::size_t k = 0; k < figure.legend.size(); ++k) {
+            const LegendEntry& entry = *figure.legend[k];
+            const LegendRow row = legendRow(layout, k);
+            const double h = row.textHeight;
+            const Vec2<double> c = row.swatchCenter;
+            const std::string key = elementKey(entry.element);
+            const std::string fill = entry.swatch == LegendEntry::Swatch::Face && entry.element == Element::Objects
+                                         ? "vpObjectsFace" : "vp" + key;
+            const std::string opacity = entry.opacity < 1 ? ", opacity=" + number(entry.opacity * 100) + "/100" : "";
+            const std::vector<Rgb> ramp = entry.swatch == LegendEntry::Swatch::Bands    ? std::vector<Rgb>(kBandRamp.begin(), kBandRamp.end())
+                                          : entry.swatch == LegendEntry::Swatch::Pixels ? std::vector<Rgb>(kRasterPalette.begin(), kRasterPalette.end())
+                                                                                        : std::vector<Rgb>{};
+            if (entry.swatch == LegendEntry::Swatch::Dot) {
+                tex << "\\fill[" << fill << opacity << "] " << point(c) << " circle[radius=" << number(0.2 * h) << "];\n";
+            } else if (!ramp.empty()) {
+                for (std::size_t j = 0; j < ramp.size(); ++j) {
+                    const double w = 1.5 * h / double(ramp.size()), x = c.x() - 0.75 * h + double(j) * w;
+                    char rgb[64];
+                    std::snprintf(rgb, sizeof rgb, "{rgb,1:red,%.3f;green,%.3f;blue,%.3f}", ramp[j].r, ramp[j].g, ramp[j].b);
+                    tex << "\\fill[fill=" << rgb << "] " << point(Vec2<double>(x, c.y() - 0.2 * h)) << " rectangle "
+                        << point(Vec2<double>(x + w, c.y() + 0.2 * h)) << ";\n";
+                }
+            } else {
+                const double half = entry.swatch == LegendEntry::Swatch::Line ? 0.06 * h : 0.2 * h;
+                tex << "\\fill[" << fill << opacity << "] " << point(Vec2<double>(c.x() - 0.75 * h, c.y() - half))
+                    << " rectangle " << point(Vec2<double>(c.x() + 0.75 * h, c.y() + half)) << ";\n";
+            }
+            tex << "\\node[vp small text] at " << point(Vec2<double>(row.textLeft, (row.row.min.y() + row.row.max.y()) / 2))
+                << " {" << texEscaped(entry.text) << "};\n";
         }
-        tex << "\\node[vp " << (l.minor ? std::string("tick") : key) << " label] at " << point(l.box.min) << " {"
-            << texLabel(l.text) << "};\n";
     }
     tex << "\\end{tikzpicture}\n\\end{document}\n";
     return tex.str();
@@ -169,12 +227,23 @@ std::string tikzFigure(const Figure& figure, Theme theme)
 std::string tikzFiguresDocument(const std::vector<std::pair<std::string, std::string>>& figures)
 {
     std::ostringstream tex;
-    tex << "% Every ViewPipe figure of this folder, each with its caption. Compile with pdflatex.\n"
-           "\\documentclass{article}\n\\usepackage[margin=2cm]{geometry}\n\\usepackage{amsmath}\n"
+    tex << "% Every ViewPipe figure of this folder, one a page with its caption. Compile with pdflatex.\n"
+           "\\documentclass[a4paper]{article}\n\\usepackage[margin=2cm]{geometry}\n\\usepackage{amsmath}\n"
+           "\\usepackage{caption} % a line break in a caption\n"
            "\\usepackage{tikz}\n\\usepackage{standalone}\n\\begin{document}\n";
-    for (const auto& [file, caption] : figures)
+    for (const auto& [file, caption] : figures) {
+        // The caption's lines (the stage, what it achieved) kept apart; the list of figures takes the first.
+        std::vector<std::string> lines;
+        std::istringstream in(caption);
+        for (std::string line; std::getline(in, line);)
+            lines.push_back(texEscaped(line));
+        std::string joined;
+        for (const std::string& line : lines)
+            joined += (joined.empty() ? "" : "\\\\ ") + line;
         tex << "\\begin{figure}[p]\n  \\centering\n  \\resizebox{\\linewidth}{!}{\\input{" << file
-            << "}}\n  \\caption{" << texEscaped(caption) << "}\n\\end{figure}\n";
+            << "}}\n  \\caption[{" << (lines.empty() ? "" : lines.front()) << "}]{" << joined
+            << "}\n\\end{figure}\n\\clearpage\n";
+    }
     tex << "\\end{document}\n";
     return tex.str();
 }

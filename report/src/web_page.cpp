@@ -199,6 +199,26 @@ WebAssets loadWebAssets(const std::filesystem::path& javascript)
 
 namespace {
 
+json boxJson(const Box2& box)
+{
+    return {box.min.x(), box.min.y(), box.max.x(), box.max.y()};
+}
+
+// The picture's text boxes and sizes (layoutPicture), for the page to set its caption, legend and note as the PNG does.
+json layoutJson(const PictureLayout& layout)
+{
+    json out = {{"caption", {{"box", boxJson(layout.caption)}, {"size", layout.captionSize}, {"line", layout.captionLine},
+                             {"lines", layout.captionLines}}},
+                {"note", {{"box", boxJson(layout.note)}, {"size", layout.noteSize}, {"line", layout.noteLine},
+                          {"lines", layout.noteLines}}}};
+    if (!layout.legend.isEmpty()) {
+        const LegendLayout& rows = layout.legendRows;
+        out["legend"] = {{"box", boxJson(layout.legend)}, {"size", rows.textSize}, {"row", rows.rowHeight},
+                         {"swatch", rows.swatchWidth}, {"padding", rows.padding}};
+    }
+    return out;
+}
+
 json sceneData(const EvaluatedScene& scene, const WebPageViews& views)
 {
     const Theme theme = views.theme;
@@ -211,7 +231,7 @@ json sceneData(const EvaluatedScene& scene, const WebPageViews& views)
         for (const PlacedLabel& l : s.labels)
             labels.push_back({{"text", l.text},
                               {"anchor", {l.anchor.x(), l.anchor.y()}},
-                              {"box", {l.box.min.x(), l.box.min.y(), l.box.max.x(), l.box.max.y()}},
+                              {"box", boxJson(l.box)},
                               {"leader", l.leader},
                               {"minor", l.minor},
                               {"color", color(elementColor(l.element, theme))}});
@@ -224,6 +244,7 @@ json sceneData(const EvaluatedScene& scene, const WebPageViews& views)
                       {"frame", floats(marks.lines)}};
         if (s.ghost)
             entry["ghost"] = matrix(*s.ghost);
+        entry["layout"] = layoutJson(s.layout);
         if (k > 0) {
             const Stage<double>& stage = stages[k - 1];
             entry["symbol"] = stage.symbol;
@@ -279,6 +300,7 @@ json sceneData(const EvaluatedScene& scene, const WebPageViews& views)
                        {"width", views.width},
                        {"height", views.height},
                        {"fontSize", views.fontSize},
+                       {"smallFontSize", smallTextSize(views.fontSize)},
                        {"background", color(backgroundColor(theme, false))},
                        {"projectedBackground", color(backgroundColor(theme, true))},
                        {"ink", color(elementColor(Element::Objects, theme))},

@@ -254,11 +254,45 @@
   }
   const kept = (cut, point) => !cut || cut[0] * point[0] + cut[1] * point[1] + cut[2] * point[2] + cut[3] >= 0;
 
+  // The caption, legend and note where the stage's picture has them (its layout, in export pixels), fitted as it is.
+  let placedText = '';
+  function placePictureText(size) {
+    const layout = stages[state.stage].layout;
+    const key = `${state.stage} ${size.width} ${size.height}`;
+    if (!layout || key === placedText) return;
+    placedText = key;
+    const s = fitScale(size);
+    const setBox = (element, box) => Object.assign(element.style, {
+      left: `${(box[0] - data.width / 2) * s + size.width / 2}px`, top: `${(box[1] - data.height / 2) * s + size.height / 2}px`,
+      right: 'auto', bottom: 'auto', maxWidth: 'none', margin: '0' });
+    const setText = (element, part) => {
+      setBox(element, part.box);
+      element.textContent = part.lines.join('\n');
+      Object.assign(element.style, { fontSize: `${part.size * s}px`, lineHeight: `${(part.line || 1.25 * part.size) * s}px` });
+    };
+    setText(document.getElementById('caption'), layout.caption);
+    setText(document.getElementById('note'), layout.note);
+    const legend = document.getElementById('legend');
+    legend.hidden = !layout.legend;
+    if (!layout.legend) return;
+    const { box, size: textSize, row, swatch, padding } = layout.legend;
+    setBox(legend, box);
+    Object.assign(legend.style, { fontSize: `${textSize * s}px`, padding: `${padding * s}px`, boxSizing: 'border-box',
+                                  width: `${(box[2] - box[0]) * s}px`, height: `${(box[3] - box[1]) * s}px` });
+    legend.querySelectorAll('div').forEach((entry) => { entry.style.height = `${row * s}px`; entry.style.gap = `${padding * s}px`; });
+    legend.querySelectorAll('i').forEach((mark) => { // half its slot, centred, as the app's legend draws it; a dot round
+      const width = mark.style.borderRadius ? 0.4 * swatch / 3 : swatch / 2;
+      Object.assign(mark.style, { width: `${width * s}px`, height: mark.style.borderRadius ? `${width * s}px` : '',
+                                  margin: `0 ${(swatch - width) / 2 * s}px` });
+    });
+  }
+
   function drawWorld() {
     if (!shown) return;
     const { frame, atRest, ghost } = shown;
     const size = sizeOf(worldCanvas);
     world.setSize(size.width, size.height, false);
+    placePictureText(size);
     const { view, projection } = cameraMatrices(frame, size);
     camera.matrix.getInverse(view);
     camera.matrixWorldNeedsUpdate = true;
@@ -344,7 +378,7 @@
       for (const label of stages[state.stage].labels) {
         const [x0, y0, x1, y1] = label.box;
         const corner = place(x0, y0);
-        let px = (label.minor ? 0.7 : 1) * data.fontSize * s;
+        let px = (label.minor ? data.smallFontSize : data.fontSize) * s;
         const weight = label.minor ? '' : 'bold ';
         context.font = weight + font(px);
         const width = context.measureText(label.text).width;
@@ -481,7 +515,6 @@
       if (k === state.stage) item.setAttribute('aria-current', 'step');
       else item.removeAttribute('aria-current');
     });
-    document.getElementById('caption').textContent = stage.caption;
     document.getElementById('matrix-title').textContent = stage.list;
     if (state.stage === 0) {
       document.getElementById('matrix').textContent = 'The world: no matrix yet.';
@@ -702,6 +735,7 @@
   // ---- Scenes and lessons -------------------------------------------------------
   let shownScene = -1;
   function useScene(index) {
+    placedText = ''; // the new scene's caption, legend and note, even at the same stage
     if (index === shownScene) return;
     shownScene = index;
     data = page.scenes[index];

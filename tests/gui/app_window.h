@@ -4,6 +4,8 @@
 // closed without the "save changes?" prompt, and the test program's main().
 
 #include <QApplication>
+#include <QDirIterator>
+#include <QFileInfo>
 #include <QStandardPaths>
 #include <QSurfaceFormat>
 #include <QVTKOpenGLNativeWidget.h>
@@ -39,6 +41,32 @@ inline void closeWindow(std::unique_ptr<viewpipe::gui::MainWindow>& window)
     if (window)
         window->document()->undoStack()->setClean();
     window.reset();
+}
+
+// Every built-in scene (data/scenes) at every stage in `window`, rendered,
+// then `check(where)` with `where` naming the scene's file and the stage.
+// Stops at a scene that does not open or a failed check; returns the number of stages shown.
+inline int showEveryBuiltInStage(viewpipe::gui::MainWindow& window, const std::function<void(const QString& where)>& check)
+{
+    QDirIterator scenes(QString(VIEWPIPE_DATA_DIR) + "/scenes", {"*.json"}, QDir::Files, QDirIterator::Subdirectories);
+    int shown = 0;
+    while (scenes.hasNext()) {
+        const QString scene = scenes.next();
+        if (!window.openScene(scene)) {
+            QTest::qFail(qPrintable("cannot open " + scene), __FILE__, __LINE__);
+            return shown;
+        }
+        const int stages = int(window.document()->pipeline().stages.size());
+        for (int k = 0; k <= stages; ++k) {
+            window.goToStage(k, false);
+            window.renderNow();
+            check(QFileInfo(scene).fileName() + " stage " + QString::number(k));
+            if (QTest::currentTestFailed())
+                return shown;
+            ++shown;
+        }
+    }
+    return shown;
 }
 
 // The body of a GUI test's main(): VTK's OpenGL format, settings and data

@@ -35,6 +35,7 @@
 #include <set>
 
 #include "app_window.h"
+#include "drawn_texts.h"
 #include "files.h"
 #include "app/ExportDialog.h"
 #include "app/GuideDialog.h"
@@ -92,43 +93,6 @@ int pixelsOf(MainWindow& window, const char* view, const Rgb& color)
             count += std::max({std::abs(qRed(c) - r), std::abs(qGreen(c) - g), std::abs(qBlue(c) - b)}) <= 24;
         }
     return count;
-}
-
-// The boxes of the texts drawn in a view (labels and captions; viewport pixels), and the legend's.
-struct DrawnTexts {
-    std::vector<std::pair<QString, std::array<double, 4>>> texts; // x0, x1, y0, y1
-    std::optional<std::array<double, 4>> legend;
-};
-
-DrawnTexts drawnTexts(vtkRenderer* view)
-{
-    DrawnTexts drawn;
-    vtkActor2DCollection* actors = view->GetActors2D();
-    actors->InitTraversal();
-    while (vtkActor2D* actor = actors->GetNextActor2D()) {
-        if (!actor->GetVisibility())
-            continue;
-        if (auto* text = vtkTextActor::SafeDownCast(actor); text && text->GetInput() && *text->GetInput()) {
-            // The bounding box is relative to the text's position: add it (viewport pixels).
-            std::array<double, 4> box;
-            text->GetBoundingBox(view, box.data());
-            const double* at = text->GetPositionCoordinate()->GetComputedDoubleViewportValue(view);
-            box = {box[0] + at[0], box[1] + at[0], box[2] + at[1], box[3] + at[1]};
-            drawn.texts.emplace_back(text->GetInput(), box);
-        } else if (auto* legend = vtkLegendBoxActor::SafeDownCast(actor)) {
-            // Position2 is relative to Position: computed, it is the upper right corner.
-            const int* low = legend->GetPositionCoordinate()->GetComputedViewportValue(view);
-            const double x0 = low[0], y0 = low[1];
-            const int* high = legend->GetPosition2Coordinate()->GetComputedViewportValue(view);
-            drawn.legend = {x0, double(high[0]), y0, double(high[1])};
-        }
-    }
-    return drawn;
-}
-
-bool overlap(const std::array<double, 4>& a, const std::array<double, 4>& b)
-{
-    return a[0] < b[1] && b[0] < a[1] && a[2] < b[3] && b[2] < a[3];
 }
 
 } // namespace
@@ -209,35 +173,13 @@ private slots:
     {
         auto window = openWindow(kScenes + "/house.json", {1600, 950});
         QVERIFY(window);
-        QDirIterator scenes(kScenes, {"*.json"}, QDir::Files, QDirIterator::Subdirectories);
-        int pictures = 0, labels = 0;
-        while (scenes.hasNext()) {
-            const QString scene = scenes.next();
-            QVERIFY2(window->openScene(scene), qPrintable(scene));
-            const int stages = int(window->document()->pipeline().stages.size());
-            for (int k = 0; k <= stages; ++k) {
-                window->goToStage(k, false);
-                window->renderNow();
-                vtkRenderer* view = renderer(*window, "worldView");
-                const int* size = view->GetSize();
-                const DrawnTexts drawn = drawnTexts(view);
-                const QString where = QFileInfo(scene).fileName() + " stage " + QString::number(k) + ": ";
-                for (std::size_t i = 0; i < drawn.texts.size(); ++i) {
-                    const auto& [text, box] = drawn.texts[i];
-                    QVERIFY2(box[0] >= 0 && box[1] <= size[0] && box[2] >= 0 && box[3] <= size[1],
-                             qPrintable(where + "\"" + text + "\" leaves the view"));
-                    QVERIFY2(!drawn.legend || !overlap(box, *drawn.legend),
-                             qPrintable(where + "\"" + text + "\" covers the legend " +
-                                        QString("(%1 %2 %3 %4 / %5 %6 %7 %8)").arg(box[0]).arg(box[1]).arg(box[2]).arg(box[3])
-                                            .arg((*drawn.legend)[0]).arg((*drawn.legend)[1]).arg((*drawn.legend)[2]).arg((*drawn.legend)[3])));
-                    for (std::size_t j = i + 1; j < drawn.texts.size(); ++j)
-                        QVERIFY2(!overlap(box, drawn.texts[j].second),
-                                 qPrintable(where + "\"" + text + "\" overlaps \"" + drawn.texts[j].first + "\""));
-                }
-                labels += int(drawn.texts.size());
-                ++pictures;
-            }
-        }
+        int labels = 0;
+        const int pictures = showEveryBuiltInStage(*window, [&](const QString& where) {
+            vtkRenderer* view = renderer(*window, "worldView");
+            const std::string trouble = textTrouble(view);
+            QVERIFY2(trouble.empty(), qPrintable(where + ": " + QString::fromStdString(trouble)));
+            labels += int(drawnTexts(view).texts.size());
+        });
         QVERIFY2(pictures > 100 && labels > 10 * pictures, qPrintable(QString("%1 pictures, %2 texts").arg(pictures).arg(labels)));
         closeWindow(window);
     }

@@ -4,10 +4,15 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdlib>
 #include <filesystem>
+#include <fstream>
+#include <iterator>
 #include <random>
 #include <sstream>
 #include <string>
+
+#include <unistd.h>
 
 #include "viewpipe/format.hpp"
 #include "viewpipe/report/bench.hpp"
@@ -87,13 +92,43 @@ TEST(Latex, HouseStagesAreExact)
               std::string::npos)
         << scale;
     const std::string all = cli::matricesLatex(house, 4);
-    EXPECT_NE(all.find("N_{\\mathrm{per}} = S_{\\mathrm{per}} \\, \\mathit{SH}_{\\mathrm{per}} \\, "
-                       "T(-\\mathit{PRP}) \\, R \\, T(-\\mathit{VRP}) ="),
+    EXPECT_NE(all.find("N_{\\mathrm{per}} &= S_{\\mathrm{per}} \\, \\mathit{SH}_{\\mathrm{per}} \\, "
+                       "T(-\\mathit{PRP}) \\, R \\, T(-\\mathit{VRP}) \\\\\n&="),
               std::string::npos)
         << all;
 }
 
 // cos 45 degrees is irrational: a decimal with the digits asked for.
+// matrices.tex of every built-in scene set by pdflatex in a 12 cm column (a
+// lecture's notes): no display wider than the text.
+TEST(Latex, EveryBuiltInScenesMatricesFitATwelveCentimetreColumn)
+{
+    ASSERT_EQ(std::system("pdflatex --version > /dev/null 2>&1"), 0)
+        << "pdflatex is missing: scripts/install-deps.sh --test installs TeX Live";
+    const std::filesystem::path dir =
+        std::filesystem::temp_directory_path() / ("viewpipe-latex-test-" + std::to_string(::getpid()));
+    std::filesystem::create_directories(dir);
+    std::string document = "\\documentclass[a4paper]{article}\n\\usepackage[textwidth=12cm]{geometry}\n"
+                           "\\usepackage{amsmath}\n\\usepackage{xcolor}\n\\begin{document}\n";
+    int scenes = 0;
+    for (const auto& entry : std::filesystem::recursive_directory_iterator(kScenes)) {
+        if (entry.path().extension() != ".json")
+            continue;
+        const std::string name = "m" + std::to_string(scenes++) + ".tex";
+        std::ofstream(dir / name) << cli::matricesLatex(loadScene(entry.path()), 4);
+        document += "% " + entry.path().filename().string() + "\n\\input{" + name + "}\n\\clearpage\n";
+    }
+    std::ofstream(dir / "all.tex") << document << "\\end{document}\n";
+    const std::string run = "cd '" + dir.string() + "' && pdflatex -interaction=nonstopmode -halt-on-error all.tex > /dev/null 2>&1";
+    EXPECT_EQ(std::system(run.c_str()), 0) << "see " << (dir / "all.log");
+    std::ifstream log(dir / "all.log");
+    const std::string text((std::istreambuf_iterator<char>(log)), {});
+    EXPECT_EQ(text.find("Overfull \\hbox"), std::string::npos) << text.substr(text.find("Overfull"), 400);
+    EXPECT_GT(scenes, 15);
+    if (!HasFailure())
+        std::filesystem::remove_all(dir);
+}
+
 TEST(Latex, OneEntryIsExactWhereItIsAFraction)
 {
     // Foley's SH_per for the house: shx = -DOPx/DOPz = -8/84 = -2/21.
@@ -153,7 +188,7 @@ TEST(PipelineJson, DivideStageSaysItDivides)
     EXPECT_NE(text.str().find("P * V = P_depth * S_fovy * R_eye * T(-eye)\n"), std::string::npos);
     const std::string tex = cli::matricesLatex(scene, 4);
     EXPECT_NE(tex.find("(x, y, z, w) \\mapsto \\left(\\frac{x}{w}"), std::string::npos);
-    EXPECT_NE(tex.find("P \\, V = P_{\\mathrm{depth}}"), std::string::npos);
+    EXPECT_NE(tex.find("P \\, V &= P_{\\mathrm{depth}}"), std::string::npos);
 }
 
 TEST(PipelineJson, WidePrecisionsAreStrings)

@@ -10,6 +10,7 @@
 #include <functional>
 #include <optional>
 #include <string>
+#include <tuple>
 #include <vector>
 
 #include "viewpipe/evaluated_scene.hpp"
@@ -22,6 +23,7 @@ struct Box2 {
     bool overlaps(const Box2& other) const;
     bool contains(const Box2& other) const;
     Box2 grown(double by) const;
+    bool isEmpty() const { return !(max.x() > min.x() && max.y() > min.y()); }
     // The box's point nearest `p`: where a leader line from p meets it.
     Vec2<double> nearest(const Vec2<double>& p) const { return p.cwiseMax(min).cwiseMin(max); }
 };
@@ -61,6 +63,7 @@ struct FigureView {
     int width = 1280, height = 720;                 // pixels
     double frameReach = 0;  // the fixed axes run from -reach to reach along x, y and z (0: none)
     double fontSize = 20;   // pixels
+    double minFontSize = 20; // where room runs out, the caption and legend may shrink to this (PictureText)
     double lineScale = 1;
     // Pixels a world point is drawn at, and its depth (smaller: nearer); nothing when it has no image.
     std::optional<Vec3<double>> pixel(const Vec3<double>& stagePoint) const;
@@ -75,19 +78,70 @@ using LabelMeasure = std::function<Vec2<double>(const Label& label)>;
 // line is at most `width` wide; a word wider stays whole on its line.
 std::vector<std::string> wrapLines(const std::string& text, double width, const TextMeasure& measure);
 
+// A text's size in pixels, set `pixels` high, bold or not, as the writer that
+// draws it measures it (line breaks taken).
+using FontMeasure = std::function<Vec2<double>(const std::string& text, double pixels, bool bold)>;
+
+// The legend's entries shown at a stage (the canonical volume's only while it is drawn).
+std::vector<const LegendEntry*> legendShown(const std::vector<LegendEntry>& entries, bool canonicalShown);
+
+// A legend's rows: a slot three text heights wide for the swatch (VTK's
+// legend draws it half as wide, centred), then the entry's text, set at
+// smallTextSize of the label size.
+struct LegendLayout {
+    double textSize = 0, rowHeight = 0, swatchWidth = 0, padding = 0;
+    Vec2<double> size = Vec2<double>::Zero(); // the whole box; zero without entries
+};
+LegendLayout legendLayout(const std::vector<const LegendEntry*>& entries, double labelSize, const FontMeasure& measure);
+
+// What a picture says beside its stage.
+struct PictureText {
+    double fontSize = 20;    // the labels' and the caption's, as asked (text scale applied)
+    double minFontSize = 20; // the smallest the caption and legend may take where room runs out (100 %)
+    std::string caption, note;
+    std::vector<const LegendEntry*> legend;
+};
+
 // Where a picture's caption (top left), legend (top right) and effects note
 // (bottom left) go, in pixels: the caption beside the legend where that leaves
 // it half the width and two lines at most, above it otherwise; both texts
-// wrapped to fit; each box as high as its lines measure together (the
-// measure takes line breaks).
+// wrapped to fit; each box as high as its lines measure together. The caption
+// and legend take the asked size where the caption needs at most 30 % of the
+// height and the legend fits above the note leaving the stage 40 % of the
+// width and height, else the largest size down to minFontSize that does; a
+// legend that fits at no size is left out.
+// `scene` is where the stage is framed: the larger of the area left of the
+// legend and the area below it, between the caption and the note.
 struct PictureLayout {
     std::vector<std::string> captionLines, noteLines;
-    Box2 caption, legend, note;
+    Box2 caption, legend, note, scene;
     double captionLine = 0, noteLine = 0; // from one line's baseline to the next
+    double captionSize = 0, noteSize = 0;   // pixels
+    LegendLayout legendRows;                // zero size: no legend
 };
-PictureLayout layoutPicture(int width, int height, double fontSize, const Vec2<double>& legendSize,
-                            const std::string& caption, const TextMeasure& captionMeasure, const std::string& note,
-                            const TextMeasure& noteMeasure);
+PictureLayout layoutPicture(int width, int height, const PictureText& text, const FontMeasure& measure);
+
+// The layout of the last picture asked for, made anew only when its size or
+// text changes: the painters ask before every frame.
+class PictureLayoutCache {
+public:
+    const PictureLayout& layout(int width, int height, const PictureText& text, const FontMeasure& measure);
+
+private:
+    std::optional<std::tuple<int, int, double, double, std::string, std::string, std::vector<std::string>>> key_;
+    PictureLayout layout_;
+};
+
+// Where row k of a layout's legend draws its swatch and text, as VTK's legend
+// draws them: the swatch half its slot wide, centred, a quarter of the text's
+// height below the row's middle; the text after the slot, on the row's middle.
+struct LegendRow {
+    Box2 row;
+    Vec2<double> swatchCenter = Vec2<double>::Zero();
+    double textHeight = 0;   // a face's swatch is 1.5 by 0.4 of it, a line's 0.12 high, a dot 0.2 a radius
+    double textLeft = 0;
+};
+LegendRow legendRow(const PictureLayout& layout, std::size_t k);
 
 struct LabelRequest {
     Element element;
@@ -126,12 +180,19 @@ int labelOverlaps(const std::vector<PlacedLabel>& labels);
 
 
 // Labels of a scene that show at a stage, placed clear of what the stage
-// draws (its lines, objects and `markers`) and of the `reserved` boxes.
-std::vector<std::optional<PlacedLabel>> placeSceneLabels(const StageShown& stage, const FigureView& view,
-                                                         const std::vector<const Label*>& labels,
-                                                         const std::vector<Marker>& markers,
-                                                         const LabelMeasure& measure,
-                                                         const std::vector<Box2>& reserved);
+// draws (its lines, objects and `markers`) and of the `reserved` boxes, by
+// priority: the canonical volume's labels, the scene's names, the frame
+// axes' names, tick numbers, so that where room runs out tick numbers are
+// left out first. When any is left out, a notice in the bottom right
+// corner says how many ("left out for room: 2 labels, 5 tick numbers"), set
+// as a tick number.
+struct SceneLabels {
+    std::vector<std::optional<PlacedLabel>> placed; // each label's, in the order given; none where left out
+    std::optional<PlacedLabel> leftOut;
+};
+SceneLabels placeSceneLabels(const StageShown& stage, const FigureView& view, const std::vector<const Label*>& labels,
+                             const std::vector<Marker>& markers, const LabelMeasure& measure,
+                             const std::vector<Box2>& reserved);
 
 // The fixed axes of the coordinates a stage maps into, reaching `reach` each
 // way: the axes and their ticks (end points by pairs) and the labels naming
@@ -162,6 +223,10 @@ struct Figure {
     double fontSize = 20, lineScale = 1; // as the view's
     std::vector<FigureShape> shapes; // back to front
     std::vector<PlacedLabel> labels;
+    // Where the caption, legend and note go, and the legend's entries: for
+    // writers that draw them (TikZ draws the legend and note, its document the caption).
+    PictureLayout layout;
+    std::vector<const LegendEntry*> legend;
 };
 
 // The flat figure of a stage; `reserved`: boxes the writer keeps for its

@@ -23,6 +23,16 @@ Rgb faceColor(Theme theme);
 // An element's color: objects' surfaces take faceColor, everything else elementColor.
 Rgb styledColor(Element element, bool surface, Theme theme);
 Rgb backgroundColor(Theme theme, bool projectedView);
+// Text sizes in pixels. An exported picture sets its labels and captions at
+// least 2.4 % of its width and everything else (tick numbers, the legend, the
+// effects' note) at least 1.8 %: 8 pt and 6 pt when the picture is 12 cm
+// wide, a column of lecture notes or a 16:9 Beamer slide. `textScale` enlarges
+// both (1 is 100 %), as the app's Larger Text does. Labels are never under 10 px.
+constexpr double kLabelWidthShare = 0.024, kSmallWidthShare = 0.018;
+double exportLabelSize(int widthPixels, double textScale);
+// The smaller text beside labels of `labelSize`: three quarters, at least 8 px.
+double smallTextSize(double labelSize);
+
 // 0 to 255 a channel, as image data stores colors.
 std::array<unsigned char, 3> toBytes(const Rgb& color);
 

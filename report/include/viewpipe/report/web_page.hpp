@@ -36,6 +36,7 @@ struct WebStage {
     std::optional<Mat4<double>> ghost;
     double frameReach = 0;
     std::vector<PlacedLabel> labels;
+    PictureLayout layout; // where the caption, legend and note go, as in the PNG
 };
 
 struct WebPageViews {

@@ -1,0 +1,162 @@
+// Every built-in scene at every stage as the export draws it, at 1280x720 and
+// 800x450 with text at 100 % and 200 %, read as a person reads it: in the PNG
+// (the painter's text actors) and in the SVG (its text elements, measured in
+// the font they name). Every text inside the picture and on no other; at
+// 100 %, labels and captions at least 2.4 % of the width and every text at
+// least 1.8 % (8 pt and 6 pt when the picture is 12 cm wide).
+
+#include <gtest/gtest.h>
+
+#include <QFile>
+#include <QFont>
+#include <QFontMetricsF>
+#include <QXmlStreamReader>
+
+#include <cmath>
+#include <filesystem>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include <unistd.h>
+#if defined(__SANITIZE_ADDRESS__)
+#include <sanitizer/lsan_interface.h>
+#endif
+
+#include "drawn_texts.h"
+#include "export/Offscreen.h"
+#include "export/VectorFigure.h"
+
+namespace viewpipe::gui {
+namespace {
+
+namespace fs = std::filesystem;
+
+struct Shown {
+    int width, height, percent;
+};
+
+struct SvgText {
+    std::string text;
+    std::array<double, 4> box; // x0, x1, y0, y1, y down: the ink's
+    double size;
+    bool bold;
+};
+
+// The text elements of an SVG that QSvgGenerator wrote (each names its font; the groups' transforms are identities).
+std::vector<SvgText> svgTexts(const fs::path& file)
+{
+    QFile in(QString::fromStdString(file.string()));
+    EXPECT_TRUE(in.open(QIODevice::ReadOnly)) << file;
+    QXmlStreamReader xml(&in);
+    std::vector<SvgText> texts;
+    while (!xml.atEnd()) {
+        if (xml.readNext() != QXmlStreamReader::StartElement)
+            continue;
+        if (xml.name() == QLatin1String("g")) {
+            EXPECT_TRUE(xml.attributes().value("transform").isEmpty() ||
+                        xml.attributes().value("transform") == QLatin1String("matrix(1,0,0,1,0,0)"));
+        }
+        if (xml.name() != QLatin1String("text"))
+            continue;
+        const QXmlStreamAttributes a = xml.attributes();
+        const double x = a.value("x").toDouble(), y = a.value("y").toDouble(), size = a.value("font-size").toDouble();
+        const bool bold = a.value("font-weight").toInt() >= 600;
+        const QString text = xml.readElementText();
+        if (text.trimmed().isEmpty())
+            continue;
+        QFont font(a.value("font-family").toString());
+        font.setPixelSize(int(std::lround(size)));
+        font.setBold(bold);
+        const QRectF ink = QFontMetricsF(font).tightBoundingRect(text).translated(x, y);
+        texts.push_back({text.toStdString(), {ink.left(), ink.right(), ink.top(), ink.bottom()}, size, bold});
+    }
+    EXPECT_FALSE(xml.hasError()) << xml.errorString().toStdString();
+    return texts;
+}
+
+std::string where(const fs::path& scene, int k, const Shown& shown)
+{
+    return scene.filename().string() + " stage " + std::to_string(k) + " at " + std::to_string(shown.width) + "x" +
+           std::to_string(shown.height) + ", text " + std::to_string(shown.percent) + " %: ";
+}
+
+// Checks a picture's texts; `inset` pixels of ink may touch (antialiasing, rounding).
+void checkTexts(const std::vector<std::pair<std::string, std::array<double, 4>>>& boxes, const Shown& shown,
+                const std::string& at)
+{
+    constexpr double inset = 1;
+    for (std::size_t i = 0; i < boxes.size(); ++i) {
+        const auto& [text, box] = boxes[i];
+        EXPECT_TRUE(box[0] >= -inset && box[1] <= shown.width + inset && box[2] >= -inset && box[3] <= shown.height + inset)
+            << at << "\"" << text << "\" leaves the picture";
+        const std::array<double, 4> inner = {box[0] + inset, box[1] - inset, box[2] + inset, box[3] - inset};
+        for (std::size_t j = i + 1; j < boxes.size(); ++j)
+            EXPECT_FALSE(overlap(inner, boxes[j].second)) << at << "\"" << text << "\" overlaps \"" << boxes[j].first << "\"";
+    }
+}
+
+TEST(ExportLayout, EveryTextReadsInsideThePictureAndApart)
+{
+    const fs::path out = fs::temp_directory_path() / ("viewpipe-export-layout-" + std::to_string(::getpid()));
+    fs::create_directories(out);
+    int pictures = 0;
+    for (const auto& entry : fs::recursive_directory_iterator(fs::path(VIEWPIPE_DATA_DIR) / "scenes")) {
+        if (entry.path().extension() != ".json")
+            continue;
+        const auto scene = evaluateScene(loadScene(entry.path()));
+        const auto& stages = scene->pipeline.stages;
+        for (const Shown shown : {Shown{1280, 720, 100}, Shown{800, 450, 100}, Shown{1280, 720, 200}, Shown{800, 450, 200}}) {
+            const OffscreenPainter offscreen(scene, shown.width, shown.height, 1, Theme::Light, false, shown.percent / 100.0);
+            const double label = kLabelWidthShare * shown.width, small = kSmallWidthShare * shown.width;
+            for (std::size_t k = 0; k <= stages.size(); ++k) {
+                const std::string at = where(entry.path(), int(k), shown);
+                const std::string caption = stageCaption(*scene, k, StageText::Heading);
+                const StageShown stage = showStageAtRest(offscreen, *scene, int(k), caption, std::nullopt);
+
+                // The PNG: the painter's actors, y up.
+                const DrawnTexts drawn = drawnTexts(offscreen.renderer);
+                std::vector<std::pair<std::string, std::array<double, 4>>> boxes;
+                for (const DrawnText& t : drawn.texts) {
+                    boxes.emplace_back(t.text, t.box);
+                    EXPECT_GE(t.fontSize, (t.bold ? label : small) - 1e-9) << at << "\"" << t.text << "\"";
+                }
+                if (drawn.legend) {
+                    boxes.emplace_back("(legend)", *drawn.legend);
+                    EXPECT_GE(drawn.legendFontSize, small - 1e-9) << at << "the legend";
+                }
+                checkTexts(boxes, shown, at + "PNG: ");
+
+                // The SVG, y down.
+                const fs::path svg = out / "figure.svg";
+                writeVectorFigure({&stage, offscreen.painter->figureView(), caption, Theme::Light}, "svg", svg);
+                boxes.clear();
+                for (const SvgText& t : svgTexts(svg)) {
+                    boxes.emplace_back(t.text, t.box);
+                    EXPECT_GE(t.size, (t.bold ? label : small) - 1e-9) << at << "SVG \"" << t.text << "\"";
+                }
+                EXPECT_GT(boxes.size(), 3u) << at << "SVG";
+                checkTexts(boxes, shown, at + "SVG: ");
+                ++pictures;
+            }
+        }
+    }
+    EXPECT_GT(pictures, 400);
+    if (!::testing::Test::HasFailure())
+        fs::remove_all(out);
+}
+
+} // namespace
+} // namespace viewpipe::gui
+
+int main(int argc, char** argv)
+{
+    ::testing::InitGoogleTest(&argc, argv);
+    const int failed = RUN_ALL_TESTS();
+#if defined(__SANITIZE_ADDRESS__)
+    // Leaks are checked here, while every library is loaded (as the app's tests do, app_window.h).
+    if (__lsan_do_recoverable_leak_check())
+        return 1;
+#endif
+    return failed;
+}
