@@ -23,6 +23,10 @@
 #include <sanitizer/lsan_interface.h>
 #endif
 
+#include <vtkNew.h>
+#include <vtkRenderWindow.h>
+#include <vtkRenderer.h>
+
 #include "drawn_texts.h"
 #include "export/Offscreen.h"
 #include "export/VectorFigure.h"
@@ -152,6 +156,14 @@ TEST(ExportLayout, EveryTextReadsInsideThePictureAndApart)
 int main(int argc, char** argv)
 {
     ::testing::InitGoogleTest(&argc, argv);
+    // One window open throughout keeps Mesa's driver loaded: each picture's window would otherwise load and
+    // unload it, and its caches would be reported from an unloaded module that no suppression can name.
+    vtkNew<vtkRenderWindow> keeper;
+    vtkNew<vtkRenderer> keeperRenderer;
+    keeper->SetOffScreenRendering(1);
+    keeper->SetSize(16, 16);
+    keeper->AddRenderer(keeperRenderer);
+    keeper->Render();
     const int failed = RUN_ALL_TESTS();
 #if defined(__SANITIZE_ADDRESS__)
     // Leaks are checked here, while every library is loaded (as the app's tests do, app_window.h).
