@@ -334,7 +334,7 @@ void ScenePainter::fitCaptions()
     const int* size = world_->GetSize();
     PictureText text;
     text.fontSize = fontSize_;
-    text.minFontSize = minFontSize_ > 0 ? minFontSize_ : fontSize_;
+    text.minFontSize = minFontSize();
     text.caption = worldCaptionText_;
     text.note = effectsCaption_->GetVisibility() ? effectsNote_ : "";
     if (scene_)
@@ -360,7 +360,7 @@ FigureView ScenePainter::figureView() const
     view.height = world_->GetSize()[1];
     view.frameReach = framed_.center.norm() + 1.5 * framed_.radius;
     view.fontSize = fontSize_;
-    view.minFontSize = minFontSize_ > 0 ? minFontSize_ : fontSize_;
+    view.minFontSize = minFontSize();
     view.lineScale = lineScale_;
     return view;
 }
@@ -775,7 +775,7 @@ void ScenePainter::applyStyle()
     legendFontSize_ = 0; // filled anew in the theme's colors
     fitCaptions();
     if (projected_)
-        projected_->applyStyle(theme_, fontSize_, minFontSize_ > 0 ? minFontSize_ : fontSize_);
+        projected_->applyStyle(theme_, fontSize_, minFontSize());
 }
 
 } // namespace viewpipe::gui

@@ -175,6 +175,7 @@ private:
     Theme theme_ = Theme::Dark;
     int fontSize_ = 18;
     int minFontSize_ = 0; // 0: as fontSize_
+    int minFontSize() const { return minFontSize_ > 0 ? minFontSize_ : fontSize_; }
     double legendFontSize_ = 0; // the label size the legend was last filled for; 0: to be filled
     double lineScale_ = 1;
     double canonicalOpacity_ = 0;
