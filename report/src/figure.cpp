@@ -333,22 +333,6 @@ LegendRow legendRow(const PictureLayout& layout, std::size_t k)
     return row;
 }
 
-bool Box2::overlaps(const Box2& other) const
-{
-    return min.x() < other.max.x() && other.min.x() < max.x() && min.y() < other.max.y() && other.min.y() < max.y();
-}
-
-bool Box2::contains(const Box2& other) const
-{
-    return min.x() <= other.min.x() && min.y() <= other.min.y() && other.max.x() <= max.x() &&
-           other.max.y() <= max.y();
-}
-
-Box2 Box2::grown(double by) const
-{
-    return {min - Vec2d::Constant(by), max + Vec2d::Constant(by)};
-}
-
 bool isProjective(const Mat4<double>& m)
 {
     return m(3, 0) != 0 || m(3, 1) != 0 || m(3, 2) != 0 || m(3, 3) != 1;
@@ -416,8 +400,7 @@ std::vector<std::optional<PlacedLabel>> placeLabels(const std::vector<LabelReque
     // Directions to try, the customary up-right first.
     const std::array<Vec2d, 8> directions = {{{1, -1}, {1, 0}, {1, 1}, {0, -1}, {-1, -1}, {-1, 0}, {-1, 1}, {0, 1}}};
     const std::array<double, 6> distances = {4, 24, 48, 80, 130, 200}; // pixels; from the second on, with a leader
-    std::vector<Box2> taken = obstacles.reserved;
-    const std::size_t reserved = taken.size(); // captions and legends: no leader ever crosses them
+    const std::size_t reserved = obstacles.reserved.size(); // captions and legends: no leader ever crosses them
     const double farthest = 0.3 * std::hypot(width, height); // a leader longer than this would pile labels up
     std::vector<std::optional<PlacedLabel>> placed(requests.size());
 
@@ -431,6 +414,15 @@ std::vector<std::optional<PlacedLabel>> placeLabels(const std::vector<LabelReque
         return c;
     };
     std::vector<Segment2> leaders; // of the labels placed so far
+    // The boxes taken (the reserved ones first, then each label's), grown by the padding (no label within) and by a pixel (no leader through);
+    // made once, as the crowded search below asks of every box taken for thousands of places.
+    std::vector<Box2> padded, cleared;
+    auto take = [&](const Box2& box) {
+        padded.push_back(box.grown(kPadding));
+        cleared.push_back(box.grown(1));
+    };
+    for (const Box2& box : obstacles.reserved)
+        take(box);
     // Free: inside the picture, off every box taken and (while leaders are
     // kept apart) every leader drawn; with a leader to `anchor`, that leader
     // crosses no box taken either.
@@ -438,18 +430,23 @@ std::vector<std::optional<PlacedLabel>> placeLabels(const std::vector<LabelReque
     auto free = [&](const Box2& box, const std::optional<Vec2d>& anchor) {
         if (!picture.contains(box))
             return false;
-        const Segment2 leader = {anchor.value_or(box.min), anchor ? box.nearest(*anchor) : box.min};
-        if (anchor && (leader[1] - leader[0]).norm() > farthest)
-            return false;
-        for (std::size_t k = 0; k < taken.size(); ++k) {
-            const Box2& other = taken[k];
-            if (box.overlaps(other.grown(kPadding)) ||
-                (anchor && (leadersApart || k < reserved) && segmentCrossesBox(leader, other.grown(1))))
+        for (const Box2& other : padded)
+            if (box.overlaps(other))
                 return false;
+        if (anchor) {
+            const Segment2 leader = {*anchor, box.nearest(*anchor)};
+            if ((leader[1] - leader[0]).norm() > farthest)
+                return false;
+            for (std::size_t k = 0; k < cleared.size() && (leadersApart || k < reserved); ++k)
+                if (segmentCrossesBox(leader, cleared[k]))
+                    return false;
         }
-        for (const Segment2& line : leaders)
-            if (leadersApart && segmentCrossesBox(line, box.grown(1)))
-                return false;
+        if (leadersApart) {
+            const Box2 clear = box.grown(1);
+            for (const Segment2& line : leaders)
+                if (segmentCrossesBox(line, clear))
+                    return false;
+        }
         return true;
     };
 
@@ -495,7 +492,7 @@ std::vector<std::optional<PlacedLabel>> placeLabels(const std::vector<LabelReque
         }
         leadersApart = true;
         if (best) {
-            taken.push_back(*best);
+            take(*best);
             if (bestLeader)
                 leaders.push_back({r.anchor, best->nearest(r.anchor)});
             placed[k] = PlacedLabel{r.element, r.text, r.anchor, *best, bestLeader, r.minor};

@@ -20,9 +20,16 @@ namespace viewpipe {
 // A rectangle in picture coordinates: pixels, origin top-left, y down.
 struct Box2 {
     Vec2<double> min = Vec2<double>::Zero(), max = Vec2<double>::Zero();
-    bool overlaps(const Box2& other) const;
-    bool contains(const Box2& other) const;
-    Box2 grown(double by) const;
+    bool overlaps(const Box2& other) const
+    {
+        return min.x() < other.max.x() && other.min.x() < max.x() && min.y() < other.max.y() && other.min.y() < max.y();
+    }
+    bool contains(const Box2& other) const
+    {
+        return min.x() <= other.min.x() && min.y() <= other.min.y() && other.max.x() <= max.x() &&
+               other.max.y() <= max.y();
+    }
+    Box2 grown(double by) const { return {min - Vec2<double>::Constant(by), max + Vec2<double>::Constant(by)}; }
     bool isEmpty() const { return !(max.x() > min.x() && max.y() > min.y()); }
     // The box's point nearest `p`: where a leader line from p meets it.
     Vec2<double> nearest(const Vec2<double>& p) const { return p.cwiseMax(min).cwiseMin(max); }
