@@ -154,7 +154,7 @@ std::string describeEffects(const EffectList& effects, const EffectOutcomes& out
             note << "clip: " << s.inside << " edges inside, " << s.clipped << " cut, " << s.outside
                  << " outside (ghosted)\n";
         } else if (effect == EffectKind::Divide) {
-            note << (divideAddsStage(pipeline) ? "divide: stage " + pipeline.stages.back().symbol + " appended\n"
+            note << (divideAddsStage(pipeline) ? "divide: stage $" + symbolMath(pipeline.stages.back().symbol) + "$ appended\n"
                                                : std::string("divide: none needed (parallel)\n"));
         } else if (effect == EffectKind::Cull && outcomes.cull) {
             note << "cull: " << outcomes.cull->culled << " of " << outcomes.cull->faces << " faces (ghosted)\n";
@@ -373,7 +373,7 @@ ObjectsShown addObjects(Builder& add, const EvaluatedScene& out)
     return shown;
 }
 
-// The canonical volume's planes, named on their faces: x = -z ... z = z_min for
+// The canonical volume's planes, named on their faces (math): x = -z ... z = z_min for
 // Foley's perspective volume, x = 1 ... z = 0 for its parallel one, and the
 // cube of normalized device coordinates for OpenGL; and two of its corners.
 void addCanonicalLabels(Builder& add, const Pipeline<double>& pipeline, const ViewSetup<double>& setup)
@@ -390,23 +390,23 @@ void addCanonicalLabels(Builder& add, const Pipeline<double>& pipeline, const Vi
     // A camera's planes are named by where its API puts them: z from its depth
     // range, and top and bottom because Vulkan's y points down.
     auto plane = [&](const char* axis, double value, const char* end) {
-        return std::string(axis) + " = " + formatSignificant(value, 3) +
+        return "$" + std::string(axis) + " = " + formatSignificant(value, 3) + "$" +
                (foley || !*end ? "" : std::string(" (") + end + ")");
     };
     const std::vector<std::pair<std::string, Vec3<double>>> planes = {
-        {perspective ? "x = -z" : plane("x", c[1].x(), ""), center({1, 2, 5, 6})},
-        {perspective ? "x = z" : plane("x", c[0].x(), ""), center({0, 3, 4, 7})},
-        {perspective ? "y = -z" : plane("y", c[2].y(), "image top"), center({2, 3, 6, 7})},
-        {perspective ? "y = z" : plane("y", c[0].y(), "image bottom"), center({0, 1, 4, 5})},
-        {perspective ? "z = z_min" : plane("z", c[0].z(), "near"), center({0, 1, 2, 3})},
+        {perspective ? "$x = -z$" : plane("x", c[1].x(), ""), center({1, 2, 5, 6})},
+        {perspective ? "$x = z$" : plane("x", c[0].x(), ""), center({0, 3, 4, 7})},
+        {perspective ? "$y = -z$" : plane("y", c[2].y(), "image top"), center({2, 3, 6, 7})},
+        {perspective ? "$y = z$" : plane("y", c[0].y(), "image bottom"), center({0, 1, 4, 5})},
+        {perspective ? "$z = z_{\\min}$" : plane("z", c[0].z(), "near"), center({0, 1, 2, 3})},
         {plane("z", c[4].z(), "far"), center({4, 5, 6, 7})}};
     for (const auto& [text, anchor] : planes)
         add.label(Element::Canonical, text, anchor, true);
     // Two opposite corners with their coordinates: the front face's upper right, the back face's lower left.
     for (const std::size_t k : {std::size_t(2), std::size_t(4)})
         add.label(Element::Canonical,
-                  "(" + formatSignificant(c[k].x(), 3) + ", " + formatSignificant(c[k].y(), 3) + ", " +
-                      formatSignificant(c[k].z(), 3) + ")",
+                  "$(" + formatSignificant(c[k].x(), 3) + ", " + formatSignificant(c[k].y(), 3) + ", " +
+                      formatSignificant(c[k].z(), 3) + ")$",
                   c[k], true);
 }
 
@@ -422,9 +422,9 @@ void addSetUp(Builder& add, const EvaluatedScene& out, bool farCut)
               {{o, Vec3<double>::UnitX() * worldAxis}, {o, Vec3<double>::UnitY() * worldAxis},
                {o, Vec3<double>::UnitZ() * worldAxis}},
               1.0);
-    add.label(Element::WorldAxes, "x", Vec3<double>::UnitX() * worldAxis);
-    add.label(Element::WorldAxes, "y", Vec3<double>::UnitY() * worldAxis);
-    add.label(Element::WorldAxes, "z", Vec3<double>::UnitZ() * worldAxis);
+    add.label(Element::WorldAxes, "$x$", Vec3<double>::UnitX() * worldAxis);
+    add.label(Element::WorldAxes, "$y$", Vec3<double>::UnitY() * worldAxis);
+    add.label(Element::WorldAxes, "$z$", Vec3<double>::UnitZ() * worldAxis);
 
     const bool foley = out.pipeline.convention == Convention::Foley;
     const Vec3<double>& vrp = setup.origin;
@@ -435,9 +435,9 @@ void addSetUp(Builder& add, const EvaluatedScene& out, bool farCut)
                {vrp, vrp + setup.axes.v * axis},
                {vrp, vrp + mirror * setup.axes.n * axis}},
               1.0);
-    add.label(Element::ViewAxes, foley ? "u" : "s", vrp + mirror * setup.axes.u * axis);
-    add.label(Element::ViewAxes, foley ? "v" : "u", vrp + setup.axes.v * axis);
-    add.label(Element::ViewAxes, foley ? "n" : setup.leftHanded ? "f" : "-f", vrp + mirror * setup.axes.n * axis);
+    add.label(Element::ViewAxes, foley ? "$u$" : "$s$", vrp + mirror * setup.axes.u * axis);
+    add.label(Element::ViewAxes, foley ? "$v$" : "$u$", vrp + setup.axes.v * axis);
+    add.label(Element::ViewAxes, foley ? "$n$" : setup.leftHanded ? "$f$" : "$-f$", vrp + mirror * setup.axes.n * axis);
     if (foley)
         add.label(Element::ViewAxes, "VRP", vrp);
 
@@ -467,8 +467,8 @@ void addSetUp(Builder& add, const EvaluatedScene& out, bool farCut)
     add.faces(Element::FrontPlane, quad(v[0], v[1], v[2], v[3]), 0.22);
     if (!farCut) // a volume cut short has no far face: its end stays open
         add.faces(Element::BackPlane, quad(v[4], v[5], v[6], v[7]), 0.22);
-    add.label(Element::FrontPlane, foley ? "front (F)" : "near", v[3]);
-    add.label(Element::BackPlane, foley ? "back (B)" : farCut ? "far at infinity (volume cut)" : "far", v[7]);
+    add.label(Element::FrontPlane, foley ? "front ($F$)" : "near", v[3]);
+    add.label(Element::BackPlane, foley ? "back ($B$)" : farCut ? "far at infinity (volume cut)" : "far", v[7]);
     add.label(Element::Window, foley ? "window" : "", (setup.window[2] + setup.window[3]) / 2);
 
     std::vector<Segment> projectors;
@@ -494,20 +494,20 @@ void fillLegends(EvaluatedScene& out, const ObjectsShown& shown, bool farCut)
     if (out.bands)
         effectEntries.push_back({"depth bands, near to far", Element::Objects, Swatch::Bands});
     auto& world = out.worldLegend;
-    world = {{foley                     ? "VRP and the VRC axes u, v, n"
-              : out.setup.leftHanded ? "eye axes s = up \u00d7 f, u, f (left-handed)"
-                                     : "eye axes s, u, -f",
+    world = {{foley                     ? "VRP and the VRC axes $u, v, n$"
+              : out.setup.leftHanded ? "eye axes $s = \\mathit{up} \\times f$, $u, f$ (left-handed)"
+                                     : "eye axes $s, u, -f$",
               Element::ViewAxes, Swatch::Line}};
     if (out.setup.perspective)
         world.push_back(
             {foley ? "PRP, center of projection" : "eye, center of projection", Element::Prp, Swatch::Dot});
     world.insert(world.end(), {{"window and its center CW", Element::Window, Swatch::Line},
                                {"DOP, direction of projection", Element::Dop, Swatch::Line},
-                               {foley   ? "view volume, back plane (B)"
+                               {foley   ? "view volume, back plane ($B$)"
                                 : farCut ? "view volume, cut short of its far plane at infinity"
                                          : "view volume, far plane",
                                 Element::Volume, Swatch::Line},
-                               {foley ? "front plane (F)" : "near plane", Element::FrontPlane, Swatch::Face},
+                               {foley ? "front plane ($F$)" : "near plane", Element::FrontPlane, Swatch::Face},
                                {"projectors", Element::Projectors, Swatch::Line},
                                {"canonical view volume", Element::Canonical, Swatch::Line}});
     world.insert(world.end(), effectEntries.begin(), effectEntries.end());
@@ -557,9 +557,9 @@ std::vector<std::string> stageClaims(const Pipeline<double>& pipeline, const Vie
         facts.push_back({"PRP at the origin", atOrigin(s.prp)});
     const Mat3<double> eyeRows = s.leftHanded ? Mat3<double>(Vec3<double>(-1, 1, -1).asDiagonal() * s.axes.rotation())
                                               : s.axes.rotation();
-    facts.push_back({foley          ? "u, v, n along x, y, z"
-                     : s.leftHanded ? "s, u, f along x, y, z: the eye looks down +z"
-                                    : "s, u, -f along x, y, -z: the eye looks down -z",
+    facts.push_back({foley          ? "$u, v, n$ along $x, y, z$"
+                     : s.leftHanded ? "$s, u, f$ along $x, y, z$: the eye looks down $+z$"
+                                    : "$s, u, -f$ along $x, y, -z$: the eye looks down $-z$",
                      [&](const Image& image) {
                          const std::optional<V> o = image(s.origin);
                          for (int k = 0; k < 3 && o; ++k) {
@@ -569,19 +569,19 @@ std::vector<std::string> stageClaims(const Pipeline<double>& pipeline, const Vie
                          }
                          return o.has_value();
                      }});
-    facts.push_back({"DOP along the z axis", [&](const Image& image) {
+    facts.push_back({"DOP along the $z$ axis", [&](const Image& image) {
                          const std::optional<V> from = image(s.prp), to = image(s.windowCenter);
                          return from && to && same(from->x(), to->x()) && same(from->y(), to->y()) &&
                                 !same(from->z(), to->z());
                      }});
     if (s.perspective)
-        facts.push_back({"sides on x = \u00b1z, y = \u00b1z", [&](const Image& image) {
+        facts.push_back({"sides on $x = \\pm z$, $y = \\pm z$", [&](const Image& image) {
                              return corners(image, [&](const V& c, std::size_t) {
                                  return same(std::abs(c.x()), std::abs(c.z())) && same(std::abs(c.y()), std::abs(c.z()));
                              });
                          }});
     if (s.perspective && foley && pipeline.zmin)
-        facts.push_back({"back at z = -1, front at z_min = " + formatSignificant(*pipeline.zmin, 3),
+        facts.push_back({"back at $z = -1$, front at $z_{\\min} = " + formatSignificant(*pipeline.zmin, 3) + "$",
                          [&](const Image& image) {
                              return corners(image, [&](const V& c, std::size_t k) {
                                  return same(c.z(), k < 4 ? *pipeline.zmin : -1.0);
@@ -600,7 +600,7 @@ std::vector<std::string> stageClaims(const Pipeline<double>& pipeline, const Vie
                              return same(sum.norm() / (foley ? 4 : 8), 0);
                          }});
     if (!s.perspective && foley)
-        facts.push_back({"the volume is -1 \u2264 x, y \u2264 1, -1 \u2264 z \u2264 0", [&](const Image& image) {
+        facts.push_back({"the volume is $-1 \\le x, y \\le 1$, $-1 \\le z \\le 0$", [&](const Image& image) {
                              return corners(image, [&](const V& c, std::size_t k) {
                                  return same(std::abs(c.x()), 1) && same(std::abs(c.y()), 1) && same(c.z(), k < 4 ? 0 : -1);
                              });
@@ -624,13 +624,13 @@ std::vector<std::string> stageClaims(const Pipeline<double>& pipeline, const Vie
         std::array<V, 8> cube;
         for (std::size_t k = 0; k < 8; ++k)
             cube[k] = V((k % 4 == 1 || k % 4 == 2) ? 1 : -1, k % 4 >= 2 ? 1 : -1, k < 4 ? -1 : 1);
-        facts.push_back({"the volume is the cube -1 \u2264 x, y, z \u2264 1: near at z = -1, far at z = 1" + cut,
+        facts.push_back({"the volume is the cube $-1 \\le x, y, z \\le 1$: near at $z = -1$, far at $z = 1$" + cut,
                          volumeIs(cube)});
         if (s.canonical != cube) {
             const double nearZ = s.canonical[0].z(), farZ = s.canonical[4].z();
-            facts.push_back({"the volume is -1 \u2264 x, y \u2264 1, " + formatSignificant(std::min(nearZ, farZ), 3) +
-                                 " \u2264 z \u2264 " + formatSignificant(std::max(nearZ, farZ), 3) +
-                                 (s.canonical[0].y() > 0 ? "; y points down in the image" : "") + cut,
+            facts.push_back({"the volume is $-1 \\le x, y \\le 1$, $" + formatSignificant(std::min(nearZ, farZ), 3) +
+                                 " \\le z \\le " + formatSignificant(std::max(nearZ, farZ), 3) + "$" +
+                                 (s.canonical[0].y() > 0 ? "; $y$ points down in the image" : "") + cut,
                              volumeIs(s.canonical)});
         }
     }

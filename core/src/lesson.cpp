@@ -1,4 +1,5 @@
 #include "viewpipe/lesson.hpp"
+#include "viewpipe/math_text.hpp"
 
 #include <algorithm>
 #include <cctype>
@@ -40,32 +41,13 @@ int readIndex(const Json& j, const std::string& path, int low, int high)
     return int(k);
 }
 
-// Inline math between unescaped dollar signs must close.
+// Text with inline math: the math within the subset every renderer sets (math_text.hpp).
 std::string readCaption(const Json& j, const std::string& path, bool required)
 {
     const std::string text = readString(j, path);
     if (required && text.find_first_not_of(" \t\n") == std::string::npos)
         throw InputError(path, "is empty");
-    // Math that closes, with its braces in pairs: what KaTeX and pdflatex both read.
-    bool math = false;
-    int depth = 0;
-    std::size_t opened = 0;
-    for (std::size_t k = 0; k < text.size(); ++k) {
-        const bool escaped = k > 0 && text[k - 1] == '\\';
-        if (text[k] == '$' && !escaped) {
-            if (math && depth != 0)
-                throw InputError(path, "has math whose braces do not pair up: " + text.substr(opened, k + 1 - opened));
-            math = !math;
-            opened = k;
-            depth = 0;
-        } else if (math && !escaped && (text[k] == '{' || text[k] == '}')) {
-            depth += text[k] == '{' ? 1 : -1;
-            if (depth < 0)
-                throw InputError(path, "has math whose braces do not pair up: " + text.substr(opened, k + 1 - opened));
-        }
-    }
-    if (math)
-        throw InputError(path, "has a $ that opens math and none that closes it (write \\$ for a dollar sign)");
+    checkMathText(text, path);
     return text;
 }
 

@@ -1,15 +1,19 @@
 #include "GuideDialog.h"
+#include "MathText.h"
 
 #include <QDialogButtonBox>
 #include <QPushButton>
+#include <QRegularExpression>
 #include <QTextBrowser>
 #include <QVBoxLayout>
+
+#include "viewpipe/math_text.hpp"
 
 namespace viewpipe::gui {
 namespace {
 
-// The stage symbols are written as the stage list shows them, so that a
-// student can find each one here.
+// The stage symbols are written as the stage's symbol (SH_per), set as math
+// below, as the stage list sets them, so that a student can find each one here.
 QString guideHtml()
 {
     return GuideDialog::tr(R"(
@@ -82,16 +86,16 @@ volume: x and y from -1 to 1, z from 0 to -1.</li>
 <h3>The OpenGL forms</h3>
 <p>An OpenGL camera starts with the view transformation of gluLookAt:
 <b>T(-eye)</b> translates the eye to the origin and <b>R_eye</b> rotates so
-that the view direction becomes -z (rows s, u, -f). The projection follows:</p>
+that the view direction becomes &minus;<i>z</i> (rows <i>s</i>, <i>u</i>, &minus;<i>f</i>). The projection follows:</p>
 <ul>
-<li>gluPerspective: <b>S_fovy</b> scales x and y so that the field of view
-becomes 90 degrees, then <b>P_depth</b>, the perspective matrix: w = -z, and
-near..far mapped to -1..1 after the divide.</li>
-<li>glFrustum: <b>SH_frustum</b> shears the frustum's center line onto the -z
-axis, <b>S_frustum</b> scales its sides to x = &plusmn;z, y = &plusmn;z, then
+<li>gluPerspective: <b>S_fovy</b> scales <i>x</i> and <i>y</i> so that the field of view
+becomes 90&deg;, then <b>P_depth</b>, the perspective matrix: <i>w</i> = &minus;<i>z</i>, and
+near to far mapped to &minus;1 to 1 after the divide.</li>
+<li>glFrustum: <b>SH_frustum</b> shears the frustum's center line onto the &minus;<i>z</i>
+axis, <b>S_frustum</b> scales its sides to <i>x</i> = &plusmn;<i>z</i>, <i>y</i> = &plusmn;<i>z</i>, then
 <b>P_depth</b>.</li>
 <li>glOrtho: <b>T_ortho</b> moves the center of the view box to the origin and
-<b>S_ortho</b> scales the box to the cube [-1, 1]&sup3;, flipping z.</li>
+<b>S_ortho</b> scales the box to the cube [&minus;1, 1]&sup3;, flipping <i>z</i>.</li>
 </ul>
 <p>With the Divide effect an OpenGL camera gains the stage <b>divide</b>:
 clip coordinates become normalized device coordinates (NDC).</p>
@@ -101,12 +105,12 @@ clip coordinates become normalized device coordinates (NDC).</p>
 "api", "handedness" and "depth") give the same camera another API's
 conventions, as extra stages around OpenGL's projection:</p>
 <ul>
-<li><b>Z_flip</b>, after R_eye for a left-handed camera (XMMatrixLookAtLH,
-glm::lookAtLH: the eye looks down +z): z is mirrored so that the projection's
+<li><b>Z_flip</b>, after <b>R_eye</b> for a left-handed camera (XMMatrixLookAtLH,
+glm::lookAtLH: the eye looks down +<i>z</i>): <i>z</i> is mirrored so that the projection's
 stages apply.</li>
 <li><b>NDC_direct3d</b>, <b>NDC_vulkan</b>, <b>NDC_metal</b>,
 <b>NDC_webgpu</b>: OpenGL's clip coordinates to the API's, depth from 0 (near)
-to 1 (far), and for Vulkan y' = -y; with reversed depth near goes to 1 and far
+to 1 (far), and for Vulkan <i>y</i>&prime; = &minus;<i>y</i>; with reversed depth near goes to 1 and far
 to 0, and the stage is <b>NDC_direct3d_reversed</b>, <b>NDC_vulkan_reversed</b>,
 <b>NDC_metal_reversed</b> or <b>NDC_webgpu_reversed</b> (OpenGL's own reversed
 depth: <b>NDC_reversed</b>).</li>
@@ -203,6 +207,18 @@ Text</b> change the size of all text, in the views too.</p>
 )");
 }
 
+// The guide with each bold stage symbol (<b>SH_per</b>) set as the stage list sets it, as math.
+QString guideWithSymbols()
+{
+    QString html = guideHtml();
+    static const QRegularExpression symbol(R"(<b>([A-Z][A-Za-z]*(?:_[a-z0-9_]+|\(-[A-Za-z]+\))?)</b>)");
+    for (QRegularExpressionMatch m = symbol.match(html); m.hasMatch(); m = symbol.match(html, m.capturedStart() + 1)) {
+        const QString math = "<b>" + mathHtml("$" + symbolMath(m.captured(1).toStdString()) + "$") + "</b>";
+        html.replace(m.capturedStart(), m.capturedLength(), math);
+    }
+    return html;
+}
+
 } // namespace
 
 GuideDialog::GuideDialog(QWidget* parent) : QDialog(parent)
@@ -213,7 +229,7 @@ GuideDialog::GuideDialog(QWidget* parent) : QDialog(parent)
     auto* layout = new QVBoxLayout(this);
     browser_ = new QTextBrowser;
     browser_->setObjectName("guideText");
-    browser_->setHtml(guideHtml());
+    browser_->setHtml(guideWithSymbols());
     layout->addWidget(browser_);
     auto* buttons = new QDialogButtonBox(QDialogButtonBox::Close);
     buttons->button(QDialogButtonBox::Close)->setToolTip(tr("Close the guide"));

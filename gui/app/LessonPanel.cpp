@@ -23,6 +23,7 @@
 #include "LessonDocument.h"
 #include "MathText.h"
 #include "MatrixPanel.h"
+#include "viewpipe/math_text.hpp"
 #include "viewpipe/pipeline.hpp"
 #include "viewpipe/report/latex.hpp"
 #include "viewpipe/report/lesson_latex.hpp"
@@ -32,7 +33,7 @@ namespace {
 
 QString symbolHtml(const std::string& symbol)
 {
-    return mathHtml("$" + cli::latexSymbol(symbol) + "$");
+    return mathHtml("$" + symbolMath(symbol) + "$");
 }
 
 // A choice's text beside its radio button, wrapped and with its math set; a click on it picks the choice.
@@ -424,16 +425,19 @@ void LessonPanel::buildInputs()
         break;
     }
     case QuestionKind::Entry:
-        layout->addWidget(line("answerEntry", tr("e.g. -2/21 or -0.0952")));
+        layout->addWidget(line("answerEntry", tr("a fraction p/q or a decimal"))); // no number: one could be the answer
         break;
     case QuestionKind::Order: {
         auto* list = new FittedList;
         list->setObjectName("orderList");
+        list->setItemDelegate(new MathItemDelegate(list));
         list->setDragDropMode(QAbstractItemView::InternalMove);
         list->setToolTip(tr("Drag the stages into the order they apply to a point, first at the top"));
         for (int c : offeredChoices(q)) {
-            auto* item = new QListWidgetItem(QString::fromStdString(q.choices[std::size_t(c)]));
+            const std::string& symbol = q.choices[std::size_t(c)];
+            auto* item = new QListWidgetItem(QString::fromStdString(symbol));
             item->setData(Qt::UserRole, c);
+            item->setData(MathItemDelegate::kMathRole, QString::fromStdString("$" + symbolMath(symbol) + "$"));
             list->addItem(item);
         }
         list->setVerticalScrollBarPolicy(Qt::ScrollBarAlwaysOff);

@@ -50,6 +50,7 @@
 #include "GuideDialog.h"
 #include "LessonDocument.h"
 #include "LessonPanel.h"
+#include "MathText.h"
 #include "viewpipe/report/latex.hpp"
 #include "MatrixPanel.h"
 #include "CodePanel.h"
@@ -171,6 +172,7 @@ void MainWindow::buildDocks()
     stageList_ = new QListWidget;
     stageList_->setObjectName("stageList");
     stageList_->setWordWrap(true);
+    stageList_->setItemDelegate(new MathItemDelegate(stageList_));
     stageList_->setToolTip(tr("The stages of the normalizing transformation: pick one to see the scene after its matrix"));
     v->addWidget(stageList_);
     stagesWait_ = new QLabel(tr("<i>The stages' names follow the answer to the lesson's question.</i>"));
@@ -710,7 +712,12 @@ void MainWindow::refreshWidgets()
     const QSignalBlocker blockSlider(slider_);
     stageList_->clear();
     for (std::size_t k = 0; k <= stages.size(); ++k)
-        stageList_->addItem(QString::fromStdString(stageText(stages, k, StageText::ListEntry)));
+    {
+        const std::string entry = stageText(stages, k, StageText::ListEntry);
+        auto* item = new QListWidgetItem(QString::fromStdString(mathPlainText(entry)));
+        item->setData(MathItemDelegate::kMathRole, QString::fromStdString(entry));
+        stageList_->addItem(item);
+    }
     slider_->setRange(0, stageCount());
     animation_->stop();
     transition_.reset();

@@ -1,180 +1,75 @@
 #include "MathText.h"
 
-#include <QHash>
-#include <QRegularExpression>
+#include <QAbstractItemView>
+#include <QApplication>
+#include <QPainter>
+#include <QTextDocument>
 
-#include <cctype>
+#include <cmath>
+
+#include "viewpipe/error.hpp"
+#include "viewpipe/math_text.hpp"
 
 namespace viewpipe::gui {
-namespace {
-
-const QHash<QString, QString>& signs()
-{
-    static const QHash<QString, QString> table = {
-        {"alpha", "α"},  {"beta", "β"},   {"gamma", "γ"},   {"delta", "δ"},  {"epsilon", "ε"}, {"theta", "θ"},
-        {"lambda", "λ"}, {"mu", "μ"},     {"pi", "π"},      {"rho", "ρ"},    {"sigma", "σ"},   {"tau", "τ"},
-        {"phi", "φ"},    {"omega", "ω"},  {"Delta", "Δ"},   {"Theta", "Θ"},  {"Pi", "Π"},      {"Phi", "Φ"},
-        {"approx", "≈\u200b"}, {"cdot", "·\u200b"},   {"times", "×\u200b"},   {"le", "≤"},     {"leq", "≤"},     {"ge", "≥"},
-        {"geq", "≥"},    {"ne", "≠"},     {"neq", "≠"},     {"to", "→"},     {"rightarrow", "→"}, {"mapsto", "↦"},
-        {"infty", "∞"},  {"pm", "±"},     {"circ", "°"},    {"ldots", "…"},  {"dots", "…"},    {"cdots", "⋯"},
-        {"in", "∈"},     {"quad", "\u2003"}, {"qquad", "\u2003\u2003"}, {",", "\u2009"}, {";", "\u2005"},
-        {":", "\u2005"}, {"!", ""},       {"{", "{"},       {"}", "}"},      {"$", "$"},       {"%", "%"},
-        {"left", ""},    {"right", ""},   {"|", "‖"},       {"lvert", "|"},  {"rvert", "|"},   {"equiv", "≡"},
-        {"sim", "∼"},    {"perp", "⊥"},   {"parallel", "∥"}, {"prime", "′"}};
-    return table;
-}
-
-// Reads math left to right: a group up to its closing brace, scripts and commands with their arguments.
-class MathReader {
-public:
-    explicit MathReader(const QString& math) : math_(math) {}
-    QString read() { return group(false); }
-
-private:
-    // Nesting deeper than any lesson's math (a hostile file's thousands of braces) is shown as written.
-    static constexpr int kMaxDepth = 50;
-    struct Deeper {
-        explicit Deeper(int& depth) : depth_(depth) { ++depth_; }
-        ~Deeper() { --depth_; }
-        int& depth_;
-    };
-    QString rest()
-    {
-        const QString written = math_.mid(at_).toHtmlEscaped();
-        at_ = int(math_.size());
-        return written;
-    }
-
-    QString group(bool braced)
-    {
-        const Deeper deeper(depth_);
-        if (depth_ > kMaxDepth)
-            return rest();
-        QString out;
-        while (at_ < math_.size()) {
-            const QChar c = math_[at_];
-            if (c == '}') {
-                ++at_;
-                if (braced)
-                    return out;
-                continue;
-            }
-            if (c == '{') {
-                ++at_;
-                out += group(true);
-            } else if (c == '_' || c == '^') {
-                ++at_;
-                const QString script = argument();
-                out += script == "°" ? script : QString(c == '_' ? "<sub>%1</sub>" : "<sup>%1</sup>").arg(script);
-            } else if (c == '\\') {
-                out += command();
-            } else if (c.isLetter()) {
-                int end = at_;
-                while (end < math_.size() && math_[end].isLetter())
-                    ++end;
-                out += "<i>" + math_.mid(at_, end - at_) + "</i>";
-                at_ = end;
-            } else if (c == '-') {
-                out += "−";
-                ++at_;
-            } else if (c == '<' || c == '>' || c == '&') {
-                out += QString(c).toHtmlEscaped();
-                ++at_;
-            } else if (c.isSpace()) {
-                ++at_; // math ignores spaces; its own are commands
-            } else {
-                // Spaced as math spaces them: relations and sums both sides, a comma after.
-                out += (c == '=' || c == '+') ? QString("\u2009%1\u2009").arg(c) : c == ',' ? QString(", ") : QString(c);
-                if (c == '=' || c == '+')
-                    out += "\u200b"; // a line may break here, as KaTeX breaks long math
-                ++at_;
-            }
-        }
-        return out;
-    }
-
-    // One character or one braced group or one command, as a script or an argument takes it.
-    QString argument()
-    {
-        while (at_ < math_.size() && math_[at_].isSpace())
-            ++at_;
-        if (at_ >= math_.size())
-            return {};
-        const QChar c = math_[at_];
-        if (c == '{') {
-            ++at_;
-            return group(true);
-        }
-        if (c == '\\')
-            return command();
-        ++at_;
-        return c.isLetter() ? "<i>" + QString(c) + "</i>" : QString(c).toHtmlEscaped();
-    }
-
-    // Text as written (no italics): \mathrm{per}, \text{ if }.
-    QString upright()
-    {
-        QString plain = argument();
-        return plain.remove("<i>").remove("</i>");
-    }
-
-    QString command()
-    {
-        const Deeper deeper(depth_);
-        if (depth_ > kMaxDepth)
-            return rest();
-        ++at_; // the backslash
-        int end = at_;
-        while (end < math_.size() && math_[end].isLetter())
-            ++end;
-        if (end == at_ && end < math_.size())
-            ++end; // a sign: \, \; \{
-        const QString name = math_.mid(at_, end - at_);
-        at_ = end;
-        if (name == "mathit" || name == "mathbf")
-            return "<i>" + upright() + "</i>";
-        if (name == "mathrm" || name == "text" || name == "operatorname" || name == "textrm")
-            return upright();
-        if (name == "frac") {
-            const QString top = argument(), bottom = argument();
-            auto simple = [](const QString& s) { return !s.contains(' ') && !s.contains("−") && s.size() < 16; };
-            return (simple(top) ? top : "(" + top + ")") + "/" + (simple(bottom) ? bottom : "(" + bottom + ")");
-        }
-        if (name == "sqrt") { // an overline would run into the line above in a label
-            const QString radicand = argument();
-            return radicand.size() == 1 || !radicand.contains(QRegularExpression("\\W")) ? "√" + radicand : "√(" + radicand + ")";
-        }
-        const auto sign = signs().constFind(name);
-        if (sign != signs().constEnd())
-            return *sign;
-        return name; // \arctan, \sin, \max: the function's name, upright
-    }
-
-    QString math_;
-    int at_ = 0;
-    int depth_ = 0;
-};
-
-} // namespace
 
 QString mathHtml(const std::string& text)
 {
-    const QString all = QString::fromStdString(text);
-    QString out, part;
-    bool math = false;
-    for (int k = 0; k < all.size(); ++k) {
-        if (all[k] == '\\' && k + 1 < all.size() && all[k + 1] == '$') {
-            part += math ? "\\$" : "$";
-            ++k;
-        } else if (all[k] == '$') {
-            out += math ? MathReader(part).read() : part.toHtmlEscaped();
-            part.clear();
-            math = !math;
-        } else {
-            part += all[k];
-        }
+    std::vector<MathRun> runs;
+    try {
+        runs = mathRuns(text);
+    } catch (const InputError&) {
+        return QString::fromStdString(text).toHtmlEscaped(); // read files are checked: only a program's slip gets here
     }
-    return out + (math ? ("$" + part).toHtmlEscaped() : part.toHtmlEscaped());
+    QString html;
+    for (const MathRun& run : runs) {
+        QString piece = QString::fromStdString(run.text).toHtmlEscaped();
+        if (run.italic)
+            piece = "<i>" + piece + "</i>";
+        for (int k = 0; k < std::abs(run.level); ++k)
+            piece = (run.level < 0 ? "<sub>" : "<sup>") + piece + (run.level < 0 ? "</sub>" : "</sup>");
+        html += piece;
+    }
+    return html;
+}
+
+namespace {
+
+// The item's text laid out as the list shows it: wrapped to the width left beside its margins.
+void layOut(QTextDocument& document, const QStyleOptionViewItem& option, const QModelIndex& index, const QColor& ink = {})
+{
+    document.setDefaultFont(option.font);
+    document.setDocumentMargin(2);
+    if (ink.isValid())
+        document.setDefaultStyleSheet(QString("body { color: %1; }").arg(ink.name()));
+    document.setHtml(mathHtml(index.data(MathItemDelegate::kMathRole).toString().toStdString()));
+    const auto* view = qobject_cast<const QAbstractItemView*>(option.widget);
+    const int width = view ? view->viewport()->width() : option.rect.width();
+    document.setTextWidth(std::max(40, width - 4));
+}
+
+} // namespace
+
+void MathItemDelegate::paint(QPainter* painter, const QStyleOptionViewItem& option, const QModelIndex& index) const
+{
+    QStyleOptionViewItem item = option;
+    initStyleOption(&item, index);
+    item.text.clear(); // the background, focus and selection as the style draws them; the text set here
+    QStyle* style = item.widget ? item.widget->style() : QApplication::style();
+    style->drawControl(QStyle::CE_ItemViewItem, &item, painter, item.widget);
+    const bool selected = option.state & QStyle::State_Selected;
+    QTextDocument document;
+    layOut(document, option, index, option.palette.color(selected ? QPalette::HighlightedText : QPalette::Text));
+    painter->save();
+    painter->translate(option.rect.topLeft());
+    document.drawContents(painter, QRectF(0, 0, option.rect.width(), option.rect.height()));
+    painter->restore();
+}
+
+QSize MathItemDelegate::sizeHint(const QStyleOptionViewItem& option, const QModelIndex& index) const
+{
+    QTextDocument document;
+    layOut(document, option, index);
+    return QSize(int(std::ceil(document.idealWidth())), int(std::ceil(document.size().height())));
 }
 
 } // namespace viewpipe::gui

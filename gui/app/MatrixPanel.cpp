@@ -1,4 +1,5 @@
 #include "MatrixPanel.h"
+#include "MathText.h"
 
 #include <QLabel>
 #include <QScrollArea>
@@ -18,6 +19,7 @@ QString number(double x)
 constexpr const char* kChanged = "#f2c14e";  // the entries a stage changed in the product
 constexpr const char* kLessonMark = "#8ecae6"; // the entries a lesson step points at
 
+// A 4 x 4 table of cells given as HTML (numbers, or math set by mathHtml).
 QString table(const QString& caption, const std::array<QString, 16>& cells, const std::array<bool, 16>& highlight = {},
               const char* color = kChanged)
 {
@@ -29,7 +31,7 @@ QString table(const QString& caption, const std::array<QString, 16>& cells, cons
             const bool h = highlight[std::size_t(r * 4 + c)];
             html += QString("<td align='right' style='%1'>%2</td>")
                         .arg(h ? QString("background-color:%1; color:black; font-weight:bold;").arg(color) : QString())
-                        .arg(cells[std::size_t(r * 4 + c)].toHtmlEscaped());
+                        .arg(cells[std::size_t(r * 4 + c)]);
         }
         html += "</tr>";
     }
@@ -85,8 +87,8 @@ void MatrixPanel::showStage(const Pipeline<double>& pipeline, int stage, const s
         return;
     }
     const Stage<double>& s = pipeline.stages[std::size_t(stage - 1)];
-    title_->setText(QString("<b>%1. %2</b> — %3").arg(stage).arg(QString::fromStdString(s.symbol).toHtmlEscaped(),
-                                                                   QString::fromStdString(s.explanation)));
+    title_->setText(QString("<b>%1. %2</b> — %3").arg(stage).arg(mathHtml("$" + symbolMath(s.symbol) + "$"),
+                                                                   mathHtml(s.explanation)));
     const Mat4<double>& now = cumulative[std::size_t(stage - 1)];
     const Mat4<double> before = stage >= 2 ? cumulative[std::size_t(stage - 2)] : Mat4<double>::Identity();
     std::array<bool, 16> changed{};
@@ -94,19 +96,19 @@ void MatrixPanel::showStage(const Pipeline<double>& pipeline, int stage, const s
         for (int c = 0; c < 4; ++c)
             changed[std::size_t(r * 4 + c)] =
                 std::abs(now(r, c) - before(r, c)) > 1e-12 * std::max(1.0, std::abs(before(r, c)));
-    const QString symbol = QString::fromStdString(s.symbol);
+    const QString symbol = mathHtml("$" + symbolMath(s.symbol) + "$");
     QString html;
     const SymbolicForm symbolic = symbolicMatrix(s.symbol);
     if (!symbolic.cells[0].empty()) {
         std::array<QString, 16> cells;
         for (std::size_t k = 0; k < cells.size(); ++k)
-            cells[k] = QString::fromStdString(symbolic.cells[k]);
+            cells[k] = mathHtml("$" + symbolic.cells[k] + "$");
         html += table(symbol + tr(" (symbolic)"), cells);
         for (const std::string& note : symbolic.notes)
-            html += "<div style='margin-bottom:4px'><i>" + QString::fromStdString(note).toHtmlEscaped() + "</i></div>";
+            html += "<div style='margin-bottom:4px'>" + mathHtml(note) + "</div>";
     }
     if (s.divides) // no matrix does this: each point is divided by its own w
-        html += "<p><b>" + symbol.toHtmlEscaped() + "</b>: " + QString(kDivideMapping).toHtmlEscaped() + "<br><i>" +
+        html += "<p><b>" + symbol + "</b>: " + QString(kDivideMapping).toHtmlEscaped() + "<br><i>" +
                 tr("Not a matrix: each point is divided by its own w. The cumulative matrix is unchanged; the "
                    "points it gives are divided.") + "</i></p>";
     else {
@@ -129,13 +131,13 @@ void MatrixPanel::showTrace(const Pipeline<double>& pipeline, const std::optiona
     auto row = [](const QString& name, const Vec4<double>& p, bool current) {
         return QString("<tr%1><td>%2</td><td align='right'>%3</td><td align='right'>%4</td><td align='right'>%5</td>"
                        "<td align='right'>%6</td></tr>")
-            .arg(current ? " style='font-weight:bold'" : "", name.toHtmlEscaped(), number(p.x()), number(p.y()),
+            .arg(current ? " style='font-weight:bold'" : "", name, number(p.x()), number(p.y()),
                  number(p.z()), number(p.w()));
     };
     QString html = tr("<b>Traced vertex</b> (x, y, z, w):<table cellspacing='0' cellpadding='2'>");
     html += row(tr("world"), point->homogeneous(), stage == 0);
     for (std::size_t k = 0; k < pipeline.stages.size(); ++k)
-        html += row(QString::fromStdString(pipeline.stages[k].symbol), t.afterStage[k], int(k) + 1 == stage);
+        html += row(mathHtml("$" + symbolMath(pipeline.stages[k].symbol) + "$"), t.afterStage[k], int(k) + 1 == stage);
     html += "</table>";
     if (t.divided)
         html += tr("After the divide: (%1, %2, %3); ").arg(number(t.divided->x()), number(t.divided->y()),

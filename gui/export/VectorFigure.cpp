@@ -1,6 +1,8 @@
 #include "VectorFigure.h"
 
 #include "painter/VtkGeometry.h"
+#include "viewpipe/error.hpp"
+#include "viewpipe/math_text.hpp"
 
 #include <QBuffer>
 #include <QFont>
@@ -41,6 +43,30 @@ QFont font(double pixels, bool bold)
     f.setPixelSize(std::max(1, int(std::lround(pixels))));
     f.setBold(bold);
     return f;
+}
+
+// Text with math (math_text.hpp) from its baseline's left end, as the PNG's renderer sets it.
+void drawMathText(QPainter& painter, QPointF at, const std::string& text, const QFont& base)
+{
+    std::vector<MathRun> runs;
+    try {
+        runs = mathRuns(text);
+    } catch (const InputError&) {
+        runs = {{text, false, 0}}; // checked where it was read: only a program's slip gets here
+    }
+    const double size = base.pixelSize();
+    for (const MathRun& run : runs) {
+        QFont f = base;
+        f.setItalic(run.italic);
+        if (run.level != 0)
+            f.setPixelSize(std::max(1, int(std::lround(size * std::pow(kScriptScale, std::abs(run.level))))));
+        const double shift = run.level > 0 ? -kSuperscriptRise * run.level * size : -kSubscriptDrop * run.level * size;
+        painter.setFont(f);
+        const QString piece = QString::fromStdString(run.text);
+        painter.drawText(QPointF(at.x(), at.y() + shift), piece);
+        at.rx() += QFontMetricsF(f).horizontalAdvance(piece);
+    }
+    painter.setFont(base);
 }
 
 // The legend's entries, and where the caption, the legend and the note go: as in the PNG.
@@ -106,8 +132,9 @@ void drawLegend(QPainter& painter, const Figure& figure, const VectorFigure& f)
         case LegendEntry::Swatch::Pixels: stripes(kRasterPalette); break;
         }
         painter.setPen(qtColor(elementColor(Element::Objects, f.theme)));
-        painter.drawText(QRectF(slotRight, top, box.max.x() - slotRight, h),
-                         Qt::AlignLeft | Qt::AlignVCenter, QString::fromStdString(entry.text));
+        const QFontMetricsF metrics(painter.font());
+        drawMathText(painter, QPointF(slotRight, top + h / 2 + (metrics.ascent() - metrics.descent()) / 2), entry.text,
+                     painter.font());
     }
 }
 
@@ -144,7 +171,7 @@ void paint(QPainter& painter, const Figure& figure, const VectorFigure& f)
         }
         painter.setPen(c);
         // The box is the text's from the lowest descender up, as VTK measures it.
-        painter.drawText(QPointF(l.box.min.x(), l.box.max.y() - metrics.descent()), QString::fromStdString(l.text));
+        drawMathText(painter, QPointF(l.box.min.x(), l.box.max.y() - metrics.descent()), l.text, painter.font());
     }
     painter.setPen(qtColor(elementColor(Element::Objects, f.theme)));
     auto drawLines = [&](const std::vector<std::string>& lines, const QFont& qfont, const Box2& box, double line) {
@@ -157,8 +184,8 @@ void paint(QPainter& painter, const Figure& figure, const VectorFigure& f)
         const QFontMetricsF metrics(qfont);
         // Lines as VTK sets them: the last one's descent at the box's bottom, `line` apart.
         for (std::size_t k = 0; k < lines.size(); ++k)
-            painter.drawText(QPointF(box.min.x(), box.max.y() - double(lines.size() - 1 - k) * line - metrics.descent()),
-                             QString::fromStdString(lines[k]));
+            drawMathText(painter, QPointF(box.min.x(), box.max.y() - double(lines.size() - 1 - k) * line - metrics.descent()),
+                         lines[k], qfont);
     };
     const PictureLayout& p = figure.layout;
     drawLines(p.captionLines, font(p.captionSize, true), p.caption, p.captionLine);

@@ -1,4 +1,5 @@
 #include "VtkGeometry.h"
+#include "MathTextRenderer.h"
 
 #include <vtkActor.h>
 #include <vtkNew.h>
@@ -100,6 +101,7 @@ vtkSmartPointer<vtkPolyData> primitiveData(const Primitive& primitive)
 // takes the same room in every picture; VTK's own font where it is missing.
 Vec2<double> textSize(vtkTextProperty* font, const std::string& text, int dpi)
 {
+    useMathText();
     int box[4] = {0, 0, 0, 0};
     vtkTextRenderer::GetInstance()->GetBoundingBox(font, text, box, dpi);
     return Vec2<double>(box[1] - box[0] + 1, box[3] - box[2] + 1);

@@ -1,6 +1,7 @@
 #include "viewpipe/report/figure.hpp"
 
 #include "viewpipe/format.hpp"
+#include "viewpipe/math_text.hpp"
 #include "viewpipe/report/style.hpp"
 
 #include <algorithm>
@@ -167,8 +168,7 @@ std::vector<std::string> wrapLines(const std::string& text, double width, const 
     std::istringstream lines(text);
     for (std::string line; std::getline(lines, line);) {
         std::string current;
-        std::istringstream words(line);
-        for (std::string word; words >> word;) {
+        for (const std::string& word : mathTextWords(line)) { // a formula stays on one line
             const std::string longer = current.empty() ? word : current + " " + word;
             if (current.empty() || measure(longer).x() <= width) {
                 current = longer;
@@ -190,7 +190,7 @@ FrameMarks frameMarks(double reach)
     // Ticks at a round step (1, 2 or 5 times a power of ten), two or three each way.
     const double rough = reach / 3, power = std::pow(10.0, std::floor(std::log10(rough)));
     const double step = power * (rough >= 5 * power ? 5 : rough >= 2 * power ? 2 : 1);
-    const char* names[] = {"x", "y", "z"};
+    const char* names[] = {"$x$", "$y$", "$z$"};
     for (int axis = 0; axis < 3; ++axis) {
         const Vec3d along = Vec3d::Unit(axis), across = Vec3d::Unit(axis == 0 ? 1 : 0);
         marks.lines.insert(marks.lines.end(), {-reach * along, reach * along});
@@ -200,7 +200,7 @@ FrameMarks frameMarks(double reach)
                 continue;
             const Vec3d at = step * j * along;
             marks.lines.insert(marks.lines.end(), {at - 0.02 * reach * across, at + 0.02 * reach * across});
-            marks.labels.push_back({Element::Frame, formatShortest(step * j), at, true, true});
+            marks.labels.push_back({Element::Frame, "$" + formatShortest(step * j) + "$", at, true, true}); // a real minus sign
         }
     }
     return marks;

@@ -5,6 +5,7 @@
 #include <sstream>
 
 #include "viewpipe/format.hpp"
+#include "viewpipe/math_text.hpp"
 #include "viewpipe/precision.hpp"
 
 namespace viewpipe::cli {
@@ -83,22 +84,6 @@ Pipeline<Exact> exactPipeline(const Scene& scene)
 
 } // namespace
 
-std::string latexSymbol(const std::string& symbol)
-{
-    const std::size_t open = symbol.find("(-");
-    if (open != std::string::npos) // T(-VRP) -> T(-\mathit{VRP})
-        return symbol.substr(0, open) + "(-\\mathit{" + symbol.substr(open + 2, symbol.size() - open - 3) + "})";
-    const std::size_t underscore = symbol.find('_');
-    const std::string base = symbol.substr(0, underscore);
-    const std::string math = base.size() > 1 ? "\\mathit{" + base + "}" : base;
-    if (underscore == std::string::npos)
-        return math;
-    std::string subscript = symbol.substr(underscore + 1);
-    for (std::size_t at = 0; (at = subscript.find('_', at)) != std::string::npos; at += 2)
-        subscript.replace(at, 1, "\\_"); // NDC_vulkan_reversed: one subscript with an underscore in it
-    return math + "_{\\mathrm{" + subscript + "}}";
-}
-
 namespace {
 
 // A stage's matrix, or the divide's mapping, which is no matrix.
@@ -106,7 +91,7 @@ std::string stageEquation(const Stage<Exact>& stage, int digits, const std::vect
 {
     if (stage.divides)
         return "\\text{divide:}\\quad (x, y, z, w) \\mapsto \\left(\\frac{x}{w}, \\frac{y}{w}, \\frac{z}{w}, 1\\right)";
-    return latexSymbol(stage.symbol) + " =\n" + bmatrix(stage.matrix, digits, highlighted);
+    return symbolMath(stage.symbol) + " =\n" + bmatrix(stage.matrix, digits, highlighted);
 }
 
 } // namespace
@@ -122,11 +107,11 @@ std::string matricesLatex(const Scene& scene, int digits)
     std::string product;
     for (std::size_t k = 0; k < p.stages.size(); ++k) {
         const Stage<Exact>& stage = p.stages[k];
-        out << "% " << k + 1 << ". " << stage.symbol << ": " << stage.explanation << "\n"
+        out << "% " << k + 1 << ". " << stage.symbol << ": " << mathPlainText(stage.explanation) << "\n"
             << "\\[\n" << stageEquation(stage, digits) << "\n\\]\n\n";
         if (stage.divides)
             continue; // no factor of the product
-        product = latexSymbol(stage.symbol) + (product.empty() ? "" : " \\, " + product);
+        product = symbolMath(stage.symbol) + (product.empty() ? "" : " \\, " + product);
     }
     const std::string name = p.convention == Convention::OpenGL            ? "P \\, V"
                              : p.projection == ProjectionKind::Perspective ? "N_{\\mathrm{per}}"

@@ -5,6 +5,7 @@
 #include <sstream>
 
 #include "viewpipe/format.hpp"
+#include "viewpipe/math_text.hpp"
 #include "viewpipe/pipeline.hpp"
 #include "viewpipe/report/latex.hpp"
 #include "viewpipe/report/tikz.hpp"
@@ -27,7 +28,7 @@ std::string point(const Vec3<double>& p)
 
 std::string symbol(const std::string& stageSymbol)
 {
-    return "$" + cli::latexSymbol(stageSymbol) + "$";
+    return "$" + symbolMath(stageSymbol) + "$";
 }
 
 // Wide matrices shrink to the line; narrow ones keep their size.
@@ -164,45 +165,6 @@ std::string answerText(const LessonStep& step)
     return {};
 }
 
-std::string texRichText(const std::string& text)
-{
-    std::string out, part;
-    bool math = false;
-    // A line may break after a comma of the math's outer level: "(1.4237, 1.4237, -1.4237)" fits a line.
-    auto breakable = [](const std::string& math) {
-        std::string out;
-        int depth = 0;
-        for (std::size_t k = 0; k < math.size(); ++k) {
-            depth += math[k] == '{' ? 1 : math[k] == '}' ? -1 : 0;
-            out += math[k];
-            if (math[k] == ',' && depth == 0 && (k == 0 || math[k - 1] != '\\'))
-                out += "\\allowbreak";
-        }
-        return out;
-    };
-    auto flush = [&] {
-        if (!math)
-            out += texEscaped(part);
-        else if (part.find_first_not_of(" ") != std::string::npos) // "$$" would be display math
-            out += "$" + breakable(part) + "$";
-        part.clear();
-    };
-    for (std::size_t k = 0; k < text.size(); ++k) {
-        if (text[k] == '\\' && k + 1 < text.size() && text[k + 1] == '$') {
-            part += math ? "\\$" : "$";
-            ++k;
-        } else if (text[k] == '$') {
-            flush();
-            math = !math;
-        } else {
-            part += text[k];
-        }
-    }
-    if (math) // an unclosed `$`: the dollar sign was meant
-        part = "$" + part, math = false;
-    flush();
-    return out;
-}
 
 std::string lessonHandoutLatex(const Lesson& lesson, const std::vector<LessonFigures>& figures)
 {

@@ -200,7 +200,7 @@ Json pipelineJson(const Scene& scene, const PrecisionChoice& precision, const Ef
         for (std::size_t k = 0; k < p.stages.size(); ++k)
         {
             stages.push_back({{"symbol", p.stages[k].symbol},
-                              {"explanation", p.stages[k].explanation},
+                              {"explanation", mathPlainText(p.stages[k].explanation)},
                               {"matrix", matrixJson(p.stages[k].matrix)},
                               {"cumulative", matrixJson(cumulative[k])}});
             if (p.stages[k].divides) // no matrix: "matrix" is the identity, which leaves products unchanged
@@ -245,7 +245,7 @@ void printPipeline(std::ostream& out, const Scene& scene, const PrecisionChoice&
         std::string product;
         for (std::size_t k = 0; k < p.stages.size(); ++k) {
             const Stage<T>& stage = p.stages[k];
-            out << stageText(p.stages, k + 1, StageText::Heading) << "\n";
+            out << k + 1 << ". " << stage.symbol << " - " << mathPlainText(stage.explanation) << "\n"; // the symbols as scripts use them
             if (stage.divides) { // not a matrix, and no factor of the product
                 out << "    " << kDivideMapping << ", not a matrix\n\n";
                 continue;

@@ -2,6 +2,8 @@
 
 #include <map>
 
+#include "viewpipe/math_text.hpp"
+
 namespace viewpipe {
 namespace {
 
@@ -23,7 +25,7 @@ std::array<std::string, 16> shear(const std::string& x, const std::string& y)
 // OpenGL's clip coordinates to an API's whose depth runs from 0 to 1: z' = (±z + w)/2, and y' = y or -y.
 std::array<std::string, 16> toZeroToOne(const std::string& y, const std::string& z)
 {
-    return {"1", "0", "0", "0", "0", y, "0", "0", "0", "0", z, "½", "0", "0", "0", "1"};
+    return {"1", "0", "0", "0", "0", y, "0", "0", "0", "0", z, "1/2", "0", "0", "0", "1"};
 }
 
 } // namespace
@@ -31,47 +33,68 @@ std::array<std::string, 16> toZeroToOne(const std::string& y, const std::string&
 SymbolicForm symbolicMatrix(const std::string& symbol)
 {
     static const std::map<std::string, SymbolicForm> forms = [] {
-        const std::vector<std::string> dopShear = {"shx = −DOPx / DOPz,  shy = −DOPy / DOPz", "DOP = CW − PRP"};
+        const std::vector<std::string> dopShear = {
+            "$\\mathit{sh}_x = -\\mathit{DOP}_x / \\mathit{DOP}_z$, $\\mathit{sh}_y = -\\mathit{DOP}_y / \\mathit{DOP}_z$",
+            "$\\mathit{DOP} = \\mathit{CW} - \\mathit{PRP}$"};
+        const std::string shx = "\\mathit{sh}_x", shy = "\\mathit{sh}_y";
         std::map<std::string, SymbolicForm> out = {
-            {"T(-VRP)", {translation("−VRPx", "−VRPy", "−VRPz"), {}}},
+            {"T(-VRP)", {translation("-\\mathit{VRP}_x", "-\\mathit{VRP}_y", "-\\mathit{VRP}_z"), {}}},
             {"R",
-             {{"ux", "uy", "uz", "0", "vx", "vy", "vz", "0", "nx", "ny", "nz", "0", "0", "0", "0", "1"},
-              {"n = VPN / |VPN|,  u = VUP × n / |VUP × n|,  v = n × u"}}},
-            {"T(-PRP)", {translation("−PRPu", "−PRPv", "−PRPn"), {}}},
-            {"SH_per", {shear("shx", "shy"), dopShear}},
-            {"SH_par", {shear("shx", "shy"), dopShear}},
+             {{"u_x", "u_y", "u_z", "0", "v_x", "v_y", "v_z", "0", "n_x", "n_y", "n_z", "0", "0", "0", "0", "1"},
+              {"$n = \\mathit{VPN} / |\\mathit{VPN}|$, $u = \\mathit{VUP} \\times n / |\\mathit{VUP} \\times n|$, "
+               "$v = n \\times u$"}}},
+            {"T(-PRP)", {translation("-\\mathit{PRP}_u", "-\\mathit{PRP}_v", "-\\mathit{PRP}_n"), {}}},
+            {"SH_per", {shear(shx, shy), dopShear}},
+            {"SH_par", {shear(shx, shy), dopShear}},
             {"S_per",
-             {diagonal("sx", "sy", "sz"),
-              {"sx = 2 PRPn / ((umax − umin)(PRPn − B))", "sy = 2 PRPn / ((vmax − vmin)(PRPn − B))",
-               "sz = 1 / (PRPn − B)"}}},
-            {"T_par", {translation("−cu", "−cv", "−F"), {"(cu, cv) = ((umax + umin)/2, (vmax + vmin)/2) = CW"}}},
+             {diagonal("s_x", "s_y", "s_z"),
+              {"$s_x = 2 \\mathit{PRP}_n / ((u_{\\max} - u_{\\min})(\\mathit{PRP}_n - B))$",
+               "$s_y = 2 \\mathit{PRP}_n / ((v_{\\max} - v_{\\min})(\\mathit{PRP}_n - B))$",
+               "$s_z = 1 / (\\mathit{PRP}_n - B)$"}}},
+            {"T_par",
+             {translation("-c_u", "-c_v", "-F"),
+              {"$(c_u, c_v) = ((u_{\\max} + u_{\\min})/2, (v_{\\max} + v_{\\min})/2) = \\mathit{CW}$"}}},
             {"S_par",
-             {diagonal("sx", "sy", "sz"), {"sx = 2 / (umax − umin),  sy = 2 / (vmax − vmin),  sz = 1 / (F − B)"}}},
-            {"T(-eye)", {translation("−eyex", "−eyey", "−eyez"), {}}},
+             {diagonal("s_x", "s_y", "s_z"),
+              {"$s_x = 2 / (u_{\\max} - u_{\\min})$, $s_y = 2 / (v_{\\max} - v_{\\min})$, $s_z = 1 / (F - B)$"}}},
+            {"T(-eye)", {translation("-\\mathit{eye}_x", "-\\mathit{eye}_y", "-\\mathit{eye}_z"), {}}},
             {"R_eye",
-             {{"sx", "sy", "sz", "0", "ux", "uy", "uz", "0", "−fx", "−fy", "−fz", "0", "0", "0", "0", "1"},
-              {"f = (center − eye) / |center − eye|,  s = f × up / |f × up|,  u = s × f"}}},
-            {"SH_frustum", {shear("shx", "shy"), {"shx = (r + l) / 2n,  shy = (t + b) / 2n"}}},
-            {"S_frustum", {diagonal("sx", "sy", "1"), {"sx = 2n / (r − l),  sy = 2n / (t − b)"}}},
-            {"S_fovy", {diagonal("f / aspect", "f", "1"), {"f = cot(fovy / 2)"}}},
+             {{"s_x", "s_y", "s_z", "0", "u_x", "u_y", "u_z", "0", "-f_x", "-f_y", "-f_z", "0", "0", "0", "0", "1"},
+              {"$f = (\\mathit{center} - \\mathit{eye}) / |\\mathit{center} - \\mathit{eye}|$, "
+               "$s = f \\times \\mathit{up} / |f \\times \\mathit{up}|$, $u = s \\times f$"}}},
+            {"SH_frustum", {shear(shx, shy), {"$\\mathit{sh}_x = (r + l) / 2n$, $\\mathit{sh}_y = (t + b) / 2n$"}}},
+            {"S_frustum", {diagonal("s_x", "s_y", "1"), {"$s_x = 2n / (r - l)$, $s_y = 2n / (t - b)$"}}},
+            {"S_fovy", {diagonal("f / \\mathit{aspect}", "f", "1"), {"$f = \\cot(\\mathit{fovy} / 2)$"}}},
             {"P_depth",
-             {{"1", "0", "0", "0", "0", "1", "0", "0", "0", "0", "A", "B", "0", "0", "−1", "0"},
-              {"A = −(f + n) / (f − n),  B = −2fn / (f − n)  (f = far, n = near)"}}},
-            {"T_ortho", {translation("−(l + r)/2", "−(b + t)/2", "(n + f)/2"), {}}},
-            {"S_ortho", {diagonal("2 / (r − l)", "2 / (t − b)", "−2 / (f − n)"), {}}},
-            {"Z_flip", {diagonal("1", "1", "−1"), {"the left-handed eye's +z becomes the −z the projection expects"}}},
-            {"NDC_reversed", {diagonal("1", "1", "−1"), {"z' = −z: near at 1, far at −1"}}},
+             {{"1", "0", "0", "0", "0", "1", "0", "0", "0", "0", "A", "B", "0", "0", "-1", "0"},
+              {"$A = -(f + n) / (f - n)$, $B = -2fn / (f - n)$ ($f$ far, $n$ near)"}}},
+            {"T_ortho", {translation("-(l + r)/2", "-(b + t)/2", "(n + f)/2"), {}}},
+            {"S_ortho", {diagonal("2 / (r - l)", "2 / (t - b)", "-2 / (f - n)"), {}}},
+            {"Z_flip", {diagonal("1", "1", "-1"), {"the left-handed eye's $+z$ becomes the $-z$ the projection expects"}}},
+            {"NDC_reversed", {diagonal("1", "1", "-1"), {"$z' = -z$: near at 1, far at $-1$"}}},
         };
         for (const std::string api : {"direct3d", "metal", "webgpu", "vulkan"}) {
-            const std::string y = api == "vulkan" ? "−1" : "1";
-            const std::string yNote = api == "vulkan" ? ",  y' = −y" : "";
-            out["NDC_" + api] = {toZeroToOne(y, "½"), {"z' = (z + w) / 2: near at 0, far at 1" + yNote}};
-            out["NDC_" + api + "_reversed"] = {toZeroToOne(y, "−½"), {"z' = (w − z) / 2: near at 1, far at 0" + yNote}};
+            const std::string y = api == "vulkan" ? "-1" : "1";
+            const std::string yNote = api == "vulkan" ? ", $y' = -y$" : "";
+            out["NDC_" + api] = {toZeroToOne(y, "1/2"), {"$z' = (z + w) / 2$: near at 0, far at 1" + yNote}};
+            out["NDC_" + api + "_reversed"] = {toZeroToOne(y, "-1/2"), {"$z' = (w - z) / 2$: near at 1, far at 0" + yNote}};
         }
         return out;
     }();
     const auto form = forms.find(symbol);
     return form == forms.end() ? SymbolicForm{} : form->second;
+}
+
+std::string symbolicLatex(const std::string& symbol)
+{
+    const SymbolicForm form = symbolicMatrix(symbol);
+    if (form.cells[0].empty())
+        return {};
+    std::string rows;
+    for (std::size_t r = 0; r < 4; ++r)
+        for (std::size_t c = 0; c < 4; ++c)
+            rows += form.cells[4 * r + c] + (c < 3 ? " & " : r < 3 ? " \\\\\n" : "\n");
+    return symbolMath(symbol) + " = \\begin{bmatrix}\n" + rows + "\\end{bmatrix}";
 }
 
 } // namespace viewpipe

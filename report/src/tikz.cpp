@@ -91,24 +91,44 @@ std::string texEscaped(const std::string& text)
     return out;
 }
 
-std::string texLabel(const std::string& text)
+std::string texRichText(const std::string& text)
 {
-    static const std::map<std::string, std::string> usual = {
-        {"x", "$x$"}, {"y", "$y$"}, {"z", "$z$"}, {"u", "$u$"}, {"v", "$v$"}, {"n", "$n$"}, {"s", "$s$"},
-        {"-f", "$-f$"}, {"VRP", "$\\mathrm{VRP}$"}, {"PRP", "$\\mathrm{PRP}$"}, {"DOP", "$\\mathrm{DOP}$"},
-        {"CW", "$\\mathrm{CW}$"}, {"front (F)", "front ($F$)"}, {"back (B)", "back ($B$)"}};
-    const auto found = usual.find(text);
-    if (found != usual.end())
-        return found->second;
-    // A plane's equation, "z = z_min" or "z = 1 (far)": math, and the words after it as text.
-    if (text.size() > 4 && (text[0] == 'x' || text[0] == 'y' || text[0] == 'z') && text.compare(1, 3, " = ") == 0) {
-        const std::size_t words = text.find(" (");
-        std::string math = text.substr(0, words);
-        if (const std::size_t min = math.find("z_min"); min != std::string::npos)
-            math.replace(min, 5, "z_{\\min}");
-        return "$" + math + "$" + (words == std::string::npos ? "" : texEscaped(text.substr(words)));
+    std::string out, part;
+    bool math = false;
+    // A line may break after a comma of the math's outer level: "(1.4237, 1.4237, -1.4237)" fits a line.
+    auto breakable = [](const std::string& math) {
+        std::string out;
+        int depth = 0;
+        for (std::size_t k = 0; k < math.size(); ++k) {
+            depth += math[k] == '{' ? 1 : math[k] == '}' ? -1 : 0;
+            out += math[k];
+            if (math[k] == ',' && depth == 0 && (k == 0 || math[k - 1] != '\\'))
+                out += "\\allowbreak";
+        }
+        return out;
+    };
+    auto flush = [&] {
+        if (!math)
+            out += texEscaped(part);
+        else if (part.find_first_not_of(" ") != std::string::npos) // "$$" would be display math
+            out += "$" + breakable(part) + "$";
+        part.clear();
+    };
+    for (std::size_t k = 0; k < text.size(); ++k) {
+        if (text[k] == '\\' && k + 1 < text.size() && text[k + 1] == '$') {
+            part += math ? "\\$" : "$";
+            ++k;
+        } else if (text[k] == '$') {
+            flush();
+            math = !math;
+        } else {
+            part += text[k];
+        }
     }
-    return texEscaped(text);
+    if (math) // an unclosed `$`: the dollar sign was meant
+        part = "$" + part, math = false;
+    flush();
+    return out;
 }
 
 std::string tikzFigure(const Figure& figure, Theme theme)
@@ -175,7 +195,7 @@ std::string tikzFigure(const Figure& figure, Theme theme)
         const PlacedLabel& l = figure.labels[k];
         const std::string key = elementKey(l.element), name = "vp label " + std::to_string(k);
         tex << "\\node[vp " << (l.minor ? std::string("tick") : key) << " label] (" << name << ") at "
-            << point(l.box.min) << " {" << texLabel(l.text) << "};\n";
+            << point(l.box.min) << " {" << texRichText(l.text) << "};\n";
         if (l.leader) // to the node's border as TeX sets the text, whose width differs from the picture's font
             tex << "\\draw[vp leader, draw=vp" << key << "] " << point(l.anchor) << " -- (" << name << ");\n";
     }
@@ -184,7 +204,7 @@ std::string tikzFigure(const Figure& figure, Theme theme)
         // The box's bottom is the last line's descenders (about a fifth of the size below its baseline).
         const double baseline = layout.note.max.y() - 0.22 * layout.noteSize - double(layout.noteLines.size() - 1 - k) * layout.noteLine;
         tex << "\\node[vp small text, anchor=base west] at " << point(Vec2<double>(layout.note.min.x(), baseline))
-            << " {" << texEscaped(layout.noteLines[k]) << "};\n";
+            << " {" << texRichText(layout.noteLines[k]) << "};\n";
     }
     if (!figure.legend.empty()) {
         tex << "\\draw[draw=vpFrame, fill=vpBackground] " << point(layout.legend.min) << " rectangle "
@@ -217,7 +237,7 @@ std::string tikzFigure(const Figure& figure, Theme theme)
                     << " rectangle " << point(Vec2<double>(c.x() + 0.75 * h, c.y() + half)) << ";\n";
             }
             tex << "\\node[vp small text] at " << point(Vec2<double>(row.textLeft, (row.row.min.y() + row.row.max.y()) / 2))
-                << " {" << texEscaped(entry.text) << "};\n";
+                << " {" << texRichText(entry.text) << "};\n";
         }
     }
     tex << "\\end{tikzpicture}\n\\end{document}\n";
@@ -236,7 +256,7 @@ std::string tikzFiguresDocument(const std::vector<std::pair<std::string, std::st
         std::vector<std::string> lines;
         std::istringstream in(caption);
         for (std::string line; std::getline(in, line);)
-            lines.push_back(texEscaped(line));
+            lines.push_back(texRichText(line));
         std::string joined;
         for (const std::string& line : lines)
             joined += (joined.empty() ? "" : "\\\\ ") + line;

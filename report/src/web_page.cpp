@@ -8,6 +8,7 @@
 #include <sstream>
 #include <stdexcept>
 
+#include "viewpipe/math_text.hpp"
 #include "viewpipe/report/latex.hpp"
 #include "viewpipe/report/lesson_latex.hpp"
 #include "viewpipe/report/stage_symbols.hpp"
@@ -109,9 +110,18 @@ json primitiveJson(const Primitive& p, Theme theme)
     return out;
 }
 
+// Text with math as the core's runs, [text, italic, level] each: what the page draws on its canvas.
+json runsJson(const std::string& text)
+{
+    json out = json::array();
+    for (const MathRun& run : mathRuns(text))
+        out.push_back({run.text, run.italic, run.level});
+    return out;
+}
+
 json labelJson(const Label& l, Theme theme)
 {
-    return {{"text", l.text}, {"anchor", vec(l.anchor)}, {"fixed", l.fixed}, {"minor", l.minor},
+    return {{"text", l.text}, {"runs", runsJson(l.text)}, {"anchor", vec(l.anchor)}, {"fixed", l.fixed}, {"minor", l.minor},
             {"color", color(elementColor(l.element, theme))}};
 }
 
@@ -230,15 +240,20 @@ json sceneData(const EvaluatedScene& scene, const WebPageViews& views)
         json labels = json::array();
         for (const PlacedLabel& l : s.labels)
             labels.push_back({{"text", l.text},
+                              {"runs", runsJson(l.text)},
                               {"anchor", {l.anchor.x(), l.anchor.y()}},
                               {"box", boxJson(l.box)},
                               {"leader", l.leader},
                               {"minor", l.minor},
                               {"color", color(elementColor(l.element, theme))}});
         const FrameMarks marks = frameMarks(s.frameReach);
-        json entry = {{"list", stageText(stages, k, StageText::ListEntry)},
+        const std::string list = stageText(stages, k, StageText::ListEntry);
+        const std::string claim = k < scene.stageClaims.size() ? scene.stageClaims[k] : "";
+        json entry = {{"list", list},
+                      {"listText", mathPlainText(list)}, // for a screen reader
                       {"caption", stageCaption(scene, k, StageText::Caption)},
-                      {"claim", k < scene.stageClaims.size() ? scene.stageClaims[k] : ""},
+                      {"claim", claim},
+                      {"claimText", mathPlainText(claim)},
                       {"rest", frameJson(s.rest)},
                       {"labels", labels},
                       {"frame", floats(marks.lines)}};
@@ -248,13 +263,14 @@ json sceneData(const EvaluatedScene& scene, const WebPageViews& views)
         if (k > 0) {
             const Stage<double>& stage = stages[k - 1];
             entry["symbol"] = stage.symbol;
+            entry["symbolMath"] = symbolMath(stage.symbol);
             entry["matrix"] = matrix(stage.matrix);
             entry["divides"] = stage.divides;
             entry["latex"] = latex.at(k - 1).equation;
             entry["cumulativeLatex"] = latex.at(k - 1).cumulative;
             const SymbolicForm symbolic = symbolicMatrix(stage.symbol);
             if (!symbolic.cells[0].empty())
-                entry["symbolic"] = {{"cells", symbolic.cells}, {"notes", symbolic.notes}};
+                entry["symbolic"] = {{"latex", symbolicLatex(stage.symbol)}, {"notes", symbolic.notes}};
         }
         stageList.push_back(entry);
     }
@@ -301,6 +317,7 @@ json sceneData(const EvaluatedScene& scene, const WebPageViews& views)
                        {"height", views.height},
                        {"fontSize", views.fontSize},
                        {"smallFontSize", smallTextSize(views.fontSize)},
+                       {"scripts", {{"scale", kScriptScale}, {"drop", kSubscriptDrop}, {"rise", kSuperscriptRise}}},
                        {"background", color(backgroundColor(theme, false))},
                        {"projectedBackground", color(backgroundColor(theme, true))},
                        {"ink", color(elementColor(Element::Objects, theme))},

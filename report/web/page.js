@@ -267,7 +267,13 @@
       right: 'auto', bottom: 'auto', maxWidth: 'none', margin: '0' });
     const setText = (element, part) => {
       setBox(element, part.box);
-      element.textContent = part.lines.join('\n');
+      element.textContent = '';
+      part.lines.forEach((line, k) => {
+        if (k) element.append('\n');
+        const span = document.createElement('span');
+        setRichText(span, line);
+        element.appendChild(span);
+      });
       Object.assign(element.style, { fontSize: `${part.size * s}px`, lineHeight: `${(part.line || 1.25 * part.size) * s}px` });
     };
     setText(document.getElementById('caption'), layout.caption);
@@ -371,6 +377,24 @@
       }
     }
     const font = (px) => `${px}px "DejaVu Sans", "Segoe UI", Helvetica, Arial, sans-serif`;
+    // A label's runs (the core's math: [text, italic, level]) as the PNG sets them: scripts smaller, moved off the line.
+    const runFont = (run, px, weight) =>
+      (run[1] ? 'italic ' : '') + weight + font(px * Math.pow(data.scripts.scale, Math.abs(run[2])));
+    const runsWidth = (runs, px, weight) => runs.reduce((width, run) => {
+      context.font = runFont(run, px, weight);
+      return width + context.measureText(run[0]).width;
+    }, 0);
+    const drawRuns = (runs, x, top, px, weight) => {
+      context.textBaseline = 'alphabetic';
+      context.font = weight + font(px);
+      const baseline = top + context.measureText('Ág').fontBoundingBoxAscent;
+      for (const run of runs) {
+        context.font = runFont(run, px, weight);
+        const shift = run[2] > 0 ? -data.scripts.rise * run[2] * px : -data.scripts.drop * run[2] * px;
+        context.fillText(run[0], x, baseline + shift);
+        x += context.measureText(run[0]).width;
+      }
+    };
     if (atRest && !userMoved()) {
       // Where the app put them: export pixels, fitted.
       const place = (x, y) => ({ x: (x - data.width / 2) * s + size.width / 2, y: (y - data.height / 2) * s + size.height / 2 });
@@ -380,12 +404,10 @@
         const corner = place(x0, y0);
         let px = (label.minor ? data.smallFontSize : data.fontSize) * s;
         const weight = label.minor ? '' : 'bold ';
-        context.font = weight + font(px);
-        const width = context.measureText(label.text).width;
+        const width = runsWidth(label.runs, px, weight);
         if (width > (x1 - x0) * s) px *= (x1 - x0) * s / width;
-        context.font = weight + font(px);
         context.fillStyle = cssColor(label.color);
-        context.fillText(label.text, corner.x, corner.y + ((y1 - y0) * s - px) / 2);
+        drawRuns(label.runs, corner.x, corner.y + ((y1 - y0) * s - px) / 2, px, weight);
         if (label.leader) {
           const anchor = place(label.anchor[0], label.anchor[1]);
           const nearest = place(Math.min(Math.max(label.anchor[0], x0), x1), Math.min(Math.max(label.anchor[1], y0), y1));
@@ -402,8 +424,6 @@
       // its anchor that no label drawn before covers, or left out (the app's
       // placement, with leader lines, is recorded for the views at rest only).
       const px = data.fontSize * Math.max(0.6, s);
-      context.textBaseline = 'top';
-      context.font = 'bold ' + font(px);
       const taken = [];
       const overlaps = (a) => taken.some((b) => a.x0 < b.x1 && b.x0 < a.x1 && a.y0 < b.y1 && b.y0 < a.y1);
       for (const label of data.labels) {
@@ -411,14 +431,14 @@
         if (!label.fixed && !kept(frame.cut, label.anchor)) continue;
         const at = project(label.fixed ? clipFromStage : clipFromWorld, label.anchor, size);
         if (!at) continue;
-        const width = context.measureText(label.text).width, gap = 4;
+        const width = runsWidth(label.runs, px, 'bold '), gap = 4;
         const corners = [[gap, -gap - px], [gap, gap], [-gap - width, -gap - px], [-gap - width, gap]];
         for (const [dx, dy] of corners) {
           const box = { x0: at.x + dx, y0: at.y + dy, x1: at.x + dx + width, y1: at.y + dy + px };
           if (overlaps(box)) continue;
           taken.push(box);
           context.fillStyle = cssColor(label.color);
-          context.fillText(label.text, box.x0, box.y0);
+          drawRuns(label.runs, box.x0, box.y0, px, 'bold ');
           break;
         }
       }
@@ -456,14 +476,14 @@
     list.textContent = '';
     stages.forEach((stage, k) => {
       const item = document.createElement('li');
-      item.textContent = stage.list;
+      setRichText(item, stage.list);
       item.tabIndex = -1;
       item.addEventListener('click', () => goTo(k, false));
       list.appendChild(item);
     });
     legend(document.getElementById('legend'), data.legend);
     legend(document.getElementById('projected-legend'), data.projected.legend);
-    document.getElementById('note').textContent = data.note;
+    setRichText(document.getElementById('note'), data.note);
     vertices = floatsOf(data.vertices);
   }
   function legend(element, entries) {
@@ -474,7 +494,9 @@
       if (entry.swatch === 'line') swatch.style.borderBottom = `3px solid ${cssColor(entry.color, entry.opacity)}`;
       else if (entry.swatch === 'dot') Object.assign(swatch.style, { width: '0.7em', borderRadius: '50%', background: cssColor(entry.color) });
       else swatch.style.background = cssColor(entry.color, Math.max(0.35, entry.opacity));
-      row.append(swatch, entry.text);
+      const text = document.createElement('span');
+      setRichText(text, entry.text);
+      row.append(swatch, text);
       if (entry.canonical) row.dataset.canonical = '1';
       element.appendChild(row);
     }
@@ -503,7 +525,9 @@
     stages.forEach((stage, k) => {
       if (k > 0) p = stage.divides ? (p.w !== 0 ? p.clone().divideScalar(p.w) : p) : p.clone().applyMatrix4(matrixOf(stage.matrix));
       const row = table.insertRow();
-      row.insertCell().textContent = k === 0 ? 'world' : stage.symbol;
+      const cell = row.insertCell();
+      if (k === 0) cell.textContent = 'world';
+      else setRichText(cell, `$${stage.symbolMath}$`);
       for (const value of [p.x, p.y, p.z, p.w]) row.insertCell().textContent = format(value);
       if (k === state.stage) row.style.fontWeight = 'bold';
     });
@@ -515,7 +539,7 @@
       if (k === state.stage) item.setAttribute('aria-current', 'step');
       else item.removeAttribute('aria-current');
     });
-    document.getElementById('matrix-title').textContent = stage.list;
+    setRichText(document.getElementById('matrix-title'), stage.list);
     if (state.stage === 0) {
       document.getElementById('matrix').textContent = 'The world: no matrix yet.';
       document.getElementById('symbolic').textContent = '';
@@ -524,18 +548,14 @@
       const symbolic = document.getElementById('symbolic');
       symbolic.textContent = '';
       if (stage.symbolic) {
-        const table = document.createElement('table');
-        table.className = 'symbolic';
-        table.createCaption().textContent = stage.symbol + ' (symbolic)';
-        for (let r = 0; r < 4; ++r) {
-          const row = table.insertRow();
-          for (let c = 0; c < 4; ++c) row.insertCell().textContent = stage.symbolic.cells[4 * r + c];
-        }
-        symbolic.appendChild(table);
+        const matrix = document.createElement('div');
+        matrix.className = 'symbolic';
+        typeset(matrix, stage.symbolic.latex);
+        symbolic.appendChild(matrix);
         for (const note of stage.symbolic.notes) {
           const line = document.createElement('p');
           line.className = 'definition';
-          line.textContent = note;
+          setRichText(line, note);
           symbolic.appendChild(line);
         }
       }
@@ -547,7 +567,7 @@
     }
     showTrace();
     document.getElementById('live').textContent =
-      `Stage ${state.stage} of ${last}: ${stage.list}.` + (stage.claim ? ' ' + stage.claim + '.' : '');
+      `Stage ${state.stage} of ${last}: ${stage.listText}.` + (stage.claim ? ' ' + stage.claimText + '.' : '');
     body.dataset.stage = state.stage;
   }
 

@@ -175,6 +175,12 @@ TEST(Cli, CheckAndExitCodes)
     EXPECT_EQ(r.exitCode, 2);
     EXPECT_EQ(r.err, lesson + ": steps[0].question.answer: is (1, 2, 3) but the scene gives (0, 0, 0)\n");
     EXPECT_EQ(run("lesson export " + lesson + " --out /tmp/viewpipe-no-lesson").exitCode, 2);
+    // Math outside the subset every renderer sets is refused before anything shows it raw.
+    const std::string unknownMath = writeScene("viewpipe-unknown-math-lesson.json", R"({"title": "t", "steps": [
+        {"scene": ")" + kHouse + R"(", "caption": "see $\\foo{x}$"}]})");
+    r = run("lesson check " + unknownMath);
+    EXPECT_EQ(r.exitCode, 2);
+    EXPECT_EQ(r.err.rfind(unknownMath + ": steps[0].caption: has math with \\foo, which ViewPipe does not set", 0), 0u) << r.err;
 
     r = run("check /nonexistent/scene.json");
     EXPECT_EQ(r.exitCode, 2);

@@ -442,8 +442,8 @@ TEST(Api, StagesShowTheStepToEachApisVolume)
             continue;
         }
         EXPECT_EQ(stages.back().symbol, "NDC_" + gl::apiName(api));
-        EXPECT_NE(stages.back().explanation.find("z' = (z + w)/2, near 0, far 1"), std::string::npos);
-        EXPECT_EQ(stages.back().explanation.find("y' = -y") != std::string::npos, api == Api::Vulkan);
+        EXPECT_NE(stages.back().explanation.find("$z' = (z + w)/2$, near 0, far 1"), std::string::npos);
+        EXPECT_EQ(stages.back().explanation.find("$y' = -y$") != std::string::npos, api == Api::Vulkan);
     }
     const auto left = camera(gl::Ortho<double>{-3, 5, -2, 4, 1, 30}, Api::Direct3D, Handedness::Left,
                              DepthMode::Reversed);
@@ -458,12 +458,12 @@ TEST(Api, VulkansVolumeIsLabelledWithItsYDown)
 {
     const Scene scene = loadScene(std::string(VIEWPIPE_DATA_DIR) + "/scenes/apis/vulkan.json");
     const std::shared_ptr<const EvaluatedScene> evaluated = evaluateScene(scene);
-    EXPECT_EQ(evaluated->stageClaims.back(), "the volume is -1 \u2264 x, y \u2264 1, 0 \u2264 z \u2264 1; y points down in the image");
+    EXPECT_EQ(evaluated->stageClaims.back(), "the volume is $-1 \\le x, y \\le 1$, $0 \\le z \\le 1$; $y$ points down in the image");
     std::set<std::string> labels;
     for (const Label& label : evaluated->labels)
         if (label.element == Element::Canonical)
             labels.insert(label.text);
-    for (const char* text : {"y = -1 (image top)", "y = 1 (image bottom)", "z = 0 (near)", "z = 1 (far)", "x = 1"})
+    for (const char* text : {"$y = -1$ (image top)", "$y = 1$ (image bottom)", "$z = 0$ (near)", "$z = 1$ (far)", "$x = 1$"})
         EXPECT_TRUE(labels.count(text)) << text;
 }
 
@@ -474,7 +474,7 @@ TEST(Api, AVolumeCutShortOfAnInfiniteFarIsStillClaimed)
 {
     const Scene scene = loadScene(std::string(VIEWPIPE_DATA_DIR) + "/scenes/apis/vulkan-reversed-infinite.json");
     EXPECT_EQ(evaluateScene(scene)->stageClaims.back(),
-              "the volume is -1 \u2264 x, y \u2264 1, 0 \u2264 z \u2264 1; y points down in the image "
+              "the volume is $-1 \\le x, y \\le 1$, $0 \\le z \\le 1$; $y$ points down in the image "
               "(far at infinity: the volume drawn is cut short of it)");
 }
 

@@ -56,8 +56,8 @@ TEST(EvaluatedScene, HouseLabelsSitOnTheirElements)
     // The DOP runs from the PRP to CW; its label sits 30% of the way.
     expectNear(labelNamed(*scene, "DOP").anchor, Vec3<double>(8, 6, 84) + 0.3 * Vec3<double>(-8, -6, -84));
     // The front plane's label at a corner of the front face, z = F = 60.
-    EXPECT_DOUBLE_EQ(labelNamed(*scene, "front (F)").anchor.z(), 60);
-    EXPECT_DOUBLE_EQ(labelNamed(*scene, "back (B)").anchor.z(), 25);
+    EXPECT_DOUBLE_EQ(labelNamed(*scene, "front ($F$)").anchor.z(), 60);
+    EXPECT_DOUBLE_EQ(labelNamed(*scene, "back ($B$)").anchor.z(), 25);
 }
 
 TEST(EvaluatedScene, EveryElementOfTheSetUpIsThere)
@@ -219,18 +219,18 @@ TEST(EvaluatedScene, StagesClaimWhatTheyAchieve)
     const auto house = evaluateScene(loadScene(std::string(VIEWPIPE_DATA_DIR) + "/scenes/house.json"));
     EXPECT_EQ(house->stageClaims, (std::vector<std::string>{"", "the identity here: nothing moves",
                                                             "the identity here: nothing moves", "PRP at the origin",
-                                                            "DOP along the z axis",
-                                                            "sides on x = \u00b1z, y = \u00b1z; back at z = -1, "
-                                                            "front at z_min = -0.407"}));
+                                                            "DOP along the $z$ axis",
+                                                            "sides on $x = \\pm z$, $y = \\pm z$; back at $z = -1$, "
+                                                            "front at $z_{\\min} = -0.407$"}));
     const auto gl = evaluateScene(loadScene(std::string(VIEWPIPE_DATA_DIR) + "/scenes/opengl-perspective.json"));
     EXPECT_EQ(gl->stageClaims,
               (std::vector<std::string>{"", "eye at the origin",
-                                        "s, u, -f along x, y, -z: the eye looks down -z; DOP along the z axis",
-                                        "sides on x = \u00b1z, y = \u00b1z",
-                                        "the volume is the cube -1 \u2264 x, y, z \u2264 1: near at z = -1, far at z = 1"}));
+                                        "$s, u, -f$ along $x, y, -z$: the eye looks down $-z$; DOP along the $z$ axis",
+                                        "sides on $x = \\pm z$, $y = \\pm z$",
+                                        "the volume is the cube $-1 \\le x, y, z \\le 1$: near at $z = -1$, far at $z = 1$"}));
     const auto parallel =
         evaluateScene(loadScene(std::string(VIEWPIPE_DATA_DIR) + "/scenes/house-parallel-oblique.json"));
-    EXPECT_EQ(parallel->stageClaims.back(), "the volume is -1 \u2264 x, y \u2264 1, -1 \u2264 z \u2264 0");
+    EXPECT_EQ(parallel->stageClaims.back(), "the volume is $-1 \\le x, y \\le 1$, $-1 \\le z \\le 0$");
 }
 
 // The canonical volume's planes and two corners are named where they are (not moved by a stage).
@@ -244,11 +244,11 @@ TEST(EvaluatedScene, CanonicalVolumeIsLabelled)
             at[label.text] = label.anchor;
         }
     const double zmin = -24.0 / 59; // Foley's house: z_min = -(PRP_n - F) / (PRP_n - B) = -24/59
-    expectNear(at.at("z = -1"), Vec3<double>(0, 0, -1));
-    expectNear(at.at("z = z_min"), Vec3<double>(0, 0, zmin));
-    expectNear(at.at("x = -z"), Vec3<double>((-zmin + 1) / 2, 0, (zmin - 1) / 2));
-    expectNear(at.at("(0.407, 0.407, -0.407)"), Vec3<double>(-zmin, -zmin, zmin));
-    expectNear(at.at("(-1, -1, -1)"), Vec3<double>(-1, -1, -1));
+    expectNear(at.at("$z = -1$"), Vec3<double>(0, 0, -1));
+    expectNear(at.at("$z = z_{\\min}$"), Vec3<double>(0, 0, zmin));
+    expectNear(at.at("$x = -z$"), Vec3<double>((-zmin + 1) / 2, 0, (zmin - 1) / 2));
+    expectNear(at.at("$(0.407, 0.407, -0.407)$"), Vec3<double>(-zmin, -zmin, zmin)); // math: real minus signs
+    expectNear(at.at("$(-1, -1, -1)$"), Vec3<double>(-1, -1, -1));
 }
 
 TEST(EvaluatedScene, PointsAreMarkedWhereTheyAre)

@@ -65,9 +65,10 @@ TEST(FoleyHouse, StagesAreNamedForPeople)
     EXPECT_EQ(stageText(stages, 0, StageText::ListEntry), "0. World — the scene in world coordinates");
     EXPECT_EQ(stageText(stages, 0, StageText::Caption), "World coordinates");
     EXPECT_EQ(stageText(stages, 0, StageText::Heading), "0. World coordinates");
-    EXPECT_EQ(stageText(stages, 2, StageText::ListEntry), "2. R — " + stages[1].explanation);
-    EXPECT_EQ(stageText(stages, 2, StageText::Caption), "After R");
-    EXPECT_EQ(stageText(stages, 5, StageText::Heading), "5. S_per - " + stages[4].explanation);
+    EXPECT_EQ(stageText(stages, 2, StageText::ListEntry), "2. $R$ — " + stages[1].explanation);
+    EXPECT_EQ(stageText(stages, 2, StageText::Caption), "After $R$");
+    EXPECT_EQ(stageText(stages, 5, StageText::Heading), "5. $S_{\\mathrm{per}}$ – " + stages[4].explanation);
+    EXPECT_EQ(mathPlainText(stageText(stages, 5, StageText::Heading)), "5. S_per – " + mathPlainText(stages[4].explanation));
 }
 
 TEST(FoleyHouse, NperAndZminMatchHandComputation)

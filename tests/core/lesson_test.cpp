@@ -231,6 +231,8 @@ TEST(Lesson, AStepHidesAndHighlightsElementsAndEntries)
     expectRefused([] { lessonWith(R"({"scene": "house.json", "caption": "$x}{$"})"); }, "steps[0].caption",
                   "braces do not pair up");
     EXPECT_NO_THROW(lessonWith(R"({"scene": "house.json", "caption": "a set $\\{x\\}$ and \\$5 {plain}"})"));
+    expectRefused([] { lessonWith(R"({"scene": "house.json", "caption": "c", "question": {"kind": "choice", "prompt": "p",
+                   "choices": ["$x$", "$\\mathcal{X}$"], "answer": 1}})"); }, "steps[0].question.choices[1]", "\\mathcal");
     expectRefused([] { lessonWith(R"({"scene": "house.json", "caption": "c", "hide": ["walls"]})"); }, "steps[0].hide[0]",
                   "must be one of objects, world_axes");
     expectRefused([] { lessonWith(R"({"scene": "house.json", "caption": "c", "highlight": {"entries": [[1, 3]]}})"); },

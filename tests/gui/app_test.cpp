@@ -131,13 +131,13 @@ private slots:
         QVERIFY(w.isAnimating());
         waitForRest(w);
         QCOMPARE(w.stage(), 1);
-        QVERIFY(w.matrices()->stageText().contains("T(-VRP)"));
+        QVERIFY(w.matrices()->stageText().contains("<i>T</i>(−<i>VRP</i>)")); // set as math
 
         // Through the slider to the last stage: each step animates.
         w.findChild<QSlider*>("stageSlider")->setValue(5);
         waitForRest(w);
         QCOMPARE(w.stage(), 5);
-        QVERIFY(w.matrices()->stageText().contains("S_per"));
+        QVERIFY(w.matrices()->stageText().contains("<i>S</i><sub>per</sub>")); // S_per, set as math
         QCOMPARE(w.stageList()->currentRow(), 5);
         QVERIFY(worldPicture(w) != world);
 

@@ -13,8 +13,12 @@
 #include <array>
 #include <cstdio>
 #include <optional>
+#include <regex>
 #include <string>
 #include <vector>
+
+#include "viewpipe/error.hpp"
+#include "viewpipe/math_text.hpp"
 
 struct DrawnText {
     std::string text;
@@ -57,6 +61,26 @@ inline DrawnTexts drawnTexts(vtkRenderer* view)
     return drawn;
 }
 
+// Math written as plain text ("z_min", "x = +-z", a hyphen for a minus sign
+// as in "-1") outside the text's math, or math the renderers cannot set.
+inline bool plainTextMath(const std::string& text)
+{
+    try {
+        viewpipe::mathRuns(text);
+    } catch (const viewpipe::InputError&) {
+        return true;
+    }
+    std::string prose;
+    bool math = false;
+    for (std::size_t k = 0; k < text.size(); ++k)
+        if (text[k] == '$' && (k == 0 || text[k - 1] != '\\'))
+            math = !math;
+        else if (!math)
+            prose += text[k];
+    static const std::regex plain(R"(_|\^|\+-|(^|[\s(,=])-[0-9A-Za-z])");
+    return std::regex_search(prose, plain);
+}
+
 inline bool overlap(const std::array<double, 4>& a, const std::array<double, 4>& b)
 {
     return a[0] < b[1] && b[0] < a[1] && a[2] < b[3] && b[2] < a[3];
@@ -77,6 +101,8 @@ inline std::string textTrouble(vtkRenderer* view)
         const DrawnText& t = drawn.texts[i];
         if (t.box[0] < 0 || t.box[1] > size[0] || t.box[2] < 0 || t.box[3] > size[1])
             return "\"" + t.text + "\" leaves the view" + box(t.box);
+        if (plainTextMath(t.text))
+            return "\"" + t.text + "\" sets math as plain text";
         if (drawn.legend && overlap(t.box, *drawn.legend))
             return "\"" + t.text + "\" covers the legend" + box(t.box) + box(*drawn.legend);
         for (std::size_t j = i + 1; j < drawn.texts.size(); ++j)

@@ -233,7 +233,7 @@ private slots:
         QVERIFY(window.openScene(kScenes + "/classical/house-oblique.json"));
         window.goToStage(window.stageCount(), false); // S_par, with the longest notes
         window.showPanel("matrices");
-        QVERIFY(window.matrices()->stageText().contains("S_par"));
+        QVERIFY(window.matrices()->stageText().contains("<i>S</i><sub>par</sub>")); // S_par, set as math
         auto* scroll = window.findChild<QDockWidget*>("matricesDock")->findChild<QScrollArea*>();
         QTest::qWait(200); // the layout settles
         QVERIFY(scroll->viewport()->width() > 100);
@@ -290,8 +290,13 @@ private slots:
         QVERIFY(!guide->isModal());
         QCOMPARE(GuideDialog::showFor(&parent), guide); // one guide, brought to the front
         const QString text = guide->browser()->toPlainText();
-        for (const std::string& symbol : symbols)
-            QVERIFY2(text.contains(QString::fromStdString(symbol)), symbol.c_str());
+        for (const std::string& symbol : symbols) {
+            // As math: SH_frustum is SH with "frustum" below it, T(-VRP) has a minus sign.
+            QString written = QString::fromStdString(symbol).replace('-', "−");
+            if (const int script = written.indexOf('_'); script >= 0)
+                written.remove(script, 1);
+            QVERIFY2(text.contains(written), symbol.c_str());
+        }
         for (const char* words : {"Matrices", "Parameters", "Accuracy", "Depth", "Ctrl+Z", "Ctrl+Y", "Ctrl+E", "Ctrl+K",
                                   "Left", "Play"})
             QVERIFY2(text.contains(words), words);

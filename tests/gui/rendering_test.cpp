@@ -287,7 +287,7 @@ private slots:
             QVERIFY2(!xml.hasError(), qPrintable(xml.errorString()));
             QCOMPARE(images, 0);
             QVERIFY2(paths > 50, qPrintable(QString::number(paths)));
-            QVERIFY2(texts.contains("CW") && texts.contains("x"), qPrintable(texts.join("|")));
+            QVERIFY2(texts.contains("CW") && texts.contains("x"), qPrintable(texts.join("|"))); // the axis name x, in italics
             QSvgRenderer svg(out + "/" + name + ".svg");
             QImage fromSvg(png.size(), QImage::Format_RGB32);
             fromSvg.fill(Qt::white);
@@ -330,8 +330,8 @@ private slots:
         QVERIFY2(r.exitCode == 0, qPrintable(r.err));
         const QString world = readAll(out + "/00-world-tikz.tex");
         QVERIFY(world.contains("\\definecolor{vpDOP}") && world.contains("vp DOP/.style="));
-        QVERIFY(world.contains("{$\\mathrm{PRP}$}") && world.contains("{$\\mathrm{VRP}$}") &&
-                world.contains("{front ($F$)}"));
+        QVERIFY(world.contains("{PRP}") && world.contains("{VRP}") && world.contains("{front ($F$)}") &&
+                world.contains("{$x$}")); // each label's math as LaTeX
         QVERIFY(readAll(out + "/figures.tex").contains("\\input{05-s-per-tikz}"));
         for (const char* file : {"00-world-tikz.tex", "05-s-per-tikz.tex", "figures.tex"})
             QVERIFY2(compilesWithPdflatex(out, file), qPrintable(file));
@@ -523,10 +523,12 @@ private slots:
         QVERIFY2(bad.err.contains("--format: must be html or pdf"), qPrintable(bad.err));
         QVERIFY(!QDir(out.path() + "/none").exists());
 
-        // Text pdflatex cannot set is bad input, named by its step; a file outside the lesson is not read.
+        // Math outside the subset is refused as the lesson is read, naming its field (so a file outside the
+        // lesson is never read through \\input); text pdflatex still cannot set is bad input, named by its step.
         const QString house = QString(VIEWPIPE_DATA_DIR) + "/scenes/house.json";
-        for (const auto& [caption, reason] : {std::pair<QString, QString>{"$\\\\nosuchmacro$", "Undefined control sequence"},
-                                              {"$\\\\input{/etc/hostname}$", "not found"}}) {
+        for (const auto& [caption, reason] : {std::pair<QString, QString>{"$\\\\nosuchmacro$", "steps[1].caption: has math with \\nosuchmacro"},
+                                              {"$\\\\input{/etc/hostname}$", "steps[1].caption: has math with \\input"},
+                                              {"Ω", "steps[1]: pdflatex cannot set its text:"}}) {
             const QString broken = out.path() + "/broken.json";
             QFile file(broken);
             QVERIFY(file.open(QIODevice::WriteOnly));
@@ -535,8 +537,7 @@ private slots:
             file.close();
             const Run refused = viewpipe({"lesson", "export", broken, "--out", out.path() + "/none", "--format", "pdf", "--quiet"});
             QCOMPARE(refused.exitCode, 2);
-            QVERIFY2(refused.err.contains(broken + ": steps[1]: pdflatex cannot set its text:") && refused.err.contains(reason),
-                     qPrintable(refused.err));
+            QVERIFY2(refused.err.contains(broken + ": " + reason), qPrintable(refused.err));
             QVERIFY(!QDir(out.path() + "/none").exists());
         }
     }

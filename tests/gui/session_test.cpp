@@ -24,6 +24,7 @@
 
 #include <csignal>
 
+#include "app/MathText.h"
 #include "app_window.h"
 #include "files.h"
 #include "app/AccuracyPanel.h"
@@ -59,7 +60,7 @@ QString expectedCaption(MainWindow& window, int stage)
 {
     if (stage == 0)
         return "World coordinates";
-    return "After " + QString::fromStdString(window.document()->pipeline().stages[std::size_t(stage - 1)].symbol);
+    return "After $" + QString::fromStdString(symbolMath(window.document()->pipeline().stages[std::size_t(stage - 1)].symbol)) + "$";
 }
 
 QImage worldPicture(MainWindow& window)
@@ -194,7 +195,7 @@ private slots:
         QCOMPARE(w.stageList()->currentRow(), w.stage());
         QCOMPARE(shownTitle(w), expectedCaption(w, w.stage()));
         QVERIFY(w.matrices()->stageText().contains(
-            QString::fromStdString(w.document()->pipeline().stages[std::size_t(w.stage() - 1)].symbol)));
+            mathHtml("$" + symbolMath(w.document()->pipeline().stages[std::size_t(w.stage() - 1)].symbol) + "$")));
     }
 
     // Found: a traced vertex and the Accuracy results carried into the next scene.

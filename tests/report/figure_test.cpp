@@ -323,15 +323,14 @@ TEST(Figure, TranslationsShowWhereThingsWere)
         }));
 }
 
-TEST(Tikz, LabelsInTheirUsualNotation)
+TEST(Tikz, LabelsAreTheirMathAndEscapedText)
 {
-    EXPECT_EQ(texLabel("PRP"), "$\\mathrm{PRP}$");
-    EXPECT_EQ(texLabel("n"), "$n$");
-    EXPECT_EQ(texLabel("front (F)"), "front ($F$)");
-    EXPECT_EQ(texLabel("far at infinity (volume cut)"), "far at infinity (volume cut)");
-    EXPECT_EQ(texLabel("z = z_min"), "$z = z_{\\min}$");
-    EXPECT_EQ(texLabel("z = 1 (far)"), "$z = 1$ (far)");
-    EXPECT_EQ(texLabel("50% & more_"), "50\\% \\& more\\_");
+    EXPECT_EQ(texRichText("PRP"), "PRP");
+    EXPECT_EQ(texRichText("$n$"), "$n$");
+    EXPECT_EQ(texRichText("front ($F$)"), "front ($F$)");
+    EXPECT_EQ(texRichText("$z = z_{\\min}$"), "$z = z_{\\min}$");
+    EXPECT_EQ(texRichText("$z = 1$ (far)"), "$z = 1$ (far)");
+    EXPECT_EQ(texRichText("50% & more_ \\$5"), "50\\% \\& more\\_ \\$5");
 }
 
 TEST(Tikz, OneCommandPerShapeAndLabelWithNamedStyles)
@@ -348,7 +347,8 @@ TEST(Tikz, OneCommandPerShapeAndLabelWithNamedStyles)
     EXPECT_EQ(count("\n\\\\node\\[vp [A-Za-z]+ label\\] \\(vp label [0-9]+\\)"), figure.labels.size());
     EXPECT_NE(tex.find("\\definecolor{vpDOP}"), std::string::npos);
     EXPECT_NE(tex.find("vp DOP/.style={draw=vpDOP"), std::string::npos);
-    EXPECT_NE(tex.find("{$\\mathrm{PRP}$}"), std::string::npos);
+    EXPECT_NE(tex.find("{PRP}"), std::string::npos);
+    EXPECT_NE(tex.find("{$u$}"), std::string::npos); // the label's math, as LaTeX
     EXPECT_NE(tex.find("\\documentclass[tikz,border=0pt]{standalone}"), std::string::npos);
     const std::string all = tikzFiguresDocument({{"00-world-tikz", "0. World coordinates"}, {"01-t-vrp-tikz", "1. T(-VRP)"}});
     EXPECT_NE(all.find("\\usepackage{standalone}"), std::string::npos);

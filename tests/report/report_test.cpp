@@ -145,14 +145,6 @@ TEST(Latex, IrrationalEntriesAreDecimals)
     EXPECT_NE(cli::stageLatex(oblique, 2, 6).find("0.707107 & 0 & -0.707107 & 0"), std::string::npos);
 }
 
-TEST(Latex, Symbols)
-{
-    EXPECT_EQ(cli::latexSymbol("SH_per"), "\\mathit{SH}_{\\mathrm{per}}");
-    EXPECT_EQ(cli::latexSymbol("T(-VRP)"), "T(-\\mathit{VRP})");
-    EXPECT_EQ(cli::latexSymbol("R"), "R");
-    EXPECT_EQ(cli::latexSymbol("NDC_vulkan_reversed"), "\\mathit{NDC}_{\\mathrm{vulkan\\_reversed}}"); // one subscript
-}
-
 TEST(PipelineJson, HouseHasTheContractedKeys)
 {
     const Scene house = loadScene(kScenes / "house.json");

@@ -376,7 +376,10 @@ TEST_F(WebPage, LinksToAMomentTracesAVertexAndTypesetsTheMatrices)
     browser.page("Page.navigate", {{"url", "file://" + page.string() + "#stage=4&yaw=20"}});
     ASSERT_TRUE(browser.waitFor("document.body.dataset.ready === '1'"));
     EXPECT_EQ(browser.evaluate("document.body.dataset.stage"), "4");
-    EXPECT_EQ(browser.evaluate("document.querySelector('[aria-current=step]').textContent.startsWith('4. SH_per')"), true);
+    // The stage list's symbols typeset by KaTeX from the core's math.
+    EXPECT_EQ(browser.evaluate("document.querySelector('[aria-current=step]').textContent.startsWith('4. ')"), true);
+    EXPECT_EQ(browser.evaluate("document.querySelector('[aria-current=step] annotation').textContent"),
+              "\\mathit{SH}_{\\mathrm{per}}");
     // KaTeX typeset the stage's matrix and the product so far.
     EXPECT_EQ(browser.evaluate("document.querySelectorAll('#matrix .katex, #cumulative .katex').length"), 2);
     EXPECT_NE(browser.evaluate("document.getElementById('matrix').textContent").get<std::string>().find("SH"),
@@ -402,8 +405,10 @@ TEST_F(WebPage, LinksToAMomentTracesAVertexAndTypesetsTheMatrices)
                                                   {"button", "left"}, {"clickCount", 1}});
     ASSERT_TRUE(browser.waitFor("document.querySelectorAll('#trace tr').length === 7"));
     // After T(-PRP), the PRP being (8, 6, 84) in VRC = world here, the corner is at (-8, -6, -30).
-    EXPECT_EQ(browser.evaluate("[...document.querySelectorAll('#trace tr')[4].cells].map(c => c.textContent).join(' ')"),
-              "T(-PRP) -8 -6 -30 1");
+    EXPECT_EQ(browser.evaluate("document.querySelectorAll('#trace tr')[4].cells[0].querySelector('annotation').textContent"),
+              "T(-\\mathit{PRP})");
+    EXPECT_EQ(browser.evaluate("[...document.querySelectorAll('#trace tr')[4].cells].slice(1).map(c => c.textContent).join(' ')"),
+              "-8 -6 -30 1");
     for (const std::string& problem : browser.problems())
         ADD_FAILURE() << problem;
 }

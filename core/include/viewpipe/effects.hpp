@@ -96,7 +96,7 @@ Pipeline<T> withEffectStages(Pipeline<T> p, const EffectList& effects, std::vect
     if (p.convention == Convention::Foley) {
         p.stages.push_back({"M",
                             "map the canonical perspective volume onto the canonical parallel volume (the divide "
-                            "by w = -z follows)",
+                            "by $w = -z$ follows)",
                             p.toClip});
         p.composite = p.clipMatrix();
         p.toClip = Mat4<T>::Identity();

@@ -63,7 +63,7 @@ struct Marker {
 
 struct Label {
     Element element;
-    std::string text;
+    std::string text; // with its math between $ signs (math_text.hpp)
     Vec3<double> anchor; // world coordinates, or the stage's where `fixed`
     // In the stage's coordinates, not moved by its matrix: the canonical
     // volume's (shown with it) and the frame axes'.

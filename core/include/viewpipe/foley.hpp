@@ -141,9 +141,9 @@ template <class T> std::vector<Stage<T>> perspectiveStages(const ViewSpec<T>& sp
     const T sy = T(2) / (spec.window.vmax - spec.window.vmin) * perspective;
     return {
         {"T(-VRP)", "translate the view reference point to the origin", translation<T>(-spec.vrp)},
-        {"R", "rotate VRC onto the world axes: u to x, v to y, n to z", embedLinear(basis.rotation())},
+        {"R", "rotate VRC onto the world axes: $u$ to $x$, $v$ to $y$, $n$ to $z$", embedLinear(basis.rotation())},
         {"T(-PRP)", "translate the center of projection (PRP) to the origin", translation<T>(-spec.prp)},
-        {"SH_per", "shear so that the center line of the view volume becomes the z axis", shearDopToAxis(spec)},
+        {"SH_per", "shear so that the center line of the view volume becomes the $z$ axis", shearDopToAxis(spec)},
         {"S_per", "scale so that the view volume becomes the canonical perspective volume",
          scaling<T>(sx, sy, T(1) / depth)},
     };
@@ -156,8 +156,8 @@ template <class T> std::vector<Stage<T>> parallelStages(const ViewSpec<T>& spec)
     const Vec3<T> toFrontCenter(-spec.window.centerU(), -spec.window.centerV(), -spec.front);
     return {
         {"T(-VRP)", "translate the view reference point to the origin", translation<T>(-spec.vrp)},
-        {"R", "rotate VRC onto the world axes: u to x, v to y, n to z", embedLinear(basis.rotation())},
-        {"SH_par", "shear so that the direction of projection becomes parallel to the z axis",
+        {"R", "rotate VRC onto the world axes: $u$ to $x$, $v$ to $y$, $n$ to $z$", embedLinear(basis.rotation())},
+        {"SH_par", "shear so that the direction of projection becomes parallel to the $z$ axis",
          shearDopToAxis(spec)},
         {"T_par", "translate the center of the front face of the view volume to the origin",
          translation<T>(toFrontCenter)},

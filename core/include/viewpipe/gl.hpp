@@ -333,8 +333,8 @@ template <class T> std::vector<Stage<T>> lookAtStages(const LookAt<T>& look, Han
         {"T(-eye)", "translate the eye to the origin", translation<T>(-look.eye)},
         {"R_eye",
          handedness == Handedness::Left
-             ? "rotate so that the view direction becomes +z and up lies in the y-z plane (left-handed)"
-             : "rotate so that the view direction becomes -z and up lies in the y-z plane",
+             ? "rotate so that the view direction becomes $+z$ and up lies in the $yz$ plane (left-handed)"
+             : "rotate so that the view direction becomes $-z$ and up lies in the $yz$ plane",
          embedLinear(eyeRotation(look, handedness))},
     };
 }
@@ -347,11 +347,11 @@ template <class T> Stage<T> ndcStage(Api api, DepthMode depth)
     const bool reversed = depth == DepthMode::Reversed;
     std::string what;
     if (zeroToOneDepth(api))
-        what = reversed ? "z' = (w - z)/2, near 1, far 0" : "z' = (z + w)/2, near 0, far 1";
+        what = reversed ? "$z' = (w - z)/2$, near 1, far 0" : "$z' = (z + w)/2$, near 0, far 1";
     else
-        what = "z' = -z, near 1, far -1";
+        what = "$z' = -z$, near 1, far $-1$";
     if (yDown(api))
-        what += "; y' = -y (or: a negative viewport height)";
+        what += "; $y' = -y$ (or: a negative viewport height)";
     return {"NDC_" + (api == Api::OpenGL ? std::string("reversed") : apiName(api) + (reversed ? "_reversed" : "")),
             "to " + apiTitle(api) + "'s clip coordinates" + (reversed ? ", reversed" : "") + ": " + what,
             ndcConversion<T>(api, depth)};
@@ -369,26 +369,26 @@ template <class T> std::vector<Stage<T>> projectionStages(const ProjectionSpec<T
                                        (p.zNear + p.zFar) / T(2));
                 return {
                     {"T_ortho", "translate the center of the view box to the origin", translation<T>(toCenter)},
-                    {"S_ortho", "scale the box to the cube [-1, 1]^3, flipping z so that near maps to -1",
+                    {"S_ortho", "scale the box to the cube $[-1, 1]^3$, flipping $z$ so that near maps to $-1$",
                      scaling<T>(T(2) / (p.right - p.left), T(2) / (p.top - p.bottom), T(-2) / (p.zFar - p.zNear))},
                 };
             } else if constexpr (std::is_same_v<P, Frustum<T>>) {
                 const T shx = (p.right + p.left) / (T(2) * p.zNear);
                 const T shy = (p.top + p.bottom) / (T(2) * p.zNear);
                 return {
-                    {"SH_frustum", "shear so that the center line of the frustum becomes the -z axis",
+                    {"SH_frustum", "shear so that the center line of the frustum becomes the $-z$ axis",
                      shearXYbyZ<T>(shx, shy)},
-                    {"S_frustum", "scale x and y so that the sides become x = +-z, y = +-z",
+                    {"S_frustum", "scale $x$ and $y$ so that the sides become $x = \\pm z$, $y = \\pm z$",
                      scaling<T>(T(2) * p.zNear / (p.right - p.left), T(2) * p.zNear / (p.top - p.bottom), T(1))},
-                    {"P_depth", "perspective matrix: w = -z, and near..far mapped to -1..1 after the divide",
+                    {"P_depth", "perspective matrix: $w = -z$, and near to far mapped to $-1$ to 1 after the divide",
                      detail::perspectiveDepth(p.zNear, p.zFar)},
                 };
             } else {
                 const T f = detail::cotHalfFovy(p.fovyDegrees);
                 return {
-                    {"S_fovy", "scale x and y so that the field of view becomes 90 degrees: x = +-z, y = +-z",
+                    {"S_fovy", "scale $x$ and $y$ so that the field of view becomes $90^\\circ$: $x = \\pm z$, $y = \\pm z$",
                      scaling<T>(f / p.aspect, f, T(1))},
-                    {"P_depth", "perspective matrix: w = -z, and near..far mapped to -1..1 after the divide",
+                    {"P_depth", "perspective matrix: $w = -z$, and near to far mapped to $-1$ to 1 after the divide",
                      detail::perspectiveDepth(p.zNear, p.zFar)},
                 };
             }
@@ -403,7 +403,7 @@ template <class T> std::vector<Stage<T>> stages(const Camera<T>& camera)
     std::vector<Stage<T>> all = lookAtStages(camera.lookAt, camera.handedness);
     if (camera.handedness == Handedness::Left)
         all.push_back({"Z_flip",
-                       "mirror z: the left-handed eye space, looking down +z, becomes the right-handed one the "
+                       "mirror $z$: the left-handed eye space, looking down $+z$, becomes the right-handed one the "
                        "projection is written for",
                        handednessFlip<T>()});
     for (Stage<T>& stage : projectionStages(camera.projection))

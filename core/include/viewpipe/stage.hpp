@@ -4,6 +4,7 @@
 #include <vector>
 
 #include "viewpipe/linalg.hpp"
+#include "viewpipe/math_text.hpp"
 
 namespace viewpipe {
 
@@ -35,11 +36,12 @@ template <class T> std::vector<Mat4<T>> cumulativeProducts(const std::vector<Sta
 }
 
 // The texts that name stage k of a pipeline for people, k = 0 being the world
-// before any stage.
+// before any stage, with the symbols and formulas as math (math_text.hpp;
+// mathPlainText for a terminal).
 enum class StageText {
-    ListEntry, // "0. World — the scene in world coordinates", "2. R — rotate ...": the app's list of stages
-    Caption,   // "World coordinates", "After R": over the picture of the world view
-    Heading,   // "0. World coordinates", "2. R - rotate ...": exported pictures and text reports, in ASCII
+    ListEntry, // "0. World — the scene in world coordinates", "2. $R$ — rotate ...": the app's list of stages
+    Caption,   // "World coordinates", "After $R$": over the picture of the world view
+    Heading,   // "0. World coordinates", "2. $R$ – rotate ...": exported pictures and text reports
 };
 
 template <class T> std::string stageText(const std::vector<Stage<T>>& stages, std::size_t k, StageText text)
@@ -53,10 +55,11 @@ template <class T> std::string stageText(const std::vector<Stage<T>>& stages, st
     }
     const Stage<T>& stage = stages[k - 1];
     const std::string number = std::to_string(k) + ". ";
+    const std::string symbol = "$" + symbolMath(stage.symbol) + "$";
     switch (text) {
-    case StageText::ListEntry: return number + stage.symbol + " — " + stage.explanation;
-    case StageText::Caption: return "After " + stage.symbol;
-    case StageText::Heading: return number + stage.symbol + " - " + stage.explanation;
+    case StageText::ListEntry: return number + symbol + " — " + stage.explanation;
+    case StageText::Caption: return "After " + symbol;
+    case StageText::Heading: return number + symbol + " – " + stage.explanation;
     }
     return "";
 }

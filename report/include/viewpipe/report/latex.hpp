@@ -31,7 +31,4 @@ std::vector<StageLatex> stagesLatex(const Scene& scene, int digits);
 // Entry (row, column), from 1, of stage `stage`'s matrix: an exact fraction where it is one, else a decimal.
 std::string entryLatex(const Scene& scene, int stage, int row, int column, int digits);
 
-// A stage symbol as LaTeX math: "SH_per" -> "\mathit{SH}_{\mathrm{per}}".
-std::string latexSymbol(const std::string& symbol);
-
 } // namespace viewpipe::cli

@@ -37,8 +37,4 @@ std::string questionContext(const LessonStep& step);
 // A choice's letter, "(a)" for the first.
 std::string choiceLetter(std::size_t k);
 
-// Text with inline math between `$` signs (`\$` a dollar sign) as LaTeX: the
-// text escaped, the math as written.
-std::string texRichText(const std::string& text);
-
 } // namespace viewpipe

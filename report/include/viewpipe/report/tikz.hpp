@@ -24,7 +24,8 @@ std::string tikzFiguresDocument(const std::vector<std::pair<std::string, std::st
 // Text as LaTeX sets it: its special characters escaped, the signs beyond
 // ASCII that pdflatex does not know as text written as math.
 std::string texEscaped(const std::string& text);
-// A label's text in its usual notation: "PRP" as $\mathrm{PRP}$, "u" as $u$, "front (F)" as front ($F$).
-std::string texLabel(const std::string& text);
+// Text with inline math between `$` signs (`\$` a dollar sign) as LaTeX: the
+// text escaped, the math as written (the subset is LaTeX).
+std::string texRichText(const std::string& text);
 
 } // namespace viewpipe

@@ -1,0 +1,54 @@
+#pragma once
+
+// The math ViewPipe sets, one definition for every renderer: text with inline
+// math between `$` signs (`\$` is a dollar sign), the math a small subset of
+// LaTeX that KaTeX and pdflatex (with amsmath) read alike:
+//   letters (in italics), digits and signs; groups `{…}`; scripts `_` and `^`;
+//   \mathit \mathbf \mathrm \text \textrm \operatorname{…}; \frac{a}{b}; \sqrt{a};
+//   \left and \right before a delimiter; the Greek letters, signs, spaces and
+//   function names of mathSubsetCommands().
+// Renderers without TeX (VTK, SVG, Qt's rich text) draw the runs: each a piece
+// of text in one style at one script level, signs as Unicode (a real minus).
+
+#include <string>
+#include <vector>
+
+namespace viewpipe {
+
+// How renderers without TeX set a script: its size, and how far its baseline
+// drops (a subscript) or rises (a superscript), in sizes of the text around it.
+constexpr double kScriptScale = 0.7;
+constexpr double kSubscriptDrop = 0.2;
+constexpr double kSuperscriptRise = 0.38;
+
+struct MathRun {
+    std::string text; // UTF-8
+    bool italic = false;
+    int level = 0; // 0 on the baseline, 1 a superscript, -1 a subscript, ±2 one deeper
+    bool operator==(const MathRun& other) const
+    {
+        return text == other.text && italic == other.italic && level == other.level;
+    }
+};
+
+// The text's runs, prose and math alike. Throws InputError(path, reason) for
+// math outside the subset, braces that do not pair up, or a `$` not closed.
+std::vector<MathRun> mathRuns(const std::string& text, const std::string& path = "text");
+
+// Throws as mathRuns does: what a reader of untrusted text (a lesson) checks.
+void checkMathText(const std::string& text, const std::string& path);
+
+// The runs as one line of Unicode text, scripts inline: what a plain-text
+// medium (a window title, a screen reader, a terminal) shows.
+std::string mathPlainText(const std::string& text);
+
+// The words of a line of text, split at spaces outside math: where it may wrap.
+std::vector<std::string> mathTextWords(const std::string& line);
+
+// The commands the subset has besides the font commands, \frac, \sqrt, \left and \right.
+std::vector<std::string> mathSubsetCommands();
+
+// A stage symbol as math: "SH_per" -> "\mathit{SH}_{\mathrm{per}}", "T(-VRP)" -> "T(-\mathit{VRP})".
+std::string symbolMath(const std::string& symbol);
+
+} // namespace viewpipe

@@ -1,0 +1,334 @@
+#include "viewpipe/math_text.hpp"
+
+#include <algorithm>
+#include <cctype>
+#include <map>
+
+#include "viewpipe/error.hpp"
+
+namespace viewpipe {
+namespace {
+
+// Commands set as one sign or a space, as KaTeX sets them.
+const std::map<std::string, std::string>& signs()
+{
+    static const std::map<std::string, std::string> table = {
+        {"alpha", "α"},   {"beta", "β"},       {"gamma", "γ"},   {"delta", "δ"},     {"epsilon", "ε"},
+        {"theta", "θ"},   {"lambda", "λ"},     {"mu", "μ"},      {"pi", "π"},        {"rho", "ρ"},
+        {"sigma", "σ"},   {"tau", "τ"},        {"phi", "φ"},     {"omega", "ω"},     {"Delta", "Δ"},
+        {"Theta", "Θ"},   {"Pi", "Π"},         {"Phi", "Φ"},     {"approx", " ≈ "},  {"cdot", " · "},
+        {"times", " × "}, {"le", " ≤ "},       {"leq", " ≤ "},   {"ge", " ≥ "},      {"geq", " ≥ "},
+        {"ne", " ≠ "},    {"neq", " ≠ "},      {"to", " → "},    {"rightarrow", " → "}, {"mapsto", " ↦ "},
+        {"equiv", " ≡ "}, {"sim", " ∼ "},      {"in", " ∈ "},    {"infty", "∞"},     {"pm", "±"},
+        {"mp", "∓"},      {"circ", "°"},       {"ldots", "…"},   {"dots", "…"},      {"cdots", "⋯"},
+        {"perp", "⊥"},    {"parallel", "∥"},   {"prime", "′"},   {"quad", "  "},     {"qquad", "    "},
+        {",", " "},       {";", " "},          {":", " "},       {"!", ""},          {"{", "{"},
+        {"}", "}"},       {"$", "$"},          {"%", "%"},       {"_", "_"},         {"|", "‖"}};
+    return table;
+}
+
+// Function names, set upright as written.
+const std::vector<std::string>& functions()
+{
+    static const std::vector<std::string> names = {"sin", "cos", "tan", "cot", "sec", "csc", "arcsin", "arccos",
+                                                   "arctan", "min", "max", "log", "ln", "exp", "det"};
+    return names;
+}
+
+enum class Font { Default, Italic, Upright, Text };
+
+// Reads math left to right into runs: a group up to its closing brace, scripts
+// and commands with their arguments.
+class MathReader {
+public:
+    MathReader(const std::string& math, const std::string& path, std::vector<MathRun>& runs)
+        : math_(math), path_(path), runs_(runs)
+    {
+    }
+
+    void read()
+    {
+        group(false, Font::Default, 0);
+    }
+
+private:
+    // Deeper nesting than any lesson's math (a hostile file's thousands of braces) is refused.
+    static constexpr int kMaxDepth = 40;
+
+    [[noreturn]] void refuse(const std::string& reason) const
+    {
+        throw InputError(path_, "has math " + reason + ": $" + math_ + "$");
+    }
+
+    void add(const std::string& text, bool italic, int level)
+    {
+        if (text.empty())
+            return;
+        if (!runs_.empty() && runs_.back().italic == italic && runs_.back().level == level)
+            runs_.back().text += text;
+        else
+            runs_.push_back({text, italic, level});
+    }
+
+    void group(bool braced, Font font, int level)
+    {
+        while (at_ < math_.size()) {
+            const char c = math_[at_];
+            if (c == '}') {
+                if (!braced)
+                    refuse("whose braces do not pair up");
+                ++at_;
+                return;
+            }
+            item(font, level);
+        }
+        if (braced)
+            refuse("whose braces do not pair up");
+    }
+
+    // One character, one braced group or one command with its arguments.
+    void item(Font font, int level)
+    {
+        struct Deeper {
+            explicit Deeper(int& depth) : depth_(depth) { ++depth_; }
+            ~Deeper() { --depth_; }
+            int& depth_;
+        } deeper(depth_);
+        if (depth_ > kMaxDepth)
+            refuse("nested deeper than " + std::to_string(kMaxDepth) + " levels");
+        const char c = math_[at_];
+        if (c == '{') {
+            ++at_;
+            group(true, font, level);
+        } else if (c == '_' || c == '^') {
+            if (font == Font::Text)
+                refuse("with a script in text");
+            ++at_;
+            skipSpaces();
+            if (at_ >= math_.size() || math_[at_] == '}' || math_[at_] == '_' || math_[at_] == '^')
+                refuse(std::string("with a ") + c + " that has nothing to set");
+            if (c == '^' && math_.compare(at_, 5, "\\circ") == 0 &&
+                (at_ + 5 == math_.size() || !std::isalpha(static_cast<unsigned char>(math_[at_ + 5])))) {
+                add("°", false, level); // 45^\circ: the degree sign on the line
+                at_ += 5;
+                return;
+            }
+            const int scripted = level + (c == '^' ? 1 : -1);
+            item(font, std::clamp(scripted, -2, 2));
+        } else if (c == '\\') {
+            command(font, level);
+        } else if (std::isalpha(static_cast<unsigned char>(c))) {
+            std::size_t end = at_;
+            while (end < math_.size() && std::isalpha(static_cast<unsigned char>(math_[end])))
+                ++end;
+            add(math_.substr(at_, end - at_), font == Font::Default || font == Font::Italic, level);
+            at_ = end;
+        } else if (c == '&' || c == '#' || c == '~' || c == '%') {
+            refuse(std::string("with a ") + c + ", which the subset does not set");
+        } else if (std::isspace(static_cast<unsigned char>(c))) {
+            if (font == Font::Text)
+                add(" ", false, level);
+            ++at_; // math ignores spaces; its own are commands
+        } else if (font == Font::Text) {
+            add(std::string(1, c), false, level);
+            ++at_;
+        } else {
+            // Spaced as math spaces them: relations and sums on both sides, a comma after.
+            static const std::map<char, std::string> spaced = {
+                {'-', "−"}, {'=', " = "}, {'+', " + "}, {'<', " < "}, {'>', " > "}, {',', ", "}};
+            const auto sign = spaced.find(c);
+            std::string text = sign == spaced.end() ? std::string(1, c) : sign->second;
+            if (c == '-' || c == '+') { // a sign, not a sum, after an opening or at the start
+                const bool unary = runs_.empty() || runs_.back().text.empty() ||
+                                   std::string("([{,=<> ").find(runs_.back().text.back()) != std::string::npos;
+                text = c == '-' ? (unary ? "−" : " − ") : (unary ? "+" : " + ");
+            }
+            add(text, false, level);
+            ++at_;
+        }
+    }
+
+    void skipSpaces()
+    {
+        while (at_ < math_.size() && std::isspace(static_cast<unsigned char>(math_[at_])))
+            ++at_;
+    }
+
+    // One argument of a command: a braced group or a single item.
+    void argument(Font font, int level)
+    {
+        skipSpaces();
+        if (at_ >= math_.size() || math_[at_] == '}')
+            refuse("with a command that lacks its argument");
+        item(font, level);
+    }
+
+    void command(Font font, int level)
+    {
+        ++at_; // the backslash
+        std::size_t end = at_;
+        while (end < math_.size() && std::isalpha(static_cast<unsigned char>(math_[end])))
+            ++end;
+        if (end == at_ && end < math_.size())
+            ++end; // a sign: \, \; \{
+        const std::string name = math_.substr(at_, end - at_);
+        at_ = end;
+        if (name.empty())
+            refuse("that ends in a backslash");
+        if (name == "mathit") {
+            argument(Font::Italic, level);
+        } else if (name == "mathrm" || name == "operatorname") {
+            argument(Font::Upright, level);
+        } else if (name == "text" || name == "textrm") {
+            argument(Font::Text, level);
+        } else if (name == "frac") { // on one line: a/b, (a + b)/c
+            const std::vector<MathRun> top = captured(font, level), bottom = captured(font, level);
+            addBracketed(top, level);
+            add("/", false, level);
+            addBracketed(bottom, level);
+        } else if (name == "sqrt") { // an overline would run into the line above in a label
+            add("√", false, level);
+            addBracketed(captured(font, level), level);
+        } else if (name == "left" || name == "right") {
+            skipSpaces();
+            if (at_ >= math_.size() || std::string("()[]|.\\").find(math_[at_]) == std::string::npos)
+                refuse("with \\" + name + " not before a delimiter");
+            if (math_[at_] == '.')
+                ++at_; // the empty delimiter
+        } else if (const auto sign = signs().find(name); sign != signs().end()) {
+            add(sign->second, false, level);
+        } else if (std::find(functions().begin(), functions().end(), name) != functions().end()) {
+            add(name, false, level);
+        } else {
+            refuse("with \\" + name + ", which ViewPipe does not set (it sets the LaTeX subset docs/lesson-format.md lists)");
+        }
+    }
+
+    // The runs of one argument, apart from those before it.
+    std::vector<MathRun> captured(Font font, int level)
+    {
+        std::vector<MathRun> before;
+        before.swap(runs_);
+        argument(font, level);
+        before.swap(runs_);
+        return before;
+    }
+
+    // Runs in brackets unless they are one word or number.
+    void addBracketed(const std::vector<MathRun>& runs, int level)
+    {
+        const bool simple = runs.size() == 1 && runs[0].text.size() < 16 &&
+                            std::all_of(runs[0].text.begin(), runs[0].text.end(),
+                                        [](char c) { return std::isalnum(static_cast<unsigned char>(c)) || c == '.'; });
+        if (!simple)
+            add("(", false, level);
+        for (const MathRun& run : runs)
+            add(run.text, run.italic, run.level);
+        if (!simple)
+            add(")", false, level);
+    }
+
+    const std::string& math_;
+    const std::string& path_;
+    std::vector<MathRun>& runs_;
+    std::size_t at_ = 0;
+    int depth_ = 0;
+};
+
+} // namespace
+
+std::vector<MathRun> mathRuns(const std::string& text, const std::string& path)
+{
+    std::vector<MathRun> runs;
+    std::string prose;
+    auto addProse = [&] {
+        if (prose.empty())
+            return;
+        if (!runs.empty() && !runs.back().italic && runs.back().level == 0)
+            runs.back().text += prose;
+        else
+            runs.push_back({prose, false, 0});
+        prose.clear();
+    };
+    for (std::size_t k = 0; k < text.size(); ++k) {
+        if (text[k] == '\\' && k + 1 < text.size() && text[k + 1] == '$') {
+            prose += '$';
+            ++k;
+        } else if (text[k] == '$') {
+            std::size_t close = k + 1;
+            while (close < text.size() && (text[close] != '$' || text[close - 1] == '\\'))
+                ++close;
+            if (close >= text.size())
+                throw InputError(path, "has a $ that opens math and none that closes it (write \\$ for a dollar sign)");
+            addProse();
+            const std::string math = text.substr(k + 1, close - k - 1);
+            MathReader(math, path, runs).read();
+            k = close;
+        } else {
+            prose += text[k];
+        }
+    }
+    addProse();
+    return runs;
+}
+
+void checkMathText(const std::string& text, const std::string& path)
+{
+    mathRuns(text, path);
+}
+
+std::string mathPlainText(const std::string& text)
+{
+    std::string out;
+    for (const MathRun& run : mathRuns(text))
+        out += run.level == 0 ? run.text
+                              : (run.level < 0 ? "_" : "^") +
+                                    (run.text.find_first_of(" +-/") == std::string::npos ? run.text : "(" + run.text + ")");
+    return out;
+}
+
+std::vector<std::string> mathTextWords(const std::string& line)
+{
+    std::vector<std::string> words(1);
+    bool math = false;
+    for (std::size_t k = 0; k < line.size(); ++k) {
+        if (line[k] == '$' && (k == 0 || line[k - 1] != '\\'))
+            math = !math;
+        if (std::isspace(static_cast<unsigned char>(line[k])) && !math) {
+            if (!words.back().empty())
+                words.emplace_back();
+        } else {
+            words.back() += line[k];
+        }
+    }
+    if (words.back().empty())
+        words.pop_back();
+    return words;
+}
+
+std::vector<std::string> mathSubsetCommands()
+{
+    std::vector<std::string> names;
+    for (const auto& [name, sign] : signs())
+        names.push_back(name);
+    names.insert(names.end(), functions().begin(), functions().end());
+    return names;
+}
+
+std::string symbolMath(const std::string& symbol)
+{
+    const std::size_t open = symbol.find("(-");
+    if (open != std::string::npos) // T(-VRP) -> T(-\mathit{VRP})
+        return symbol.substr(0, open) + "(-\\mathit{" + symbol.substr(open + 2, symbol.size() - open - 3) + "})";
+    const std::size_t underscore = symbol.find('_');
+    const std::string base = symbol.substr(0, underscore);
+    const std::string math = base.size() > 1 ? "\\mathit{" + base + "}" : base;
+    if (underscore == std::string::npos)
+        return math;
+    std::string subscript = symbol.substr(underscore + 1);
+    for (std::size_t at = 0; (at = subscript.find('_', at)) != std::string::npos; at += 2)
+        subscript.replace(at, 1, "\\_"); // NDC_vulkan_reversed: one subscript with an underscore in it
+    return math + "_{\\mathrm{" + subscript + "}}";
+}
+
+} // namespace viewpipe

@@ -1,0 +1,60 @@
+#include <gtest/gtest.h>
+
+#include "viewpipe/error.hpp"
+#include "viewpipe/math_text.hpp"
+
+using namespace viewpipe;
+
+namespace {
+
+std::string refusal(const std::string& text, const std::string& path)
+{
+    try {
+        checkMathText(text, path);
+    } catch (const InputError& e) {
+        EXPECT_EQ(e.field(), path);
+        return e.reason();
+    }
+    return "";
+}
+
+} // namespace
+
+TEST(MathText, SetsScriptsItalicsAndSigns)
+{
+    // As TeX sets $z = z_{\min}$: italic letters, an upright subscript one level down.
+    const std::vector<MathRun> zmin = {{"z", true, 0}, {" = ", false, 0}, {"z", true, 0}, {"min", false, -1}};
+    EXPECT_EQ(mathRuns("$z = z_{\\min}$"), zmin);
+    // The stage symbol SH_per, and prose around math.
+    const std::vector<MathRun> shear = {{"4. ", false, 0}, {"SH", true, 0}, {"per", false, -1}, {" shears", false, 0}};
+    EXPECT_EQ(mathRuns("4. $\\mathit{SH}_{\\mathrm{per}}$ shears"), shear);
+    // A real minus sign: unary after an opening or a relation, spaced between terms; ± and ≤ as signs.
+    EXPECT_EQ(mathRuns("$T(-\\mathit{VRP})$")[1].text, "(−");
+    EXPECT_EQ(mathPlainText("$x = -z$"), "x = −z");
+    EXPECT_EQ(mathPlainText("$a - b$"), "a − b");
+    EXPECT_EQ(mathPlainText("$x = \\pm z$, $-1 \\le z$"), "x = ±z, −1 ≤ z");
+    EXPECT_EQ(mathPlainText("$x^2$"), "x^2");
+    EXPECT_EQ(mathPlainText("costs \\$5"), "costs $5");
+    EXPECT_EQ(mathPlainText("$\\text{if } x$"), "if x");
+}
+
+TEST(MathText, RefusesWhatItDoesNotSetNamingTheField)
+{
+    EXPECT_NE(refusal("see $\\foo{x}$", "steps[0].caption").find("\\foo"), std::string::npos);
+    EXPECT_NE(refusal("$x_{1$", "steps[1].prompt").find("braces"), std::string::npos);
+    EXPECT_NE(refusal("$x = 1", "steps[2].caption").find("closes"), std::string::npos);
+    EXPECT_NE(refusal("$a & b$", "x").find("&"), std::string::npos);
+    EXPECT_NE(refusal("$x_$", "x").find("nothing"), std::string::npos);
+    EXPECT_NE(refusal("$\\begin{bmatrix}1\\end{bmatrix}$", "x").find("\\begin"), std::string::npos);
+    EXPECT_NE(refusal("$" + std::string(5000, '{') + "$", "x").find("deeper"), std::string::npos);
+    EXPECT_EQ(refusal("$\\frac{1}{2} \\cdot \\sqrt{3} \\approx \\arctan x$", "x"), "");
+}
+
+TEST(MathText, StageSymbolsAreMath)
+{
+    EXPECT_EQ(symbolMath("SH_per"), "\\mathit{SH}_{\\mathrm{per}}");
+    EXPECT_EQ(symbolMath("T(-VRP)"), "T(-\\mathit{VRP})");
+    EXPECT_EQ(symbolMath("R"), "R");
+    EXPECT_EQ(symbolMath("NDC_vulkan_reversed"), "\\mathit{NDC}_{\\mathrm{vulkan\\_reversed}}"); // one subscript
+    EXPECT_EQ(mathPlainText("$" + symbolMath("NDC_vulkan_reversed") + "$"), "NDC_vulkan_reversed");
+}
