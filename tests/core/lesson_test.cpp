@@ -9,6 +9,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "plain_math.h"
 #include "support.hpp"
 #include "viewpipe/lesson.hpp"
 
@@ -105,8 +106,18 @@ TEST(Lesson, TheBuiltInLessonsAreValid)
         ++count;
         const Lesson lesson = loadLesson(entry.path());
         int questions = 0;
-        for (const LessonStep& step : lesson.steps)
+        for (const LessonStep& step : lesson.steps) {
             questions += step.question.has_value();
+            // Math set as math: no "SH_per", "-1" or "x = +-z" written as plain text.
+            std::vector<std::string> texts = {step.caption};
+            if (const auto& q = step.question) {
+                texts.insert(texts.end(), {q->prompt, q->explanation});
+                if (q->kind == QuestionKind::Choice) // which_stage's and order's choices are stage symbols
+                    texts.insert(texts.end(), q->choices.begin(), q->choices.end());
+            }
+            for (const std::string& text : texts)
+                EXPECT_FALSE(plainTextMath(text)) << entry.path() << ": " << text;
+        }
         EXPECT_GE(questions, 3) << entry.path(); // each asks, not only shows
     }
     EXPECT_GE(count, 5);
