@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cctype>
 #include <map>
+#include <utility>
 
 #include "viewpipe/error.hpp"
 
@@ -64,6 +65,7 @@ private:
     {
         if (text.empty())
             return;
+        starting_ = false;
         if (!runs_.empty() && runs_.back().italic == italic && runs_.back().level == level)
             runs_.back().text += text;
         else
@@ -72,18 +74,23 @@ private:
 
     void group(bool braced, Font font, int level)
     {
-        while (at_ < math_.size()) {
-            const char c = math_[at_];
-            if (c == '}') {
+        starting_ = true;
+        const int lefts = lefts_; // a \left closes in its own group, as TeX requires
+        bool closed = false;
+        while (at_ < math_.size() && !closed) {
+            if (math_[at_] == '}') {
                 if (!braced)
                     refuse("whose braces do not pair up");
                 ++at_;
-                return;
+                closed = true;
+            } else {
+                item(font, level);
             }
-            item(font, level);
         }
-        if (braced)
+        if (braced && !closed)
             refuse("whose braces do not pair up");
+        if (lefts_ != lefts)
+            refuse("with a \\left and no \\right");
     }
 
     // One character, one braced group or one command with its arguments.
@@ -111,20 +118,25 @@ private:
                 (at_ + 5 == math_.size() || !std::isalpha(static_cast<unsigned char>(math_[at_ + 5])))) {
                 add("°", false, level); // 45^\circ: the degree sign on the line
                 at_ += 5;
-                return;
+            } else {
+                const int scripted = level + (c == '^' ? 1 : -1);
+                if (std::abs(scripted) > 2)
+                    refuse("with scripts more than two levels deep");
+                starting_ = true;
+                item(font, scripted); // one letter, one group or one command, as TeX takes a script
             }
-            const int scripted = level + (c == '^' ? 1 : -1);
-            item(font, std::clamp(scripted, -2, 2));
+            skipSpaces();
+            if (at_ < math_.size() && math_[at_] == c)
+                refuse(std::string("with a double ") + (c == '^' ? "superscript" : "subscript"));
         } else if (c == '\\') {
             command(font, level);
         } else if (std::isalpha(static_cast<unsigned char>(c))) {
-            std::size_t end = at_;
-            while (end < math_.size() && std::isalpha(static_cast<unsigned char>(math_[end])))
-                ++end;
-            add(math_.substr(at_, end - at_), font == Font::Default || font == Font::Italic, level);
-            at_ = end;
+            add(std::string(1, c), font == Font::Default || font == Font::Italic, level);
+            ++at_;
         } else if (c == '&' || c == '#' || c == '~' || c == '%') {
             refuse(std::string("with a ") + c + ", which the subset does not set");
+        } else if (static_cast<unsigned char>(c) >= 0x80 && font != Font::Text) {
+            refuse("with a character beyond ASCII (write \\pm for ±, \\le for ≤, \\alpha for α)");
         } else if (std::isspace(static_cast<unsigned char>(c))) {
             if (font == Font::Text)
                 add(" ", false, level);
@@ -138,8 +150,8 @@ private:
                 {'-', "−"}, {'=', " = "}, {'+', " + "}, {'<', " < "}, {'>', " > "}, {',', ", "}};
             const auto sign = spaced.find(c);
             std::string text = sign == spaced.end() ? std::string(1, c) : sign->second;
-            if (c == '-' || c == '+') { // a sign, not a sum, after an opening or at the start
-                const bool unary = runs_.empty() || runs_.back().text.empty() ||
+            if (c == '-' || c == '+') { // a sign, not a sum, at the start of math, a group or a script, or after an opening
+                const bool unary = starting_ || runs_.empty() || runs_.back().text.empty() ||
                                    std::string("([{,=<> ").find(runs_.back().text.back()) != std::string::npos;
                 text = c == '-' ? (unary ? "−" : " − ") : (unary ? "+" : " + ");
             }
@@ -160,6 +172,7 @@ private:
         skipSpaces();
         if (at_ >= math_.size() || math_[at_] == '}')
             refuse("with a command that lacks its argument");
+        starting_ = true;
         item(font, level);
     }
 
@@ -175,6 +188,8 @@ private:
         at_ = end;
         if (name.empty())
             refuse("that ends in a backslash");
+        if (font == Font::Text && std::isalpha(static_cast<unsigned char>(name[0])))
+            refuse("with \\" + name + " in text (close the text first)");
         if (name == "mathit") {
             argument(Font::Italic, level);
         } else if (name == "mathrm" || name == "operatorname") {
@@ -191,8 +206,15 @@ private:
             addBracketed(captured(font, level), level);
         } else if (name == "left" || name == "right") {
             skipSpaces();
-            if (at_ >= math_.size() || std::string("()[]|.\\").find(math_[at_]) == std::string::npos)
+            const bool delimiter = at_ < math_.size() && (std::string("()[]|.").find(math_[at_]) != std::string::npos ||
+                                                          (math_[at_] == '\\' && at_ + 1 < math_.size() &&
+                                                           std::string("{}|").find(math_[at_ + 1]) != std::string::npos));
+            if (!delimiter)
                 refuse("with \\" + name + " not before a delimiter");
+            if (name == "left")
+                ++lefts_;
+            else if (--lefts_ < 0)
+                refuse("with a \\right and no \\left");
             if (math_[at_] == '.')
                 ++at_; // the empty delimiter
         } else if (const auto sign = signs().find(name); sign != signs().end()) {
@@ -233,23 +255,16 @@ private:
     std::vector<MathRun>& runs_;
     std::size_t at_ = 0;
     int depth_ = 0;
+    int lefts_ = 0;         // \left not yet closed by \right
+    bool starting_ = true;  // nothing set yet in this math, group or script: a minus here is a sign
 };
 
 } // namespace
 
-std::vector<MathRun> mathRuns(const std::string& text, const std::string& path)
+std::vector<TextPart> mathTextParts(const std::string& text, const std::string& path)
 {
-    std::vector<MathRun> runs;
+    std::vector<TextPart> parts;
     std::string prose;
-    auto addProse = [&] {
-        if (prose.empty())
-            return;
-        if (!runs.empty() && !runs.back().italic && runs.back().level == 0)
-            runs.back().text += prose;
-        else
-            runs.push_back({prose, false, 0});
-        prose.clear();
-    };
     for (std::size_t k = 0; k < text.size(); ++k) {
         if (text[k] == '\\' && k + 1 < text.size() && text[k + 1] == '$') {
             prose += '$';
@@ -260,15 +275,30 @@ std::vector<MathRun> mathRuns(const std::string& text, const std::string& path)
                 ++close;
             if (close >= text.size())
                 throw InputError(path, "has a $ that opens math and none that closes it (write \\$ for a dollar sign)");
-            addProse();
-            const std::string math = text.substr(k + 1, close - k - 1);
-            MathReader(math, path, runs).read();
+            if (!prose.empty())
+                parts.push_back({std::exchange(prose, {}), false});
+            parts.push_back({text.substr(k + 1, close - k - 1), true});
             k = close;
         } else {
             prose += text[k];
         }
     }
-    addProse();
+    if (!prose.empty())
+        parts.push_back({prose, false});
+    return parts;
+}
+
+std::vector<MathRun> mathRuns(const std::string& text, const std::string& path)
+{
+    std::vector<MathRun> runs;
+    for (const TextPart& part : mathTextParts(text, path)) {
+        if (part.math)
+            MathReader(part.text, path, runs).read();
+        else if (!runs.empty() && !runs.back().italic && runs.back().level == 0)
+            runs.back().text += part.text;
+        else
+            runs.push_back({part.text, false, 0});
+    }
     return runs;
 }
 
@@ -290,16 +320,18 @@ std::string mathPlainText(const std::string& text)
 std::vector<std::string> mathTextWords(const std::string& line)
 {
     std::vector<std::string> words(1);
-    bool math = false;
-    for (std::size_t k = 0; k < line.size(); ++k) {
-        if (line[k] == '$' && (k == 0 || line[k - 1] != '\\'))
-            math = !math;
-        if (std::isspace(static_cast<unsigned char>(line[k])) && !math) {
-            if (!words.back().empty())
-                words.emplace_back();
-        } else {
-            words.back() += line[k];
+    for (const TextPart& part : mathTextParts(line)) {
+        if (part.math) {
+            words.back() += "$" + part.text + "$";
+            continue;
         }
+        for (const char c : part.text)
+            if (std::isspace(static_cast<unsigned char>(c))) {
+                if (!words.back().empty())
+                    words.emplace_back();
+            } else {
+                words.back() += c == '$' ? std::string("\\$") : std::string(1, c);
+            }
     }
     if (words.back().empty())
         words.pop_back();

@@ -34,7 +34,7 @@ the window on the view plane and its center CW; the direction of projection
 planes, or near and far; and the projectors through the window's corners. The
 legend in the top-right corner names each color, for what this scene shows.
 Drag with the left button to turn the view, with the middle button (or Shift
-and the left button) to pan; the wheel or the right button zooms. <b>R</b>
+and the left button) to pan; the wheel or the right button zooms. <b><kbd>R</kbd></b>
 resets the view.</p>
 <p><b>Projected view</b> (right): what the camera sees, the picture inside the
 window. For a perspective view it also draws the vanishing points and the lines
@@ -195,7 +195,7 @@ Text</b> change the size of all text, in the views too.</p>
 <tr><td><b>Ctrl+Z</b></td><td>undo</td></tr>
 <tr><td><b>Ctrl+Shift+Z</b> or <b>Ctrl+Y</b></td><td>redo</td></tr>
 <tr><td><b>P</b></td><td>show or hide the projected view</td></tr>
-<tr><td><b>R</b></td><td>reset the world view's camera</td></tr>
+<tr><td><b><kbd>R</kbd></b></td><td>reset the world view's camera</td></tr>
 <tr><td><b>Ctrl+K</b></td><td>classical projection</td></tr>
 <tr><td><b>Ctrl+E</b></td><td>export stages</td></tr>
 <tr><td><b>Ctrl++</b> / <b>Ctrl+-</b></td><td>larger / smaller text</td></tr>
@@ -211,7 +211,8 @@ Text</b> change the size of all text, in the views too.</p>
 QString guideWithSymbols()
 {
     QString html = guideHtml();
-    static const QRegularExpression symbol(R"(<b>([A-Z][A-Za-z]*(?:_[a-z0-9_]+|\(-[A-Za-z]+\))?)</b>)");
+    // A symbol has a subscript (SH_per), a negated point (T(-VRP)), or is one of the one-letter stages.
+    static const QRegularExpression symbol(R"(<b>([A-Z][A-Za-z]*(?:_[a-z0-9_]+|\(-[A-Za-z]+\))|R|M)</b>)");
     for (QRegularExpressionMatch m = symbol.match(html); m.hasMatch(); m = symbol.match(html, m.capturedStart() + 1)) {
         const QString math = "<b>" + mathHtml("$" + symbolMath(m.captured(1).toStdString()) + "$") + "</b>";
         html.replace(m.capturedStart(), m.capturedLength(), math);

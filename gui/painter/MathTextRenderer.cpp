@@ -12,6 +12,8 @@
 #include <algorithm>
 #include <cmath>
 #include <cstring>
+#include <fstream>
+#include <map>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -46,8 +48,17 @@ struct Line {
 struct Layout {
     std::vector<Line> lines;
     int width = 0, height = 0;
-    int ascent = 0, descent = 0, lineStep = 0; // of the base font, pixels
+    int ascent = 0, descent = 0; // pixels above the first line's baseline and below the last's, scripts included
+    int lineStep = 0;            // from one baseline to the next
 };
+
+// Asked for every run measured: each file looked for once.
+bool fontFileExists(const std::string& file)
+{
+    static std::map<std::string, bool> known;
+    const auto found = known.find(file);
+    return found != known.end() ? found->second : (known[file] = std::ifstream(file).good());
+}
 
 // The face for a run: the oblique face of the font file where the text property names one.
 vtkSmartPointer<vtkTextProperty> runFont(vtkTextProperty* base, const MathRun& run)
@@ -65,17 +76,19 @@ vtkSmartPointer<vtkTextProperty> runFont(vtkTextProperty* base, const MathRun& r
     if (run.italic) {
         const char* file = base->GetFontFile();
         std::string name = file ? file : "";
-        if (base->GetFontFamily() == VTK_FONT_FILE && name.size() > 4 && name.compare(name.size() - 4, 4, ".ttf") == 0) {
+        if (base->GetFontFamily() == VTK_FONT_FILE && name.size() > 4 && name.compare(name.size() - 4, 4, ".ttf") == 0)
             name.insert(name.size() - 4, name.find("-Bold") != std::string::npos ? "Oblique" : "-Oblique");
+        if (fontFileExists(name)) { // DejaVuSans-Oblique.ttf: fonts-dejavu-extra
             font->SetFontFile(name.c_str());
-        } else {
+        } else { // VTK's own italic face
+            font->SetFontFamily(VTK_ARIAL);
             font->SetItalic(true);
         }
     }
     return font;
 }
 
-// Ascent and descent of a font (of its tallest and lowest glyphs in "Ág"), in pixels.
+// Ascent and descent of a font, in pixels (FreeType measures them on a text of its own, the same for any text).
 void verticalExtent(vtkTextProperty* font, int dpi, int& ascent, int& descent)
 {
     vtkTextRenderer::Metrics m;
@@ -97,9 +110,11 @@ bool lay(vtkTextProperty* tprop, const char* str, int dpi, Layout& out)
         return false;
     vtkNew<vtkTextProperty> base;
     base->ShallowCopy(tprop);
-    verticalExtent(base, dpi, out.ascent, out.descent);
-    out.lineStep = int(std::lround((out.ascent + out.descent) * tprop->GetLineSpacing()));
+    int ascent = 0, descent = 0;
+    verticalExtent(base, dpi, ascent, descent);
+    out.lineStep = int(std::lround((ascent + descent) * tprop->GetLineSpacing()));
     const double size = tprop->GetFontSize();
+    int firstAbove = ascent, lastBelow = descent; // a first line's superscripts may reach higher, a last's subscripts lower
     for (const std::string& text : texts) {
         std::vector<MathRun> runs;
         try {
@@ -118,11 +133,18 @@ bool lay(vtkTextProperty* tprop, const char* str, int dpi, Layout& out)
             const double rise = run.level > 0 ? kSuperscriptRise * run.level : kSubscriptDrop * run.level;
             placed.rise = int(std::lround(rise * size * dpi / 72.0)); // VTK's font sizes are points at the dpi
             line.width += placed.width;
+            const double scale = std::pow(kScriptScale, std::abs(run.level));
+            if (out.lines.empty())
+                firstAbove = std::max(firstAbove, placed.rise + int(std::ceil(ascent * scale)));
+            if (out.lines.size() + 1 == texts.size())
+                lastBelow = std::max(lastBelow, int(std::ceil(descent * scale)) - placed.rise);
             line.runs.push_back(placed);
         }
         out.width = std::max(out.width, line.width);
         out.lines.push_back(std::move(line));
     }
+    out.ascent = firstAbove;
+    out.descent = lastBelow;
     out.height = out.ascent + out.descent + int(out.lines.size() - 1) * out.lineStep;
     return out.width > 0;
 }

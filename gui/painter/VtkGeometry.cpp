@@ -101,7 +101,7 @@ vtkSmartPointer<vtkPolyData> primitiveData(const Primitive& primitive)
 // takes the same room in every picture; VTK's own font where it is missing.
 Vec2<double> textSize(vtkTextProperty* font, const std::string& text, int dpi)
 {
-    useMathText();
+    useMathText(); // also what links the renderer (and its installation at start) into every program that measures
     int box[4] = {0, 0, 0, 0};
     vtkTextRenderer::GetInstance()->GetBoundingBox(font, text, box, dpi);
     return Vec2<double>(box[1] - box[0] + 1, box[3] - box[2] + 1);

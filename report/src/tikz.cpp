@@ -1,5 +1,8 @@
 #include "viewpipe/report/tikz.hpp"
 
+#include "viewpipe/error.hpp"
+#include "viewpipe/math_text.hpp"
+
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
@@ -93,8 +96,6 @@ std::string texEscaped(const std::string& text)
 
 std::string texRichText(const std::string& text)
 {
-    std::string out, part;
-    bool math = false;
     // A line may break after a comma of the math's outer level: "(1.4237, 1.4237, -1.4237)" fits a line.
     auto breakable = [](const std::string& math) {
         std::string out;
@@ -107,27 +108,18 @@ std::string texRichText(const std::string& text)
         }
         return out;
     };
-    auto flush = [&] {
-        if (!math)
-            out += texEscaped(part);
-        else if (part.find_first_not_of(" ") != std::string::npos) // "$$" would be display math
-            out += "$" + breakable(part) + "$";
-        part.clear();
-    };
-    for (std::size_t k = 0; k < text.size(); ++k) {
-        if (text[k] == '\\' && k + 1 < text.size() && text[k + 1] == '$') {
-            part += math ? "\\$" : "$";
-            ++k;
-        } else if (text[k] == '$') {
-            flush();
-            math = !math;
-        } else {
-            part += text[k];
-        }
+    std::vector<TextPart> parts;
+    try {
+        parts = mathTextParts(text);
+    } catch (const InputError&) {
+        return texEscaped(text); // read files are checked: only a program's slip gets here
     }
-    if (math) // an unclosed `$`: the dollar sign was meant
-        part = "$" + part, math = false;
-    flush();
+    std::string out;
+    for (const TextPart& part : parts)
+        if (!part.math)
+            out += texEscaped(part.text);
+        else if (part.text.find_first_not_of(" ") != std::string::npos) // "$$" would be display math
+            out += "$" + breakable(part.text) + "$";
     return out;
 }
 

@@ -338,15 +338,28 @@ json sceneData(const EvaluatedScene& scene, const WebPageViews& views)
 
 json questionData(const Question& q)
 {
-    json out = {{"kind", questionKindName(q.kind)}, {"prompt", q.prompt}, {"explanation", q.explanation}};
+    // Each text with math, and as plain text for a screen reader.
+    json out = {{"kind", questionKindName(q.kind)},
+                {"prompt", q.prompt},
+                {"promptPlain", mathPlainText(q.prompt)},
+                {"explanation", q.explanation},
+                {"explanationPlain", mathPlainText(q.explanation)}};
     switch (q.kind) {
     case QuestionKind::Where:
         out.update({{"point", vec(q.point)}, {"stage", q.stage}, {"tolerance", q.tolerance}, {"answer", vec(q.where)}});
         break;
     case QuestionKind::Inside: out.update({{"point", vec(q.point)}, {"answer", q.inside}}); break;
     case QuestionKind::SignW: out.update({{"point", vec(q.point)}, {"stage", q.stage}, {"answer", q.signW}}); break;
-    case QuestionKind::WhichStage: out.update({{"stage", q.stage}, {"choices", q.choices}, {"answer", q.correct}}); break;
-    case QuestionKind::Order: out.update({{"choices", q.choices}}); break;
+    case QuestionKind::WhichStage:
+    case QuestionKind::Order: {
+        json symbols = json::array(); // the stage symbols, set as math
+        for (const std::string& choice : q.choices)
+            symbols.push_back("$" + symbolMath(choice) + "$");
+        out.update({{"choices", q.choices}, {"choicesMath", symbols}});
+        if (q.kind == QuestionKind::WhichStage)
+            out.update({{"stage", q.stage}, {"answer", q.correct}});
+        break;
+    }
     case QuestionKind::Entry:
         out.update({{"stage", q.stage}, {"row", q.row}, {"column", q.column}, {"answer", q.entry}});
         break;
@@ -388,7 +401,8 @@ std::string lessonPage(const Lesson& lesson, const std::vector<int>& stepScenes,
     for (std::size_t k = 0; k < lesson.steps.size(); ++k) {
         const LessonStep& step = lesson.steps[k];
         json entry = {{"scene", stepScenes.at(k)}, {"stage", step.stage}, {"yaw", step.yaw},
-                      {"pitch", step.pitch},       {"zoom", step.zoom},   {"caption", step.caption}};
+                      {"pitch", step.pitch},       {"zoom", step.zoom},   {"caption", step.caption},
+                      {"captionPlain", mathPlainText(step.caption)}};
         if (step.trace)
             entry["trace"] = vec(*step.trace);
         if (!step.entries.empty()) { // the stage's equation with those entries marked, as the page's own shows it
@@ -398,6 +412,7 @@ std::string lessonPage(const Lesson& lesson, const std::vector<int>& stepScenes,
         if (step.question) {
             entry["question"] = questionData(*step.question);
             entry["question"]["answerText"] = answerText(step);
+            entry["question"]["answerPlain"] = mathPlainText(answerText(step));
             entry["question"]["offered"] = offeredChoices(*step.question);
         }
         steps.push_back(entry);

@@ -398,7 +398,6 @@
     if (atRest && !userMoved()) {
       // Where the app put them: export pixels, fitted.
       const place = (x, y) => ({ x: (x - data.width / 2) * s + size.width / 2, y: (y - data.height / 2) * s + size.height / 2 });
-      context.textBaseline = 'top';
       for (const label of stages[state.stage].labels) {
         const [x0, y0, x1, y1] = label.box;
         const corner = place(x0, y0);
@@ -787,8 +786,6 @@
   }
 
   const results = []; // one entry per question answered: {step, kind, answer, correct}
-  // Text for a screen reader: the math's source without its dollar signs and backslashes.
-  const spoken = (text) => text.replace(/(?<!\\)\$/g, '').replace(/\\(mathit|mathrm|text)\{([^}]*)\}/g, '$2').replace(/\\/g, '');
   function buildLesson() {
     document.getElementById('title').textContent = lesson.title;
     document.getElementById('lesson').hidden = false;
@@ -905,7 +902,11 @@
         form.appendChild(shownMatrix);
         // Offered as the app and the handout offer them: the pipeline's order would give the answer's place away.
         const shownOrder = question.offered;
-        const chosen = picks(shownOrder.map((k) => question.choices[k]));
+        const chosen = picks(shownOrder.map((k) => {
+          const span = document.createElement('span');
+          setRichText(span, question.choicesMath[k]);
+          return span;
+        }));
         read = () => {
           if (chosen() === null) return null;
           const k = shownOrder[chosen()];
@@ -940,7 +941,9 @@
           listOf.textContent = '';
           order.forEach((k, at) => {
             const item = document.createElement('li');
-            item.append(question.choices[k] + ' ');
+            const symbol = document.createElement('span');
+            setRichText(symbol, question.choicesMath[k]);
+            item.append(symbol, ' ');
             for (const [label, by] of [['↑', -1], ['↓', 1]]) {
               const button = document.createElement('button');
               button.type = 'button';
@@ -976,7 +979,7 @@
       event.preventDefault();
       const outcome = read();
       if (!outcome) {
-        feedback.textContent = 'Answer first: every field needs a number (a fraction such as -2/21 is fine).';
+        feedback.textContent = 'Answer first: every field needs a number (a fraction such as p/q is fine).';
         return;
       }
       const [answer, correct] = outcome;
@@ -1001,8 +1004,8 @@
       const revealed = question.stage ? Math.max(lesson.steps[index].stage, question.stage) : state.stage;
       if (revealed !== state.stage) goTo(revealed, true);
       else { showPanels(); drawWorld(); }
-      document.getElementById('live').textContent = spoken(correct ? 'Right.' : `Not quite: the answer is ${answerText}.`) +
-        (question.explanation ? ' ' + spoken(question.explanation) : '');
+      document.getElementById('live').textContent = (correct ? 'Right.' : `Not quite: the answer is ${question.answerPlain}.`) +
+        (question.explanation ? ' ' + question.explanationPlain : '');
       body.dataset.answered = String(results.filter(Boolean).length);
     });
   }
@@ -1026,8 +1029,8 @@
     if (sameScene && !jump && Math.abs(shownStage - from) === 1) goTo(shownStage, true);
     else goTo(shownStage, false);
     document.getElementById('live').textContent =
-      `Step ${index + 1} of ${lesson.steps.length}. ${spoken(step.caption)}` +
-      (step.question ? ' Question: ' + spoken(step.question.prompt) : '');
+      `Step ${index + 1} of ${lesson.steps.length}. ${step.captionPlain}` +
+      (step.question ? ' Question: ' + step.question.promptPlain : '');
   }
 
   // For scripts (and the browser tests): where a world point is drawn now, in client pixels.

@@ -1,5 +1,8 @@
 #include <gtest/gtest.h>
 
+#include <fstream>
+#include <iterator>
+
 #include "viewpipe/error.hpp"
 #include "viewpipe/math_text.hpp"
 
@@ -48,6 +51,35 @@ TEST(MathText, RefusesWhatItDoesNotSetNamingTheField)
     EXPECT_NE(refusal("$\\begin{bmatrix}1\\end{bmatrix}$", "x").find("\\begin"), std::string::npos);
     EXPECT_NE(refusal("$" + std::string(5000, '{') + "$", "x").find("deeper"), std::string::npos);
     EXPECT_EQ(refusal("$\\frac{1}{2} \\cdot \\sqrt{3} \\approx \\arctan x$", "x"), "");
+}
+
+TEST(MathText, ScriptsAreSetAsTexSetsThem)
+{
+    // A minus opening a script is a sign: 10^{-6} is "10" and a tight "−6" above it.
+    const std::vector<MathRun> power = {{"10", false, 0}, {"−6", false, 1}};
+    EXPECT_EQ(mathRuns("$10^{-6}$"), power);
+    EXPECT_EQ(mathPlainText("$z_{\\min} - 1$"), "z_min − 1"); // after a script, a difference
+    // A script takes one letter, as TeX's does: x^ab is x^a b.
+    const std::vector<MathRun> oneLetter = {{"x", true, 0}, {"a", true, 1}, {"b", true, 0}};
+    EXPECT_EQ(mathRuns("$x^ab$"), oneLetter);
+    EXPECT_EQ(refusal("$x^a^b$", "x").find("double superscript") != std::string::npos, true);
+    EXPECT_EQ(refusal("$x^{a^{b^c}}$", "x").find("two levels") != std::string::npos, true);
+    EXPECT_EQ(refusal("$\\left( x$", "x").find("\\right") != std::string::npos, true);
+    EXPECT_EQ(refusal("$x \\right)$", "x").find("\\left") != std::string::npos, true);
+    EXPECT_EQ(refusal("$\\left\\alpha x \\right)$", "x").find("delimiter") != std::string::npos, true);
+    EXPECT_EQ(refusal("$\\text{\\alpha}$", "x").find("in text") != std::string::npos, true);
+    EXPECT_EQ(refusal("$x = é$", "x").find("beyond ASCII") != std::string::npos, true);
+    EXPECT_EQ(refusal("$\\left( \\frac{1}{2} \\right)$ and $\\text{né}$", "x"), "");
+}
+
+// docs/lesson-format.md lists every command of the subset, so that an author can read what is set.
+TEST(MathText, TheLessonFormatListsTheSubset)
+{
+    std::ifstream in(std::string(VIEWPIPE_DATA_DIR) + "/../docs/lesson-format.md");
+    const std::string doc((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    ASSERT_FALSE(doc.empty());
+    for (const std::string& command : mathSubsetCommands())
+        EXPECT_NE(doc.find("\\" + command), std::string::npos) << "\\" << command;
 }
 
 TEST(MathText, StageSymbolsAreMath)

@@ -1,6 +1,6 @@
 #pragma once
 
-#include <regex>
+#include <cctype>
 #include <string>
 
 #include "viewpipe/error.hpp"
@@ -10,18 +10,19 @@
 // as in "-1") outside the text's math, or math the renderers cannot set.
 inline bool plainTextMath(const std::string& text)
 {
+    std::string prose;
     try {
         viewpipe::mathRuns(text);
+        for (const viewpipe::TextPart& part : viewpipe::mathTextParts(text))
+            prose += part.math ? " " : part.text;
     } catch (const viewpipe::InputError&) {
         return true;
     }
-    std::string prose;
-    bool math = false;
-    for (std::size_t k = 0; k < text.size(); ++k)
-        if (text[k] == '$' && (k == 0 || text[k - 1] != '\\'))
-            math = !math;
-        else if (!math)
-            prose += text[k];
-    static const std::regex plain(R"(_|\^|\+-|(^|[\s(,=])-[0-9A-Za-z])");
-    return std::regex_search(prose, plain);
+    for (std::size_t k = 0; k < prose.size(); ++k) {
+        const char c = prose[k], before = k ? prose[k - 1] : ' ', after = k + 1 < prose.size() ? prose[k + 1] : ' ';
+        if (c == '_' || c == '^' || (c == '+' && after == '-') ||
+            (c == '-' && std::string(" \t\n(,=").find(before) != std::string::npos && std::isalnum(static_cast<unsigned char>(after))))
+            return true;
+    }
+    return false;
 }

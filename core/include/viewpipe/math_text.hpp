@@ -3,10 +3,11 @@
 // The math ViewPipe sets, one definition for every renderer: text with inline
 // math between `$` signs (`\$` is a dollar sign), the math a small subset of
 // LaTeX that KaTeX and pdflatex (with amsmath) read alike:
-//   letters (in italics), digits and signs; groups `{…}`; scripts `_` and `^`;
-//   \mathit \mathbf \mathrm \text \textrm \operatorname{…}; \frac{a}{b}; \sqrt{a};
-//   \left and \right before a delimiter; the Greek letters, signs, spaces and
-//   function names of mathSubsetCommands().
+//   ASCII letters (in italics), digits and signs; groups `{…}`; scripts `_`
+//   and `^` (one letter, group or command each, two levels deep at most);
+//   \mathit \mathrm \operatorname \text \textrm{…}; \frac{a}{b}; \sqrt{a};
+//   \left and \right in pairs before a delimiter; the Greek letters, signs,
+//   spaces and function names of mathSubsetCommands() (docs/lesson-format.md).
 // Renderers without TeX (VTK, SVG, Qt's rich text) draw the runs: each a piece
 // of text in one style at one script level, signs as Unicode (a real minus).
 
@@ -31,6 +32,15 @@ struct MathRun {
     }
 };
 
+// The text cut where its math begins and ends: prose (a `\$` in it now a
+// dollar sign) and math (without its `$` signs), in order. Throws
+// InputError(path, reason) for a `$` not closed.
+struct TextPart {
+    std::string text;
+    bool math = false;
+};
+std::vector<TextPart> mathTextParts(const std::string& text, const std::string& path = "text");
+
 // The text's runs, prose and math alike. Throws InputError(path, reason) for
 // math outside the subset, braces that do not pair up, or a `$` not closed.
 std::vector<MathRun> mathRuns(const std::string& text, const std::string& path = "text");
@@ -45,7 +55,8 @@ std::string mathPlainText(const std::string& text);
 // The words of a line of text, split at spaces outside math: where it may wrap.
 std::vector<std::string> mathTextWords(const std::string& line);
 
-// The commands the subset has besides the font commands, \frac, \sqrt, \left and \right.
+// The commands the subset has besides the font commands, \frac, \sqrt, \left and \right
+// (docs/lesson-format.md lists them; a test keeps the two alike).
 std::vector<std::string> mathSubsetCommands();
 
 // A stage symbol as math: "SH_per" -> "\mathit{SH}_{\mathrm{per}}", "T(-VRP)" -> "T(-\mathit{VRP})".

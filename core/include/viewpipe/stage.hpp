@@ -41,7 +41,7 @@ template <class T> std::vector<Mat4<T>> cumulativeProducts(const std::vector<Sta
 enum class StageText {
     ListEntry, // "0. World — the scene in world coordinates", "2. $R$ — rotate ...": the app's list of stages
     Caption,   // "World coordinates", "After $R$": over the picture of the world view
-    Heading,   // "0. World coordinates", "2. $R$ – rotate ...": exported pictures and text reports
+    Heading,   // "0. World coordinates", "2. $R$ – rotate ...": exported pictures
 };
 
 template <class T> std::string stageText(const std::vector<Stage<T>>& stages, std::size_t k, StageText text)
