@@ -477,12 +477,16 @@ std::optional<double> parseTypedNumber(const std::string& typed)
     return *top / *bottom;
 }
 
-std::string resultsToJson(const Lesson& lesson, const std::vector<std::optional<Answer>>& answers)
+std::string resultsToJson(const Lesson& lesson, const std::vector<std::optional<Answer>>& answers,
+                          const std::vector<bool>& revealed)
 {
     Json entries = Json::array();
     for (std::size_t k = 0; k < lesson.steps.size() && k < answers.size(); ++k) {
         const std::optional<Question>& q = lesson.steps[k].question;
         const std::optional<Answer>& a = answers[k];
+        if (q && !a && k < revealed.size() && revealed[k])
+            entries.push_back({{"step", k + 1}, {"kind", questionKindName(q->kind)}, {"answer", nullptr},
+                               {"correct", false}, {"revealed", true}});
         if (!q || !a)
             continue;
         Json given;

@@ -1,5 +1,11 @@
 #include "AppPaths.h"
 
+#include <QDir>
+#include <QFileDialog>
+#include <QFileInfo>
+#include <QSettings>
+#include <QStandardPaths>
+
 namespace viewpipe::gui {
 
 namespace {
@@ -8,6 +14,8 @@ QString dataDirectory()
     const QByteArray data = qgetenv("VIEWPIPE_DATA");
     return data.isEmpty() ? QString(VIEWPIPE_DATA_DIR) : QString::fromLocal8Bit(data);
 }
+
+constexpr const char* kDialogFolderKey = "dialogFolder";
 } // namespace
 
 QString scenesDirectory()
@@ -18,6 +26,39 @@ QString scenesDirectory()
 QString lessonsDirectory()
 {
     return dataDirectory() + "/lessons";
+}
+
+QString dialogPath(const QString& name)
+{
+    QString folder = QSettings().value(kDialogFolderKey).toString();
+    if (folder.isEmpty() || !QDir(folder).exists())
+        folder = QStandardPaths::writableLocation(QStandardPaths::DocumentsLocation);
+    if (folder.isEmpty())
+        folder = QDir::homePath();
+    return name.isEmpty() ? folder : QDir(folder).filePath(name);
+}
+
+void rememberDialogFolder(const QString& chosen)
+{
+    if (!chosen.isEmpty())
+        QSettings().setValue(kDialogFolderKey, QFileInfo(chosen).absolutePath());
+}
+
+QString chooseFileToOpen(QWidget* parent, const QString& title, const QString& filter)
+{
+    const QString path = QFileDialog::getOpenFileName(parent, title, dialogPath(), filter);
+    rememberDialogFolder(path);
+    return path;
+}
+
+QString chooseFileToSave(QWidget* parent, const QString& title, const QString& suggested, const QString& filter)
+{
+    // A document's own file stays where it is; a built-in one is a starting point, saved among the user's files.
+    const QFileInfo file(suggested);
+    const bool own = file.isAbsolute() && !file.absoluteFilePath().startsWith(QDir(dataDirectory()).absolutePath() + "/");
+    const QString path = QFileDialog::getSaveFileName(parent, title, own ? suggested : dialogPath(file.fileName()), filter);
+    rememberDialogFolder(path);
+    return path;
 }
 
 } // namespace viewpipe::gui

@@ -125,6 +125,8 @@ void LessonDocument::reveal()
 {
     if (!isOpen() || !currentStep().question)
         return;
+    if (!revealed_[std::size_t(step_)] && !answers_[std::size_t(step_)])
+        unsavedAnswers_ = true; // shown unanswered: the results say so
     revealed_[std::size_t(step_)] = true;
     emit stepChanged();
 }

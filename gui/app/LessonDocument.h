@@ -51,7 +51,7 @@ public:
     // Shows the answer without taking one (a lecturer asking the room).
     void reveal();
     // The results file, as the web page saves it.
-    std::string resultsJson() const { return resultsToJson(lesson_, answers_); }
+    std::string resultsJson() const { return resultsToJson(lesson_, answers_, revealed_); }
     // Writes the results file atomically; throws InputError when it cannot.
     void saveResults(const QString& path);
     // Answers given since the results were last saved.

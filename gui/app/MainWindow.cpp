@@ -89,13 +89,13 @@ MainWindow::MainWindow(QWidget* parent)
     connect(animation_, &QVariantAnimation::finished, this, [this] {
         stage_ = transition_->to();
         transition_.reset();
-        updateStageWidgets();
         updateCaptions();
         renderNow();
         if (stage_ != target_)
             startStep();
         else
             playButton_->setText(tr("Play"));
+        updateStageWidgets();
     });
 
     connect(document_, &Document::changed, this, &MainWindow::onDocumentChanged);
@@ -293,8 +293,7 @@ void MainWindow::buildDocks()
     connect(lessonPanel_, &LessonPanel::addStepRequested, this, &MainWindow::addLessonStepFromView);
     connect(lessonPanel_, &LessonPanel::message, this, &MainWindow::showMessage);
     connect(lessonPanel_, &LessonPanel::saveResultsRequested, this, [this] {
-        const QString path = QFileDialog::getSaveFileName(this, tr("Save my answers"), "lesson-results.json",
-                                                          tr("Results (*.json)"));
+        const QString path = chooseFileToSave(this, tr("Save my answers"), "lesson-results.json", tr("Results (*.json)"));
         if (!path.isEmpty())
             saveLessonResults(path);
     });
@@ -328,7 +327,7 @@ void MainWindow::buildMenus()
     file->addAction(tr("&Open…"), this, [this] {
         if (!confirmDiscard())
             return;
-        const QString path = QFileDialog::getOpenFileName(this, tr("Open scene"), QString(), tr("Scenes (*.json)"));
+        const QString path = chooseFileToOpen(this, tr("Open scene"), tr("Scenes (*.json)"));
         if (!path.isEmpty())
             openScene(path);
     }, QKeySequence::Open);
@@ -338,8 +337,7 @@ void MainWindow::buildMenus()
     file->addAction(tr("Save &As…"), this, [this] { saveSceneAs(true); }, QKeySequence::SaveAs);
     file->addSeparator();
     file->addAction(tr("&Import Mesh…"), this, [this] {
-        const QString path = QFileDialog::getOpenFileName(this, tr("Import mesh"), QString(),
-                                                          tr("Meshes (*.obj *.ply *.stl)"));
+        const QString path = chooseFileToOpen(this, tr("Import mesh"), tr("Meshes (*.obj *.ply *.stl)"));
         if (!path.isEmpty())
             importMesh(path);
     });
@@ -361,15 +359,13 @@ void MainWindow::buildMenus()
     file->addAction(tr("Export as &Web Page…"), this, [this] {
         QString name = QString::fromStdString(document_->scene().name).toLower();
         name = name.replace(QRegularExpression("[^a-z0-9]+"), "-").remove(QRegularExpression("^-+|-+$"));
-        const QString path = QFileDialog::getSaveFileName(
-            this, tr("Export as a web page"), ExportDialog::defaultFolder() + "/" + (name.isEmpty() ? "scene" : name) + ".html",
-            tr("Web pages (*.html)"));
+        const QString path = chooseFileToSave(this, tr("Export as a web page"), (name.isEmpty() ? "scene" : name) + ".html",
+                                              tr("Web pages (*.html)"));
         if (!path.isEmpty())
             exportWebPage(path);
     });
     file->addAction(tr("Export CAD &Sheet…"), this, [this] {
-        const QString path = QFileDialog::getSaveFileName(this, tr("Export the CAD sheet"), "sheet.png",
-                                                          tr("PNG images (*.png)"));
+        const QString path = chooseFileToSave(this, tr("Export the CAD sheet"), "sheet.png", tr("PNG images (*.png)"));
         if (path.isEmpty())
             return;
         try {
@@ -640,7 +636,7 @@ bool MainWindow::saveSceneAs(bool askForName)
 {
     QString path = document_->filePath();
     if (askForName || path.isEmpty())
-        path = QFileDialog::getSaveFileName(this, tr("Save scene"), path, tr("Scenes (*.json)"));
+        path = chooseFileToSave(this, tr("Save scene"), path.isEmpty() ? "scene.json" : path, tr("Scenes (*.json)"));
     return !path.isEmpty() && saveScene(path);
 }
 
@@ -803,8 +799,11 @@ void MainWindow::updateStageWidgets()
 {
     const QSignalBlocker blockList(stageList_);
     const QSignalBlocker blockSlider(slider_);
-    stageList_->setCurrentRow(target_);
-    slider_->setValue(target_);
+    // The stage the picture is at or moving to: Play's last stage waits until the picture gets there.
+    const int shown = transition_ ? transition_->to() : stage_;
+    stageList_->setCurrentRow(shown);
+    if (!slider_->isSliderDown())
+        slider_->setValue(shown);
     // A question waits: the stages' names and matrices would answer it.
     const bool waiting = hidesAnswers();
     stageList_->setVisible(!waiting);
@@ -1246,7 +1245,8 @@ LessonStep MainWindow::stepFromView() const
     step.yaw = std::clamp(std::round(orbit.yaw * 10) / 10, -180.0, 180.0);
     step.pitch = std::clamp(std::round(orbit.pitch * 10) / 10, -89.0, 89.0);
     step.zoom = std::clamp(std::round(orbit.zoom * 1000) / 1000, 0.1, 20.0);
-    step.caption = stageCaption(*document_->evaluated(), std::size_t(target_), StageText::Caption);
+    // The stage's name, for the author to go on from; not the picture's notes on framing and ghosts.
+    step.caption = stageText(document_->pipeline().stages, std::size_t(target_), StageText::Caption);
     step.trace = traced_;
     return step;
 }
@@ -1295,8 +1295,7 @@ bool MainWindow::saveLessonAs(bool askForName)
     QString path = lesson_->filePath();
     // A built-in lesson is a copy's starting point, not a file to overwrite.
     if (askForName || path.isEmpty() || QFileInfo(path).absolutePath() == QDir(lessonsDirectory()).absolutePath())
-        path = QFileDialog::getSaveFileName(this, tr("Save lesson"), path.isEmpty() ? "lesson.json" : QFileInfo(path).fileName(),
-                                            tr("Lessons (*.json)"));
+        path = chooseFileToSave(this, tr("Save lesson"), path.isEmpty() ? "lesson.json" : path, tr("Lessons (*.json)"));
     return !path.isEmpty() && saveLesson(path);
 }
 
@@ -1329,8 +1328,7 @@ bool MainWindow::confirmDiscardLesson()
         if (answer == QMessageBox::Cancel)
             return false;
         if (answer == QMessageBox::Save) {
-            const QString path = QFileDialog::getSaveFileName(this, tr("Save my answers"), "lesson-results.json",
-                                                              tr("Results (*.json)"));
+            const QString path = chooseFileToSave(this, tr("Save my answers"), "lesson-results.json", tr("Results (*.json)"));
             if (path.isEmpty() || !saveLessonResults(path))
                 return false;
         }

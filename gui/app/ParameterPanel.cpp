@@ -545,18 +545,23 @@ bool ParameterPanel::eventFilter(QObject* watched, QEvent* event)
     if (!box || (event->type() != QEvent::ShortcutOverride && event->type() != QEvent::KeyPress))
         return QWidget::eventFilter(watched, event);
     const auto* key = static_cast<QKeyEvent*>(event);
+    // Typing not applied yet: Escape, and the first Ctrl+Z, discard it (the next Ctrl+Z undoes the last edit).
+    const bool discards = isRestorable(box) && ((key->key() == Qt::Key_Escape && key->modifiers() == Qt::NoModifier) ||
+                                                key->matches(QKeySequence::Undo));
     if (event->type() == QEvent::ShortcutOverride) {
+        if (discards) {
+            event->accept(); // the field's (below), not the window's shortcut
+            return false;
+        }
         // Undo and redo are the document's: the field's own text undo would swallow them.
         if (key->matches(QKeySequence::Undo) || key->matches(QKeySequence::Redo) ||
             (key->key() == Qt::Key_Y && key->modifiers() == Qt::ControlModifier)) {
             event->ignore();
             return true;
         }
-        if (key->key() == Qt::Key_Escape && isRestorable(box))
-            event->accept(); // the field's Escape (below), not a window shortcut
         return false;
     }
-    if (key->key() == Qt::Key_Escape && key->modifiers() == Qt::NoModifier && isRestorable(box)) {
+    if (discards) {
         restore(box);
         return true;
     }

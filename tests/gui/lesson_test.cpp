@@ -206,6 +206,20 @@ private slots:
         QCOMPARE(answers[3].toObject()["correct"].toBool(), false);
         QCOMPARE(answers[4].toObject()["step"].toInt(), 6);
         QCOMPARE(answers[4].toObject()["correct"].toBool(), true);
+
+        // Found: Show Answer before any answer left no trace in the results.
+        w.lesson()->goTo(7);
+        QVERIFY(w.lesson()->isAsking());
+        click(child<QPushButton>(w, "revealButton"));
+        QVERIFY(w.lesson()->hasUnsavedAnswers());
+        QVERIFY(w.saveLessonResults(results));
+        file.close();
+        QVERIFY(file.open(QIODevice::ReadOnly)); // saved atomically: the file is a new one
+        const QJsonArray again = QJsonDocument::fromJson(file.readAll()).object()["answers"].toArray();
+        QCOMPARE(again.size(), 6);
+        const QJsonObject shown = again[5].toObject();
+        QCOMPARE(shown["step"].toInt(), 8);
+        QVERIFY(shown["answer"].isNull() && !shown["correct"].toBool() && shown["revealed"].toBool());
     }
 
     void aLecturerPresentsALessonWithAClicker()
@@ -269,6 +283,8 @@ private slots:
         QCOMPARE(int(w.lesson()->lesson().steps.size()), 2);
         QCOMPARE(w.lesson()->step(), 1);
         QCOMPARE(w.stage(), 5);
+        // Found: a new step's caption carried the picture's note "(framed anew…)".
+        QCOMPARE(w.lesson()->lesson().steps[1].caption, std::string("After $S_{\\mathrm{per}}$"));
         auto* caption = child<QPlainTextEdit>(w, "captionEdit");
         caption->setPlainText("After $S_{per}$ the volume is the canonical one.");
         auto* question = child<QPlainTextEdit>(w, "questionEdit");

@@ -37,6 +37,7 @@
 #include "app_window.h"
 #include "drawn_texts.h"
 #include "files.h"
+#include "app/AppPaths.h"
 #include "app/ExportDialog.h"
 #include "app/GuideDialog.h"
 #include "app/MainWindow.h"
@@ -262,6 +263,20 @@ private slots:
         }
         ExportDialog again(5, Theme::Dark);
         QCOMPARE(QString::fromStdString(again.options().out.string()), chosen.path());
+    }
+
+    // Found: Save, Import, Export as Web Page and Save My Answers opened in the program's folder.
+    void fileDialogsOpenInTheUsersFolderThenTheLastOne()
+    {
+        QSettings().remove("dialogFolder");
+        const QString program = QCoreApplication::applicationDirPath();
+        const QString documents = QStandardPaths::writableLocation(QStandardPaths::DocumentsLocation);
+        QCOMPARE(dialogPath("lesson-results.json"), QDir(documents).filePath("lesson-results.json"));
+        QVERIFY(!dialogPath().startsWith(program) && dialogPath() != QDir::currentPath());
+        QTemporaryDir chosen;
+        rememberDialogFolder(chosen.filePath("house.json"));
+        QCOMPARE(dialogPath("sheet.png"), QDir(chosen.path()).filePath("sheet.png"));
+        QSettings().remove("dialogFolder");
     }
 
     void guideNamesEveryStage()

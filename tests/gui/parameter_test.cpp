@@ -1,7 +1,7 @@
 // The parameter panel under Xvfb, driven from the keyboard as a person does:
 // a field holds exactly the double typed or read, an edit changes only its
 // field, text that is not a number is refused beside the field, Escape
-// restores the field, and Ctrl+Z / Ctrl+Shift+Z reach the document.
+// restores the field, as the first Ctrl+Z does; Ctrl+Z / Ctrl+Shift+Z otherwise reach the document.
 
 #include <QApplication>
 #include <QComboBox>
@@ -377,6 +377,17 @@ private slots:
         QCOMPARE(vrpX(), 8.0);
         QTest::keyClick(fieldOf(w, "view.vrp", 0), Qt::Key_Y, Qt::ControlModifier);
         QCOMPARE(vrpX(), 3.0);
+
+        // Typing not applied: the first Ctrl+Z discards only the typing, the second undoes the last edit.
+        x = fieldOf(w, "view.vrp", 0);
+        type(x, "7", false);
+        const int index = w.document()->undoStack()->index();
+        QTest::keyClick(x, Qt::Key_Z, Qt::ControlModifier);
+        QCOMPARE(x->text(), QString("3"));
+        QCOMPARE(vrpX(), 3.0);
+        QCOMPARE(w.document()->undoStack()->index(), index);
+        QTest::keyClick(fieldOf(w, "view.vrp", 0), Qt::Key_Z, Qt::ControlModifier);
+        QCOMPARE(vrpX(), 8.0);
     }
 
     // Every field says what it is, in Foley's or OpenGL's terms, which component

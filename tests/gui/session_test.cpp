@@ -13,6 +13,7 @@
 #include <QMimeData>
 #include <QMessageBox>
 #include <QProcess>
+#include <QSlider>
 #include <QSignalSpy>
 #include <QStandardPaths>
 #include <QSurfaceFormat>
@@ -189,7 +190,11 @@ private slots:
         QCOMPARE(shownTitle(w), expectedCaption(w, 0));
 
         w.play();
+        // Found: the list and the slider went to the last stage at once, the picture still at the world.
+        QCOMPARE(w.stageList()->currentRow(), 1);
+        QCOMPARE(w.findChild<QSlider*>("stageSlider")->value(), 1);
         QTRY_VERIFY_WITH_TIMEOUT(w.stage() >= 1, 10000);
+        QVERIFY(w.stageList()->currentRow() <= w.stage() + 1);
         w.findChild<QAbstractButton*>("playButton")->click(); // Stop
         QVERIFY(!w.isAnimating());
         QCOMPARE(w.stageList()->currentRow(), w.stage());

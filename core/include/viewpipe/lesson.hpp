@@ -102,8 +102,10 @@ std::optional<double> parseTypedNumber(const std::string& text);
 // A student's answers as the web page saves them ("Save my answers"):
 // {"lesson": title, "answers": [{"step": 1, "kind": "where", "answer": ...,
 // "correct": true}, ...]}, one entry a question answered; answers[k] is
-// step k's.
-std::string resultsToJson(const Lesson& lesson, const std::vector<std::optional<Answer>>& answers);
+// step k's. A question whose answer was shown before any was given
+// (revealed[k]) has an entry too: "answer": null, "correct": false, "revealed": true.
+std::string resultsToJson(const Lesson& lesson, const std::vector<std::optional<Answer>>& answers,
+                          const std::vector<bool>& revealed = {});
 
 // Scene paths are read relative to baseDir.
 Lesson parseLesson(const std::string& text, const std::filesystem::path& baseDir);
