@@ -2,6 +2,7 @@
 
 #include "json_fields.hpp"
 
+#include "viewpipe/format.hpp"
 #include "viewpipe/mesh_io.hpp"
 
 #include <nlohmann/json.hpp>
@@ -13,6 +14,7 @@
 #include <cstring>
 #include <fstream>
 #include <limits>
+#include <map>
 #include <set>
 #include <sstream>
 #include <fcntl.h>
@@ -436,17 +438,20 @@ void readEffect(const Json& j, const std::string& path, EffectList& effects)
     effects = std::move(next);
 }
 
-Json vec3Json(const Vec3<double>& v)
+// Written in the order a person writes a scene (and in the file's own order, where it has one).
+using Written = nlohmann::ordered_json;
+
+Written vec3Json(const Vec3<double>& v)
 {
-    return Json::array({v.x(), v.y(), v.z()});
+    return Written::array({v.x(), v.y(), v.z()});
 }
 
-Json farJson(double zFar)
+Written farJson(double zFar)
 {
-    return std::isinf(zFar) ? Json("infinity") : Json(zFar);
+    return std::isinf(zFar) ? Written("infinity") : Written(zFar);
 }
 
-Json cameraJson(const CameraSpec<double>& camera)
+Written cameraJson(const CameraSpec<double>& camera)
 {
     if (const auto* spec = std::get_if<foley::ViewSpec<double>>(&camera)) {
         return {{"view",
@@ -460,7 +465,7 @@ Json cameraJson(const CameraSpec<double>& camera)
                   {"back", spec->back}}}};
     }
     const auto& gl = std::get<gl::Camera<double>>(camera);
-    Json projection;
+    Written projection;
     if (const auto* p = std::get_if<gl::Perspective<double>>(&gl.projection))
         projection = {{"type", "perspective"},
                       {"fovy_deg", p->fovyDegrees},
@@ -475,9 +480,9 @@ Json cameraJson(const CameraSpec<double>& camera)
         projection = {{"type", "ortho"}, {"left", o.left},   {"right", o.right}, {"bottom", o.bottom},
                       {"top", o.top},    {"near", o.zNear}, {"far", o.zFar}};
     }
-    Json out = {{"look_at",
-                 {{"eye", vec3Json(gl.lookAt.eye)}, {"center", vec3Json(gl.lookAt.center)}, {"up", vec3Json(gl.lookAt.up)}}},
-                {"projection", projection}};
+    Written out = {{"look_at",
+                    {{"eye", vec3Json(gl.lookAt.eye)}, {"center", vec3Json(gl.lookAt.center)}, {"up", vec3Json(gl.lookAt.up)}}},
+                   {"projection", projection}};
     // The conventions only where they differ from the defaults: OpenGL scenes stay as they were written.
     if (gl.api != gl::Api::OpenGL)
         out["api"] = gl::apiName(gl.api);
@@ -486,6 +491,187 @@ Json cameraJson(const CameraSpec<double>& camera)
     if (gl.depth != gl::DepthMode::Standard)
         out["depth"] = gl::depthModeName(gl.depth);
     return {{"camera", out}};
+}
+
+// `fresh` with its objects' keys in `old`'s order where `old` has them (a scene file as its author wrote it),
+// new keys after them.
+Written inOrderOf(const Written& fresh, const Written& old)
+{
+    if (fresh.is_array() && old.is_array() && fresh.size() == old.size()) {
+        Written out = Written::array();
+        for (std::size_t k = 0; k < fresh.size(); ++k)
+            out.push_back(inOrderOf(fresh[k], old[k]));
+        return out;
+    }
+    if (!fresh.is_object() || !old.is_object())
+        return fresh;
+    Written out = Written::object();
+    for (const auto& [key, value] : old.items())
+        if (fresh.contains(key))
+            out[key] = inOrderOf(fresh[key], value);
+    for (const auto& [key, value] : fresh.items())
+        if (!out.contains(key))
+            out[key] = value;
+    return out;
+}
+
+// JSON as people write scenes: two-space indents, a list of numbers or words
+// on one line, each number in its shortest form ("8", not "8.0").
+void writeJson(std::string& out, const Written& j, int indent)
+{
+    const std::string pad(std::size_t(indent), ' '), inner(std::size_t(indent + 2), ' ');
+    const bool flat = j.is_array() && std::none_of(j.begin(), j.end(), [](const Written& e) { return e.is_structured(); });
+    if (j.is_structured() && !j.empty() && !flat) {
+        out += j.is_object() ? "{\n" : "[\n";
+        std::size_t k = 0;
+        for (const auto& [key, value] : j.items()) {
+            out += inner + (j.is_object() ? Written(key).dump() + ": " : "");
+            writeJson(out, value, indent + 2);
+            out += ++k < j.size() ? ",\n" : "\n";
+        }
+        out += pad + (j.is_object() ? "}" : "]");
+    } else if (flat && !j.empty()) {
+        out += "[";
+        for (std::size_t k = 0; k < j.size(); ++k) {
+            out += k ? ", " : "";
+            writeJson(out, j[k], indent);
+        }
+        out += "]";
+    } else if (j.is_number_float()) {
+        out += formatShortest(j.get<double>());
+    } else {
+        out += j.dump();
+    }
+}
+
+Written sceneTree(const Scene& scene)
+{
+    Written root = {{"name", scene.name}};
+    root.update(cameraJson(scene.camera));
+    Written objects = Written::array();
+    for (const SceneObject& object : scene.objects) {
+        switch (object.type) {
+        case ObjectType::House: objects.push_back({{"type", "house"}}); break;
+        case ObjectType::Box:
+            objects.push_back({{"type", "box"}, {"min", vec3Json(object.min)}, {"max", vec3Json(object.max)}});
+            break;
+        case ObjectType::Mesh: objects.push_back({{"type", "mesh"}, {"path", object.path}}); break;
+        }
+    }
+    root["objects"] = objects;
+    Written effects = Written::array();
+    for (const EffectKind effect : scene.effects.listed) {
+        if (effect == EffectKind::Depth && scene.effects.depth) {
+            const DepthOptions& d = *scene.effects.depth;
+            effects.push_back({{"depth", {{"bits", d.bits}, {"format", d.floating ? "float" : "unorm"}, {"reversed", d.reversed}}}});
+        } else if (effect == EffectKind::Raster && scene.effects.raster) {
+            effects.push_back({{"raster", {{"width", scene.effects.raster->width}, {"height", scene.effects.raster->height}}}});
+        } else {
+            effects.push_back(effectName(effect));
+        }
+    }
+    root["effects"] = effects;
+    return root;
+}
+
+std::string written(const Written& tree)
+{
+    std::string out;
+    writeJson(out, tree, 0);
+    return out + "\n";
+}
+
+// Where each scalar value of a JSON text lies, by its path ("/view/vrp/0"):
+// read from text nlohmann-json has already accepted, so it need not check.
+class ValuePlaces {
+public:
+    explicit ValuePlaces(const std::string& text) : text_(text) { value(""); }
+    std::map<std::string, std::pair<std::size_t, std::size_t>> places;
+
+private:
+    void spaces()
+    {
+        while (at_ < text_.size() && std::isspace(static_cast<unsigned char>(text_[at_])))
+            ++at_;
+    }
+    std::string string()
+    {
+        const std::size_t begin = at_++;
+        while (at_ < text_.size() && text_[at_] != '"')
+            at_ += text_[at_] == '\\' ? 2 : 1;
+        ++at_;
+        return Written::parse(text_.substr(begin, at_ - begin)).get<std::string>();
+    }
+    void value(const std::string& path)
+    {
+        spaces();
+        if (at_ >= text_.size())
+            return;
+        const char c = text_[at_];
+        if (c == '{' || c == '[') {
+            ++at_;
+            for (std::size_t k = 0;; ++k) {
+                spaces();
+                if (at_ >= text_.size() || text_[at_] == '}' || text_[at_] == ']')
+                    break;
+                std::string key = std::to_string(k);
+                if (c == '{') {
+                    key = string();
+                    spaces();
+                    ++at_; // the colon
+                }
+                value(path + "/" + key);
+                spaces();
+                if (at_ < text_.size() && text_[at_] == ',')
+                    ++at_;
+            }
+            ++at_;
+            return;
+        }
+        const std::size_t begin = at_;
+        if (c == '"')
+            string();
+        else
+            while (at_ < text_.size() && std::string(",]} \t\r\n").find(text_[at_]) == std::string::npos)
+                ++at_;
+        places[path] = {begin, at_};
+    }
+    const std::string& text_;
+    std::size_t at_ = 0;
+};
+
+// Whether two trees have the same objects' keys and the same arrays' lengths.
+bool sameShape(const Written& a, const Written& b)
+{
+    if (a.is_structured() != b.is_structured() || a.is_object() != b.is_object() || a.size() != b.size())
+        return false;
+    if (a.is_object()) {
+        for (const auto& [key, value] : a.items())
+            if (!b.contains(key) || !sameShape(value, b[key]))
+                return false;
+    } else if (a.is_array()) {
+        for (std::size_t k = 0; k < a.size(); ++k)
+            if (!sameShape(a[k], b[k]))
+                return false;
+    }
+    return true;
+}
+
+// The scalars of `fresh` that differ from `old`'s, by path.
+void changedValues(const Written& fresh, const Written& old, const std::string& path,
+                   std::map<std::string, std::string>& changed)
+{
+    if (fresh.is_object()) {
+        for (const auto& [key, value] : fresh.items())
+            changedValues(value, old[key], path + "/" + key, changed);
+    } else if (fresh.is_array()) {
+        for (std::size_t k = 0; k < fresh.size(); ++k)
+            changedValues(fresh[k], old[k], path + "/" + std::to_string(k), changed);
+    } else if (fresh.is_number() && old.is_number() ? fresh.get<double>() != old.get<double>() : fresh != old) {
+        std::string lexeme;
+        writeJson(lexeme, fresh, 0);
+        changed[path] = lexeme;
+    }
 }
 
 } // namespace
@@ -541,32 +727,7 @@ Scene loadScene(const std::filesystem::path& file)
 
 std::string sceneToJson(const Scene& scene)
 {
-    Json root = {{"name", scene.name}};
-    root.update(cameraJson(scene.camera));
-    Json objects = Json::array();
-    for (const SceneObject& object : scene.objects) {
-        switch (object.type) {
-        case ObjectType::House: objects.push_back({{"type", "house"}}); break;
-        case ObjectType::Box:
-            objects.push_back({{"type", "box"}, {"min", vec3Json(object.min)}, {"max", vec3Json(object.max)}});
-            break;
-        case ObjectType::Mesh: objects.push_back({{"type", "mesh"}, {"path", object.path}}); break;
-        }
-    }
-    root["objects"] = objects;
-    Json effects = Json::array();
-    for (const EffectKind effect : scene.effects.listed) {
-        if (effect == EffectKind::Depth && scene.effects.depth) {
-            const DepthOptions& d = *scene.effects.depth;
-            effects.push_back({{"depth", {{"bits", d.bits}, {"format", d.floating ? "float" : "unorm"}, {"reversed", d.reversed}}}});
-        } else if (effect == EffectKind::Raster && scene.effects.raster) {
-            effects.push_back({{"raster", {{"width", scene.effects.raster->width}, {"height", scene.effects.raster->height}}}});
-        } else {
-            effects.push_back(effectName(effect));
-        }
-    }
-    root["effects"] = effects;
-    return root.dump(2) + "\n";
+    return written(sceneTree(scene));
 }
 
 void writeFileAtomically(const std::filesystem::path& file, const std::string& contents)
@@ -617,7 +778,40 @@ std::string sceneToJson(const Scene& scene, const std::filesystem::path& folder)
 
 void saveScene(const Scene& scene, const std::filesystem::path& file)
 {
-    writeFileAtomically(file, sceneToJson(scene, std::filesystem::absolute(file).parent_path()));
+    // As the file replaced, or the one the scene was read from, was written: its values edited in place where
+    // only values changed, else its keys' order kept. A diff shows the edits.
+    std::string original;
+    Written old;
+    for (const std::filesystem::path& source : {file, scene.file}) {
+        std::ifstream in(source, std::ios::binary);
+        if (source.empty() || !in)
+            continue;
+        original.assign(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
+        if ((old = Written::parse(original, nullptr, false)).is_object())
+            break;
+    }
+    const Written fresh = Written::parse(sceneToJson(scene, std::filesystem::absolute(file).parent_path()));
+    if (!old.is_object()) {
+        writeFileAtomically(file, written(fresh));
+        return;
+    }
+    if (sameShape(fresh, old)) {
+        std::map<std::string, std::string> changed;
+        changedValues(fresh, old, "", changed);
+        const ValuePlaces places(original);
+        std::vector<std::pair<std::pair<std::size_t, std::size_t>, std::string>> edits;
+        for (const auto& [path, lexeme] : changed)
+            if (const auto place = places.places.find(path); place != places.places.end())
+                edits.push_back({place->second, lexeme});
+        if (edits.size() == changed.size()) {
+            std::sort(edits.begin(), edits.end(), [](const auto& a, const auto& b) { return a.first.first > b.first.first; });
+            for (const auto& [place, lexeme] : edits) // from the end: the places before stay where they are
+                original.replace(place.first, place.second - place.first, lexeme);
+            writeFileAtomically(file, original);
+            return;
+        }
+    }
+    writeFileAtomically(file, written(inOrderOf(fresh, old)));
 }
 
 } // namespace viewpipe

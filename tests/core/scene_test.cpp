@@ -3,6 +3,7 @@
 #include "support.hpp"
 #include "viewpipe/scene.hpp"
 
+#include <algorithm>
 #include <fstream>
 
 namespace viewpipe {
@@ -141,6 +142,55 @@ TEST(Scene, SaveLoadRoundTripIsAtomic)
         EXPECT_EQ(entry.path().filename(), "saved.json") << "temporary file left behind";
     // A save into a folder that does not exist fails and leaves nothing behind.
     EXPECT_THROW(saveScene(scene, dir / "missing" / "x.json"), InputError);
+    std::filesystem::remove_all(dir);
+}
+
+// Found: Save rewrote the whole file (keys sorted, 8 written 8.0, an array a number a line): four edits made a
+// 36-line diff. Now each edited value changes in place, and nothing else.
+TEST(Scene, SavingChangesOnlyTheValuesEdited)
+{
+    const std::filesystem::path dir = std::filesystem::temp_directory_path() / "viewpipe-scene-style-test";
+    std::filesystem::create_directories(dir);
+    auto lines = [](const std::filesystem::path& file) {
+        std::ifstream in(file);
+        std::vector<std::string> all;
+        for (std::string line; std::getline(in, line);)
+            all.push_back(line);
+        return all;
+    };
+    for (const char* name : {"house.json", "opengl-perspective.json"}) {
+        const std::filesystem::path file = dir / name;
+        std::filesystem::copy_file(kData / "scenes" / name, file, std::filesystem::copy_options::overwrite_existing);
+        Scene scene = loadScene(file);
+        if (auto* view = std::get_if<foley::ViewSpec<double>>(&scene.camera)) {
+            view->vrp.x() = 1.5;
+            view->prp.z() = 90;
+            view->front = 61;
+            view->back = 24.25;
+        } else {
+            auto& camera = std::get<gl::Camera<double>>(scene.camera);
+            camera.lookAt.eye.y() = 31;
+            std::get<gl::Perspective<double>>(camera.projection).fovyDegrees = 45;
+        }
+        const std::vector<std::string> before = lines(file);
+        saveScene(scene, file);
+        const std::vector<std::string> after = lines(file);
+        ASSERT_EQ(after.size(), before.size()) << name;
+        int differ = 0;
+        for (std::size_t k = 0; k < after.size(); ++k)
+            differ += after[k] != before[k];
+        EXPECT_EQ(differ, std::string(name) == "house.json" ? 4 : 2) << name;
+        EXPECT_EQ(sceneToJson(loadScene(file)), sceneToJson(scene)) << name;
+        if (std::string(name) == "house.json") {
+            EXPECT_NE(std::find(after.begin(), after.end(), "    \"vrp\": [1.5, 0, 0],"), after.end());
+            EXPECT_NE(std::find(after.begin(), after.end(), "    \"back\": 24.25"), after.end());
+        }
+        // An object added changes the shape: the file is written anew, its keys still in the author's order.
+        scene.objects.push_back({ObjectType::Box, {1, 2, 3}, {4, 5, 6}, "", ""});
+        saveScene(scene, file);
+        EXPECT_EQ(sceneToJson(loadScene(file)), sceneToJson(scene)) << name;
+        EXPECT_EQ(lines(file)[1].rfind("  \"name\": ", 0), 0u) << name;
+    }
     std::filesystem::remove_all(dir);
 }
 
