@@ -21,20 +21,27 @@
 
 namespace viewpipe::gui {
 
-void styleAxis(vtkAxis* axis, const std::string& title, Theme theme)
+ChartText chartTextFor(int width, double textScale)
+{
+    const double label = exportLabelSize(width, textScale), small = smallTextSize(label);
+    return {1.1 * label, label, small, small};
+}
+
+void styleAxis(vtkAxis* axis, const std::string& title, Theme theme, const ChartText& text)
 {
     axis->SetTitle(title);
-    axis->GetTitleProperties()->SetFontSize(16);
-    axis->GetLabelProperties()->SetFontSize(13);
+    axis->GetTitleProperties()->SetFontSize(int(std::lround(text.axisTitle)));
+    axis->GetLabelProperties()->SetFontSize(int(std::lround(text.labels)));
     const double c = theme == Theme::Dark ? 0.9 : 0.1;
     axis->GetTitleProperties()->SetColor(c, c, c);
     axis->GetLabelProperties()->SetColor(c, c, c);
     axis->GetPen()->SetColorF(c, c, c);
 }
 
-void styleLogAxis(vtkAxis* axis, const std::string& title, Theme theme, double low, double high, int maxLabels)
+void styleLogAxis(vtkAxis* axis, const std::string& title, Theme theme, double low, double high, int maxLabels,
+                  const ChartText& text)
 {
-    styleAxis(axis, title, theme);
+    styleAxis(axis, title, theme, text);
     const int first = int(std::floor(std::log10(low))) - 1;
     const int last = int(std::ceil(std::log10(high))) + 1;
     axis->SetBehavior(vtkAxis::FIXED);
@@ -49,14 +56,14 @@ void styleLogAxis(vtkAxis* axis, const std::string& title, Theme theme, double l
     axis->SetCustomTickPositions(ticks, labels);
 }
 
-void styleChart(vtkChart* chart, const std::string& title, Theme theme)
+void styleChart(vtkChart* chart, const std::string& title, Theme theme, const ChartText& text)
 {
     const bool dark = theme == Theme::Dark;
     chart->SetTitle(title);
-    chart->GetTitleProperties()->SetFontSize(18);
+    chart->GetTitleProperties()->SetFontSize(int(std::lround(text.title)));
     const double c = dark ? 0.95 : 0.05;
     chart->GetTitleProperties()->SetColor(c, c, c);
-    chart->GetLegend()->GetLabelProperties()->SetFontSize(14);
+    chart->GetLegend()->GetLabelProperties()->SetFontSize(int(std::lround(text.legend)));
     chart->GetLegend()->GetLabelProperties()->SetColor(c, c, c);
     const unsigned char legend = dark ? 40 : 255;
     chart->GetLegend()->GetBrush()->SetColor(legend, legend, legend, 230);

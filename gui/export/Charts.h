@@ -15,17 +15,25 @@ class vtkContextView;
 
 namespace viewpipe::gui {
 
+// A chart's text sizes: as the app's panels set them (points on a screen), or
+// for an exported picture by its width (chartTextFor), as its pictures are.
+struct ChartText {
+    double title = 18, axisTitle = 16, labels = 13, legend = 14;
+};
+ChartText chartTextFor(int width, double textScale);
+
 // VTK's charts hold points in single precision, where tiny errors (1e-50)
 // underflow: values are plotted as log10 on a linear axis, labelled in powers
 // of ten, from a decade below `low` to a decade above `high`, at most
 // `maxLabels` labels (fewer on a short axis, where they would run together).
-void styleLogAxis(vtkAxis* axis, const std::string& title, Theme theme, double low, double high, int maxLabels = 12);
+void styleLogAxis(vtkAxis* axis, const std::string& title, Theme theme, double low, double high, int maxLabels = 12,
+                  const ChartText& text = {});
 
 // A linear axis: title and labels in the theme's colors.
-void styleAxis(vtkAxis* axis, const std::string& title, Theme theme);
+void styleAxis(vtkAxis* axis, const std::string& title, Theme theme, const ChartText& text = {});
 
 // The chart's title and legend in the theme's colors.
-void styleChart(vtkChart* chart, const std::string& title, Theme theme);
+void styleChart(vtkChart* chart, const std::string& title, Theme theme, const ChartText& text = {});
 
 // Renders what `draw` puts into an offscreen context view of the given size
 // and writes it as a PNG, atomically (temporary file, then rename); throws

@@ -42,11 +42,12 @@ const Format kFormats[] = {
 
 } // namespace
 
-void drawDepthChart(vtkChartXY* chart, const Pipeline<double>& pipeline, const DepthOptions& options, Theme theme)
+void drawDepthChart(vtkChartXY* chart, const Pipeline<double>& pipeline, const DepthOptions& options, Theme theme,
+                    const ChartText& text)
 {
     chart->ClearPlots();
     const bool foley = pipeline.convention == Convention::Foley;
-    styleChart(chart, "Depth resolution against distance", theme);
+    styleChart(chart, "Depth resolution against distance", theme, text);
     chart->SetShowLegend(true);
     // Below the plot, under the axis' title: inside, it would cover the curves' steep start.
     chart->GetLegend()->SetInline(false);
@@ -88,22 +89,22 @@ void drawDepthChart(vtkChartXY* chart, const Pipeline<double>& pipeline, const D
         low = 1e-3, high = 1, reach = 1;
     vtkAxis* bottom = chart->GetAxis(vtkAxis::BOTTOM);
     styleAxis(bottom, foley ? "distance from the front plane (F), along the view" : "distance from the near plane, along the view",
-              theme);
+              theme, text);
     bottom->SetBehavior(vtkAxis::FIXED);
     bottom->SetRange(0, reach);
-    styleLogAxis(chart->GetAxis(vtkAxis::LEFT), "depth step (world units, log scale)", theme, low, high);
+    styleLogAxis(chart->GetAxis(vtkAxis::LEFT), "depth step (world units, log scale)", theme, low, high, 12, text);
 }
 
 void writeDepthPlot(const Pipeline<double>& pipeline, const DepthOptions& options, const std::filesystem::path& file,
-                    Theme theme)
+                    Theme theme, int width, int height, double textScale)
 {
     writeChartPng(
         [&](vtkContextView* view) {
             vtkNew<vtkChartXY> chart;
             view->GetScene()->AddItem(chart);
-            drawDepthChart(chart, pipeline, options, theme);
+            drawDepthChart(chart, pipeline, options, theme, chartTextFor(width, textScale));
         },
-        1200, 700, theme, file, "--out");
+        width, height, theme, file, "--out");
 }
 
 } // namespace viewpipe::gui

@@ -357,7 +357,8 @@ std::vector<fs::path> exportStages(const std::shared_ptr<const EvaluatedScene>& 
         writeFileAtomically(temporary / "matrices.tex", cli::matricesLatex(scene, options.digits));
         if (const auto& depth = evaluated->outcomes.depth) {
             step("depth-resolution.png");
-            writeDepthPlot(pipeline, depth->options, temporary / "depth-resolution.png", options.theme);
+            writeDepthPlot(pipeline, depth->options, temporary / "depth-resolution.png", options.theme, options.width,
+                           options.height, options.textScale / 100.0);
         }
         step("matrices.json");
         writeFileAtomically(temporary / "matrices.json", cli::pipelineJson(scene, cli::PrecisionChoice{}, evaluated->outcomes).dump(2) + "\n");
