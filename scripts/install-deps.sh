@@ -6,12 +6,12 @@
 set -euo pipefail
 
 packages=(
-  build-essential cmake pkg-config
+  build-essential cmake pkg-config ccache
   libeigen3-dev nlohmann-json3-dev libcli11-dev
   libgtest-dev libgmock-dev libbenchmark-dev
   libboost-dev libmpfr-dev libglm-dev
   qtbase5-dev libqt5svg5-dev libvtk9-dev libvtk9-qt-dev
-  xvfb xauth libgl1-mesa-dri fonts-dejavu-core
+  xvfb xauth libgl1-mesa-dri fonts-dejavu-core fonts-dejavu-extra
   ffmpeg
   libjs-three libjs-katex
 )
