@@ -13,6 +13,7 @@
 #include <vtkCamera.h>
 #include <vtkMatrix4x4.h>
 #include <vtkNew.h>
+#include <vtkPLYReader.h>
 #include <vtkPolyData.h>
 #include <vtkPolyDataMapper.h>
 #include <vtkProperty.h>
@@ -24,8 +25,12 @@
 #include <filesystem>
 #include <fstream>
 #include <optional>
+#include <thread>
 
+#include "faces_drawn.h"
+#include "sheet_mesh.h"
 #include "painter/EigenVtk.h"
+#include "painter/MeshDetail.h"
 #include "painter/ScenePainter.h"
 #include "painter/StageTransition.h"
 #include "painter/VtkGeometry.h"
@@ -44,35 +49,12 @@ Scene house()
     return loadScene(std::string(VIEWPIPE_DATA_DIR) + "/scenes/house.json");
 }
 
-// A binary PLY of a wavy sheet of 2 * 707 * 707 (about 10^6) triangles, across the house's front.
+// The wavy sheet of about 10^6 triangles across the house's front, written once.
 fs::path millionTriangleMesh()
 {
     const fs::path file = fs::temp_directory_path() / "viewpipe-bench-mesh-1m.ply";
-    if (fs::exists(file))
-        return file;
-    constexpr int n = 708; // vertices along each side
-    const fs::path partial = file.string() + ".partial";
-    std::ofstream out(partial, std::ios::binary);
-    out << "ply\nformat binary_little_endian 1.0\nelement vertex " << n * n
-        << "\nproperty float x\nproperty float y\nproperty float z\nelement face " << 2 * (n - 1) * (n - 1)
-        << "\nproperty list uchar int vertex_indices\nend_header\n";
-    for (int j = 0; j < n; ++j)
-        for (int i = 0; i < n; ++i) {
-            const float x = -4 + 24.0f * float(i) / (n - 1), y = -2 + 20.0f * float(j) / (n - 1);
-            const float xyz[3] = {x, y, 58 + 1.5f * std::sin(x) * std::cos(y)};
-            out.write(reinterpret_cast<const char*>(xyz), sizeof xyz);
-        }
-    for (int j = 0; j + 1 < n; ++j)
-        for (int i = 0; i + 1 < n; ++i) {
-            const int a = j * n + i, b = a + 1, c = a + n, d = c + 1;
-            for (const std::array<int, 3>& t : {std::array<int, 3>{a, b, d}, std::array<int, 3>{a, d, c}}) {
-                const unsigned char three = 3;
-                out.write(reinterpret_cast<const char*>(&three), 1);
-                out.write(reinterpret_cast<const char*>(t.data()), sizeof(int) * 3);
-            }
-        }
-    out.close();
-    fs::rename(partial, file);
+    if (!fs::exists(file))
+        bench::writeSheetMesh(file, 1'000'000);
     return file;
 }
 
@@ -113,6 +95,18 @@ struct AppView : Window {
         window->Render();
         painter.resetView();
     }
+    // Moving, as Play is, once the decimated copies of large meshes are made (off the timing).
+    void startMoving()
+    {
+        const vtkIdType full = facesDrawn(renderer);
+        painter.setMoving(true);
+        for (int tries = 0; tries < 600; ++tries) {
+            window->Render();
+            if (full < vtkIdType(gui::MeshDetail::kLargeFaces) || facesDrawn(renderer) < full / 2)
+                return;
+            std::this_thread::sleep_for(std::chrono::milliseconds(100));
+        }
+    }
 };
 
 // The app playing through every stage, as Play does: kFramesPerStep frames a step.
@@ -139,9 +133,11 @@ private:
     int step_ = 0, frame_ = 0;
 };
 
+// A frame of Play, between stages: large meshes drawn from their decimated copies.
 void appFrame(benchmark::State& state, const std::string& name)
 {
     AppView w(name);
+    w.startMoving();
     PlayThrough play(w);
     for (auto _ : state) {
         if (play.startsStep()) {
@@ -150,6 +146,21 @@ void appFrame(benchmark::State& state, const std::string& name)
             state.ResumeTiming();
         }
         play.next();
+        w.window->Render();
+    }
+}
+
+// The app's frame at rest, every stage in turn: full detail.
+void appAtRest(benchmark::State& state, const std::string& name)
+{
+    AppView w(name);
+    const auto& stages = w.scene->pipeline.stages;
+    int stage = 0;
+    for (auto _ : state) {
+        state.PauseTiming();
+        gui::StageTransition::showStage(w.painter, stages, stage);
+        stage = (stage + 1) % int(stages.size());
+        state.ResumeTiming();
         w.window->Render();
     }
 }
@@ -217,6 +228,18 @@ void openScene(benchmark::State& state, const std::string& name)
     }
 }
 
+// VTK's own reader on the scene's mesh file.
+void vtkReaderOpen(benchmark::State& state, const std::string&)
+{
+    const std::string file = millionTriangleMesh().string();
+    for (auto _ : state) {
+        vtkNew<vtkPLYReader> reader;
+        reader->SetFileName(file.c_str());
+        reader->Update();
+        benchmark::DoNotOptimize(reader->GetOutput()->GetNumberOfPolys());
+    }
+}
+
 // From stage 5 to the world, one step at a time as the app does: each step's
 // transition made and its last frame drawn (the animation's frames between
 // are Frame/app's; the app gives each step 600 ms).
@@ -248,7 +271,14 @@ int main(int argc, char** argv)
             ->Unit(benchmark::kMillisecond)
             ->UseRealTime();
     }
+    benchmark::RegisterBenchmark("AtRest/app/mesh_1m", appAtRest, std::string("mesh_1m"))
+        ->Unit(benchmark::kMillisecond)
+        ->UseRealTime();
     benchmark::RegisterBenchmark("Open/app/mesh_1m", openScene, std::string("mesh_1m"))
+        ->Unit(benchmark::kMillisecond)
+        ->UseRealTime()
+        ->Iterations(3);
+    benchmark::RegisterBenchmark("Open/vtk_reader/mesh_1m", vtkReaderOpen, std::string("mesh_1m"))
         ->Unit(benchmark::kMillisecond)
         ->UseRealTime()
         ->Iterations(3);

@@ -89,6 +89,7 @@ MainWindow::MainWindow(QWidget* parent)
     connect(animation_, &QVariantAnimation::finished, this, [this] {
         stage_ = transition_->to();
         transition_.reset();
+        painter_->setMoving(stage_ != target_); // playing on: the next step starts from this frame
         updateCaptions();
         renderNow();
         if (stage_ != target_)
@@ -777,12 +778,14 @@ void MainWindow::startStep()
 {
     const int next = stage_ + (target_ > stage_ ? 1 : -1);
     transition_ = std::make_unique<StageTransition>(*painter_, document_->pipeline().stages, stage_, next);
+    painter_->setMoving(true);
     animation_->setDuration(stepMilliseconds_);
     animation_->start();
 }
 
 void MainWindow::showRestingStage()
 {
+    painter_->setMoving(false);
     StageTransition::showStage(*painter_, document_->pipeline().stages, stage_);
     updateCaptions();
     renderNow();

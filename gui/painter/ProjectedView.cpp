@@ -149,7 +149,7 @@ void ProjectedView::clear()
 }
 
 void ProjectedView::setScene(const EvaluatedScene& scene,
-                             const std::function<vtkSmartPointer<vtkPolyData>(const PolygonMesh&)>& dataOf,
+                             const std::function<vtkSmartPointer<vtkPolyData>(const std::shared_ptr<const PolygonMesh>&)>& dataOf,
                              const std::vector<vtkSmartPointer<vtkPolyData>>& depthColored)
 {
     clear();
@@ -157,7 +157,7 @@ void ProjectedView::setScene(const EvaluatedScene& scene,
         scene.bands ? std::optional(bandColors(*scene.bands)) : std::nullopt;
     for (std::size_t o = 0; o < scene.meshes.size(); ++o) {
         const bool levels = depthColored[o] && bands;
-        auto faces = unlitActor(levels ? depthColored[o] : dataOf(*scene.meshes[o]));
+        auto faces = unlitActor(levels ? depthColored[o] : dataOf(scene.meshes[o]));
         faces->GetProperty()->SetOpacity(levels ? 0.9 : 0.35);
         if (levels)
             colorByLevels(faces, *bands);

@@ -32,10 +32,10 @@ public:
     ProjectedView(const ProjectedView&) = delete;
     ProjectedView& operator=(const ProjectedView&) = delete;
 
-    // `depthColored[k]`: object k's front faces with their depth levels, or null.
     // `dataOf` gives a mesh's poly data (shared with the world view);
     // `depthColored[k]`: object k's front faces with their depth levels, or null.
-    void setScene(const EvaluatedScene& scene, const std::function<vtkSmartPointer<vtkPolyData>(const PolygonMesh&)>& dataOf,
+    void setScene(const EvaluatedScene& scene,
+                  const std::function<vtkSmartPointer<vtkPolyData>(const std::shared_ptr<const PolygonMesh>&)>& dataOf,
                   const std::vector<vtkSmartPointer<vtkPolyData>>& depthColored);
     // Text `fontSize` pixels high, the caption and legend shrinking to `minFontSize` where room runs out.
     void applyStyle(Theme theme, int fontSize, int minFontSize);

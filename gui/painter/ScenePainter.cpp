@@ -42,6 +42,9 @@ namespace {
 // (under a projective matrix the image of a box in front of the eye lies within its corners' hull).
 constexpr std::size_t kExactFraming = 20000;
 
+// VTK's interactor asks for 15 frames a second while the user turns the view and 0.0001 at rest.
+constexpr double kStillUpdateRate = 1;
+
 // Extends `box` with the primitive through `m`; false (and `box` unchanged)
 // when a point of it has no image. Points on the eye's side of `cut` do not count.
 bool extendThrough(Eigen::AlignedBox<double, 3>& box, const Primitive& primitive, const Mat4<double>& m,
@@ -177,17 +180,22 @@ void ScenePainter::clear()
     labels_.clear();
 }
 
-vtkSmartPointer<vtkPolyData> ScenePainter::meshData(const PolygonMesh& mesh)
+const std::shared_ptr<MeshDetail>& ScenePainter::meshDetail(const std::shared_ptr<const PolygonMesh>& mesh)
 {
-    auto found = meshData_.find(&mesh);
-    if (found == meshData_.end())
-        found = meshData_.emplace(&mesh, facesData(mesh)).first;
+    auto found = meshDetails_.find(mesh.get());
+    if (found == meshDetails_.end())
+        found = meshDetails_.emplace(mesh.get(), std::make_shared<MeshDetail>(mesh)).first;
     return found->second;
 }
 
-void ScenePainter::addLayer(const Primitive& primitive, vtkSmartPointer<vtkPolyData> data)
+std::vector<vtkMapper*> ScenePainter::Layer::mappers() const
 {
-    Layer layer{&primitive, unlitActor(data)};
+    return detail ? detail->mappers() : std::vector<vtkMapper*>{actor->GetMapper()};
+}
+
+void ScenePainter::addLayer(const Primitive& primitive, vtkSmartPointer<vtkActor> actor, std::optional<DetailedActor> detail)
+{
+    Layer layer{&primitive, std::move(actor), std::move(detail)};
     layer.actor->SetPickable(false);
     layer.actor->SetUseBounds(false);
     world_->AddActor(layer.actor);
@@ -229,11 +237,11 @@ void ScenePainter::setScene(std::shared_ptr<const EvaluatedScene> scene)
     tracedLabel_.reset();
     cutting_ = false; // the new props are not cut yet
     // Keep the poly data of the meshes the new scene shares with the last one.
-    std::map<const PolygonMesh*, vtkSmartPointer<vtkPolyData>> kept;
+    std::map<const PolygonMesh*, std::shared_ptr<MeshDetail>> kept;
     for (const Primitive& p : scene->primitives)
-        if (p.faces && meshData_.count(p.faces.get()))
-            kept.emplace(p.faces.get(), meshData_.at(p.faces.get()));
-    meshData_ = std::move(kept);
+        if (p.faces && meshDetails_.count(p.faces.get()))
+            kept.emplace(p.faces.get(), meshDetails_.at(p.faces.get()));
+    meshDetails_ = std::move(kept);
     scene_ = std::move(scene);
     const EvaluatedScene& s = *scene_;
 
@@ -242,13 +250,16 @@ void ScenePainter::setScene(std::shared_ptr<const EvaluatedScene> scene)
     for (const Primitive& p : s.primitives) {
         if (p.depthColored && bands) { // what the depth buffer holds, in bands
             depthColored[std::size_t(p.object)] = depthLevels(*p.faces, s.pipeline, *s.scene.effects.depth);
-            addLayer(p, depthColored[std::size_t(p.object)]);
+            addLayer(p, unlitActor(depthColored[std::size_t(p.object)]));
             colorByLevels(layers_.back().actor, bands);
+        } else if (p.kind == PrimitiveKind::Faces) {
+            DetailedActor faces(meshDetail(p.faces));
+            addLayer(p, faces.actor(), faces);
         } else {
-            addLayer(p, p.kind == PrimitiveKind::Faces ? meshData(*p.faces) : linesData(p.segments));
+            addLayer(p, unlitActor(linesData(p.segments)));
         }
         if (StageShown::ghosted(p)) {
-            Layer ghost{&p, unlitActor(static_cast<vtkPolyDataMapper*>(layers_.back().actor->GetMapper())->GetInput())};
+            Layer ghost{&p, unlitActor(static_cast<vtkPolyDataMapper*>(layers_.back().actor->GetMapper())->GetInput()), {}};
             ghost.actor->SetPickable(false);
             ghost.actor->SetUseBounds(false);
             ghost.actor->SetVisibility(false);
@@ -259,7 +270,7 @@ void ScenePainter::setScene(std::shared_ptr<const EvaluatedScene> scene)
     for (const viewpipe::Label& label : s.labels)
         addLabel(label);
     if (projected_)
-        projected_->setScene(s, [this](const PolygonMesh& mesh) { return meshData(mesh); }, depthColored);
+        projected_->setScene(s, [this](const auto& mesh) { return meshDetail(mesh)->full(); }, depthColored);
     effectsNote_ = s.effectsNote;
     applyStyle();
     show(Mat4<double>::Identity(), 0);
@@ -301,8 +312,18 @@ bool ScenePainter::shows(const Vec3<double>& world) const
     return StageShown(*scene_, shownMatrix_, canonicalOpacity_).shows(world);
 }
 
+void ScenePainter::setMoving(bool moving)
+{
+    moving_ = moving;
+}
+
 void ScenePainter::beforeFrame()
 {
+    vtkRenderWindow* window = world_->GetRenderWindow();
+    const bool turning = window && window->GetDesiredUpdateRate() > kStillUpdateRate;
+    for (Layer& layer : layers_)
+        if (layer.detail)
+            layer.detail->setMoving(moving_ || turning);
     fitClippingRange();
     fitCaptions();
     placeLabels();
@@ -490,11 +511,11 @@ void ScenePainter::cutNear(const Mat4<double>& cumulative)
     for (Layer& layer : layers_) {
         if (layer.primitive->canonical)
             continue;
-        vtkMapper* mapper = layer.actor->GetMapper();
-        if (cut)
-            mapper->AddClippingPlane(nearCut_);
-        else
-            mapper->RemoveAllClippingPlanes();
+        for (vtkMapper* mapper : layer.mappers())
+            if (cut)
+                mapper->AddClippingPlane(nearCut_);
+            else
+                mapper->RemoveAllClippingPlanes();
     }
 }
 

@@ -16,6 +16,7 @@
 #include <string>
 #include <vector>
 
+#include "MeshDetail.h"
 #include "viewpipe/report/figure.hpp"
 #include "viewpipe/report/web_page.hpp"
 #include "viewpipe/report/style.hpp"
@@ -24,6 +25,7 @@ class vtkActor;
 class vtkActor2D;
 class vtkCallbackCommand;
 class vtkLegendBoxActor;
+class vtkMapper;
 class vtkPlane;
 class vtkPolyData;
 class vtkRenderer;
@@ -55,6 +57,12 @@ public:
     // Shows the objects' edges and the view volume faintly through `ghost` as
     // well (where they were a stage before), or not.
     void setGhost(const std::optional<Mat4<double>>& ghost);
+
+    // While moving (a transition, Play), large meshes are drawn from decimated
+    // copies (MeshDetail); at rest, and in every export, at full detail. The
+    // view also counts as moving while VTK's interactor turns it (the window's
+    // interactive update rate).
+    void setMoving(bool moving);
 
     // Shows or hides every text: labels and captions.
     void setTextVisible(bool visible);
@@ -115,13 +123,15 @@ private:
     struct Layer {
         const Primitive* primitive;
         vtkSmartPointer<vtkActor> actor;
+        std::optional<DetailedActor> detail; // a mesh's faces: its actor, drawn at the detail the motion allows
+        std::vector<vtkMapper*> mappers() const;
     };
     struct Label {
         const viewpipe::Label* label;
         vtkSmartPointer<vtkTextActor> actor;
     };
     void clear();
-    void addLayer(const Primitive& primitive, vtkSmartPointer<vtkPolyData> data);
+    void addLayer(const Primitive& primitive, vtkSmartPointer<vtkActor> actor, std::optional<DetailedActor> detail = {});
     Label newLabel(const viewpipe::Label& text);
     void addLabel(const viewpipe::Label& label);
     void styleLabel(Label& label) const;
@@ -143,13 +153,13 @@ private:
     // The near and far planes around everything framed, before each frame (prop bounds mean nothing under a projective matrix).
     void fitClippingRange();
     double fitDistance(double radius) const;
-    vtkSmartPointer<vtkPolyData> meshData(const PolygonMesh& mesh);
+    const std::shared_ptr<MeshDetail>& meshDetail(const std::shared_ptr<const PolygonMesh>& mesh);
 
     vtkRenderer* world_;
     std::unique_ptr<ProjectedView> projected_;
     std::shared_ptr<const EvaluatedScene> scene_;
     // The poly data of each mesh shown, so that a scene sharing a mesh with the last one does not rebuild it.
-    std::map<const PolygonMesh*, vtkSmartPointer<vtkPolyData>> meshData_;
+    std::map<const PolygonMesh*, std::shared_ptr<MeshDetail>> meshDetails_;
     vtkSmartPointer<vtkTextActor> worldCaption_;
     vtkSmartPointer<vtkTextActor> effectsCaption_;
     vtkSmartPointer<vtkActor> frameAxes_;
@@ -180,6 +190,7 @@ private:
     double lineScale_ = 1;
     double canonicalOpacity_ = 0;
     bool textVisible_ = true;
+    bool moving_ = false;
     // The user's view relative to the automatic framing.
     double userZoom_ = 1;
     Vec3<double> userPan_ = Vec3<double>::Zero();

@@ -37,7 +37,9 @@
 #include <vtkRendererCollection.h>
 
 #include "app_window.h"
+#include "faces_drawn.h"
 #include "files.h"
+#include "sheet_mesh.h"
 #include "app/AccuracyPanel.h"
 #include "app/ClassicalDialog.h"
 #include "app/DepthPanel.h"
@@ -85,6 +87,21 @@ int bandPixels(MainWindow& window)
     return count;
 }
 
+// The faces the world view's visible actors draw.
+vtkIdType worldFacesDrawn(MainWindow& window)
+{
+    return facesDrawn(window.findChild<QVTKOpenGLNativeWidget*>("worldView")->renderWindow()->GetRenderers()->GetFirstRenderer());
+}
+
+// A mouse event on the world view (Qt 5's QTest cannot drag with a button held).
+void sendMouse(MainWindow& window, QEvent::Type type, QPoint at, Qt::MouseButtons held)
+{
+    auto* view = window.findChild<QVTKOpenGLNativeWidget*>("worldView");
+    QMouseEvent event(type, at, view->mapToGlobal(at), type == QEvent::MouseMove ? Qt::NoButton : Qt::LeftButton, held,
+                      Qt::NoModifier);
+    QApplication::sendEvent(view, &event);
+}
+
 void waitForRest(MainWindow& window)
 {
     QTRY_VERIFY_WITH_TIMEOUT(!window.isAnimating(), 20000);
@@ -119,6 +136,48 @@ private slots:
     }
 
     void cleanup() { closeWindow(window_); }
+
+    // While Play runs and while the view is turned, a large mesh is drawn from
+    // its decimated copy; at rest every face is drawn.
+    void largeMeshMovesFromItsDecimatedCopy()
+    {
+        QTemporaryDir folder;
+        viewpipe::bench::writeSheetMesh(folder.filePath("sheet.ply").toStdString(), 200'000);
+        QFile house(kHouse);
+        QVERIFY(house.open(QIODevice::ReadOnly));
+        QVERIFY(writeFile(folder.filePath("scene.json"),
+                          house.readAll().replace(R"("objects": [)", R"("objects": [ { "type": "mesh", "path": "sheet.ply" },)")));
+        MainWindow& w = *window_;
+        QVERIFY(w.openScene(folder.filePath("scene.json")));
+        w.renderNow();
+        const vtkIdType full = worldFacesDrawn(w);
+        QVERIFY2(full > 190'000, qPrintable(QString::number(full))); // the sheet's 2 · 316² triangles and the house's faces
+
+        // Playing (again from the start until the copy, made off the GUI thread, is there).
+        vtkIdType whilePlaying = full;
+        QTRY_VERIFY_WITH_TIMEOUT(
+            [&] {
+                if (!w.isAnimating())
+                    w.play();
+                whilePlaying = worldFacesDrawn(w);
+                return w.isAnimating() && whilePlaying < full / 4;
+            }(),
+            60000);
+        QVERIFY2(whilePlaying > full / 100, qPrintable(QString::number(whilePlaying))); // a copy, not nothing
+        w.goToStage(1, false);
+        QCOMPARE(worldFacesDrawn(w), full);
+
+        // Turning the view with the mouse: the copy while the button is held, every face once it is let go.
+        auto* view = w.findChild<QVTKOpenGLNativeWidget*>("worldView");
+        const QPoint center = view->rect().center();
+        sendMouse(w, QEvent::MouseButtonPress, center, Qt::LeftButton);
+        sendMouse(w, QEvent::MouseMove, center + QPoint(40, 10), Qt::LeftButton);
+        w.renderNow();
+        QCOMPARE(worldFacesDrawn(w), whilePlaying);
+        sendMouse(w, QEvent::MouseButtonRelease, center + QPoint(40, 10), Qt::NoButton);
+        w.renderNow();
+        QCOMPARE(worldFacesDrawn(w), full);
+    }
 
     void stepperWalksThroughTheStages()
     {
