@@ -26,7 +26,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     for (const viewpipe::Vec3<double>& v : mesh.vertices)
         if (!viewpipe::allFinite(v))
             __builtin_trap();
-    for (const std::vector<int>& face : mesh.faces) {
+    for (const auto& face : mesh.faces) {
         if (face.size() < 3)
             __builtin_trap();
         for (const int i : face)

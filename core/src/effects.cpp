@@ -144,7 +144,7 @@ std::vector<std::array<int, 2>> meshEdgeIndices(const PolygonMesh& mesh)
 {
     std::vector<std::array<int, 2>> edges;
     std::unordered_set<std::uint64_t> seen;
-    for (const std::vector<int>& face : mesh.faces)
+    for (const auto& face : mesh.faces)
         for (std::size_t k = 0; k < face.size(); ++k) {
             const int a = face[k], b = face[(k + 1) % face.size()];
             const std::uint64_t key = (std::uint64_t(std::uint32_t(std::min(a, b))) << 32) | std::uint32_t(std::max(a, b));
@@ -481,7 +481,7 @@ EffectOutcomes runEffects(const Pipeline<double>& pipeline, const std::vector<Po
                 kept.push_back(interval);
             }
             c.keptEdges.push_back(kept);
-            for (const std::vector<int>& face : mesh.faces) {
+            for (const auto& face : mesh.faces) {
                 std::vector<Vec4<double>> polygon;
                 unsigned all = 0;
                 for (int i : face) {
@@ -509,7 +509,7 @@ EffectOutcomes runEffects(const Pipeline<double>& pipeline, const std::vector<Po
         CullOutcome c;
         for (std::size_t o = 0; o < objects.size(); ++o) {
             std::vector<bool> culled;
-            for (const std::vector<int>& face : objects[o].faces) {
+            for (const auto& face : objects[o].faces) {
                 // Signed area of the face in the picture (x, y after the
                 // divide), faces wound counter-clockwise seen from outside:
                 // a front face keeps that winding seen from the viewer (+z),

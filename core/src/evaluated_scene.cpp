@@ -48,7 +48,7 @@ public:
         p.kind = PrimitiveKind::Faces;
         p.opacity = opacity;
         p.object = object;
-        for (const std::vector<int>& face : mesh->faces)
+        for (const auto& face : mesh->faces)
             for (int k : face)
                 p.bounds.extend(mesh->vertices[std::size_t(k)]);
         p.faces = std::move(mesh);
@@ -120,7 +120,7 @@ std::optional<DepthBands> bandsOf(const std::vector<const PolygonMesh*>& meshes,
             low = std::min(low, *level), high = std::max(high, *level);
     };
     for (const PolygonMesh* mesh : meshes)
-        for (const std::vector<int>& face : mesh->faces) {
+        for (const auto& face : mesh->faces) {
             bool partial = false;
             for (int k : face) {
                 const Vec3<double>& p = mesh->vertices[std::size_t(k)];
@@ -329,7 +329,7 @@ ObjectsShown addObjects(Builder& add, const EvaluatedScene& out)
         if (sets.fighting && !sets.fighting->faces.empty()) { // outlined: far away they may be a few pixels wide
             add.faces(Element::ZFighting, sets.fighting, 0.8, object);
             add.lines(Element::ZFighting, meshEdges(*sets.fighting), 1.0, object);
-            for (const std::vector<int>& face : sets.fighting->faces)
+            for (const auto& face : sets.fighting->faces)
                 for (int k : face)
                     shown.fighting.push_back(sets.fighting->vertices[std::size_t(k)]);
         }

@@ -262,7 +262,7 @@ PolygonMesh parseObj(std::string_view bytes, const std::string& field)
             if (mesh.faces.size() == kMaxFaces || corners > kMaxCorners)
                 fail(mesh.faces.size() == kMaxFaces ? tooMany(kMaxFaces + 1, "faces or more", kMaxFaces)
                                                     : tooMany(corners, "face corners or more", kMaxCorners));
-            mesh.faces.push_back(std::move(face));
+            mesh.faces.push_back(face);
         }
         // Other statements (vn, vt, o, g, s, usemtl, mtllib, l, p, ...) add no polygons.
     });
@@ -597,7 +597,10 @@ template <class Source> PolygonMesh readPlyData(Source& source, const PlyHeader&
                                         " but the file is too short to hold them");
         if (element.name == "vertex")
             mesh.vertices.reserve(element.count);
+        else if (element.name == "face")
+            mesh.faces.reserve(element.count, 3 * element.count); // triangles, mostly
         std::uint64_t i = 0;
+        std::vector<int> face; // the face being read (one buffer for all)
         try {
             for (; i < element.count; ++i) {
                 auto fail = [&](const std::string& reason) {
@@ -606,7 +609,7 @@ template <class Source> PolygonMesh readPlyData(Source& source, const PlyHeader&
                                                 " " + std::to_string(i) + reason);
                 };
                 Vec3<double> p = Vec3<double>::Zero();
-                std::vector<int> face;
+                face.clear();
                 for (const PlyProperty& property : element.properties) {
                     if (!property.list) {
                         switch (property.role) {
@@ -633,7 +636,6 @@ template <class Source> PolygonMesh readPlyData(Source& source, const PlyHeader&
                     corners += n;
                     if (corners > kMaxCorners)
                         throw InputError(field, tooMany(corners, "face corners or more", kMaxCorners));
-                    face.reserve(n);
                     for (std::size_t k = 0; k < n; ++k) {
                         const double index = source.number(property.type);
                         if (!(index >= 0 && index < static_cast<double>(header.vertexCount)))
@@ -649,7 +651,7 @@ template <class Source> PolygonMesh readPlyData(Source& source, const PlyHeader&
                         fail(" is not finite");
                     mesh.vertices.push_back(p);
                 } else if (element.name == "face") {
-                    mesh.faces.push_back(std::move(face));
+                    mesh.faces.push_back(face);
                 }
             }
         } catch (const Truncated&) {
@@ -723,10 +725,10 @@ PolygonMesh parseBinaryStl(std::string_view bytes, const std::string& field)
         throw InputError(field, tooMany(count, "triangles", kMaxFaces));
     PolygonMesh mesh;
     VertexMerger merger(mesh, field);
-    mesh.faces.reserve(count);
+    mesh.faces.reserve(count, 3 * count);
     for (std::uint64_t t = 0; t < count; ++t) {
         source.skipBytes(12); // the normal: recomputed from the vertices wherever it is needed
-        std::vector<int> face;
+        std::array<int, 3> face;
         for (int v = 0; v < 3; ++v) {
             Vec3<double> p;
             for (int k = 0; k < 3; ++k)
@@ -734,10 +736,10 @@ PolygonMesh parseBinaryStl(std::string_view bytes, const std::string& field)
             if (!allFinite(p))
                 throw InputError(field, "triangle " + std::to_string(t + 1) + ": vertex " + std::to_string(v + 1) +
                                             " is not finite");
-            face.push_back(merger.index(p));
+            face[std::size_t(v)] = merger.index(p);
         }
         source.skipBytes(2); // attribute byte count
-        mesh.faces.push_back(std::move(face));
+        mesh.faces.push_back(face);
     }
     return mesh;
 }
@@ -802,7 +804,7 @@ PolygonMesh parseAsciiStl(std::string_view bytes, const std::string& field)
         expect("endfacet");
         if (mesh.faces.size() == kMaxFaces)
             fail(tooMany(kMaxFaces + 1, "facets or more", kMaxFaces));
-        mesh.faces.push_back(std::move(face));
+        mesh.faces.push_back(face);
     }
     return mesh;
 }

@@ -19,7 +19,7 @@
 
 namespace viewpipe::gui {
 
-vtkSmartPointer<vtkPolyData> depthLevels(const PolygonMesh& faces, const Pipeline<double>& pipeline,
+vtkSmartPointer<vtkPolyData> depthLevels(const std::shared_ptr<const PolygonMesh>& faces, const Pipeline<double>& pipeline,
                                          const DepthOptions& options)
 {
     // Only the points of these faces: the others must not widen the bands' range.
@@ -28,7 +28,7 @@ vtkSmartPointer<vtkPolyData> depthLevels(const PolygonMesh& faces, const Pipelin
     used->PointMergingOff();
     used->SetOutputPointsPrecision(vtkAlgorithm::DOUBLE_PRECISION);
     auto data = vtkSmartPointer<vtkPolyData>::New();
-    if (faces.faces.size() > 50000) {
+    if (faces->faces.size() > 50000) {
         used->Update();
         data->ShallowCopy(used->GetOutput());
     } else {

@@ -5,6 +5,8 @@
 
 #include <vtkSmartPointer.h>
 
+#include <memory>
+
 #include "viewpipe/effects.hpp"
 
 class vtkActor;
@@ -18,7 +20,7 @@ namespace viewpipe::gui {
 // computed at many points; a mesh with many faces is fine enough as it is),
 // each point carrying the level the depth buffer stores for it, or NaN where
 // it stores nothing.
-vtkSmartPointer<vtkPolyData> depthLevels(const PolygonMesh& faces, const Pipeline<double>& pipeline,
+vtkSmartPointer<vtkPolyData> depthLevels(const std::shared_ptr<const PolygonMesh>& faces, const Pipeline<double>& pipeline,
                                          const DepthOptions& options);
 
 // Alternating light and dark steps along the band ramp, so that neighbouring bands always differ.

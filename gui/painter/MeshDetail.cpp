@@ -18,8 +18,9 @@ constexpr double kMostCubes = 1 << 20; // the clustering keeps about 90 bytes a 
 // Triangles are clustered into cubes of one size, chosen from the mesh's area
 // so that the copy has about kCoarseTriangles triangles (two a cube crossed),
 // larger where the cubes across the mesh's box would be too many.
-vtkSmartPointer<vtkPolyData> decimated(const PolygonMesh& mesh)
+vtkSmartPointer<vtkPolyData> decimated(const std::shared_ptr<const PolygonMesh>& shared)
 {
+    const PolygonMesh& mesh = *shared;
     double area = 0;
     for (const auto& face : mesh.faces)
         for (std::size_t k = 1; k + 1 < face.size(); ++k) {
@@ -40,17 +41,17 @@ vtkSmartPointer<vtkPolyData> decimated(const PolygonMesh& mesh)
     clustering->SetDivisionOrigin(box.min().data()); // cubes of this side from the corner
     clustering->SetDivisionSpacing(side, side, side);
     clustering->CopyCellDataOff();
-    clustering->SetInputData(facesData(mesh)); // its own VTK objects: nothing the GUI thread draws is touched here
+    clustering->SetInputData(facesData(shared)); // its own VTK objects over the mesh: nothing the GUI thread draws is touched
     clustering->Update();
     return clustering->GetOutput();
 }
 
 } // namespace
 
-MeshDetail::MeshDetail(std::shared_ptr<const PolygonMesh> mesh) : mesh_(std::move(mesh)), full_(facesData(*mesh_))
+MeshDetail::MeshDetail(std::shared_ptr<const PolygonMesh> mesh) : mesh_(std::move(mesh)), full_(facesData(mesh_))
 {
     if (large())
-        making_ = std::async(std::launch::async, [mesh = mesh_] { return decimated(*mesh); });
+        making_ = std::async(std::launch::async, [mesh = mesh_] { return decimated(mesh); });
 }
 
 MeshDetail::~MeshDetail()

@@ -107,7 +107,7 @@ vtkSmartPointer<vtkActor2D> overlayActor(double lineWidth)
 void addObjectActors(const std::vector<vtkRenderer*>& renderers, const EvaluatedScene& scene, Theme theme)
 {
     for (std::size_t o = 0; o < scene.meshes.size(); ++o) {
-        const vtkSmartPointer<vtkPolyData> faces = facesData(*scene.meshes[o]);
+        const vtkSmartPointer<vtkPolyData> faces = facesData(scene.meshes[o]);
         const bool edges = scene.scene.objects[o].type != ObjectType::Mesh; // meshes from files: faces only
         for (vtkRenderer* renderer : renderers)
             for (const bool surface : {true, false}) {
@@ -249,7 +249,7 @@ void ScenePainter::setScene(std::shared_ptr<const EvaluatedScene> scene)
     const vtkSmartPointer<vtkLookupTable> bands = s.bands ? bandColors(*s.bands) : nullptr;
     for (const Primitive& p : s.primitives) {
         if (p.depthColored && bands) { // what the depth buffer holds, in bands
-            depthColored[std::size_t(p.object)] = depthLevels(*p.faces, s.pipeline, *s.scene.effects.depth);
+            depthColored[std::size_t(p.object)] = depthLevels(p.faces, s.pipeline, *s.scene.effects.depth);
             addLayer(p, unlitActor(depthColored[std::size_t(p.object)]));
             colorByLevels(layers_.back().actor, bands);
         } else if (p.kind == PrimitiveKind::Faces) {

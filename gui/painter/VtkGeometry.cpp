@@ -3,8 +3,10 @@
 
 #include <vtkActor.h>
 #include <vtkNew.h>
+#include <vtkCallbackCommand.h>
 #include <vtkCellArray.h>
-#include <vtkIdTypeArray.h>
+#include <vtkDoubleArray.h>
+#include <vtkTypeInt32Array.h>
 #include <vtkPoints.h>
 #include <vtkPolyData.h>
 #include <vtkPolyDataMapper.h>
@@ -44,30 +46,38 @@ vtkSmartPointer<vtkPolyData> linesData(const std::vector<Segment2>& segments)
     return linesData(ends);
 }
 
-vtkSmartPointer<vtkPolyData> facesData(const PolygonMesh& mesh)
+namespace {
+
+// A VTK array over a mesh's own values, without a copy; it keeps the mesh
+// alive until VTK releases it. VTK's arrays are not const: those drawn are
+// only read.
+template <class Array, class Value>
+vtkSmartPointer<Array> arrayOver(const Value* values, std::size_t count, int components,
+                                 const std::shared_ptr<const PolygonMesh>& mesh)
 {
+    auto array = vtkSmartPointer<Array>::New();
+    array->SetNumberOfComponents(components);
+    array->SetArray(const_cast<Value*>(values), vtkIdType(count) * components, 1); // 1: VTK never frees it
+    auto keep = vtkSmartPointer<vtkCallbackCommand>::New();
+    keep->SetClientData(new std::shared_ptr<const PolygonMesh>(mesh));
+    keep->SetCallback([](vtkObject*, unsigned long, void* held, void*) {
+        delete static_cast<std::shared_ptr<const PolygonMesh>*>(held);
+    });
+    array->AddObserver(vtkCommand::DeleteEvent, keep);
+    return array;
+}
+
+} // namespace
+
+vtkSmartPointer<vtkPolyData> facesData(const std::shared_ptr<const PolygonMesh>& mesh)
+{
+    static_assert(sizeof(Vec3<double>) == 3 * sizeof(double) && sizeof(int) == sizeof(vtkTypeInt32));
     auto points = vtkSmartPointer<vtkPoints>::New();
-    points->SetDataTypeToDouble();
-    points->SetNumberOfPoints(vtkIdType(mesh.vertices.size()));
-    for (std::size_t i = 0; i < mesh.vertices.size(); ++i)
-        points->SetPoint(vtkIdType(i), mesh.vertices[i].data());
-    // Offsets and connectivity filled in one pass: a million faces take no per-cell insertion.
-    auto offsets = vtkSmartPointer<vtkIdTypeArray>::New();
-    auto connectivity = vtkSmartPointer<vtkIdTypeArray>::New();
-    offsets->SetNumberOfValues(vtkIdType(mesh.faces.size() + 1));
-    std::size_t total = 0;
-    for (const std::vector<int>& face : mesh.faces)
-        total += face.size();
-    connectivity->SetNumberOfValues(vtkIdType(total));
-    vtkIdType at = 0;
-    for (std::size_t f = 0; f < mesh.faces.size(); ++f) {
-        offsets->SetValue(vtkIdType(f), at);
-        for (int k : mesh.faces[f])
-            connectivity->SetValue(at++, k);
-    }
-    offsets->SetValue(vtkIdType(mesh.faces.size()), at);
+    points->SetData(arrayOver<vtkDoubleArray>(mesh->vertices.data()->data(), mesh->vertices.size(), 3, mesh));
+    const FaceList& faces = mesh->faces;
     auto polys = vtkSmartPointer<vtkCellArray>::New();
-    polys->SetData(offsets, connectivity);
+    polys->SetData(arrayOver<vtkTypeInt32Array>(faces.offsets().data(), faces.offsets().size(), 1, mesh),
+                   arrayOver<vtkTypeInt32Array>(faces.indices().data(), faces.indices().size(), 1, mesh));
     auto data = vtkSmartPointer<vtkPolyData>::New();
     data->SetPoints(points);
     data->SetPolys(polys);
@@ -94,7 +104,7 @@ vtkSmartPointer<vtkActor> unlitActor(vtkPolyData* data)
 
 vtkSmartPointer<vtkPolyData> primitiveData(const Primitive& primitive)
 {
-    return primitive.kind == PrimitiveKind::Faces ? facesData(*primitive.faces) : linesData(primitive.segments);
+    return primitive.kind == PrimitiveKind::Faces ? facesData(primitive.faces) : linesData(primitive.segments);
 }
 
 // Text in the font the vector figures use (DejaVu Sans, Debian's fonts-dejavu-core), so that a label

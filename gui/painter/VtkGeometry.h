@@ -4,6 +4,7 @@
 
 #include <vtkSmartPointer.h>
 
+#include <memory>
 #include <vector>
 
 #include "viewpipe/evaluated_scene.hpp"
@@ -18,7 +19,8 @@ namespace viewpipe::gui {
 vtkSmartPointer<vtkPolyData> linesData(const std::vector<Vec3<double>>& ends);
 // Lines in a picture's plane (z = 0).
 vtkSmartPointer<vtkPolyData> linesData(const std::vector<Segment2>& segments);
-vtkSmartPointer<vtkPolyData> facesData(const PolygonMesh& mesh);
+// A mesh's faces over its own vertices and indices (no copy; the poly data keeps the mesh).
+vtkSmartPointer<vtkPolyData> facesData(const std::shared_ptr<const PolygonMesh>& mesh);
 // A mesh's edges, once each.
 vtkSmartPointer<vtkPolyData> edgesData(const PolygonMesh& mesh);
 vtkSmartPointer<vtkPolyData> primitiveData(const Primitive& primitive);

@@ -726,7 +726,7 @@ Figure drawFigure(const StageShown& stage, const FigureView& view, const LabelMe
             continue;
         }
         std::vector<Vec3d> corners;
-        for (const std::vector<int>& face : p.faces->faces) {
+        for (const auto& face : p.faces->faces) {
             corners.clear();
             for (int v : face)
                 corners.push_back(p.faces->vertices[std::size_t(v)]);

@@ -102,7 +102,7 @@ json primitiveJson(const Primitive& p, Theme theme)
         return out;
     }
     std::vector<std::uint32_t> triangles; // each polygon as a fan
-    for (const std::vector<int>& face : p.faces->faces)
+    for (const auto& face : p.faces->faces)
         for (std::size_t k = 1; k + 1 < face.size(); ++k)
             triangles.insert(triangles.end(), {std::uint32_t(face[0]), std::uint32_t(face[k]), std::uint32_t(face[k + 1])});
     out["positions"] = floats(p.faces->vertices);

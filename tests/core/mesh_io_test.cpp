@@ -36,7 +36,7 @@ std::string cubeObj()
     text += "vt 0 0\nvn 0 0 1\ng sides\nusemtl grey\ns off\n";
     const char* forms[] = {"%d", "%d/1", "%d//1", "%d/1/1"};
     int k = 0;
-    for (const std::vector<int>& face : kCube.faces) {
+    for (const auto& face : kCube.faces) {
         text += "f";
         for (const int i : face) {
             char word[32];
@@ -122,7 +122,7 @@ std::string cubePly(Encoding encoding, bool extras)
             data << float(v.x()) << float(v.y()) << float(v.z());
         data.endLine();
     }
-    for (const std::vector<int>& face : kCube.faces) {
+    for (const auto& face : kCube.faces) {
         if (extras) {
             data << std::uint8_t(7) << std::uint16_t(face.size());
             for (const int i : face)
@@ -165,7 +165,7 @@ struct Triangle {
 std::vector<Triangle> cubeTriangles()
 {
     std::vector<Triangle> triangles;
-    for (const std::vector<int>& f : kCube.faces) {
+    for (const auto& f : kCube.faces) {
         const auto& v = kCube.vertices;
         triangles.push_back({v[std::size_t(f[0])], v[std::size_t(f[1])], v[std::size_t(f[2])]});
         triangles.push_back({v[std::size_t(f[0])], v[std::size_t(f[2])], v[std::size_t(f[3])]});
@@ -207,7 +207,7 @@ std::string asciiStl(const std::vector<Triangle>& triangles)
 std::vector<std::vector<Vec3<double>>> corners(const PolygonMesh& mesh)
 {
     std::vector<std::vector<Vec3<double>>> out;
-    for (const std::vector<int>& face : mesh.faces) {
+    for (const auto& face : mesh.faces) {
         out.emplace_back();
         for (const int i : face)
             out.back().push_back(mesh.vertices[std::size_t(i)]);
@@ -244,7 +244,7 @@ TEST(MeshIo, ObjRelativeIndices)
     const PolygonMesh mesh = parseMesh("v 0 0 0\nv 1 0 0\nv 1 1 0\nf -3 -2 -1\nv 0 1 0\nf -4 -2/5 -1//2\n"
                                        "f 1 -2 4\n",
                                        MeshFormat::Obj, "mesh");
-    EXPECT_EQ(mesh.faces, (std::vector<std::vector<int>>{{0, 1, 2}, {0, 2, 3}, {0, 2, 3}}));
+    EXPECT_EQ(mesh.faces, (FaceList{{0, 1, 2}, {0, 2, 3}, {0, 2, 3}}));
 }
 
 TEST(MeshIo, ObjNumbers)
