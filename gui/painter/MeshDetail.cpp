@@ -10,6 +10,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include "viewpipe/evaluated_scene.hpp"
+
 namespace viewpipe::gui {
 namespace {
 
@@ -27,9 +29,7 @@ vtkSmartPointer<vtkPolyData> decimated(const std::shared_ptr<const PolygonMesh>&
             const Vec3<double>& a = mesh.vertices[std::size_t(face[0])];
             area += 0.5 * (mesh.vertices[std::size_t(face[k])] - a).cross(mesh.vertices[std::size_t(face[k + 1])] - a).norm();
         }
-    Eigen::AlignedBox<double, 3> box;
-    for (const Vec3<double>& p : mesh.vertices)
-        box.extend(p);
+    Eigen::AlignedBox<double, 3> box = boundsOf({shared}); // not const: VTK takes the origin as double*
     const Vec3<double> extent = box.diagonal();
     double side = area > 0 ? std::sqrt(2 * area / MeshDetail::kCoarseTriangles) : extent.norm() / 100;
     const auto cubes = [&] { return (extent / side).array().ceil().max(1).prod(); };

@@ -17,7 +17,6 @@
 
 #include "viewpipe/geometry.hpp"
 
-
 namespace viewpipe::gui {
 
 class MeshDetail {
