@@ -7,13 +7,14 @@ set -euo pipefail
 
 packages=(
   build-essential cmake pkg-config ccache
-  libeigen3-dev nlohmann-json3-dev libcli11-dev
+  libeigen3-dev nlohmann-json3-dev libcli11-dev libfmt-dev libfast-float-dev
   libgtest-dev libgmock-dev libbenchmark-dev
   libboost-dev libmpfr-dev libglm-dev
   qtbase5-dev libqt5svg5-dev libvtk9-dev libvtk9-qt-dev
   xvfb xauth libgl1-mesa-dri fonts-dejavu-core fonts-dejavu-extra
   ffmpeg
   libjs-three libjs-katex
+  emscripten
 )
 # Only the tests need these (sanitizers, libFuzzer, TeX to compile the LaTeX and
 # TikZ exports, poppler to rasterize PDFs, Chromium to open the web page):

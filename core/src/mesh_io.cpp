@@ -2,6 +2,8 @@
 
 #include "parse_number.hpp"
 
+#include <fast_float/fast_float.h>
+
 #include <algorithm>
 #include <array>
 #include <cerrno>
@@ -56,11 +58,6 @@ bool isSpace(char c)
     return c == ' ' || c == '\t' || c == '\r' || c == '\n' || c == '\f' || c == '\v';
 }
 
-bool isDigit(char c)
-{
-    return c >= '0' && c <= '9';
-}
-
 bool equalsIgnoringCase(std::string_view a, std::string_view b)
 {
     return a.size() == b.size() && std::equal(a.begin(), a.end(), b.begin(), [](char x, char y) {
@@ -68,39 +65,12 @@ bool equalsIgnoringCase(std::string_view a, std::string_view b)
            });
 }
 
-// Whether a decimal number that from_chars found out of range is too large
-// (rather than too small): its decimal magnitude, from the digits around the
-// point and the exponent (saturated), is positive.
-bool overflows(std::string_view token)
-{
-    std::size_t i = token[0] == '-' ? 1 : 0;
-    long long magnitude = 0;
-    bool significant = false;
-    for (; i < token.size() && isDigit(token[i]); ++i) {
-        significant = significant || token[i] != '0';
-        magnitude += significant ? 1 : 0;
-    }
-    if (i < token.size() && token[i] == '.')
-        for (++i; i < token.size() && isDigit(token[i]); ++i) {
-            significant = significant || token[i] != '0';
-            magnitude -= significant ? 0 : 1;
-        }
-    long long exponent = 0;
-    if (i < token.size() && (token[i] == 'e' || token[i] == 'E')) {
-        ++i;
-        const bool negative = i < token.size() && token[i] == '-';
-        i += i < token.size() && (token[i] == '-' || token[i] == '+') ? 1 : 0;
-        for (; i < token.size() && isDigit(token[i]); ++i)
-            exponent = std::min(exponent * 10 + (token[i] - '0'), 1'000'000'000LL);
-        exponent = negative ? -exponent : exponent;
-    }
-    return magnitude + exponent > 0;
-}
-
 } // namespace
 
-// Locale-independent (from_chars): Qt sets the locale from the environment. An overflow gives an infinity, refused later as not
-// finite; an underflow gives zero, as strtod would.
+// Locale-independent (Qt sets the locale from the environment): fast_float,
+// the parser libstdc++'s from_chars is built on, here and in the browser's
+// build. An overflow gives an infinity (refused later as not finite), an
+// underflow zero, as strtod would.
 std::optional<double> parseDouble(std::string_view token)
 {
     if (token.size() > 1 && token[0] == '+' && token[1] != '-')
@@ -108,14 +78,8 @@ std::optional<double> parseDouble(std::string_view token)
     if (token.empty())
         return std::nullopt;
     double value = 0;
-    const auto [end, error] = std::from_chars(token.data(), token.data() + token.size(), value);
-    if (end != token.data() + token.size())
-        return std::nullopt;
-    if (error == std::errc::result_out_of_range) {
-        const double magnitude = overflows(token) ? std::numeric_limits<double>::infinity() : 0.0;
-        return token[0] == '-' ? -magnitude : magnitude;
-    }
-    if (error != std::errc())
+    const auto [end, error] = fast_float::from_chars(token.data(), token.data() + token.size(), value);
+    if (end != token.data() + token.size() || error != std::errc())
         return std::nullopt;
     return value;
 }

@@ -8,7 +8,9 @@
 #include <set>
 #include <type_traits>
 
-#include "viewpipe/accuracy.hpp"
+#ifdef VIEWPIPE_WIDE_SCALARS
+#include "viewpipe/accuracy.hpp" // setReferenceBits
+#endif
 #include "viewpipe/api.hpp"
 #include "viewpipe/classical.hpp"
 #include "viewpipe/format.hpp"
@@ -150,8 +152,14 @@ template <class F> auto withPrecision(const PrecisionChoice& precision, F&& f)
     switch (precision.type) {
     case Precision::Float: return f(float{});
     case Precision::LongDouble: return f(static_cast<long double>(0));
+#ifdef VIEWPIPE_WIDE_SCALARS
     case Precision::Float128: return f(Float128{});
     case Precision::Mpfr: setReferenceBits(precision.mpfrBits); return f(Mpfr{});
+#else
+    case Precision::Float128:
+    case Precision::Mpfr:
+        throw InputError("--precision", precisionName(precision) + " is computed by the app and the CLI, not in the browser");
+#endif
     case Precision::Double: break;
     }
     return f(double{});

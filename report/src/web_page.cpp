@@ -8,6 +8,7 @@
 #include <sstream>
 #include <stdexcept>
 
+#include "viewpipe/format.hpp"
 #include "viewpipe/math_text.hpp"
 #include "viewpipe/report/latex.hpp"
 #include "viewpipe/report/lesson_latex.hpp"
@@ -19,11 +20,15 @@ namespace {
 
 using nlohmann::json;
 
-std::string readFile(const std::filesystem::path& file, const char* package)
+// Mesh files up to this size in all go into the page, for its core to read.
+constexpr std::size_t kMaxCarriedMeshBytes = 1'000'000;
+
+// `source` says where the file comes from, for the message when it cannot be read.
+std::string readFile(const std::filesystem::path& file, const std::string& source)
 {
     std::ifstream in(file, std::ios::binary);
     if (!in)
-        throw std::runtime_error("cannot read " + file.string() + " (Debian package " + package + ")");
+        throw std::runtime_error("cannot read " + file.string() + " (" + source + ")");
     std::ostringstream text;
     text << in.rdbuf();
     return text.str();
@@ -185,18 +190,19 @@ std::string fill(const std::string& text, const std::map<std::string, std::strin
 
 } // namespace
 
-WebAssets loadWebAssets(const std::filesystem::path& javascript)
+WebAssets loadWebAssets(const std::filesystem::path& javascript, const std::filesystem::path& core)
 {
     WebAssets assets;
-    assets.three = readFile(javascript / "three" / "build" / "three.min.js", "libjs-three");
-    assets.katex = readFile(javascript / "katex" / "katex.min.js", "libjs-katex");
-    std::string css = readFile(javascript / "katex" / "katex.min.css", "libjs-katex");
+    assets.core = readFile(core.empty() ? VIEWPIPE_WEB_CORE : core, "the core compiled to WebAssembly, built with the app");
+    assets.three = readFile(javascript / "three" / "build" / "three.min.js", "Debian package libjs-three");
+    assets.katex = readFile(javascript / "katex" / "katex.min.js", "Debian package libjs-katex");
+    std::string css = readFile(javascript / "katex" / "katex.min.css", "Debian package libjs-katex");
     // Each @font-face keeps its woff2 source, inlined; browsers all read woff2.
     const std::regex source(R"(src:url\((fonts/[A-Za-z0-9_-]+)\.woff2\) format\(['"]woff2['"]\)[^;}]*)");
     std::string inlined;
     std::size_t last = 0;
     for (auto it = std::sregex_iterator(css.begin(), css.end(), source); it != std::sregex_iterator(); ++it) {
-        const std::string font = readFile(javascript / "katex" / ((*it)[1].str() + ".woff2"), "fonts-katex");
+        const std::string font = readFile(javascript / "katex" / ((*it)[1].str() + ".woff2"), "Debian package fonts-katex");
         inlined += css.substr(last, std::size_t(it->position()) - last) + "src:url(data:font/woff2;base64," +
                    base64(font.data(), font.size()) + ") format(\"woff2\")";
         last = std::size_t(it->position() + it->length());
@@ -312,7 +318,28 @@ json sceneData(const EvaluatedScene& scene, const WebPageViews& views)
     projected["zFighting"] = ring;
     projected["zFightingColor"] = color(elementColor(Element::ZFighting, theme));
 
+    // The scene as the core reads it, with the files it names: what the page's core evaluates.
+    // Large meshes stay out (the page draws them from its own arrays), and the page says so.
+    json files = json::object();
+    std::size_t fileBytes = 0;
+    for (const SceneObject& object : scene.scene.objects)
+        if (object.type == ObjectType::Mesh) {
+            const std::string bytes = readFile(object.resolvedPath, "a mesh of the scene");
+            files[object.path] = base64(bytes.data(), bytes.size());
+            fileBytes += bytes.size();
+        }
+    std::string filesLeftOut;
+    if (fileBytes > kMaxCarriedMeshBytes) {
+        files = json::object();
+        filesLeftOut = "The scene's meshes (" + formatSignificant(double(fileBytes) / 1e6, 2) +
+                       " MB) are left out of this page to keep it small: viewpipe pipeline SCENE --json prints "
+                       "these numbers.";
+    }
+
     const json data = {{"title", scene.scene.name},
+                       {"scene", sceneToJson(scene.scene)},
+                       {"files", files},
+                       {"filesLeftOut", filesLeftOut},
                        {"width", views.width},
                        {"height", views.height},
                        {"fontSize", views.fontSize},
@@ -379,6 +406,7 @@ std::string page(const std::string& title, const json& data, const WebAssets& as
                                  {"data", scriptJson(data)},
                                  {"three", escapeForScript(assets.three)},
                                  {"katex", escapeForScript(assets.katex)},
+                                 {"core", escapeForScript(assets.core)},
                                  {"page-js", escapeForScript(web::kPageJs)}});
 }
 

@@ -1,6 +1,8 @@
 // ViewPipe's page: draws the evaluated scene that the export wrote into
 // #scene-data. Every matrix, framing, label place and transition frame comes
-// from the app; this script only draws them, as the app's painter does.
+// from the app; this script only draws them, as the app's painter does. The
+// scene's numbers in the JSON view come from ViewPipe's core, compiled to
+// WebAssembly (ViewPipeCore).
 (function () {
   'use strict';
   const page = JSON.parse(document.getElementById('scene-data').textContent);
@@ -751,6 +753,29 @@
   });
   window.addEventListener('resize', () => { drawWorld(); drawProjected(); });
 
+  // ---- The core, compiled to WebAssembly ------------------------------------------
+  let core = null; // once loaded
+  // The scene's numbers as the CLI prints them (`viewpipe pipeline SCENE --json`), or why the core refuses the scene.
+  function evaluateScene() {
+    if (!core) return;
+    let outcome = { text: '', error: '' };
+    for (const [path, bytes] of Object.entries(data.files)) {
+      outcome = core.putFile(path, new Uint8Array(bytesOf(bytes)));
+      if (outcome.error) break;
+    }
+    if (!outcome.error && !data.filesLeftOut) outcome = core.pipelineJson(data.scene);
+    document.getElementById('json-left-out').textContent = data.filesLeftOut;
+    document.getElementById('pipeline-json').textContent = outcome.text;
+    const error = document.getElementById('scene-error');
+    error.textContent = outcome.error;
+    error.hidden = !outcome.error;
+  }
+  ViewPipeCore().then((module) => {
+    core = module;
+    evaluateScene();
+    body.dataset.core = '1';
+  });
+
   // ---- Scenes and lessons -------------------------------------------------------
   let shownScene = -1;
   function useScene(index) {
@@ -764,6 +789,7 @@
     buildViews();
     buildPanels();
     drawProjected();
+    evaluateScene();
   }
 
   // Text with inline math between dollar signs, typeset ("\$" is a dollar).

@@ -3,7 +3,9 @@
 // Numbers for people: one format for every table, report and matrix the CLI,
 // the export and the app's panels print.
 
-#include <charconv>
+#include <fmt/format.h>
+
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <string>
@@ -26,28 +28,30 @@ inline std::string formatShortest(double x)
 {
     if (x == 0)
         return "0";
-    char buffer[64];
-    const std::string scientific(buffer,
-                                 std::to_chars(buffer, buffer + sizeof buffer, x, std::chars_format::scientific).ptr);
     if (!std::isfinite(x))
-        return scientific;
-    const std::size_t sign = x < 0 ? 1 : 0, e = scientific.find('e');
-    std::string digits;
-    for (std::size_t i = sign; i < e; ++i)
-        if (scientific[i] != '.')
-            digits += scientific[i];
-    const int point = std::stoi(scientific.substr(e + 1)) + 1; // digits before the point, written out
+        return std::isnan(x) ? "nan" : x < 0 ? "-inf" : "inf";
+    // fmt's shortest round trip (the same digits in the browser's build), as digits and a decimal point.
+    const std::string text = fmt::format("{}", std::fabs(x));
+    const std::size_t e = std::min(text.find('e'), text.size());
+    const std::string mantissa = text.substr(0, e);
+    const std::size_t dot = std::min(mantissa.find('.'), mantissa.size());
+    int point = int(dot) + (e < text.size() ? std::stoi(text.substr(e + 1)) : 0); // digits before the point
+    std::string digits = mantissa.substr(0, dot) + (dot < mantissa.size() ? mantissa.substr(dot + 1) : "");
+    for (; digits.size() > 1 && digits.front() == '0'; --point)
+        digits.erase(0, 1);
+    while (digits.size() > 1 && digits.back() == '0')
+        digits.pop_back();
+    const std::string sign = x < 0 ? "-" : "";
     const int count = int(digits.size());
-    if (point <= -4 || point > count + 5)
-        return scientific;
-    std::string full;
+    if (point <= -4 || point > count + 5) {
+        const int exponent = point - 1;
+        return sign + digits.substr(0, 1) + (count > 1 ? "." + digits.substr(1) : "") + fmt::format("e{:+03d}", exponent);
+    }
     if (point <= 0)
-        full = "0." + std::string(std::size_t(-point), '0') + digits;
-    else if (point >= count)
-        full = digits + std::string(std::size_t(point - count), '0');
-    else
-        full = digits.substr(0, std::size_t(point)) + "." + digits.substr(std::size_t(point));
-    return (sign ? "-" : "") + full;
+        return sign + "0." + std::string(std::size_t(-point), '0') + digits;
+    if (point >= count)
+        return sign + digits + std::string(std::size_t(point - count), '0');
+    return sign + digits.substr(0, std::size_t(point)) + "." + digits.substr(std::size_t(point));
 }
 
 } // namespace viewpipe

@@ -147,7 +147,9 @@ template <class T> Mat4<T> lookAt(const LookAt<T>& look, Handedness handedness =
 {
     const Mat3<T> r = eyeRotation(look, handedness);
     Mat4<T> m = embedLinear(r);
-    m.template topRightCorner<3, 1>() = -(r * look.eye);
+    // Summed left to right as written: the same bits with SIMD (here) and without (the page's WebAssembly).
+    for (int i = 0; i < 3; ++i)
+        m(i, 3) = -(r(i, 0) * look.eye.x() + r(i, 1) * look.eye.y() + r(i, 2) * look.eye.z());
     return m;
 }
 

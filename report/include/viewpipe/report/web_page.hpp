@@ -47,12 +47,15 @@ struct WebPageViews {
     Theme theme = Theme::Light;
 };
 
-// The libraries, read from Debian's packages; KaTeX's fonts inlined into its
-// style sheet as data. Throws std::runtime_error naming the package missing.
+// The libraries, read from Debian's packages, KaTeX's fonts inlined into its
+// style sheet as data; and ViewPipe's core as WebAssembly inlined in one
+// script (`core`: empty for the one built with the app, by web/). Throws
+// std::runtime_error naming what is missing.
 struct WebAssets {
-    std::string three, katex, katexCss;
+    std::string three, katex, katexCss, core;
 };
-WebAssets loadWebAssets(const std::filesystem::path& javascript = "/usr/share/javascript");
+WebAssets loadWebAssets(const std::filesystem::path& javascript = "/usr/share/javascript",
+                        const std::filesystem::path& core = {});
 
 // The page's data (what the script draws), as JSON: {"scenes": [the scene's]}.
 std::string webPageData(const EvaluatedScene& scene, const WebPageViews& views);

@@ -1,0 +1,147 @@
+// The core compiled to WebAssembly (web/, what the page runs) gives what the
+// CLI gives: `viewpipe pipeline SCENE --json` for every scene in data/scenes,
+// every key and text alike and every number within a few ulp (Eigen sums some
+// products in another order without SIMD: docs/numerics.md), and for refused
+// scenes and meshes the same "field.path: reason" the CLI prints after "FILE: ".
+// Usage: node core_module_test.js VIEWPIPE_EXE MODULE_JS DATA_DIR
+'use strict';
+const assert = require('assert');
+const { spawnSync } = require('child_process');
+const fs = require('fs');
+const os = require('os');
+const path = require('path');
+
+const [viewpipe, modulePath, dataDir] = process.argv.slice(2);
+const work = fs.mkdtempSync(path.join(os.tmpdir(), 'viewpipe-core-module-'));
+let failures = 0;
+
+function check(name, body) {
+  try {
+    body();
+    console.log(`ok ${name}`);
+  } catch (error) {
+    failures += 1;
+    console.log(`FAILED ${name}\n${error.message}`);
+  }
+}
+
+// Equal texts, or where they part, with a little of each around it.
+function sameText(got, expected) {
+  if (got === expected) return;
+  let at = 0;
+  while (at < got.length && got[at] === expected[at]) at += 1;
+  const around = (text) => JSON.stringify(text.slice(Math.max(0, at - 60), at + 60));
+  assert.fail(`the texts part at character ${at}:\n  module ${around(got)}\n  CLI    ${around(expected)}`);
+}
+
+const kUlps = 4;
+// Units in the last place between two doubles.
+function ulpsApart(a, b) {
+  const bits = new BigInt64Array(new Float64Array([a, b]).buffer);
+  const ordered = (x) => (x < 0n ? -(x & 0x7fffffffffffffffn) : x);
+  const d = ordered(bits[0]) - ordered(bits[1]);
+  return Number(d < 0n ? -d : d);
+}
+
+// The CLI's JSON and the module's: the same keys, texts and structure, numbers
+// within kUlps; returns how many numbers differ at all.
+// A depth resolution's step is where the stored depth next changes, found by
+// bisection: an ulp in the distance can move it to the neighbouring stored
+// value, a relative 2^-24 for 32-bit depth.
+const kStepShare = 1e-6;
+function sameJson(got, expected, where = '$') {
+  if (typeof expected === 'number') {
+    assert.strictEqual(typeof got, 'number', `${where}: not a number`);
+    const apart = ulpsApart(got, expected);
+    const bisected = /\.depth\.resolution\.\d+\.step$/.test(where);
+    const near = bisected ? Math.abs(got - expected) <= kStepShare * Math.abs(expected) : apart <= kUlps;
+    assert.ok(near, `${where}: ${got} against the CLI's ${expected} (${apart} ulp)`);
+    return apart > 0 ? 1 : 0;
+  }
+  if (expected === null || typeof expected !== 'object') {
+    assert.strictEqual(got, expected, where);
+    return 0;
+  }
+  assert.strictEqual(Array.isArray(got), Array.isArray(expected), where);
+  assert.deepStrictEqual(Object.keys(got), Object.keys(expected), where);
+  return Object.keys(expected).reduce((n, key) => n + sameJson(got[key], expected[key], `${where}.${key}`), 0);
+}
+
+function cli(scene) {
+  const run = spawnSync(viewpipe, ['pipeline', scene, '--json'], { encoding: 'utf8' });
+  return { status: run.status, stdout: run.stdout, stderr: run.stderr };
+}
+
+function scenesUnder(dir) {
+  return fs.readdirSync(dir, { withFileTypes: true }).flatMap((entry) => {
+    const file = path.join(dir, entry.name);
+    return entry.isDirectory() ? scenesUnder(file) : file.endsWith('.json') ? [file] : [];
+  });
+}
+
+// A scene beside its files, for the CLI; the same files given to the module.
+function writeScene(name, scene, files = {}) {
+  const dir = path.join(work, name);
+  fs.mkdirSync(dir, { recursive: true });
+  for (const [file, bytes] of Object.entries(files)) fs.writeFileSync(path.join(dir, file), bytes);
+  const text = typeof scene === 'string' ? scene : JSON.stringify(scene, null, 2);
+  fs.writeFileSync(path.join(dir, 'scene.json'), text);
+  return { file: path.join(dir, 'scene.json'), text, files };
+}
+
+const house = JSON.parse(fs.readFileSync(path.join(dataDir, 'scenes', 'house.json'), 'utf8'));
+const triangle = 'v 0 0 30\nv 16 0 30\nv 8 16 30\nf 1 2 3\n';
+
+require(path.resolve(modulePath))().then((core) => {
+  function pipeline(scene) {
+    for (const [file, bytes] of Object.entries(scene.files || {})) {
+      const put = core.putFile(file, Buffer.from(bytes));
+      if (put.error) return put;
+    }
+    return core.pipelineJson(scene.text);
+  }
+
+  for (const file of scenesUnder(path.join(dataDir, 'scenes'))) {
+    check(`the pipeline of ${path.relative(dataDir, file)}`, () => {
+      const expected = cli(file);
+      assert.strictEqual(expected.status, 0, expected.stderr);
+      const got = pipeline({ text: fs.readFileSync(file, 'utf8') });
+      assert.strictEqual(got.error, '');
+      if (got.text + '\n' === expected.stdout) return;
+      const differing = sameJson(JSON.parse(got.text), JSON.parse(expected.stdout));
+      console.log(`   ${differing} numbers an ulp or a few apart`);
+    });
+  }
+
+  const withMesh = { ...house, objects: [{ type: 'mesh', path: 'meshes/triangle.obj' }], effects: ['cull'] };
+  fs.mkdirSync(path.join(work, 'mesh', 'meshes'), { recursive: true });
+  const truncatedPly = 'ply\nformat binary_little_endian 1.0\nelement vertex 3\nproperty float x\nproperty float y\n' +
+                       'property float z\nelement face 1\nproperty list uchar int vertex_indices\nend_header\n\x00\x00';
+  const cases = {
+    'a mesh and an effect that reads it': writeScene('mesh', withMesh, { 'meshes/triangle.obj': triangle }),
+    'malformed JSON': writeScene('malformed', '{"camera": '),
+    'a wrong type': writeScene('type', { ...house, objects: 3 }),
+    'a degenerate view': writeScene('vup', { ...house, view: { ...house.view, vup: house.view.vpn } }),
+    'a truncated PLY': writeScene('ply', { ...house, objects: [{ type: 'mesh', path: 'bad.ply' }] },
+                                  { 'bad.ply': Buffer.from(truncatedPly, 'binary') }),
+  };
+  for (const [name, scene] of Object.entries(cases)) {
+    check(name, () => {
+      const expected = cli(scene.file);
+      const got = pipeline(scene);
+      if (expected.status === 0) {
+        assert.strictEqual(got.error, '');
+        sameText(got.text + '\n', expected.stdout);
+      } else {
+        assert.strictEqual(expected.status, 2, expected.stderr);
+        // "FILE: field.path: reason", or "FILE:LINE:COLUMN: reason" for a syntax error.
+        assert.ok(expected.stderr.startsWith(scene.file + ':'), expected.stderr);
+        const after = expected.stderr.slice(scene.file.length + 1).replace(/^ /, '');
+        assert.strictEqual(got.text, '');
+        sameText(got.error + '\n', after);
+      }
+    });
+  }
+  fs.rmSync(work, { recursive: true, force: true });
+  process.exit(failures ? 1 : 0);
+});
