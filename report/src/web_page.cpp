@@ -318,23 +318,24 @@ json sceneData(const EvaluatedScene& scene, const WebPageViews& views)
     projected["zFighting"] = ring;
     projected["zFightingColor"] = color(elementColor(Element::ZFighting, theme));
 
-    // The scene as the core reads it, with the files it names: what the page's core evaluates.
-    // Large meshes stay out (the page draws them from its own arrays), and the page says so.
-    json files = json::object();
-    std::size_t fileBytes = 0;
+    // The scene as the core reads it, with the files it names (each once): what the page's core evaluates.
+    // Large meshes stay out, unread (the page draws them from its own arrays), and the page says so.
+    std::map<std::string, std::filesystem::path> meshFiles;
+    std::uintmax_t fileBytes = 0;
     for (const SceneObject& object : scene.scene.objects)
-        if (object.type == ObjectType::Mesh) {
-            const std::string bytes = readFile(object.resolvedPath, "a mesh of the scene");
-            files[object.path] = base64(bytes.data(), bytes.size());
-            fileBytes += bytes.size();
-        }
+        if (object.type == ObjectType::Mesh && meshFiles.emplace(object.path, object.resolvedPath).second)
+            fileBytes += std::filesystem::file_size(object.resolvedPath);
+    json files = json::object();
     std::string filesLeftOut;
-    if (fileBytes > kMaxCarriedMeshBytes) {
-        files = json::object();
+    if (fileBytes > kMaxCarriedMeshBytes)
         filesLeftOut = "The scene's meshes (" + formatSignificant(double(fileBytes) / 1e6, 2) +
                        " MB) are left out of this page to keep it small: viewpipe pipeline SCENE --json prints "
                        "these numbers.";
-    }
+    else
+        for (const auto& [path, file] : meshFiles) {
+            const std::string bytes = readFile(file, "a mesh of the scene");
+            files[path] = base64(bytes.data(), bytes.size());
+        }
 
     const json data = {{"title", scene.scene.name},
                        {"scene", sceneToJson(scene.scene)},
