@@ -32,7 +32,6 @@
 #include "painter/EigenVtk.h"
 #include "painter/MeshDetail.h"
 #include "painter/ScenePainter.h"
-#include "painter/StageTransition.h"
 #include "painter/VtkGeometry.h"
 #include "viewpipe/animation.hpp"
 
@@ -115,11 +114,11 @@ public:
     explicit PlayThrough(AppView& view) : view_(view) {}
     bool startsStep() const { return frame_ == 0; }
     // Makes the step's transition (its framing of the whole motion).
-    void prepare() { transition_.emplace(view_.painter, view_.scene->pipeline.stages, step_, step_ + 1); }
+    void prepare() { transition_.emplace(*view_.scene, step_, step_ + 1); }
     // Shows the next frame; call prepare() first at the start of a step.
     void next()
     {
-        transition_->apply(double(++frame_) / kFramesPerStep);
+        view_.painter.showMoment(transition_->at(double(++frame_) / kFramesPerStep));
         if (frame_ == kFramesPerStep) {
             frame_ = 0;
             step_ = (step_ + 1) % int(view_.scene->pipeline.stages.size());
@@ -129,7 +128,7 @@ public:
 
 private:
     AppView& view_;
-    std::optional<gui::StageTransition> transition_;
+    std::optional<StageMotion> transition_;
     int step_ = 0, frame_ = 0;
 };
 
@@ -158,7 +157,7 @@ void appAtRest(benchmark::State& state, const std::string& name)
     int stage = 0;
     for (auto _ : state) {
         state.PauseTiming();
-        gui::StageTransition::showStage(w.painter, stages, stage);
+        w.painter.showMoment(stageAtRest(*w.scene, stage));
         stage = (stage + 1) % int(stages.size());
         state.ResumeTiming();
         w.window->Render();
@@ -254,14 +253,13 @@ void vtkReaderOpen(benchmark::State& state, const std::string&)
 void jumpFiveStages(benchmark::State& state, const std::string& name)
 {
     AppView w(name);
-    const auto& stages = w.scene->pipeline.stages;
     for (auto _ : state) {
         state.PauseTiming();
-        gui::StageTransition::showStage(w.painter, stages, 5);
+        w.painter.showMoment(stageAtRest(*w.scene, 5));
         w.window->Render();
         state.ResumeTiming();
         for (int stage = 5; stage > 0; --stage) {
-            gui::StageTransition(w.painter, stages, stage, stage - 1).apply(1);
+            w.painter.showMoment(StageMotion(*w.scene, stage, stage - 1).at(1));
             w.window->Render();
         }
     }

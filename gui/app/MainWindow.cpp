@@ -80,7 +80,7 @@ MainWindow::MainWindow(QWidget* parent)
     animation_->setEndValue(1.0);
     connect(animation_, &QVariantAnimation::valueChanged, this, [this](const QVariant& v) {
         if (transition_) {
-            transition_->apply(v.toDouble());
+            painter_->showMoment(transition_->at(v.toDouble()));
             // Only the world view moves; the projected view is the same picture at every stage.
             worldWindow_->Render();
             worldWidget_->update();
@@ -777,7 +777,7 @@ void MainWindow::play()
 void MainWindow::startStep()
 {
     const int next = stage_ + (target_ > stage_ ? 1 : -1);
-    transition_ = std::make_unique<StageTransition>(*painter_, document_->pipeline().stages, stage_, next);
+    transition_.emplace(*document_->evaluated(), stage_, next);
     painter_->setMoving(true);
     animation_->setDuration(stepMilliseconds_);
     animation_->start();
@@ -786,7 +786,7 @@ void MainWindow::startStep()
 void MainWindow::showRestingStage()
 {
     painter_->setMoving(false);
-    StageTransition::showStage(*painter_, document_->pipeline().stages, stage_);
+    painter_->showMoment(stageAtRest(*document_->evaluated(), stage_));
     updateCaptions();
     renderNow();
 }

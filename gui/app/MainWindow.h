@@ -16,7 +16,6 @@
 #include "viewpipe/lesson.hpp"
 #include "export/Exporter.h"
 #include "painter/ScenePainter.h"
-#include "painter/StageTransition.h"
 
 class QAction;
 class QActionGroup;
@@ -217,7 +216,7 @@ private:
     int stage_ = 0;  // where the picture is, or where the running step started
     int target_ = 0; // where the stepper is going
     int stepMilliseconds_ = 1000;
-    std::unique_ptr<StageTransition> transition_;
+    std::optional<StageMotion> transition_;
     std::optional<Vec3<double>> traced_;
     int fontSize_ = kDefaultFontSize;
     // What presenting changed, to be restored.

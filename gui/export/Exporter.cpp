@@ -26,7 +26,7 @@
 #include "viewpipe/report/tikz.hpp"
 #include "viewpipe/report/latex.hpp"
 #include "viewpipe/report/report.hpp"
-#include "painter/StageTransition.h"
+#include "painter/VtkGeometry.h"
 #include "viewpipe/animation.hpp"
 #include "viewpipe/classical.hpp"
 
@@ -36,7 +36,6 @@ namespace fs = std::filesystem;
 namespace {
 
 constexpr double kHoldSeconds = 0.6; // the animation rests this long at each stage
-constexpr int kWebFramesPerStep = 30;     // the web page's transitions: frames recorded per step
 
 struct Cancelled {};
 
@@ -231,35 +230,19 @@ WebPageViews recordWebViews(const std::shared_ptr<const EvaluatedScene>& evaluat
                             double textScale)
 {
     validatePictureSize(width, height, scale);
-    OffscreenPainter offscreen(evaluated, width, height, scale, theme, false, textScale);
-    ScenePainter& painter = *offscreen.painter;
-    const std::vector<Stage<double>>& stages = evaluated->pipeline.stages;
-    const std::optional<ScenePainter::Framing> framing = fixedFramingOf(painter, stages, fixedFraming);
-    const int n = int(stages.size());
-    WebPageViews views;
-    views.width = width * scale;
-    views.height = height * scale;
-    views.fontSize = painter.figureView().fontSize;
-    views.theme = theme;
-    for (int k = 0; k <= n; ++k) {
+    WebViewOptions options;
+    options.width = width * scale;
+    options.height = height * scale;
+    // In whole pixels, as the painter sets its text (OffscreenPainter).
+    options.fontSize = int(exportLabelSize(options.width, textScale));
+    options.minFontSize = int(exportLabelSize(options.width, 1));
+    options.lineScale = scale;
+    options.theme = theme;
+    options.fixedFraming = fixedFraming;
+    const int n = int(evaluated->pipeline.stages.size());
+    return webPageViews(*evaluated, options, figureFontMeasure(), [&](int k) {
         step("web page: stage " + std::to_string(k) + " of " + std::to_string(n));
-        if (k > 0) { // the app's transition, frame by frame
-            std::vector<WebFrame> frames;
-            StageTransition transition(painter, stages, k - 1, k);
-            for (int f = 1; f <= kWebFramesPerStep; ++f) {
-                transition.apply(double(f) / kWebFramesPerStep);
-                frames.push_back(painter.webFrame());
-            }
-            views.transitions.push_back(std::move(frames));
-        }
-        const std::string caption = stageCaption(*evaluated, std::size_t(k), StageText::Heading);
-        const StageShown shown = showStageAtRest(offscreen, *evaluated, k, caption, framing);
-        const VectorFigure vector{&shown, painter.figureView(), caption, theme};
-        Figure figure = flatFigure(vector);
-        views.stages.push_back({painter.webFrame(), shown.ghost, vector.view.frameReach, std::move(figure.labels),
-                                std::move(figure.layout)});
-    }
-    return views;
+    });
 }
 
 std::vector<fs::path> exportStages(const std::shared_ptr<const EvaluatedScene>& evaluated, const ExportOptions& options,
@@ -314,7 +297,8 @@ std::vector<fs::path> exportStages(const std::shared_ptr<const EvaluatedScene>& 
                                    options.transparent, options.textScale / 100.0);
         vtkRenderWindow* window = offscreen.window;
         ScenePainter& painter = *offscreen.painter;
-        const std::optional<ScenePainter::Framing> framing = fixedFramingOf(painter, stages, options.fixedFraming);
+        const std::optional<Framing> framing =
+            options.fixedFraming ? std::optional<Framing>(fixedFraming(*evaluated)) : std::nullopt;
         auto showAt = [&](int k, const std::string& caption) {
             return showStageAtRest(offscreen, *evaluated, k, caption, framing);
         };
@@ -380,9 +364,9 @@ std::vector<fs::path> exportStages(const std::shared_ptr<const EvaluatedScene>& 
                 const std::string caption = stageCaption(*evaluated, std::size_t(k), StageText::Heading);
                 painter.setCaptions(caption, "");
                 if (k > 0) { // the app's transition: the same motion and framing
-                    StageTransition transition(painter, stages, k - 1, k);
+                    const StageMotion motion(*evaluated, k - 1, k);
                     for (int f = 1; f <= options.fps; ++f) {
-                        transition.apply(double(f) / options.fps);
+                        painter.showMoment(motion.at(double(f) / options.fps));
                         emit();
                     }
                 }

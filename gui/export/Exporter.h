@@ -17,6 +17,7 @@
 #include <vector>
 
 #include "painter/ScenePainter.h"
+#include "viewpipe/report/web_page.hpp"
 
 class vtkRenderWindow;
 

@@ -1,7 +1,5 @@
 #include "Offscreen.h"
 
-#include "painter/StageTransition.h"
-#include "viewpipe/animation.hpp"
 
 namespace viewpipe::gui {
 
@@ -26,29 +24,18 @@ OffscreenPainter::OffscreenPainter(const std::shared_ptr<const EvaluatedScene>& 
 }
 
 StageShown showStageAtRest(const OffscreenPainter& offscreen, const EvaluatedScene& scene, int k,
-                           const std::string& caption, const std::optional<ScenePainter::Framing>& fixedFraming)
+                           const std::string& caption, const std::optional<Framing>& fixedFraming)
 {
-    const std::vector<Stage<double>>& stages = scene.pipeline.stages;
-    StageShown shown(scene, drawnAt(stages, k), StageTransition::canonicalOpacity(k, stages.size()));
-    shown.ghost = ghostAt(stages, k);
+    WorldMoment moment = stageAtRest(scene, k);
+    if (fixedFraming)
+        moment.framing = *fixedFraming;
+    StageShown shown(scene, moment.drawn, moment.canonicalOpacity);
+    shown.ghost = moment.ghost;
     ScenePainter& painter = *offscreen.painter;
-    painter.show(shown.cumulative, shown.canonicalOpacity);
-    painter.setGhost(shown.ghost);
     painter.setCaptions(caption, "");
-    painter.frameOn(fixedFraming ? *fixedFraming : StageTransition::framingAt(painter, stages, k));
+    painter.showMoment(moment);
     offscreen.window->Render();
     return shown;
-}
-
-std::optional<ScenePainter::Framing> fixedFramingOf(const ScenePainter& painter, const std::vector<Stage<double>>& stages,
-                                                    bool fixed)
-{
-    if (!fixed)
-        return std::nullopt;
-    std::vector<Mat4<double>> all;
-    for (std::size_t k = 0; k <= stages.size(); ++k)
-        all.push_back(drawnAt(stages, double(k)));
-    return painter.framingOf(all, true);
 }
 
 } // namespace viewpipe::gui

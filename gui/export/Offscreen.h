@@ -27,10 +27,6 @@ struct OffscreenPainter {
 // Stage k at rest as its picture shows it (the ghost of the stage before,
 // the caption, its framing or the fixed one), rendered; the stage as shown.
 StageShown showStageAtRest(const OffscreenPainter& offscreen, const EvaluatedScene& scene, int k,
-                           const std::string& caption, const std::optional<ScenePainter::Framing>& fixedFraming);
-
-// With fixed framing: one framing that holds every stage.
-std::optional<ScenePainter::Framing> fixedFramingOf(const ScenePainter& painter, const std::vector<Stage<double>>& stages,
-                                                    bool fixed);
+                           const std::string& caption, const std::optional<Framing>& fixedFraming);
 
 } // namespace viewpipe::gui

@@ -85,9 +85,7 @@ Layout layoutOf(const VectorFigure& f)
     text.caption = f.caption;
     text.note = f.stage->scene->effectsNote;
     text.legend = legendShown(f.stage->scene->worldLegend, f.stage->canonicalOpacity > 0);
-    layout.picture = layoutPicture(v.width, v.height, text, [](const std::string& t, double pixels, bool bold) {
-        return figureTextSize(t, pixels, bold);
-    });
+    layout.picture = layoutPicture(v.width, v.height, text, figureFontMeasure());
     if (!layout.picture.legend.isEmpty())
         layout.entries = text.legend;
     return layout;
@@ -200,10 +198,7 @@ Figure flatFigure(const VectorFigure& f)
     ensureGuiApplication();
     const Layout layout = layoutOf(f);
     // Measured as the PNG's painter measures them: both pictures place their labels alike.
-    const LabelMeasure measure = [&](const Label& label) {
-        return label.minor ? figureTextSize(label.text, smallTextSize(f.view.fontSize), false)
-                           : figureTextSize(label.text, f.view.fontSize, true);
-    };
+    const LabelMeasure measure = labelMeasure(figureFontMeasure(), f.view.fontSize);
     std::vector<Box2> reserved = {layout.picture.caption, layout.picture.note};
     if (!layout.entries.empty())
         reserved.push_back(layout.picture.legend);

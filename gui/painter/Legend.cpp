@@ -98,9 +98,7 @@ void fillLegend(vtkLegendBoxActor* legend, vtkRenderer* renderer, const std::vec
 {
     vtkRenderWindow* window = renderer->GetRenderWindow();
     const int dpi = window ? window->GetDPI() : 72;
-    const LegendLayout rows = legendLayout(shown, labelSize, [dpi](const std::string& t, double pixels, bool bold) {
-        return figureTextSize(t, pixels, bold, dpi);
-    });
+    const LegendLayout rows = legendLayout(shown, labelSize, figureFontMeasure(dpi));
     legend->SetNumberOfEntries(int(shown.size()));
     legend->SetVisibility(!shown.empty());
     const double* back = renderer->GetBackground();
@@ -141,7 +139,7 @@ FontMeasure viewFontMeasure(vtkRenderer* renderer)
 {
     vtkRenderWindow* window = renderer->GetRenderWindow();
     const int dpi = window ? window->GetDPI() : 72;
-    return [dpi](const std::string& t, double pixels, bool bold) { return figureTextSize(t, pixels, bold, dpi); };
+    return figureFontMeasure(dpi);
 }
 
 void setCaptionText(vtkTextActor* caption, const std::vector<std::string>& lines, double pixels)

@@ -38,43 +38,8 @@
 namespace viewpipe::gui {
 namespace {
 
-// Primitives up to this many points are framed point by point; larger ones by their box's corners
-// (under a projective matrix the image of a box in front of the eye lies within its corners' hull).
-constexpr std::size_t kExactFraming = 20000;
-
 // VTK's interactor asks for 15 frames a second while the user turns the view and 0.0001 at rest.
 constexpr double kStillUpdateRate = 1;
-
-// Extends `box` with the primitive through `m`; false (and `box` unchanged)
-// when a point of it has no image. Points on the eye's side of `cut` do not count.
-bool extendThrough(Eigen::AlignedBox<double, 3>& box, const Primitive& primitive, const Mat4<double>& m,
-                   const std::optional<Vec4<double>>& cut)
-{
-    Eigen::AlignedBox<double, 3> through;
-    auto add = [&](const Vec3<double>& p) {
-        if (cut && cut->dot(p.homogeneous()) < 0)
-            return true;
-        const std::optional<Vec3<double>> q = projectPoint(m, p);
-        if (q)
-            through.extend(*q);
-        return q.has_value();
-    };
-    const std::vector<Vec3<double>>& points =
-        primitive.kind == PrimitiveKind::Lines ? primitive.segments : primitive.faces->vertices;
-    if (points.size() > kExactFraming) {
-        if (primitive.bounds.isEmpty())
-            return false;
-        for (int k = 0; k < 8; ++k)
-            if (!add(primitive.bounds.corner(Eigen::AlignedBox<double, 3>::CornerType(k))))
-                return false;
-    } else {
-        for (const Vec3<double>& p : points)
-            if (!add(p))
-                return false;
-    }
-    box.extend(through);
-    return true;
-}
 
 // Lines in a view's pixels (y up), one color each.
 vtkSmartPointer<vtkPolyData> coloredLines2D(const std::vector<Segment2>& lines, const std::vector<Rgb>& colors)
@@ -379,25 +344,11 @@ FigureView ScenePainter::figureView() const
         fromVtk(world_->GetActiveCamera()->GetCompositeProjectionTransformMatrix(world_->GetTiledAspectRatio(), -1, 1));
     view.width = world_->GetSize()[0];
     view.height = world_->GetSize()[1];
-    view.frameReach = framed_.center.norm() + 1.5 * framed_.radius;
+    view.frameReach = frameReach(framed_);
     view.fontSize = fontSize_;
     view.minFontSize = minFontSize();
     view.lineScale = lineScale_;
     return view;
-}
-
-WebFrame ScenePainter::webFrame() const
-{
-    vtkCamera* camera = world_->GetActiveCamera();
-    WebFrame frame;
-    frame.view = fromVtk(camera->GetViewTransformMatrix());
-    frame.projection = fromVtk(camera->GetProjectionTransformMatrix(world_->GetTiledAspectRatio(), -1, 1));
-    frame.focalPoint = Vec3<double>(camera->GetFocalPoint());
-    frame.shown = shownMatrix_;
-    frame.canonicalOpacity = canonicalOpacity_;
-    if (scene_)
-        frame.cut = StageShown(*scene_, shownMatrix_, canonicalOpacity_).cut;
-    return frame;
 }
 
 std::vector<Box2> ScenePainter::captionBoxes() const
@@ -519,48 +470,56 @@ void ScenePainter::cutNear(const Mat4<double>& cumulative)
     }
 }
 
-ScenePainter::Framing ScenePainter::framingOf(const std::vector<Mat4<double>>& cumulatives, bool withCanonical) const
+void ScenePainter::showMoment(const WorldMoment& moment)
 {
-    Eigen::AlignedBox<double, 3> box;
-    for (const Layer& layer : layers_) {
-        const bool canonical = layer.primitive->canonical;
-        if (canonical && !withCanonical)
-            continue;
-        for (const Mat4<double>& m : cumulatives)
-            extendThrough(box, *layer.primitive, canonical ? Mat4<double>::Identity() : m,
-                          !canonical && isProjective(m) ? scene_->nearCut : std::nullopt);
-    }
-    if (box.isEmpty())
-        return {};
-    return {box.center(), std::max(1e-9, 0.5 * box.diagonal().norm())};
+    show(moment.drawn, moment.canonicalOpacity);
+    setGhost(moment.ghost);
+    frameOn(moment.framing);
 }
 
 void ScenePainter::frame()
 {
-    frameOn(framingOf({shownMatrix_}, canonicalOpacity_ > 0));
+    frameOn(scene_ ? framingOf(*scene_, {shownMatrix_}, canonicalOpacity_ > 0) : Framing{});
+}
+
+WorldCamera ScenePainter::camera() const
+{
+    vtkCamera* vtk = world_->GetActiveCamera();
+    WorldCamera camera;
+    vtk->GetPosition(camera.position.data());
+    vtk->GetFocalPoint(camera.focalPoint.data());
+    vtk->GetViewUp(camera.viewUp.data());
+    camera.viewAngle = vtk->GetViewAngle();
+    vtk->GetWindowCenter(camera.windowCenter.data());
+    vtk->GetClippingRange(camera.nearPlane, camera.farPlane);
+    return camera;
+}
+
+void ScenePainter::setCamera(const WorldCamera& camera)
+{
+    vtkCamera* vtk = world_->GetActiveCamera();
+    vtk->SetFocalPoint(camera.focalPoint.data());
+    vtk->SetPosition(camera.position.data());
+    vtk->SetViewUp(camera.viewUp.data());
+    vtk->SetViewAngle(camera.viewAngle);
+    vtk->SetWindowCenter(camera.windowCenter.x(), camera.windowCenter.y());
+    vtk->SetClippingRange(camera.nearPlane, camera.farPlane);
+}
+
+ViewFit ScenePainter::viewFit() const
+{
+    const int* size = world_->GetSize();
+    return {size[0], size[1], sceneArea_, userZoom_, userPan_};
 }
 
 void ScenePainter::frameOn(const Framing& framing)
 {
-    vtkCamera* camera = world_->GetActiveCamera();
-    Vec3<double> direction;
-    camera->GetDirectionOfProjection(direction.data());
-    const double distance = userZoom_ * fitDistance(framing.radius);
-    const Vec3<double> focal = framing.center + userPan_ * framing.radius;
-    const Vec3<double> position = focal - direction * distance;
-    camera->SetFocalPoint(focal.data());
-    camera->SetPosition(position.data());
-    // The focal point at the scene area's center (VTK's window center is the view's center's opposite).
-    const int* size = world_->GetSize();
-    if (size[0] > 0 && size[1] > 0 && !sceneArea_.isEmpty()) {
-        const Vec2<double> center = (sceneArea_.min + sceneArea_.max) / 2;
-        camera->SetWindowCenter(1 - 2 * center.x() / size[0], 2 * center.y() / size[1] - 1);
-    } else {
-        camera->SetWindowCenter(0, 0);
-    }
+    WorldCamera camera = this->camera();
+    viewpipe::frameOn(camera, framing, viewFit());
+    setCamera(camera);
     framed_ = framing;
     // The fixed axes reach across everything in view, with their ticks and labels.
-    const FrameMarks marks = frameMarks(framing.center.norm() + 1.5 * framing.radius);
+    const FrameMarks marks = frameMarks(frameReach(framing));
     static_cast<vtkPolyDataMapper*>(frameAxes_->GetMapper())->SetInputData(linesData(marks.lines));
     const bool sameTexts = marks.labels.size() == frameLabelTexts_.size() &&
                            std::equal(marks.labels.begin(), marks.labels.end(), frameLabelTexts_.begin(),
@@ -576,53 +535,21 @@ void ScenePainter::frameOn(const Framing& framing)
         for (const viewpipe::Label& text : frameLabelTexts_)
             frameLabels_.push_back(newLabel(text));
     }
-    fitClippingRange();
 }
 
 void ScenePainter::fitClippingRange()
 {
-    // Everything framed lies within the framing's sphere; the fixed axes within `reach` of the origin.
-    vtkCamera* camera = world_->GetActiveCamera();
-    Vec3<double> position, direction;
-    camera->GetPosition(position.data());
-    camera->GetDirectionOfProjection(direction.data());
-    const double reach = framed_.center.norm() + 1.5 * framed_.radius;
-    const double along = (framed_.center - position).dot(direction), extent = 1.05 * framed_.radius;
-    const double axesAlong = -position.dot(direction);
-    const double nearest = std::min(along - extent, axesAlong - reach);
-    const double farthest = std::max(along + extent, axesAlong + reach);
-    camera->SetClippingRange(std::max(nearest, 1e-3 * farthest), farthest);
-}
-
-double ScenePainter::fitDistance(double radius) const
-{
-    // Fit the bounding sphere in the narrower of the two view angles of the
-    // scene area (where the picture's text leaves room); the sphere
-    // overstates what most directions see, so come a little closer.
-    const double halfVertical = world_->GetActiveCamera()->GetViewAngle() * M_PI / 360;
-    const int* size = world_->GetSize();
-    if (sceneArea_.isEmpty() || size[1] <= 0) {
-        const double half = std::min(halfVertical, std::atan(std::tan(halfVertical) * world_->GetTiledAspectRatio()));
-        return 0.95 * radius / std::sin(half);
-    }
-    const Vec2<double> extent = sceneArea_.max - sceneArea_.min;
-    const double half = std::atan(std::tan(halfVertical) * extent.minCoeff() / size[1]);
-    return 0.95 * radius / std::sin(half);
+    WorldCamera camera = this->camera();
+    viewpipe::fitClippingRange(camera, framed_);
+    world_->GetActiveCamera()->SetClippingRange(camera.nearPlane, camera.farPlane);
 }
 
 void ScenePainter::rememberUserCamera()
 {
-    vtkCamera* camera = world_->GetActiveCamera();
-    Vec3<double> focal;
-    camera->GetFocalPoint(focal.data());
-    userZoom_ = camera->GetDistance() / fitDistance(framed_.radius);
-    userPan_ = (focal - framed_.center) / framed_.radius;
+    const WorldCamera camera = this->camera();
+    userZoom_ = camera.distance() / fitDistance(camera, framed_.radius, viewFit());
+    userPan_ = (camera.focalPoint - framed_.center) / framed_.radius;
 }
-
-namespace {
-const Vec3<double> kDefaultPosition(1.7, 0.9, 1.0); // from the +x side, above: depth (z) runs across the picture
-const Vec3<double> kDefaultUp(0, 1, 0);
-} // namespace
 
 // The web page turns its points by RotX(pitch) RotY(yaw) in the default eye's
 // axes: the camera turns the other way, about its up, then about its right.
@@ -640,11 +567,11 @@ void ScenePainter::orbit(double yaw, double pitch, double zoom)
 ScenePainter::Orbit ScenePainter::orbitAngles() const
 {
     // The direction of view in the default eye's axes is (cos p sin y, -sin p, -cos p cos y).
-    const Vec3<double> back = kDefaultPosition.normalized();
-    const Vec3<double> right = kDefaultUp.cross(back).normalized();
+    const WorldCamera standard;
+    const Vec3<double> back = standard.position.normalized();
+    const Vec3<double> right = standard.viewUp.cross(back).normalized();
     const Vec3<double> up = back.cross(right);
-    Vec3<double> direction;
-    world_->GetActiveCamera()->GetDirectionOfProjection(direction.data());
+    const Vec3<double> direction = camera().direction();
     const Vec3<double> eye(direction.dot(right), direction.dot(up), direction.dot(back));
     constexpr double degrees = 180 / 3.14159265358979323846;
     return {std::atan2(eye.x(), -eye.z()) * degrees, std::asin(std::clamp(-eye.y(), -1.0, 1.0)) * degrees, 1 / userZoom_};
@@ -652,11 +579,7 @@ ScenePainter::Orbit ScenePainter::orbitAngles() const
 
 void ScenePainter::resetView()
 {
-    vtkCamera* camera = world_->GetActiveCamera();
-    camera->SetFocalPoint(0, 0, 0);
-    camera->SetPosition(kDefaultPosition.data());
-    camera->SetViewUp(kDefaultUp.data());
-    camera->SetViewAngle(30);
+    setCamera(WorldCamera{});
     userZoom_ = 1;
     userPan_.setZero();
     frame();

@@ -18,8 +18,8 @@
 
 #include "MeshDetail.h"
 #include "viewpipe/report/figure.hpp"
-#include "viewpipe/report/web_page.hpp"
 #include "viewpipe/report/style.hpp"
+#include "viewpipe/report/world_view.hpp"
 
 class vtkActor;
 class vtkActor2D;
@@ -82,15 +82,8 @@ public:
     void setLineScale(double scale);
     Theme theme() const { return theme_; }
 
-    // Where the world view's camera looks and how much it must see.
-    struct Framing {
-        Vec3<double> center = Vec3<double>::Zero();
-        double radius = 1;
-    };
-    // What framing shows every element as it would be through `cumulative`
-    // (the canonical outline included when `withCanonical`); an element
-    // partly behind the eye does not count.
-    Framing framingOf(const std::vector<Mat4<double>>& cumulatives, bool withCanonical) const;
+    // Shows a moment of the world view (world_view.hpp): its matrix, ghost and framing.
+    void showMoment(const WorldMoment& moment);
     // Aims the world view's camera at a framing, keeping the user's
     // direction, zoom and pan; frame() fits what is shown now; resetView()
     // restores the default viewpoint.
@@ -116,8 +109,6 @@ public:
 
     // How the world view sees the stage shown, for figures drawn as it is.
     FigureView figureView() const;
-    // The frame shown, for the web page: the camera and what it draws.
-    WebFrame webFrame() const;
 
 private:
     struct Layer {
@@ -152,7 +143,9 @@ private:
     void cutNear(const Mat4<double>& cumulative);
     // The near and far planes around everything framed, before each frame (prop bounds mean nothing under a projective matrix).
     void fitClippingRange();
-    double fitDistance(double radius) const;
+    WorldCamera camera() const;
+    void setCamera(const WorldCamera& camera);
+    ViewFit viewFit() const;
     const std::shared_ptr<MeshDetail>& meshDetail(const std::shared_ptr<const PolygonMesh>& mesh);
 
     vtkRenderer* world_;

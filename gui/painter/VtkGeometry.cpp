@@ -125,6 +125,11 @@ Vec2<double> figureTextSize(const std::string& text, double fontSize, bool bold,
     return textSize(font, text, dpi);
 }
 
+FontMeasure figureFontMeasure(int dpi)
+{
+    return [dpi](const std::string& text, double pixels, bool bold) { return figureTextSize(text, pixels, bold, dpi); };
+}
+
 void useFigureFont(vtkTextProperty* text, bool bold)
 {
     const char* file = bold ? "/usr/share/fonts/truetype/dejavu/DejaVuSans-Bold.ttf"

@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "viewpipe/evaluated_scene.hpp"
+#include "viewpipe/report/figure.hpp"
 
 class vtkActor;
 class vtkPolyData;
@@ -34,5 +35,7 @@ void useFigureFont(vtkTextProperty* text, bool bold);
 Vec2<double> textSize(vtkTextProperty* font, const std::string& text, int dpi);
 // The same for the pictures' font at a size, at 72 dots per inch: what every figure measures its texts with.
 Vec2<double> figureTextSize(const std::string& text, double fontSize, bool bold, int dpi = 72);
+// figureTextSize as the layouts take it.
+FontMeasure figureFontMeasure(int dpi = 72);
 
 } // namespace viewpipe::gui

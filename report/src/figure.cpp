@@ -162,6 +162,13 @@ double meanDepth(const std::vector<Vec3d>& pixels)
 
 } // namespace
 
+LabelMeasure labelMeasure(const FontMeasure& measure, double fontSize)
+{
+    return [measure, fontSize](const Label& label) {
+        return label.minor ? measure(label.text, smallTextSize(fontSize), false) : measure(label.text, fontSize, true);
+    };
+}
+
 std::vector<std::string> wrapLines(const std::string& text, double width, const TextMeasure& measure)
 {
     std::vector<std::string> wrapped;

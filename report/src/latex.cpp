@@ -6,12 +6,21 @@
 
 #include "viewpipe/format.hpp"
 #include "viewpipe/math_text.hpp"
+#ifdef VIEWPIPE_WIDE_SCALARS
 #include "viewpipe/precision.hpp"
+#else // the browser's build (web/): Boost's own 100-digit float, where MPFR is not built
+#include <boost/multiprecision/cpp_bin_float.hpp>
+#include <boost/multiprecision/eigen.hpp>
+#endif
 
 namespace viewpipe::cli {
 namespace {
 
+#ifdef VIEWPIPE_WIDE_SCALARS
 using Exact = Mpfr100;
+#else
+using Exact = boost::multiprecision::number<boost::multiprecision::cpp_bin_float<100>, boost::multiprecision::et_off>;
+#endif
 
 constexpr long long kMaxDenominator = 1000000000;
 

@@ -23,12 +23,15 @@
 #include <sanitizer/lsan_interface.h>
 #endif
 
+#include <vtkCamera.h>
 #include <vtkNew.h>
 #include <vtkRenderWindow.h>
 #include <vtkRenderer.h>
 
 #include "drawn_texts.h"
+#include "export/Exporter.h"
 #include "export/Offscreen.h"
+#include "painter/EigenVtk.h"
 #include "export/VectorFigure.h"
 
 namespace viewpipe::gui {
@@ -169,6 +172,36 @@ TEST(ExportLayout, EveryTextReadsInsideThePictureAndApart)
     EXPECT_GT(pictures, 400);
     if (!::testing::Test::HasFailure())
         fs::remove_all(out);
+}
+
+// The page computes its views with the report library (in the browser too):
+// the camera and labels of each stage at rest are the PNG's, whose painter
+// hands the same framing to VTK's camera.
+TEST(ExportLayout, ThePageSeesEveryStageAsThePictureDoes)
+{
+    for (const std::string name : {"house.json", "opengl-perspective.json", "clipping-eye-plane.json"}) {
+        const auto scene = evaluateScene(loadScene(fs::path(VIEWPIPE_DATA_DIR) / "scenes" / name));
+        const WebPageViews views = recordWebViews(scene, 1280, 720, 1, Theme::Light, false, [](const std::string&) {});
+        const OffscreenPainter offscreen(scene, 1280, 720, 1, Theme::Light, false);
+        vtkCamera* camera = offscreen.renderer->GetActiveCamera();
+        for (std::size_t k = 0; k < views.stages.size(); ++k) {
+            const std::string at = name + " stage " + std::to_string(k) + ": ";
+            const std::string caption = stageCaption(*scene, k, StageText::Heading);
+            const StageShown shown = showStageAtRest(offscreen, *scene, int(k), caption, std::nullopt);
+            const WebFrame& rest = views.stages[k].rest;
+            const Mat4<double> view = fromVtk(camera->GetViewTransformMatrix());
+            const Mat4<double> projection = fromVtk(camera->GetProjectionTransformMatrix(1280.0 / 720, -1, 1));
+            EXPECT_LT((rest.view - view).cwiseAbs().maxCoeff(), 1e-12 * view.cwiseAbs().maxCoeff()) << at << "\n" << rest.view << "\n\n" << view;
+            EXPECT_LT((rest.projection - projection).cwiseAbs().maxCoeff(), 1e-9 * projection.cwiseAbs().maxCoeff())
+                << at << "\n" << rest.projection << "\n\n" << projection;
+            const Figure figure = flatFigure({&shown, offscreen.painter->figureView(), caption, Theme::Light});
+            ASSERT_EQ(views.stages[k].labels.size(), figure.labels.size()) << at;
+            for (std::size_t l = 0; l < figure.labels.size(); ++l) {
+                EXPECT_EQ(views.stages[k].labels[l].text, figure.labels[l].text) << at;
+                EXPECT_LT((views.stages[k].labels[l].box.min - figure.labels[l].box.min).norm(), 1e-6) << at << figure.labels[l].text;
+            }
+        }
+    }
 }
 
 } // namespace

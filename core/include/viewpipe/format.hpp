@@ -54,4 +54,11 @@ inline std::string formatShortest(double x)
     return sign + digits.substr(0, std::size_t(point)) + "." + digits.substr(std::size_t(point));
 }
 
+// x as the decimal it was written as (formatShortest), in a wider type:
+// a scene's "0.1" as one tenth, not as 0.1000000000000000055...
+template <class T> T fromDecimal(double x)
+{
+    return T(formatShortest(x));
+}
+
 } // namespace viewpipe

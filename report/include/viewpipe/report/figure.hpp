@@ -88,6 +88,8 @@ std::vector<std::string> wrapLines(const std::string& text, double width, const 
 // A text's size in pixels, set `pixels` high, bold or not, as the writer that
 // draws it measures it (line breaks taken).
 using FontMeasure = std::function<Vec2<double>(const std::string& text, double pixels, bool bold)>;
+// Labels as every picture sets them: names bold at `fontSize`, minor ones (tick numbers) plain and smaller.
+LabelMeasure labelMeasure(const FontMeasure& measure, double fontSize);
 
 // The legend's entries shown at a stage (the canonical volume's only while it is drawn).
 std::vector<const LegendEntry*> legendShown(const std::vector<LegendEntry>& entries, bool canonicalShown);

@@ -8,6 +8,7 @@
 // makes no network request and opens from file://. No VTK, no Qt.
 
 #include <filesystem>
+#include <functional>
 #include <memory>
 #include <optional>
 #include <string>
@@ -39,12 +40,19 @@ struct WebStage {
     PictureLayout layout; // where the caption, legend and note go, as in the PNG
 };
 
+// What the page's views are made for: the picture's size in pixels, its
+// text and lines, its theme, and whether one framing holds every stage.
+struct WebViewOptions {
+    int width = 1280, height = 720;
+    double fontSize = 20, minFontSize = 20, lineScale = 1;
+    Theme theme = Theme::Light;
+    bool fixedFraming = false;
+};
+
 struct WebPageViews {
-    int width = 1280, height = 720; // the pixels the frames and labels were made for
-    double fontSize = 20;
+    WebViewOptions options;
     std::vector<WebStage> stages;                   // 0 (the world) to the number of stages
     std::vector<std::vector<WebFrame>> transitions; // k: from stage k to k + 1, evenly in time, the last at rest
-    Theme theme = Theme::Light;
 };
 
 // The libraries, read from Debian's packages, KaTeX's fonts inlined into its
@@ -57,7 +65,15 @@ struct WebAssets {
 WebAssets loadWebAssets(const std::filesystem::path& javascript = "/usr/share/javascript",
                         const std::filesystem::path& core = {});
 
-// The page's data (what the script draws), as JSON: {"scenes": [the scene's]}.
+// How the page shows a scene: each stage at rest and each step's frames,
+// framed as the app frames them (world_view.hpp), from the default viewpoint;
+// labels placed by the figures' placement, text measured by `measure` (in
+// the font the page sets it in). `onStage(k)` is called before stage k is
+// made, for progress and cancelling.
+WebPageViews webPageViews(const EvaluatedScene& scene, const WebViewOptions& options, const FontMeasure& measure,
+                          const std::function<void(int)>& onStage = {});
+
+// A scene as the page draws it, as JSON: what the page's core makes anew on every edit.
 std::string webPageData(const EvaluatedScene& scene, const WebPageViews& views);
 // The whole page.
 std::string webPage(const EvaluatedScene& scene, const WebPageViews& views, const WebAssets& assets);

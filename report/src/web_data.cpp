@@ -1,0 +1,371 @@
+#include "web_data.hpp"
+
+#include "viewpipe/format.hpp"
+#include "viewpipe/math_text.hpp"
+#include "viewpipe/report/latex.hpp"
+#include "viewpipe/report/stage_symbols.hpp"
+#include "viewpipe/report/world_view.hpp"
+
+namespace viewpipe {
+namespace {
+
+using nlohmann::json;
+
+constexpr int kWebFramesPerStep = 30; // the page's transitions: frames per step
+
+// Geometry as little-endian binary (what typed arrays read), in base64.
+std::string floats(const std::vector<Vec3<double>>& points)
+{
+    std::vector<float> packed;
+    packed.reserve(points.size() * 3);
+    for (const Vec3<double>& p : points)
+        packed.insert(packed.end(), {float(p.x()), float(p.y()), float(p.z())});
+    return base64(packed.data(), packed.size() * sizeof(float));
+}
+
+json matrix(const Mat4<double>& m) // row by row, as three.js's Matrix4.set takes it
+{
+    json rows = json::array();
+    for (int r = 0; r < 4; ++r)
+        for (int c = 0; c < 4; ++c)
+            rows.push_back(m(r, c));
+    return rows;
+}
+
+json vec(const Vec3<double>& v)
+{
+    return {v.x(), v.y(), v.z()};
+}
+
+json color(const Rgb& c)
+{
+    return {c.r, c.g, c.b};
+}
+
+json frameJson(const WebFrame& f)
+{
+    json out = {{"view", matrix(f.view)},
+                {"projection", matrix(f.projection)},
+                {"focal", vec(f.focalPoint)},
+                {"shown", matrix(f.shown)},
+                {"canonical", f.canonicalOpacity}};
+    if (f.cut)
+        out["cut"] = {f.cut->x(), f.cut->y(), f.cut->z(), f.cut->w()};
+    return out;
+}
+
+json primitiveJson(const Primitive& p, Theme theme)
+{
+    const bool surface = p.kind == PrimitiveKind::Faces;
+    json out = {{"surface", surface},
+                {"color", color(styledColor(p.element, surface, theme))},
+                {"opacity", p.opacity},
+                {"lineWidth", lineWidthOf(p)},
+                {"canonical", p.canonical},
+                {"ghosted", StageShown::ghosted(p)},
+                {"object", p.object}};
+    if (!surface) {
+        out["positions"] = floats(p.segments);
+        return out;
+    }
+    std::vector<std::uint32_t> triangles; // each polygon as a fan
+    for (const auto& face : p.faces->faces)
+        for (std::size_t k = 1; k + 1 < face.size(); ++k)
+            triangles.insert(triangles.end(), {std::uint32_t(face[0]), std::uint32_t(face[k]), std::uint32_t(face[k + 1])});
+    out["positions"] = floats(p.faces->vertices);
+    out["triangles"] = base64(triangles.data(), triangles.size() * sizeof(std::uint32_t));
+    return out;
+}
+
+// Text with math as the core's runs, [text, italic, level] each: what the page draws on its canvas.
+json runsJson(const std::string& text)
+{
+    json out = json::array();
+    for (const MathRun& run : mathRuns(text))
+        out.push_back({run.text, run.italic, run.level});
+    return out;
+}
+
+json labelJson(const Label& l, Theme theme)
+{
+    return {{"text", l.text}, {"runs", runsJson(l.text)}, {"anchor", vec(l.anchor)}, {"fixed", l.fixed}, {"minor", l.minor},
+            {"color", color(elementColor(l.element, theme))}};
+}
+
+json legendJson(const std::vector<LegendEntry>& entries, Theme theme)
+{
+    json out = json::array();
+    for (const LegendEntry& e : entries) {
+        if (e.swatch == LegendEntry::Swatch::Bands || e.swatch == LegendEntry::Swatch::Pixels)
+            continue; // the page draws neither the depth bands nor the raster's pixels
+        const bool surface = e.swatch == LegendEntry::Swatch::Face;
+        const char* swatch = e.swatch == LegendEntry::Swatch::Line ? "line"
+                             : e.swatch == LegendEntry::Swatch::Dot ? "dot"
+                                                                    : "face";
+        out.push_back({{"text", e.text}, {"swatch", swatch}, {"color", color(styledColor(e.element, surface, theme))},
+                       {"opacity", e.opacity}, {"canonical", e.element == Element::Canonical}});
+    }
+    return out;
+}
+
+json boxJson(const Box2& box)
+{
+    return {box.min.x(), box.min.y(), box.max.x(), box.max.y()};
+}
+
+// The picture's text boxes and sizes (layoutPicture), for the page to set its caption, legend and note as the PNG does.
+json layoutJson(const PictureLayout& layout)
+{
+    json out = {{"caption", {{"box", boxJson(layout.caption)}, {"size", layout.captionSize}, {"line", layout.captionLine},
+                             {"lines", layout.captionLines}}},
+                {"note", {{"box", boxJson(layout.note)}, {"size", layout.noteSize}, {"line", layout.noteLine},
+                          {"lines", layout.noteLines}}}};
+    if (!layout.legend.isEmpty()) {
+        const LegendLayout& rows = layout.legendRows;
+        out["legend"] = {{"box", boxJson(layout.legend)}, {"size", rows.textSize}, {"row", rows.rowHeight},
+                         {"swatch", rows.swatchWidth}, {"padding", rows.padding}};
+    }
+    return out;
+}
+
+} // namespace
+
+std::string base64(const void* data, std::size_t size)
+{
+    static const char* digits = "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789+/";
+    const auto* bytes = static_cast<const unsigned char*>(data);
+    std::string out;
+    out.reserve((size + 2) / 3 * 4);
+    for (std::size_t k = 0; k < size; k += 3) {
+        const unsigned n = unsigned(bytes[k]) << 16 | (k + 1 < size ? unsigned(bytes[k + 1]) << 8 : 0u) |
+                           (k + 2 < size ? unsigned(bytes[k + 2]) : 0u);
+        out += digits[n >> 18 & 63];
+        out += digits[n >> 12 & 63];
+        out += k + 1 < size ? digits[n >> 6 & 63] : '=';
+        out += k + 2 < size ? digits[n & 63] : '=';
+    }
+    return out;
+}
+
+// JSON inside <script>: every "<" written as \u003c, which JSON reads as "<"
+// and after which no text of a lesson ("</script>", "<!--") can end or
+// change the script element.
+std::string scriptJson(const json& data)
+{
+    std::string out;
+    for (char c : data.dump())
+        out += c == '<' ? std::string("\\u003c") : std::string(1, c);
+    return out;
+}
+
+json sceneData(const EvaluatedScene& scene, const WebPageViews& views)
+{
+    const WebViewOptions& options = views.options;
+    const Theme theme = options.theme;
+    const std::vector<Stage<double>>& stages = scene.pipeline.stages;
+    const std::vector<cli::StageLatex> latex = cli::stagesLatex(scene.scene, 4);
+    json stageList = json::array();
+    for (std::size_t k = 0; k < views.stages.size(); ++k) {
+        const WebStage& s = views.stages[k];
+        json labels = json::array();
+        for (const PlacedLabel& l : s.labels)
+            labels.push_back({{"text", l.text},
+                              {"runs", runsJson(l.text)},
+                              {"anchor", {l.anchor.x(), l.anchor.y()}},
+                              {"box", boxJson(l.box)},
+                              {"leader", l.leader},
+                              {"minor", l.minor},
+                              {"color", color(elementColor(l.element, theme))}});
+        const FrameMarks marks = frameMarks(s.frameReach);
+        const std::string list = stageText(stages, k, StageText::ListEntry);
+        const std::string claim = k < scene.stageClaims.size() ? scene.stageClaims[k] : "";
+        json entry = {{"list", list},
+                      {"listText", mathPlainText(list)}, // for a screen reader
+                      {"caption", stageCaption(scene, k, StageText::Caption)},
+                      {"claim", claim},
+                      {"claimText", mathPlainText(claim)},
+                      {"rest", frameJson(s.rest)},
+                      {"labels", labels},
+                      {"frame", floats(marks.lines)}};
+        if (s.ghost)
+            entry["ghost"] = matrix(*s.ghost);
+        entry["layout"] = layoutJson(s.layout);
+        if (k > 0) {
+            const Stage<double>& stage = stages[k - 1];
+            entry["symbol"] = stage.symbol;
+            entry["symbolMath"] = symbolMath(stage.symbol);
+            entry["matrix"] = matrix(stage.matrix);
+            entry["divides"] = stage.divides;
+            entry["latex"] = latex.at(k - 1).equation;
+            entry["cumulativeLatex"] = latex.at(k - 1).cumulative;
+            const SymbolicForm symbolic = symbolicMatrix(stage.symbol);
+            if (!symbolic.cells[0].empty())
+                entry["symbolic"] = {{"latex", symbolicLatex(stage.symbol)}, {"notes", symbolic.notes}};
+        }
+        stageList.push_back(entry);
+    }
+    json transitions = json::array();
+    for (const std::vector<WebFrame>& frames : views.transitions) {
+        json list = json::array();
+        for (const WebFrame& f : frames)
+            list.push_back(frameJson(f));
+        transitions.push_back(list);
+    }
+    json primitives = json::array();
+    for (const Primitive& p : scene.primitives)
+        primitives.push_back(primitiveJson(p, theme));
+    json labels = json::array();
+    for (const Label& l : scene.labels)
+        labels.push_back(labelJson(l, theme));
+    json markers = json::array();
+    for (const Marker& m : scene.markers)
+        markers.push_back({{"arrow", m.shape == Marker::Shape::ArrowHead},
+                           {"point", vec(m.point)},
+                           {"from", vec(m.from)},
+                           {"size", m.size},
+                           {"color", color(elementColor(m.element, theme))}});
+    std::vector<Vec3<double>> vertices = scene.objectVertices();
+
+    json projected = {{"clip", matrix(screenClipMatrix(scene.pipeline))},
+                      {"aspect", pictureAspect(scene)},
+                      {"window", floats(pictureWindowOutline(scene))},
+                      {"windowColor", color(elementColor(Element::Window, theme))},
+                      {"vanishingColor", color(elementColor(Element::Vanishing, theme))},
+                      {"legend", legendJson(scene.projectedLegend, theme)}};
+    json vanishing = json::array();
+    for (const Segment2& s : scene.vanishingLines)
+        vanishing.push_back({s[0].x(), s[0].y(), s[1].x(), s[1].y()});
+    projected["vanishing"] = vanishing;
+    json ring = json::array();
+    for (const Segment2& s : scene.zFightingRing)
+        ring.push_back({s[0].x(), s[0].y(), s[1].x(), s[1].y()});
+    projected["zFighting"] = ring;
+    projected["zFightingColor"] = color(elementColor(Element::ZFighting, theme));
+
+    const json data = {{"title", scene.scene.name},
+                       {"width", options.width},
+                       {"height", options.height},
+                       {"fontSize", options.fontSize},
+                       {"minFontSize", options.minFontSize},
+                       {"lineScale", options.lineScale},
+                       {"fixedFraming", options.fixedFraming},
+                       {"smallFontSize", smallTextSize(options.fontSize)},
+                       {"scripts", {{"scale", kScriptScale}, {"drop", kSubscriptDrop}, {"rise", kSuperscriptRise}}},
+                       {"background", color(backgroundColor(theme, false))},
+                       {"projectedBackground", color(backgroundColor(theme, true))},
+                       {"ink", color(elementColor(Element::Objects, theme))},
+                       {"dark", theme == Theme::Dark},
+                       {"ghostOpacity", kGhostOpacity},
+                       {"frameColor", color(elementColor(Element::Frame, theme))},
+                       {"stages", stageList},
+                       {"transitions", transitions},
+                       {"primitives", primitives},
+                       {"labels", labels},
+                       {"markers", markers},
+                       {"vertices", floats(vertices)},
+                       {"legend", legendJson(scene.worldLegend, theme)},
+                       {"note", scene.effectsNote},
+                       {"projected", projected}};
+    return data;
+}
+
+json questionData(const Question& q)
+{
+    // Each text with math, and as plain text for a screen reader.
+    json out = {{"kind", questionKindName(q.kind)},
+                {"prompt", q.prompt},
+                {"promptPlain", mathPlainText(q.prompt)},
+                {"explanation", q.explanation},
+                {"explanationPlain", mathPlainText(q.explanation)}};
+    switch (q.kind) {
+    case QuestionKind::Where:
+        out.update({{"point", vec(q.point)}, {"stage", q.stage}, {"tolerance", q.tolerance}, {"answer", vec(q.where)}});
+        break;
+    case QuestionKind::Inside: out.update({{"point", vec(q.point)}, {"answer", q.inside}}); break;
+    case QuestionKind::SignW: out.update({{"point", vec(q.point)}, {"stage", q.stage}, {"answer", q.signW}}); break;
+    case QuestionKind::WhichStage:
+    case QuestionKind::Order: {
+        json symbols = json::array(); // the stage symbols, set as math
+        for (const std::string& choice : q.choices)
+            symbols.push_back("$" + symbolMath(choice) + "$");
+        out.update({{"choices", q.choices}, {"choicesMath", symbols}});
+        if (q.kind == QuestionKind::WhichStage)
+            out.update({{"stage", q.stage}, {"answer", q.correct}});
+        break;
+    }
+    case QuestionKind::Entry:
+        out.update({{"stage", q.stage}, {"row", q.row}, {"column", q.column}, {"answer", q.entry}});
+        break;
+    case QuestionKind::Choice: out.update({{"choices", q.choices}, {"answer", q.correct}}); break;
+    }
+    return out;
+}
+
+WebPageViews webPageViews(const EvaluatedScene& scene, const WebViewOptions& o, const FontMeasure& measure,
+                          const std::function<void(int)>& onStage)
+{
+    const std::vector<Stage<double>>& stages = scene.pipeline.stages;
+    const int n = int(stages.size());
+    WebPageViews views;
+    views.options = o;
+    const std::optional<Framing> fixed = o.fixedFraming ? std::optional<Framing>(fixedFraming(scene)) : std::nullopt;
+    WorldCamera camera; // from the default viewpoint, as every export is seen
+    ViewFit fit{o.width, o.height, {}, 1, Vec3<double>::Zero()};
+    auto frameOf = [&](const WorldMoment& moment) {
+        frameOn(camera, moment.framing, fit);
+        WebFrame frame;
+        frame.view = camera.view();
+        frame.projection = camera.projection(double(o.width) / o.height);
+        frame.focalPoint = camera.focalPoint;
+        frame.shown = moment.drawn;
+        frame.canonicalOpacity = moment.canonicalOpacity;
+        frame.cut = StageShown(scene, moment.drawn, moment.canonicalOpacity).cut;
+        return frame;
+    };
+    for (int k = 0; k <= n; ++k) {
+        if (onStage)
+            onStage(k);
+        if (k > 0) { // the app's transition, frame by frame, framed in the area the last stage's text left
+            const StageMotion motion(scene, k - 1, k);
+            std::vector<WebFrame> frames;
+            for (int f = 1; f <= kWebFramesPerStep; ++f)
+                frames.push_back(frameOf(motion.at(double(f) / kWebFramesPerStep)));
+            views.transitions.push_back(std::move(frames));
+        }
+        WorldMoment moment = stageAtRest(scene, k);
+        if (fixed)
+            moment.framing = *fixed;
+        StageShown shown(scene, moment.drawn, moment.canonicalOpacity);
+        shown.ghost = moment.ghost;
+        PictureText text;
+        text.fontSize = o.fontSize;
+        text.minFontSize = o.minFontSize;
+        text.caption = stageCaption(scene, std::size_t(k), StageText::Heading);
+        text.note = scene.effectsNote;
+        text.legend = legendShown(scene.worldLegend, moment.canonicalOpacity > 0);
+        PictureLayout layout = layoutPicture(o.width, o.height, text, measure);
+        fit.sceneArea = layout.scene;
+        const WebFrame rest = frameOf(moment);
+        FigureView view;
+        view.camera = rest.projection * rest.view;
+        view.width = o.width;
+        view.height = o.height;
+        view.frameReach = frameReach(moment.framing);
+        view.fontSize = o.fontSize;
+        view.minFontSize = o.minFontSize;
+        view.lineScale = o.lineScale;
+        std::vector<Box2> reserved = {layout.caption, layout.note};
+        if (!layout.legend.isEmpty())
+            reserved.push_back(layout.legend);
+        Figure figure = drawFigure(shown, view, labelMeasure(measure, o.fontSize), reserved);
+        views.stages.push_back({rest, shown.ghost, view.frameReach, std::move(figure.labels), std::move(layout)});
+    }
+    return views;
+}
+
+std::string webPageData(const EvaluatedScene& scene, const WebPageViews& views)
+{
+    return sceneData(scene, views).dump();
+}
+
+} // namespace viewpipe

@@ -1,0 +1,143 @@
+// The world view's framing, motion and camera (world_view.hpp): the camera's
+// matrices are gluLookAt's and glFrustum's (the OpenGL 2.1 reference pages,
+// through the core's gl.hpp, tested against them on its own); a framed stage
+// sits in the picture's free area; a step between stages starts and ends
+// where the stages at rest are, and moves without jumps.
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <filesystem>
+
+#include "viewpipe/animation.hpp"
+#include "viewpipe/gl.hpp"
+#include "viewpipe/report/world_view.hpp"
+
+namespace viewpipe {
+namespace {
+
+namespace fs = std::filesystem;
+
+std::shared_ptr<const EvaluatedScene> builtIn(const std::string& name)
+{
+    return evaluateScene(loadScene(fs::path(VIEWPIPE_DATA_DIR) / "scenes" / name));
+}
+
+double relativeError(const Mat4<double>& a, const Mat4<double>& b)
+{
+    return (a - b).cwiseAbs().maxCoeff() / std::max(1.0, b.cwiseAbs().maxCoeff());
+}
+
+TEST(WorldCamera, ViewIsGluLookAt)
+{
+    WorldCamera camera;
+    camera.position = {3, -2, 5};
+    camera.focalPoint = {0.5, 1, -1};
+    camera.viewUp = {0.1, 1, 0.2};
+    const Mat4<double> expected = gl::lookAt<double>({camera.position, camera.focalPoint, camera.viewUp});
+    EXPECT_LT(relativeError(camera.view(), expected), 1e-14) << camera.view() << "\n\n" << expected;
+}
+
+TEST(WorldCamera, ProjectionIsGluPerspectiveAndItsWindowCenterShiftsTheFrustum)
+{
+    WorldCamera camera;
+    camera.viewAngle = 40;
+    camera.nearPlane = 0.5;
+    camera.farPlane = 30;
+    const Mat4<double> centered = gl::perspective<double>({40, 16.0 / 9, 0.5, 30});
+    EXPECT_LT(relativeError(camera.projection(16.0 / 9), centered), 1e-14);
+
+    // A window center of (cx, cy) is glFrustum with the near window moved by (cx, cy) half-widths.
+    camera.windowCenter = {0.25, -0.5};
+    const double top = 0.5 * std::tan(20 * M_PI / 180), right = top * 16 / 9;
+    const Mat4<double> shifted = gl::frustum<double>({(0.25 - 1) * right, (0.25 + 1) * right, (-0.5 - 1) * top,
+                                                      (-0.5 + 1) * top, 0.5, 30});
+    EXPECT_LT(relativeError(camera.projection(16.0 / 9), shifted), 1e-14);
+}
+
+// Pixels (y down) a world point is drawn at through a camera.
+Vec2<double> pixelOf(const WorldCamera& camera, const ViewFit& fit, const Vec3<double>& p)
+{
+    const Vec4<double> clip = camera.projection(double(fit.width) / fit.height) * camera.view() * p.homogeneous();
+    return {(clip.x() / clip.w() + 1) / 2 * fit.width, (1 - clip.y() / clip.w()) / 2 * fit.height};
+}
+
+TEST(WorldView, AFramedStageSitsInTheAreaTheTextLeaves)
+{
+    const auto scene = builtIn("house.json");
+    ViewFit fit;
+    fit.sceneArea = {{100, 150}, {900, 700}}; // a caption above, a legend to the right
+    for (int k = 0; k <= int(scene->pipeline.stages.size()); ++k) {
+        const Framing framing = stageFraming(*scene, k);
+        WorldCamera camera;
+        frameOn(camera, framing, fit);
+        // The focal point (the framing's center) at the area's center.
+        EXPECT_LT((pixelOf(camera, fit, framing.center) - Vec2<double>(500, 425)).norm(), 1e-6) << "stage " << k;
+        EXPECT_NEAR(camera.direction().dot(WorldCamera{}.direction()), 1, 1e-12) << "the direction is kept";
+        // The framing's sphere seen across at most the area's height (550 px), a little closer than touching.
+        const Vec3<double> side = camera.view().block<1, 3>(0, 0).transpose(); // the view's right
+        const double across = (pixelOf(camera, fit, framing.center + framing.radius * side) -
+                               pixelOf(camera, fit, framing.center - framing.radius * side)).norm();
+        EXPECT_GT(across, 0.8 * 550) << "stage " << k;
+        EXPECT_LT(across, 1.1 * 550) << "stage " << k;
+        // Everything framed lies between the near and far planes.
+        const double along = (framing.center - camera.position).dot(camera.direction());
+        EXPECT_LT(camera.nearPlane, along - framing.radius) << "stage " << k;
+        EXPECT_GT(camera.farPlane, along + framing.radius) << "stage " << k;
+    }
+}
+
+TEST(WorldView, AFramingHoldsEveryElementOfItsStage)
+{
+    const auto scene = builtIn("house.json");
+    const int n = int(scene->pipeline.stages.size());
+    for (int k = 0; k <= n; ++k) {
+        const WorldMoment moment = stageAtRest(*scene, k);
+        const StageShown shown(*scene, moment.drawn, moment.canonicalOpacity);
+        for (const Primitive& p : scene->primitives) {
+            if (!shown.draws(p) || p.kind != PrimitiveKind::Lines)
+                continue;
+            for (const Vec3<double>& world : p.segments) {
+                const auto q = projectPoint(shown.matrixOf(p), world);
+                if (q && shown.shows(world)) {
+                    EXPECT_LE((*q - moment.framing.center).norm(), moment.framing.radius * (1 + 1e-12))
+                        << "stage " << k << ": " << world.transpose();
+                }
+            }
+        }
+    }
+}
+
+TEST(WorldView, AStepStartsAndEndsAtTheStagesAtRestAndNeverJumps)
+{
+    for (const std::string name : {"house.json", "house-oblique-view.json", "opengl-perspective.json", "clipping-eye-plane.json"}) {
+        const auto scene = builtIn(name);
+        const int n = int(scene->pipeline.stages.size());
+        for (int k = 1; k <= n; ++k)
+            for (const auto& [from, to] : {std::pair{k - 1, k}, std::pair{k, k - 1}}) {
+                const StageMotion motion(*scene, from, to);
+                const WorldMoment start = motion.at(0), end = motion.at(1);
+                const WorldMoment first = stageAtRest(*scene, from), last = stageAtRest(*scene, to);
+                const std::string at = name + " " + std::to_string(from) + " -> " + std::to_string(to);
+                EXPECT_LT(relativeError(start.drawn, first.drawn), 1e-12) << at;
+                EXPECT_LT(relativeError(end.drawn, last.drawn), 1e-12) << at;
+                EXPECT_LT((start.framing.center - first.framing.center).norm(), 1e-12 * first.framing.radius) << at;
+                EXPECT_NEAR(end.framing.radius, last.framing.radius, 1e-12 * last.framing.radius) << at;
+                EXPECT_EQ(end.canonicalOpacity, last.canonicalOpacity) << at;
+                // Smooth phases of at least a fifth of the step each: a hundredth of it changes the
+                // framing by at most 1.5 / 0.2 / 100 of the distance between its phases' framings
+                // (at most twice the largest radius apart: each holds what the one before held).
+                double largest = 0;
+                for (int f = 0; f <= 100; ++f)
+                    largest = std::max(largest, motion.at(f / 100.0).framing.radius);
+                for (int f = 0; f < 100; ++f) {
+                    const Framing a = motion.at(f / 100.0).framing, b = motion.at((f + 1) / 100.0).framing;
+                    EXPECT_LE((a.center - b.center).norm(), 0.075 * 2 * largest) << at << " at " << f;
+                    EXPECT_LE(std::abs(a.radius - b.radius), 0.075 * largest) << at << " at " << f;
+                }
+            }
+    }
+}
+
+} // namespace
+} // namespace viewpipe
