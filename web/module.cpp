@@ -2,16 +2,23 @@
 // and the app call them, behind a few functions that take and give text.
 
 #include <emscripten/bind.h>
+#include <emscripten/val.h>
 
+#include <nlohmann/json.hpp>
+
+#include <algorithm>
 #include <exception>
 #include <filesystem>
 #include <fstream>
+#include <sstream>
 #include <stdexcept>
 #include <string>
 
 #include "viewpipe/error.hpp"
 #include "viewpipe/evaluated_scene.hpp"
+#include "viewpipe/math_text.hpp"
 #include "viewpipe/report/report.hpp"
+#include "viewpipe/report/web_page.hpp"
 #include "viewpipe/scene.hpp"
 
 namespace viewpipe::web {
@@ -23,15 +30,25 @@ struct Outcome {
     std::string error; // "field.path: reason", as the CLI prints it after "FILE: "
 };
 
-template <class Body> Outcome guarded(Body&& body)
+// A scene evaluated for the page: what it draws (the web export's data for
+// the scene) and its JSON view (pipelineJson's text), or why it is refused.
+struct Evaluation {
+    std::string page, pipeline;
+    std::string error;
+};
+
+// The body's result, or the reason the core refused its input.
+template <class Result = Outcome, class Body> Result guarded(Body&& body)
 {
+    Result refused;
     try {
-        return {body(), ""};
+        return body();
     } catch (const InputError& e) {
-        return {"", e.what()};
+        refused.error = e.what();
     } catch (const std::exception& e) {
-        return {"", std::string("internal error: ") + e.what()};
+        refused.error = std::string("internal error: ") + e.what();
     }
+    return refused;
 }
 
 // Where a scene's files are, in the module's own file system: mesh paths
@@ -47,17 +64,65 @@ Outcome putFile(const std::string& path, const std::string& bytes)
         std::ofstream out(file, std::ios::binary | std::ios::trunc);
         if (!(out << bytes) || !out.flush())
             throw std::runtime_error("cannot keep " + path);
-        return file.string();
+        return Outcome{file.string(), ""};
     });
+}
+
+std::string pipelineText(const EvaluatedScene& evaluated)
+{
+    const cli::PrecisionChoice precision; // double, as the CLI's default
+    return cli::pipelineJson(evaluated.scene, precision, evaluated.outcomes).dump();
 }
 
 // What `viewpipe pipeline SCENE --json` prints for a scene's JSON.
 Outcome pipelineJson(const std::string& sceneText)
 {
-    return guarded([&] {
-        const Scene scene = parseScene(sceneText, kSceneFolder);
-        const cli::PrecisionChoice precision; // double, as the CLI's default
-        return cli::pipelineJson(scene, precision, evaluateScene(scene)->outcomes).dump();
+    return guarded([&] { return Outcome{pipelineText(*evaluateScene(parseScene(sceneText, kSceneFolder))), ""}; });
+}
+
+// The page's font, measured by the page: `measure(runs, pixels, bold)` gives
+// [width, height] of one line of the core's math runs ([text, italic, level]
+// each). Lines are 1.25 apart, as the pictures set them.
+FontMeasure pageMeasure(const emscripten::val& measure)
+{
+    return [measure](const std::string& text, double pixels, bool bold) {
+        Vec2<double> size = Vec2<double>::Zero();
+        std::istringstream lines(text);
+        std::string line;
+        for (int k = 0; std::getline(lines, line); ++k) {
+            emscripten::val runs = emscripten::val::array();
+            for (const MathRun& run : mathRuns(line)) {
+                emscripten::val entry = emscripten::val::array();
+                entry.call<void>("push", run.text);
+                entry.call<void>("push", run.italic);
+                entry.call<void>("push", run.level);
+                runs.call<void>("push", entry);
+            }
+            const emscripten::val measured = measure(runs, pixels, bold);
+            size.x() = std::max(size.x(), measured[0].as<double>());
+            size.y() = k == 0 ? measured[1].as<double>() : size.y() + 1.25 * pixels;
+        }
+        return size;
+    };
+}
+
+// A scene's JSON as the page shows it. `options` are the page's own: its
+// data's width, height, fontSize, minFontSize, lineScale, fixedFraming and dark.
+Evaluation evaluate(const std::string& sceneText, const std::string& options, const emscripten::val& measure)
+{
+    return guarded<Evaluation>([&] {
+        const auto evaluated = evaluateScene(parseScene(sceneText, kSceneFolder));
+        const nlohmann::json given = nlohmann::json::parse(options);
+        WebViewOptions view;
+        view.width = given.at("width");
+        view.height = given.at("height");
+        view.fontSize = given.at("fontSize");
+        view.minFontSize = given.at("minFontSize");
+        view.lineScale = given.at("lineScale");
+        view.fixedFraming = given.at("fixedFraming");
+        view.theme = given.at("dark") ? Theme::Dark : Theme::Light;
+        const WebPageViews views = webPageViews(*evaluated, view, pageMeasure(measure));
+        return Evaluation{webPageData(*evaluated, views), pipelineText(*evaluated), ""};
     });
 }
 
@@ -68,6 +133,11 @@ EMSCRIPTEN_BINDINGS(viewpipe)
 {
     using namespace viewpipe::web;
     emscripten::value_object<Outcome>("Outcome").field("text", &Outcome::text).field("error", &Outcome::error);
+    emscripten::value_object<Evaluation>("Evaluation")
+        .field("page", &Evaluation::page)
+        .field("pipeline", &Evaluation::pipeline)
+        .field("error", &Evaluation::error);
     emscripten::function("putFile", &putFile);
     emscripten::function("pipelineJson", &pipelineJson);
+    emscripten::function("evaluate", &evaluate);
 }

@@ -201,6 +201,7 @@
     state.zoom = Math.max(0.1, Math.min(20, number('zoom', 1)));
     state.figure = values.has('figure');
     body.classList.toggle('figure', state.figure);
+    if (!core) pendingLink = values.get('scene'); // for the core, once it is loaded
   }
   function writeFragment() {
     const values = new URLSearchParams();
@@ -211,6 +212,8 @@
     if (state.pitch) values.set('pitch', state.pitch.toFixed(1));
     if (state.zoom !== 1) values.set('zoom', state.zoom.toFixed(3));
     if (state.figure) values.set('figure', '');
+    const linked = linkedSceneText();
+    if (linked) values.set('scene', linked);
     history.replaceState(null, '', '#' + values.toString().replace(/=$|=(?=&)/g, ''));
   }
   const userMoved = () => state.yaw !== 0 || state.pitch !== 0 || state.zoom !== 1;
@@ -293,6 +296,17 @@
       Object.assign(mark.style, { width: `${width * s}px`, height: mark.style.borderRadius ? `${width * s}px` : '',
                                   margin: `0 ${(swatch - width) / 2 * s}px` });
     });
+  }
+
+  // A label's runs (the core's math: [text, italic, level]) as the PNG sets them: scripts smaller, moved off the line.
+  const fontOf = (px) => `${px}px "DejaVu Sans", "Segoe UI", Helvetica, Arial, sans-serif`;
+  const runFont = (run, px, weight) =>
+    (run[1] ? 'italic ' : '') + weight + fontOf(px * Math.pow(data.scripts.scale, Math.abs(run[2])));
+  function runsWidth(context, runs, px, weight) {
+    return runs.reduce((width, run) => {
+      context.font = runFont(run, px, weight);
+      return width + context.measureText(run[0]).width;
+    }, 0);
   }
 
   function drawWorld() {
@@ -378,17 +392,9 @@
         context.stroke();
       }
     }
-    const font = (px) => `${px}px "DejaVu Sans", "Segoe UI", Helvetica, Arial, sans-serif`;
-    // A label's runs (the core's math: [text, italic, level]) as the PNG sets them: scripts smaller, moved off the line.
-    const runFont = (run, px, weight) =>
-      (run[1] ? 'italic ' : '') + weight + font(px * Math.pow(data.scripts.scale, Math.abs(run[2])));
-    const runsWidth = (runs, px, weight) => runs.reduce((width, run) => {
-      context.font = runFont(run, px, weight);
-      return width + context.measureText(run[0]).width;
-    }, 0);
     const drawRuns = (runs, x, top, px, weight) => {
       context.textBaseline = 'alphabetic';
-      context.font = weight + font(px);
+      context.font = weight + fontOf(px);
       const baseline = top + context.measureText('Ág').fontBoundingBoxAscent;
       for (const run of runs) {
         context.font = runFont(run, px, weight);
@@ -405,7 +411,7 @@
         const corner = place(x0, y0);
         let px = (label.minor ? data.smallFontSize : data.fontSize) * s;
         const weight = label.minor ? '' : 'bold ';
-        const width = runsWidth(label.runs, px, weight);
+        const width = runsWidth(context, label.runs, px, weight);
         if (width > (x1 - x0) * s) px *= (x1 - x0) * s / width;
         context.fillStyle = cssColor(label.color);
         drawRuns(label.runs, corner.x, corner.y + ((y1 - y0) * s - px) / 2, px, weight);
@@ -432,7 +438,7 @@
         if (!label.fixed && !kept(frame.cut, label.anchor)) continue;
         const at = project(label.fixed ? clipFromStage : clipFromWorld, label.anchor, size);
         if (!at) continue;
-        const width = runsWidth(label.runs, px, 'bold '), gap = 4;
+        const width = runsWidth(context, label.runs, px, 'bold '), gap = 4;
         const corners = [[gap, -gap - px], [gap, gap], [-gap - width, -gap - px], [-gap - width, gap]];
         for (const [dx, dy] of corners) {
           const box = { x0: at.x + dx, y0: at.y + dy, x1: at.x + dx + width, y1: at.y + dy + px };
@@ -756,6 +762,13 @@
   // ---- The core, compiled to WebAssembly ------------------------------------------
   let core = null; // once loaded
   // The scene's numbers as the CLI prints them (`viewpipe pipeline SCENE --json`), or why the core refuses the scene.
+  function showOutcome(outcome) {
+    document.getElementById('json-left-out').textContent = data.filesLeftOut;
+    if (!outcome.error) document.getElementById('pipeline-json').textContent = outcome.pipeline;
+    const error = document.getElementById('scene-error');
+    error.textContent = outcome.error;
+    error.hidden = !outcome.error;
+  }
   function evaluateScene() {
     if (!core) return;
     let outcome = { text: '', error: '' };
@@ -764,21 +777,239 @@
       if (outcome.error) break;
     }
     if (!outcome.error && !data.filesLeftOut) outcome = core.pipelineJson(data.scene);
-    document.getElementById('json-left-out').textContent = data.filesLeftOut;
-    document.getElementById('pipeline-json').textContent = outcome.text;
-    const error = document.getElementById('scene-error');
-    error.textContent = outcome.error;
-    error.hidden = !outcome.error;
+    showOutcome({ pipeline: outcome.text, error: outcome.error });
   }
+
+  // Text as the page draws it (drawRuns), measured: the core places labels and lays out captions with this.
+  const measuring = document.createElement('canvas').getContext('2d');
+  const measured = new Map(); // the same labels come back at every stage and every edit: set a font once
+  function measureRuns(runs, px, bold) {
+    const key = `${px} ${bold} ${JSON.stringify(runs)}`;
+    if (!measured.has(key)) {
+      const weight = bold ? 'bold ' : '';
+      measuring.font = weight + fontOf(px);
+      const line = measuring.measureText('Ág');
+      measured.set(key, [runsWidth(measuring, runs, px, weight), line.fontBoundingBoxAscent + line.fontBoundingBoxDescent]);
+    }
+    return measured.get(key);
+  }
+
+  // The scene evaluated anew by the core: what the page draws and the JSON view; or why the core refuses it.
+  function evaluateText(text) {
+    const options = { width: data.width, height: data.height, fontSize: data.fontSize, minFontSize: data.minFontSize,
+                      lineScale: data.lineScale, fixedFraming: data.fixedFraming, dark: data.dark };
+    const outcome = core.evaluate(text, JSON.stringify(options), measureRuns);
+    if (outcome.error) return { error: outcome.error };
+    const page = Object.assign(JSON.parse(outcome.page), { scene: text, files: data.files, filesLeftOut: data.filesLeftOut });
+    return { page, pipeline: outcome.pipeline, error: '' };
+  }
+  // ---- Editing the scene ------------------------------------------------------------
+  // The view's or the camera's fields, each a text field holding what was typed; every edit is evaluated by the
+  // core, which refuses what it cannot use with the field's path and the reason (the last valid picture stays).
+  const fields = document.getElementById('scene-fields');
+  const edits = { texts: [], at: -1 }; // the scene's valid texts, for undo and redo
+  let linkedScene = null; // a scene a link brought, once the core has taken it
+  let pendingLink = null; // the link's scene until the core has read it
+  const edited = () => edits.at > 0 || linkedScene !== null;
+
+  const pathText = (path) =>
+    path.reduce((text, part) => typeof part === 'number' ? `${text}[${part}]` : (text ? `${text}.${part}` : part), '');
+  function buildFields() {
+    fields.textContent = '';
+    const scene = JSON.parse(data.scene);
+    const root = scene.camera ? 'camera' : 'view';
+    // One row per number, list of numbers or text; objects as groups.
+    const add = (parent, value, path) => {
+      const numbers = Array.isArray(value) && value.every((v) => typeof v === 'number');
+      if (value !== null && typeof value === 'object' && !numbers) {
+        const group = document.createElement('fieldset');
+        const title = document.createElement('legend');
+        title.textContent = path[path.length - 1];
+        group.appendChild(title);
+        for (const [key, inner] of Object.entries(value)) add(group, inner, [...path, Array.isArray(value) ? Number(key) : key]);
+        parent.appendChild(group);
+        return;
+      }
+      const row = document.createElement('div');
+      row.className = 'field';
+      row.dataset.path = pathText(path);
+      const label = document.createElement('label');
+      label.textContent = path[path.length - 1];
+      row.appendChild(label);
+      const items = numbers ? value.map((v, k) => [v, [...path, k]]) : [[value, path]];
+      for (const [item, itemPath] of items) {
+        const input = document.createElement('input');
+        input.type = 'text';
+        input.spellcheck = false;
+        input.autocomplete = 'off';
+        if (typeof item === 'number') input.inputMode = 'decimal';
+        input.value = input.defaultValue = typeof item === 'string' ? item : JSON.stringify(item);
+        input.dataset.path = JSON.stringify(itemPath);
+        input.dataset.kind = typeof item;
+        input.setAttribute('aria-label', pathText(itemPath));
+        input.addEventListener('change', () => editField(input));
+        if (!label.htmlFor) {
+          input.id = `field-${row.dataset.path}`;
+          label.htmlFor = input.id;
+        }
+        row.appendChild(input);
+      }
+      const refusal = document.createElement('p');
+      refusal.className = 'field-error';
+      refusal.id = `refusal-${row.dataset.path}`;
+      refusal.hidden = true;
+      row.appendChild(refusal);
+      parent.appendChild(row);
+    };
+    add(fields, scene[root], [root]);
+  }
+
+  // A field's edit: its typed text put into the scene as written (a JSON number stays that number, digit for
+  // digit; other text goes as text, for the core to say what it needs), the scene evaluated.
+  const jsonNumber = /^-?(0|[1-9][0-9]*)(\.[0-9]+)?([eE][+-]?[0-9]+)?$/;
+  function editField(input) {
+    const scene = JSON.parse(data.scene);
+    const path = JSON.parse(input.dataset.path);
+    const typed = input.value.trim();
+    let holder = scene;
+    for (const part of path.slice(0, -1)) holder = holder[part];
+    const marker = '\u0000typed\u0000';
+    holder[path[path.length - 1]] = input.dataset.kind === 'number' && jsonNumber.test(typed) ? marker : typed;
+    changeScene(JSON.stringify(scene, null, 2).replace(JSON.stringify(marker), typed) + '\n', input);
+  }
+
+  function clearRefusals() {
+    fields.querySelectorAll('.field').forEach((row) => {
+      row.querySelector('.field-error').hidden = true;
+      row.querySelectorAll('input').forEach((input) => {
+        input.removeAttribute('aria-invalid');
+        input.removeAttribute('aria-describedby');
+      });
+    });
+  }
+  // The refusal beside the field it names: the field its path falls in, else the first field under it.
+  function showRefusal(error, input) {
+    const path = error.slice(0, Math.max(0, error.indexOf(': ')));
+    const rows = [...fields.querySelectorAll('.field')];
+    const within = (inner, outer) => inner === outer || inner.startsWith(outer + '.') || inner.startsWith(outer + '[');
+    const row = rows.find((r) => within(path, r.dataset.path)) || rows.find((r) => path && within(r.dataset.path, path)) ||
+                (input && input.closest('.field'));
+    if (!row) return;
+    const refusal = row.querySelector('.field-error');
+    refusal.textContent = error;
+    refusal.hidden = false;
+    for (const field of row.querySelectorAll('input')) {
+      field.setAttribute('aria-invalid', 'true');
+      field.setAttribute('aria-describedby', refusal.id);
+    }
+  }
+
+  // A scene's text, evaluated: shown when the core takes it (and kept for undo unless `fromHistory`), else
+  // refused beside its field with the last valid picture kept. Whether it was taken.
+  function changeScene(text, input, fromHistory) {
+    if (!core) return false;
+    const outcome = evaluateText(text);
+    clearRefusals();
+    showOutcome(outcome);
+    if (outcome.error) {
+      showRefusal(outcome.error, input);
+      return false;
+    }
+    const index = shownScene;
+    page.scenes[index] = outcome.page;
+    shownScene = -1;
+    const stage = state.stage;
+    useScene(index, true);
+    if (!fromHistory) {
+      edits.texts.splice(edits.at + 1, Infinity, text);
+      edits.at = edits.texts.length - 1;
+    }
+    const focused = input && input === document.activeElement ? input.dataset.path : null;
+    buildFields();
+    if (focused) fields.querySelector(`input[data-path='${focused}']`).focus();
+    showEdits();
+    state.stage = -1;
+    goTo(Math.min(stage, last), false);
+    return true;
+  }
+  function undo() {
+    if (edits.at <= 0) return;
+    edits.at -= 1;
+    changeScene(edits.texts[edits.at], null, true);
+  }
+  function redo() {
+    if (edits.at >= edits.texts.length - 1) return;
+    edits.at += 1;
+    changeScene(edits.texts[edits.at], null, true);
+  }
+  function showEdits() {
+    document.getElementById('undo').disabled = edits.at <= 0;
+    document.getElementById('redo').disabled = edits.at >= edits.texts.length - 1;
+    document.getElementById('link-note').textContent = Object.keys(data.files).length || data.filesLeftOut
+      ? 'This scene names mesh files, too large for a link: save it instead.' : '';
+  }
+  document.getElementById('undo').addEventListener('click', undo);
+  document.getElementById('redo').addEventListener('click', redo);
+  document.addEventListener('keydown', (event) => {
+    if (!(event.ctrlKey || event.metaKey) || event.altKey || lesson) return;
+    const key = event.key.toLowerCase();
+    // Text typed and not yet applied is the field's own to undo, as in any text field.
+    if (event.target instanceof HTMLInputElement && event.target.value !== event.target.defaultValue) return;
+    if (key === 'z' && !event.shiftKey) undo();
+    else if (key === 'y' || (key === 'z' && event.shiftKey)) redo();
+    else return;
+    event.preventDefault();
+  });
+  // The scene as a file the app opens.
+  document.getElementById('save-scene').addEventListener('click', () => {
+    const link = document.createElement('a');
+    link.href = URL.createObjectURL(new Blob([data.scene], { type: 'application/json' }));
+    link.download = (data.title || 'scene').replace(/[^A-Za-z0-9._-]+/g, '-').replace(/^-+|-+$/g, '').toLowerCase() + '.json';
+    link.click();
+    URL.revokeObjectURL(link.href);
+  });
+
+  // The scene in a link: its JSON as UTF-8 in base64url without padding (RFC 4648 §5).
+  function base64url(text) {
+    let binary = '';
+    for (const byte of new TextEncoder().encode(text)) binary += String.fromCharCode(byte);
+    return btoa(binary).replace(/\+/g, '-').replace(/\//g, '_').replace(/=+$/, '');
+  }
+  function fromBase64url(text) {
+    const binary = atob(text.replace(/-/g, '+').replace(/_/g, '/'));
+    return new TextDecoder('utf-8', { fatal: true }).decode(Uint8Array.from(binary, (c) => c.charCodeAt(0)));
+  }
+  function linkedSceneText() {
+    if (pendingLink) return pendingLink;
+    return !lesson && edited() && !Object.keys(data.files).length && !data.filesLeftOut ? base64url(data.scene) : null;
+  }
+
   ViewPipeCore().then((module) => {
     core = module;
     evaluateScene();
+    if (!lesson) {
+      edits.texts = [data.scene];
+      edits.at = 0;
+      const linked = pendingLink;
+      pendingLink = null;
+      if (linked) {
+        let text = null;
+        try {
+          text = fromBase64url(linked);
+        } catch (error) {
+          showOutcome({ error: "scene: the link's scene is not UTF-8 text in base64url" });
+        }
+        if (text !== null && changeScene(text, null)) linkedScene = text;
+      }
+      showEdits();
+    }
     body.dataset.core = '1';
   });
 
   // ---- Scenes and lessons -------------------------------------------------------
   let shownScene = -1;
-  function useScene(index) {
+  // `fromEdit`: made anew from an edit, whose outcome is shown already.
+  function useScene(index, fromEdit) {
     placedText = ''; // the new scene's caption, legend and note, even at the same stage
     if (index === shownScene) return;
     shownScene = index;
@@ -789,7 +1020,9 @@
     buildViews();
     buildPanels();
     drawProjected();
+    if (fromEdit) return;
     evaluateScene();
+    if (!lesson) buildFields();
   }
 
   // Text with inline math between dollar signs, typeset ("\$" is a dollar).
@@ -815,6 +1048,7 @@
   function buildLesson() {
     document.getElementById('title').textContent = lesson.title;
     document.getElementById('lesson').hidden = false;
+    document.getElementById('scene-editor').hidden = true;
     body.classList.add('lesson');
     document.querySelector('header .keys').textContent =
       'Keys: ← → (or Page Up, Page Down, Space) go through the steps, Home and End; Shift+arrows or drag orbit, ' +

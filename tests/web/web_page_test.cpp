@@ -20,6 +20,7 @@
 #include <unistd.h>
 
 #include <algorithm>
+#include <cctype>
 #include <chrono>
 #include <cmath>
 #include <filesystem>
@@ -430,6 +431,104 @@ TEST_F(WebPage, ComputesTheSceneWithTheCoreAsTheCliDoes)
               cli.output);
     EXPECT_EQ(browser.evaluate("document.getElementById('scene-error').hidden"), true);
     for (const std::string& problem : browser.problems())
+        ADD_FAILURE() << problem;
+}
+
+// A field typed into, as a student types: focused, its text replaced, Enter pressed.
+void typeInto(Browser& browser, const std::string& field, const std::string& text)
+{
+    browser.evaluate("(() => { const f = document.querySelector(`input[aria-label='" + field + "']`); f.focus(); f.select(); })()");
+    browser.page("Input.insertText", {{"text", text}});
+    browser.press("Enter", 13);
+}
+
+void pressWithControl(Browser& browser, const std::string& key, int keyCode)
+{
+    for (const char* type : {"rawKeyDown", "keyUp"})
+        browser.page("Input.dispatchKeyEvent", {{"type", type}, {"key", key}, {"code", "Key" + std::string(1, char(std::toupper(key[0])))},
+                                                {"windowsVirtualKeyCode", keyCode}, {"modifiers", 2}});
+}
+
+// The world view's pixels (the picture the page draws), where a refusal must leave it as it was.
+QImage worldView(Browser& browser)
+{
+    const json box = json::parse(browser.evaluate(
+        "JSON.stringify((r => [r.left, r.top, r.width, r.height])(document.getElementById('world').getBoundingClientRect()))")
+                                     .get<std::string>());
+    return browser.screenshot().copy(box[0].get<int>(), box[1].get<int>(), box[2].get<int>(), box[3].get<int>());
+}
+
+TEST_F(WebPage, EditsTheSceneWithTheCoreRefusesBesideTheFieldUndoesAndLinksIt)
+{
+    // The same edit as a file, for the CLI: the PRP moved to x = 20.
+    std::ifstream in(kData + "/scenes/house.json");
+    std::stringstream house;
+    house << in.rdbuf();
+    std::string moved = house.str();
+    const std::size_t prp = moved.find("\"prp\": [8, 6, 84]");
+    ASSERT_NE(prp, std::string::npos);
+    moved.replace(prp, 17, "\"prp\": [20, 6, 84]");
+    const fs::path movedFile = *dir_ / "house-prp-20.json";
+    std::ofstream(movedFile) << moved;
+    const Finished original = viewpipe({"pipeline", QString::fromStdString(kData + "/scenes/house.json"), "--json"});
+    const Finished expected = viewpipe({"pipeline", QString::fromStdString(movedFile.string()), "--json"});
+    ASSERT_EQ(expected.exitCode, 0) << expected.output;
+
+    const fs::path page = *dir_ / "house" / "scene.html";
+    Browser browser(*dir_ / "profile-edit");
+    browser.page("Page.navigate", {{"url", "file://" + page.string() + "#stage=3"}});
+    ASSERT_TRUE(browser.waitFor("document.body.dataset.core === '1'")) << "the core never loaded";
+    const std::string json = "document.getElementById('pipeline-json').textContent";
+
+    // A number typed: the core computes the scene anew, as the CLI does for the same file; the stage stays.
+    const QImage house3 = worldView(browser);
+    typeInto(browser, "view.prp[0]", "20");
+    ASSERT_TRUE(browser.waitFor(json + ".length > 0 && " + json + " + '\\n' !== " + nlohmann::json(original.output).dump()));
+    EXPECT_EQ(browser.evaluate(json).get<std::string>() + "\n", expected.output);
+    EXPECT_EQ(browser.evaluate("document.body.dataset.stage"), "3");
+    EXPECT_EQ(browser.evaluate("document.querySelector(`input[aria-label='view.prp[0]']`).value"), "20");
+    const QImage moved3 = worldView(browser);
+    EXPECT_NE(moved3, house3) << "the picture of stage 3 is drawn anew";
+
+    // A refused value: its reason beside its field (the core's field path), the last picture and numbers kept.
+    typeInto(browser, "view.vup[1]", "0");
+    ASSERT_TRUE(browser.waitFor("!document.getElementById('scene-error').hidden"));
+    const std::string reason = browser.evaluate("document.getElementById('scene-error').textContent");
+    EXPECT_EQ(reason.rfind("view.vup: ", 0), 0u) << reason;
+    EXPECT_EQ(browser.evaluate("document.querySelector(`.field[data-path='view.vup'] .field-error`).textContent"), reason);
+    EXPECT_EQ(browser.evaluate("document.querySelector(`input[aria-label='view.vup[1]']`).getAttribute('aria-invalid')"), "true");
+    EXPECT_EQ(browser.evaluate(json).get<std::string>() + "\n", expected.output);
+    EXPECT_EQ(worldView(browser), moved3) << "a refusal keeps the picture";
+
+    // Undo and redo with the keys, away from the typed field (whose own text Ctrl+Z would undo first).
+    browser.evaluate("document.activeElement.blur()");
+    pressWithControl(browser, "z", 90);
+    ASSERT_TRUE(browser.waitFor(json + " + '\\n' === " + nlohmann::json(original.output).dump()));
+    EXPECT_EQ(browser.evaluate("document.querySelector(`input[aria-label='view.prp[0]']`).value"), "8");
+    EXPECT_EQ(browser.evaluate("document.getElementById('scene-error').hidden"), true);
+    pressWithControl(browser, "y", 89);
+    ASSERT_TRUE(browser.waitFor(json + " + '\\n' === " + nlohmann::json(expected.output).dump()));
+
+    // The link holds the scene (base64url of its JSON, RFC 4648 section 5): opened, it restores scene and stage.
+    const std::string hash = browser.evaluate("location.hash");
+    const std::size_t at = hash.find("scene=");
+    ASSERT_NE(at, std::string::npos) << hash;
+    const std::string encoded = hash.substr(at + 6, hash.find('&', at) - at - 6);
+    EXPECT_EQ(encoded.find_first_not_of("ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789-_"), std::string::npos);
+    const QByteArray scene = QByteArray::fromBase64(QByteArray::fromStdString(encoded),
+                                                    QByteArray::Base64UrlEncoding | QByteArray::OmitTrailingEquals);
+    EXPECT_EQ(nlohmann::json::parse(scene.toStdString()), nlohmann::json::parse(moved));
+    for (const std::string& problem : browser.problems())
+        ADD_FAILURE() << problem;
+
+    Browser opened(*dir_ / "profile-link");
+    opened.page("Page.navigate", {{"url", "file://" + page.string() + hash}});
+    ASSERT_TRUE(opened.waitFor("document.body.dataset.core === '1'"));
+    EXPECT_EQ(opened.evaluate(json).get<std::string>() + "\n", expected.output);
+    EXPECT_EQ(opened.evaluate("document.body.dataset.stage"), "3");
+    EXPECT_EQ(opened.evaluate("document.querySelector(`input[aria-label='view.prp[0]']`).value"), "20");
+    EXPECT_EQ(worldView(opened), moved3) << "the link shows the edited scene's stage as the edit did";
+    for (const std::string& problem : opened.problems())
         ADD_FAILURE() << problem;
 }
 

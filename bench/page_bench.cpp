@@ -1,0 +1,45 @@
+// What the web page asks of the core on every edit, natively: the house read,
+// evaluated, its JSON view (pipeline --json) and its page data (each stage's
+// framing, transitions and placed labels) made. bench/page_bench.mjs runs the
+// same in WebAssembly and in Chromium and prints the ratios; run it rather
+// than this alone:
+//   xvfb-run -a node --experimental-websocket bench/page_bench.mjs build
+
+#include <benchmark/benchmark.h>
+
+#include <fstream>
+#include <sstream>
+
+#include "viewpipe/evaluated_scene.hpp"
+#include "viewpipe/report/report.hpp"
+#include "viewpipe/report/web_page.hpp"
+#include "viewpipe/scene.hpp"
+
+namespace viewpipe {
+namespace {
+
+// Text as wide as 0.6 of its size a character, one size high: page_bench.mjs measures so too.
+Vec2<double> fixedWidth(const std::string& text, double pixels, bool)
+{
+    return {0.6 * pixels * double(text.size()), pixels};
+}
+
+void nativeEvaluate(benchmark::State& state)
+{
+    std::ifstream in(VIEWPIPE_DATA_DIR "/scenes/house.json");
+    std::stringstream text;
+    text << in.rdbuf();
+    const WebViewOptions options; // the page's: 1280 x 720, 20-pixel labels
+    for (auto _ : state) {
+        const auto evaluated = evaluateScene(parseScene(text.str(), VIEWPIPE_DATA_DIR "/scenes"));
+        const std::string pipeline = cli::pipelineJson(evaluated->scene, cli::PrecisionChoice{}, evaluated->outcomes).dump();
+        const std::string page = webPageData(*evaluated, webPageViews(*evaluated, options, fixedWidth));
+        benchmark::DoNotOptimize(pipeline.size() + page.size());
+    }
+}
+BENCHMARK(nativeEvaluate)->Name("PageEvaluate/native/house")->Unit(benchmark::kMillisecond);
+
+} // namespace
+} // namespace viewpipe
+
+BENCHMARK_MAIN();
