@@ -795,12 +795,12 @@
   }
 
   // The scene evaluated anew by the core: what the page draws and the JSON view; or why the core refuses it.
-  function evaluateText(text) {
+  function evaluateText(text, files, filesLeftOut) {
     const options = { width: data.width, height: data.height, fontSize: data.fontSize, minFontSize: data.minFontSize,
                       lineScale: data.lineScale, fixedFraming: data.fixedFraming, dark: data.dark };
     const outcome = core.evaluate(text, JSON.stringify(options), measureRuns);
     if (outcome.error) return { error: outcome.error };
-    const page = Object.assign(JSON.parse(outcome.page), { scene: text, files: data.files, filesLeftOut: data.filesLeftOut });
+    const page = Object.assign(JSON.parse(outcome.page), { scene: text, files, filesLeftOut });
     return { page, pipeline: outcome.pipeline, error: '' };
   }
   // ---- Editing the scene ------------------------------------------------------------
@@ -879,6 +879,7 @@
   }
 
   function clearRefusals() {
+    document.getElementById('editor-error').hidden = true;
     fields.querySelectorAll('.field').forEach((row) => {
       row.querySelector('.field-error').hidden = true;
       row.querySelectorAll('input').forEach((input) => {
@@ -894,29 +895,47 @@
     const within = (inner, outer) => inner === outer || inner.startsWith(outer + '.') || inner.startsWith(outer + '[');
     const row = rows.find((r) => within(path, r.dataset.path)) || rows.find((r) => path && within(r.dataset.path, path)) ||
                 (input && input.closest('.field'));
-    if (!row) return;
-    const refusal = row.querySelector('.field-error');
-    refusal.textContent = error;
-    refusal.hidden = false;
-    for (const field of row.querySelectorAll('input')) {
-      field.setAttribute('aria-invalid', 'true');
-      field.setAttribute('aria-describedby', refusal.id);
+    if (!row) { // not a field's (a mesh, the scene's objects): under the buttons
+      const general = document.getElementById('editor-error');
+      general.textContent = error;
+      general.hidden = false;
+      return;
+    }
+    // Beside the field it names and, where another was edited (B typed, F named), beside that one too.
+    const edited = input && input.closest('.field');
+    for (const shown of edited && edited !== row ? [row, edited] : [row]) {
+      const refusal = shown.querySelector('.field-error');
+      refusal.textContent = error;
+      refusal.hidden = false;
+      for (const field of shown.querySelectorAll('input')) {
+        field.setAttribute('aria-invalid', 'true');
+        field.setAttribute('aria-describedby', refusal.id);
+      }
     }
   }
 
   // A scene's text, evaluated: shown when the core takes it (and kept for undo unless `fromHistory`), else
-  // refused beside its field with the last valid picture kept. Whether it was taken.
-  function changeScene(text, input, fromHistory) {
+  // refused beside its field with the last valid picture kept. `files`: the meshes it may name, if not the
+  // scene's shown. Whether it was taken.
+  function changeScene(text, input, fromHistory, files) {
     if (!core) return false;
-    const outcome = evaluateText(text);
+    if (!files && data.filesLeftOut) { // the core cannot read meshes the page does not hold
+      clearRefusals();
+      showRefusal("This page left the scene's meshes out: open the scene with its meshes to change it here.", null);
+      return false;
+    }
+    const outcome = evaluateText(text, files || data.files, files ? '' : data.filesLeftOut);
     clearRefusals();
     showOutcome(outcome);
     if (outcome.error) {
       showRefusal(outcome.error, input);
+      showEdits();
       return false;
     }
     const index = shownScene;
     page.scenes[index] = outcome.page;
+    document.getElementById('title').textContent = outcome.page.title;
+    document.title = `${outcome.page.title} · ViewPipe`;
     shownScene = -1;
     const stage = state.stage;
     useScene(index, true);
@@ -933,6 +952,14 @@
     return true;
   }
   function undo() {
+    // A refused value is undone first, alone: the fields show the scene shown again.
+    if (refused()) {
+      clearRefusals();
+      buildFields();
+      showOutcome({ error: '', pipeline: document.getElementById('pipeline-json').textContent });
+      showEdits();
+      return;
+    }
     if (edits.at <= 0) return;
     edits.at -= 1;
     changeScene(edits.texts[edits.at], null, true);
@@ -942,8 +969,9 @@
     edits.at += 1;
     changeScene(edits.texts[edits.at], null, true);
   }
+  const refused = () => !!fields.querySelector('[aria-invalid]') || !document.getElementById('editor-error').hidden;
   function showEdits() {
-    document.getElementById('undo').disabled = edits.at <= 0;
+    document.getElementById('undo').disabled = edits.at <= 0 && !refused();
     document.getElementById('redo').disabled = edits.at >= edits.texts.length - 1;
     document.getElementById('link-note').textContent = Object.keys(data.files).length || data.filesLeftOut
       ? 'This scene names mesh files, too large for a link: save it instead.' : '';
@@ -967,6 +995,48 @@
     link.download = (data.title || 'scene').replace(/[^A-Za-z0-9._-]+/g, '-').replace(/^-+|-+$/g, '').toLowerCase() + '.json';
     link.click();
     URL.revokeObjectURL(link.href);
+  });
+
+  // Files opened or dropped: meshes go into the core's file system under their names; a scene (JSON) among them
+  // is evaluated with them, and meshes alone are added to the scene shown. The core's readers refuse what they
+  // cannot read, with the CLI's messages.
+  const meshFile = /\.(obj|ply|stl)$/i;
+  async function openFiles(list) {
+    if (!core || lesson) return;
+    const files = [...list];
+    const scene = files.find((f) => /\.json$/i.test(f.name));
+    const meshes = files.filter((f) => meshFile.test(f.name));
+    const kept = {};
+    for (const mesh of meshes) {
+      const bytes = new Uint8Array(await mesh.arrayBuffer());
+      const outcome = core.putFile(mesh.name, bytes);
+      if (outcome.error) return showRefusal(`${mesh.name}: ${outcome.error}`, null);
+      let binary = '';
+      for (let k = 0; k < bytes.length; k += 0x8000) binary += String.fromCharCode(...bytes.subarray(k, k + 0x8000));
+      kept[mesh.name] = btoa(binary);
+    }
+    let text;
+    if (scene) {
+      text = await scene.text();
+    } else if (meshes.length) {
+      const shown = JSON.parse(data.scene);
+      shown.objects = shown.objects || [];
+      for (const mesh of meshes)
+        if (!shown.objects.some((o) => o.type === 'mesh' && o.path === mesh.name)) shown.objects.push({ type: 'mesh', path: mesh.name });
+      text = JSON.stringify(shown, null, 2) + '\n';
+    } else {
+      return showRefusal('Open a scene (.json) or meshes (.obj, .ply, .stl).', null);
+    }
+    changeScene(text, null, false, Object.assign({}, scene ? {} : data.files, kept));
+  }
+  const picker = document.getElementById('open-files');
+  document.getElementById('open-scene').addEventListener('click', () => picker.click());
+  picker.addEventListener('change', () => { openFiles(picker.files); picker.value = ''; });
+  document.querySelector('main').addEventListener('dragover', (event) => { if (!lesson) event.preventDefault(); });
+  document.querySelector('main').addEventListener('drop', (event) => {
+    if (lesson) return;
+    event.preventDefault();
+    openFiles(event.dataTransfer.files);
   });
 
   // The scene in a link: its JSON as UTF-8 in base64url without padding (RFC 4648 §5).

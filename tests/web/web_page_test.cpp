@@ -500,8 +500,14 @@ TEST_F(WebPage, EditsTheSceneWithTheCoreRefusesBesideTheFieldUndoesAndLinksIt)
     EXPECT_EQ(browser.evaluate(json).get<std::string>() + "\n", expected.output);
     EXPECT_EQ(worldView(browser), moved3) << "a refusal keeps the picture";
 
-    // Undo and redo with the keys, away from the typed field (whose own text Ctrl+Z would undo first).
+    // Undo and redo with the keys, away from the typed field (whose own text Ctrl+Z would undo first). The first
+    // Ctrl+Z undoes the refused value alone; the next the last edit taken.
     browser.evaluate("document.activeElement.blur()");
+    pressWithControl(browser, "z", 90);
+    ASSERT_TRUE(browser.waitFor("document.getElementById('scene-error').hidden"));
+    EXPECT_EQ(browser.evaluate("document.querySelector(`input[aria-label='view.vup[1]']`).value"), "1");
+    EXPECT_EQ(browser.evaluate("document.querySelectorAll('[aria-invalid]').length"), 0);
+    EXPECT_EQ(browser.evaluate(json).get<std::string>() + "\n", expected.output);
     pressWithControl(browser, "z", 90);
     ASSERT_TRUE(browser.waitFor(json + " + '\\n' === " + nlohmann::json(original.output).dump()));
     EXPECT_EQ(browser.evaluate("document.querySelector(`input[aria-label='view.prp[0]']`).value"), "8");
@@ -529,6 +535,63 @@ TEST_F(WebPage, EditsTheSceneWithTheCoreRefusesBesideTheFieldUndoesAndLinksIt)
     EXPECT_EQ(opened.evaluate("document.querySelector(`input[aria-label='view.prp[0]']`).value"), "20");
     EXPECT_EQ(worldView(opened), moved3) << "the link shows the edited scene's stage as the edit did";
     for (const std::string& problem : opened.problems())
+        ADD_FAILURE() << problem;
+}
+
+TEST_F(WebPage, OpensAndDropsScenesAndMeshesReadByTheCore)
+{
+    // A scene of one tetrahedron, and the same scene with a truncated PLY added: as files, for the CLI.
+    const fs::path folder = *dir_ / "opened";
+    fs::create_directories(folder);
+    std::ofstream(folder / "tetrahedron.obj") << "v 0 0 0\nv 40 0 0\nv 0 40 0\nv 0 0 40\nf 1 3 2\nf 1 2 4\nf 1 4 3\nf 2 3 4\n";
+    const std::string truncatedPly = std::string("ply\nformat binary_little_endian 1.0\nelement vertex 3\nproperty float x\n") +
+                                     "property float y\nproperty float z\nelement face 1\nproperty list uchar int vertex_indices\n" +
+                                     "end_header\n" + std::string(2, '\0');
+    std::ofstream(folder / "broken.ply", std::ios::binary) << truncatedPly;
+    const std::string view = R"("view": {"projection": "perspective", "vrp": [0, 0, 0], "vpn": [0, 0, 1], "vup": [0, 1, 0],
+                                "prp": [8, 6, 84], "window": [-50, 50, -50, 50], "front": 60, "back": 25})";
+    std::ofstream(folder / "tetrahedron.json")
+        << R"({"name": "A tetrahedron", )" << view << R"(, "objects": [{"type": "mesh", "path": "tetrahedron.obj"}], "effects": []})";
+    std::ofstream(folder / "with-broken.json")
+        << R"({"name": "A tetrahedron", )" << view
+        << R"(, "objects": [{"type": "mesh", "path": "tetrahedron.obj"}, {"type": "mesh", "path": "broken.ply"}], "effects": []})";
+    const Finished expected = viewpipe({"pipeline", QString::fromStdString((folder / "tetrahedron.json").string()), "--json"});
+    ASSERT_EQ(expected.exitCode, 0) << expected.output;
+    const std::string broken = (folder / "with-broken.json").string();
+    const Finished refused = viewpipe({"pipeline", QString::fromStdString(broken), "--json"});
+    ASSERT_EQ(refused.exitCode, 2) << refused.output;
+    ASSERT_EQ(refused.output.rfind(broken + ": ", 0), 0u) << refused.output;
+    const std::string reason = refused.output.substr(broken.size() + 2, refused.output.size() - broken.size() - 3);
+
+    const fs::path page = *dir_ / "house" / "scene.html";
+    Browser browser(*dir_ / "profile-open");
+    browser.page("Page.navigate", {{"url", "file://" + page.string()}});
+    ASSERT_TRUE(browser.waitFor("document.body.dataset.core === '1'")) << "the core never loaded";
+
+    // Opened with the file picker, as a student picks a scene and its mesh: the core reads both.
+    const int root = browser.page("DOM.getDocument")["root"]["nodeId"];
+    const int picker = browser.page("DOM.querySelector", {{"nodeId", root}, {"selector", "#open-files"}})["nodeId"];
+    browser.page("DOM.setFileInputFiles", {{"nodeId", picker},
+                                           {"files", {(folder / "tetrahedron.json").string(), (folder / "tetrahedron.obj").string()}}});
+    const std::string json = "document.getElementById('pipeline-json').textContent";
+    ASSERT_TRUE(browser.waitFor("document.getElementById('title').textContent === 'A tetrahedron'"));
+    EXPECT_EQ(browser.evaluate(json).get<std::string>() + "\n", expected.output);
+    const QImage tetrahedron = worldView(browser);
+
+    // A hostile mesh dropped: refused with the CLI's message, the page alive, the picture and numbers kept.
+    browser.evaluate(R"((() => {
+        const bytes = Uint8Array.from(atob(')" + QByteArray::fromStdString(truncatedPly).toBase64().toStdString() + R"('), (c) => c.charCodeAt(0));
+        const dropped = new DataTransfer();
+        dropped.items.add(new File([bytes], 'broken.ply'));
+        document.querySelector('main').dispatchEvent(new DragEvent('drop', { dataTransfer: dropped, bubbles: true, cancelable: true }));
+    })())");
+    ASSERT_TRUE(browser.waitFor("!document.getElementById('scene-error').hidden"));
+    EXPECT_EQ(browser.evaluate("document.getElementById('scene-error').textContent"), reason);
+    EXPECT_EQ(browser.evaluate("document.getElementById('editor-error').textContent"), reason);
+    EXPECT_EQ(browser.evaluate(json).get<std::string>() + "\n", expected.output);
+    EXPECT_EQ(worldView(browser), tetrahedron);
+    EXPECT_EQ(browser.evaluate("document.querySelectorAll('#stage-list li').length"), 6) << "the page still answers";
+    for (const std::string& problem : browser.problems())
         ADD_FAILURE() << problem;
 }
 
