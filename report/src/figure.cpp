@@ -463,6 +463,8 @@ std::vector<std::optional<PlacedLabel>> placeLabels(const std::vector<LabelReque
         double bestCost = 0;
         bool bestLeader = false;
         auto consider = [&](const Box2& box, double penalty, bool leader) {
+            if (best && penalty >= bestCost)
+                return; // its cost is never below its penalty: it cannot do better
             if (!free(box, leader ? std::optional<Vec2d>(r.anchor) : std::nullopt))
                 return;
             const double c = cost(box) + penalty;

@@ -147,12 +147,22 @@
   const projectedScene = new THREE.Scene();
   const projectedCamera = new THREE.Camera();
   projectedCamera.matrixAutoUpdate = false;
+  // What a scene drew before is disposed once the scene has been drawn anew (render): three.js compiles a
+  // shader program again when the last material using it goes, and an edit would compile every one.
+  function retire(scene, object) {
+    scene.remove(object);
+    (scene.userData.retired = scene.userData.retired || []).push(object);
+  }
   function clear(scene) {
-    for (const child of [...scene.children]) {
-      scene.remove(child);
-      child.geometry.dispose();
-      child.material.dispose();
+    for (const child of [...scene.children]) retire(scene, child);
+  }
+  function render(renderer, scene, camera) {
+    renderer.render(scene, camera);
+    for (const object of scene.userData.retired || []) {
+      object.geometry.dispose();
+      object.material.dispose();
     }
+    scene.userData.retired = [];
   }
   // The drawables of the scene shown, in both views.
   function buildViews() {
@@ -162,6 +172,7 @@
     items = [];
     worldScene.background = new THREE.Color(...data.background);
     projectedScene.background = new THREE.Color(...data.projectedBackground);
+    document.getElementById('projected').style.setProperty('--projected', cssColor(data.projectedBackground));
     data.primitives.forEach((primitive, k) => {
       const geometry = geometryOf(primitive);
       // Lines twice: wide, and one pixel wide where a divide's cut applies (a wide line's
@@ -356,7 +367,7 @@
     if (frameAxes) frameAxes.visible = atRest;
     // The canonical volume's line of the legend while it is drawn, as in the app.
     document.querySelectorAll('#legend [data-canonical]').forEach((row) => { row.hidden = !(frame.canonical > 0); });
-    world.render(worldScene, camera);
+    render(world, worldScene, camera);
 
     const context = fitOverlay(worldOverlay, size);
     const clipFromStage = projection.clone().multiply(view);
@@ -460,7 +471,7 @@
     const lx = 0.8 * Math.min(1, stretch), ly = 0.8 * Math.min(1, 1 / stretch); // room for the caption and legend
     projectedCamera.projectionMatrix.copy(new THREE.Matrix4().makeScale(lx, ly, 1).multiply(matrixOf(data.projected.clip)));
     projectedCamera.projectionMatrixInverse.getInverse(projectedCamera.projectionMatrix);
-    projected.render(projectedScene, projectedCamera);
+    render(projected, projectedScene, projectedCamera);
     const context = fitOverlay(projectedOverlay, size);
     // Marks in the picture's coordinates: the vanishing lines, the ring around faces that fight for depth.
     const marks = (segments, color, width) => {
@@ -579,11 +590,7 @@
   }
 
   function showRest(k) {
-    if (frameAxes) {
-      worldScene.remove(frameAxes);
-      frameAxes.geometry.dispose();
-      frameAxes.material.dispose();
-    }
+    if (frameAxes) retire(worldScene, frameAxes);
     const stage = stages[k];
     const axes = { surface: false, positions: stage.frame, color: data.frameColor };
     frameAxes = drawable(geometryOf(axes), axes, 1, 2 * data.primitives.length + 1);
