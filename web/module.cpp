@@ -6,11 +6,9 @@
 
 #include <nlohmann/json.hpp>
 
-#include <algorithm>
 #include <exception>
 #include <filesystem>
 #include <fstream>
-#include <sstream>
 #include <stdexcept>
 #include <string>
 
@@ -81,29 +79,21 @@ Outcome pipelineJson(const std::string& sceneText)
 }
 
 // The page's font, measured by the page: `measure(runs, pixels, bold)` gives
-// [width, height] of one line of the core's math runs ([text, italic, level]
-// each). Lines are 1.25 apart, as the pictures set them.
+// [width, height] of one line of the core's math runs, [text, italic, level] each.
 FontMeasure pageMeasure(const emscripten::val& measure)
 {
-    return [measure](const std::string& text, double pixels, bool bold) {
-        Vec2<double> size = Vec2<double>::Zero();
-        std::istringstream lines(text);
-        std::string line;
-        for (int k = 0; std::getline(lines, line); ++k) {
-            emscripten::val runs = emscripten::val::array();
-            for (const MathRun& run : mathRuns(line)) {
-                emscripten::val entry = emscripten::val::array();
-                entry.call<void>("push", run.text);
-                entry.call<void>("push", run.italic);
-                entry.call<void>("push", run.level);
-                runs.call<void>("push", entry);
-            }
-            const emscripten::val measured = measure(runs, pixels, bold);
-            size.x() = std::max(size.x(), measured[0].as<double>());
-            size.y() = k == 0 ? measured[1].as<double>() : size.y() + 1.25 * pixels;
+    return lineByLine([measure](const std::vector<MathRun>& runs, double pixels, bool bold) {
+        emscripten::val line = emscripten::val::array();
+        for (const MathRun& run : runs) {
+            emscripten::val entry = emscripten::val::array();
+            entry.call<void>("push", run.text);
+            entry.call<void>("push", run.italic);
+            entry.call<void>("push", run.level);
+            line.call<void>("push", entry);
         }
-        return size;
-    };
+        const emscripten::val measured = measure(line, pixels, bold);
+        return Vec2<double>(measured[0].as<double>(), measured[1].as<double>());
+    });
 }
 
 // A scene's JSON as the page shows it. `options` are the page's own: its

@@ -297,8 +297,7 @@ std::vector<fs::path> exportStages(const std::shared_ptr<const EvaluatedScene>& 
                                    options.transparent, options.textScale / 100.0);
         vtkRenderWindow* window = offscreen.window;
         ScenePainter& painter = *offscreen.painter;
-        const std::optional<Framing> framing =
-            options.fixedFraming ? std::optional<Framing>(fixedFraming(*evaluated)) : std::nullopt;
+        const std::optional<Framing> framing = fixedFraming(*evaluated, options.fixedFraming);
         auto showAt = [&](int k, const std::string& caption) {
             return showStageAtRest(offscreen, *evaluated, k, caption, framing);
         };

@@ -57,9 +57,10 @@ std::vector<std::filesystem::path> exportStages(const std::shared_ptr<const Eval
 void exportWebPage(const std::shared_ptr<const EvaluatedScene>& scene, const std::filesystem::path& file, Theme theme,
                    const ExportProgress& progress, const std::atomic<bool>& cancel);
 
-// What the web page of a scene draws (report/web_page.hpp): every stage at
-// rest as its picture of that size, scale and framing shows it, and the
-// app's transitions frame by frame. Throws InputError for a bad size or
+// What the web page of a scene draws (webPageViews, report/web_page.hpp):
+// every stage at rest as its picture of that size, scale and framing shows
+// it, and the app's transitions frame by frame, text measured in the
+// pictures' font. Throws InputError for a bad size or
 // scale; `step` hears of each stage. `textScale` as OffscreenPainter's.
 WebPageViews recordWebViews(const std::shared_ptr<const EvaluatedScene>& scene, int width, int height, int scale,
                             Theme theme, bool fixedFraming, const std::function<void(const std::string&)>& step,

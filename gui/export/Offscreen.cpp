@@ -26,16 +26,12 @@ OffscreenPainter::OffscreenPainter(const std::shared_ptr<const EvaluatedScene>& 
 StageShown showStageAtRest(const OffscreenPainter& offscreen, const EvaluatedScene& scene, int k,
                            const std::string& caption, const std::optional<Framing>& fixedFraming)
 {
-    WorldMoment moment = stageAtRest(scene, k);
-    if (fixedFraming)
-        moment.framing = *fixedFraming;
-    StageShown shown(scene, moment.drawn, moment.canonicalOpacity);
-    shown.ghost = moment.ghost;
+    const WorldMoment moment = stageAtRest(scene, k, fixedFraming);
     ScenePainter& painter = *offscreen.painter;
     painter.setCaptions(caption, "");
     painter.showMoment(moment);
     offscreen.window->Render();
-    return shown;
+    return stageShown(scene, moment);
 }
 
 } // namespace viewpipe::gui

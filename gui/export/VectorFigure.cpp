@@ -79,12 +79,7 @@ Layout layoutOf(const VectorFigure& f)
 {
     Layout layout;
     const FigureView& v = f.view;
-    PictureText text;
-    text.fontSize = v.fontSize;
-    text.minFontSize = v.minFontSize;
-    text.caption = f.caption;
-    text.note = f.stage->scene->effectsNote;
-    text.legend = legendShown(f.stage->scene->worldLegend, f.stage->canonicalOpacity > 0);
+    const PictureText text = stagePictureText(*f.stage, f.caption, v.fontSize, v.minFontSize);
     layout.picture = layoutPicture(v.width, v.height, text, figureFontMeasure());
     if (!layout.picture.legend.isEmpty())
         layout.entries = text.legend;
@@ -199,10 +194,7 @@ Figure flatFigure(const VectorFigure& f)
     const Layout layout = layoutOf(f);
     // Measured as the PNG's painter measures them: both pictures place their labels alike.
     const LabelMeasure measure = labelMeasure(figureFontMeasure(), f.view.fontSize);
-    std::vector<Box2> reserved = {layout.picture.caption, layout.picture.note};
-    if (!layout.entries.empty())
-        reserved.push_back(layout.picture.legend);
-    Figure figure = drawFigure(*f.stage, f.view, measure, reserved);
+    Figure figure = drawFigure(*f.stage, f.view, measure, textBoxes(layout.picture));
     figure.layout = layout.picture;
     figure.legend = layout.entries;
     return figure;

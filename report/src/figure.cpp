@@ -162,6 +162,21 @@ double meanDepth(const std::vector<Vec3d>& pixels)
 
 } // namespace
 
+FontMeasure lineByLine(RunsMeasure measure)
+{
+    return [measure = std::move(measure)](const std::string& text, double pixels, bool bold) {
+        Vec2<double> size = Vec2<double>::Zero();
+        std::istringstream lines(text);
+        std::string line;
+        for (int k = 0; std::getline(lines, line); ++k) {
+            const Vec2<double> measured = measure(mathRuns(line), pixels, bold);
+            size.x() = std::max(size.x(), measured.x());
+            size.y() = k == 0 ? measured.y() : size.y() + 1.25 * pixels;
+        }
+        return size;
+    };
+}
+
 LabelMeasure labelMeasure(const FontMeasure& measure, double fontSize)
 {
     return [measure, fontSize](const Label& label) {
@@ -239,6 +254,25 @@ LegendLayout legendLayout(const std::vector<const LegendEntry*>& entries, double
         rows.size = Vec2<double>(textWidth + rows.swatchWidth + 2 * rows.padding + 2,
                                  double(entries.size()) * rows.rowHeight + 2 * rows.padding);
     return rows;
+}
+
+PictureText stagePictureText(const StageShown& stage, const std::string& caption, double fontSize, double minFontSize)
+{
+    PictureText text;
+    text.fontSize = fontSize;
+    text.minFontSize = minFontSize;
+    text.caption = caption;
+    text.note = stage.scene->effectsNote;
+    text.legend = legendShown(stage.scene->worldLegend, stage.canonicalOpacity > 0);
+    return text;
+}
+
+std::vector<Box2> textBoxes(const PictureLayout& layout)
+{
+    std::vector<Box2> boxes = {layout.caption, layout.note};
+    if (!layout.legend.isEmpty())
+        boxes.push_back(layout.legend);
+    return boxes;
 }
 
 PictureLayout layoutPicture(int width, int height, const PictureText& text, const FontMeasure& measure)

@@ -308,7 +308,7 @@ WebPageViews webPageViews(const EvaluatedScene& scene, const WebViewOptions& o, 
     const int n = int(stages.size());
     WebPageViews views;
     views.options = o;
-    const std::optional<Framing> fixed = o.fixedFraming ? std::optional<Framing>(fixedFraming(scene)) : std::nullopt;
+    const std::optional<Framing> fixed = fixedFraming(scene, o.fixedFraming);
     WorldCamera camera; // from the default viewpoint, as every export is seen
     ViewFit fit{o.width, o.height, {}, 1, Vec3<double>::Zero()};
     auto frameOf = [&](const WorldMoment& moment) {
@@ -319,7 +319,7 @@ WebPageViews webPageViews(const EvaluatedScene& scene, const WebViewOptions& o, 
         frame.focalPoint = camera.focalPoint;
         frame.shown = moment.drawn;
         frame.canonicalOpacity = moment.canonicalOpacity;
-        frame.cut = StageShown(scene, moment.drawn, moment.canonicalOpacity).cut;
+        frame.cut = stageShown(scene, moment).cut;
         return frame;
     };
     for (int k = 0; k <= n; ++k) {
@@ -332,18 +332,11 @@ WebPageViews webPageViews(const EvaluatedScene& scene, const WebViewOptions& o, 
                 frames.push_back(frameOf(motion.at(double(f) / kWebFramesPerStep)));
             views.transitions.push_back(std::move(frames));
         }
-        WorldMoment moment = stageAtRest(scene, k);
-        if (fixed)
-            moment.framing = *fixed;
-        StageShown shown(scene, moment.drawn, moment.canonicalOpacity);
-        shown.ghost = moment.ghost;
-        PictureText text;
-        text.fontSize = o.fontSize;
-        text.minFontSize = o.minFontSize;
-        text.caption = stageCaption(scene, std::size_t(k), StageText::Heading);
-        text.note = scene.effectsNote;
-        text.legend = legendShown(scene.worldLegend, moment.canonicalOpacity > 0);
-        PictureLayout layout = layoutPicture(o.width, o.height, text, measure);
+        const WorldMoment moment = stageAtRest(scene, k, fixed);
+        const StageShown shown = stageShown(scene, moment);
+        const std::string caption = stageCaption(scene, std::size_t(k), StageText::Heading);
+        PictureLayout layout =
+            layoutPicture(o.width, o.height, stagePictureText(shown, caption, o.fontSize, o.minFontSize), measure);
         fit.sceneArea = layout.scene;
         const WebFrame rest = frameOf(moment);
         FigureView view;
@@ -354,10 +347,7 @@ WebPageViews webPageViews(const EvaluatedScene& scene, const WebViewOptions& o, 
         view.fontSize = o.fontSize;
         view.minFontSize = o.minFontSize;
         view.lineScale = o.lineScale;
-        std::vector<Box2> reserved = {layout.caption, layout.note};
-        if (!layout.legend.isEmpty())
-            reserved.push_back(layout.legend);
-        Figure figure = drawFigure(shown, view, labelMeasure(measure, o.fontSize), reserved);
+        Figure figure = drawFigure(shown, view, labelMeasure(measure, o.fontSize), textBoxes(layout));
         views.stages.push_back({rest, shown.ghost, view.frameReach, std::move(figure.labels), std::move(layout)});
     }
     return views;

@@ -82,8 +82,10 @@ Framing stageFraming(const EvaluatedScene& scene, int stage)
     return framingOf(scene, positions, canonicalOpacityAt(stage, stages.size()) > 0);
 }
 
-Framing fixedFraming(const EvaluatedScene& scene)
+std::optional<Framing> fixedFraming(const EvaluatedScene& scene, bool fixed)
 {
+    if (!fixed)
+        return std::nullopt;
     const std::vector<Stage<double>>& stages = scene.pipeline.stages;
     std::vector<Mat4<double>> all;
     for (std::size_t k = 0; k <= stages.size(); ++k)
@@ -102,11 +104,18 @@ double smoothStep(double u)
     return u * u * (3 - 2 * u);
 }
 
-WorldMoment stageAtRest(const EvaluatedScene& scene, int stage)
+WorldMoment stageAtRest(const EvaluatedScene& scene, int stage, const std::optional<Framing>& fixed)
 {
     const std::vector<Stage<double>>& stages = scene.pipeline.stages;
     return {drawnAt(stages, stage), canonicalOpacityAt(stage, stages.size()), ghostAt(stages, stage),
-            stageFraming(scene, stage)};
+            fixed ? *fixed : stageFraming(scene, stage)};
+}
+
+StageShown stageShown(const EvaluatedScene& scene, const WorldMoment& moment)
+{
+    StageShown shown(scene, moment.drawn, moment.canonicalOpacity);
+    shown.ghost = moment.ghost;
+    return shown;
 }
 
 StageMotion::StageMotion(const EvaluatedScene& scene, int from, int to)

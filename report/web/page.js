@@ -1,8 +1,9 @@
 // ViewPipe's page: draws the evaluated scene that the export wrote into
 // #scene-data. Every matrix, framing, label place and transition frame comes
-// from the app; this script only draws them, as the app's painter does. The
-// scene's numbers in the JSON view come from ViewPipe's core, compiled to
-// WebAssembly (ViewPipeCore).
+// from ViewPipe's core and report code, as the app's do: written by the
+// export, and made anew by the same code compiled to WebAssembly
+// (ViewPipeCore) when the scene is edited. This script only draws them and
+// handles input.
 (function () {
   'use strict';
   const page = JSON.parse(document.getElementById('scene-data').textContent);

@@ -14,6 +14,7 @@
 #include <vector>
 
 #include "viewpipe/evaluated_scene.hpp"
+#include "viewpipe/math_text.hpp"
 
 namespace viewpipe {
 
@@ -88,6 +89,10 @@ std::vector<std::string> wrapLines(const std::string& text, double width, const 
 // A text's size in pixels, set `pixels` high, bold or not, as the writer that
 // draws it measures it (line breaks taken).
 using FontMeasure = std::function<Vec2<double>(const std::string& text, double pixels, bool bold)>;
+// One line of the core's math runs (math_text.hpp) measured as its writer sets it; and a FontMeasure made of
+// that: text line by line, the lines 1.25 of the size apart, as the pictures set them.
+using RunsMeasure = std::function<Vec2<double>(const std::vector<MathRun>& runs, double pixels, bool bold)>;
+FontMeasure lineByLine(RunsMeasure measure);
 // Labels as every picture sets them: names bold at `fontSize`, minor ones (tick numbers) plain and smaller.
 LabelMeasure labelMeasure(const FontMeasure& measure, double fontSize);
 
@@ -129,6 +134,10 @@ struct PictureLayout {
     LegendLayout legendRows;                // zero size: no legend
 };
 PictureLayout layoutPicture(int width, int height, const PictureText& text, const FontMeasure& measure);
+// What the picture of a stage says: its caption, the scene's effects note and the legend of what it draws.
+PictureText stagePictureText(const StageShown& stage, const std::string& caption, double fontSize, double minFontSize);
+// The boxes no label may take: the caption's, the note's and the legend's (where it is shown).
+std::vector<Box2> textBoxes(const PictureLayout& layout);
 
 // The layout of the last picture asked for, made anew only when its size or
 // text changes: the painters ask before every frame.

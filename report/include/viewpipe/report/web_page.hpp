@@ -2,8 +2,9 @@
 
 // The scene as one self-contained web page: the evaluated scene's primitives,
 // labels and markers drawn by three.js through each stage's matrix, the
-// stepper with the app's transitions (their frames recorded by the painter),
-// the matrices typeset by KaTeX, a vertex traced on click. Scripts, styles
+// stepper with the app's transitions (world_view.hpp, as the painter moves),
+// the matrices typeset by KaTeX, a vertex traced on click, the scene edited
+// with the core compiled to WebAssembly (web/), which makes these anew. Scripts, styles
 // and fonts are inlined from Debian's libjs-three and libjs-katex: the page
 // makes no network request and opens from file://. No VTK, no Qt.
 

@@ -27,8 +27,8 @@ Framing framingOf(const EvaluatedScene& scene, const std::vector<Mat4<double>>& 
 // it (translations and rotations between them are seen moving, rotations'
 // sweeps included).
 Framing stageFraming(const EvaluatedScene& scene, int stage);
-// One framing that holds every stage (export --framing fixed).
-Framing fixedFraming(const EvaluatedScene& scene);
+// With `fixed` (export --framing fixed): one framing that holds every stage; else none.
+std::optional<Framing> fixedFraming(const EvaluatedScene& scene, bool fixed);
 
 // The canonical outline fades in while the last stage is reached.
 double canonicalOpacityAt(double position, std::size_t stageCount);
@@ -43,8 +43,10 @@ struct WorldMoment {
     std::optional<Mat4<double>> ghost;
     Framing framing;
 };
-// Stage k at rest.
-WorldMoment stageAtRest(const EvaluatedScene& scene, int stage);
+// Stage k at rest: framed on its own, or on `fixed` (export --framing fixed).
+WorldMoment stageAtRest(const EvaluatedScene& scene, int stage, const std::optional<Framing>& fixed = std::nullopt);
+// A moment as the pictures show it: its matrix, canonical outline, cut and ghost.
+StageShown stageShown(const EvaluatedScene& scene, const WorldMoment& moment);
 
 // One animated step between stages, as a function of progress s in [0, 1]:
 // the camera first widens to take in the whole motion, the picture then moves
@@ -59,7 +61,7 @@ public:
     int to() const { return to_; }
 
 private:
-    std::vector<Stage<double>> stages_; // a copy: the motion outlives no scene it was made from
+    std::vector<Stage<double>> stages_; // a copy: the motion may outlive the scene it was made from
     int from_, to_;
     Framing start_, sweep_, end_;
     std::optional<Mat4<double>> ghost_;
