@@ -354,8 +354,6 @@ std::vector<fs::path> exportStages(const std::shared_ptr<const EvaluatedScene>& 
                 char name[32];
                 std::snprintf(name, sizeof name, "%05d.png", frame++);
                 step("frame " + std::to_string(frame) + " of " + std::to_string(frameCount));
-                if (framing)
-                    painter.frameOn(*framing);
                 window->Render();
                 writeWindowPng(window, false, frames / name);
             };
@@ -363,7 +361,7 @@ std::vector<fs::path> exportStages(const std::shared_ptr<const EvaluatedScene>& 
                 const std::string caption = stageCaption(*evaluated, std::size_t(k), StageText::Heading);
                 painter.setCaptions(caption, "");
                 if (k > 0) { // the app's transition: the same motion and framing
-                    const StageMotion motion(*evaluated, k - 1, k);
+                    const StageMotion motion(*evaluated, k - 1, k, framing);
                     for (int f = 1; f <= options.fps; ++f) {
                         painter.showMoment(motion.at(double(f) / options.fps));
                         emit();

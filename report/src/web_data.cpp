@@ -322,21 +322,35 @@ WebPageViews webPageViews(const EvaluatedScene& scene, const WebViewOptions& o, 
         frame.cut = stageShown(scene, moment).cut;
         return frame;
     };
+    // Each stage's text first: a step's camera moves from the scene area the
+    // last stage's text leaves to the one the next stage's leaves, so that its
+    // last frame is the stage at rest.
+    std::vector<WorldMoment> moments;
+    std::vector<PictureLayout> layouts;
+    for (int k = 0; k <= n; ++k) {
+        moments.push_back(stageAtRest(scene, k, fixed));
+        const std::string caption = stageCaption(scene, std::size_t(k), StageText::Heading);
+        layouts.push_back(layoutPicture(o.width, o.height,
+                                        stagePictureText(stageShown(scene, moments.back()), caption, o.fontSize, o.minFontSize),
+                                        measure));
+    }
     for (int k = 0; k <= n; ++k) {
         if (onStage)
             onStage(k);
-        if (k > 0) { // the app's transition, frame by frame, framed in the area the last stage's text left
-            const StageMotion motion(scene, k - 1, k);
+        if (k > 0) { // the app's transition, frame by frame
+            const StageMotion motion(scene, k - 1, k, fixed);
+            const Box2 &before = layouts[std::size_t(k - 1)].scene, &after = layouts[std::size_t(k)].scene;
             std::vector<WebFrame> frames;
-            for (int f = 1; f <= kWebFramesPerStep; ++f)
-                frames.push_back(frameOf(motion.at(double(f) / kWebFramesPerStep)));
+            for (int f = 1; f <= kWebFramesPerStep; ++f) {
+                const double s = double(f) / kWebFramesPerStep, u = smoothStep(s);
+                fit.sceneArea = {before.min + u * (after.min - before.min), before.max + u * (after.max - before.max)};
+                frames.push_back(frameOf(motion.at(s)));
+            }
             views.transitions.push_back(std::move(frames));
         }
-        const WorldMoment moment = stageAtRest(scene, k, fixed);
+        const WorldMoment& moment = moments[std::size_t(k)];
         const StageShown shown = stageShown(scene, moment);
-        const std::string caption = stageCaption(scene, std::size_t(k), StageText::Heading);
-        PictureLayout layout =
-            layoutPicture(o.width, o.height, stagePictureText(shown, caption, o.fontSize, o.minFontSize), measure);
+        PictureLayout& layout = layouts[std::size_t(k)];
         fit.sceneArea = layout.scene;
         const WebFrame rest = frameOf(moment);
         FigureView view;

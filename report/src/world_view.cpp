@@ -118,11 +118,15 @@ StageShown stageShown(const EvaluatedScene& scene, const WorldMoment& moment)
     return shown;
 }
 
-StageMotion::StageMotion(const EvaluatedScene& scene, int from, int to)
+StageMotion::StageMotion(const EvaluatedScene& scene, int from, int to, const std::optional<Framing>& fixed)
     : stages_(scene.pipeline.stages), from_(from), to_(to)
 {
     const std::vector<Stage<double>>& stages = stages_;
     ghost_ = to == from + 1 ? ghostAt(stages, to) : std::nullopt; // where it starts, while it moves
+    if (fixed) {
+        start_ = sweep_ = end_ = *fixed;
+        return;
+    }
     start_ = stageFraming(scene, from);
     end_ = stageFraming(scene, to);
     if (framedTogether(stages, from) == framedTogether(stages, to)) {

@@ -199,6 +199,7 @@
   let shown = null; // the frame drawn: {frame, atRest, ghost}
   let animation = null;
   let playing = null;
+  let linkedStage = 0;
 
   function readFragment() {
     const values = new URLSearchParams(location.hash.slice(1));
@@ -206,14 +207,15 @@
       const value = Number(values.get(name));
       return values.has(name) && Number.isFinite(value) ? value : fallback;
     };
-    state.stage = Math.min(last, Math.max(0, Math.round(number('stage', 0))));
+    linkedStage = Math.max(0, Math.round(number('stage', 0))); // the linked scene may have more stages
+    state.stage = Math.min(last, linkedStage);
     state.step = lesson ? Math.min(lesson.steps.length - 1, Math.max(0, Math.round(number('step', 1) - 1))) : 0;
     state.yaw = number('yaw', 0);
     state.pitch = Math.max(-89, Math.min(89, number('pitch', 0)));
     state.zoom = Math.max(0.1, Math.min(20, number('zoom', 1)));
     state.figure = values.has('figure');
     body.classList.toggle('figure', state.figure);
-    if (!core) pendingLink = values.get('scene'); // for the core, once it is loaded
+    pendingLink = values.get('scene'); // for the core, once it is loaded
   }
   function writeFragment() {
     const values = new URLSearchParams();
@@ -675,7 +677,7 @@
   document.addEventListener('keydown', (event) => {
     if (event.altKey || event.ctrlKey || event.metaKey) return;
     if (event.target instanceof HTMLInputElement) return; // typing an answer
-    const onButton = event.target instanceof HTMLButtonElement;
+    const onButton = event.target instanceof Element && !!event.target.closest('button, summary, a');
     const orbit = event.shiftKey ? 10 : 0;
     switch (event.key) {
       case 'ArrowRight': if (orbit) changeView({ yaw: state.yaw + orbit }); else forward(); break;
@@ -757,13 +759,14 @@
       `Traced the vertex (${point.map(format).join(', ')}): its coordinates after each stage are in the table.`;
   }
 
+  // A link pasted into the page open: its scene (if the core has it) and its moment.
   window.addEventListener('hashchange', () => {
     const before = { stage: state.stage, step: state.step };
     readFragment();
     const wanted = { stage: state.stage, step: state.step };
     Object.assign(state, before);
     if (lesson) goToStep(wanted.step, true);
-    else goTo(wanted.stage);
+    else if (!(core && openLink())) goTo(wanted.stage);
   });
   window.addEventListener('resize', () => { drawWorld(); drawProjected(); });
 
@@ -771,21 +774,28 @@
   let core = null; // once loaded
   // The scene's numbers as the CLI prints them (`viewpipe pipeline SCENE --json`), or why the core refuses the scene.
   function showOutcome(outcome) {
-    document.getElementById('json-left-out').textContent = data.filesLeftOut;
-    if (!outcome.error) document.getElementById('pipeline-json').textContent = outcome.pipeline;
+    if (!outcome.error) {
+      document.getElementById('json-left-out').textContent = data.filesLeftOut;
+      document.getElementById('pipeline-json').textContent = outcome.pipeline;
+    }
     const error = document.getElementById('scene-error');
     error.textContent = outcome.error;
     error.hidden = !outcome.error;
   }
+  // The meshes a scene names, into the core's file system under their names.
+  function putFiles(files) {
+    for (const [path, bytes] of Object.entries(files)) {
+      const outcome = core.putFile(path, new Uint8Array(bytesOf(bytes)));
+      if (outcome.error) return outcome;
+    }
+    return { text: '', error: '' };
+  }
   function evaluateScene() {
     if (!core) return;
-    let outcome = { text: '', error: '' };
-    for (const [path, bytes] of Object.entries(data.files)) {
-      outcome = core.putFile(path, new Uint8Array(bytesOf(bytes)));
-      if (outcome.error) break;
-    }
+    let outcome = putFiles(data.files);
     if (!outcome.error && !data.filesLeftOut) outcome = core.pipelineJson(data.scene);
     showOutcome({ pipeline: outcome.text, error: outcome.error });
+    return outcome.text;
   }
 
   // Text as the page draws it (drawRuns), measured: the core places labels and lays out captions with this.
@@ -794,6 +804,7 @@
   function measureRuns(runs, px, bold) {
     const key = `${px} ${bold} ${JSON.stringify(runs)}`;
     if (!measured.has(key)) {
+      if (measured.size > 10000) measured.clear(); // a long session's edits each bring new numbers
       const weight = bold ? 'bold ' : '';
       measuring.font = weight + fontOf(px);
       const line = measuring.measureText('Ág');
@@ -815,7 +826,9 @@
   // The view's or the camera's fields, each a text field holding what was typed; every edit is evaluated by the
   // core, which refuses what it cannot use with the field's path and the reason (the last valid picture stays).
   const fields = document.getElementById('scene-fields');
-  const edits = { texts: [], at: -1 }; // the scene's valid texts, for undo and redo
+  // The scenes shown, for undo and redo: each as the core evaluated it ({page, pipeline}), its meshes with it.
+  const edits = { entries: [], at: -1 };
+  const kEditsKept = 100;
   let linkedScene = null; // a scene a link brought, once the core has taken it
   let pendingLink = null; // the link's scene until the core has read it
   const edited = () => edits.at > 0 || linkedScene !== null;
@@ -874,7 +887,13 @@
 
   // A field's edit: its typed text put into the scene as written (a JSON number stays that number, digit for
   // digit; other text goes as text, for the core to say what it needs), the scene evaluated.
-  const jsonNumber = /^-?(0|[1-9][0-9]*)(\.[0-9]+)?([eE][+-]?[0-9]+)?$/;
+  // A number as people type it (+5, .5, 5., 007), as JSON writes it, its digits kept; else null.
+  function jsonNumberOf(typed) {
+    const parts = /^([+-]?)([0-9]*)(?:\.([0-9]*))?([eE][+-]?[0-9]+)?$/.exec(typed);
+    if (!parts || !(parts[2] || parts[3])) return null;
+    const whole = parts[2].replace(/^0+(?=[0-9])/, '') || '0';
+    return (parts[1] === '-' ? '-' : '') + whole + (parts[3] ? '.' + parts[3] : '') + (parts[4] || '');
+  }
   function editField(input) {
     const scene = JSON.parse(data.scene);
     const path = JSON.parse(input.dataset.path);
@@ -882,8 +901,9 @@
     let holder = scene;
     for (const part of path.slice(0, -1)) holder = holder[part];
     const marker = '\u0000typed\u0000';
-    holder[path[path.length - 1]] = input.dataset.kind === 'number' && jsonNumber.test(typed) ? marker : typed;
-    changeScene(JSON.stringify(scene, null, 2).replace(JSON.stringify(marker), typed) + '\n', input);
+    const number = input.dataset.kind === 'number' ? jsonNumberOf(typed) : null;
+    holder[path[path.length - 1]] = number !== null ? marker : typed;
+    changeScene(JSON.stringify(scene, null, 2).replace(JSON.stringify(marker), number) + '\n', input);
   }
 
   function clearRefusals() {
@@ -922,42 +942,45 @@
     }
   }
 
-  // A scene's text, evaluated: shown when the core takes it (and kept for undo unless `fromHistory`), else
-  // refused beside its field with the last valid picture kept. `files`: the meshes it may name, if not the
-  // scene's shown. Whether it was taken.
-  function changeScene(text, input, fromHistory, files) {
+  // A scene's text, evaluated: shown and kept for undo when the core takes it, else refused beside its field
+  // with the last valid picture kept. `files`: the meshes it may name, if not the scene's shown. Whether it was taken.
+  function changeScene(text, input, files) {
     if (!core) return false;
+    clearRefusals();
     if (!files && data.filesLeftOut) { // the core cannot read meshes the page does not hold
-      clearRefusals();
       showRefusal("This page left the scene's meshes out: open the scene with its meshes to change it here.", null);
+      showEdits();
       return false;
     }
     const outcome = evaluateText(text, files || data.files, files ? '' : data.filesLeftOut);
-    clearRefusals();
-    showOutcome(outcome);
     if (outcome.error) {
+      showOutcome(outcome);
       showRefusal(outcome.error, input);
       showEdits();
       return false;
     }
+    edits.entries.splice(edits.at + 1, Infinity, { page: outcome.page, pipeline: outcome.pipeline });
+    if (edits.entries.length > kEditsKept) edits.entries.shift();
+    edits.at = edits.entries.length - 1;
+    showEntry(edits.entries[edits.at], input);
+    return true;
+  }
+  // A scene the core has evaluated, shown at the stage shown (or `stage`).
+  function showEntry(entry, input, stage = state.stage) {
+    clearRefusals();
     const index = shownScene;
-    page.scenes[index] = outcome.page;
-    document.getElementById('title').textContent = outcome.page.title;
-    document.title = `${outcome.page.title} · ViewPipe`;
+    page.scenes[index] = entry.page;
+    document.getElementById('title').textContent = entry.page.title;
+    document.title = `${entry.page.title} · ViewPipe`;
     shownScene = -1;
-    const stage = state.stage;
     useScene(index, true);
-    if (!fromHistory) {
-      edits.texts.splice(edits.at + 1, Infinity, text);
-      edits.at = edits.texts.length - 1;
-    }
+    showOutcome({ pipeline: entry.pipeline, error: '' });
     const focused = input && input === document.activeElement ? input.dataset.path : null;
     buildFields();
     if (focused) fields.querySelector(`input[data-path='${focused}']`).focus();
     showEdits();
     state.stage = -1;
     goTo(Math.min(stage, last), false);
-    return true;
   }
   function undo() {
     // A refused value is undone first, alone: the fields show the scene shown again.
@@ -970,17 +993,19 @@
     }
     if (edits.at <= 0) return;
     edits.at -= 1;
-    changeScene(edits.texts[edits.at], null, true);
+    putFiles(edits.entries[edits.at].page.files); // its meshes, for the edits that follow
+    showEntry(edits.entries[edits.at], null);
   }
   function redo() {
-    if (edits.at >= edits.texts.length - 1) return;
+    if (edits.at >= edits.entries.length - 1) return;
     edits.at += 1;
-    changeScene(edits.texts[edits.at], null, true);
+    putFiles(edits.entries[edits.at].page.files);
+    showEntry(edits.entries[edits.at], null);
   }
   const refused = () => !!fields.querySelector('[aria-invalid]') || !document.getElementById('editor-error').hidden;
   function showEdits() {
     document.getElementById('undo').disabled = edits.at <= 0 && !refused();
-    document.getElementById('redo').disabled = edits.at >= edits.texts.length - 1;
+    document.getElementById('redo').disabled = edits.at >= edits.entries.length - 1;
     document.getElementById('link-note').textContent = Object.keys(data.files).length || data.filesLeftOut
       ? 'This scene names mesh files, too large for a link: save it instead.' : '';
   }
@@ -1002,23 +1027,29 @@
     link.href = URL.createObjectURL(new Blob([data.scene], { type: 'application/json' }));
     link.download = (data.title || 'scene').replace(/[^A-Za-z0-9._-]+/g, '-').replace(/^-+|-+$/g, '').toLowerCase() + '.json';
     link.click();
-    URL.revokeObjectURL(link.href);
+    setTimeout(() => URL.revokeObjectURL(link.href), 10000); // once the download has begun
   });
 
   // Files opened or dropped: meshes go into the core's file system under their names; a scene (JSON) among them
   // is evaluated with them, and meshes alone are added to the scene shown. The core's readers refuse what they
   // cannot read, with the CLI's messages.
   const meshFile = /\.(obj|ply|stl)$/i;
+  let filesBeforeCore = null; // opened or dropped while the core loads: opened once it has
   async function openFiles(list) {
-    if (!core || lesson) return;
+    if (lesson) return;
     const files = [...list];
+    if (!core) {
+      filesBeforeCore = files;
+      return;
+    }
+    clearRefusals();
     const scene = files.find((f) => /\.json$/i.test(f.name));
     const meshes = files.filter((f) => meshFile.test(f.name));
     const kept = {};
     for (const mesh of meshes) {
       const bytes = new Uint8Array(await mesh.arrayBuffer());
       const outcome = core.putFile(mesh.name, bytes);
-      if (outcome.error) return showRefusal(`${mesh.name}: ${outcome.error}`, null);
+      if (outcome.error) return refuseFiles(`${mesh.name}: ${outcome.error}`);
       let binary = '';
       for (let k = 0; k < bytes.length; k += 0x8000) binary += String.fromCharCode(...bytes.subarray(k, k + 0x8000));
       kept[mesh.name] = btoa(binary);
@@ -1033,9 +1064,13 @@
         if (!shown.objects.some((o) => o.type === 'mesh' && o.path === mesh.name)) shown.objects.push({ type: 'mesh', path: mesh.name });
       text = JSON.stringify(shown, null, 2) + '\n';
     } else {
-      return showRefusal('Open a scene (.json) or meshes (.obj, .ply, .stl).', null);
+      return refuseFiles('Open a scene (.json) or meshes (.obj, .ply, .stl).');
     }
-    changeScene(text, null, false, Object.assign({}, scene ? {} : data.files, kept));
+    changeScene(text, null, Object.assign({}, scene ? {} : data.files, kept));
+  }
+  function refuseFiles(error) {
+    showRefusal(error, null);
+    showEdits();
   }
   const picker = document.getElementById('open-files');
   document.getElementById('open-scene').addEventListener('click', () => picker.click());
@@ -1058,28 +1093,37 @@
     return new TextDecoder('utf-8', { fatal: true }).decode(Uint8Array.from(binary, (c) => c.charCodeAt(0)));
   }
   function linkedSceneText() {
-    if (pendingLink) return pendingLink;
+    if (pendingLink && !core) return pendingLink;
     return !lesson && edited() && !Object.keys(data.files).length && !data.filesLeftOut ? base64url(data.scene) : null;
+  }
+
+  // The scene a link holds, if it is not the one shown: shown at the link's stage. Whether it was taken.
+  function openLink() {
+    const linked = pendingLink;
+    if (!linked || linked === linkedSceneText()) return false;
+    let text = null;
+    try {
+      text = fromBase64url(linked);
+    } catch (error) {
+      clearRefusals();
+      refuseFiles("scene: the link's scene is not UTF-8 text in base64url");
+      return false;
+    }
+    if (!changeScene(text, null)) return false;
+    linkedScene = text;
+    goTo(linkedStage);
+    return true;
   }
 
   ViewPipeCore().then((module) => {
     core = module;
-    evaluateScene();
+    const pipeline = evaluateScene();
     if (!lesson) {
-      edits.texts = [data.scene];
+      edits.entries = [{ page: data, pipeline }];
       edits.at = 0;
-      const linked = pendingLink;
-      pendingLink = null;
-      if (linked) {
-        let text = null;
-        try {
-          text = fromBase64url(linked);
-        } catch (error) {
-          showOutcome({ error: "scene: the link's scene is not UTF-8 text in base64url" });
-        }
-        if (text !== null && changeScene(text, null)) linkedScene = text;
-      }
+      openLink();
       showEdits();
+      if (filesBeforeCore) openFiles(filesBeforeCore);
     }
     body.dataset.core = '1';
   });

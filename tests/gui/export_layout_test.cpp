@@ -204,6 +204,26 @@ TEST(ExportLayout, ThePageSeesEveryStageAsThePictureDoes)
     }
 }
 
+// A step on the page ends where the stage it reaches rests: no snap when its
+// caption and legend take their place, with the framing fixed or not.
+TEST(ExportLayout, ThePagesStepsEndAtTheStagesAtRest)
+{
+    for (const std::string name : {"house.json", "clipping-eye-plane.json"})
+        for (const bool fixed : {false, true}) {
+            const auto scene = evaluateScene(loadScene(fs::path(VIEWPIPE_DATA_DIR) / "scenes" / name));
+            const WebPageViews views = recordWebViews(scene, 1280, 720, 1, Theme::Light, fixed, [](const std::string&) {});
+            ASSERT_EQ(views.transitions.size() + 1, views.stages.size());
+            for (std::size_t k = 0; k < views.transitions.size(); ++k) {
+                const std::string at = name + (fixed ? " fixed" : "") + " step to " + std::to_string(k + 1);
+                const WebFrame &last = views.transitions[k].back(), &rest = views.stages[k + 1].rest;
+                EXPECT_LT((last.view - rest.view).cwiseAbs().maxCoeff(), 1e-12 * rest.view.cwiseAbs().maxCoeff()) << at;
+                EXPECT_LT((last.projection - rest.projection).cwiseAbs().maxCoeff(), 1e-12 * rest.projection.cwiseAbs().maxCoeff())
+                    << at << "\n" << last.projection << "\n\n" << rest.projection;
+                EXPECT_LT((last.shown - rest.shown).cwiseAbs().maxCoeff(), 1e-12 * rest.shown.cwiseAbs().maxCoeff()) << at;
+            }
+        }
+}
+
 } // namespace
 } // namespace viewpipe::gui
 

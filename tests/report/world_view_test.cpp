@@ -121,8 +121,11 @@ TEST(WorldView, AStepStartsAndEndsAtTheStagesAtRestAndNeverJumps)
                 const std::string at = name + " " + std::to_string(from) + " -> " + std::to_string(to);
                 EXPECT_LT(relativeError(start.drawn, first.drawn), 1e-12) << at;
                 EXPECT_LT(relativeError(end.drawn, last.drawn), 1e-12) << at;
-                EXPECT_LT((start.framing.center - first.framing.center).norm(), 1e-12 * first.framing.radius) << at;
-                EXPECT_NEAR(end.framing.radius, last.framing.radius, 1e-12 * last.framing.radius) << at;
+                for (const auto& [moment, rest] : {std::pair{start, first}, std::pair{end, last}}) {
+                    EXPECT_LT((moment.framing.center - rest.framing.center).norm(), 1e-12 * rest.framing.radius) << at;
+                    EXPECT_NEAR(moment.framing.radius, rest.framing.radius, 1e-12 * rest.framing.radius) << at;
+                }
+                EXPECT_EQ(start.canonicalOpacity, first.canonicalOpacity) << at;
                 EXPECT_EQ(end.canonicalOpacity, last.canonicalOpacity) << at;
                 // Smooth phases of at least a fifth of the step each: a hundredth of it changes the
                 // framing by at most 1.5 / 0.2 / 100 of the distance between its phases' framings
@@ -136,6 +139,21 @@ TEST(WorldView, AStepStartsAndEndsAtTheStagesAtRestAndNeverJumps)
                     EXPECT_LE(std::abs(a.radius - b.radius), 0.075 * largest) << at << " at " << f;
                 }
             }
+    }
+}
+
+TEST(WorldView, AStepWithFixedFramingHoldsItsCamera)
+{
+    const auto scene = builtIn("house.json");
+    const std::optional<Framing> fixed = fixedFraming(*scene, true);
+    ASSERT_TRUE(fixed);
+    for (int k = 1; k <= int(scene->pipeline.stages.size()); ++k) {
+        const StageMotion motion(*scene, k - 1, k, fixed);
+        for (int f = 0; f <= 10; ++f) {
+            const Framing framing = motion.at(f / 10.0).framing;
+            EXPECT_EQ(framing.center, fixed->center) << k << " at " << f;
+            EXPECT_EQ(framing.radius, fixed->radius) << k << " at " << f;
+        }
     }
 }
 

@@ -480,9 +480,10 @@ TEST_F(WebPage, EditsTheSceneWithTheCoreRefusesBesideTheFieldUndoesAndLinksIt)
     ASSERT_TRUE(browser.waitFor("document.body.dataset.core === '1'")) << "the core never loaded";
     const std::string json = "document.getElementById('pipeline-json').textContent";
 
-    // A number typed: the core computes the scene anew, as the CLI does for the same file; the stage stays.
+    // A number typed as people type it: the core computes the scene anew, as the CLI does for the same file
+    // (with 20); the stage stays.
     const QImage house3 = worldView(browser);
-    typeInto(browser, "view.prp[0]", "20");
+    typeInto(browser, "view.prp[0]", "+20.");
     ASSERT_TRUE(browser.waitFor(json + ".length > 0 && " + json + " + '\\n' !== " + nlohmann::json(original.output).dump()));
     EXPECT_EQ(browser.evaluate(json).get<std::string>() + "\n", expected.output);
     EXPECT_EQ(browser.evaluate("document.body.dataset.stage"), "3");
@@ -534,6 +535,20 @@ TEST_F(WebPage, EditsTheSceneWithTheCoreRefusesBesideTheFieldUndoesAndLinksIt)
     EXPECT_EQ(opened.evaluate("document.body.dataset.stage"), "3");
     EXPECT_EQ(opened.evaluate("document.querySelector(`input[aria-label='view.prp[0]']`).value"), "20");
     EXPECT_EQ(worldView(opened), moved3) << "the link shows the edited scene's stage as the edit did";
+
+    // A link pasted into the page open: its scene and its stage.
+    const std::string houseLink = QByteArray::fromStdString(house.str())
+                                      .toBase64(QByteArray::Base64UrlEncoding | QByteArray::OmitTrailingEquals)
+                                      .toStdString();
+    opened.evaluate("location.hash = '#stage=2&scene=" + houseLink + "'");
+    ASSERT_TRUE(opened.waitFor(json + " + '\\n' === " + nlohmann::json(original.output).dump()));
+    EXPECT_EQ(opened.evaluate("document.body.dataset.stage"), "2");
+    EXPECT_EQ(opened.evaluate("document.querySelector(`input[aria-label='view.prp[0]']`).value"), "8");
+
+    // Space on the Scene panel's heading opens or closes the panel; it does not play.
+    opened.evaluate("document.querySelector('#scene-editor summary').focus()");
+    opened.press(" ", 32);
+    EXPECT_EQ(opened.evaluate("document.getElementById('play').textContent"), "Play");
     for (const std::string& problem : opened.problems())
         ADD_FAILURE() << problem;
 }
@@ -577,6 +592,19 @@ TEST_F(WebPage, OpensAndDropsScenesAndMeshesReadByTheCore)
     ASSERT_TRUE(browser.waitFor("document.getElementById('title').textContent === 'A tetrahedron'"));
     EXPECT_EQ(browser.evaluate(json).get<std::string>() + "\n", expected.output);
     const QImage tetrahedron = worldView(browser);
+    const std::string linkNote = "document.getElementById('link-note').textContent";
+    EXPECT_NE(browser.evaluate(linkNote).get<std::string>(), "") << "a scene with meshes is saved, not linked";
+
+    // Undone, the house comes back with its own link; redone, the tetrahedron with its mesh.
+    const std::string house = viewpipe({"pipeline", QString::fromStdString(kData + "/scenes/house.json"), "--json"}).output;
+    browser.evaluate("document.activeElement.blur()");
+    pressWithControl(browser, "z", 90);
+    ASSERT_TRUE(browser.waitFor(json + " + '\\n' === " + nlohmann::json(house).dump()));
+    EXPECT_EQ(browser.evaluate(linkNote), "");
+    pressWithControl(browser, "y", 89);
+    ASSERT_TRUE(browser.waitFor(json + " + '\\n' === " + nlohmann::json(expected.output).dump()));
+    EXPECT_NE(browser.evaluate(linkNote).get<std::string>(), "");
+    EXPECT_EQ(worldView(browser), tetrahedron);
 
     // A hostile mesh dropped: refused with the CLI's message, the page alive, the picture and numbers kept.
     browser.evaluate(R"((() => {

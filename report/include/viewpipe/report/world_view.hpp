@@ -52,10 +52,11 @@ StageShown stageShown(const EvaluatedScene& scene, const WorldMoment& moment);
 // the camera first widens to take in the whole motion, the picture then moves
 // with the interpolated cumulative matrix under a still camera (so the motion
 // reads against the screen), and the camera finally closes in on the result.
-// Nothing jumps: every phase starts where the last one ended.
+// Nothing jumps: every phase starts where the last one ended. With `fixed`
+// (export --framing fixed) the camera holds that framing throughout.
 class StageMotion {
 public:
-    StageMotion(const EvaluatedScene& scene, int from, int to);
+    StageMotion(const EvaluatedScene& scene, int from, int to, const std::optional<Framing>& fixed = std::nullopt);
     WorldMoment at(double s) const;
     int from() const { return from_; }
     int to() const { return to_; }
