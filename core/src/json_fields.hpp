@@ -17,7 +17,8 @@ namespace viewpipe::fields {
 
 using Json = nlohmann::json;
 
-std::string typeName(const Json& j);
+// What a value is, for "(got ...)": a text quoted (shortened), a number as written, else its kind.
+std::string found(const Json& j);
 std::string child(const std::string& parent, const std::string& key);
 std::string element(const std::string& parent, std::size_t index);
 // An object with only `allowed` keys and every `required` one.

@@ -24,9 +24,18 @@ namespace viewpipe {
 
 namespace fields {
 
-std::string typeName(const Json& j)
+std::string found(const Json& j)
 {
-    return j.type_name();
+    if (j.is_string()) {
+        const std::string text = j.get<std::string>();
+        std::size_t cut = std::min<std::size_t>(text.size(), 24);
+        while (cut < text.size() && (text[cut] & 0xC0) == 0x80)
+            --cut; // at a character's first byte
+        return "the text \"" + text.substr(0, cut) + (cut < text.size() ? "...\"" : "\"");
+    }
+    if (j.is_number() || j.is_boolean() || j.is_null())
+        return j.dump();
+    return j.is_array() ? "an array" : "an object";
 }
 
 std::string child(const std::string& parent, const std::string& key)
@@ -43,7 +52,7 @@ void requireObject(const Json& j, const std::string& path, const std::set<std::s
                    const std::set<std::string>& required)
 {
     if (!j.is_object())
-        throw InputError(path.empty() ? "$" : path, "must be an object (got " + typeName(j) + ")");
+        throw InputError(path.empty() ? "$" : path, "must be an object (got " + found(j) + ")");
     for (const auto& item : j.items())
         if (!allowed.count(item.key())) {
             std::string known;
@@ -59,7 +68,7 @@ void requireObject(const Json& j, const std::string& path, const std::set<std::s
 double readNumber(const Json& j, const std::string& path)
 {
     if (!j.is_number())
-        throw InputError(path, "must be a number (got " + typeName(j) + ")");
+        throw InputError(path, "must be a number (got " + found(j) + ")");
     const double x = j.get<double>();
     if (!std::isfinite(x))
         throw InputError(path, "must be a finite number");
@@ -85,7 +94,7 @@ Vec3<double> readVec3(const Json& j, const std::string& path)
 std::string readString(const Json& j, const std::string& path)
 {
     if (!j.is_string())
-        throw InputError(path, "must be a string (got " + typeName(j) + ")");
+        throw InputError(path, "must be a string (got " + found(j) + ")");
     return j.get<std::string>();
 }
 
@@ -232,7 +241,7 @@ double readFar(const Json& j, const std::string& path)
     if (j.is_string())
         throw InputError(path, "must be a number or \"infinity\" (got \"" + j.get<std::string>() + "\")");
     if (!j.is_number())
-        throw InputError(path, "must be a number or \"infinity\" (got " + typeName(j) + ")");
+        throw InputError(path, "must be a number or \"infinity\" (got " + found(j) + ")");
     return readNumber(j, path);
 }
 
@@ -265,7 +274,7 @@ gl::ProjectionSpec<double> readGlProjection(const Json& j)
 {
     const std::string path = "camera.projection";
     if (!j.is_object())
-        throw InputError(path, "must be an object (got " + typeName(j) + ")");
+        throw InputError(path, "must be an object (got " + found(j) + ")");
     if (!j.contains("type"))
         throw InputError(path + ".type", "is missing");
     const std::string type = readString(j["type"], path + ".type");
@@ -332,7 +341,7 @@ gl::Camera<double> readCamera(const Json& j)
 SceneObject readObject(const Json& j, const std::string& path, const std::filesystem::path& baseDir)
 {
     if (!j.is_object())
-        throw InputError(path, "must be an object (got " + typeName(j) + ")");
+        throw InputError(path, "must be an object (got " + found(j) + ")");
     if (!j.contains("type"))
         throw InputError(path + ".type", "is missing");
     const std::string type = readString(j["type"], path + ".type");
@@ -382,7 +391,7 @@ void readEffect(const Json& j, const std::string& path, EffectList& effects)
     EffectList next = withEffect(effects, effect, true);
     const std::string where = path + "." + name;
     if (parameters && !parameters->is_object())
-        throw InputError(where, "parameters must be an object (got " + typeName(*parameters) + ")");
+        throw InputError(where, "parameters must be an object (got " + found(*parameters) + ")");
     std::vector<std::string> accepted;
     if (effect == EffectKind::Depth)
         accepted = {"bits", "format", "reversed"};
@@ -692,14 +701,14 @@ Scene parseScene(const std::string& text, const std::filesystem::path& baseDir)
     if (root.contains("objects")) {
         const Json& objects = root["objects"];
         if (!objects.is_array())
-            throw InputError("objects", "must be an array (got " + typeName(objects) + ")");
+            throw InputError("objects", "must be an array (got " + found(objects) + ")");
         for (std::size_t i = 0; i < objects.size(); ++i)
             scene.objects.push_back(readObject(objects[i], element("objects", i), baseDir));
     }
     if (root.contains("effects")) {
         const Json& effects = root["effects"];
         if (!effects.is_array())
-            throw InputError("effects", "must be an array (got " + typeName(effects) + ")");
+            throw InputError("effects", "must be an array (got " + found(effects) + ")");
         for (std::size_t i = 0; i < effects.size(); ++i)
             readEffect(effects[i], element("effects", i), scene.effects);
     }

@@ -158,10 +158,11 @@ Basis<T> orthonormalBasis(const Vec3<T>& normal, const Vec3<T>& up, const std::s
     const T angle = angleBetweenLines(up, normal);
     if (!(angle >= minUpAngle<T>())) {
         using std::acos;
-        const T degrees = angle * T(180) / acos(T(-1));
-        throw InputError(upField, "is parallel to " + normalField + " (angle " + formatNumber(degrees) +
-                                      " degrees; at least " + formatNumber(minUpAngle<T>()) +
-                                      " rad is needed to fix the up direction)");
+        const T degreesPerRadian = T(180) / acos(T(-1));
+        throw InputError(upField, "is parallel to " + normalField + " (angle " + formatNumber(angle * degreesPerRadian) +
+                                      " degrees; it must be at least " +
+                                      formatNumber(minUpAngle<T>() * degreesPerRadian) +
+                                      " degrees from it to fix which way is up)");
     }
     const Vec3<T> side = accurateCross(powerOfTwoNormalized(up), powerOfTwoNormalized(normal));
     Basis<T> basis;
