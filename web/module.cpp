@@ -14,6 +14,7 @@
 
 #include "viewpipe/error.hpp"
 #include "viewpipe/evaluated_scene.hpp"
+#include "viewpipe/lesson.hpp"
 #include "viewpipe/math_text.hpp"
 #include "viewpipe/report/report.hpp"
 #include "viewpipe/report/web_page.hpp"
@@ -116,6 +117,37 @@ Evaluation evaluate(const std::string& sceneText, const std::string& options, co
     });
 }
 
+// A student's answer to a lesson's question (`question` as the lesson file
+// holds it, about `sceneText`), checked as the app checks it. `typed`: the
+// kind's field, {"where": [x, y, z]} or {"entry": n} as typed text, {"choice":
+// k}, {"inside": b}, {"signW": s} or {"order": [k, ...]}. Gives {"right": b,
+// "answer": a} (a as the results hold it), or the error "unreadable" when the
+// text typed is not a number.
+Outcome checkAnswer(const std::string& sceneText, const std::string& question, const std::string& typed)
+{
+    return guarded([&] {
+        const Question q = parseQuestion(question, parseScene(sceneText, kSceneFolder));
+        const nlohmann::json given = nlohmann::json::parse(typed);
+        Answer answer;
+        auto number = [](const nlohmann::json& text) {
+            const std::optional<double> x = text.is_string() ? parseTypedNumber(text.get<std::string>()) : std::nullopt;
+            if (!x)
+                throw InputError("answer", "unreadable");
+            return *x;
+        };
+        if (given.contains("where"))
+            answer.where = {number(given["where"].at(0)), number(given["where"].at(1)), number(given["where"].at(2))};
+        if (given.contains("entry"))
+            answer.entry = number(given["entry"]);
+        answer.choice = given.value("choice", -1);
+        answer.inside = given.value("inside", false);
+        answer.signW = given.value("signW", 0);
+        answer.order = given.value("order", std::vector<int>{});
+        const nlohmann::json checked = {{"right", isRight(q, answer)}, {"answer", nlohmann::json::parse(answerToJson(q, answer))}};
+        return Outcome{checked.dump(), ""};
+    });
+}
+
 } // namespace
 } // namespace viewpipe::web
 
@@ -130,4 +162,5 @@ EMSCRIPTEN_BINDINGS(viewpipe)
     emscripten::function("putFile", &putFile);
     emscripten::function("pipelineJson", &pipelineJson);
     emscripten::function("evaluate", &evaluate);
+    emscripten::function("checkAnswer", &checkAnswer);
 }

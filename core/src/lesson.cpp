@@ -34,7 +34,7 @@ int readIndex(const Json& j, const std::string& path, int low, int high)
 {
     const std::string range = "must be a whole number from " + std::to_string(low) + " to " + std::to_string(high);
     if (!j.is_number())
-        throw InputError(path, range + " (got " + typeName(j) + ")");
+        throw InputError(path, range + " (got " + found(j) + ")");
     const double k = j.get<double>(); // 2.0 is 2; 2^64 is out of range, not -1
     if (!(k >= low && k <= high) || k != std::floor(k))
         throw InputError(path, range + " (got " + j.dump() + ")");
@@ -67,7 +67,7 @@ Scene readStepScene(const Json& j, const std::string& path, const std::filesyste
         }
     }
     if (!j.is_object())
-        throw InputError(path, "must be a scene file's path or a scene object (got " + typeName(j) + ")");
+        throw InputError(path, "must be a scene file's path or a scene object (got " + found(j) + ")");
     try {
         Scene scene = parseScene(j.dump(), baseDir);
         if (scene.name.empty())
@@ -81,7 +81,7 @@ Scene readStepScene(const Json& j, const std::string& path, const std::filesyste
 Question readQuestion(const Json& j, const std::string& path, const Pipeline<double>& pipeline)
 {
     if (!j.is_object())
-        throw InputError(path, "must be an object (got " + typeName(j) + ")");
+        throw InputError(path, "must be an object (got " + found(j) + ")");
     if (!j.contains("kind"))
         throw InputError(child(path, "kind"), "is missing");
     const std::string kindName = readString(j["kind"], child(path, "kind"));
@@ -92,7 +92,7 @@ Question readQuestion(const Json& j, const std::string& path, const Pipeline<dou
                                               "choice (got \"" + kindName + "\")");
     Question q;
     q.kind = named->first;
-    const std::set<std::string> common = {"kind", "prompt", "explanation", "answer"};
+    const std::set<std::string> common = {"kind", "prompt", "explanation", "answer", "tries"};
     auto keys = [&](std::set<std::string> own, std::set<std::string> required) {
         own.insert(common.begin(), common.end());
         required.insert({"kind", "prompt"});
@@ -119,6 +119,8 @@ Question readQuestion(const Json& j, const std::string& path, const Pipeline<dou
         q.stage = readIndex(j["stage"], child(path, "stage"), 1, n);
     if (j.contains("tolerance"))
         q.tolerance = readIn(j["tolerance"], child(path, "tolerance"), 1e-9, 1);
+    if (j.contains("tries"))
+        q.tries = readIndex(j["tries"], child(path, "tries"), 1, 10);
     for (const Stage<double>& stage : pipeline.stages)
         if (q.kind == QuestionKind::WhichStage || q.kind == QuestionKind::Order)
             q.choices.push_back(stage.symbol);
@@ -148,7 +150,7 @@ Question readQuestion(const Json& j, const std::string& path, const Pipeline<dou
         q.inside = trace.inside;
         if (answer) {
             if (!answer->is_boolean())
-                throw InputError(answerPath, "must be true or false (got " + typeName(*answer) + ")");
+                throw InputError(answerPath, "must be true or false (got " + found(*answer) + ")");
             if (answer->get<bool>() != q.inside)
                 throw InputError(answerPath, std::string("is ") + (answer->get<bool>() ? "true" : "false") +
                                                  " but the point is " + (q.inside ? "inside" : "outside"));
@@ -212,7 +214,7 @@ Question readQuestion(const Json& j, const std::string& path, const Pipeline<dou
 std::set<Element> readElements(const Json& j, const std::string& path, bool* labels)
 {
     if (!j.is_array())
-        throw InputError(path, "must be an array of element names (got " + typeName(j) + ")");
+        throw InputError(path, "must be an array of element names (got " + found(j) + ")");
     std::set<Element> elements;
     for (std::size_t k = 0; k < j.size(); ++k) {
         const std::string name = readString(j[k], element(path, k));
@@ -252,7 +254,7 @@ void readShown(const Json& j, const std::string& path, LessonStep& step, const P
             if (pipeline.stages[std::size_t(stage - 1)].divides)
                 throw InputError(list, "stage " + std::to_string(stage) + " is the divide, which has no matrix");
             if (!h["entries"].is_array())
-                throw InputError(list, "must be an array of [row, column] pairs (got " + typeName(h["entries"]) + ")");
+                throw InputError(list, "must be an array of [row, column] pairs (got " + found(h["entries"]) + ")");
             for (std::size_t k = 0; k < h["entries"].size(); ++k) {
                 const Json& entry = h["entries"][k];
                 const std::string item = element(list, k);
@@ -419,7 +421,29 @@ Json questionJson(const Question& q)
     }
     if (!q.explanation.empty())
         j["explanation"] = q.explanation;
+    if (q.tries != Question().tries)
+        j["tries"] = q.tries;
     return j;
+}
+
+Json givenJson(const Question& q, const Answer& a)
+{
+    switch (q.kind) {
+    case QuestionKind::Where: return vecJson(a.where);
+    case QuestionKind::Inside: return a.inside;
+    case QuestionKind::SignW: return a.signW > 0 ? "positive" : a.signW < 0 ? "negative" : "zero";
+    case QuestionKind::WhichStage:
+        return a.choice >= 0 && a.choice < int(q.choices.size()) ? Json(q.choices[std::size_t(a.choice)]) : Json();
+    case QuestionKind::Order: {
+        Json given = Json::array();
+        for (int c : a.order)
+            given.push_back(q.choices.at(std::size_t(c)));
+        return given;
+    }
+    case QuestionKind::Entry: return a.entry;
+    case QuestionKind::Choice: return a.choice;
+    }
+    return Json();
 }
 
 } // namespace
@@ -477,8 +501,13 @@ std::optional<double> parseTypedNumber(const std::string& typed)
     return *top / *bottom;
 }
 
+std::string answerToJson(const Question& question, const Answer& answer)
+{
+    return givenJson(question, answer).dump();
+}
+
 std::string resultsToJson(const Lesson& lesson, const std::vector<std::optional<Answer>>& answers,
-                          const std::vector<bool>& revealed)
+                          const std::vector<bool>& revealed, const std::vector<int>& tries)
 {
     Json entries = Json::array();
     for (std::size_t k = 0; k < lesson.steps.size() && k < answers.size(); ++k) {
@@ -489,23 +518,10 @@ std::string resultsToJson(const Lesson& lesson, const std::vector<std::optional<
                                {"correct", false}, {"revealed", true}});
         if (!q || !a)
             continue;
-        Json given;
-        switch (q->kind) {
-        case QuestionKind::Where: given = vecJson(a->where); break;
-        case QuestionKind::Inside: given = a->inside; break;
-        case QuestionKind::SignW: given = a->signW > 0 ? "positive" : a->signW < 0 ? "negative" : "zero"; break;
-        case QuestionKind::WhichStage:
-            given = a->choice >= 0 && a->choice < int(q->choices.size()) ? Json(q->choices[std::size_t(a->choice)]) : Json();
-            break;
-        case QuestionKind::Order:
-            given = Json::array();
-            for (int c : a->order)
-                given.push_back(q->choices.at(std::size_t(c)));
-            break;
-        case QuestionKind::Entry: given = a->entry; break;
-        case QuestionKind::Choice: given = a->choice; break;
-        }
-        entries.push_back({{"step", k + 1}, {"kind", questionKindName(q->kind)}, {"answer", given}, {"correct", isRight(*q, *a)}});
+        Json entry = {{"step", k + 1}, {"kind", questionKindName(q->kind)}, {"answer", givenJson(*q, *a)}, {"correct", isRight(*q, *a)}};
+        if (k < tries.size())
+            entry["tries"] = tries[k];
+        entries.push_back(entry);
     }
     return Json{{"lesson", lesson.title}, {"answers", entries}}.dump(2) + "\n";
 }

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cctype>
+#include <cstring>
 #include <map>
 #include <utility>
 
@@ -315,6 +316,37 @@ std::string mathPlainText(const std::string& text)
                               : (run.level < 0 ? "_" : "^") +
                                     (run.text.find_first_of(" +-/") == std::string::npos ? run.text : "(" + run.text + ")");
     return out;
+}
+
+std::string mathSpokenText(const std::string& text)
+{
+    std::string out;
+    for (const MathRun& run : mathRuns(text)) {
+        if (run.level == 0)
+            out += run.text;
+        else if (run.level < 0)
+            out += " sub " + run.text + " ";
+        else if (run.text == "2")
+            out += " squared ";
+        else if (run.text == "3")
+            out += " cubed ";
+        else if (run.text == "−1")
+            out += " inverse ";
+        else
+            out += " to the power " + run.text + " ";
+    }
+    // One space between words, none before punctuation.
+    std::string spoken;
+    for (std::size_t k = 0; k < out.size(); ++k) {
+        const char c = out[k];
+        if (c == ' ' && (spoken.empty() || spoken.back() == ' ' || spoken.back() == '(' ||
+                         (k + 1 < out.size() && std::strchr(" ,.;:)", out[k + 1]))))
+            continue;
+        spoken += c;
+    }
+    while (!spoken.empty() && spoken.back() == ' ')
+        spoken.pop_back();
+    return spoken;
 }
 
 std::vector<std::string> mathTextWords(const std::string& line)

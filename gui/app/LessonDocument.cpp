@@ -111,12 +111,15 @@ bool LessonDocument::isAsking() const
 
 bool LessonDocument::check(const Answer& answer)
 {
-    const bool right = isRight(*currentStep().question, answer);
-    if (!answers_[std::size_t(step_)]) { // the first answer counts; the revealed one cannot change it
-        answers_[std::size_t(step_)] = answer;
-        unsavedAnswers_ = true;
-    }
-    revealed_[std::size_t(step_)] = true;
+    if (!isAsking()) // the answer shown cannot change what was given
+        return false;
+    const Question& question = *currentStep().question;
+    const std::size_t k = std::size_t(step_);
+    const bool right = isRight(question, answer);
+    answers_[k] = answer;
+    ++tries_[k];
+    unsavedAnswers_ = true;
+    revealed_[k] = right || tries_[k] >= question.tries;
     emit stepChanged();
     return right;
 }
@@ -166,6 +169,7 @@ void LessonDocument::resetAnswers()
 {
     answers_.assign(lesson_.steps.size(), std::nullopt);
     revealed_.assign(lesson_.steps.size(), false);
+    tries_.assign(lesson_.steps.size(), 0);
     unsavedAnswers_ = false;
 }
 

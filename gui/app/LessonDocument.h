@@ -46,12 +46,15 @@ public:
     bool isAsking() const;
     bool isRevealed(int step) const { return revealed_.at(std::size_t(step)); }
     const std::optional<Answer>& answer(int step) const { return answers_.at(std::size_t(step)); }
-    // Records the first answer to the current step's question and reveals it; returns whether it is right.
+    // How many answers to a step's question were checked.
+    int tries(int step) const { return tries_.at(std::size_t(step)); }
+    // Records an answer to the current step's question (the last one checked counts) and reveals the
+    // question's answer when it is right or the question's tries are used up; returns whether it is right.
     bool check(const Answer& answer);
     // Shows the answer without taking one (a lecturer asking the room).
     void reveal();
     // The results file, as the web page saves it.
-    std::string resultsJson() const { return resultsToJson(lesson_, answers_, revealed_); }
+    std::string resultsJson() const { return resultsToJson(lesson_, answers_, revealed_, tries_); }
     // Writes the results file atomically; throws InputError when it cannot.
     void saveResults(const QString& path);
     // Answers given since the results were last saved.
@@ -84,6 +87,7 @@ private:
     int generation_ = 0;
     std::vector<std::optional<Answer>> answers_;
     std::vector<bool> revealed_;
+    std::vector<int> tries_;
     bool unsavedAnswers_ = false;
     QUndoStack undo_;
 };

@@ -341,7 +341,11 @@ void LessonPanel::refreshStep()
     check_->setEnabled(asking);
     reveal_->setEnabled(asking);
     if (asking) {
-        feedback_->clear();
+        // A wrong answer with tries left: try again, the answer not shown.
+        const int left = q.tries - lesson_->tries(k);
+        const QString again = left == 1 ? tr("Try again: one more try before the answer is shown.")
+                                        : tr("Try again: %1 more tries before the answer is shown.").arg(left);
+        feedback_->setText(lesson_->tries(k) == 0 ? QString() : "<b>" + tr("Not quite.") + "</b> " + again);
         askingShown_ = k;
         return;
     }
@@ -491,7 +495,7 @@ bool LessonPanel::checkAnswer()
     case QuestionKind::Entry: {
         const auto x = typed("answerEntry");
         if (!x) {
-            feedback_->setText(tr("Type a number or a fraction, such as -2/21."));
+            feedback_->setText(tr("Type a number: a decimal, or a fraction p/q.")); // no example: it could be the answer
             return false;
         }
         answer.entry = *x;

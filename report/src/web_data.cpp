@@ -3,6 +3,7 @@
 #include "viewpipe/format.hpp"
 #include "viewpipe/math_text.hpp"
 #include "viewpipe/report/latex.hpp"
+#include "viewpipe/report/lesson_latex.hpp"
 #include "viewpipe/report/stage_symbols.hpp"
 #include "viewpipe/report/world_view.hpp"
 
@@ -180,10 +181,10 @@ json sceneData(const EvaluatedScene& scene, const WebPageViews& views)
         const std::string list = stageText(stages, k, StageText::ListEntry);
         const std::string claim = k < scene.stageClaims.size() ? scene.stageClaims[k] : "";
         json entry = {{"list", list},
-                      {"listText", mathPlainText(list)}, // for a screen reader
+                      {"listText", mathSpokenText(list)}, // for a screen reader
                       {"caption", stageCaption(scene, k, StageText::Caption)},
                       {"claim", claim},
-                      {"claimText", mathPlainText(claim)},
+                      {"claimText", mathSpokenText(claim)},
                       {"rest", frameJson(s.rest)},
                       {"labels", labels},
                       {"frame", floats(marks.lines)}};
@@ -273,10 +274,12 @@ json questionData(const Question& q)
 {
     // Each text with math, and as plain text for a screen reader.
     json out = {{"kind", questionKindName(q.kind)},
+                {"source", questionToJson(q)}, // for the page's core, which checks the answers
+                {"tries", q.tries},
                 {"prompt", q.prompt},
-                {"promptPlain", mathPlainText(q.prompt)},
+                {"promptPlain", mathSpokenText(q.prompt)},
                 {"explanation", q.explanation},
-                {"explanationPlain", mathPlainText(q.explanation)}};
+                {"explanationPlain", mathSpokenText(q.explanation)}};
     switch (q.kind) {
     case QuestionKind::Where:
         out.update({{"point", vec(q.point)}, {"stage", q.stage}, {"tolerance", q.tolerance}, {"answer", vec(q.where)}});
@@ -285,10 +288,12 @@ json questionData(const Question& q)
     case QuestionKind::SignW: out.update({{"point", vec(q.point)}, {"stage", q.stage}, {"answer", q.signW}}); break;
     case QuestionKind::WhichStage:
     case QuestionKind::Order: {
-        json symbols = json::array(); // the stage symbols, set as math
-        for (const std::string& choice : q.choices)
+        json symbols = json::array(), spoken = json::array(); // the stage symbols, set as math, and in words
+        for (const std::string& choice : q.choices) {
             symbols.push_back("$" + symbolMath(choice) + "$");
-        out.update({{"choices", q.choices}, {"choicesMath", symbols}});
+            spoken.push_back(mathSpokenText(symbols.back()));
+        }
+        out.update({{"choices", q.choices}, {"choicesMath", symbols}, {"choicesSpoken", spoken}});
         if (q.kind == QuestionKind::WhichStage)
             out.update({{"stage", q.stage}, {"answer", q.correct}});
         break;
@@ -296,7 +301,13 @@ json questionData(const Question& q)
     case QuestionKind::Entry:
         out.update({{"stage", q.stage}, {"row", q.row}, {"column", q.column}, {"answer", q.entry}});
         break;
-    case QuestionKind::Choice: out.update({{"choices", q.choices}, {"answer", q.correct}}); break;
+    case QuestionKind::Choice: {
+        json letters = json::array();
+        for (std::size_t k = 0; k < q.choices.size(); ++k)
+            letters.push_back(choiceLetter(k));
+        out.update({{"choices", q.choices}, {"letters", letters}, {"answer", q.correct}});
+        break;
+    }
     }
     return out;
 }

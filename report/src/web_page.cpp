@@ -151,7 +151,7 @@ std::string lessonPage(const Lesson& lesson, const std::vector<int>& stepScenes,
         const LessonStep& step = lesson.steps[k];
         json entry = {{"scene", stepScenes.at(k)}, {"stage", step.stage}, {"yaw", step.yaw},
                       {"pitch", step.pitch},       {"zoom", step.zoom},   {"caption", step.caption},
-                      {"captionPlain", mathPlainText(step.caption)}};
+                      {"captionPlain", mathSpokenText(step.caption)}};
         if (step.trace)
             entry["trace"] = {step.trace->x(), step.trace->y(), step.trace->z()};
         if (!step.entries.empty()) { // the stage's equation with those entries marked, as the page's own shows it
@@ -161,7 +161,7 @@ std::string lessonPage(const Lesson& lesson, const std::vector<int>& stepScenes,
         if (step.question) {
             entry["question"] = questionData(*step.question);
             entry["question"]["answerText"] = answerText(step);
-            entry["question"]["answerPlain"] = mathPlainText(answerText(step));
+            entry["question"]["answerPlain"] = mathSpokenText(answerText(step));
             entry["question"]["offered"] = offeredChoices(*step.question);
         }
         steps.push_back(entry);

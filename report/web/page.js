@@ -1166,7 +1166,8 @@
     });
   }
 
-  const results = []; // one entry per question answered: {step, kind, answer, correct}
+  const results = []; // one entry per question answered: {step, kind, answer, correct, tries}
+  const tries = []; // answers checked, per step
   function buildLesson() {
     document.getElementById('title').textContent = lesson.title;
     document.getElementById('lesson').hidden = false;
@@ -1187,13 +1188,6 @@
     });
   }
 
-  function numberTyped(typed) {
-    const text = typed.replace(/\u2212/g, '-'); // the minus sign the typeset math shows
-    const fraction = /^\s*([+-]?\d+(?:\.\d*)?)\s*\/\s*([+-]?\d+(?:\.\d*)?)\s*$/.exec(text);
-    if (fraction) return Number(fraction[1]) / Number(fraction[2]);
-    return text.trim() === '' ? NaN : Number(text);
-  }
-  const signName = (s) => (s > 0 ? 'positive' : s < 0 ? 'negative' : 'zero');
   function matrixLatex(rows) {
     let latex = '\\begin{bmatrix}';
     for (let r = 0; r < 4; ++r)
@@ -1216,9 +1210,9 @@
     if (question.stage && question.kind !== 'which_stage') {
       const about = document.createElement('p');
       about.className = 'about';
-      const symbol = data.stages[question.stage].symbol;
-      about.textContent = question.kind === 'entry' ? `The matrix of stage ${question.stage}, ${symbol}.`
-                                                    : `After stage ${question.stage}, ${symbol}.`;
+      const symbol = `$${data.stages[question.stage].symbolMath}$`;
+      setRichText(about, question.kind === 'entry' ? `The matrix of stage ${question.stage}, ${symbol}.`
+                                                   : `After stage ${question.stage}, ${symbol}.`);
       box.appendChild(about);
     }
     const form = document.createElement('form');
@@ -1226,7 +1220,7 @@
     const feedback = document.createElement('p');
     feedback.className = 'feedback';
     feedback.setAttribute('role', 'status');
-    let read = null; // returns [answer, correct] or null when nothing usable was given
+    let read = null; // the answer as the core's checkAnswer takes it, or null when none is picked
     const input = (label) => {
       const field = document.createElement('input');
       field.type = 'text';
@@ -1258,24 +1252,18 @@
     switch (question.kind) {
       case 'where': {
         const fields = ['x', 'y', 'z'].map(input);
-        read = () => {
-          const typed = fields.map((f) => numberTyped(f.value));
-          if (typed.some((x) => !Number.isFinite(x))) return null;
-          const size = Math.hypot(...question.answer);
-          const off = Math.hypot(...typed.map((x, k) => x - question.answer[k]));
-          return [typed, off <= question.tolerance * Math.max(1, size)];
-        };
+        read = () => ({ where: fields.map((f) => f.value) });
         break;
       }
       case 'inside': {
         const chosen = picks(['inside the view volume', 'clipped away']);
-        read = () => (chosen() === null ? null : [chosen() === 0, (chosen() === 0) === question.answer]);
+        read = () => (chosen() === null ? null : { inside: chosen() === 0 });
         break;
       }
       case 'sign_w': {
         const signs = [1, 0, -1];
         const chosen = picks(['positive', 'zero', 'negative']);
-        read = () => (chosen() === null ? null : [signName(signs[chosen()]), signs[chosen()] === question.answer]);
+        read = () => (chosen() === null ? null : { signW: signs[chosen()] });
         break;
       }
       case 'which_stage': {
@@ -1289,29 +1277,22 @@
           setRichText(span, question.choicesMath[k]);
           return span;
         }));
-        read = () => {
-          if (chosen() === null) return null;
-          const k = shownOrder[chosen()];
-          return [question.choices[k], k === question.answer];
-        };
+        read = () => (chosen() === null ? null : { choice: shownOrder[chosen()] });
         break;
       }
       case 'choice': {
         const labels = question.choices.map((choice, k) => {
           const span = document.createElement('span');
-          setRichText(span, `(${String.fromCharCode(97 + k)}) ${choice}`); // lettered as in the app and the handout
+          setRichText(span, `${question.letters[k]} ${choice}`); // lettered as in the app and the handout
           return span;
         });
         const chosen = picks(labels);
-        read = () => (chosen() === null ? null : [chosen(), chosen() === question.answer]);
+        read = () => (chosen() === null ? null : { choice: chosen() });
         break;
       }
       case 'entry': {
         const field = input(`entry (${question.row}, ${question.column})`);
-        read = () => {
-          const x = numberTyped(field.value);
-          return Number.isFinite(x) ? [x, Math.abs(x - question.answer) <= 5e-3 * Math.abs(question.answer) + 1e-9] : null;
-        };
+        read = () => ({ entry: field.value });
         break;
       }
       case 'order': {
@@ -1330,7 +1311,7 @@
               const button = document.createElement('button');
               button.type = 'button';
               button.textContent = label;
-              button.setAttribute('aria-label', `move ${question.choices[k]} ${by < 0 ? 'up' : 'down'}`);
+              button.setAttribute('aria-label', `move ${question.choicesSpoken[k]} ${by < 0 ? 'up' : 'down'}`);
               button.disabled = at + by < 0 || at + by >= order.length;
               button.addEventListener('click', () => {
                 [order[at], order[at + by]] = [order[at + by], order[at]];
@@ -1344,7 +1325,7 @@
         };
         draw();
         form.appendChild(listOf);
-        read = () => [order.map((k) => question.choices[k]), order.every((k, at) => k === at)];
+        read = () => ({ order });
         break;
       }
     }
@@ -1359,14 +1340,24 @@
     box.appendChild(reveal);
     form.addEventListener('submit', (event) => {
       event.preventDefault();
-      const outcome = read();
-      if (!outcome) {
-        feedback.textContent = 'Answer first: every field needs a number (a fraction such as p/q is fine).';
-        return;
+      const typed = read();
+      const live = document.getElementById('live');
+      const say = (text) => { feedback.textContent = text; live.textContent = text; };
+      if (!typed) return say('Pick an answer first.');
+      if (!core) return say('The page is still loading: check again in a moment.');
+      // Checked by the core, as the app checks it.
+      const outcome = core.checkAnswer(data.scene, question.source, JSON.stringify(typed));
+      if (outcome.error) return say('Answer first: every field needs a number (a fraction such as p/q is fine).');
+      const checked = JSON.parse(outcome.text);
+      const correct = checked.right;
+      tries[index] = (tries[index] || 0) + 1;
+      // The last answer checked, and how many were.
+      results[index] = { step: index + 1, kind: question.kind, answer: checked.answer, correct, tries: tries[index] };
+      const left = question.tries - tries[index];
+      if (!correct && left > 0) { // tried again, the answer kept back
+        feedback.className = 'feedback wrong';
+        return say(`Not quite. Try again: ${left === 1 ? 'one more try' : left + ' more tries'} before the answer is shown.`);
       }
-      const [answer, correct] = outcome;
-      // One answer a question: the first, which the revealed answer cannot change.
-      results[index] = { step: index + 1, kind: question.kind, answer, correct };
       form.querySelectorAll('input, button').forEach((control) => { control.disabled = true; });
       setRichText(feedback, correct ? 'Right.' : `Not quite: the answer is ${answerText}.`);
       feedback.className = 'feedback ' + (correct ? 'right' : 'wrong');
@@ -1386,8 +1377,9 @@
       const revealed = question.stage ? Math.max(lesson.steps[index].stage, question.stage) : state.stage;
       if (revealed !== state.stage) goTo(revealed, true);
       else { showPanels(); drawWorld(); }
-      document.getElementById('live').textContent = (correct ? 'Right.' : `Not quite: the answer is ${question.answerPlain}.`) +
-        (question.explanation ? ' ' + question.explanationPlain : '');
+      // Read once answered: the verdict, why, and the step's text (kept back while asking: it may hold the answer).
+      live.textContent = (correct ? 'Right.' : `Not quite: the answer is ${question.answerPlain}.`) +
+        (question.explanation ? ' ' + question.explanationPlain : '') + ' ' + step.captionPlain;
       body.dataset.answered = String(results.filter(Boolean).length);
     });
   }
@@ -1410,9 +1402,9 @@
     const from = state.stage;
     if (sameScene && !jump && Math.abs(shownStage - from) === 1) goTo(shownStage, true);
     else goTo(shownStage, false);
-    document.getElementById('live').textContent =
-      `Step ${index + 1} of ${lesson.steps.length}. ${step.captionPlain}` +
-      (step.question ? ' Question: ' + step.question.promptPlain : '');
+    // While a question waits, its step's text is kept back (it may give the answer away), as on the screen.
+    document.getElementById('live').textContent = `Step ${index + 1} of ${lesson.steps.length}. ` +
+      (step.question ? 'Question: ' + step.question.promptPlain : step.captionPlain);
   }
 
   // For scripts (and the browser tests): where a world point is drawn now, in client pixels.

@@ -75,6 +75,10 @@ TEST(Lesson, BadLessonsAreRefusedWithTheirFieldPaths)
     refused(R"({"scene": "house.json", "stage": 18446744073709551615, "caption": "c"})", "steps[0].stage",
             "(got 18446744073709551615)");
     EXPECT_EQ(lessonWith(R"({"scene": "house.json", "stage": 2.0, "caption": "c"})").steps[0].stage, 2);
+    refused(houseStep(R"({"kind": "inside", "prompt": "p", "point": [0, 0, 0], "tries": 0})"), "steps[0].question.tries",
+            "a whole number from 1 to 10 (got 0)");
+    refused(houseStep(R"({"kind": "inside", "prompt": "p", "point": [0, 0, 0], "tries": "2"})"), "steps[0].question.tries",
+            "(got the text \"2\")");
     // A point whose image overflows has no answer: refused, not answered with NaN.
     refused(houseStep(R"({"kind": "where", "prompt": "p", "point": [1.7e308, 0, -1.7e308], "after": 4})"),
             "steps[0].question.point", "no finite image");
@@ -121,6 +125,24 @@ TEST(Lesson, TheBuiltInLessonsAreValid)
         EXPECT_GE(questions, 3) << entry.path(); // each asks, not only shows
     }
     EXPECT_GE(count, 5);
+}
+
+// Tries: two unless the lesson says; written back only when it says; the
+// results hold the last answer checked and how many were.
+TEST(Lesson, AQuestionsTriesAreTwoUnlessTheLessonSays)
+{
+    const Lesson twice = lessonWith(houseStep(R"({"kind": "inside", "prompt": "p", "point": [0, 0, 0]})"));
+    EXPECT_EQ(twice.steps[0].question->tries, 2);
+    EXPECT_EQ(questionToJson(*twice.steps[0].question).find("tries"), std::string::npos);
+    const Lesson once = lessonWith(houseStep(R"({"kind": "inside", "prompt": "p", "point": [0, 0, 0], "tries": 1})"));
+    EXPECT_EQ(once.steps[0].question->tries, 1);
+    EXPECT_NE(questionToJson(*once.steps[0].question).find("\"tries\": 1"), std::string::npos);
+    Answer answer;
+    answer.inside = !once.steps[0].question->inside;
+    const auto results = nlohmann::json::parse(resultsToJson(once, {answer}, {true}, {1}));
+    EXPECT_EQ(results["answers"][0]["tries"], 1);
+    EXPECT_EQ(results["answers"][0]["correct"], false);
+    EXPECT_EQ(results["answers"][0]["answer"], answer.inside);
 }
 
 // What the app saves reads back as the same lesson, from another folder too:

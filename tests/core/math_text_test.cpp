@@ -37,6 +37,10 @@ TEST(MathText, SetsScriptsItalicsAndSigns)
     EXPECT_EQ(mathPlainText("$a - b$"), "a − b");
     EXPECT_EQ(mathPlainText("$x = \\pm z$, $-1 \\le z$"), "x = ±z, −1 ≤ z");
     EXPECT_EQ(mathPlainText("$x^2$"), "x^2");
+    // For a screen reader: scripts in words.
+    EXPECT_EQ(mathSpokenText("$\\mathit{SH}_{\\mathrm{per}}$, then $S_{\\mathrm{per}}$."), "SH sub per, then S sub per.");
+    EXPECT_EQ(mathSpokenText("($x^2$ and $M^{-1}$)"), "(x squared and M inverse)");
+    EXPECT_EQ(mathSpokenText("$45^\\circ$ and $z^{n}$"), "45° and z to the power n");
     EXPECT_EQ(mathPlainText("costs \\$5"), "costs $5");
     EXPECT_EQ(mathPlainText("$\\text{if } x$"), "if x");
 }

@@ -134,7 +134,7 @@ private slots:
         QVERIFY(w.stageList()->isVisible());
         QVERIFY(w.matrices()->stageText().contains("World"));
         QVERIFY(child<QLabel>(w, "lessonCaption")->text().contains("The house in world coordinates"));
-        QVERIFY(!child<QPushButton>(w, "checkButton")->isEnabled()); // one answer a question
+        QVERIFY(!child<QPushButton>(w, "checkButton")->isEnabled()); // right: the question is closed
 
         // Step 2, a multiple choice: a click on the answer, then Check.
         QTest::keyClick(&w, Qt::Key_PageDown);
@@ -166,6 +166,15 @@ private slots:
         QVERIFY2(feedback(w).contains("Type three numbers"), qPrintable(feedback(w))); // nothing recorded yet
         QVERIFY(w.lesson()->isAsking());
         QTest::keyClicks(child<QLineEdit>(w, "answerZ"), "3");
+        QTest::keyClick(child<QLineEdit>(w, "answerZ"), Qt::Key_Return);
+        // Two tries (the default): the first wrong answer says so and keeps the answer back.
+        QVERIFY2(feedback(w).contains("Not quite") && feedback(w).contains("one more try") && !feedback(w).contains("(0, 0, 0)"),
+                 qPrintable(feedback(w)));
+        QVERIFY(w.lesson()->isAsking());
+        QVERIFY(child<QLabel>(w, "lessonCaption")->text().contains("follows the answer"));
+        QCOMPARE(w.stage(), 2);
+        QTest::keyClick(child<QLineEdit>(w, "answerZ"), Qt::Key_Backspace);
+        QTest::keyClicks(child<QLineEdit>(w, "answerZ"), "5");
         QTest::keyClick(child<QLineEdit>(w, "answerZ"), Qt::Key_Return);
         QVERIFY2(feedback(w).contains("Not quite") && feedback(w).contains("(0, 0, 0)"), qPrintable(feedback(w)));
         QTRY_VERIFY(settled(w) && w.stage() == 3);
@@ -202,8 +211,10 @@ private slots:
         QCOMPARE(answers.size(), 5);
         QCOMPARE(answers[0].toObject()["kind"].toString(), QString("order"));
         QCOMPARE(answers[0].toObject()["answer"].toArray().first().toString(), QString("T(-VRP)"));
-        QCOMPARE(answers[3].toObject()["answer"].toArray(), QJsonArray({1, 2, 3}));
+        QCOMPARE(answers[3].toObject()["answer"].toArray(), QJsonArray({1, 2, 5})); // the last answer checked
         QCOMPARE(answers[3].toObject()["correct"].toBool(), false);
+        QCOMPARE(answers[3].toObject()["tries"].toInt(), 2);
+        QCOMPARE(answers[4].toObject()["tries"].toInt(), 1);
         QCOMPARE(answers[4].toObject()["step"].toInt(), 6);
         QCOMPARE(answers[4].toObject()["correct"].toBool(), true);
 

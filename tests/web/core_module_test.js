@@ -142,6 +142,28 @@ require(path.resolve(modulePath))().then((core) => {
       }
     });
   }
+
+  // Answers checked as the app checks them (lesson.cpp's isRight and parseTypedNumber): entry (1, 3) of the
+  // house's SH_per is -2/21 (Foley's shear, -dop_x / dop_z, with the house's PRP (8, 6, 84) and window centre (0, 0):
+  // -dop_x / dop_z = -8/84), right within 0.5 %.
+  const entry = JSON.stringify({ kind: 'entry', prompt: 'p', stage: 4, row: 1, column: 3 });
+  const checked = (typed) => core.checkAnswer(JSON.stringify(house), entry, JSON.stringify({ entry: typed }));
+  for (const [typed, right] of [['-2/21', true], ['\u22122/21', true], ['-0.0952', true], ['-0.0947', false], ['2/21', false]]) {
+    check(`the entry ${typed} is ${right ? 'right' : 'wrong'}`, () => {
+      const outcome = checked(typed);
+      assert.strictEqual(outcome.error, '');
+      assert.deepStrictEqual(JSON.parse(outcome.text).right, right);
+    });
+  }
+  check('text that is not a number is unreadable, not wrong', () => {
+    assert.strictEqual(checked('about -0.1').error, 'answer: unreadable');
+  });
+  check('a point within the tolerance', () => {
+    const where = JSON.stringify({ kind: 'where', prompt: 'p', point: [8, 6, 84], after: 3 });
+    const outcome = core.checkAnswer(JSON.stringify(house), where, JSON.stringify({ where: ['0', '0.005', '0'] }));
+    assert.deepStrictEqual(JSON.parse(outcome.text), { right: true, answer: [0, 0.005, 0] });
+  });
+
   fs.rmSync(work, { recursive: true, force: true });
   process.exit(failures ? 1 : 0);
 });

@@ -659,8 +659,22 @@ TEST(LessonPage, QuestionsAreAnsweredCheckedAndRevealed)
             }
             browser.press("Enter", 13);
         };
+        // Read to a screen reader while asking: the question, not the step's text (which may hold the answer).
+        ASSERT_TRUE(browser.waitFor("document.body.dataset.core === '1'")) << "the core checks the answers";
+        const std::string live = "document.getElementById('live').textContent";
+        EXPECT_NE(browser.evaluate(live).get<std::string>().find("Question: Where is the PRP"), std::string::npos);
+        EXPECT_EQ(browser.evaluate(live).get<std::string>().find("VRC axes"), std::string::npos) << browser.evaluate(live);
+        // Two tries (the default): the first wrong answer says so, the answer kept back and the form open.
         answer({"8", "6", "84"});
+        ASSERT_TRUE(browser.waitFor("document.querySelector('#question .feedback').textContent.startsWith('Not quite. Try again')"));
+        EXPECT_EQ(browser.evaluate("document.querySelector('#question .feedback').textContent"),
+                  "Not quite. Try again: one more try before the answer is shown.");
+        EXPECT_EQ(browser.evaluate(live).get<std::string>().find("(0, 0, 0)"), std::string::npos);
+        EXPECT_EQ(browser.evaluate("getComputedStyle(document.getElementById('matrices')).visibility"), "hidden");
+        EXPECT_EQ(browser.evaluate("[...document.querySelectorAll('#question input')].some(i => i.disabled)"), false);
+        answer({"8", "6", "83"});
         ASSERT_TRUE(browser.waitFor("document.body.dataset.answered === '1'"));
+        EXPECT_NE(browser.evaluate(live).get<std::string>().find("VRC axes"), std::string::npos) << "the step's text, once answered";
         // The answer as the app and the handout state it, its math set by KaTeX (the annotation keeps the source).
         EXPECT_EQ(browser.evaluate("document.querySelector('#question .feedback').firstChild.textContent"),
                   "Not quite: the answer is ");
@@ -668,7 +682,7 @@ TEST(LessonPage, QuestionsAreAnsweredCheckedAndRevealed)
         // Revealed: the explanation, the stage the question is about reached by its transition.
         EXPECT_EQ(browser.evaluate("getComputedStyle(document.getElementById('matrices')).visibility"), "visible");
         ASSERT_TRUE(browser.waitFor("document.body.dataset.stage === '3' && !document.body.dataset.moving"));
-        // One answer a question: once revealed, the form is closed.
+        // Once revealed, the form is closed.
         EXPECT_EQ(browser.evaluate("[...document.querySelectorAll('#question input')].every(i => i.disabled)"), true);
 
         // The clicker's key to the next step; an exact fraction is an answer.

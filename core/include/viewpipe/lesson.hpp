@@ -30,6 +30,7 @@ struct Question {
     int stage = 0;                             // where and sign_w: after it; which_stage, entry: its matrix
     int row = 0, column = 0;                   // entry, from 1
     double tolerance = 0.01;                   // where: relative to the answer's size
+    int tries = 2;                             // answers checked before the answer is shown
     std::vector<std::string> choices;          // choice; which_stage and order: the scene's stage symbols
     // The answer, as the scene gives it (a choice's: as the lesson names it).
     Vec3<double> where = Vec3<double>::Zero();
@@ -98,14 +99,19 @@ bool isRight(const Question& question, const Answer& answer);
 // A typed number: a decimal or a fraction ("-2/21"), with an ASCII or a
 // typeset minus sign; nothing when the text is not one finite number.
 std::optional<double> parseTypedNumber(const std::string& text);
+// An answer as the results hold it: a point [x, y, z], true or false,
+// "positive"/"zero"/"negative", a stage's symbol, the symbols in order, a
+// number, a choice's index.
+std::string answerToJson(const Question& question, const Answer& answer);
 
 // A student's answers as the web page saves them ("Save my answers"):
 // {"lesson": title, "answers": [{"step": 1, "kind": "where", "answer": ...,
 // "correct": true}, ...]}, one entry a question answered; answers[k] is
 // step k's. A question whose answer was shown before any was given
 // (revealed[k]) has an entry too: "answer": null, "correct": false, "revealed": true.
+// With `tries`, an answer is the last one checked and "tries" says how many were.
 std::string resultsToJson(const Lesson& lesson, const std::vector<std::optional<Answer>>& answers,
-                          const std::vector<bool>& revealed = {});
+                          const std::vector<bool>& revealed = {}, const std::vector<int>& tries = {});
 
 // Scene paths are read relative to baseDir.
 Lesson parseLesson(const std::string& text, const std::filesystem::path& baseDir);

@@ -49,8 +49,11 @@ std::vector<MathRun> mathRuns(const std::string& text, const std::string& path =
 void checkMathText(const std::string& text, const std::string& path);
 
 // The runs as one line of Unicode text, scripts inline: what a plain-text
-// medium (a window title, a screen reader, a terminal) shows.
+// medium (a window title, a terminal) shows.
 std::string mathPlainText(const std::string& text);
+// The runs as a screen reader should say them: scripts in words ("S sub per",
+// "x squared", "45°"), not as "_" and "^".
+std::string mathSpokenText(const std::string& text);
 
 // The words of a line of text, split at spaces outside math: where it may wrap.
 std::vector<std::string> mathTextWords(const std::string& line);
