@@ -16,6 +16,7 @@
 #include "viewpipe/evaluated_scene.hpp"
 #include "viewpipe/lesson.hpp"
 #include "viewpipe/math_text.hpp"
+#include "viewpipe/report/code.hpp"
 #include "viewpipe/report/report.hpp"
 #include "viewpipe/report/web_page.hpp"
 #include "viewpipe/scene.hpp"
@@ -97,23 +98,60 @@ FontMeasure pageMeasure(const emscripten::val& measure)
     });
 }
 
-// A scene's JSON as the page shows it. `options` are the page's own: its
-// data's width, height, fontSize, minFontSize, lineScale, fixedFraming and dark.
+// The page's own options: its data's width, height, fontSize, minFontSize, lineScale, fixedFraming and dark.
+WebViewOptions viewOptions(const std::string& options)
+{
+    const nlohmann::json given = nlohmann::json::parse(options);
+    WebViewOptions view;
+    view.width = given.at("width");
+    view.height = given.at("height");
+    view.fontSize = given.at("fontSize");
+    view.minFontSize = given.at("minFontSize");
+    view.lineScale = given.at("lineScale");
+    view.fixedFraming = given.at("fixedFraming");
+    view.theme = given.at("dark") ? Theme::Dark : Theme::Light;
+    return view;
+}
+
+// A scene's text evaluated, kept for the calls that follow with the same text (turning the view asks for
+// labels many times a second); `fresh`: evaluated anew all the same (its meshes may have changed).
+std::shared_ptr<const EvaluatedScene> evaluatedOnce(const std::string& sceneText, bool fresh)
+{
+    static std::string text;
+    static std::shared_ptr<const EvaluatedScene> evaluated;
+    if (fresh || !evaluated || text != sceneText) {
+        evaluated = nullptr; // a refused scene keeps none
+        evaluated = evaluateScene(parseScene(sceneText, kSceneFolder));
+        text = sceneText;
+    }
+    return evaluated;
+}
+
+// A scene's JSON as the page shows it, with the page's `options` (viewOptions).
 Evaluation evaluate(const std::string& sceneText, const std::string& options, const emscripten::val& measure)
 {
     return guarded<Evaluation>([&] {
-        const auto evaluated = evaluateScene(parseScene(sceneText, kSceneFolder));
-        const nlohmann::json given = nlohmann::json::parse(options);
-        WebViewOptions view;
-        view.width = given.at("width");
-        view.height = given.at("height");
-        view.fontSize = given.at("fontSize");
-        view.minFontSize = given.at("minFontSize");
-        view.lineScale = given.at("lineScale");
-        view.fixedFraming = given.at("fixedFraming");
-        view.theme = given.at("dark") ? Theme::Dark : Theme::Light;
-        const WebPageViews views = webPageViews(*evaluated, view, pageMeasure(measure));
+        const auto evaluated = evaluatedOnce(sceneText, true);
+        const WebPageViews views = webPageViews(*evaluated, viewOptions(options), pageMeasure(measure));
         return Evaluation{webPageData(*evaluated, views), pipelineText(*evaluated), ""};
+    });
+}
+
+// Stage k's labels seen through `camera` (16 numbers, row by row: stage
+// coordinates -> clip coordinates of the picture `options` sizes), placed by
+// the core as at rest: the page's labels while the view is turned.
+Outcome placeLabels(const std::string& sceneText, const std::string& options, int stage, const std::string& camera,
+                    const emscripten::val& measure)
+{
+    return guarded([&] {
+        const auto evaluated = evaluatedOnce(sceneText, false);
+        const std::vector<double> rows = nlohmann::json::parse(camera);
+        if (rows.size() != 16 || stage < 0 || stage > int(evaluated->pipeline.stages.size()))
+            throw std::invalid_argument("placeLabels: a stage and 16 numbers");
+        Mat4<double> clip;
+        for (int k = 0; k < 16; ++k)
+            clip(k / 4, k % 4) = rows[std::size_t(k)];
+        return Outcome{webStageLabels(*evaluated, stage, clip, viewOptions(options), pageMeasure(measure)), ""};
     });
 }
 
@@ -126,7 +164,9 @@ Evaluation evaluate(const std::string& sceneText, const std::string& options, co
 Outcome checkAnswer(const std::string& sceneText, const std::string& question, const std::string& typed)
 {
     return guarded([&] {
-        const Question q = parseQuestion(question, parseScene(sceneText, kSceneFolder));
+        nlohmann::json scene = nlohmann::json::parse(sceneText);
+        scene.erase("objects"); // the answer is the camera's: meshes left out of the page do not matter
+        const Question q = parseQuestion(question, parseScene(scene.dump(), kSceneFolder));
         const nlohmann::json given = nlohmann::json::parse(typed);
         Answer answer;
         auto number = [](const nlohmann::json& text) {
@@ -135,16 +175,106 @@ Outcome checkAnswer(const std::string& sceneText, const std::string& question, c
                 throw InputError("answer", "unreadable");
             return *x;
         };
-        if (given.contains("where"))
-            answer.where = {number(given["where"].at(0)), number(given["where"].at(1)), number(given["where"].at(2))};
+        // A whole number in [low, high], as the page's controls give it.
+        auto index = [](const nlohmann::json& k, int low, int high, const char* what) {
+            if (!k.is_number_integer() || k.get<int>() < low || k.get<int>() > high)
+                throw InputError(std::string("answer.") + what, "must be a whole number from " + std::to_string(low) +
+                                                                   " to " + std::to_string(high));
+            return k.get<int>();
+        };
+        const int choices = int(q.choices.size());
+        if (given.contains("where")) {
+            if (!given["where"].is_array() || given["where"].size() != 3)
+                throw InputError("answer.where", "must be three typed numbers");
+            answer.where = {number(given["where"][0]), number(given["where"][1]), number(given["where"][2])};
+        }
         if (given.contains("entry"))
             answer.entry = number(given["entry"]);
-        answer.choice = given.value("choice", -1);
-        answer.inside = given.value("inside", false);
-        answer.signW = given.value("signW", 0);
-        answer.order = given.value("order", std::vector<int>{});
+        if (given.contains("choice"))
+            answer.choice = index(given["choice"], 0, choices - 1, "choice");
+        if (given.contains("inside")) {
+            if (!given["inside"].is_boolean())
+                throw InputError("answer.inside", "must be true or false");
+            answer.inside = given["inside"].get<bool>();
+        }
+        if (given.contains("signW"))
+            answer.signW = index(given["signW"], -1, 1, "signW");
+        if (given.contains("order")) {
+            if (!given["order"].is_array() || int(given["order"].size()) != choices)
+                throw InputError("answer.order", "must list each of the " + std::to_string(choices) + " stages once");
+            std::vector<bool> seen(std::size_t(choices), false);
+            for (const nlohmann::json& k : given["order"]) {
+                const int c = index(k, 0, choices - 1, "order");
+                if (seen[std::size_t(c)])
+                    throw InputError("answer.order", "must list each of the " + std::to_string(choices) + " stages once");
+                seen[std::size_t(c)] = true;
+                answer.order.push_back(c);
+            }
+        }
         const nlohmann::json checked = {{"right", isRight(q, answer)}, {"answer", nlohmann::json::parse(answerToJson(q, answer))}};
         return Outcome{checked.dump(), ""};
+    });
+}
+
+// UTF-16 code units before byte `offset` of UTF-8 `text`: where JavaScript's strings count it.
+std::size_t utf16Offset(const std::string& text, std::size_t offset)
+{
+    std::size_t units = 0;
+    for (std::size_t k = 0; k < offset && k < text.size(); ++k) {
+        const auto byte = static_cast<unsigned char>(text[k]);
+        if ((byte & 0xC0) != 0x80) // a character's first byte; four-byte ones take two units
+            units += byte >= 0xF0 ? 2 : 1;
+    }
+    return units;
+}
+
+// A look-at scene's camera as code in a dialect ("opengl", ... as --dialect
+// names them), as the app's Code panel shows it: {"text", "numbers": [{"start",
+// "end", "field", "value", "tooltip"}]}, start and end as JavaScript counts.
+// A Foley view is refused: no API writes it as code.
+Outcome cameraCode(const std::string& sceneText, const std::string& dialect)
+{
+    return guarded([&] {
+        const Scene scene = parseScene(sceneText, kSceneFolder);
+        const code::CameraCode written =
+            code::cameraCode(lookAtCamera(scene, "the code dialects"), code::dialectNamed(dialect, "dialect"));
+        nlohmann::json numbers = nlohmann::json::array();
+        for (const code::CodeNumber& n : written.numbers)
+            numbers.push_back({{"start", utf16Offset(written.text, n.offset)},
+                               {"end", utf16Offset(written.text, n.offset + n.length)},
+                               {"field", n.field},
+                               {"value", n.value},
+                               {"tooltip", n.tooltip}});
+        return Outcome{nlohmann::json{{"text", written.text}, {"numbers", numbers}}.dump(), ""};
+    });
+}
+
+// The dialects, [{"name", "title"}], in the app's order.
+std::string codeDialects()
+{
+    nlohmann::json dialects = nlohmann::json::array();
+    for (const code::Dialect d : code::kDialects)
+        dialects.push_back({{"name", code::dialectName(d)}, {"title", code::dialectTitle(d)}});
+    return dialects.dump();
+}
+
+// The scene with one of its code's numbers set (code::withField) or with
+// pasted code applied (code::applyCode): its JSON anew, or why not.
+Outcome withCodeNumber(const std::string& sceneText, const std::string& field, double value)
+{
+    return guarded([&] {
+        Scene scene = parseScene(sceneText, kSceneFolder);
+        scene.camera = code::withField(lookAtCamera(scene, "the code dialects"), field, value);
+        return Outcome{sceneToJson(scene, kSceneFolder), ""};
+    });
+}
+
+Outcome withPastedCode(const std::string& sceneText, const std::string& pasted)
+{
+    return guarded([&] {
+        Scene scene = parseScene(sceneText, kSceneFolder);
+        scene.camera = code::applyCode(lookAtCamera(scene, "the code dialects"), pasted);
+        return Outcome{sceneToJson(scene, kSceneFolder), ""};
     });
 }
 
@@ -162,5 +292,11 @@ EMSCRIPTEN_BINDINGS(viewpipe)
     emscripten::function("putFile", &putFile);
     emscripten::function("pipelineJson", &pipelineJson);
     emscripten::function("evaluate", &evaluate);
+    emscripten::function("placeLabels", &placeLabels);
     emscripten::function("checkAnswer", &checkAnswer);
+    emscripten::function("codeDialects", &codeDialects);
+    emscripten::function("cameraCode", &cameraCode);
+    emscripten::function("withCodeNumber", &withCodeNumber);
+    emscripten::function("withPastedCode", &withPastedCode);
+    emscripten::function("steppedValue", &viewpipe::code::steppedValue);
 }

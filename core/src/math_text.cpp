@@ -320,8 +320,15 @@ std::string mathPlainText(const std::string& text)
 
 std::string mathSpokenText(const std::string& text)
 {
+    // Neighbouring runs at one level are one script ("2n", not "2" then "n").
+    std::vector<MathRun> runs;
+    for (const MathRun& run : mathRuns(text))
+        if (!runs.empty() && runs.back().level == run.level)
+            runs.back().text += run.text;
+        else
+            runs.push_back(run);
     std::string out;
-    for (const MathRun& run : mathRuns(text)) {
+    for (const MathRun& run : runs) {
         if (run.level == 0)
             out += run.text;
         else if (run.level < 0)

@@ -31,7 +31,7 @@ std::string found(const Json& j)
         std::size_t cut = std::min<std::size_t>(text.size(), 24);
         while (cut < text.size() && (text[cut] & 0xC0) == 0x80)
             --cut; // at a character's first byte
-        return "the text \"" + text.substr(0, cut) + (cut < text.size() ? "...\"" : "\"");
+        return "the text " + Json(text.substr(0, cut) + (cut < text.size() ? "..." : "")).dump(); // quoted, escaped
     }
     if (j.is_number() || j.is_boolean() || j.is_null())
         return j.dump();
@@ -238,8 +238,6 @@ double readFar(const Json& j, const std::string& path)
 {
     if (j.is_string() && j.get<std::string>() == "infinity")
         return std::numeric_limits<double>::infinity();
-    if (j.is_string())
-        throw InputError(path, "must be a number or \"infinity\" (got \"" + j.get<std::string>() + "\")");
     if (!j.is_number())
         throw InputError(path, "must be a number or \"infinity\" (got " + found(j) + ")");
     return readNumber(j, path);
@@ -732,6 +730,28 @@ Scene loadScene(const std::filesystem::path& file)
     if (scene.name.empty())
         scene.name = file.stem().string();
     return scene;
+}
+
+std::vector<Preset> presetScenes(const std::filesystem::path& scenes)
+{
+    std::vector<Preset> presets;
+    for (const auto& [folder, group] : {std::pair{"", ""}, std::pair{"classical", "Classical projections"},
+                                        std::pair{"apis", "Graphics APIs"}}) {
+        std::vector<std::filesystem::path> files;
+        std::error_code missing;
+        for (const auto& entry : std::filesystem::directory_iterator(scenes / folder, missing))
+            if (entry.is_regular_file() && entry.path().extension() == ".json")
+                files.push_back(entry.path());
+        std::sort(files.begin(), files.end());
+        for (const std::filesystem::path& file : files) {
+            try {
+                presets.push_back({group, loadScene(file)});
+            } catch (const InputError&) {
+                // a broken preset is not offered
+            }
+        }
+    }
+    return presets;
 }
 
 std::string sceneToJson(const Scene& scene)

@@ -199,23 +199,12 @@ bool CodeView::event(QEvent* event)
     return QWidget::event(event);
 }
 
-double CodeView::stepFor(double value)
-{
-    // A two-hundredth of the number's size (at least of 1), as a power of ten: 40 moves by 0.1, 0.5 by 0.001.
-    return std::pow(10.0, std::floor(std::log10(std::max(std::abs(value), 1.0) * 0.005)));
-}
-
 void CodeView::step(std::size_t index, int steps, int gesture)
 {
     const double from = drag_ ? drag_->startValue : code_.numbers[index].value;
     if (!std::isfinite(from))
         return; // an infinite far plane is typed, not dragged
-    const double unit = stepFor(from);
-    // Whole steps of a power of ten, divided rather than multiplied when below 1: 40.3, not 40.300000000000004.
-    const double scale = unit < 1 ? std::round(1 / unit) : unit;
-    const double count = std::round(from / unit) + steps;
-    const double value = unit < 1 ? count / scale : count * scale;
-    emit numberChanged(index, value, gesture);
+    emit numberChanged(index, code::steppedValue(from, steps), gesture);
 }
 
 void CodeView::select(std::size_t index)

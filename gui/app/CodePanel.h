@@ -71,8 +71,6 @@ public:
     void select(std::size_t index);
     // The editor open over a number (double-click or Enter), if any.
     QLineEdit* editor() const { return editor_; }
-    // The step one pixel of drag (ten pixels: ten steps) or one Up/Down press makes on a number.
-    static double stepFor(double value);
     QSize sizeHint() const override;
     QSize minimumSizeHint() const override;
     bool hasHeightForWidth() const override;

@@ -1,5 +1,7 @@
 #include "ExportDialog.h"
 
+#include "AppPaths.h"
+
 #include <QCheckBox>
 #include <QComboBox>
 #include <QDialogButtonBox>
@@ -112,6 +114,7 @@ ExportDialog::ExportDialog(int stageCount, Theme theme, QWidget* parent) : QDial
 ExportOptions ExportDialog::options() const
 {
     ExportOptions o;
+    o.presets = scenesDirectory().toStdString();
     o.out = folder_->text().toStdString();
     o.width = width_->value();
     o.height = height_->value();

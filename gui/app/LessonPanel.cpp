@@ -383,12 +383,13 @@ void LessonPanel::buildInputs()
         return edit;
     };
     // A radio button sets no rich text and does not wrap: its text is a label beside it.
-    auto radios = [&](const QStringList& texts) {
+    // `spoken`: each as a screen reader says it (math in words); else the text's own.
+    auto radios = [&](const QStringList& texts, const QStringList& spoken = {}) {
         auto* group = new QButtonGroup(fresh);
         for (int i = 0; i < texts.size(); ++i) {
             auto* radio = new QRadioButton;
             radio->setObjectName(QString("choice%1").arg(i));
-            radio->setAccessibleName(QTextDocumentFragment::fromHtml(texts[i]).toPlainText());
+            radio->setAccessibleName(spoken.isEmpty() ? QTextDocumentFragment::fromHtml(texts[i]).toPlainText() : spoken[i]);
             auto* label = new ChoiceLabel(texts[i], radio);
             label->setObjectName(QString("choiceText%1").arg(i));
             auto* row = new QHBoxLayout;
@@ -415,17 +416,21 @@ void LessonPanel::buildInputs()
     case QuestionKind::Inside: radios({tr("inside the view volume"), tr("clipped away")}); break;
     case QuestionKind::SignW: radios({tr("w is positive"), tr("w is zero"), tr("w is negative")}); break;
     case QuestionKind::WhichStage: {
-        QStringList texts;
-        for (int c : offeredChoices(q))
+        QStringList texts, spoken;
+        for (int c : offeredChoices(q)) {
             texts << symbolHtml(q.choices[std::size_t(c)]);
-        radios(texts);
+            spoken << QString::fromStdString(mathSpokenText("$" + symbolMath(q.choices[std::size_t(c)]) + "$"));
+        }
+        radios(texts, spoken);
         break;
     }
     case QuestionKind::Choice: {
-        QStringList texts;
-        for (std::size_t k = 0; k < q.choices.size(); ++k)
+        QStringList texts, spoken;
+        for (std::size_t k = 0; k < q.choices.size(); ++k) {
             texts << mathHtml(choiceLetter(k) + " " + q.choices[k]);
-        radios(texts);
+            spoken << QString::fromStdString(mathSpokenText(choiceLetter(k) + " " + q.choices[k]));
+        }
+        radios(texts, spoken);
         break;
     }
     case QuestionKind::Entry:

@@ -40,6 +40,8 @@
 #include <vtkRenderWindowInteractor.h>
 #include <vtkRenderer.h>
 
+#include <map>
+
 #include "AccuracyPanel.h"
 #include "AppPaths.h"
 #include "Autosave.h"
@@ -713,6 +715,7 @@ void MainWindow::refreshWidgets()
         const std::string entry = stageText(stages, k, StageText::ListEntry);
         auto* item = new QListWidgetItem(QString::fromStdString(mathPlainText(entry)));
         item->setData(MathItemDelegate::kMathRole, QString::fromStdString(entry));
+        item->setData(Qt::AccessibleTextRole, QString::fromStdString(mathSpokenText(entry))); // "S sub per", not "S_per"
         stageList_->addItem(item);
     }
     slider_->setRange(0, stageCount());
@@ -1035,24 +1038,17 @@ void MainWindow::rebuildRecentMenu()
 void MainWindow::rebuildPresetMenu()
 {
     presetMenu_->clear();
-    auto addScenes = [this](QMenu* menu, const QDir& folder) {
-        for (const QFileInfo& info : folder.entryInfoList({"*.json"}, QDir::Files, QDir::Name)) {
-            const QString path = info.absoluteFilePath();
-            QString title = info.completeBaseName();
-            try {
-                title = QString::fromStdString(loadScene(path.toStdString()).name);
-            } catch (const InputError&) {
-                continue; // a broken preset is not offered
-            }
-            menu->addAction(title, this, [this, path] {
-                if (confirmDiscard())
-                    openScene(path);
-            });
-        }
-    };
-    addScenes(presetMenu_, QDir(scenesDirectory()));
-    addScenes(presetMenu_->addMenu(tr("Classical projections")), QDir(scenesDirectory() + "/classical"));
-    addScenes(presetMenu_->addMenu(tr("Graphics APIs")), QDir(scenesDirectory() + "/apis"));
+    std::map<std::string, QMenu*> menus = {{"", presetMenu_}};
+    for (const Preset& preset : presetScenes(scenesDirectory().toStdString())) {
+        QMenu*& menu = menus[preset.group];
+        if (!menu)
+            menu = presetMenu_->addMenu(QString::fromStdString(preset.group));
+        const QString path = QString::fromStdString(preset.scene.file.string());
+        menu->addAction(QString::fromStdString(preset.scene.name), this, [this, path] {
+            if (confirmDiscard())
+                openScene(path);
+        });
+    }
 }
 
 void MainWindow::chooseClassicalProjection()

@@ -48,6 +48,7 @@ int runExport(const ExportCommandOptions& options)
         o.fps = options.fps;
         o.digits = options.digits;
         o.fixedFraming = options.framing == "fixed";
+        o.presets = scenesDirectory();
 
         std::signal(SIGINT, onInterrupt);
         std::signal(SIGTERM, onInterrupt);

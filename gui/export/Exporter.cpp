@@ -333,7 +333,7 @@ std::vector<fs::path> exportStages(const std::shared_ptr<const EvaluatedScene>& 
             const WebPageViews views = recordWebViews(evaluated, options.width, options.height, options.scale,
                                                       options.theme, options.fixedFraming, step, options.textScale / 100.0);
             step("scene.html");
-            writeFileAtomically(temporary / "scene.html", viewpipe::webPage(*evaluated, views, loadWebAssets()));
+            writeFileAtomically(temporary / "scene.html", viewpipe::webPage(*evaluated, views, loadWebAssets("/usr/share/javascript", {}, options.presets)));
         }
 
         step("matrices.tex");

@@ -41,6 +41,8 @@ struct ExportOptions {
     // all would leave those pictures nearly empty. fixedFraming uses one
     // framing that holds every stage, for side-by-side comparison of sizes.
     bool fixedFraming = false;
+    // The scenes folder whose presets (presetScenes) the web page offers; empty: none.
+    std::filesystem::path presets;
 };
 
 // What an export is doing, for progress bars: `done` of `total` steps.

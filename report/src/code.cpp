@@ -1186,6 +1186,22 @@ CameraCode cameraCode(const gl::Camera<double>& camera, Dialect dialect)
     return out.take();
 }
 
+double stepFor(double value)
+{
+    return std::pow(10.0, std::floor(std::log10(std::max(std::abs(value), 1.0) * 0.005)));
+}
+
+double steppedValue(double from, int steps)
+{
+    if (!std::isfinite(from))
+        return from;
+    const double unit = stepFor(from);
+    // Divided rather than multiplied when below 1: 40.3, not 40.300000000000004.
+    const double scale = unit < 1 ? std::round(1 / unit) : unit;
+    const double count = std::round(from / unit) + steps;
+    return unit < 1 ? count / scale : count * scale;
+}
+
 gl::Camera<double> withField(const gl::Camera<double>& camera, const std::string& field, double value)
 {
     static const std::regex lookAtPattern(R"(camera\.look_at\.(eye|center|up)\[([012])\])");

@@ -114,6 +114,44 @@ json boxJson(const Box2& box)
     return {box.min.x(), box.min.y(), box.max.x(), box.max.y()};
 }
 
+json placedLabelsJson(const std::vector<PlacedLabel>& placed, Theme theme)
+{
+    json labels = json::array();
+    for (const PlacedLabel& l : placed)
+        labels.push_back({{"text", l.text},
+                          {"runs", runsJson(l.text)},
+                          {"anchor", {l.anchor.x(), l.anchor.y()}},
+                          {"box", boxJson(l.box)},
+                          {"leader", l.leader},
+                          {"minor", l.minor},
+                          {"color", color(elementColor(l.element, theme))}});
+    return labels;
+}
+
+// Stage k's caption, legend and note laid out as the PNG lays them out.
+PictureLayout stageLayout(const EvaluatedScene& scene, int k, const WorldMoment& moment, const WebViewOptions& o,
+                          const FontMeasure& measure)
+{
+    const std::string caption = stageCaption(scene, std::size_t(k), StageText::Heading);
+    return layoutPicture(o.width, o.height, stagePictureText(stageShown(scene, moment), caption, o.fontSize, o.minFontSize),
+                         measure);
+}
+
+// Stage k's labels through `camera`, placed around its text.
+std::vector<PlacedLabel> stageLabels(const EvaluatedScene& scene, const WorldMoment& moment, const Mat4<double>& camera,
+                                     const PictureLayout& layout, const WebViewOptions& o, const FontMeasure& measure)
+{
+    FigureView view;
+    view.camera = camera;
+    view.width = o.width;
+    view.height = o.height;
+    view.frameReach = frameReach(moment.framing);
+    view.fontSize = o.fontSize;
+    view.minFontSize = o.minFontSize;
+    view.lineScale = o.lineScale;
+    return drawFigure(stageShown(scene, moment), view, labelMeasure(measure, o.fontSize), textBoxes(layout)).labels;
+}
+
 // The picture's text boxes and sizes (layoutPicture), for the page to set its caption, legend and note as the PNG does.
 json layoutJson(const PictureLayout& layout)
 {
@@ -168,15 +206,7 @@ json sceneData(const EvaluatedScene& scene, const WebPageViews& views)
     json stageList = json::array();
     for (std::size_t k = 0; k < views.stages.size(); ++k) {
         const WebStage& s = views.stages[k];
-        json labels = json::array();
-        for (const PlacedLabel& l : s.labels)
-            labels.push_back({{"text", l.text},
-                              {"runs", runsJson(l.text)},
-                              {"anchor", {l.anchor.x(), l.anchor.y()}},
-                              {"box", boxJson(l.box)},
-                              {"leader", l.leader},
-                              {"minor", l.minor},
-                              {"color", color(elementColor(l.element, theme))}});
+        const json labels = placedLabelsJson(s.labels, theme);
         const FrameMarks marks = frameMarks(s.frameReach);
         const std::string list = stageText(stages, k, StageText::ListEntry);
         const std::string claim = k < scene.stageClaims.size() ? scene.stageClaims[k] : "";
@@ -282,10 +312,10 @@ json questionData(const Question& q)
                 {"explanationPlain", mathSpokenText(q.explanation)}};
     switch (q.kind) {
     case QuestionKind::Where:
-        out.update({{"point", vec(q.point)}, {"stage", q.stage}, {"tolerance", q.tolerance}, {"answer", vec(q.where)}});
+        out.update({{"point", vec(q.point)}, {"stage", q.stage}});
         break;
-    case QuestionKind::Inside: out.update({{"point", vec(q.point)}, {"answer", q.inside}}); break;
-    case QuestionKind::SignW: out.update({{"point", vec(q.point)}, {"stage", q.stage}, {"answer", q.signW}}); break;
+    case QuestionKind::Inside: out["point"] = vec(q.point); break;
+    case QuestionKind::SignW: out.update({{"point", vec(q.point)}, {"stage", q.stage}}); break;
     case QuestionKind::WhichStage:
     case QuestionKind::Order: {
         json symbols = json::array(), spoken = json::array(); // the stage symbols, set as math, and in words
@@ -295,17 +325,17 @@ json questionData(const Question& q)
         }
         out.update({{"choices", q.choices}, {"choicesMath", symbols}, {"choicesSpoken", spoken}});
         if (q.kind == QuestionKind::WhichStage)
-            out.update({{"stage", q.stage}, {"answer", q.correct}});
+            out["stage"] = q.stage;
         break;
     }
     case QuestionKind::Entry:
-        out.update({{"stage", q.stage}, {"row", q.row}, {"column", q.column}, {"answer", q.entry}});
+        out.update({{"stage", q.stage}, {"row", q.row}, {"column", q.column}});
         break;
     case QuestionKind::Choice: {
         json letters = json::array();
         for (std::size_t k = 0; k < q.choices.size(); ++k)
             letters.push_back(choiceLetter(k));
-        out.update({{"choices", q.choices}, {"letters", letters}, {"answer", q.correct}});
+        out.update({{"choices", q.choices}, {"letters", letters}});
         break;
     }
     }
@@ -338,19 +368,18 @@ WebPageViews webPageViews(const EvaluatedScene& scene, const WebViewOptions& o, 
     // last frame is the stage at rest.
     std::vector<WorldMoment> moments;
     std::vector<PictureLayout> layouts;
+    std::vector<Box2> sceneAreas; // kept apart: each layout is moved into its stage
     for (int k = 0; k <= n; ++k) {
         moments.push_back(stageAtRest(scene, k, fixed));
-        const std::string caption = stageCaption(scene, std::size_t(k), StageText::Heading);
-        layouts.push_back(layoutPicture(o.width, o.height,
-                                        stagePictureText(stageShown(scene, moments.back()), caption, o.fontSize, o.minFontSize),
-                                        measure));
+        layouts.push_back(stageLayout(scene, k, moments.back(), o, measure));
+        sceneAreas.push_back(layouts.back().scene);
     }
     for (int k = 0; k <= n; ++k) {
         if (onStage)
             onStage(k);
         if (k > 0) { // the app's transition, frame by frame
             const StageMotion motion(scene, k - 1, k, fixed);
-            const Box2 &before = layouts[std::size_t(k - 1)].scene, &after = layouts[std::size_t(k)].scene;
+            const Box2 before = sceneAreas[std::size_t(k - 1)], after = sceneAreas[std::size_t(k)];
             std::vector<WebFrame> frames;
             for (int f = 1; f <= kWebFramesPerStep; ++f) {
                 const double s = double(f) / kWebFramesPerStep, u = smoothStep(s);
@@ -360,22 +389,22 @@ WebPageViews webPageViews(const EvaluatedScene& scene, const WebViewOptions& o, 
             views.transitions.push_back(std::move(frames));
         }
         const WorldMoment& moment = moments[std::size_t(k)];
-        const StageShown shown = stageShown(scene, moment);
         PictureLayout& layout = layouts[std::size_t(k)];
         fit.sceneArea = layout.scene;
         const WebFrame rest = frameOf(moment);
-        FigureView view;
-        view.camera = rest.projection * rest.view;
-        view.width = o.width;
-        view.height = o.height;
-        view.frameReach = frameReach(moment.framing);
-        view.fontSize = o.fontSize;
-        view.minFontSize = o.minFontSize;
-        view.lineScale = o.lineScale;
-        Figure figure = drawFigure(shown, view, labelMeasure(measure, o.fontSize), textBoxes(layout));
-        views.stages.push_back({rest, shown.ghost, view.frameReach, std::move(figure.labels), std::move(layout)});
+        std::vector<PlacedLabel> labels = stageLabels(scene, moment, rest.projection * rest.view, layout, o, measure);
+        views.stages.push_back({rest, moment.ghost, frameReach(moment.framing), std::move(labels), std::move(layout)});
     }
     return views;
+}
+
+std::string webStageLabels(const EvaluatedScene& scene, int stage, const Mat4<double>& camera, const WebViewOptions& o,
+                           const FontMeasure& measure)
+{
+    const WorldMoment moment = stageAtRest(scene, stage, fixedFraming(scene, o.fixedFraming));
+    return placedLabelsJson(stageLabels(scene, moment, camera, stageLayout(scene, stage, moment, o, measure), o, measure),
+                            o.theme)
+        .dump();
 }
 
 std::string webPageData(const EvaluatedScene& scene, const WebPageViews& views)

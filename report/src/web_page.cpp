@@ -2,6 +2,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include <algorithm>
 #include <map>
 #include <fstream>
 #include <regex>
@@ -67,9 +68,17 @@ std::string fill(const std::string& text, const std::map<std::string, std::strin
 
 } // namespace
 
-WebAssets loadWebAssets(const std::filesystem::path& javascript, const std::filesystem::path& core)
+WebAssets loadWebAssets(const std::filesystem::path& javascript, const std::filesystem::path& core,
+                        const std::filesystem::path& presets)
 {
     WebAssets assets;
+    if (!presets.empty())
+        for (const Preset& preset : presetScenes(presets)) {
+            const bool meshes = std::any_of(preset.scene.objects.begin(), preset.scene.objects.end(),
+                                            [](const SceneObject& o) { return o.type == ObjectType::Mesh; });
+            if (!meshes)
+                assets.presets.push_back({preset.group, preset.scene.name, sceneToJson(preset.scene)});
+        }
     assets.core = readFile(core.empty() ? VIEWPIPE_WEB_CORE : core, "the core compiled to WebAssembly, built with the app");
     assets.three = readFile(javascript / "three" / "build" / "three.min.js", "Debian package libjs-three");
     assets.katex = readFile(javascript / "katex" / "katex.min.js", "Debian package libjs-katex");
@@ -140,7 +149,10 @@ std::string page(const std::string& title, const json& data, const WebAssets& as
 
 std::string webPage(const EvaluatedScene& scene, const WebPageViews& views, const WebAssets& assets)
 {
-    return page(scene.scene.name, {{"scenes", {sceneWithSource(scene, views)}}}, assets);
+    json presets = json::array();
+    for (const WebPreset& preset : assets.presets)
+        presets.push_back({{"group", preset.group}, {"name", preset.name}, {"scene", preset.scene}});
+    return page(scene.scene.name, {{"scenes", {sceneWithSource(scene, views)}}, {"presets", presets}}, assets);
 }
 
 std::string lessonPage(const Lesson& lesson, const std::vector<int>& stepScenes, const std::vector<LessonScene>& scenes,

@@ -194,6 +194,15 @@
     projectedScene.add(drawable(geometryOf(windowOutline), windowOutline, 1, data.primitives.length));
   }
 
+  // JSON text downloaded as a file.
+  function download(text, name) {
+    const link = document.createElement('a');
+    link.href = URL.createObjectURL(new Blob([text], { type: 'application/json' }));
+    link.download = name;
+    link.click();
+    setTimeout(() => URL.revokeObjectURL(link.href), 10000); // once the download has begun
+  }
+
   // ---- State ------------------------------------------------------------------
   const state = { stage: 0, step: 0, yaw: 0, pitch: 0, zoom: 1, figure: false, traced: null };
   let shown = null; // the frame drawn: {frame, atRest, ghost}
@@ -264,6 +273,23 @@
     const fit = new THREE.Matrix4().makeScale(data.width * s / size.width * state.zoom,
                                               data.height * s / size.height * state.zoom, 0.02);
     return { view: orbit.multiply(view), projection: fit.multiply(matrixOf(frame.projection)) };
+  }
+
+  // The stage's labels placed by the core for the view turned by the user, as at rest (in export pixels);
+  // null where the core cannot (not loaded, or the scene's meshes left out).
+  let turned = { key: '', labels: null };
+  function labelsTurned() {
+    if (!core || data.filesLeftOut || lesson) return null;
+    const exportSize = { width: data.width, height: data.height };
+    const { view, projection } = cameraMatrices(stages[state.stage].rest, exportSize);
+    const clip = projection.multiply(view).elements; // column by column
+    const rows = [0, 1, 2, 3].flatMap((r) => [0, 1, 2, 3].map((c) => clip[4 * c + r]));
+    const key = `${state.stage} ${rows.join(' ')} ${data.scene.length}`;
+    if (turned.key !== key) {
+      const outcome = core.placeLabels(data.scene, JSON.stringify(viewOptions()), state.stage, JSON.stringify(rows), measureRuns);
+      turned = { key, labels: outcome.error ? null : JSON.parse(outcome.text) };
+    }
+    return turned.labels;
   }
 
   function project(clipFromPoint, point, size) {
@@ -417,10 +443,11 @@
         x += context.measureText(run[0]).width;
       }
     };
-    if (atRest && !userMoved()) {
-      // Where the app put them: export pixels, fitted.
+    const placed = !atRest ? null : userMoved() ? labelsTurned() : stages[state.stage].labels;
+    if (placed) {
+      // Where the core placed them, as in the app's pictures: export pixels, fitted.
       const place = (x, y) => ({ x: (x - data.width / 2) * s + size.width / 2, y: (y - data.height / 2) * s + size.height / 2 });
-      for (const label of stages[state.stage].labels) {
+      for (const label of placed) {
         const [x0, y0, x1, y1] = label.box;
         const corner = place(x0, y0);
         let px = (label.minor ? data.smallFontSize : data.fontSize) * s;
@@ -441,9 +468,8 @@
         }
       }
     } else {
-      // Moving, or seen from elsewhere than the app's view: each label at a corner of
-      // its anchor that no label drawn before covers, or left out (the app's
-      // placement, with leader lines, is recorded for the views at rest only).
+      // Moving between stages (or turned where the core cannot place them): each label at a corner of its
+      // anchor that no label drawn before covers, or left out.
       const px = data.fontSize * Math.max(0.6, s);
       const taken = [];
       const overlaps = (a) => taken.some((b) => a.x0 < b.x1 && b.x0 < a.x1 && a.y0 < b.y1 && b.y0 < a.y1);
@@ -676,8 +702,9 @@
   function back() { if (lesson) goToStep(state.step - 1); else goTo(state.stage - 1, true); }
   document.addEventListener('keydown', (event) => {
     if (event.altKey || event.ctrlKey || event.metaKey) return;
-    if (event.target instanceof HTMLInputElement) return; // typing an answer
-    const onButton = event.target instanceof Element && !!event.target.closest('button, summary, a');
+    const typing = [HTMLInputElement, HTMLTextAreaElement, HTMLSelectElement].some((kind) => event.target instanceof kind);
+    if (typing) return; // typing an answer, a number or code
+    const onButton = event.target instanceof Element && !!event.target.closest('button, summary, a, [role=spinbutton]');
     const orbit = event.shiftKey ? 10 : 0;
     switch (event.key) {
       case 'ArrowRight': if (orbit) changeView({ yaw: state.yaw + orbit }); else forward(); break;
@@ -814,10 +841,11 @@
   }
 
   // The scene evaluated anew by the core: what the page draws and the JSON view; or why the core refuses it.
+  // The page's picture as the core lays it out.
+  const viewOptions = () => ({ width: data.width, height: data.height, fontSize: data.fontSize, minFontSize: data.minFontSize,
+                               lineScale: data.lineScale, fixedFraming: data.fixedFraming, dark: data.dark });
   function evaluateText(text, files, filesLeftOut) {
-    const options = { width: data.width, height: data.height, fontSize: data.fontSize, minFontSize: data.minFontSize,
-                      lineScale: data.lineScale, fixedFraming: data.fixedFraming, dark: data.dark };
-    const outcome = core.evaluate(text, JSON.stringify(options), measureRuns);
+    const outcome = core.evaluate(text, JSON.stringify(viewOptions()), measureRuns);
     if (outcome.error) return { error: outcome.error };
     const page = Object.assign(JSON.parse(outcome.page), { scene: text, files, filesLeftOut });
     return { page, pipeline: outcome.pipeline, error: '' };
@@ -826,12 +854,14 @@
   // The view's or the camera's fields, each a text field holding what was typed; every edit is evaluated by the
   // core, which refuses what it cannot use with the field's path and the reason (the last valid picture stays).
   const fields = document.getElementById('scene-fields');
-  // The scenes shown, for undo and redo: each as the core evaluated it ({page, pipeline}), its meshes with it.
-  const edits = { entries: [], at: -1 };
+  // The scenes shown, for undo and redo: each with its meshes ({page, pipeline}, as the core evaluated it). Only
+  // the scene shown and those the core cannot evaluate again (meshes left out) keep their pages; the others
+  // keep their text and files and are evaluated anew when shown.
+  const edits = { entries: [], at: -1, gesture: null };
   const kEditsKept = 100;
-  let linkedScene = null; // a scene a link brought, once the core has taken it
   let pendingLink = null; // the link's scene until the core has read it
-  const edited = () => edits.at > 0 || linkedScene !== null;
+  const originalScene = data.scene; // the page's own: a link holds any other
+  const edited = () => data.scene !== originalScene;
 
   const pathText = (path) =>
     path.reduce((text, part) => typeof part === 'number' ? `${text}[${part}]` : (text ? `${text}.${part}` : part), '');
@@ -944,7 +974,8 @@
 
   // A scene's text, evaluated: shown and kept for undo when the core takes it, else refused beside its field
   // with the last valid picture kept. `files`: the meshes it may name, if not the scene's shown. Whether it was taken.
-  function changeScene(text, input, files) {
+  // `gesture`: edits of one drag, kept as one undoable edit.
+  function changeScene(text, input, files, gesture) {
     if (!core) return false;
     clearRefusals();
     if (!files && data.filesLeftOut) { // the core cannot read meshes the page does not hold
@@ -959,14 +990,24 @@
       showEdits();
       return false;
     }
-    edits.entries.splice(edits.at + 1, Infinity, { page: outcome.page, pipeline: outcome.pipeline });
+    const entry = { page: outcome.page, pipeline: outcome.pipeline, text, files: outcome.page.files };
+    if (gesture && gesture === edits.gesture) edits.entries[edits.at] = entry; // the same drag: one edit
+    else edits.entries.splice(edits.at + 1, Infinity, entry);
+    edits.gesture = gesture || null;
     if (edits.entries.length > kEditsKept) edits.entries.shift();
     edits.at = edits.entries.length - 1;
     showEntry(edits.entries[edits.at], input);
     return true;
   }
-  // A scene the core has evaluated, shown at the stage shown (or `stage`).
+  // A scene of the history shown at the stage shown (or `stage`), evaluated anew if it kept no page.
   function showEntry(entry, input, stage = state.stage) {
+    if (!entry.page) {
+      putFiles(entry.files); // its meshes, for it and the edits that follow
+      const outcome = evaluateText(entry.text, entry.files, '');
+      Object.assign(entry, { page: outcome.page, pipeline: outcome.pipeline });
+    }
+    for (const other of edits.entries)
+      if (other !== entry && other.page && !other.page.filesLeftOut) other.page = null;
     clearRefusals();
     const index = shownScene;
     page.scenes[index] = entry.page;
@@ -978,6 +1019,7 @@
     const focused = input && input === document.activeElement ? input.dataset.path : null;
     buildFields();
     if (focused) fields.querySelector(`input[data-path='${focused}']`).focus();
+    showCode();
     showEdits();
     state.stage = -1;
     goTo(Math.min(stage, last), false);
@@ -993,13 +1035,13 @@
     }
     if (edits.at <= 0) return;
     edits.at -= 1;
-    putFiles(edits.entries[edits.at].page.files); // its meshes, for the edits that follow
+    edits.gesture = null;
     showEntry(edits.entries[edits.at], null);
   }
   function redo() {
     if (edits.at >= edits.entries.length - 1) return;
     edits.at += 1;
-    putFiles(edits.entries[edits.at].page.files);
+    edits.gesture = null;
     showEntry(edits.entries[edits.at], null);
   }
   const refused = () => !!fields.querySelector('[aria-invalid]') || !document.getElementById('editor-error').hidden;
@@ -1016,6 +1058,7 @@
     const key = event.key.toLowerCase();
     // Text typed and not yet applied is the field's own to undo, as in any text field.
     if (event.target instanceof HTMLInputElement && event.target.value !== event.target.defaultValue) return;
+    if (event.target instanceof HTMLTextAreaElement) return;
     if (key === 'z' && !event.shiftKey) undo();
     else if (key === 'y' || (key === 'z' && event.shiftKey)) redo();
     else return;
@@ -1023,11 +1066,7 @@
   });
   // The scene as a file the app opens.
   document.getElementById('save-scene').addEventListener('click', () => {
-    const link = document.createElement('a');
-    link.href = URL.createObjectURL(new Blob([data.scene], { type: 'application/json' }));
-    link.download = (data.title || 'scene').replace(/[^A-Za-z0-9._-]+/g, '-').replace(/^-+|-+$/g, '').toLowerCase() + '.json';
-    link.click();
-    setTimeout(() => URL.revokeObjectURL(link.href), 10000); // once the download has begun
+    download(data.scene, (data.title || 'scene').replace(/[^A-Za-z0-9._-]+/g, '-').replace(/^-+|-+$/g, '').toLowerCase() + '.json');
   });
 
   // Files opened or dropped: meshes go into the core's file system under their names; a scene (JSON) among them
@@ -1072,6 +1111,26 @@
     showRefusal(error, null);
     showEdits();
   }
+  // The app's presets (File > Presets), the scenes without meshes: one opened is an undoable edit.
+  const presetPicker = document.getElementById('presets');
+  const presetGroups = new Map();
+  (page.presets || []).forEach((preset, k) => {
+    if (!presetGroups.has(preset.group)) {
+      const group = preset.group ? document.createElement('optgroup') : presetPicker;
+      if (preset.group) {
+        group.label = preset.group;
+        presetPicker.appendChild(group);
+      }
+      presetGroups.set(preset.group, group);
+    }
+    presetGroups.get(preset.group).appendChild(new Option(preset.name, k));
+  });
+  document.querySelector('#scene-editor .presets').hidden = !(page.presets || []).length || !!lesson;
+  presetPicker.addEventListener('change', () => {
+    const preset = page.presets[Number(presetPicker.value)];
+    presetPicker.value = '';
+    if (preset && core) changeScene(preset.scene, null, {});
+  });
   const picker = document.getElementById('open-files');
   document.getElementById('open-scene').addEventListener('click', () => picker.click());
   picker.addEventListener('change', () => { openFiles(picker.files); picker.value = ''; });
@@ -1110,22 +1169,134 @@
       return false;
     }
     if (!changeScene(text, null)) return false;
-    linkedScene = text;
     goTo(linkedStage);
     return true;
   }
 
-  ViewPipeCore().then((module) => {
+  let coreFailed = ''; // why the core did not load, if it did not
+  ViewPipeCore().catch((error) => {
+    coreFailed = `ViewPipe's core could not start in this browser (${error && error.message ? error.message : error}): ` +
+      'the stages are shown as exported, but nothing can be changed or checked.';
+    const shown = document.getElementById('scene-error');
+    shown.textContent = coreFailed;
+    shown.hidden = false;
+    return null;
+  }).then((module) => {
+    if (!module) return;
     core = module;
     const pipeline = evaluateScene();
     if (!lesson) {
-      edits.entries = [{ page: data, pipeline }];
+      for (const dialect of JSON.parse(core.codeDialects()))
+        dialectPicker.add(new Option(dialect.title, dialect.name));
+      showCode();
+      edits.entries = [{ page: data, pipeline, text: data.scene, files: data.files }];
       edits.at = 0;
       openLink();
       showEdits();
       if (filesBeforeCore) openFiles(filesBeforeCore);
     }
     body.dataset.core = '1';
+  });
+
+  // ---- The camera as code ------------------------------------------------------------
+  // The scene's look-at camera as each library writes it, by the core (the app's Code panel); a marked number
+  // is dragged (one undoable edit a drag) or stepped with ↑ ↓, and pasted calls set the camera.
+  const codeView = document.getElementById('camera-code');
+  const dialectPicker = document.getElementById('code-dialect');
+  const codeError = document.getElementById('code-error');
+  let code = null; // {text, numbers: [{start, end, field, value, tooltip}]}
+  let codeDrag = null; // {index, x, value, gesture, pending, frame}
+  let gestures = 0;
+  function showCode(focusIndex) {
+    if (!core || lesson) return;
+    const outcome = core.cameraCode(data.scene, dialectPicker.value);
+    const foley = !!outcome.error;
+    document.getElementById('code-note').textContent = foley
+      ? "This scene's camera is a Foley view (VRP, VPN, VUP, PRP): no graphics API writes it as code."
+      : 'Drag a marked number left or right, or select it and press ↑ or ↓: each change is one undoable edit.';
+    for (const id of ['camera-code', 'code-paste', 'apply-code']) document.getElementById(id).hidden = foley;
+    document.querySelector('#code-editor .dialect').hidden = foley;
+    document.querySelector('label[for=code-paste]').hidden = foley;
+    codeView.textContent = '';
+    code = foley ? null : JSON.parse(outcome.text);
+    if (!code) return;
+    let at = 0;
+    code.numbers.forEach((number, k) => {
+      codeView.append(code.text.slice(at, number.start));
+      const span = document.createElement('span');
+      span.className = 'code-number';
+      span.textContent = code.text.slice(number.start, number.end);
+      span.title = number.tooltip;
+      span.dataset.index = k;
+      span.tabIndex = 0;
+      span.setAttribute('role', 'spinbutton');
+      span.setAttribute('aria-label', number.tooltip);
+      span.setAttribute('aria-valuenow', number.value);
+      codeView.appendChild(span);
+      at = number.end;
+    });
+    codeView.append(code.text.slice(at));
+    if (focusIndex !== undefined) codeView.querySelector(`[data-index='${focusIndex}']`).focus();
+  }
+  function refuseCode(error) {
+    codeError.textContent = error;
+    codeError.hidden = !error;
+  }
+  // A number of the code set: the scene with it, by the core, evaluated; refused with the core's reason.
+  function setCodeNumber(index, value, gesture) {
+    const number = code.numbers[index];
+    if (Object.is(value, number.value)) return;
+    const outcome = core.withCodeNumber(data.scene, number.field, value);
+    refuseCode(outcome.error);
+    if (!outcome.error) changeScene(outcome.text, null, undefined, gesture);
+    if (!gesture) showCode(index);
+  }
+  const numberIndex = (event) => {
+    const span = event.target instanceof Element && event.target.closest('.code-number');
+    return span ? Number(span.dataset.index) : null;
+  };
+  codeView.addEventListener('pointerdown', (event) => {
+    const index = numberIndex(event);
+    if (index === null || event.button !== 0 || !Number.isFinite(code.numbers[index].value)) return;
+    event.preventDefault();
+    codeView.setPointerCapture(event.pointerId);
+    codeDrag = { index, x: event.clientX, value: code.numbers[index].value, gesture: ++gestures, pending: null, frame: 0 };
+  });
+  codeView.addEventListener('pointermove', (event) => {
+    if (!codeDrag) return;
+    // A step a pixel; one evaluation a frame, of the last position.
+    codeDrag.pending = core.steppedValue(codeDrag.value, Math.round(event.clientX - codeDrag.x));
+    if (codeDrag.frame) return;
+    codeDrag.frame = requestAnimationFrame(() => {
+      const drag = codeDrag;
+      if (!drag) return;
+      drag.frame = 0;
+      setCodeNumber(drag.index, drag.pending, drag.gesture);
+    });
+  });
+  const endDrag = () => {
+    if (!codeDrag) return;
+    const drag = codeDrag;
+    codeDrag = null;
+    cancelAnimationFrame(drag.frame);
+    if (drag.pending !== null) setCodeNumber(drag.index, drag.pending, drag.gesture);
+    showCode(drag.index);
+  };
+  codeView.addEventListener('pointerup', endDrag);
+  codeView.addEventListener('pointercancel', endDrag);
+  codeView.addEventListener('keydown', (event) => {
+    const index = numberIndex(event);
+    const by = { ArrowUp: 1, ArrowDown: -1 }[event.key];
+    if (index === null || !by || !Number.isFinite(code.numbers[index].value)) return;
+    event.preventDefault();
+    event.stopPropagation();
+    setCodeNumber(index, core.steppedValue(code.numbers[index].value, by), null);
+  });
+  dialectPicker.addEventListener('change', () => showCode());
+  document.getElementById('apply-code').addEventListener('click', () => {
+    const outcome = core.withPastedCode(data.scene, document.getElementById('code-paste').value);
+    refuseCode(outcome.error);
+    if (!outcome.error) changeScene(outcome.text, null);
   });
 
   // ---- Scenes and lessons -------------------------------------------------------
@@ -1145,6 +1316,7 @@
     if (fromEdit) return;
     evaluateScene();
     if (!lesson) buildFields();
+    showCode();
   }
 
   // Text with inline math between dollar signs, typeset ("\$" is a dollar).
@@ -1168,23 +1340,19 @@
 
   const results = []; // one entry per question answered: {step, kind, answer, correct, tries}
   const tries = []; // answers checked, per step
+  const closed = []; // per step: its question's answer shown
   function buildLesson() {
     document.getElementById('title').textContent = lesson.title;
     document.getElementById('lesson').hidden = false;
     document.getElementById('scene-editor').hidden = true;
+    document.getElementById('code-editor').hidden = true;
     body.classList.add('lesson');
     document.querySelector('header .keys').textContent =
       'Keys: ← → (or Page Up, Page Down, Space) go through the steps, Home and End; Shift+arrows or drag orbit, ' +
       '+ − zoom, 0 resets the view; answer a question, then Check (Enter).';
     document.querySelector('#stepper .buttons #play').hidden = true;
     document.getElementById('save').addEventListener('click', () => {
-      const blob = new Blob([JSON.stringify({ lesson: lesson.title, answers: results.filter(Boolean) }, null, 2)],
-                            { type: 'application/json' });
-      const link = document.createElement('a');
-      link.href = URL.createObjectURL(blob);
-      link.download = 'lesson-results.json';
-      link.click();
-      URL.revokeObjectURL(link.href);
+      download(JSON.stringify({ lesson: lesson.title, answers: results.filter(Boolean) }, null, 2), 'lesson-results.json');
     });
   }
 
@@ -1200,7 +1368,7 @@
     const box = document.getElementById('question');
     box.textContent = '';
     const question = step.question;
-    body.classList.toggle('asking', !!question);
+    body.classList.toggle('asking', !!question && !closed[index]);
     if (!question) return;
     const prompt = document.createElement('p');
     prompt.className = 'prompt';
@@ -1218,8 +1386,7 @@
     const form = document.createElement('form');
     box.appendChild(form);
     const feedback = document.createElement('p');
-    feedback.className = 'feedback';
-    feedback.setAttribute('role', 'status');
+    feedback.className = 'feedback'; // read through #live, once
     let read = null; // the answer as the core's checkAnswer takes it, or null when none is picked
     const input = (label) => {
       const field = document.createElement('input');
@@ -1338,30 +1505,18 @@
     reveal.className = 'reveal';
     reveal.hidden = true;
     box.appendChild(reveal);
-    form.addEventListener('submit', (event) => {
-      event.preventDefault();
-      const typed = read();
-      const live = document.getElementById('live');
-      const say = (text) => { feedback.textContent = text; live.textContent = text; };
-      if (!typed) return say('Pick an answer first.');
-      if (!core) return say('The page is still loading: check again in a moment.');
-      // Checked by the core, as the app checks it.
-      const outcome = core.checkAnswer(data.scene, question.source, JSON.stringify(typed));
-      if (outcome.error) return say('Answer first: every field needs a number (a fraction such as p/q is fine).');
-      const checked = JSON.parse(outcome.text);
-      const correct = checked.right;
-      tries[index] = (tries[index] || 0) + 1;
-      // The last answer checked, and how many were.
-      results[index] = { step: index + 1, kind: question.kind, answer: checked.answer, correct, tries: tries[index] };
+    const live = document.getElementById('live');
+    const say = (text) => { feedback.textContent = text; live.textContent = text; };
+    const tryAgain = () => {
       const left = question.tries - tries[index];
-      if (!correct && left > 0) { // tried again, the answer kept back
-        feedback.className = 'feedback wrong';
-        return say(`Not quite. Try again: ${left === 1 ? 'one more try' : left + ' more tries'} before the answer is shown.`);
-      }
+      feedback.className = 'feedback wrong';
+      feedback.textContent = `Not quite. Try again: ${left === 1 ? 'one more try' : left + ' more tries'} before the answer is shown.`;
+    };
+    // The question closed: the verdict, the answer, why, and (when just answered) the stage it is about.
+    const close = (correct, justAnswered) => {
       form.querySelectorAll('input, button').forEach((control) => { control.disabled = true; });
       setRichText(feedback, correct ? 'Right.' : `Not quite: the answer is ${answerText}.`);
       feedback.className = 'feedback ' + (correct ? 'right' : 'wrong');
-      // Revealed: the answer, why, and the stage it is about.
       body.classList.remove('asking');
       reveal.hidden = false;
       reveal.textContent = '';
@@ -1373,16 +1528,45 @@
         setRichText(why, question.explanation);
         reveal.appendChild(why);
       }
+      if (!justAnswered) return;
       if (question.point) state.traced = question.point;
-      const revealed = question.stage ? Math.max(lesson.steps[index].stage, question.stage) : state.stage;
+      const revealed = revealedStage(step);
       if (revealed !== state.stage) goTo(revealed, true);
       else { showPanels(); drawWorld(); }
       // Read once answered: the verdict, why, and the step's text (kept back while asking: it may hold the answer).
       live.textContent = (correct ? 'Right.' : `Not quite: the answer is ${question.answerPlain}.`) +
         (question.explanation ? ' ' + question.explanationPlain : '') + ' ' + step.captionPlain;
-      body.dataset.answered = String(results.filter(Boolean).length);
+      body.dataset.answered = String(closed.filter(Boolean).length);
+    };
+    form.addEventListener('submit', (event) => {
+      event.preventDefault();
+      const typed = read();
+      if (!typed) return say('Pick an answer first.');
+      if (!core) return say(coreFailed || 'The page is still loading: check again in a moment.');
+      // Checked by the core, as the app checks it.
+      const outcome = core.checkAnswer(data.scene, question.source, JSON.stringify(typed));
+      if (outcome.error === 'answer: unreadable')
+        return say('Answer first: every field needs a number (a fraction such as p/q is fine).');
+      if (outcome.error) return say(outcome.error);
+      const checked = JSON.parse(outcome.text);
+      tries[index] = (tries[index] || 0) + 1;
+      // The last answer checked, and how many were.
+      results[index] = { step: index + 1, kind: question.kind, answer: checked.answer, correct: checked.right, tries: tries[index] };
+      if (!checked.right && tries[index] < question.tries) { // tried again, the answer kept back
+        tryAgain();
+        live.textContent = feedback.textContent;
+        return;
+      }
+      closed[index] = true;
+      close(checked.right, true);
     });
+    // Back at a step: a closed question stays closed, a try used is said.
+    if (closed[index]) close(results[index] ? results[index].correct : false, false);
+    else if (tries[index]) tryAgain();
   }
+  // The stage a step shows once its question is closed, or all along without one.
+  const revealedStage = (step) =>
+    step.question && step.question.stage ? Math.max(step.stage, step.question.stage) : step.stage;
 
   function goToStep(index, jump) {
     index = Math.max(0, Math.min(lesson.steps.length - 1, index));
@@ -1397,14 +1581,14 @@
     showQuestion(step, index);
     // Asking about stage K, the view waits before it: the answer comes with K's transition.
     const question = step.question;
-    const shownStage = question && question.stage && question.kind !== 'entry'
-      ? Math.min(step.stage, question.stage - 1) : step.stage;
+    const shownStage = closed[index] ? revealedStage(step)
+      : question && question.stage && question.kind !== 'entry' ? Math.min(step.stage, question.stage - 1) : step.stage;
     const from = state.stage;
     if (sameScene && !jump && Math.abs(shownStage - from) === 1) goTo(shownStage, true);
     else goTo(shownStage, false);
     // While a question waits, its step's text is kept back (it may give the answer away), as on the screen.
     document.getElementById('live').textContent = `Step ${index + 1} of ${lesson.steps.length}. ` +
-      (step.question ? 'Question: ' + step.question.promptPlain : step.captionPlain);
+      (step.question && !closed[index] ? 'Question: ' + step.question.promptPlain : step.captionPlain);
   }
 
   // For scripts (and the browser tests): where a world point is drawn now, in client pixels.
@@ -1416,6 +1600,9 @@
       const rect = worldCanvas.getBoundingClientRect();
       return at && { x: rect.left + at.x, y: rect.top + at.y };
     },
+    // The labels the core places for the view as the user has turned it (export pixels), and the stage's at rest.
+    turnedLabels: () => labelsTurned(),
+    restLabels: () => stages[state.stage].labels,
   };
 
   readFragment();

@@ -426,7 +426,7 @@ TEST(Api, ScenesNameTheApiHandednessAndDepth)
                                          "projection": )" + projection + "}}", ".");
     };
     expectRefused([&] { withProjection(R"({"type": "perspective", "fovy_deg": 60, "aspect": 1, "near": 1, "far": "inf"})"); },
-                  "camera.projection.far", "(got \"inf\")");
+                  "camera.projection.far", "(got the text \"inf\")");
     expectRefused([&] { withProjection(R"({"type": "ortho", "left": -1, "right": 1, "bottom": -1, "top": 1, "near": 1, "far": "infinity"})"); },
                   "camera.projection.far", "cannot be \"infinity\" for an ortho projection");
 }

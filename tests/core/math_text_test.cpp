@@ -41,6 +41,7 @@ TEST(MathText, SetsScriptsItalicsAndSigns)
     EXPECT_EQ(mathSpokenText("$\\mathit{SH}_{\\mathrm{per}}$, then $S_{\\mathrm{per}}$."), "SH sub per, then S sub per.");
     EXPECT_EQ(mathSpokenText("($x^2$ and $M^{-1}$)"), "(x squared and M inverse)");
     EXPECT_EQ(mathSpokenText("$45^\\circ$ and $z^{n}$"), "45° and z to the power n");
+    EXPECT_EQ(mathSpokenText("$x^{2n}$, $z^{n+1}$"), "x to the power 2n, z to the power n + 1");
     EXPECT_EQ(mathPlainText("costs \\$5"), "costs $5");
     EXPECT_EQ(mathPlainText("$\\text{if } x$"), "if x");
 }

@@ -103,7 +103,7 @@ private slots:
         }
         QTest::mouseRelease(view_, Qt::LeftButton, {}, start + QPoint(50, 0));
         // 40 moves by 0.1 a pixel: 50 pixels make 45, exactly, and the picture followed on the way.
-        QCOMPARE(CodeView::stepFor(40), 0.1);
+        QCOMPARE(code::stepFor(40), 0.1);
         QCOMPARE(fovyOf(w), 45.0);
         QCOMPARE(w.document()->undoStack()->count(), 1);
         QVERIFY(QString::fromStdString(view_->code().text).contains("gluPerspective(45, 1.5, 30, 110)"));

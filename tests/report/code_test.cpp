@@ -22,6 +22,8 @@
 
 #include <gtest/gtest.h>
 
+#include <limits>
+
 #include <cmath>
 #include <cstdlib>
 #include <filesystem>
@@ -508,6 +510,17 @@ TEST(CodeApply, KnownCallsSetKnownValues)
                                                 "XMVectorSet(0, 1, 0, 0));");
     EXPECT_EQ(look.lookAt.eye, Vec3<double>(1, 2, 3));
     EXPECT_EQ(gl::projectionMatrix(look), gl::projectionMatrix(camera));
+}
+
+// A drag's steps, the app's and the page's: a two-hundredth of the size as a power of ten, whole steps exactly.
+TEST(CameraCode, ANumberStepsByAPowerOfTenExactly)
+{
+    EXPECT_EQ(code::stepFor(40), 0.1);
+    EXPECT_EQ(code::steppedValue(40, 50), 45);
+    EXPECT_EQ(code::steppedValue(40, 3), 40.3); // not 40.300000000000004
+    EXPECT_EQ(code::steppedValue(0.5, -1), 0.499);
+    EXPECT_EQ(code::steppedValue(1000, 1), 1001);
+    EXPECT_EQ(code::steppedValue(std::numeric_limits<double>::infinity(), 5), std::numeric_limits<double>::infinity());
 }
 
 } // namespace

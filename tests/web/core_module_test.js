@@ -158,6 +158,16 @@ require(path.resolve(modulePath))().then((core) => {
   check('text that is not a number is unreadable, not wrong', () => {
     assert.strictEqual(checked('about -0.1').error, 'answer: unreadable');
   });
+  check('answers of the wrong type or out of range are refused by name', () => {
+    const order = JSON.stringify({ kind: 'order', prompt: 'p' });
+    const choice = JSON.stringify({ kind: 'choice', prompt: 'p', choices: ['a', 'b'], answer: 1 });
+    const refused = (question, typed) => core.checkAnswer(JSON.stringify(house), question, JSON.stringify(typed)).error;
+    assert.strictEqual(refused(choice, { choice: 'b' }), 'answer.choice: must be a whole number from 0 to 1');
+    assert.strictEqual(refused(choice, { choice: 1.7 }), 'answer.choice: must be a whole number from 0 to 1');
+    assert.strictEqual(refused(order, { order: [0, 0, 1, 2, 3] }), 'answer.order: must list each of the 5 stages once');
+    assert.strictEqual(refused(order, { order: [0, 1, 2, 3, 9] }), 'answer.order: must be a whole number from 0 to 4');
+    assert.strictEqual(JSON.parse(core.checkAnswer(JSON.stringify(house), order, JSON.stringify({ order: [0, 1, 2, 3, 4] })).text).right, true);
+  });
   check('a point within the tolerance', () => {
     const where = JSON.stringify({ kind: 'where', prompt: 'p', point: [8, 6, 84], after: 3 });
     const outcome = core.checkAnswer(JSON.stringify(house), where, JSON.stringify({ where: ['0', '0.005', '0'] }));

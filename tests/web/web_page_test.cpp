@@ -152,12 +152,13 @@ public:
         }
         return false;
     }
-    void press(const std::string& key, int keyCode)
+    // `modifiers`: DevTools' bits (8: Shift).
+    void press(const std::string& key, int keyCode, int modifiers = 0)
     {
         // Enter types a character too: that is what submits a form.
         const bool enter = key == "Enter";
         for (const char* type : {enter ? "keyDown" : "rawKeyDown", "keyUp"}) {
-            json event = {{"type", type}, {"key", key}, {"code", key}, {"windowsVirtualKeyCode", keyCode}};
+            json event = {{"type", type}, {"key", key}, {"code", key}, {"windowsVirtualKeyCode", keyCode}, {"modifiers", modifiers}};
             if (enter && std::string(type) == "keyDown")
                 event["text"] = "\r";
             page("Input.dispatchKeyEvent", event);
@@ -371,6 +372,9 @@ TEST_F(WebPage, StepsWithKeysAndDrawsEachStageAsTheAppDoes)
         ADD_FAILURE() << problem;
 }
 
+// A value typed into the Scene panel's field (its aria-label), and Enter.
+void typeInto(Browser& browser, const std::string& field, const std::string& text);
+
 TEST_F(WebPage, LinksToAMomentTracesAVertexAndTypesetsTheMatrices)
 {
     const fs::path page = *dir_ / "house" / "scene.html";
@@ -400,6 +404,43 @@ TEST_F(WebPage, LinksToAMomentTracesAVertexAndTypesetsTheMatrices)
     ASSERT_TRUE(browser.waitFor("document.body.dataset.stage === '5'"));
     browser.press("PageUp", 33);
     ASSERT_TRUE(browser.waitFor("document.body.dataset.stage === '4' && !document.body.dataset.moving"));
+
+    // Labels placed by the core in the page: for the view at rest, those of the stage at rest (as the core
+    // placed them in the page, with the page's fonts: a value typed anew has it evaluate the scene); turned,
+    // placed anew around the same caption and legend, none over another, all inside the picture.
+    ASSERT_TRUE(browser.waitFor("document.body.dataset.core === '1'"));
+    typeInto(browser, "view.prp[0]", "8.0");
+    browser.evaluate("document.activeElement.blur()");
+    ASSERT_TRUE(browser.waitFor("!document.getElementById('undo').disabled"));
+    browser.press("0", 48); // the view as at rest (the link turned it by 20 degrees)
+    const auto boxes = [](const json& labels) {
+        std::vector<std::pair<std::string, std::array<double, 4>>> out;
+        for (const json& l : labels)
+            out.push_back({l["text"], {l["box"][0], l["box"][1], l["box"][2], l["box"][3]}});
+        return out;
+    };
+    const auto rest = boxes(json::parse(browser.evaluate("JSON.stringify(window.viewpipe.restLabels())").get<std::string>()));
+    const auto same = boxes(json::parse(browser.evaluate("JSON.stringify(window.viewpipe.turnedLabels())").get<std::string>()));
+    ASSERT_EQ(same.size(), rest.size());
+    for (std::size_t k = 0; k < rest.size(); ++k) {
+        EXPECT_EQ(same[k].first, rest[k].first);
+        for (int c = 0; c < 4; ++c)
+            EXPECT_NEAR(same[k].second[c], rest[k].second[c], 1e-6) << rest[k].first;
+    }
+    for (int turn = 0; turn < 3; ++turn)
+        browser.press("ArrowRight", 39, 8); // Shift: orbit
+    const auto turned = boxes(json::parse(browser.evaluate("JSON.stringify(window.viewpipe.turnedLabels())").get<std::string>()));
+    ASSERT_FALSE(turned.empty());
+    EXPECT_NE(turned, rest) << "turned 30 degrees, the labels move";
+    for (std::size_t a = 0; a < turned.size(); ++a) {
+        const auto& [x0, y0, x1, y1] = turned[a].second;
+        EXPECT_TRUE(x0 >= 0 && y0 >= 0 && x1 <= kWidth && y1 <= kHeight) << turned[a].first;
+        for (std::size_t b = a + 1; b < turned.size(); ++b) {
+            const auto& o = turned[b].second;
+            EXPECT_FALSE(x0 < o[2] && o[0] < x1 && y0 < o[3] && o[1] < y1) << turned[a].first << " over " << turned[b].first;
+        }
+    }
+    browser.press("0", 48); // the view back
 
     // A click on a vertex traces it: a corner of the house's front, clicked where the page draws it.
     const json at = browser.evaluate("JSON.stringify(window.viewpipe.pixelOf([0, 0, 54]))");
@@ -623,6 +664,95 @@ TEST_F(WebPage, OpensAndDropsScenesAndMeshesReadByTheCore)
         ADD_FAILURE() << problem;
 }
 
+// The camera as code, as the app's Code panel shows it (the core writes it): a number dragged is one
+// undoable edit whose scene is the CLI's with that value; ↑ steps it; pasted code sets the camera; a
+// preset opens as the app opens it. All offline.
+TEST_F(WebPage, TheCameraAsCodeIsDraggedSteppedAndPasted)
+{
+    const fs::path folder = *dir_ / "opengl";
+    const Finished exported = viewpipe({"export", QString::fromStdString(kData + "/scenes/opengl-perspective.json"), "--out",
+                                        QString::fromStdString(folder.string()), "--format", "html", "--quiet"});
+    ASSERT_EQ(exported.exitCode, 0) << exported.output;
+    std::ifstream in(kData + "/scenes/opengl-perspective.json");
+    std::stringstream original;
+    original << in.rdbuf();
+    // The same scene with another field of view, for the CLI.
+    const auto withFovy = [&](const std::string& fovy) {
+        std::string text = original.str();
+        const std::size_t at = text.find("\"fovy_deg\": 40");
+        text.replace(at, 14, "\"fovy_deg\": " + fovy);
+        const fs::path file = folder / ("fovy-" + fovy + ".json");
+        std::ofstream(file) << text;
+        return viewpipe({"pipeline", QString::fromStdString(file.string()), "--json"}).output;
+    };
+
+    // Offline, as in a lecture hall without a network: the page needs none.
+    Browser browser(*dir_ / "profile-code");
+    browser.page("Network.enable");
+    browser.page("Network.emulateNetworkConditions",
+                 {{"offline", true}, {"latency", 0}, {"downloadThroughput", -1}, {"uploadThroughput", -1}});
+    browser.page("Page.navigate", {{"url", "file://" + (folder / "scene.html").string()}});
+    ASSERT_TRUE(browser.waitFor("document.body.dataset.core === '1'")) << "the core never loaded";
+    browser.evaluate("document.getElementById('code-editor').open = true");
+    const std::string json = "document.getElementById('pipeline-json').textContent";
+    const std::string codeText = "document.getElementById('camera-code').textContent";
+    ASSERT_NE(browser.evaluate(codeText).get<std::string>().find("gluPerspective(40, 1.5, 30, 110)"), std::string::npos)
+        << browser.evaluate(codeText);
+
+    // Dragged 50 pixels right: 40 moves by 0.1 a pixel (the app's step), to 45, in one undoable edit.
+    const std::string fovy = "document.querySelector(`#camera-code [aria-label^='fovy']`)";
+    browser.evaluate(fovy + ".scrollIntoView({ block: 'center' })");
+    const nlohmann::json box = nlohmann::json::parse(browser.evaluate("JSON.stringify((() => { const r = " + fovy +
+                                                  ".getBoundingClientRect(); return [r.x + r.width / 2, r.y + r.height / 2]; })())")
+                                     .get<std::string>());
+    const double x = box[0], y = box[1];
+    browser.page("Input.dispatchMouseEvent", {{"type", "mousePressed"}, {"x", x}, {"y", y}, {"button", "left"}, {"clickCount", 1}});
+    for (int dx = 10; dx <= 50; dx += 10) {
+        browser.page("Input.dispatchMouseEvent", {{"type", "mouseMoved"}, {"x", x + dx}, {"y", y}, {"button", "left"}, {"buttons", 1}});
+        browser.evaluate("new Promise((done) => requestAnimationFrame(() => requestAnimationFrame(done)))");
+    }
+    browser.page("Input.dispatchMouseEvent", {{"type", "mouseReleased"}, {"x", x + 50}, {"y", y}, {"button", "left"}, {"clickCount", 1}});
+    const std::string at45 = withFovy("45");
+    ASSERT_TRUE(browser.waitFor(json + " + '\\n' === " + nlohmann::json(at45).dump()));
+    EXPECT_NE(browser.evaluate(codeText).get<std::string>().find("gluPerspective(45, 1.5, 30, 110)"), std::string::npos);
+    EXPECT_EQ(browser.evaluate("document.querySelector(`input[aria-label='camera.projection.fovy_deg']`).value"), "45");
+    browser.evaluate("document.activeElement.blur()");
+    pressWithControl(browser, "z", 90);
+    const std::string at40 = viewpipe({"pipeline", QString::fromStdString(kData + "/scenes/opengl-perspective.json"), "--json"}).output;
+    ASSERT_TRUE(browser.waitFor(json + " + '\\n' === " + nlohmann::json(at40).dump())) << "one Ctrl+Z undoes the whole drag";
+    EXPECT_EQ(browser.evaluate("document.getElementById('undo').disabled"), true);
+
+    // ↑ on the number steps it once.
+    browser.evaluate(fovy + ".focus()");
+    browser.press("ArrowUp", 38);
+    ASSERT_TRUE(browser.waitFor(json + " + '\\n' === " + nlohmann::json(withFovy("40.1")).dump()));
+
+    // Pasted code sets the camera; code that names nothing is refused with the core's reason.
+    browser.evaluate("document.getElementById('code-paste').value = 'gluPerspective(60, 1.5, 30, 110)'");
+    browser.evaluate("document.getElementById('apply-code').click()");
+    ASSERT_TRUE(browser.waitFor(json + " + '\\n' === " + nlohmann::json(withFovy("60")).dump()));
+    browser.evaluate("document.getElementById('code-paste').value = 'hello()'");
+    browser.evaluate("document.getElementById('apply-code').click()");
+    ASSERT_TRUE(browser.waitFor("!document.getElementById('code-error').hidden"));
+    EXPECT_EQ(browser.evaluate("document.getElementById('code-error').textContent").get<std::string>().rfind("code: ", 0), 0u);
+
+    // A preset, as the app's File > Presets opens it: the CLI's numbers for its file, and undoable.
+    const std::string ortho = kData + "/scenes/opengl-ortho.json";
+    std::ifstream orthoIn(ortho);
+    const std::string orthoName = nlohmann::json::parse(orthoIn)["name"];
+    EXPECT_EQ(browser.evaluate("(() => { const picker = document.getElementById('presets'); const option = [...picker.options].find("
+                               "(o) => o.text === " + nlohmann::json(orthoName).dump() + "); if (!option) return false; "
+                               "picker.value = option.value; picker.dispatchEvent(new Event('change')); return true; })()"),
+              true) << "the presets offer " << orthoName;
+    const std::string orthoJson = viewpipe({"pipeline", QString::fromStdString(ortho), "--json"}).output;
+    ASSERT_TRUE(browser.waitFor(json + " + '\\n' === " + nlohmann::json(orthoJson).dump()));
+    EXPECT_EQ(browser.evaluate("document.getElementById('title').textContent"), orthoName);
+    pressWithControl(browser, "z", 90);
+    ASSERT_TRUE(browser.waitFor(json + " + '\\n' === " + nlohmann::json(withFovy("60")).dump()));
+    for (const std::string& problem : browser.problems())
+        ADD_FAILURE() << problem;
+}
+
 TEST(LessonPage, QuestionsAreAnsweredCheckedAndRevealed)
 {
     const fs::path dir = fs::temp_directory_path() / ("viewpipe-web-lesson-" + std::to_string(::getpid()));
@@ -694,6 +824,17 @@ TEST(LessonPage, QuestionsAreAnsweredCheckedAndRevealed)
         ASSERT_TRUE(browser.waitFor("document.body.dataset.stage === '4' && !document.body.dataset.moving"));
         const std::string hash = browser.evaluate("location.hash");
         EXPECT_NE(hash.find("step=2"), std::string::npos);
+
+        // Back at step 1: its question stays closed, at the stage it is about, and cannot be answered again.
+        browser.evaluate("document.activeElement.blur()");
+        browser.press("PageUp", 33);
+        ASSERT_TRUE(browser.waitFor("document.getElementById('step-title').textContent === 'Step 1 of 2'"));
+        ASSERT_TRUE(browser.waitFor("document.body.dataset.stage === '3' && !document.body.dataset.moving"));
+        EXPECT_EQ(browser.evaluate("document.querySelector('#question .feedback').firstChild.textContent"),
+                  "Not quite: the answer is ");
+        EXPECT_EQ(browser.evaluate("[...document.querySelectorAll('#question input, #question button')].every(i => i.disabled)"), true);
+        EXPECT_EQ(browser.evaluate("document.body.classList.contains('asking')"), false);
+        EXPECT_NE(browser.evaluate(live).get<std::string>().find("VRC axes"), std::string::npos);
         EXPECT_EQ(hash.find("stage="), std::string::npos) << "the stage would name which_stage answers";
         for (const std::string& problem : browser.problems())
             ADD_FAILURE() << problem;

@@ -41,6 +41,15 @@ const gl::Camera<double>& lookAtCamera(const Scene& scene, const std::string& pu
 Scene parseScene(const std::string& text, const std::filesystem::path& baseDir);
 Scene loadScene(const std::filesystem::path& file);
 
+// The scenes offered as presets (the app's File > Presets, the page's
+// Presets list): the scene files of `scenes` and of its classical/ and apis/
+// folders, by file name, each read (one that does not read is not offered).
+struct Preset {
+    std::string group; // "", "Classical projections", "Graphics APIs"
+    Scene scene;
+};
+std::vector<Preset> presetScenes(const std::filesystem::path& scenes);
+
 std::string sceneToJson(const Scene& scene);
 // The same, to be read from `folder`: mesh paths relative to it.
 std::string sceneToJson(const Scene& scene, const std::filesystem::path& folder);

@@ -41,6 +41,13 @@ struct CameraCode {
 // (its API, handedness and depth included) in the dialect.
 CameraCode cameraCode(const gl::Camera<double>& camera, Dialect dialect);
 
+// A number dragged or stepped `steps` steps from `from`: whole steps of a
+// two-hundredth of its size (at least of 1) as a power of ten, so 40 moves by
+// 0.1 (to 40.3, not 40.300000000000004) and 0.5 by 0.001. An infinite number stays.
+double steppedValue(double from, int steps);
+// The step of steppedValue.
+double stepFor(double value);
+
 // The camera with one field set (a CodeNumber's field); throws InputError naming
 // the field when the value makes no valid camera.
 gl::Camera<double> withField(const gl::Camera<double>& camera, const std::string& field, double value);

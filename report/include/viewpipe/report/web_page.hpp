@@ -60,11 +60,17 @@ struct WebPageViews {
 // style sheet as data; and ViewPipe's core as WebAssembly inlined in one
 // script (`core`: empty for the one built with the app, by web/). Throws
 // std::runtime_error naming what is missing.
+// A preset the page offers: its group ("", "Classical projections", ...), name and scene JSON.
+struct WebPreset {
+    std::string group, name, scene;
+};
 struct WebAssets {
     std::string three, katex, katexCss, core;
+    std::vector<WebPreset> presets;
 };
+// With `presets`, a scenes folder: its presets (presetScenes) without meshes.
 WebAssets loadWebAssets(const std::filesystem::path& javascript = "/usr/share/javascript",
-                        const std::filesystem::path& core = {});
+                        const std::filesystem::path& core = {}, const std::filesystem::path& presets = {});
 
 // How the page shows a scene: each stage at rest and each step's frames,
 // framed as the app frames them (world_view.hpp), from the default viewpoint;
@@ -73,6 +79,13 @@ WebAssets loadWebAssets(const std::filesystem::path& javascript = "/usr/share/ja
 // made, for progress and cancelling.
 WebPageViews webPageViews(const EvaluatedScene& scene, const WebViewOptions& options, const FontMeasure& measure,
                           const std::function<void(int)>& onStage = {});
+
+// Stage k's labels as webPageViews places them (the figures' placement,
+// around the stage's caption and legend), but seen through `camera` (stage
+// coordinates -> the picture's clip coordinates): the page's labels while
+// the view is turned. As JSON, as webPageData writes a stage's labels.
+std::string webStageLabels(const EvaluatedScene& scene, int stage, const Mat4<double>& camera,
+                           const WebViewOptions& options, const FontMeasure& measure);
 
 // A scene as the page draws it, as JSON: what the page's core makes anew on every edit.
 std::string webPageData(const EvaluatedScene& scene, const WebPageViews& views);
