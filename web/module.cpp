@@ -12,6 +12,7 @@
 #include <stdexcept>
 #include <string>
 
+#include "viewpipe/camera_choices.hpp"
 #include "viewpipe/error.hpp"
 #include "viewpipe/evaluated_scene.hpp"
 #include "viewpipe/lesson.hpp"
@@ -278,6 +279,29 @@ Outcome withPastedCode(const std::string& sceneText, const std::string& pasted)
     });
 }
 
+// The scene camera's settings picked from a list, as the app's Parameters
+// list them (cameraChoices): [{"field", "title", "options", "chosen"}].
+Outcome cameraChoicesOf(const std::string& sceneText)
+{
+    return guarded([&] {
+        nlohmann::json choices = nlohmann::json::array();
+        for (const CameraChoice& c : cameraChoices(parseScene(sceneText, kSceneFolder).camera))
+            choices.push_back({{"field", c.field}, {"title", c.title}, {"options", c.options}, {"chosen", c.chosen}});
+        return Outcome{choices.dump(), ""};
+    });
+}
+
+// The scene with option `index` of its camera's choice `field` taken
+// (withChoice): its JSON anew, or why not.
+Outcome withCameraChoice(const std::string& sceneText, const std::string& field, int index)
+{
+    return guarded([&] {
+        Scene scene = parseScene(sceneText, kSceneFolder);
+        scene.camera = withChoice(scene.camera, field, index);
+        return Outcome{sceneToJson(scene, kSceneFolder), ""};
+    });
+}
+
 } // namespace
 } // namespace viewpipe::web
 
@@ -299,4 +323,6 @@ EMSCRIPTEN_BINDINGS(viewpipe)
     emscripten::function("withCodeNumber", &withCodeNumber);
     emscripten::function("withPastedCode", &withPastedCode);
     emscripten::function("steppedValue", &viewpipe::code::steppedValue);
+    emscripten::function("cameraChoices", &cameraChoicesOf);
+    emscripten::function("withCameraChoice", &withCameraChoice);
 }

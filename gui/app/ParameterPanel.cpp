@@ -11,9 +11,11 @@
 #include <QStyleOptionFrame>
 #include <QVBoxLayout>
 
+#include <algorithm>
 #include <cmath>
 
 #include "NumberText.h"
+#include "viewpipe/camera_choices.hpp"
 #include "viewpipe/format.hpp"
 
 namespace viewpipe::gui {
@@ -85,37 +87,6 @@ QList<double*> numbersOf(CameraSpec<double>& camera, const QString& field)
             return {};
         },
         gl.projection);
-}
-
-// The shortest text that reads back as the same double, with a '.' whatever the locale.
-// Switching an OpenGL camera between a box (frustum, ortho) and gluPerspective
-// keeps near, far and the near-plane rectangle's size.
-gl::ProjectionSpec<double> convertProjection(const gl::ProjectionSpec<double>& from, int type)
-{
-    double left = -1, right = 1, bottom = -1, top = 1, zNear = 1, zFar = 100;
-    if (const auto* p = std::get_if<gl::Perspective<double>>(&from)) {
-        top = p->zNear * std::tan(p->fovyDegrees * M_PI / 360);
-        bottom = -top;
-        right = top * p->aspect;
-        left = -right;
-        zNear = p->zNear;
-        zFar = std::isinf(p->zFar) ? 1000 * p->zNear : p->zFar;
-    } else {
-        std::visit(
-            [&](const auto& box) {
-                if constexpr (!std::is_same_v<std::decay_t<decltype(box)>, gl::Perspective<double>>) {
-                    left = box.left, right = box.right, bottom = box.bottom, top = box.top;
-                    zNear = box.zNear, zFar = std::isinf(box.zFar) ? 1000 * box.zNear : box.zFar;
-                }
-            },
-            from);
-    }
-    if (type == 0)
-        return gl::Frustum<double>{left, right, bottom, top, zNear, zFar};
-    if (type == 1)
-        return gl::Ortho<double>{left, right, bottom, top, zNear, zFar};
-    const double fovy = 2 * std::atan2((top - bottom) / 2, zNear) * 180 / M_PI;
-    return gl::Perspective<double>{fovy, (right - left) / (top - bottom), zNear, zFar};
 }
 
 // The width a line edit needs to show all its text, as QLineEdit::sizeHint
@@ -211,7 +182,7 @@ void ParameterPanel::rebuild(const CameraSpec<double>& camera)
 void ParameterPanel::addFields(const CameraSpec<double>& camera)
 {
     if (std::holds_alternative<foley::ViewSpec<double>>(camera)) {
-        addChoice("view.projection", tr("Projection"), {tr("perspective"), tr("parallel")},
+        addChoice(camera, "view.projection",
                   tooltip(tr("Projection"), tr("perspective: the center of projection is the PRP; parallel: the "
                                                "direction of projection runs from the PRP to the window's center "
                                                "(CW).")));
@@ -244,21 +215,18 @@ void ParameterPanel::addFields(const CameraSpec<double>& camera)
     addRow("camera.look_at.up", tr("Up"), {"upX", "upY", "upZ"},
            tr("gluLookAt up: the up direction, in world coordinates; any length but zero, not parallel to "
               "center − eye."));
-    QStringList apis;
-    for (const gl::Api api : gl::kApis)
-        apis << QString::fromStdString(gl::apiTitle(api));
-    addChoice("camera.api", tr("API"), apis,
+    addChoice(camera, "camera.api",
               tooltip(tr("API"), tr("Whose conventions the projection follows: OpenGL's depth runs from -1 (near) to "
                                     "1 (far), the others' from 0 to 1, and Vulkan's y points down. A stage after "
                                     "the projection takes OpenGL's clip coordinates to the API's.")));
-    addChoice("camera.handedness", tr("Handedness"), {tr("right: the eye looks down -z"), tr("left: down +z")},
+    addChoice(camera, "camera.handedness",
               tooltip(tr("Handedness"), tr("Right-handed (gluLookAt, glm::lookAtRH): eye axes s, u, -f. "
                                            "Left-handed (XMMatrixLookAtLH, glm::lookAtLH): eye axes up × f, u, f; "
                                            "with the same numbers the picture is mirrored.")));
-    addChoice("camera.depth", tr("Depth"), {tr("standard: near to the low end"), tr("reversed: near to 1")},
+    addChoice(camera, "camera.depth",
               tooltip(tr("Depth"), tr("Reversed depth exchanges near and far in the depth range: with a float "
                                       "depth buffer, precision then stays nearly even with distance.")));
-    addChoice("camera.projection.type", tr("Projection"), {"glFrustum", "glOrtho", "gluPerspective"},
+    addChoice(camera, "camera.projection.type",
               tooltip(tr("Projection"), tr("The projection matrix: glFrustum, glOrtho or gluPerspective. Switching "
                                            "keeps near, far and the size of the near plane's rectangle.")));
     if (std::holds_alternative<gl::Perspective<double>>(gl.projection)) {
@@ -363,20 +331,27 @@ void ParameterPanel::changeEvent(QEvent* event)
     QWidget::changeEvent(event);
 }
 
-void ParameterPanel::addChoice(const QString& field, const QString& label, const QStringList& items,
-                               const QString& tip)
+// A choice of the camera's (cameraChoices: its title and options), with the app's tooltip.
+void ParameterPanel::addChoice(const CameraSpec<double>& camera, const std::string& field, const QString& tip)
 {
+    const std::vector<CameraChoice> choices = cameraChoices(camera);
+    const auto choice =
+        std::find_if(choices.begin(), choices.end(), [&](const CameraChoice& c) { return c.field == field; });
+    QStringList items;
+    for (const std::string& option : choice->options)
+        items << QString::fromStdString(option);
+    const QString label = QString::fromStdString(choice->title);
     auto* combo = new QComboBox;
-    combo->setObjectName(field);
+    combo->setObjectName(QString::fromStdString(field));
     combo->addItems(items);
     combo->setToolTip(tip);
     connect(combo, QOverload<int>::of(&QComboBox::currentIndexChanged), this,
-            [this, field](int index) { choose(field, index); });
+            [this, name = combo->objectName()](int index) { choose(name, index); });
     auto* row = new QHBoxLayout;
     row->addWidget(addName(label, tip));
     row->addWidget(combo, 1);
     rows_->addLayout(row);
-    choices_[field] = combo;
+    choices_[combo->objectName()] = combo;
 }
 
 void ParameterPanel::setCamera(const CameraSpec<double>& camera)
@@ -408,15 +383,8 @@ void ParameterPanel::fill(const QWidget* except)
     for (QBoxLayout* numbers : numbers_)
         numbers->invalidate(); // their texts decide between side by side and one under another
     QMap<QString, int> chosen;
-    if (const auto* spec = std::get_if<foley::ViewSpec<double>>(&camera_)) {
-        chosen["view.projection"] = spec->projection == foley::Projection::Perspective ? 0 : 1;
-    } else {
-        const auto& gl = std::get<gl::Camera<double>>(camera_);
-        chosen["camera.projection.type"] = int(gl.projection.index());
-        chosen["camera.api"] = int(gl.api); // in the order of gl::kApis
-        chosen["camera.handedness"] = gl.handedness == gl::Handedness::Right ? 0 : 1;
-        chosen["camera.depth"] = gl.depth == gl::DepthMode::Standard ? 0 : 1;
-    }
+    for (const CameraChoice& choice : cameraChoices(camera_))
+        chosen[QString::fromStdString(choice.field)] = choice.chosen;
     for (auto c = chosen.cbegin(); c != chosen.cend(); ++c)
         if (QComboBox* choice = choices_.value(c.key()); choice && choice != except)
             choice->setCurrentIndex(c.value());
@@ -461,20 +429,7 @@ void ParameterPanel::choose(const QString& field, int index)
 {
     if (filling_)
         return;
-    CameraSpec<double> candidate = camera_;
-    if (auto* spec = std::get_if<foley::ViewSpec<double>>(&candidate)) {
-        spec->projection = index == 0 ? foley::Projection::Perspective : foley::Projection::Parallel;
-    } else {
-        auto& gl = std::get<gl::Camera<double>>(candidate);
-        if (field == "camera.api")
-            gl.api = gl::kApis[index];
-        else if (field == "camera.handedness")
-            gl.handedness = index == 0 ? gl::Handedness::Right : gl::Handedness::Left;
-        else if (field == "camera.depth")
-            gl.depth = index == 0 ? gl::DepthMode::Standard : gl::DepthMode::Reversed;
-        else
-            gl.projection = convertProjection(gl.projection, index);
-    }
+    const CameraSpec<double> candidate = withChoice(camera_, field.toStdString(), index);
     fill(choices_.value(field));
     emitEdit(candidate, field);
 }

@@ -50,7 +50,7 @@ private:
     QLabel* addName(const QString& label, const QString& tip);
     // The rows' names take the width of the widest: the fields line up.
     void alignNames();
-    void addChoice(const QString& field, const QString& label, const QStringList& items, const QString& tip);
+    void addChoice(const CameraSpec<double>& camera, const std::string& field, const QString& tip);
     // Shows camera_ in every field but `except`.
     void fill(const QWidget* except);
     void commit(QLineEdit* box);

@@ -865,12 +865,54 @@
 
   const pathText = (path) =>
     path.reduce((text, part) => typeof part === 'number' ? `${text}[${part}]` : (text ? `${text}.${part}` : part), '');
+  // A field's row: its name, its inputs (added by the caller) and its refusal.
+  function fieldRow(path, name) {
+    const row = document.createElement('div');
+    row.className = 'field';
+    row.dataset.path = pathText(path);
+    const label = document.createElement('label');
+    label.textContent = name;
+    row.appendChild(label);
+    const refusal = document.createElement('p');
+    refusal.className = 'field-error';
+    refusal.id = `refusal-${row.dataset.path}`;
+    refusal.hidden = true;
+    row.appendChild(refusal);
+    return row;
+  }
   function buildFields() {
     fields.textContent = '';
     const scene = JSON.parse(data.scene);
     const root = scene.camera ? 'camera' : 'view';
+    // The settings picked from a list (the API, the projection's type, ...), as the core lists them: a choice
+    // is the scene with the core's change (switching glFrustum to gluPerspective rewrites its numbers).
+    const choices = core ? JSON.parse(core.cameraChoices(data.scene).text || '[]') : [];
+    for (const choice of choices) {
+      const path = choice.field.split('.');
+      const row = fieldRow(path, choice.title);
+      const select = document.createElement('select');
+      choice.options.forEach((option, k) => select.add(new Option(option, k)));
+      select.selectedIndex = choice.chosen;
+      select.dataset.path = JSON.stringify(path);
+      select.id = `field-${row.dataset.path}`;
+      row.querySelector('label').htmlFor = select.id;
+      select.addEventListener('change', () => {
+        const outcome = core.withCameraChoice(data.scene, choice.field, select.selectedIndex);
+        if (outcome.error) {
+          clearRefusals();
+          showRefusal(outcome.error, select);
+          showEdits();
+        } else {
+          changeScene(outcome.text, select);
+        }
+      });
+      row.insertBefore(select, row.querySelector('.field-error'));
+      fields.appendChild(row);
+    }
+    const chosen = new Set(choices.map((choice) => choice.field));
     // One row per number, list of numbers or text; objects as groups.
     const add = (parent, value, path) => {
+      if (chosen.has(pathText(path))) return;
       const numbers = Array.isArray(value) && value.every((v) => typeof v === 'number');
       if (value !== null && typeof value === 'object' && !numbers) {
         const group = document.createElement('fieldset');
@@ -881,12 +923,9 @@
         parent.appendChild(group);
         return;
       }
-      const row = document.createElement('div');
-      row.className = 'field';
-      row.dataset.path = pathText(path);
-      const label = document.createElement('label');
-      label.textContent = path[path.length - 1];
-      row.appendChild(label);
+      const row = fieldRow(path, path[path.length - 1]);
+      const label = row.querySelector('label');
+      const refusal = row.querySelector('.field-error');
       const items = numbers ? value.map((v, k) => [v, [...path, k]]) : [[value, path]];
       for (const [item, itemPath] of items) {
         const input = document.createElement('input');
@@ -903,13 +942,8 @@
           input.id = `field-${row.dataset.path}`;
           label.htmlFor = input.id;
         }
-        row.appendChild(input);
+        row.insertBefore(input, refusal);
       }
-      const refusal = document.createElement('p');
-      refusal.className = 'field-error';
-      refusal.id = `refusal-${row.dataset.path}`;
-      refusal.hidden = true;
-      row.appendChild(refusal);
       parent.appendChild(row);
     };
     add(fields, scene[root], [root]);
@@ -940,7 +974,7 @@
     document.getElementById('editor-error').hidden = true;
     fields.querySelectorAll('.field').forEach((row) => {
       row.querySelector('.field-error').hidden = true;
-      row.querySelectorAll('input').forEach((input) => {
+      row.querySelectorAll('input, select').forEach((input) => {
         input.removeAttribute('aria-invalid');
         input.removeAttribute('aria-describedby');
       });
@@ -965,7 +999,7 @@
       const refusal = shown.querySelector('.field-error');
       refusal.textContent = error;
       refusal.hidden = false;
-      for (const field of shown.querySelectorAll('input')) {
+      for (const field of shown.querySelectorAll('input, select')) {
         field.setAttribute('aria-invalid', 'true');
         field.setAttribute('aria-describedby', refusal.id);
       }
@@ -1018,7 +1052,7 @@
     showOutcome({ pipeline: entry.pipeline, error: '' });
     const focused = input && input === document.activeElement ? input.dataset.path : null;
     buildFields();
-    if (focused) fields.querySelector(`input[data-path='${focused}']`).focus();
+    if (focused) fields.querySelector(`input[data-path='${focused}'], select[data-path='${focused}']`)?.focus();
     showCode();
     showEdits();
     state.stage = -1;
@@ -1188,6 +1222,7 @@
     if (!lesson) {
       for (const dialect of JSON.parse(core.codeDialects()))
         dialectPicker.add(new Option(dialect.title, dialect.name));
+      buildFields(); // with the camera's choices, which the core lists
       showCode();
       edits.entries = [{ page: data, pipeline, text: data.scene, files: data.files }];
       edits.at = 0;

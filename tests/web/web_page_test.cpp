@@ -753,6 +753,74 @@ TEST_F(WebPage, TheCameraAsCodeIsDraggedSteppedAndPasted)
         ADD_FAILURE() << problem;
 }
 
+// The settings picked from a list, as in the app's Parameters: the core rewrites the scene and the CLI computes the
+// same numbers for it; gluPerspective switched to glFrustum keeps the projection (its reference page: gluPerspective
+// is glFrustum with top = zNear · tan(fovy / 2)).
+TEST_F(WebPage, ChoosesTheApiAndTheProjectionTypeAsTheAppDoes)
+{
+    const fs::path folder = *dir_ / "choices";
+    const std::string scene = kData + "/scenes/opengl-perspective.json";
+    const Finished exported = viewpipe({"export", QString::fromStdString(scene), "--out",
+                                        QString::fromStdString(folder.string()), "--format", "html", "--quiet"});
+    ASSERT_EQ(exported.exitCode, 0) << exported.output;
+    const std::string original = viewpipe({"pipeline", QString::fromStdString(scene), "--json"}).output;
+
+    Browser browser(*dir_ / "profile-choices");
+    browser.page("Page.navigate", {{"url", "file://" + (folder / "scene.html").string()}});
+    ASSERT_TRUE(browser.waitFor("document.body.dataset.core === '1'")) << "the core never loaded";
+    const std::string json = "document.getElementById('pipeline-json').textContent";
+    const auto choose = [&](const std::string& field, int index) {
+        browser.evaluate("(() => { const s = document.getElementById('field-" + field + "'); s.selectedIndex = " +
+                         std::to_string(index) + "; s.dispatchEvent(new Event('change')); })()");
+    };
+    const auto selected = [&](const std::string& field) {
+        return browser.evaluate("document.getElementById('field-" + field + "').selectedOptions[0].text").get<std::string>();
+    };
+    EXPECT_EQ(selected("camera.projection.type"), "gluPerspective");
+    EXPECT_EQ(selected("camera.api"), "OpenGL");
+
+    choose("camera.projection.type", 0);
+    ASSERT_TRUE(browser.waitFor(json + " + '\\n' !== " + nlohmann::json(original).dump()));
+    EXPECT_EQ(selected("camera.projection.type"), "glFrustum");
+    EXPECT_EQ(browser.evaluate("!!document.querySelector(`input[aria-label='camera.projection.left']`) && "
+                               "!document.querySelector(`input[aria-label='camera.projection.fovy_deg']`)"),
+              true) << "the fields are glFrustum's";
+    const auto composite = [](const std::string& text) { return nlohmann::json::parse(text)["composite"]; };
+    const nlohmann::json before = composite(original), after = composite(browser.evaluate(json).get<std::string>());
+    for (int r = 0; r < 4; ++r)
+        for (int c = 0; c < 4; ++c)
+            EXPECT_NEAR(after[r][c].get<double>(), before[r][c].get<double>(),
+                        1e-14 * std::max(1.0, std::abs(before[r][c].get<double>())))
+                << "composite(" << r << ", " << c << ")";
+    // The scene the page holds now (its link), computed by the CLI: the page's numbers, digit for digit.
+    const std::string hash = browser.evaluate("location.hash");
+    const std::size_t at = hash.find("scene=");
+    ASSERT_NE(at, std::string::npos) << hash;
+    const fs::path frustumFile = folder / "frustum.json";
+    std::ofstream(frustumFile) << QByteArray::fromBase64(QByteArray::fromStdString(hash.substr(at + 6, hash.find('&', at) - at - 6)),
+                                                         QByteArray::Base64UrlEncoding | QByteArray::OmitTrailingEquals)
+                                      .toStdString();
+    EXPECT_EQ(browser.evaluate(json).get<std::string>() + "\n",
+              viewpipe({"pipeline", QString::fromStdString(frustumFile.string()), "--json"}).output);
+
+    // Undone, then Vulkan chosen: the CLI's numbers for the file with "api": "vulkan".
+    browser.evaluate("document.activeElement.blur()");
+    pressWithControl(browser, "z", 90);
+    ASSERT_TRUE(browser.waitFor(json + " + '\\n' === " + nlohmann::json(original).dump()));
+    EXPECT_EQ(selected("camera.projection.type"), "gluPerspective");
+    choose("camera.api", 2);
+    std::ifstream in(scene);
+    nlohmann::ordered_json vulkan = nlohmann::ordered_json::parse(in);
+    vulkan["camera"]["api"] = "vulkan";
+    const fs::path vulkanFile = folder / "vulkan.json";
+    std::ofstream(vulkanFile) << vulkan.dump(2);
+    const std::string expected = viewpipe({"pipeline", QString::fromStdString(vulkanFile.string()), "--json"}).output;
+    ASSERT_TRUE(browser.waitFor(json + " + '\\n' === " + nlohmann::json(expected).dump()));
+    EXPECT_EQ(selected("camera.api"), "Vulkan");
+    for (const std::string& problem : browser.problems())
+        ADD_FAILURE() << problem;
+}
+
 TEST(LessonPage, QuestionsAreAnsweredCheckedAndRevealed)
 {
     const fs::path dir = fs::temp_directory_path() / ("viewpipe-web-lesson-" + std::to_string(::getpid()));

@@ -1,0 +1,94 @@
+// The camera's choices (the app's Parameters, the page's Scene panel):
+// switching projection type keeps the projection where the forms agree.
+
+#include "support.hpp"
+#include "viewpipe/camera_choices.hpp"
+
+namespace viewpipe {
+namespace {
+
+using test::expectRefused;
+
+gl::Camera<double> lookingDownZ(const gl::ProjectionSpec<double>& projection)
+{
+    return {{{0, 0, 5}, {0, 0, 0}, {0, 1, 0}}, projection};
+}
+
+const gl::Camera<double>& glOf(const CameraSpec<double>& camera)
+{
+    return std::get<gl::Camera<double>>(camera);
+}
+
+// gluPerspective's reference page: it is glFrustum with top = zNear · tan(fovy / 2) and right = top · aspect.
+// So a perspective switched to glFrustum has the same matrix, and back again the same numbers.
+TEST(CameraChoices, PerspectiveToFrustumKeepsTheMatrix)
+{
+    const CameraSpec<double> perspective = lookingDownZ(gl::Perspective<double>{90, 2, 1, 10});
+    const CameraSpec<double> frustum = withChoice(perspective, "camera.projection.type", 0);
+    const auto& box = std::get<gl::Frustum<double>>(glOf(frustum).projection);
+    EXPECT_NEAR(box.left, -2, 1e-15);
+    EXPECT_NEAR(box.right, 2, 1e-15);
+    EXPECT_NEAR(box.bottom, -1, 1e-15);
+    EXPECT_NEAR(box.top, 1, 1e-15);
+    EXPECT_EQ(box.zNear, 1);
+    EXPECT_EQ(box.zFar, 10);
+    EXPECT_TRUE(gl::projectionMatrix(glOf(frustum)).isApprox(gl::projectionMatrix(glOf(perspective)), 1e-15));
+
+    const auto& back = std::get<gl::Perspective<double>>(glOf(withChoice(frustum, "camera.projection.type", 2)).projection);
+    EXPECT_NEAR(back.fovyDegrees, 90, 1e-13);
+    EXPECT_NEAR(back.aspect, 2, 1e-15);
+}
+
+// glOrtho keeps the near plane's rectangle as its box; an infinite far becomes 1000 · near (glOrtho has none).
+TEST(CameraChoices, OrthoKeepsTheNearRectangle)
+{
+    const double inf = std::numeric_limits<double>::infinity();
+    const CameraSpec<double> frustum = lookingDownZ(gl::Frustum<double>{-3, 1, -2, 2, 0.5, inf});
+    const auto& box = std::get<gl::Ortho<double>>(glOf(withChoice(frustum, "camera.projection.type", 1)).projection);
+    EXPECT_EQ(box.left, -3);
+    EXPECT_EQ(box.right, 1);
+    EXPECT_EQ(box.bottom, -2);
+    EXPECT_EQ(box.top, 2);
+    EXPECT_EQ(box.zNear, 0.5);
+    EXPECT_EQ(box.zFar, 500);
+    // The type already chosen changes nothing (an infinite far stays infinite).
+    EXPECT_TRUE(std::isinf(std::get<gl::Frustum<double>>(
+                               glOf(withChoice(frustum, "camera.projection.type", 0)).projection).zFar));
+}
+
+TEST(CameraChoices, ListTheConventionsChoicesWithTheCamerasOwn)
+{
+    gl::Camera<double> vulkan = lookingDownZ(gl::Perspective<double>{60, 1, 1, 10});
+    vulkan.api = gl::Api::Vulkan;
+    vulkan.depth = gl::DepthMode::Reversed;
+    const std::vector<CameraChoice> choices = cameraChoices(vulkan);
+    ASSERT_EQ(choices.size(), 4u);
+    EXPECT_EQ(choices[0].field, "camera.api");
+    EXPECT_EQ(choices[0].options[std::size_t(choices[0].chosen)], "Vulkan");
+    EXPECT_EQ(choices[2].field, "camera.depth");
+    EXPECT_EQ(choices[2].chosen, 1);
+    EXPECT_EQ(choices[3].options[std::size_t(choices[3].chosen)], "gluPerspective");
+
+    const CameraSpec<double> metal = withChoice(vulkan, "camera.api", 3);
+    EXPECT_EQ(glOf(metal).api, gl::Api::Metal);
+    EXPECT_EQ(glOf(withChoice(metal, "camera.handedness", 1)).handedness, gl::Handedness::Left);
+
+    foley::ViewSpec<double> view{};
+    view.projection = foley::Projection::Perspective;
+    const std::vector<CameraChoice> foleyChoices = cameraChoices(view);
+    ASSERT_EQ(foleyChoices.size(), 1u);
+    EXPECT_EQ(foleyChoices[0].field, "view.projection");
+    EXPECT_EQ(std::get<foley::ViewSpec<double>>(withChoice(view, "view.projection", 1)).projection,
+              foley::Projection::Parallel);
+}
+
+TEST(CameraChoices, RefuseWhatTheCameraCannotChoose)
+{
+    const CameraSpec<double> camera = lookingDownZ(gl::Perspective<double>{60, 1, 1, 10});
+    expectRefused([&] { withChoice(camera, "view.projection", 0); }, "view.projection", "not a choice");
+    expectRefused([&] { withChoice(camera, "camera.api", 5); }, "camera.api", "no option 5");
+    expectRefused([&] { withChoice(camera, "camera.depth", -1); }, "camera.depth", "no option -1");
+}
+
+} // namespace
+} // namespace viewpipe
