@@ -34,7 +34,8 @@ TEST(CameraChoices, PerspectiveToFrustumKeepsTheMatrix)
     EXPECT_EQ(box.zFar, 10);
     EXPECT_TRUE(gl::projectionMatrix(glOf(frustum)).isApprox(gl::projectionMatrix(glOf(perspective)), 1e-15));
 
-    const auto& back = std::get<gl::Perspective<double>>(glOf(withChoice(frustum, "camera.projection.type", 2)).projection);
+    const CameraSpec<double> perspectiveAgain = withChoice(frustum, "camera.projection.type", 2);
+    const auto& back = std::get<gl::Perspective<double>>(glOf(perspectiveAgain).projection);
     EXPECT_NEAR(back.fovyDegrees, 90, 1e-13);
     EXPECT_NEAR(back.aspect, 2, 1e-15);
 }
@@ -44,7 +45,8 @@ TEST(CameraChoices, OrthoKeepsTheNearRectangle)
 {
     const double inf = std::numeric_limits<double>::infinity();
     const CameraSpec<double> frustum = lookingDownZ(gl::Frustum<double>{-3, 1, -2, 2, 0.5, inf});
-    const auto& box = std::get<gl::Ortho<double>>(glOf(withChoice(frustum, "camera.projection.type", 1)).projection);
+    const CameraSpec<double> ortho = withChoice(frustum, "camera.projection.type", 1);
+    const auto& box = std::get<gl::Ortho<double>>(glOf(ortho).projection);
     EXPECT_EQ(box.left, -3);
     EXPECT_EQ(box.right, 1);
     EXPECT_EQ(box.bottom, -2);
@@ -52,8 +54,8 @@ TEST(CameraChoices, OrthoKeepsTheNearRectangle)
     EXPECT_EQ(box.zNear, 0.5);
     EXPECT_EQ(box.zFar, 500);
     // The type already chosen changes nothing (an infinite far stays infinite).
-    EXPECT_TRUE(std::isinf(std::get<gl::Frustum<double>>(
-                               glOf(withChoice(frustum, "camera.projection.type", 0)).projection).zFar));
+    const CameraSpec<double> same = withChoice(frustum, "camera.projection.type", 0);
+    EXPECT_TRUE(std::isinf(std::get<gl::Frustum<double>>(glOf(same).projection).zFar));
 }
 
 TEST(CameraChoices, ListTheConventionsChoicesWithTheCamerasOwn)
@@ -73,8 +75,11 @@ TEST(CameraChoices, ListTheConventionsChoicesWithTheCamerasOwn)
     EXPECT_EQ(glOf(metal).api, gl::Api::Metal);
     EXPECT_EQ(glOf(withChoice(metal, "camera.handedness", 1)).handedness, gl::Handedness::Left);
 
-    foley::ViewSpec<double> view{};
+    foley::ViewSpec<double> view;
     view.projection = foley::Projection::Perspective;
+    view.vrp = view.vpn = view.vup = view.prp = Vec3<double>::Zero();
+    view.window = {-1, 1, -1, 1};
+    view.front = view.back = 0;
     const std::vector<CameraChoice> foleyChoices = cameraChoices(view);
     ASSERT_EQ(foleyChoices.size(), 1u);
     EXPECT_EQ(foleyChoices[0].field, "view.projection");
