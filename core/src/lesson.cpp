@@ -379,13 +379,37 @@ std::optional<Vec3<double>> tracedAt(const LessonStep& step)
     return step.trace;
 }
 
-std::shared_ptr<const EvaluatedScene> evaluateStepScene(const Lesson& lesson, std::size_t k)
+EvaluatedLesson evaluateLesson(const Lesson& lesson, SceneEvaluator* evaluator)
 {
-    try {
-        return evaluateScene(lesson.steps.at(k).scene);
-    } catch (const InputError& e) {
-        throw InputError("steps[" + std::to_string(k) + "].scene." + e.field(), e.reason());
+    EvaluatedLesson evaluated;
+    std::vector<std::shared_ptr<const EvaluatedScene>> scenes; // each distinct scene evaluated
+    std::vector<const LessonStep*> shownBy;                    // the first step to show shown[j]
+    const auto showAlike = [](const LessonStep& a, const LessonStep& b) {
+        return a.scene == b.scene && a.hidden == b.hidden && a.highlighted == b.highlighted &&
+               a.labelsHidden == b.labelsHidden;
+    };
+    for (std::size_t k = 0; k < lesson.steps.size(); ++k) {
+        const LessonStep& step = lesson.steps[k];
+        auto alike = std::find_if(shownBy.begin(), shownBy.end(), [&](const LessonStep* s) { return showAlike(*s, step); });
+        if (alike == shownBy.end()) {
+            auto scene = std::find_if(scenes.begin(), scenes.end(), [&](const auto& s) { return s->scene == step.scene; });
+            if (scene == scenes.end()) {
+                try {
+                    scenes.push_back(evaluator ? evaluator->evaluate(step.scene) : evaluateScene(step.scene));
+                } catch (const InputError& e) {
+                    throw InputError("steps[" + std::to_string(k) + "].scene." + e.field(), e.reason());
+                }
+                scene = scenes.end() - 1;
+            }
+            evaluated.shown.push_back(shownAtStep(*scene, step));
+            evaluated.stepScene.push_back(*scene);
+            alike = shownBy.insert(shownBy.end(), &step);
+        } else {
+            evaluated.stepScene.push_back(evaluated.stepScene[std::size_t(*alike - lesson.steps.data())]);
+        }
+        evaluated.stepShown.push_back(int(alike - shownBy.begin()));
     }
+    return evaluated;
 }
 
 Lesson loadLesson(const std::filesystem::path& file)

@@ -44,7 +44,12 @@ Document::~Document()
 
 void Document::load(const Scene& scene, const QString& path)
 {
-    evaluated_ = evaluator_.evaluate(scene);
+    load(evaluator_.evaluate(scene), path);
+}
+
+void Document::load(std::shared_ptr<const EvaluatedScene> evaluated, const QString& path)
+{
+    evaluated_ = std::move(evaluated);
     filePath_ = path;
     undo_.clear();
     emit fileChanged();

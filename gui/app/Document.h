@@ -37,6 +37,8 @@ public:
     // Throws InputError for a camera the core refuses or a mesh that cannot
     // be read, changing nothing.
     void load(const Scene& scene, const QString& path);
+    // The same for a scene evaluated already (a lesson's step).
+    void load(std::shared_ptr<const EvaluatedScene> evaluated, const QString& path);
     // Throws InputError when the file cannot be written.
     void save(const QString& path);
 

@@ -8,18 +8,21 @@ namespace {
 
 class LessonEdit : public QUndoCommand {
 public:
-    LessonEdit(LessonDocument* document, Lesson before, int stepBefore, Lesson after, int stepAfter, const QString& text)
-        : QUndoCommand(text), document_(document), before_(std::move(before)), after_(std::move(after)),
-          stepBefore_(stepBefore), stepAfter_(stepAfter)
+    struct State {
+        Lesson lesson;
+        EvaluatedLesson evaluated;
+        int step;
+    };
+    LessonEdit(LessonDocument* document, State before, State after, const QString& text)
+        : QUndoCommand(text), document_(document), before_(std::move(before)), after_(std::move(after))
     {
     }
-    void undo() override { document_->restore(before_, stepBefore_); }
-    void redo() override { document_->restore(after_, stepAfter_); }
+    void undo() override { document_->restore(before_.lesson, before_.evaluated, before_.step); }
+    void redo() override { document_->restore(after_.lesson, after_.evaluated, after_.step); }
 
 private:
     LessonDocument* document_;
-    Lesson before_, after_;
-    int stepBefore_, stepAfter_;
+    State before_, after_;
 };
 
 std::filesystem::path folderOf(const QString& path)
@@ -43,9 +46,11 @@ LessonDocument::~LessonDocument()
 
 void LessonDocument::open(Lesson lesson, const QString& path)
 {
+    EvaluatedLesson evaluated = evaluateLesson(lesson, &evaluator_);
     ++generation_;
     undo_.clear();
     lesson_ = std::move(lesson);
+    evaluated_ = std::move(evaluated);
     filePath_ = path;
     step_ = 0;
     resetAnswers();
@@ -58,10 +63,12 @@ void LessonDocument::create(const std::string& title, const LessonStep& first)
     Lesson lesson{title, {first}};
     const std::filesystem::path folder = folderOf({});
     parseLesson(lessonToJson(lesson, folder), folder); // as every edit is checked
+    EvaluatedLesson evaluated = evaluateLesson(lesson, &evaluator_);
     ++generation_;
     undo_.clear();
     undo_.resetClean(); // never saved: closing it asks
     lesson_ = std::move(lesson);
+    evaluated_ = std::move(evaluated);
     filePath_.clear();
     step_ = 0;
     resetAnswers();
@@ -74,6 +81,7 @@ void LessonDocument::close()
     ++generation_;
     undo_.clear();
     lesson_ = Lesson{};
+    evaluated_ = EvaluatedLesson{};
     filePath_.clear();
     step_ = 0;
     resetAnswers();
@@ -152,13 +160,15 @@ void LessonDocument::edit(Lesson next, int step, const QString& description)
     parseLesson(text, folder);
     if (text == lessonToJson(lesson_, folder))
         return; // nothing changed: no edit to undo
-    undo_.push(new LessonEdit(this, lesson_, step_, std::move(next), step, description));
+    EvaluatedLesson evaluated = evaluateLesson(next, &evaluator_);
+    undo_.push(new LessonEdit(this, {lesson_, evaluated_, step_}, {std::move(next), std::move(evaluated), step}, description));
 }
 
-void LessonDocument::restore(const Lesson& lesson, int step)
+void LessonDocument::restore(const Lesson& lesson, const EvaluatedLesson& evaluated, int step)
 {
     ++generation_;
     lesson_ = lesson;
+    evaluated_ = evaluated;
     step_ = std::clamp(step, 0, int(lesson_.steps.size()) - 1);
     resetAnswers(); // an edited lesson is asked afresh
     emit lessonChanged();

@@ -13,6 +13,7 @@
 #include <optional>
 #include <vector>
 
+#include "viewpipe/evaluated_scene.hpp"
 #include "viewpipe/lesson.hpp"
 
 namespace viewpipe::gui {
@@ -29,7 +30,9 @@ public:
     bool isModified() const { return !undo_.isClean(); }
     QUndoStack* undoStack() { return &undo_; }
 
-    // A lesson read from `path` (loadLesson) replaces the one open.
+    // A lesson read from `path` (loadLesson) replaces the one open, its steps
+    // evaluated (evaluateLesson); throws InputError naming the step whose scene
+    // the core refuses, keeping the lesson open before.
     void open(Lesson lesson, const QString& path);
     // A new lesson with one step.
     void create(const std::string& title, const LessonStep& first);
@@ -41,6 +44,15 @@ public:
     int generation() const { return generation_; }
     int step() const { return step_; }
     const LessonStep& currentStep() const { return lesson_.steps.at(std::size_t(step_)); }
+    // Step k's scene evaluated whole (as the app opens it), and as the step shows it.
+    const std::shared_ptr<const EvaluatedScene>& stepScene(int step) const
+    {
+        return evaluated_.stepScene.at(std::size_t(step));
+    }
+    const std::shared_ptr<const EvaluatedScene>& shownScene(int step) const
+    {
+        return evaluated_.shown.at(std::size_t(evaluated_.stepShown.at(std::size_t(step))));
+    }
     void goTo(int step);
     // A question open and not yet answered or revealed.
     bool isAsking() const;
@@ -68,8 +80,8 @@ public:
     // file holds it, JSON; none for empty text): all three, or nothing.
     void setTexts(int step, const std::string& title, const std::string& caption, const std::string& question);
 
-    // Only for undo and redo.
-    void restore(const Lesson& lesson, int step);
+    // Only for undo and redo: a lesson and its steps evaluated before.
+    void restore(const Lesson& lesson, const EvaluatedLesson& evaluated, int step);
 
 signals:
     // The steps, the title or the file.
@@ -81,7 +93,9 @@ private:
     void edit(Lesson next, int step, const QString& description);
     void resetAnswers();
 
+    SceneEvaluator evaluator_; // the steps' meshes read once
     Lesson lesson_;
+    EvaluatedLesson evaluated_;
     QString filePath_;
     int step_ = 0;
     int generation_ = 0;

@@ -614,25 +614,28 @@ bool MainWindow::openScene(const QString& path)
 bool MainWindow::openScene(const Scene& scene, const QString& path, bool remember)
 {
     try {
-        {
-            const QSignalBlocker drawn(document_); // the picture is made below, once
-            document_->load(scene, path);      // a scene the core refuses is not opened
-        }
-        painter_->setScene(document_->evaluated());
-        autosave_->saveNow(); // the previous scene's unsaved edits are not this one's to recover
-        // Nothing of the previous scene stays: its traced vertex and measurements are not this one's.
-        traceVertex(std::nullopt);
-        accuracy_->clear();
-        refreshWidgets();
-        if (remember && !path.isEmpty())
-            addRecent(QFileInfo(path).absoluteFilePath());
-        painter_->resetView();
-        goToStage(0, false);
-        return true;
+        const QSignalBlocker drawn(document_); // the picture is made once, when shown
+        document_->load(scene, path);          // a scene the core refuses is not opened
     } catch (const InputError& e) {
         showMessage(tr("Cannot open %1: %2").arg(path, QString::fromStdString(e.what())));
         return false;
     }
+    showOpenedScene(path, remember);
+    return true;
+}
+
+void MainWindow::showOpenedScene(const QString& path, bool remember)
+{
+    painter_->setScene(document_->evaluated());
+    autosave_->saveNow(); // the previous scene's unsaved edits are not this one's to recover
+    // Nothing of the previous scene stays: its traced vertex and measurements are not this one's.
+    traceVertex(std::nullopt);
+    accuracy_->clear();
+    refreshWidgets();
+    if (remember && !path.isEmpty())
+        addRecent(QFileInfo(path).absoluteFilePath());
+    painter_->resetView();
+    goToStage(0, false);
 }
 
 bool MainWindow::saveSceneAs(bool askForName)
@@ -1163,10 +1166,17 @@ bool MainWindow::hidesAnswers() const
 bool MainWindow::openLesson(const QString& path)
 {
     try {
-        // Every step's scene is read now (its meshes too): a step that cannot be shown stops nothing later.
-        Lesson lesson = loadLesson(path.toStdString());
-        for (std::size_t k = 0; k < lesson.steps.size(); ++k)
-            evaluateStepScene(lesson, k);
+        return openLesson(loadLesson(path.toStdString()), path);
+    } catch (const InputError& e) {
+        showMessage(tr("Cannot open the lesson %1: %2").arg(path, QString::fromStdString(e.what())));
+        return false;
+    }
+}
+
+bool MainWindow::openLesson(Lesson lesson, const QString& path)
+{
+    try {
+        // Every step's scene is evaluated now (its meshes read): a step that cannot be shown stops nothing later.
         lesson_->open(std::move(lesson), path);
     } catch (const InputError& e) {
         showMessage(tr("Cannot open the lesson %1: %2").arg(path, QString::fromStdString(e.what())));
@@ -1198,8 +1208,8 @@ void MainWindow::showLessonStep()
     // Otherwise the step shown was just answered or revealed, or is the view on screen just added.
     const bool newStep = !keepLessonView_ && (k != shownLessonStep_ || lesson_->generation() != shownGeneration_);
     keepLessonView_ = false;
-    const bool sameScene = sceneToJson(step.scene) == sceneToJson(document_->scene());
-    if (!sameScene && !(confirmDiscard() && openScene(step.scene, QString::fromStdString(step.scene.file.string()), false))) {
+    const bool sameScene = step.scene == document_->scene();
+    if (!sameScene && !confirmDiscard()) {
         // The lesson and the view must agree: back to the step shown, or no lesson at all.
         if (shownLessonStep_ >= 0 && shownGeneration_ == lesson_->generation() && shownLessonStep_ != k)
             lesson_->goTo(shownLessonStep_);
@@ -1207,13 +1217,21 @@ void MainWindow::showLessonStep()
             lesson_->close();
         return;
     }
+    if (!sameScene) { // the step's scene as the lesson evaluated it
+        const QString file = QString::fromStdString(step.scene.file.string());
+        {
+            const QSignalBlocker drawn(document_);
+            document_->load(lesson_->stepScene(k), file);
+        }
+        showOpenedScene(file, false);
+    }
     shownLessonStep_ = k;
     shownGeneration_ = lesson_->generation();
     if (newStep || !sameScene) {
         if (isAnimating())
             goToStage(target_, false);
         // What the step hides is not drawn, what it highlights is drawn wider; the picture stays at its stage.
-        painter_->setScene(shownAtStep(document_->evaluated(), step));
+        painter_->setScene(lesson_->shownScene(k));
         if (!step.panel.empty())
             showPanel(QString::fromStdString(step.panel));
         painter_->resetView();

@@ -91,6 +91,8 @@ public:
     // one it asks about, with the stage names, matrices and captions hidden,
     // until it is answered or revealed. Failures are shown, not thrown.
     bool openLesson(const QString& path);
+    // The same for a lesson already read from `path`.
+    bool openLesson(Lesson lesson, const QString& path);
     bool saveLesson(const QString& path);
     bool saveLessonResults(const QString& path);
     // A new lesson whose first step is the current view.
@@ -171,6 +173,8 @@ private:
     void rebuildPresetMenu();
     void pickAt(int x, int y);
     void showLessonStep();
+    // The scene just loaded into the document shown: widgets, view and stage anew.
+    void showOpenedScene(const QString& path, bool remember);
     // The scene, stage and world view now, as a lesson step.
     LessonStep stepFromView() const;
     bool confirmDiscardLesson();

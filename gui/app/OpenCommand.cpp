@@ -14,6 +14,7 @@
 
 #include <filesystem>
 #include <iostream>
+#include <optional>
 
 #include "AccuracyPanel.h"
 #include "AppPaths.h"
@@ -35,15 +36,15 @@ int runOpen(int argc, char** argv, const OpenOptions& options)
         throw InputError("--stage", "must lie between 0 and " + std::to_string(stages) + " (got " +
                                         std::to_string(options.stage) + ")");
 
+    std::optional<Lesson> lesson; // read once: checked here, opened below
     if (!options.lesson.empty()) {
-        Lesson lesson;
         try {
             lesson = loadLesson(options.lesson);
         } catch (const InputError& e) { // named by its file: the message's prefix is the scene's
             throw InputError("--lesson", options.lesson + ": " + e.what());
         }
-        if (options.step < 1 || options.step > int(lesson.steps.size()))
-            throw InputError("--step", "must lie between 1 and " + std::to_string(lesson.steps.size()) + " (got " +
+        if (options.step < 1 || options.step > int(lesson->steps.size()))
+            throw InputError("--step", "must lie between 1 and " + std::to_string(lesson->steps.size()) + " (got " +
                                            std::to_string(options.step) + ")");
     }
 
@@ -81,8 +82,8 @@ int runOpen(int argc, char** argv, const OpenOptions& options)
     if (!screenshot)
         window.offerRecovery();
     window.goToStage(options.stage, false);
-    if (!options.lesson.empty()) {
-        if (!window.openLesson(QString::fromStdString(options.lesson))) {
+    if (lesson) {
+        if (!window.openLesson(std::move(*lesson), QString::fromStdString(options.lesson))) {
             std::cerr << window.lastMessage().toStdString() << "\n";
             return 2;
         }

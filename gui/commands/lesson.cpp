@@ -2,7 +2,6 @@
 
 #include <filesystem>
 #include <iostream>
-#include <map>
 
 #include "command.hpp"
 #include "drawing_commands.hpp"
@@ -22,35 +21,6 @@ struct LessonOptions {
     bool quiet = false;
 };
 
-// Each step's scene evaluated (its meshes read) and as the step shows it
-// (shownAtStep), each once however many steps show it alike; a refusal names
-// the step. `stepScenes[k]` is step k's.
-std::vector<std::shared_ptr<const EvaluatedScene>> evaluateSteps(const Lesson& lesson, std::vector<int>& stepScenes)
-{
-    std::map<std::string, std::shared_ptr<const EvaluatedScene>> evaluated;
-    std::map<std::string, int> known;
-    std::vector<std::shared_ptr<const EvaluatedScene>> scenes;
-    for (std::size_t k = 0; k < lesson.steps.size(); ++k) {
-        const LessonStep& step = lesson.steps[k];
-        const std::string sceneKey = sceneToJson(step.scene) + step.scene.file.string();
-        auto& scene = evaluated[sceneKey];
-        if (!scene)
-            scene = evaluateStepScene(lesson, k);
-        std::string shownKey = sceneKey + (step.labelsHidden ? "|labels" : "");
-        for (Element e : step.hidden)
-            shownKey += "|-" + std::to_string(int(e));
-        for (Element e : step.highlighted)
-            shownKey += "|+" + std::to_string(int(e));
-        auto found = known.find(shownKey);
-        if (found == known.end()) {
-            scenes.push_back(shownAtStep(scene, step));
-            found = known.emplace(shownKey, int(scenes.size()) - 1).first;
-        }
-        stepScenes.push_back(found->second);
-    }
-    return scenes;
-}
-
 int runExport(const LessonOptions& options)
 {
     return guarded(options.file, "viewpipe lesson export", [&] {
@@ -59,27 +29,26 @@ int runExport(const LessonOptions& options)
             throw InputError("--format", "must be html or pdf (got \"" + options.format + "\")");
         const auto [width, height] = parseSize(options.size, "--size");
         const Theme theme = options.theme == "dark" ? Theme::Dark : Theme::Light;
-        std::vector<int> stepScenes;
-        const auto evaluated = evaluateSteps(lesson, stepScenes);
+        const EvaluatedLesson evaluated = evaluateLesson(lesson);
         const gui::VirtualDisplay display;
         auto say = [&](const std::string& what) {
             if (!options.quiet)
                 std::cerr << what << "\n";
         };
         if (options.format == "pdf") {
-            for (const fs::path& file : gui::exportLessonPdf(lesson, stepScenes, evaluated, options.out, width, height, theme, say))
+            for (const fs::path& file : gui::exportLessonPdf(lesson, evaluated.stepShown, evaluated.shown, options.out, width, height, theme, say))
                 if (!options.quiet)
                     std::cout << file.string() << "\n";
             return 0;
         }
         const WebAssets assets = loadWebAssets();
         std::vector<LessonScene> scenes;
-        for (const auto& scene : evaluated) {
+        for (const auto& scene : evaluated.shown) {
             say("recording " + scene->scene.name);
             scenes.push_back({scene, gui::recordWebViews(scene, width, height, 1, theme, false, [](const std::string&) {})});
         }
         // Only now that the page is made: nothing is created for a lesson that fails.
-        const std::string page = lessonPage(lesson, stepScenes, scenes, assets);
+        const std::string page = lessonPage(lesson, evaluated.stepShown, scenes, assets);
         std::error_code error;
         fs::create_directories(options.out, error);
         if (error || !fs::is_directory(options.out))
@@ -104,8 +73,7 @@ void addLessonCommand(CLI::App& app)
     check->add_option("FILE", *file, "Lesson file (JSON, docs/lesson-format.md)")->required();
     setRun(check, [file] {
         return guarded(*file, "viewpipe: internal error", [&] {
-            std::vector<int> stepScenes;
-            evaluateSteps(loadLesson(*file), stepScenes);
+            evaluateLesson(loadLesson(*file));
             return 0;
         });
     });

@@ -109,6 +109,7 @@ TEST(Lesson, TheBuiltInLessonsAreValid)
             continue;
         ++count;
         const Lesson lesson = loadLesson(entry.path());
+        EXPECT_FALSE(plainTextMath(lesson.title)) << entry.path() << ": " << lesson.title; // set as plain text: no "N_per"
         int questions = 0;
         for (const LessonStep& step : lesson.steps) {
             questions += step.question.has_value();
@@ -276,6 +277,75 @@ TEST(Lesson, AStepHidesAndHighlightsElementsAndEntries)
                   "steps[0].highlight.elements[0]", "must be one of");
     expectRefused([] { lessonWith(R"({"scene": "house.json", "caption": "c", "panel": "tikz"})"); }, "steps[0].panel",
                   "must be one of stages, matrices");
+}
+
+// One evaluation a scene, however many steps show it; one shown scene for the steps that show it alike; a scene the
+// core refuses named by its step.
+TEST(Lesson, ItsStepsAreEvaluatedOnceAndRefusedByStep)
+{
+    const Lesson lesson = parseLesson(R"({"title": "t", "steps": [
+        {"scene": "house.json", "stage": 1, "caption": "a"},
+        {"scene": "house.json", "stage": 3, "caption": "b"},
+        {"scene": "house.json", "caption": "c", "hide": ["projectors"]},
+        {"scene": "opengl-perspective.json", "caption": "d"},
+        {"scene": "house.json", "caption": "e", "hide": ["projectors"]}]})", kScenes);
+    SceneEvaluator evaluator;
+    const EvaluatedLesson evaluated = evaluateLesson(lesson, &evaluator);
+    EXPECT_EQ(evaluator.evaluations(), 2) << "the house once, the OpenGL scene once";
+    EXPECT_EQ(evaluated.stepShown, (std::vector<int>{0, 0, 1, 2, 1}));
+    ASSERT_EQ(evaluated.shown.size(), 3u);
+    ASSERT_EQ(evaluated.stepScene.size(), 5u);
+    EXPECT_EQ(evaluated.stepScene[0], evaluated.stepScene[2]);
+    EXPECT_EQ(evaluated.stepScene[0], evaluated.stepScene[4]);
+    EXPECT_EQ(evaluated.shown[0], evaluated.stepScene[0]) << "a step that hides nothing shows the scene itself";
+    EXPECT_NE(evaluated.shown[1], evaluated.stepScene[2]);
+    EXPECT_EQ(evaluated.stepScene[3]->scene, lesson.steps[3].scene);
+    for (const Primitive& p : evaluated.shown[1]->primitives)
+        EXPECT_NE(p.element, Element::Projectors);
+
+    // A mesh that parses as a file name but not as a mesh: refused when the step's scene is evaluated.
+    namespace fs = std::filesystem;
+    const fs::path folder = fs::temp_directory_path() / ("viewpipe-lesson-refused-" + std::to_string(::getpid()));
+    fs::create_directories(folder);
+    writeFileAtomically(folder / "cut.ply", "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\n"
+                                            "property float z\nelement face 1\nproperty list uchar int vertex_indices\n"
+                                            "end_header\n0 0 0\n1 0");
+    writeFileAtomically(folder / "mesh.json", R"({"view": )" + nlohmann::json::parse(sceneToJson(loadScene(kScenes + "/house.json")))["view"].dump() +
+                                              R"(, "objects": [{"type": "mesh", "path": "cut.ply"}]})");
+    writeFileAtomically(folder / "house.json", sceneToJson(loadScene(kScenes + "/house.json")));
+    const Lesson refused = parseLesson(R"({"title": "t", "steps": [{"scene": "house.json", "caption": "a"},
+        {"scene": "mesh.json", "caption": "b"}]})", folder);
+    expectRefused([&] { evaluateLesson(refused); }, "steps[1].scene.objects[0].path", "");
+    fs::remove_all(folder);
+}
+
+// Scenes are the same by their contents: name, camera, objects and effects, not the file they were read from.
+TEST(Lesson, ScenesCompareByWhatTheyHold)
+{
+    const Scene house = loadScene(kScenes + "/house.json");
+    Scene copy = parseScene(sceneToJson(house), kScenes);
+    copy.name = house.name;
+    EXPECT_TRUE(copy == house);
+    Scene moved = copy;
+    std::get<foley::ViewSpec<double>>(moved.camera).prp.x() += 1e-12;
+    EXPECT_TRUE(moved != house);
+    Scene parallel = copy;
+    std::get<foley::ViewSpec<double>>(parallel.camera).projection = foley::Projection::Parallel;
+    EXPECT_TRUE(parallel != house);
+    Scene clipped = copy;
+    clipped.effects = withEffect(clipped.effects, EffectKind::Clip, true);
+    EXPECT_TRUE(clipped != house);
+    Scene boxed = copy;
+    SceneObject box;
+    box.type = ObjectType::Box;
+    box.max = Vec3<double>(1, 1, 1);
+    boxed.objects.push_back(box);
+    EXPECT_TRUE(boxed != house);
+    const Scene gl = loadScene(kScenes + "/opengl-perspective.json");
+    EXPECT_TRUE(gl != house);
+    Scene vulkan = gl;
+    std::get<gl::Camera<double>>(vulkan.camera).api = gl::Api::Vulkan;
+    EXPECT_TRUE(vulkan != gl);
 }
 
 } // namespace

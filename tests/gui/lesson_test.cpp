@@ -206,7 +206,7 @@ private slots:
         QFile file(results);
         QVERIFY(file.open(QIODevice::ReadOnly));
         const QJsonObject saved = QJsonDocument::fromJson(file.readAll()).object();
-        QCOMPARE(saved["lesson"].toString(), QString("Foley's N_per, step by step"));
+        QCOMPARE(saved["lesson"].toString(), QString("Foley's perspective normalization, step by step"));
         const QJsonArray answers = saved["answers"].toArray();
         QCOMPARE(answers.size(), 5);
         QCOMPARE(answers[0].toObject()["kind"].toString(), QString("order"));
@@ -270,6 +270,40 @@ private slots:
         QTest::keyClick(&w, Qt::Key_Escape);
         QTRY_VERIFY(!w.isFullScreen());
         QVERIFY(w.findChild<QDockWidget*>("stagesDock")->isVisible());
+    }
+
+    // Stepping through a lesson whose steps show two scenes: each step opens its scene as the lesson evaluated it
+    // when it was opened (the app evaluates nothing while stepping), and what a step hides is not drawn.
+    void aLessonsScenesAreEvaluatedWhenItOpens()
+    {
+        MainWindow& w = *window_;
+        QTemporaryDir folder;
+        const QString scenes = QString(VIEWPIPE_DATA_DIR) + "/scenes/";
+        QFile file(folder.filePath("two-scenes.json"));
+        QVERIFY(file.open(QIODevice::WriteOnly));
+        file.write(QString(R"({"title": "Two scenes", "steps": [
+            {"scene": "%1house.json", "stage": 1, "caption": "The house."},
+            {"scene": "%1opengl-perspective.json", "stage": 2, "caption": "A look-at camera."},
+            {"scene": "%1house.json", "stage": 3, "caption": "The house again, without its projectors.", "hide": ["projectors"]}]})")
+                       .arg(scenes)
+                       .toUtf8());
+        file.close();
+        QVERIFY(w.openLesson(file.fileName()));
+        QTRY_VERIFY(settled(w));
+        const long evaluations = w.document()->evaluator().evaluations();
+        QTest::keyClick(&w, Qt::Key_PageDown);
+        QTRY_VERIFY(settled(w));
+        QVERIFY(std::holds_alternative<gl::Camera<double>>(w.document()->scene().camera));
+        QTest::keyClick(&w, Qt::Key_PageDown);
+        QTRY_VERIFY(settled(w));
+        QCOMPARE(w.lesson()->step(), 2);
+        QVERIFY(w.document()->scene() == w.lesson()->currentStep().scene);
+        QCOMPARE(w.document()->evaluator().evaluations(), evaluations);
+        for (const Primitive& p : w.lesson()->shownScene(2)->primitives)
+            QVERIFY(p.element != Element::Projectors);
+        QVERIFY(std::any_of(w.document()->evaluated()->primitives.begin(), w.document()->evaluated()->primitives.end(),
+                            [](const Primitive& p) { return p.element == Element::Projectors; }));
+        w.lesson()->close();
     }
 
     void aLessonIsMadeFromTheViewsOnScreen()

@@ -53,6 +53,16 @@ template <class T> struct ViewSpec {
     }
 };
 
+template <class T> bool operator==(const Window<T>& a, const Window<T>& b)
+{
+    return a.umin == b.umin && a.umax == b.umax && a.vmin == b.vmin && a.vmax == b.vmax;
+}
+template <class T> bool operator==(const ViewSpec<T>& a, const ViewSpec<T>& b)
+{
+    return a.projection == b.projection && a.vrp == b.vrp && a.vpn == b.vpn && a.vup == b.vup && a.prp == b.prp &&
+           a.window == b.window && a.front == b.front && a.back == b.back;
+}
+
 // Refuses every degenerate or impossible specification with an InputError
 // naming the field ("view.vup", ...) and the reason.
 template <class T> void validate(const ViewSpec<T>& spec)

@@ -117,6 +117,30 @@ template <class T> struct Camera {
     }
 };
 
+template <class T> bool operator==(const LookAt<T>& a, const LookAt<T>& b)
+{
+    return a.eye == b.eye && a.center == b.center && a.up == b.up;
+}
+template <class T> bool operator==(const Frustum<T>& a, const Frustum<T>& b)
+{
+    return a.left == b.left && a.right == b.right && a.bottom == b.bottom && a.top == b.top && a.zNear == b.zNear &&
+           a.zFar == b.zFar;
+}
+template <class T> bool operator==(const Ortho<T>& a, const Ortho<T>& b)
+{
+    return a.left == b.left && a.right == b.right && a.bottom == b.bottom && a.top == b.top && a.zNear == b.zNear &&
+           a.zFar == b.zFar;
+}
+template <class T> bool operator==(const Perspective<T>& a, const Perspective<T>& b)
+{
+    return a.fovyDegrees == b.fovyDegrees && a.aspect == b.aspect && a.zNear == b.zNear && a.zFar == b.zFar;
+}
+template <class T> bool operator==(const Camera<T>& a, const Camera<T>& b)
+{
+    return a.lookAt == b.lookAt && a.projection == b.projection && a.api == b.api && a.handedness == b.handedness &&
+           a.depth == b.depth;
+}
+
 inline const std::string kProjectionField = "camera.projection.";
 
 // Eye basis of gluLookAt: s = f x up, u = s x f, rows (s, u, -f). The same

@@ -117,8 +117,17 @@ std::string resultsToJson(const Lesson& lesson, const std::vector<std::optional<
 Lesson parseLesson(const std::string& text, const std::filesystem::path& baseDir);
 // Throws InputError("$", ...) when the file cannot be read.
 Lesson loadLesson(const std::filesystem::path& file);
-// Step k's scene evaluated (its meshes read); a refusal names the step ("steps[3].scene.objects[0].path").
-std::shared_ptr<const EvaluatedScene> evaluateStepScene(const Lesson& lesson, std::size_t k);
+// A lesson's steps evaluated: every scene once (its meshes read once), each
+// step's as it shows it (shownAtStep), steps that show the same alike sharing
+// one. The app's lesson and the CLI's check and export are made from it.
+struct EvaluatedLesson {
+    std::vector<std::shared_ptr<const EvaluatedScene>> shown;
+    std::vector<int> stepShown; // shown[stepShown[k]] is step k's
+    std::vector<std::shared_ptr<const EvaluatedScene>> stepScene; // step k's scene whole, as it opens in the app
+};
+// Throws InputError naming the step ("steps[3].scene.objects[0].path") whose
+// scene the core refuses. With an evaluator, meshes come through its cache.
+EvaluatedLesson evaluateLesson(const Lesson& lesson, SceneEvaluator* evaluator = nullptr);
 // The lesson as its file holds it, to be read from `baseDir`: a scene loaded
 // from a file as that file's path relative to baseDir, any other inline (its
 // meshes' paths made relative to baseDir); answers the scenes give are left out.

@@ -32,6 +32,20 @@ struct Scene {
     std::filesystem::path file; // where it was loaded from; empty for a scene made in memory
 };
 
+inline bool operator==(const SceneObject& a, const SceneObject& b)
+{
+    return a.type == b.type && a.min == b.min && a.max == b.max && a.path == b.path && a.resolvedPath == b.resolvedPath;
+}
+// The same scene wherever it was read from: its name, camera, objects (meshes by the file they name) and effects.
+inline bool operator==(const Scene& a, const Scene& b)
+{
+    return a.name == b.name && a.camera == b.camera && a.objects == b.objects && a.effects == b.effects;
+}
+inline bool operator!=(const Scene& a, const Scene& b)
+{
+    return !(a == b);
+}
+
 // The scene's look-at camera; throws InputError("camera") naming `purpose`
 // ("the code dialects") when the scene has a Foley view instead.
 const gl::Camera<double>& lookAtCamera(const Scene& scene, const std::string& purpose);
