@@ -146,9 +146,10 @@ private:
             add(std::string(1, c), false, level);
             ++at_;
         } else {
-            // Spaced as math spaces them: relations and sums on both sides, a comma after.
-            static const std::map<char, std::string> spaced = {
-                {'-', "−"}, {'=', " = "}, {'+', " + "}, {'<', " < "}, {'>', " > "}, {',', ", "}};
+            // Spaced as math spaces them: relations and sums on both sides, a comma after; z' with a prime, as
+            // TeX sets it.
+            static const std::map<char, std::string> spaced = {{'-', "−"},  {'=', " = "}, {'+', " + "}, {'<', " < "},
+                                                               {'>', " > "}, {',', ", "}, {'\'', "′"}};
             const auto sign = spaced.find(c);
             std::string text = sign == spaced.end() ? std::string(1, c) : sign->second;
             if (c == '-' || c == '+') { // a sign, not a sum, at the start of math, a group or a script, or after an opening

@@ -196,7 +196,7 @@ std::string lessonHandoutLatex(const Lesson& lesson, const std::vector<LessonFig
             // Each answer whole on one page: its heading, the stage it shows, its text and matrix together.
             out << stepMark(k) << "\\begin{minipage}{\\linewidth}\\setlength{\\parskip}{0.5em}\n"
                 << "\\subsection*{Question " << ++questions << " (step " << k + 1 << ")}\n"
-                << "\\begin{center}\\includegraphics[width=0.55\\linewidth]{" << figures[k].revealed << "}\\end{center}\n"
+                << figure(figures[k].revealed)
                 << answerParagraphs(step) << texRichText(step.caption) << "\\par\n" << matrixLatex(step)
                 << "\\end{minipage}\\par\\bigskip\n";
         }

@@ -251,6 +251,27 @@ TEST(EvaluatedScene, CanonicalVolumeIsLabelled)
     expectNear(at.at("$(-1, -1, -1)$"), Vec3<double>(-1, -1, -1));
 }
 
+// With Divide, the house ends after M in Foley's canonical parallel volume (x, y in [-1, 1], z in [-1, 0]): its planes
+// are named as that volume's, not as the perspective one's (x = z, ..., z = z_min).
+TEST(EvaluatedScene, TheVolumeAfterMIsNamedAsTheParallelOne)
+{
+    Scene divided = house();
+    divided.effects = withEffect(divided.effects, EffectKind::Divide, true);
+    const auto scene = evaluateScene(divided);
+    ASSERT_EQ(scene->pipeline.stages.back().symbol, "M");
+    std::map<std::string, Vec3<double>> at;
+    for (const Label& label : scene->labels)
+        if (label.element == Element::Canonical)
+            at[label.text] = label.anchor;
+    for (const char* perspective : {"$x = z$", "$x = -z$", "$y = z$", "$y = -z$", "$z = z_{\\min}$"})
+        EXPECT_EQ(at.count(perspective), 0u) << perspective;
+    expectNear(at.at("$x = 1$"), Vec3<double>(1, 0, -0.5));
+    expectNear(at.at("$y = -1$"), Vec3<double>(0, -1, -0.5));
+    expectNear(at.at("$z = 0$"), Vec3<double>(0, 0, 0));
+    expectNear(at.at("$z = -1$"), Vec3<double>(0, 0, -1));
+    expectNear(at.at("$(1, 1, 0)$"), Vec3<double>(1, 1, 0));
+}
+
 TEST(EvaluatedScene, PointsAreMarkedWhereTheyAre)
 {
     // The house scene: PRP (8, 6, 84); CW at the origin (the window [-50, 50]^2 about VRP); the DOP's head at CW.

@@ -34,6 +34,7 @@ TEST(MathText, SetsScriptsItalicsAndSigns)
     // A real minus sign: unary after an opening or a relation, spaced between terms; ± and ≤ as signs.
     EXPECT_EQ(mathRuns("$T(-\\mathit{VRP})$")[1].text, "(−");
     EXPECT_EQ(mathPlainText("$x = -z$"), "x = −z");
+    EXPECT_EQ(mathPlainText("$z' = (w - z)/2$"), "z′ = (w − z)/2"); // a prime, not an apostrophe
     EXPECT_EQ(mathPlainText("$a - b$"), "a − b");
     EXPECT_EQ(mathPlainText("$x = \\pm z$, $-1 \\le z$"), "x = ±z, −1 ≤ z");
     EXPECT_EQ(mathPlainText("$x^2$"), "x^2");
