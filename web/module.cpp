@@ -6,6 +6,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include <algorithm>
 #include <exception>
 #include <filesystem>
 #include <fstream>
@@ -138,14 +139,37 @@ Evaluation evaluate(const std::string& sceneText, const std::string& options, co
     });
 }
 
+// The scene as a lesson's step shows it (shownAtStep), from the step's
+// "shown" in the page's data: {"hide": [names], "highlight": [names],
+// "labelsHidden": b}; the scene itself for "null" (no lesson).
+std::shared_ptr<const EvaluatedScene> shownAs(const std::shared_ptr<const EvaluatedScene>& scene, const std::string& shown)
+{
+    const nlohmann::json given = nlohmann::json::parse(shown);
+    if (given.is_null())
+        return scene;
+    LessonStep step;
+    for (const auto& [element, name] : lessonElementNames()) {
+        const auto named = [&, name = std::string(name)](const char* key) {
+            return std::find(given.at(key).begin(), given.at(key).end(), name) != given.at(key).end();
+        };
+        if (named("hide"))
+            step.hidden.insert(element);
+        if (named("highlight"))
+            step.highlighted.insert(element);
+    }
+    step.labelsHidden = given.at("labelsHidden");
+    return shownAtStep(scene, step);
+}
+
 // Stage k's labels seen through `camera` (16 numbers, row by row: stage
 // coordinates -> clip coordinates of the picture `options` sizes), placed by
-// the core as at rest: the page's labels while the view is turned.
+// the core as at rest: the page's labels while the view is turned; `shown`:
+// as a lesson's step shows the scene (shownAs).
 Outcome placeLabels(const std::string& sceneText, const std::string& options, int stage, const std::string& camera,
-                    const emscripten::val& measure)
+                    const emscripten::val& measure, const std::string& shown)
 {
     return guarded([&] {
-        const auto evaluated = evaluatedOnce(sceneText, false);
+        const auto evaluated = shownAs(evaluatedOnce(sceneText, false), shown);
         const std::vector<double> rows = nlohmann::json::parse(camera);
         if (rows.size() != 16 || stage < 0 || stage > int(evaluated->pipeline.stages.size()))
             throw std::invalid_argument("placeLabels: a stage and 16 numbers");

@@ -275,18 +275,20 @@
     return { view: orbit.multiply(view), projection: fit.multiply(matrixOf(frame.projection)) };
   }
 
-  // The stage's labels placed by the core for the view turned by the user, as at rest (in export pixels);
-  // null where the core cannot (not loaded, or the scene's meshes left out).
+  // The stage's labels placed by the core for the view turned by the user, as at rest (in export pixels), as a
+  // lesson's step shows the scene; null where the core cannot (not loaded, or the scene's meshes left out).
   let turned = { key: '', labels: null };
   function labelsTurned() {
-    if (!core || data.filesLeftOut || lesson) return null;
+    if (!core || data.filesLeftOut) return null;
     const exportSize = { width: data.width, height: data.height };
     const { view, projection } = cameraMatrices(stages[state.stage].rest, exportSize);
     const clip = projection.multiply(view).elements; // column by column
     const rows = [0, 1, 2, 3].flatMap((r) => [0, 1, 2, 3].map((c) => clip[4 * c + r]));
-    const key = `${state.stage} ${rows.join(' ')} ${data.scene.length}`;
+    const shown = JSON.stringify(lesson ? lesson.steps[state.step].shown : null);
+    const key = `${state.stage} ${rows.join(' ')} ${data.scene.length} ${shown}`;
     if (turned.key !== key) {
-      const outcome = core.placeLabels(data.scene, JSON.stringify(viewOptions()), state.stage, JSON.stringify(rows), measureRuns);
+      const outcome = core.placeLabels(data.scene, JSON.stringify(viewOptions()), state.stage, JSON.stringify(rows),
+                                       measureRuns, shown);
       turned = { key, labels: outcome.error ? null : JSON.parse(outcome.text) };
     }
     return turned.labels;

@@ -25,6 +25,7 @@
 #include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <set>
 #include <sstream>
 #include <stdexcept>
 #include <string>
@@ -834,7 +835,8 @@ TEST(LessonPage, QuestionsAreAnsweredCheckedAndRevealed)
              "question": {"kind": "where", "prompt": "Where is the PRP after $T(-\\mathit{PRP})$?",
                           "point": [8, 6, 84], "after": 3, "explanation": "It moves by $-\\mathit{PRP}$."}},
             {"scene": ")" << kData << R"(/scenes/house.json", "stage": 3, "caption": "The shear comes next.",
-             "question": {"kind": "entry", "prompt": "Entry (1, 3) of $SH_{per}$?", "stage": 4, "row": 1, "column": 3}}]})";
+             "question": {"kind": "entry", "prompt": "Entry (1, 3) of $SH_{per}$?", "stage": 4, "row": 1, "column": 3},
+             "hide": ["labels"]}]})";
     }
     const Finished run = viewpipe({"lesson", "export", QString::fromStdString((dir / "lesson.json").string()), "--out",
                                    QString::fromStdString((dir / "out").string()), "--quiet"});
@@ -904,6 +906,28 @@ TEST(LessonPage, QuestionsAreAnsweredCheckedAndRevealed)
         EXPECT_EQ(browser.evaluate("document.body.classList.contains('asking')"), false);
         EXPECT_NE(browser.evaluate(live).get<std::string>().find("VRC axes"), std::string::npos);
         EXPECT_EQ(hash.find("stage="), std::string::npos) << "the stage would name which_stage answers";
+
+        // Turned by the student, the labels are placed by the core as the step shows its scene: step 1 with the
+        // set-up's names, step 2, which hides the scene's labels, without them (the axes keep their numbers).
+        const auto namesTurned = [&] {
+            const json labels = json::parse(browser.evaluate("JSON.stringify(window.viewpipe.turnedLabels())").get<std::string>());
+            std::set<std::string> names;
+            for (const json& label : labels)
+                if (const std::string text = label["text"]; text == "PRP" || text == "VRP" || text == "CW" || text == "DOP")
+                    names.insert(text);
+            return std::make_pair(labels.is_array(), names);
+        };
+        browser.press("ArrowRight", 39, 8); // Shift: orbit
+        const auto [placed1, names1] = namesTurned();
+        EXPECT_TRUE(placed1) << "placed by the core";
+        EXPECT_FALSE(names1.empty());
+        browser.press("PageDown", 34);
+        ASSERT_TRUE(browser.waitFor("document.getElementById('step-title').textContent === 'Step 2 of 2'"));
+        ASSERT_TRUE(browser.waitFor("!document.body.dataset.moving"));
+        browser.press("ArrowRight", 39, 8);
+        const auto [placed2, names2] = namesTurned();
+        EXPECT_TRUE(placed2);
+        EXPECT_TRUE(names2.empty()) << *names2.begin();
         for (const std::string& problem : browser.problems())
             ADD_FAILURE() << problem;
     } // the browser ends before its profile is removed
