@@ -6,7 +6,6 @@
 
 #include <nlohmann/json.hpp>
 
-#include <algorithm>
 #include <exception>
 #include <filesystem>
 #include <fstream>
@@ -140,25 +139,10 @@ Evaluation evaluate(const std::string& sceneText, const std::string& options, co
 }
 
 // The scene as a lesson's step shows it (shownAtStep), from the step's
-// "shown" in the page's data: {"hide": [names], "highlight": [names],
-// "labelsHidden": b}; the scene itself for "null" (no lesson).
+// "shown" in the page's data (stepShownJson); the scene itself for "null".
 std::shared_ptr<const EvaluatedScene> shownAs(const std::shared_ptr<const EvaluatedScene>& scene, const std::string& shown)
 {
-    const nlohmann::json given = nlohmann::json::parse(shown);
-    if (given.is_null())
-        return scene;
-    LessonStep step;
-    for (const auto& [element, name] : lessonElementNames()) {
-        const auto named = [&, name = std::string(name)](const char* key) {
-            return std::find(given.at(key).begin(), given.at(key).end(), name) != given.at(key).end();
-        };
-        if (named("hide"))
-            step.hidden.insert(element);
-        if (named("highlight"))
-            step.highlighted.insert(element);
-    }
-    step.labelsHidden = given.at("labelsHidden");
-    return shownAtStep(scene, step);
+    return shown == "null" ? scene : shownAtStep(scene, stepShownFrom(shown));
 }
 
 // Stage k's labels seen through `camera` (16 numbers, row by row: stage

@@ -377,11 +377,10 @@ ObjectsShown addObjects(Builder& add, const EvaluatedScene& out)
 // Foley's perspective volume, x = 1 ... z = 0 for its parallel one (also a
 // perspective view's after M, with Divide), and the cube of normalized device
 // coordinates for OpenGL; and two of its corners.
-void addCanonicalLabels(Builder& add, const Pipeline<double>& pipeline, const ViewSetup<double>& setup,
-                        const EffectList& effects)
+void addCanonicalLabels(Builder& add, const Pipeline<double>& pipeline, const ViewSetup<double>& setup)
 {
     const bool foley = pipeline.convention == Convention::Foley;
-    const bool perspective = foley && setup.perspective && !effects.has(EffectKind::Divide);
+    const bool perspective = setup.perspectiveCanonical;
     const auto& c = setup.canonical; // the front face, then the back one, each from (-x, -y) counter-clockwise
     auto center = [&](std::initializer_list<std::size_t> corners) {
         Vec3<double> sum = Vec3<double>::Zero();
@@ -482,7 +481,7 @@ void addSetUp(Builder& add, const EvaluatedScene& out, bool farCut)
     }
     add.lines(Element::Projectors, projectors, 0.7);
     add.lines(Element::Canonical, boxEdges(setup.canonical), 1.0).canonical = true; // drawn where it is
-    addCanonicalLabels(add, out.pipeline, setup, out.scene.effects);
+    addCanonicalLabels(add, out.pipeline, setup);
 }
 
 // The legends name what this scene shows, each view its own.

@@ -379,10 +379,13 @@ std::optional<Vec3<double>> tracedAt(const LessonStep& step)
     return step.trace;
 }
 
-EvaluatedLesson evaluateLesson(const Lesson& lesson, SceneEvaluator* evaluator)
+EvaluatedLesson evaluateLesson(const Lesson& lesson, SceneEvaluator* evaluator, const EvaluatedLesson* before)
 {
     EvaluatedLesson evaluated;
-    std::vector<std::shared_ptr<const EvaluatedScene>> scenes; // each distinct scene evaluated
+    // Each distinct scene evaluated, starting with those evaluated before (an edit changes one step at most).
+    std::vector<std::shared_ptr<const EvaluatedScene>> scenes;
+    if (before)
+        scenes = before->stepScene;
     std::vector<const LessonStep*> shownBy;                    // the first step to show shown[j]
     const auto showAlike = [](const LessonStep& a, const LessonStep& b) {
         return a.scene == b.scene && a.hidden == b.hidden && a.highlighted == b.highlighted &&
@@ -468,6 +471,32 @@ Json givenJson(const Question& q, const Answer& a)
     case QuestionKind::Choice: return a.choice;
     }
     return Json();
+}
+
+// A step's "hide" and "highlight", as its lesson file holds them.
+void writeShown(const LessonStep& step, Json& entry)
+{
+    auto name = [](Element e) {
+        for (const auto& [element, known] : lessonElementNames())
+            if (element == e)
+                return std::string(known);
+        return std::string();
+    };
+    Json hide = Json::array();
+    for (Element e : step.hidden)
+        hide.push_back(name(e));
+    if (step.labelsHidden)
+        hide.push_back("labels");
+    if (!hide.empty())
+        entry["hide"] = hide;
+    if (!step.highlighted.empty() || !step.entries.empty()) {
+        Json highlight = Json::object();
+        for (Element e : step.highlighted)
+            highlight["elements"].push_back(name(e));
+        for (const auto& [row, column] : step.entries)
+            highlight["entries"].push_back({row, column});
+        entry["highlight"] = highlight;
+    }
 }
 
 } // namespace
@@ -568,27 +597,7 @@ std::string lessonToJson(const Lesson& lesson, const std::filesystem::path& base
             entry["trace"] = vecJson(*step.trace);
         if (step.question)
             entry["question"] = questionJson(*step.question);
-        auto name = [](Element e) {
-            for (const auto& [element, known] : lessonElementNames())
-                if (element == e)
-                    return std::string(known);
-            return std::string();
-        };
-        Json hide = Json::array();
-        for (Element e : step.hidden)
-            hide.push_back(name(e));
-        if (step.labelsHidden)
-            hide.push_back("labels");
-        if (!hide.empty())
-            entry["hide"] = hide;
-        if (!step.highlighted.empty() || !step.entries.empty()) {
-            Json highlight = Json::object();
-            for (Element e : step.highlighted)
-                highlight["elements"].push_back(name(e));
-            for (const auto& [row, column] : step.entries)
-                highlight["entries"].push_back({row, column});
-            entry["highlight"] = highlight;
-        }
+        writeShown(step, entry);
         if (!step.panel.empty())
             entry["panel"] = step.panel;
         steps.push_back(entry);
@@ -604,6 +613,24 @@ Question parseQuestion(const std::string& text, const Scene& scene)
 std::string questionToJson(const Question& question)
 {
     return questionJson(question).dump(2);
+}
+
+std::string stepShownJson(const LessonStep& step)
+{
+    Json entry = Json::object();
+    writeShown(step, entry);
+    return entry.dump();
+}
+
+LessonStep stepShownFrom(const std::string& text)
+{
+    const Json j = parseJson(text);
+    LessonStep step;
+    if (j.contains("hide"))
+        step.hidden = readElements(j["hide"], "hide", &step.labelsHidden);
+    if (j.contains("highlight") && j["highlight"].contains("elements"))
+        step.highlighted = readElements(j["highlight"]["elements"], "highlight.elements", nullptr);
+    return step;
 }
 
 } // namespace viewpipe

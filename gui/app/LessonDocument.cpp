@@ -160,7 +160,7 @@ void LessonDocument::edit(Lesson next, int step, const QString& description)
     parseLesson(text, folder);
     if (text == lessonToJson(lesson_, folder))
         return; // nothing changed: no edit to undo
-    EvaluatedLesson evaluated = evaluateLesson(next, &evaluator_);
+    EvaluatedLesson evaluated = evaluateLesson(next, &evaluator_, &evaluated_);
     undo_.push(new LessonEdit(this, {lesson_, evaluated_, step_}, {std::move(next), std::move(evaluated), step}, description));
 }
 

@@ -44,14 +44,10 @@ public:
     int generation() const { return generation_; }
     int step() const { return step_; }
     const LessonStep& currentStep() const { return lesson_.steps.at(std::size_t(step_)); }
-    // Step k's scene evaluated whole (as the app opens it), and as the step shows it.
+    // Step k's scene evaluated (as the app opens it).
     const std::shared_ptr<const EvaluatedScene>& stepScene(int step) const
     {
         return evaluated_.stepScene.at(std::size_t(step));
-    }
-    const std::shared_ptr<const EvaluatedScene>& shownScene(int step) const
-    {
-        return evaluated_.shown.at(std::size_t(evaluated_.stepShown.at(std::size_t(step))));
     }
     void goTo(int step);
     // A question open and not yet answered or revealed.

@@ -1231,7 +1231,7 @@ void MainWindow::showLessonStep()
         if (isAnimating())
             goToStage(target_, false);
         // What the step hides is not drawn, what it highlights is drawn wider; the picture stays at its stage.
-        painter_->setScene(lesson_->shownScene(k));
+        painter_->setScene(shownAtStep(document_->evaluated(), step));
         if (!step.panel.empty())
             showPanel(QString::fromStdString(step.panel));
         painter_->resetView();

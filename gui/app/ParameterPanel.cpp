@@ -337,6 +337,8 @@ void ParameterPanel::addChoice(const CameraSpec<double>& camera, const std::stri
     const std::vector<CameraChoice> choices = cameraChoices(camera);
     const auto choice =
         std::find_if(choices.begin(), choices.end(), [&](const CameraChoice& c) { return c.field == field; });
+    if (choice == choices.end())
+        return; // not this camera's
     QStringList items;
     for (const std::string& option : choice->options)
         items << QString::fromStdString(option);
@@ -429,7 +431,13 @@ void ParameterPanel::choose(const QString& field, int index)
 {
     if (filling_)
         return;
-    const CameraSpec<double> candidate = withChoice(camera_, field.toStdString(), index);
+    CameraSpec<double> candidate;
+    try {
+        candidate = withChoice(camera_, field.toStdString(), index);
+    } catch (const InputError& e) {
+        refuse(field, QString::fromStdString(e.field()), QString::fromStdString(e.reason()));
+        return;
+    }
     fill(choices_.value(field));
     emitEdit(candidate, field);
 }

@@ -167,14 +167,7 @@ std::string lessonPage(const Lesson& lesson, const std::vector<int>& stepScenes,
         if (step.trace)
             entry["trace"] = {step.trace->x(), step.trace->y(), step.trace->z()};
         // What the step leaves out of its scene and draws wider, for the core to place labels as it shows them.
-        json hidden = json::array(), highlighted = json::array();
-        for (const auto& [element, name] : lessonElementNames()) {
-            if (step.hidden.count(element))
-                hidden.push_back(name);
-            if (step.highlighted.count(element))
-                highlighted.push_back(name);
-        }
-        entry["shown"] = {{"hide", hidden}, {"highlight", highlighted}, {"labelsHidden", step.labelsHidden}};
+        entry["shown"] = json::parse(stepShownJson(step));
         if (!step.entries.empty()) { // the stage's equation with those entries marked, as the page's own shows it
             entry["latexStage"] = revealedStage(step);
             entry["latex"] = cli::stageLatex(step.scene, revealedStage(step), 4, step.entries);

@@ -902,6 +902,7 @@
         const outcome = core.withCameraChoice(data.scene, choice.field, select.selectedIndex);
         if (outcome.error) {
           clearRefusals();
+          select.selectedIndex = choice.chosen; // the camera's own, kept
           showRefusal(outcome.error, select);
           showEdits();
         } else {
@@ -1224,7 +1225,13 @@
     if (!lesson) {
       for (const dialect of JSON.parse(core.codeDialects()))
         dialectPicker.add(new Option(dialect.title, dialect.name));
-      buildFields(); // with the camera's choices, which the core lists
+      // With the camera's choices, which the core lists; a field being typed in keeps its text and focus.
+      const typing = fields.contains(document.activeElement) ? document.activeElement : null;
+      buildFields();
+      if (typing) {
+        const again = fields.querySelector(`[data-path='${typing.dataset.path}']:not(.field)`);
+        if (again) { again.value = typing.value; again.focus(); }
+      }
       showCode();
       edits.entries = [{ page: data, pipeline, text: data.scene, files: data.files }];
       edits.at = 0;

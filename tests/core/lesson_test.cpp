@@ -302,6 +302,12 @@ TEST(Lesson, ItsStepsAreEvaluatedOnceAndRefusedByStep)
     EXPECT_EQ(evaluated.stepScene[3]->scene, lesson.steps[3].scene);
     for (const Primitive& p : evaluated.shown[1]->primitives)
         EXPECT_NE(p.element, Element::Projectors);
+    // Evaluated again after an edit of a caption: the scenes evaluated before are kept.
+    Lesson edited = lesson;
+    edited.steps[1].caption = "b, edited";
+    const EvaluatedLesson again = evaluateLesson(edited, &evaluator, &evaluated);
+    EXPECT_EQ(evaluator.evaluations(), 2);
+    EXPECT_EQ(again.stepScene, evaluated.stepScene);
 
     // A mesh that parses as a file name but not as a mesh: refused when the step's scene is evaluated.
     namespace fs = std::filesystem;

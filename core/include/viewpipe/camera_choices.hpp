@@ -23,8 +23,9 @@ struct CameraChoice {
 std::vector<CameraChoice> cameraChoices(const CameraSpec<double>& camera);
 
 // `camera` with option `index` of choice `field` taken. Switching an OpenGL
-// camera between a box (glFrustum, glOrtho) and gluPerspective keeps near,
-// far (1000 · near for an infinite far) and the near plane's rectangle.
+// camera between glFrustum and glOrtho keeps near, far (1000 · near for an
+// infinite far) and the near plane's rectangle; to gluPerspective, the
+// rectangle's size (centred, as gluPerspective's is).
 // Throws InputError(field, ...) for a field the camera has no choice of, or
 // an index out of range.
 CameraSpec<double> withChoice(const CameraSpec<double>& camera, const std::string& field, int index);

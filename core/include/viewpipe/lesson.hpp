@@ -58,6 +58,12 @@ struct LessonStep {
 // ("objects", "world_axes", "window", ...).
 const std::vector<std::pair<Element, const char*>>& lessonElementNames();
 
+// What a step leaves out of its scene and draws wider, as its lesson file
+// writes it ({"hide": [...], "highlight": {...}}), and a step that shows its
+// scene so read back from that text (the web page places labels with it).
+std::string stepShownJson(const LessonStep& step);
+LessonStep stepShownFrom(const std::string& text);
+
 // A scene as a step shows it: without the elements (and labels) it hides,
 // its highlighted elements' lines wider; the scene itself where the step
 // changes nothing. Every picture of the step draws this.
@@ -126,8 +132,11 @@ struct EvaluatedLesson {
     std::vector<std::shared_ptr<const EvaluatedScene>> stepScene; // step k's scene whole, as it opens in the app
 };
 // Throws InputError naming the step ("steps[3].scene.objects[0].path") whose
-// scene the core refuses. With an evaluator, meshes come through its cache.
-EvaluatedLesson evaluateLesson(const Lesson& lesson, SceneEvaluator* evaluator = nullptr);
+// scene the core refuses. With an evaluator, meshes come through its cache;
+// with `before` (the lesson before an edit), its scenes are kept where a step's
+// scene is unchanged.
+EvaluatedLesson evaluateLesson(const Lesson& lesson, SceneEvaluator* evaluator = nullptr,
+                               const EvaluatedLesson* before = nullptr);
 // The lesson as its file holds it, to be read from `baseDir`: a scene loaded
 // from a file as that file's path relative to baseDir, any other inline (its
 // meshes' paths made relative to baseDir); answers the scenes give are left out.

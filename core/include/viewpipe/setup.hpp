@@ -22,6 +22,7 @@ template <class T> struct ViewSetup {
     Vec3<T> windowCenter;                  // CW
     std::array<Vec3<T>, 8> volume;         // front face, then back face
     std::array<Vec3<T>, 8> canonical;      // the canonical volume's corners, after the composite and divide
+    bool perspectiveCanonical = false;     // canonical is Foley's perspective volume (x = ±z, ..., z = z_min)
 };
 
 template <class T> ViewSetup<T> viewSetup(const foley::ViewSpec<T>& spec)
@@ -31,6 +32,7 @@ template <class T> ViewSetup<T> viewSetup(const foley::ViewSpec<T>& spec)
     s.origin = spec.vrp;
     s.prp = foley::vrcToWorld(spec, s.axes, spec.prp);
     s.perspective = spec.projection == foley::Projection::Perspective;
+    s.perspectiveCanonical = s.perspective;
     const std::array<std::array<T, 2>, 4> corners = {{{spec.window.umin, spec.window.vmin},
                                                       {spec.window.umax, spec.window.vmin},
                                                       {spec.window.umax, spec.window.vmax},
@@ -83,6 +85,7 @@ template <class T> ViewSetup<T> viewSetup(const CameraSpec<T>& camera, const Eff
         foley::ViewSpec<T> parallel = *spec;
         parallel.projection = foley::Projection::Parallel;
         s.canonical = foley::canonicalCorners(parallel);
+        s.perspectiveCanonical = false;
     }
     return s;
 }
