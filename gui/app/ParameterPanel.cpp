@@ -239,7 +239,8 @@ void ParameterPanel::addFields(const CameraSpec<double>& camera)
                   "coordinates (world units); greater than 0."));
         addRow("camera.projection.far", tr("Far"), {},
                tr("gluPerspective zFar: the distance from the eye to the far clipping plane, in eye coordinates "
-                  "(world units); greater than zNear, or infinity for no far plane."));
+                  "(world units); greater than 0 and not zNear (nearer than zNear, depth runs backwards, as "
+                  "glFrustum allows), or infinity for no far plane."));
         return;
     }
     if (std::holds_alternative<gl::Frustum<double>>(gl.projection)) {
@@ -254,7 +255,8 @@ void ParameterPanel::addFields(const CameraSpec<double>& camera)
                   "(world units); greater than 0."));
         addRow("camera.projection.far", tr("Far"), {},
                tr("glFrustum farVal: the distance from the eye to the far clipping plane, in eye coordinates "
-                  "(world units); greater than nearVal, or infinity for no far plane."));
+                  "(world units); greater than 0 and not nearVal (nearer than nearVal, depth runs backwards, as "
+                  "glFrustum's reference allows), or infinity for no far plane."));
         return;
     }
     const QString plane = tr("glOrtho %1: the %2 clipping plane %3 = %1, in eye coordinates (world units).");
