@@ -382,35 +382,39 @@ std::optional<Vec3<double>> tracedAt(const LessonStep& step)
 EvaluatedLesson evaluateLesson(const Lesson& lesson, SceneEvaluator* evaluator, const EvaluatedLesson* before)
 {
     EvaluatedLesson evaluated;
-    // Each distinct scene evaluated, starting with those evaluated before (an edit changes one step at most).
-    std::vector<std::shared_ptr<const EvaluatedScene>> scenes;
-    if (before)
-        scenes = before->stepScene;
-    std::vector<const LessonStep*> shownBy;                    // the first step to show shown[j]
+    // A scene evaluated already: by an earlier step, or before the edit (which changes one step at most).
+    using Scenes = std::vector<std::shared_ptr<const EvaluatedScene>>;
+    const Scenes none, &earlier = evaluated.stepScene, &edited = before ? before->stepScene : none;
+    const auto evaluatedAlready = [&](const Scene& scene) -> std::shared_ptr<const EvaluatedScene> {
+        for (const Scenes* list : {&earlier, &edited})
+            for (const auto& evaluatedScene : *list)
+                if (evaluatedScene->scene == scene)
+                    return evaluatedScene;
+        return nullptr;
+    };
     const auto showAlike = [](const LessonStep& a, const LessonStep& b) {
         return a.scene == b.scene && a.hidden == b.hidden && a.highlighted == b.highlighted &&
                a.labelsHidden == b.labelsHidden;
     };
     for (std::size_t k = 0; k < lesson.steps.size(); ++k) {
         const LessonStep& step = lesson.steps[k];
-        auto alike = std::find_if(shownBy.begin(), shownBy.end(), [&](const LessonStep* s) { return showAlike(*s, step); });
-        if (alike == shownBy.end()) {
-            auto scene = std::find_if(scenes.begin(), scenes.end(), [&](const auto& s) { return s->scene == step.scene; });
-            if (scene == scenes.end()) {
-                try {
-                    scenes.push_back(evaluator ? evaluator->evaluate(step.scene) : evaluateScene(step.scene));
-                } catch (const InputError& e) {
-                    throw InputError("steps[" + std::to_string(k) + "].scene." + e.field(), e.reason());
-                }
-                scene = scenes.end() - 1;
-            }
-            evaluated.shown.push_back(shownAtStep(*scene, step));
-            evaluated.stepScene.push_back(*scene);
-            alike = shownBy.insert(shownBy.end(), &step);
-        } else {
-            evaluated.stepScene.push_back(evaluated.stepScene[std::size_t(*alike - lesson.steps.data())]);
+        const auto first = lesson.steps.begin(), here = first + std::ptrdiff_t(k);
+        if (const auto alike = std::find_if(first, here, [&](const LessonStep& s) { return showAlike(s, step); });
+            alike != here) { // shown as an earlier step is
+            evaluated.stepScene.push_back(evaluated.stepScene[std::size_t(alike - first)]);
+            evaluated.stepShown.push_back(evaluated.stepShown[std::size_t(alike - first)]);
+            continue;
         }
-        evaluated.stepShown.push_back(int(alike - shownBy.begin()));
+        std::shared_ptr<const EvaluatedScene> scene = evaluatedAlready(step.scene);
+        try {
+            if (!scene)
+                scene = evaluator ? evaluator->evaluate(step.scene) : evaluateScene(step.scene);
+        } catch (const InputError& e) {
+            throw InputError("steps[" + std::to_string(k) + "].scene." + e.field(), e.reason());
+        }
+        evaluated.stepScene.push_back(scene);
+        evaluated.shown.push_back(shownAtStep(scene, step));
+        evaluated.stepShown.push_back(int(evaluated.shown.size()) - 1);
     }
     return evaluated;
 }
