@@ -19,7 +19,11 @@
 #include "AccuracyPanel.h"
 #include "AppPaths.h"
 #include "LessonDocument.h"
+#include "LessonFlow.h"
 #include "MainWindow.h"
+#include "PresentMode.h"
+#include "SceneFiles.h"
+#include "Stepper.h"
 #include "viewpipe/lesson.hpp"
 #include "viewpipe/scene.hpp"
 
@@ -75,24 +79,24 @@ int runOpen(int argc, char** argv, const OpenOptions& options)
         window.setFontSize(screenshot ? MainWindow::kDefaultFontSize : settings.value("fontSize", MainWindow::kDefaultFontSize).toInt(),
                            !screenshot);
     window.show();
-    if (!window.openScene(scene, scenePath)) {
+    if (!window.sceneFiles()->openScene(scene, scenePath)) {
         std::cerr << window.lastMessage().toStdString() << "\n";
         return 2;
     }
     if (!screenshot)
-        window.offerRecovery();
-    window.goToStage(options.stage, false);
+        window.sceneFiles()->offerRecovery();
+    window.stepper()->goToStage(options.stage, false);
     if (lesson) {
-        if (!window.openLesson(std::move(*lesson), QString::fromStdString(options.lesson))) {
+        if (!window.lessonFlow()->openLesson(std::move(*lesson), QString::fromStdString(options.lesson))) {
             std::cerr << window.lastMessage().toStdString() << "\n";
             return 2;
         }
-        window.lesson()->goTo(options.step - 1);
+        window.lessonFlow()->lesson()->goTo(options.step - 1);
         if (options.reveal)
-            window.lesson()->reveal();
+            window.lessonFlow()->lesson()->reveal();
     }
     if (options.present)
-        window.setPresenting(true);
+        window.presentMode()->setPresenting(true);
     if (!options.panel.empty())
         window.showPanel(QString::fromStdString(options.panel));
     if (!screenshot)
@@ -105,7 +109,7 @@ int runOpen(int argc, char** argv, const OpenOptions& options)
     }
 
     // Let the window reach its size, a step's transition end and the GL views draw their frames.
-    while (window.isAnimating())
+    while (window.stepper()->isAnimating())
         app.processEvents(QEventLoop::WaitForMoreEvents, 50);
     for (int i = 0; i < 5; ++i) {
         app.processEvents();

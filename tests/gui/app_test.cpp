@@ -104,7 +104,7 @@ void sendMouse(MainWindow& window, QEvent::Type type, QPoint at, Qt::MouseButton
 
 void waitForRest(MainWindow& window)
 {
-    QTRY_VERIFY_WITH_TIMEOUT(!window.isAnimating(), 20000);
+    QTRY_VERIFY_WITH_TIMEOUT(!window.stepper()->isAnimating(), 20000);
 }
 
 // Clicks the world view where a world point is drawn at the stage shown.
@@ -112,7 +112,7 @@ void clickWhereDrawn(MainWindow& window, const Vec3<double>& world)
 {
     auto* view = window.findChild<QVTKOpenGLNativeWidget*>("worldView");
     vtkRenderer* renderer = view->renderWindow()->GetRenderers()->GetFirstRenderer();
-    const Vec4<double> h = cumulativeAt(window.document()->pipeline().stages, window.stage()) * world.homogeneous();
+    const Vec4<double> h = cumulativeAt(window.document()->pipeline().stages, window.stepper()->stage()) * world.homogeneous();
     renderer->SetWorldPoint(h.x() / h.w(), h.y() / h.w(), h.z() / h.w(), 1);
     renderer->WorldToDisplay();
     double display[3];
@@ -148,7 +148,7 @@ private slots:
         QVERIFY(writeFile(folder.filePath("scene.json"),
                           house.readAll().replace(R"("objects": [)", R"("objects": [ { "type": "mesh", "path": "sheet.ply" },)")));
         MainWindow& w = *window_;
-        QVERIFY(w.openScene(folder.filePath("scene.json")));
+        QVERIFY(w.sceneFiles()->openScene(folder.filePath("scene.json")));
         w.renderNow();
         const vtkIdType full = worldFacesDrawn(w);
         QVERIFY2(full > 190'000, qPrintable(QString::number(full))); // the sheet's 2 · 316² triangles and the house's faces
@@ -157,14 +157,14 @@ private slots:
         vtkIdType whilePlaying = full;
         QTRY_VERIFY_WITH_TIMEOUT(
             [&] {
-                if (!w.isAnimating())
-                    w.play();
+                if (!w.stepper()->isAnimating())
+                    w.stepper()->play();
                 whilePlaying = worldFacesDrawn(w);
-                return w.isAnimating() && whilePlaying < full / 4;
+                return w.stepper()->isAnimating() && whilePlaying < full / 4;
             }(),
             60000);
         QVERIFY2(whilePlaying > full / 100, qPrintable(QString::number(whilePlaying))); // a copy, not nothing
-        w.goToStage(1, false);
+        w.stepper()->goToStage(1, false);
         QCOMPARE(worldFacesDrawn(w), full);
 
         // Turning the view with the mouse: the copy while the button is held, every face once it is let go.
@@ -182,29 +182,29 @@ private slots:
     void stepperWalksThroughTheStages()
     {
         MainWindow& w = *window_;
-        QCOMPARE(w.stageCount(), 5);
-        QCOMPARE(w.stage(), 0);
+        QCOMPARE(w.stepper()->stageCount(), 5);
+        QCOMPARE(w.stepper()->stage(), 0);
         const QImage world = worldPicture(w);
 
         QTest::keyClick(&w, Qt::Key_Right);
-        QVERIFY(w.isAnimating());
+        QVERIFY(w.stepper()->isAnimating());
         waitForRest(w);
-        QCOMPARE(w.stage(), 1);
+        QCOMPARE(w.stepper()->stage(), 1);
         QVERIFY(w.matrices()->stageText().contains("<i>T</i>(−<i>VRP</i>)")); // set as math
 
         // Through the slider to the last stage: each step animates.
         w.findChild<QSlider*>("stageSlider")->setValue(5);
         waitForRest(w);
-        QCOMPARE(w.stage(), 5);
+        QCOMPARE(w.stepper()->stage(), 5);
         QVERIFY(w.matrices()->stageText().contains("<i>S</i><sub>per</sub>")); // S_per, set as math
-        QCOMPARE(w.stageList()->currentRow(), 5);
+        QCOMPARE(w.stagePanel()->stageList()->currentRow(), 5);
         QVERIFY(worldPicture(w) != world);
 
         QTest::keyClick(&w, Qt::Key_Left);
         waitForRest(w);
-        QCOMPARE(w.stage(), 4);
-        w.goToStage(0, false);
-        QCOMPARE(w.stage(), 0);
+        QCOMPARE(w.stepper()->stage(), 4);
+        w.stepper()->goToStage(0, false);
+        QCOMPARE(w.stepper()->stage(), 0);
     }
 
     // Behaviour only: how fast the frames come is measured in bench/, not asserted here.
@@ -215,18 +215,18 @@ private slots:
         QVariantAnimation* animation = w.findChild<QVariantAnimation*>();
         QVERIFY(animation);
         connect(animation, &QVariantAnimation::valueChanged, this, [&frames] { ++frames; });
-        w.goToStage(1);
-        QVERIFY(w.isAnimating());
+        w.stepper()->goToStage(1);
+        QVERIFY(w.stepper()->isAnimating());
         waitForRest(w);
         QVERIFY2(frames >= 2, qPrintable(QString::number(frames)));
-        QCOMPARE(w.stage(), 1);
-        QCOMPARE(w.stageList()->currentRow(), 1);
+        QCOMPARE(w.stepper()->stage(), 1);
+        QCOMPARE(w.stagePanel()->stageList()->currentRow(), 1);
     }
 
     void refusedEditKeepsThePicture()
     {
         MainWindow& w = *window_;
-        w.goToStage(3, false);
+        w.stepper()->goToStage(3, false);
         const QImage before = worldPicture(w);
         const QString sceneBefore = QString::fromStdString(sceneToJson(w.document()->scene()));
 
@@ -274,20 +274,20 @@ private slots:
         emit prpN->editingFinished();
         QTemporaryDir dir;
         const QString file = dir.filePath("saved.json");
-        QVERIFY(w.saveScene(file));
+        QVERIFY(w.sceneFiles()->saveScene(file));
         QVERIFY(!w.document()->isModified());
         const std::string saved = sceneToJson(w.document()->scene());
         QVERIFY(QDir(dir.path()).entryList(QDir::Files) == QStringList{"saved.json"});
 
         MainWindow other;
-        QVERIFY(other.openScene(file));
+        QVERIFY(other.sceneFiles()->openScene(file));
         QCOMPARE(sceneToJson(other.document()->scene()), saved);
         QCOMPARE(std::get<foley::ViewSpec<double>>(other.document()->scene().camera).prp.z(), 90.0);
 
         // A file that does not parse is refused and the open scene stays.
         const QString broken = dir.filePath("broken.json");
         QVERIFY(writeFile(broken, "{\"view\": 3}"));
-        QVERIFY(!other.openScene(broken));
+        QVERIFY(!other.sceneFiles()->openScene(broken));
         QCOMPARE(sceneToJson(other.document()->scene()), saved);
     }
 
@@ -297,13 +297,13 @@ private slots:
         QTemporaryDir dir;
         const QString obj = dir.filePath("tetra.obj");
         QVERIFY(writeFile(obj, "v 0 0 30\nv 10 0 30\nv 0 10 30\nv 0 0 40\nf 1 3 2\nf 1 2 4\nf 2 3 4\nf 3 1 4\n"));
-        QVERIFY(w.importMesh(obj));
+        QVERIFY(w.sceneFiles()->importMesh(obj));
         QCOMPARE(w.document()->scene().objects.size(), std::size_t(2));
         QCOMPARE(w.document()->scene().objects[1].type, ObjectType::Mesh);
 
         // Saved elsewhere, the mesh path is written relative to the scene file.
         const QString saved = dir.filePath("scene.json");
-        QVERIFY(w.saveScene(saved));
+        QVERIFY(w.sceneFiles()->saveScene(saved));
         QVERIFY(QString::fromStdString(sceneToJson(loadScene(saved.toStdString()))).contains("\"path\": \"tetra.obj\""));
 
         w.document()->undoStack()->undo();
@@ -311,14 +311,14 @@ private slots:
 
         const QString junk = dir.filePath("junk.stl");
         QVERIFY(writeFile(junk, "this is not a mesh"));
-        QVERIFY(!w.importMesh(junk));
+        QVERIFY(!w.sceneFiles()->importMesh(junk));
         QCOMPARE(w.document()->scene().objects.size(), std::size_t(1));
     }
 
     void clickTracesAVertex()
     {
         MainWindow& w = *window_;
-        w.goToStage(3, false);
+        w.stepper()->goToStage(3, false);
         clickWhereDrawn(w, Vec3<double>(16, 10, 54));
         QTRY_VERIFY(w.matrices()->traceText().contains("Traced vertex"));
         // After T(-PRP) the vertex is (16 - 8, 10 - 6, 54 - 84) = (8, 4, -30).
@@ -332,9 +332,9 @@ private slots:
     void clickTracesAVertexThroughAProjectiveStage()
     {
         MainWindow& w = *window_;
-        QVERIFY(w.openScene(QString(VIEWPIPE_DATA_DIR) + "/scenes/opengl-perspective.json"));
-        const int last = w.stageCount();
-        w.goToStage(last, false);
+        QVERIFY(w.sceneFiles()->openScene(QString(VIEWPIPE_DATA_DIR) + "/scenes/opengl-perspective.json"));
+        const int last = w.stepper()->stageCount();
+        w.stepper()->goToStage(last, false);
         const double w4 = (cumulativeAt(w.document()->pipeline().stages, last) * Vec4<double>(16, 10, 54, 1)).w();
         QVERIFY(w4 > 0 && std::abs(w4 - 1) > 0.1); // projective: the divide moves the point
         clickWhereDrawn(w, Vec3<double>(16, 10, 54));
@@ -347,12 +347,12 @@ private slots:
     void copiesMatrixAndViewToTheClipboard()
     {
         MainWindow& w = *window_;
-        w.goToStage(4, false);
-        w.copyMatrixAsLatex();
+        w.stepper()->goToStage(4, false);
+        w.exports()->copyMatrixAsLatex();
         const QString latex = QApplication::clipboard()->text();
         QVERIFY2(latex.startsWith("\\mathit{SH}_{\\mathrm{per}} =\n\\begin{bmatrix}"), qPrintable(latex));
         QVERIFY(latex.contains("1 & 0 & -\\frac{2}{21} & 0"));
-        w.copyViewAsImage();
+        w.exports()->copyViewAsImage();
         const QImage image = QApplication::clipboard()->image();
         QCOMPARE(image.size(), w.findChild<QVTKOpenGLNativeWidget*>("worldView")->size());
     }
@@ -366,7 +366,7 @@ private slots:
         options.width = 320;
         options.height = 180;
         options.stages = {0, 5};
-        const auto files = w.exportStages(options);
+        const auto files = w.exports()->exportStages(options);
         QCOMPARE(files.size(), std::size_t(4)); // two pictures, matrices.tex, matrices.json
         QVERIFY(QFile::exists(dir.filePath("slides/05-s-per.png")));
 
@@ -378,7 +378,7 @@ private slots:
         options.out = dir.filePath("cancelled").toStdString();
         options.stages = {};
         options.animate = true;
-        QVERIFY(w.exportStages(options).empty());
+        QVERIFY(w.exports()->exportStages(options).empty());
         QVERIFY(!QDir(dir.filePath("cancelled")).exists());
     }
 
@@ -414,11 +414,11 @@ private slots:
     void presentsFullScreenWithAClickersKeys()
     {
         MainWindow& w = *window_;
-        w.goToStage(0, false);
+        w.stepper()->goToStage(0, false);
         const int fontBefore = QApplication::font().pointSize();
         const Theme themeBefore = w.painter()->theme();
         QTest::keyClick(&w, Qt::Key_F5);
-        QVERIFY(w.isPresenting());
+        QVERIFY(w.presentMode()->isPresenting());
         QTRY_VERIFY(w.isFullScreen());
         QTRY_COMPARE(w.frameGeometry().size(), w.windowHandle()->screen()->geometry().size()); // no window manager here
         QVERIFY(!w.menuBar()->isVisible());
@@ -432,25 +432,25 @@ private slots:
 
         // The clicker: Page Down and Space on, Page Up and Backspace back, through the transitions.
         QTest::keyClick(&w, Qt::Key_PageDown);
-        QTRY_VERIFY(!w.isAnimating() && w.stage() == 1);
+        QTRY_VERIFY(!w.stepper()->isAnimating() && w.stepper()->stage() == 1);
         QTest::keyClick(&w, Qt::Key_Space);
-        QTRY_VERIFY(!w.isAnimating() && w.stage() == 2);
+        QTRY_VERIFY(!w.stepper()->isAnimating() && w.stepper()->stage() == 2);
         QTest::keyClick(&w, Qt::Key_Backspace);
-        QTRY_VERIFY(!w.isAnimating() && w.stage() == 1);
+        QTRY_VERIFY(!w.stepper()->isAnimating() && w.stepper()->stage() == 1);
         QTest::keyClick(&w, Qt::Key_PageUp);
-        QTRY_VERIFY(!w.isAnimating() && w.stage() == 0);
+        QTRY_VERIFY(!w.stepper()->isAnimating() && w.stepper()->stage() == 0);
         QVERIFY(w.painter()->worldCaption().find("World") != std::string::npos);
 
         // B blacks the screen out and back.
         QTest::keyClick(&w, Qt::Key_B);
-        QVERIFY(w.isBlackedOut());
+        QVERIFY(w.presentMode()->isBlackedOut());
         QVERIFY(w.findChild<QWidget*>("blackout")->geometry().contains(world->geometry()));
         QTest::keyClick(&w, Qt::Key_B);
-        QVERIFY(!w.isBlackedOut());
+        QVERIFY(!w.presentMode()->isBlackedOut());
 
         // Esc leaves, as the window was.
         QTest::keyClick(&w, Qt::Key_Escape);
-        QVERIFY(!w.isPresenting());
+        QVERIFY(!w.presentMode()->isPresenting());
         QTRY_VERIFY(!w.isFullScreen());
         QVERIFY(w.menuBar()->isVisible());
         QTRY_VERIFY(w.findChild<QDockWidget*>("stagesDock")->isVisible());
@@ -458,7 +458,7 @@ private slots:
         QCOMPARE(w.painter()->theme(), themeBefore);
         // Outside present mode B and Space are the keys they always were.
         QTest::keyClick(&w, Qt::Key_B);
-        QVERIFY(!w.isBlackedOut());
+        QVERIFY(!w.presentMode()->isBlackedOut());
     }
 
     void accuracyPanelMeasuresInTheBackground()
@@ -469,7 +469,7 @@ private slots:
         QVERIFY(w.accuracy()->isRunning());
         // The window keeps handling events while the worker measures.
         QTest::keyClick(&w, Qt::Key_Right);
-        QVERIFY(w.isAnimating() || w.stage() == 1);
+        QVERIFY(w.stepper()->isAnimating() || w.stepper()->stage() == 1);
         QVERIFY(done.wait(120000));
         QCOMPARE(w.accuracy()->table()->rowCount(), 6);
         QCOMPARE(w.accuracy()->table()->item(1, 0)->text(), QString("double"));
@@ -488,7 +488,7 @@ private slots:
         w.chooseClassicalProjection();
         const auto& spec = std::get<foley::ViewSpec<double>>(w.document()->scene().camera);
         QCOMPARE(classify(CameraSpec<double>(spec)).kind, std::string("cabinet"));
-        QCOMPARE(w.stageCount(), 5);
+        QCOMPARE(w.stepper()->stageCount(), 5);
         QCOMPARE(w.document()->pipeline().stages[2].symbol, std::string("SH_par"));
         w.document()->undoStack()->undo();
         QCOMPARE(std::get<foley::ViewSpec<double>>(w.document()->scene().camera).prp, Vec3<double>(8, 6, 84));
@@ -570,15 +570,15 @@ private slots:
         // The document's scene is replaced by each edit: read it afresh.
         auto effects = [&]() -> const EffectList& { return w.document()->scene().effects; };
         QUndoStack* undo = w.document()->undoStack();
-        const int stages = w.stageCount();
+        const int stages = w.stepper()->stageCount();
         QAction* divide = menuAction(w, "effectsMenu", "Divide (stage M)");
         divide->trigger();
-        QCOMPARE(w.stageCount(), stages + 1);
+        QCOMPARE(w.stepper()->stageCount(), stages + 1);
         QCOMPARE(w.document()->pipeline().stages.back().symbol, std::string("M"));
-        QCOMPARE(w.stageList()->count(), stages + 2);
+        QCOMPARE(w.stagePanel()->stageList()->count(), stages + 2);
         QVERIFY(divide->isChecked());
         undo->undo();
-        QCOMPARE(w.stageCount(), stages);
+        QCOMPARE(w.stepper()->stageCount(), stages);
         QVERIFY(!divide->isChecked());
 
         menuAction(w, "depthMenu", "16-bit Fixed Point")->trigger();
@@ -614,7 +614,7 @@ private slots:
 
         QTemporaryDir dir;
         const QString path = dir.filePath("effects.json");
-        QVERIFY(w.saveScene(path));
+        QVERIFY(w.sceneFiles()->saveScene(path));
         QVERIFY(loadScene(path.toStdString()).effects.listed == effects().listed);
     }
 
@@ -623,12 +623,12 @@ private slots:
     void depthBandsColorTheScene()
     {
         MainWindow& w = *window_;
-        QVERIFY(w.openScene(QString(VIEWPIPE_DATA_DIR) + "/scenes/depth-corridor.json"));
+        QVERIFY(w.sceneFiles()->openScene(QString(VIEWPIPE_DATA_DIR) + "/scenes/depth-corridor.json"));
         w.showPanel("depth");
         const int banded = bandPixels(w);
         QVERIFY2(banded > 2000, qPrintable(QString::number(banded)));
         QVERIFY(w.depth()->summary().contains("z-fight"));
-        w.editEffects("Turn off the depth buffer", [](EffectList list) { return withEffect(std::move(list), "depth", false); });
+        w.effectsMenu()->editEffects("Turn off the depth buffer", [](EffectList list) { return withEffect(std::move(list), "depth", false); });
         QVERIFY(!w.document()->scene().effects.depth);
         QCOMPARE(bandPixels(w), 0);
         w.document()->undoStack()->undo();

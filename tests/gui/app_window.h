@@ -17,7 +17,17 @@
 #endif
 #include <memory>
 
+#include "app/ActionRegistry.h"
+#include "app/Autosave.h"
+#include "app/EffectsMenu.h"
+#include "app/Exports.h"
+#include "app/LessonDocument.h"
+#include "app/LessonFlow.h"
 #include "app/MainWindow.h"
+#include "app/PresentMode.h"
+#include "app/SceneFiles.h"
+#include "app/StagePanel.h"
+#include "app/Stepper.h"
 
 // A window of the given size, shown and active, with `scene` open; null (and
 // the test failed) when any of that did not happen.
@@ -28,7 +38,7 @@ inline std::unique_ptr<viewpipe::gui::MainWindow> openWindow(const QString& scen
     window->resize(size);
     window->show();
     window->activateWindow();
-    if (!QTest::qWaitForWindowActive(window.get()) || !window->openScene(scene)) {
+    if (!QTest::qWaitForWindowActive(window.get()) || !window->sceneFiles()->openScene(scene)) {
         QTest::qFail(qPrintable("cannot open a window on " + scene), __FILE__, __LINE__);
         return nullptr;
     }
@@ -52,13 +62,13 @@ inline int showEveryBuiltInStage(viewpipe::gui::MainWindow& window, const std::f
     int shown = 0;
     while (scenes.hasNext()) {
         const QString scene = scenes.next();
-        if (!window.openScene(scene)) {
+        if (!window.sceneFiles()->openScene(scene)) {
             QTest::qFail(qPrintable("cannot open " + scene), __FILE__, __LINE__);
             return shown;
         }
         const int stages = int(window.document()->pipeline().stages.size());
         for (int k = 0; k <= stages; ++k) {
-            window.goToStage(k, false);
+            window.stepper()->goToStage(k, false);
             window.renderNow();
             check(QFileInfo(scene).fileName() + " stage " + QString::number(k));
             if (QTest::currentTestFailed())

@@ -205,7 +205,7 @@ private slots:
 
     void aFoleyViewHasNoCode()
     {
-        QVERIFY(window_->openScene(scenePath("house.json")));
+        QVERIFY(window_->sceneFiles()->openScene(scenePath("house.json")));
         QTRY_VERIFY(!view_->isVisible());
         QVERIFY(view_->code().text.empty());
     }

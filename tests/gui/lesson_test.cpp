@@ -87,7 +87,7 @@ QString feedback(MainWindow& w)
 // The step's view has settled: no transition running.
 bool settled(MainWindow& w)
 {
-    return !w.isAnimating();
+    return !w.stepper()->isAnimating();
 }
 
 } // namespace
@@ -99,19 +99,19 @@ private slots:
     void cleanup()
     {
         if (window_)
-            window_->lesson()->undoStack()->setClean();
+            window_->lessonFlow()->lesson()->undoStack()->setClean();
         closeWindow(window_);
     }
 
     void aStudentAnswersWithClicksAndTyping()
     {
         MainWindow& w = *window_;
-        QVERIFY(w.openLesson(kFoley));
+        QVERIFY(w.lessonFlow()->openLesson(kFoley));
         QTRY_VERIFY(w.findChild<QDockWidget*>("lessonDock")->isVisible());
         QCOMPARE(child<QLabel>(w, "lessonStep")->text(), QString("Step 1 of 9"));
 
         // Step 1 asks for the order of the stages: while it waits, nothing names them.
-        QVERIFY(!w.stageList()->isVisible());
+        QVERIFY(!w.stagePanel()->stageList()->isVisible());
         QVERIFY(w.findChild<QLabel*>("stagesWait")->isVisible());
         QVERIFY(w.matrices()->stageText().contains("follow the answer"));
         QCOMPARE(w.painter()->worldCaption(), std::string());
@@ -131,7 +131,7 @@ private slots:
         }
         click(child<QPushButton>(w, "checkButton"));
         QVERIFY2(feedback(w).contains("Right."), qPrintable(feedback(w)));
-        QVERIFY(w.stageList()->isVisible());
+        QVERIFY(w.stagePanel()->stageList()->isVisible());
         QVERIFY(w.matrices()->stageText().contains("World"));
         QVERIFY(child<QLabel>(w, "lessonCaption")->text().contains("The house in world coordinates"));
         QVERIFY(!child<QPushButton>(w, "checkButton")->isEnabled()); // right: the question is closed
@@ -139,45 +139,45 @@ private slots:
         // Step 2, a multiple choice: a click on the answer, then Check.
         QTest::keyClick(&w, Qt::Key_PageDown);
         QCOMPARE(child<QLabel>(w, "lessonStep")->text(), QString("Step 2 of 9"));
-        QVERIFY(!w.stageList()->isVisible());
+        QVERIFY(!w.stagePanel()->stageList()->isVisible());
         click(child<QRadioButton>(w, "choice0"));
         click(child<QPushButton>(w, "checkButton"));
         QVERIFY2(feedback(w).contains("Right."), qPrintable(feedback(w)));
 
         // Step 4: which stage is this matrix? It shows R's numbers; pick R.
-        w.lesson()->goTo(3);
+        w.lessonFlow()->lesson()->goTo(3);
         QTRY_VERIFY(settled(w));
         QVERIFY(child<QLabel>(w, "questionAbout")->text().contains("0.7071"));
-        QCOMPARE(w.stage(), 1); // waiting before the stage asked about
+        QCOMPARE(w.stepper()->stage(), 1); // waiting before the stage asked about
         for (QRadioButton* radio : w.lessonPanel()->findChildren<QRadioButton*>())
             if (radio->accessibleName() == "R")
                 click(radio);
         click(child<QPushButton>(w, "checkButton"));
         QVERIFY2(feedback(w).contains("Right."), qPrintable(feedback(w)));
-        QTRY_VERIFY(settled(w) && w.stage() == 2); // the answer comes with R's transition
+        QTRY_VERIFY(settled(w) && w.stepper()->stage() == 2); // the answer comes with R's transition
 
         // Step 5: where is the PRP after T(-PRP)? A wrong answer typed, and Enter.
         QTest::keyClick(&w, Qt::Key_PageDown);
         QTRY_VERIFY(settled(w));
-        QCOMPARE(w.stage(), 2);
+        QCOMPARE(w.stepper()->stage(), 2);
         QTest::keyClicks(child<QLineEdit>(w, "answerX"), "1");
         QTest::keyClicks(child<QLineEdit>(w, "answerY"), "2");
         QTest::keyClick(child<QLineEdit>(w, "answerY"), Qt::Key_Return);
         QVERIFY2(feedback(w).contains("Type three numbers"), qPrintable(feedback(w))); // nothing recorded yet
-        QVERIFY(w.lesson()->isAsking());
+        QVERIFY(w.lessonFlow()->lesson()->isAsking());
         QTest::keyClicks(child<QLineEdit>(w, "answerZ"), "3");
         QTest::keyClick(child<QLineEdit>(w, "answerZ"), Qt::Key_Return);
         // Two tries (the default): the first wrong answer says so and keeps the answer back.
         QVERIFY2(feedback(w).contains("Not quite") && feedback(w).contains("one more try") && !feedback(w).contains("(0, 0, 0)"),
                  qPrintable(feedback(w)));
-        QVERIFY(w.lesson()->isAsking());
+        QVERIFY(w.lessonFlow()->lesson()->isAsking());
         QVERIFY(child<QLabel>(w, "lessonCaption")->text().contains("follows the answer"));
-        QCOMPARE(w.stage(), 2);
+        QCOMPARE(w.stepper()->stage(), 2);
         QTest::keyClick(child<QLineEdit>(w, "answerZ"), Qt::Key_Backspace);
         QTest::keyClicks(child<QLineEdit>(w, "answerZ"), "5");
         QTest::keyClick(child<QLineEdit>(w, "answerZ"), Qt::Key_Return);
         QVERIFY2(feedback(w).contains("Not quite") && feedback(w).contains("(0, 0, 0)"), qPrintable(feedback(w)));
-        QTRY_VERIFY(settled(w) && w.stage() == 3);
+        QTRY_VERIFY(settled(w) && w.stepper()->stage() == 3);
         QVERIFY(w.matrices()->traceText().contains("84")); // the PRP is followed through the stages
 
         // Step 6: an entry as a fraction with the typeset minus sign.
@@ -188,21 +188,21 @@ private slots:
         QTest::keyClick(child<QLineEdit>(w, "answerEntry"), Qt::Key_Return);
         QVERIFY2(feedback(w).contains("Right."), qPrintable(feedback(w)));
         // Revealed, SH_per's matrix marks the entries the step highlights: -2/21 and -1/14, and nothing else.
-        QTRY_VERIFY(settled(w) && w.stage() == 4);
+        QTRY_VERIFY(settled(w) && w.stepper()->stage() == 4);
         const QString tables = w.matrices()->matricesText();
         const QString shear = tables.mid(tables.indexOf("<b>" + mathHtml("$" + symbolMath("SH_per") + "$") + "</b>"));
         QCOMPARE(shear.left(shear.indexOf("</table>")).count("#8ecae6"), 2);
         QVERIFY(w.findChild<QDockWidget*>("matricesDock")->isVisible()); // the panel the step puts in front
         // The stage is drawn as the stepper draws it (a step that hides nothing nor moves once drew a blank view).
         const QImage revealed = worldPicture(w);
-        w.goToStage(3, false);
-        w.goToStage(4, false);
+        w.stepper()->goToStage(3, false);
+        w.stepper()->goToStage(4, false);
         QVERIFY2(differingShare(revealed, worldPicture(w)) < 0.01, "the revealed stage is not the stage as drawn");
 
         // The answers as the web page saves them.
         QTemporaryDir dir;
         const QString results = dir.filePath("lesson-results.json");
-        QVERIFY(w.saveLessonResults(results));
+        QVERIFY(w.lessonFlow()->saveLessonResults(results));
         QFile file(results);
         QVERIFY(file.open(QIODevice::ReadOnly));
         const QJsonObject saved = QJsonDocument::fromJson(file.readAll()).object();
@@ -219,11 +219,11 @@ private slots:
         QCOMPARE(answers[4].toObject()["correct"].toBool(), true);
 
         // Found: Show Answer before any answer left no trace in the results.
-        w.lesson()->goTo(7);
-        QVERIFY(w.lesson()->isAsking());
+        w.lessonFlow()->lesson()->goTo(7);
+        QVERIFY(w.lessonFlow()->lesson()->isAsking());
         click(child<QPushButton>(w, "revealButton"));
-        QVERIFY(w.lesson()->hasUnsavedAnswers());
-        QVERIFY(w.saveLessonResults(results));
+        QVERIFY(w.lessonFlow()->lesson()->hasUnsavedAnswers());
+        QVERIFY(w.lessonFlow()->saveLessonResults(results));
         file.close();
         QVERIFY(file.open(QIODevice::ReadOnly)); // saved atomically: the file is a new one
         const QJsonArray again = QJsonDocument::fromJson(file.readAll()).object()["answers"].toArray();
@@ -236,31 +236,31 @@ private slots:
     void aLecturerPresentsALessonWithAClicker()
     {
         MainWindow& w = *window_;
-        QVERIFY(w.openLesson(kFoley));
-        w.lesson()->goTo(4); // step 5: where is the PRP after T(-PRP)?
+        QVERIFY(w.lessonFlow()->openLesson(kFoley));
+        w.lessonFlow()->lesson()->goTo(4); // step 5: where is the PRP after T(-PRP)?
         QTRY_VERIFY(settled(w));
         QTest::keyClick(&w, Qt::Key_F5);
-        QVERIFY(w.isPresenting());
+        QVERIFY(w.presentMode()->isPresenting());
         QTRY_VERIFY(w.isFullScreen());
         QTRY_COMPARE(w.frameGeometry().size(), w.windowHandle()->screen()->geometry().size());
         // The lesson stays beside the views; nothing else does.
         for (QDockWidget* dock : w.findChildren<QDockWidget*>())
             QCOMPARE(dock->isVisible(), dock->objectName() == "lessonDock");
         // The clicker reveals the answer first, with its transition; then steps on.
-        QVERIFY(w.lesson()->isAsking());
+        QVERIFY(w.lessonFlow()->lesson()->isAsking());
         QTest::keyClick(&w, Qt::Key_PageDown);
-        QVERIFY(!w.lesson()->isAsking());
+        QVERIFY(!w.lessonFlow()->lesson()->isAsking());
         QVERIFY2(feedback(w).contains("The answer: (0, 0, 0)"), qPrintable(feedback(w)));
-        QTRY_VERIFY(settled(w) && w.stage() == 3);
+        QTRY_VERIFY(settled(w) && w.stepper()->stage() == 3);
         QTest::keyClick(&w, Qt::Key_Space);
-        QCOMPARE(w.lesson()->step(), 5);
+        QCOMPARE(w.lessonFlow()->lesson()->step(), 5);
         QTest::keyClick(&w, Qt::Key_Backspace);
-        QCOMPARE(w.lesson()->step(), 4);
+        QCOMPARE(w.lessonFlow()->lesson()->step(), 4);
         // Nothing is cut off at 1920 x 1080: every step's text fits the lesson panel without scrolling.
         auto* scroll = qobject_cast<QScrollArea*>(w.findChild<QDockWidget*>("lessonDock")->widget());
         for (int k = 0; k < 9; ++k) {
-            w.lesson()->goTo(k);
-            w.lesson()->reveal(); // the answer and its explanation: the longest the panel gets
+            w.lessonFlow()->lesson()->goTo(k);
+            w.lessonFlow()->lesson()->reveal(); // the answer and its explanation: the longest the panel gets
             QTRY_VERIFY(settled(w));
             QApplication::processEvents();
             QVERIFY2(!scroll->verticalScrollBar()->isVisible(), qPrintable(QString("step %1 scrolls").arg(k + 1)));
@@ -288,7 +288,7 @@ private slots:
                        .arg(scenes)
                        .toUtf8());
         file.close();
-        QVERIFY(w.openLesson(file.fileName()));
+        QVERIFY(w.lessonFlow()->openLesson(file.fileName()));
         QTRY_VERIFY(settled(w));
         const long evaluations = w.document()->evaluator().evaluations();
         QTest::keyClick(&w, Qt::Key_PageDown);
@@ -296,37 +296,37 @@ private slots:
         QVERIFY(std::holds_alternative<gl::Camera<double>>(w.document()->scene().camera));
         QTest::keyClick(&w, Qt::Key_PageDown);
         QTRY_VERIFY(settled(w));
-        QCOMPARE(w.lesson()->step(), 2);
-        QVERIFY(w.document()->scene() == w.lesson()->currentStep().scene);
+        QCOMPARE(w.lessonFlow()->lesson()->step(), 2);
+        QVERIFY(w.document()->scene() == w.lessonFlow()->lesson()->currentStep().scene);
         QCOMPARE(w.document()->evaluator().evaluations(), evaluations);
-        QCOMPARE(w.document()->evaluated(), w.lesson()->stepScene(2));
-        w.lesson()->close();
+        QCOMPARE(w.document()->evaluated(), w.lessonFlow()->lesson()->stepScene(2));
+        w.lessonFlow()->lesson()->close();
     }
 
     void aLessonIsMadeFromTheViewsOnScreen()
     {
         MainWindow& w = *window_;
         QTemporaryDir dir;
-        w.goToStage(3, false);
+        w.stepper()->goToStage(3, false);
         w.painter()->orbit(30, -15, 1.5);
-        w.newLessonFromView();
-        QVERIFY(w.lesson()->isOpen());
+        w.lessonFlow()->newLessonFromView();
+        QVERIFY(w.lessonFlow()->lesson()->isOpen());
         QVERIFY(child<QGroupBox>(w, "lessonEditor")->isChecked());
-        const LessonStep first = w.lesson()->lesson().steps[0];
+        const LessonStep first = w.lessonFlow()->lesson()->lesson().steps[0];
         QCOMPARE(first.stage, 3);
         QCOMPARE(first.yaw, 30.0);
         QCOMPARE(first.pitch, -15.0);
         QCOMPARE(first.zoom, 1.5);
-        QCOMPARE(w.stage(), 3); // the view stays as it was
+        QCOMPARE(w.stepper()->stage(), 3); // the view stays as it was
 
         // A second step at stage 5, then its caption and a question, edited in the panel.
-        w.goToStage(5, false);
+        w.stepper()->goToStage(5, false);
         click(child<QPushButton>(w, "addStepButton"));
-        QCOMPARE(int(w.lesson()->lesson().steps.size()), 2);
-        QCOMPARE(w.lesson()->step(), 1);
-        QCOMPARE(w.stage(), 5);
+        QCOMPARE(int(w.lessonFlow()->lesson()->lesson().steps.size()), 2);
+        QCOMPARE(w.lessonFlow()->lesson()->step(), 1);
+        QCOMPARE(w.stepper()->stage(), 5);
         // Found: a new step's caption carried the picture's note "(framed anew…)".
-        QCOMPARE(w.lesson()->lesson().steps[1].caption, std::string("After $S_{\\mathrm{per}}$"));
+        QCOMPARE(w.lessonFlow()->lesson()->lesson().steps[1].caption, std::string("After $S_{\\mathrm{per}}$"));
         auto* caption = child<QPlainTextEdit>(w, "captionEdit");
         caption->setPlainText("After $S_{per}$ the volume is the canonical one.");
         auto* question = child<QPlainTextEdit>(w, "questionEdit");
@@ -335,28 +335,28 @@ private slots:
         // A bad question is refused with its field, and changes nothing.
         QVERIFY2(child<QLabel>(w, "editError")->text().contains("steps[1].question.after: must be a whole number from 1 to 5"),
                  qPrintable(child<QLabel>(w, "editError")->text()));
-        QVERIFY(!w.lesson()->lesson().steps[1].question);
+        QVERIFY(!w.lessonFlow()->lesson()->lesson().steps[1].question);
         question->setPlainText(R"({"kind": "where", "prompt": "Where is the PRP?", "point": [8, 6, 84], "after": 3})");
         click(child<QPushButton>(w, "applyEditsButton"));
         QVERIFY(child<QLabel>(w, "editError")->text().isEmpty());
-        QVERIFY(w.lesson()->lesson().steps[1].question);
-        QCOMPARE(w.lesson()->lesson().steps[1].caption, std::string("After $S_{per}$ the volume is the canonical one."));
+        QVERIFY(w.lessonFlow()->lesson()->lesson().steps[1].question);
+        QCOMPARE(w.lessonFlow()->lesson()->lesson().steps[1].caption, std::string("After $S_{per}$ the volume is the canonical one."));
         // The editor shows the question's answer: with it open, the step is answered too.
-        QTRY_VERIFY(!w.lesson()->isAsking());
+        QTRY_VERIFY(!w.lessonFlow()->lesson()->isAsking());
         QVERIFY(child<QLabel>(w, "lessonCaption")->text().contains("<i>S</i><sub><i>per</i></sub>"));
 
         // Reordered, undone and redone.
         click(child<QPushButton>(w, "moveUpButton"));
-        QCOMPARE(w.lesson()->lesson().steps[0].stage, 5);
+        QCOMPARE(w.lessonFlow()->lesson()->lesson().steps[0].stage, 5);
         click(child<QPushButton>(w, "lessonUndo"));
-        QCOMPARE(w.lesson()->lesson().steps[0].stage, 3);
+        QCOMPARE(w.lessonFlow()->lesson()->lesson().steps[0].stage, 3);
         click(child<QPushButton>(w, "lessonRedo"));
-        QCOMPARE(w.lesson()->lesson().steps[0].stage, 5);
+        QCOMPARE(w.lessonFlow()->lesson()->lesson().steps[0].stage, 5);
 
         // Saved atomically, and it reads back as the lesson it was.
         const QString path = dir.filePath("made.json");
-        QVERIFY(w.saveLesson(path));
-        QVERIFY(!w.lesson()->isModified());
+        QVERIFY(w.lessonFlow()->saveLesson(path));
+        QVERIFY(!w.lessonFlow()->lesson()->isModified());
         QVERIFY(w.windowTitle().contains("lesson made.json —"));
         QCOMPARE(QDir(dir.path()).entryList(QDir::Files | QDir::Hidden), QStringList({"made.json"}));
         const Lesson read = loadLesson(path.toStdString());

@@ -129,7 +129,7 @@ private slots:
         window.setPopupsEnabled(false);
         window.show();
         QVERIFY(QTest::qWaitForWindowExposed(&window));
-        QVERIFY(window.openScene(kScenes + "/depth-corridor.json"));
+        QVERIFY(window.sceneFiles()->openScene(kScenes + "/depth-corridor.json"));
         window.renderNow();
         for (const char* view : {"worldView", "projectedView"}) {
             const QStringList entries = legendEntries(window, view);
@@ -138,7 +138,7 @@ private slots:
         }
         QVERIFY(legendEntries(window, "projectedView").filter("vanishing").size() == 1);
 
-        QVERIFY(window.openScene(kScenes + "/house.json"));
+        QVERIFY(window.sceneFiles()->openScene(kScenes + "/house.json"));
         window.renderNow();
         const QStringList house = legendEntries(window, "worldView");
         QVERIFY2(house.filter("DOP").size() == 1, qPrintable(house.join(", ")));
@@ -156,10 +156,10 @@ private slots:
         for (const Theme theme : {Theme::Dark, Theme::Light}) {
             window.setTheme(theme);
             const Rgb fighting = elementColor(Element::ZFighting, theme);
-            QVERIFY(window.openScene(kScenes + "/depth-corridor.json"));
+            QVERIFY(window.sceneFiles()->openScene(kScenes + "/depth-corridor.json"));
             QVERIFY2(pixelsOf(window, "worldView", fighting) > 30, "the world view shows no z-fighting color");
             QVERIFY2(pixelsOf(window, "projectedView", fighting) > 30, "the projected view shows no z-fighting color");
-            QVERIFY(window.openScene(kScenes + "/house.json")); // nothing fights: the color means z-fighting only
+            QVERIFY(window.sceneFiles()->openScene(kScenes + "/house.json")); // nothing fights: the color means z-fighting only
             QVERIFY(pixelsOf(window, "worldView", fighting) < 10);
             QVERIFY(pixelsOf(window, "projectedView", fighting) < 10);
         }
@@ -201,7 +201,7 @@ private slots:
         QVERIFY(QTest::qWaitForWindowExposed(&window));
         window.setTheme(Theme::Light); // the canonical outline is black, the edges not quite
         const Rgb edges = elementColor(Element::Objects, Theme::Light);
-        QVERIFY(window.openScene(withHouse));
+        QVERIFY(window.sceneFiles()->openScene(withHouse));
         const auto stages = window.document()->pipeline().stages;
         const PolygonMesh house = houseMesh();
         int checked = 0;
@@ -210,11 +210,11 @@ private slots:
             if (std::none_of(house.vertices.begin(), house.vertices.end(),
                              [&](const Vec3<double>& p) { return (m * p.homogeneous()).w() <= 0; }))
                 continue;
-            QVERIFY(window.openScene(without));
-            window.goToStage(k, false);
+            QVERIFY(window.sceneFiles()->openScene(without));
+            window.stepper()->goToStage(k, false);
             const int alone = pixelsOf(window, "worldView", edges);
-            QVERIFY(window.openScene(withHouse));
-            window.goToStage(k, false);
+            QVERIFY(window.sceneFiles()->openScene(withHouse));
+            window.stepper()->goToStage(k, false);
             const int drawn = pixelsOf(window, "worldView", edges);
             QVERIFY2(drawn > alone + 30, qPrintable(QString("stage %1: %2 pixels with the house, %3 without")
                                                         .arg(k).arg(drawn).arg(alone)));
@@ -231,8 +231,8 @@ private slots:
         window.setFontSize(12); // a little larger than the default, as on a projector
         window.show();
         QVERIFY(QTest::qWaitForWindowExposed(&window));
-        QVERIFY(window.openScene(kScenes + "/classical/house-oblique.json"));
-        window.goToStage(window.stageCount(), false); // S_par, with the longest notes
+        QVERIFY(window.sceneFiles()->openScene(kScenes + "/classical/house-oblique.json"));
+        window.stepper()->goToStage(window.stepper()->stageCount(), false); // S_par, with the longest notes
         window.showPanel("matrices");
         QVERIFY(window.matrices()->stageText().contains("<i>S</i><sub>par</sub>")); // S_par, set as math
         auto* scroll = window.findChild<QDockWidget*>("matricesDock")->findChild<QScrollArea*>();

@@ -166,7 +166,7 @@ private slots:
         QCOMPARE(w.document()->undoStack()->count(), 1);
         QTemporaryDir dir;
         const QString file = dir.filePath("edited.json");
-        QVERIFY(w.saveScene(file));
+        QVERIFY(w.sceneFiles()->saveScene(file));
         const FieldValues after = fieldValues(loadScene(file.toStdString()).camera);
 
         QCOMPARE(after.at("view.back").front(), -25.0);
@@ -294,7 +294,7 @@ private slots:
         QFETCH(QString, reasonField);
         MainWindow& w = *window_;
         ParameterPanel* panel = w.parameters();
-        QVERIFY(w.openScene(scenePath(scene)));
+        QVERIFY(w.sceneFiles()->openScene(scenePath(scene)));
         if (projectionType >= 0) {
             panel->findChild<QComboBox*>("camera.projection.type")->setCurrentIndex(projectionType);
             QCOMPARE(int(std::get<gl::Camera<double>>(w.document()->scene().camera).projection.index()),
@@ -410,7 +410,7 @@ private slots:
             {"camera.projection.aspect", "gluPerspective aspect"},
             {"camera.projection.left", "glOrtho left"}};
         for (const QString scene : {"classical/house-dimetric.json", "opengl-perspective.json", "opengl-ortho.json"}) {
-            QVERIFY(w.openScene(scenePath(scene)));
+            QVERIFY(w.sceneFiles()->openScene(scenePath(scene)));
             for (const auto& entry : fieldValues(w.document()->scene().camera)) {
                 QStringList tips;
                 for (QLineEdit* box : w.parameters()->fields(entry.first))
@@ -433,7 +433,7 @@ private slots:
     {
         MainWindow& w = *window_;
         ParameterPanel* panel = w.parameters();
-        QVERIFY(w.openScene(scenePath("house.json")));
+        QVERIFY(w.sceneFiles()->openScene(scenePath("house.json")));
 
         // VPN made parallel to VUP, then PRP n behind F: two long reasons of the core.
         typeEdit(w, "view.vpn", "1=1");

@@ -44,7 +44,7 @@ private slots:
         for (int k = 0; k < 4; ++k)
             larger->trigger();
         QTest::keyClick(window.get(), Qt::Key_F5);
-        QTRY_VERIFY(window->isPresenting());
+        QTRY_VERIFY(window->presentMode()->isPresenting());
         QTRY_COMPARE(window->size(), QSize(1280, 720));
         // Until the views have their full-screen sizes (the layout settles over a few events).
         QWidget* projected = window->findChild<QWidget*>("projectedView");

@@ -101,10 +101,10 @@ void answerNextQuestion(const QString& text, int triesLeft = 100)
 {
     MainWindow window;
     window.show();
-    if (!window.openScene(kHouse))
+    if (!window.sceneFiles()->openScene(kHouse))
         std::_Exit(3);
     moveBackPlane(window, -25);
-    window.autosave()->saveNow();
+    window.sceneFiles()->autosave()->saveNow();
     std::raise(SIGKILL);
     std::_Exit(4);
 }
@@ -142,11 +142,11 @@ private slots:
     void everyThemeAfterEveryPanel()
     {
         MainWindow& w = *window_;
-        QVERIFY(w.openScene(kCorridor));
+        QVERIFY(w.sceneFiles()->openScene(kCorridor));
         QSignalSpy done(w.accuracy(), &AccuracyPanel::finished);
         w.accuracy()->measure(*w.document()->evaluated(), 2000);
         QVERIFY(done.wait(120000));
-        w.goToStage(2, false);
+        w.stepper()->goToStage(2, false);
         for (const QString panel : {"stages", "matrices", "parameters", "accuracy", "depth"}) {
             w.showPanel(panel);
             for (const QString theme : {"Light Theme (slides, print)", "Dark Theme (screen)"}) {
@@ -154,7 +154,7 @@ private slots:
                 QApplication::processEvents();
             }
         }
-        QCOMPARE(w.stage(), 2);
+        QCOMPARE(w.stepper()->stage(), 2);
         QCOMPARE(w.accuracy()->table()->rowCount(), 6);
     }
 
@@ -167,10 +167,10 @@ private slots:
         int opened = 0;
         while (files.hasNext()) {
             const QString path = files.next();
-            w.goToStage(w.stageCount(), false);
-            QVERIFY2(w.openScene(path), qPrintable(path + ": " + w.lastMessage()));
-            QCOMPARE(w.stage(), 0);
-            QCOMPARE(w.stageList()->count(), w.stageCount() + 1);
+            w.stepper()->goToStage(w.stepper()->stageCount(), false);
+            QVERIFY2(w.sceneFiles()->openScene(path), qPrintable(path + ": " + w.lastMessage()));
+            QCOMPARE(w.stepper()->stage(), 0);
+            QCOMPARE(w.stagePanel()->stageList()->count(), w.stepper()->stageCount() + 1);
             QVERIFY2(w.windowTitle().startsWith(QFileInfo(path).fileName() + " "), qPrintable(w.windowTitle()));
             QCOMPARE(shownTitle(w), expectedCaption(w, 0));
             ++opened;
@@ -183,24 +183,24 @@ private slots:
     void titleNamesTheStageShown()
     {
         MainWindow& w = *window_;
-        w.goToStage(3, false);
+        w.stepper()->goToStage(3, false);
         QCOMPARE(shownTitle(w), expectedCaption(w, 3));
-        QVERIFY(w.openScene(kCorridor));
-        QCOMPARE(w.stageList()->currentRow(), 0);
+        QVERIFY(w.sceneFiles()->openScene(kCorridor));
+        QCOMPARE(w.stagePanel()->stageList()->currentRow(), 0);
         QCOMPARE(shownTitle(w), expectedCaption(w, 0));
 
-        w.play();
+        w.stepper()->play();
         // Found: the list and the slider went to the last stage at once, the picture still at the world.
-        QCOMPARE(w.stageList()->currentRow(), 1);
+        QCOMPARE(w.stagePanel()->stageList()->currentRow(), 1);
         QCOMPARE(w.findChild<QSlider*>("stageSlider")->value(), 1);
-        QTRY_VERIFY_WITH_TIMEOUT(w.stage() >= 1, 10000);
-        QVERIFY(w.stageList()->currentRow() <= w.stage() + 1);
+        QTRY_VERIFY_WITH_TIMEOUT(w.stepper()->stage() >= 1, 10000);
+        QVERIFY(w.stagePanel()->stageList()->currentRow() <= w.stepper()->stage() + 1);
         w.findChild<QAbstractButton*>("playButton")->click(); // Stop
-        QVERIFY(!w.isAnimating());
-        QCOMPARE(w.stageList()->currentRow(), w.stage());
-        QCOMPARE(shownTitle(w), expectedCaption(w, w.stage()));
+        QVERIFY(!w.stepper()->isAnimating());
+        QCOMPARE(w.stagePanel()->stageList()->currentRow(), w.stepper()->stage());
+        QCOMPARE(shownTitle(w), expectedCaption(w, w.stepper()->stage()));
         QVERIFY(w.matrices()->stageText().contains(
-            mathHtml("$" + symbolMath(w.document()->pipeline().stages[std::size_t(w.stage() - 1)].symbol) + "$")));
+            mathHtml("$" + symbolMath(w.document()->pipeline().stages[std::size_t(w.stepper()->stage() - 1)].symbol) + "$")));
     }
 
     // Found: a traced vertex and the Accuracy results carried into the next scene.
@@ -214,11 +214,11 @@ private slots:
         w.traceVertex(Vec3<double>(16, 10, 54));
         QVERIFY(w.matrices()->traceText().contains("Traced vertex"));
         QVERIFY2(worldPicture(w) != untraced, "the traced vertex is marked in the world view");
-        w.goToStage(3, false);
+        w.stepper()->goToStage(3, false);
         QVERIFY(w.matrices()->traceText().contains("Traced vertex"));
-        w.goToStage(0, false);
+        w.stepper()->goToStage(0, false);
 
-        QVERIFY(w.openScene(kHouse));
+        QVERIFY(w.sceneFiles()->openScene(kHouse));
         QVERIFY(!w.matrices()->traceText().contains("Traced vertex"));
         QCOMPARE(worldPicture(w), untraced);
         QVERIFY(!w.accuracy()->hasResult());
@@ -226,7 +226,7 @@ private slots:
 
         // A measurement still running when the scene changes is abandoned, not shown.
         w.accuracy()->measure(*w.document()->evaluated(), 2000);
-        QVERIFY(w.openScene(kHouse));
+        QVERIFY(w.sceneFiles()->openScene(kHouse));
         QCoreApplication::processEvents(); // a result sent before the abandon would arrive now
         QVERIFY(!w.accuracy()->hasResult());
         QVERIFY(!w.accuracy()->isRunning());
@@ -245,7 +245,7 @@ private slots:
         QString text = QString::fromStdString(sceneToJson(loadScene(kHouse.toStdString())));
         text.replace(R"("objects": [)", R"("objects": [{"type": "mesh", "path": "viewpipe-session-tetrahedron.obj"}, )");
         QVERIFY(writeFile(scene, text.toUtf8()));
-        QVERIFY(w.openScene(scene));
+        QVERIFY(w.sceneFiles()->openScene(scene));
         QCOMPARE(w.document()->scene().objects.size(), std::size_t(2));
         const SceneEvaluator& evaluator = w.document()->evaluator();
         const long evaluations = evaluator.evaluations(), reads = evaluator.meshReads();
@@ -261,8 +261,8 @@ private slots:
 
         QTest::keyClick(&w, Qt::Key_Z, Qt::ControlModifier);
         QTest::keyClick(&w, Qt::Key_Y, Qt::ControlModifier);
-        for (int stage = 1; stage <= w.stageCount(); ++stage)
-            w.goToStage(stage, false);
+        for (int stage = 1; stage <= w.stepper()->stageCount(); ++stage)
+            w.stepper()->goToStage(stage, false);
         QCOMPARE(evaluator.evaluations(), evaluations + 1);
         QCOMPARE(evaluator.meshReads(), reads);
     }
@@ -326,7 +326,7 @@ private slots:
                      qPrintable(QString("the tabs' titles are elided: %1 < %2").arg(tabs->width()).arg(tabs->sizeHint().width())));
         }
         // The stage texts wrap: none runs past the list's right edge.
-        QListWidget* stages = w.stageList();
+        QListWidget* stages = w.stagePanel()->stageList();
         for (int i = 0; i < stages->count(); ++i)
             QVERIFY2(stages->visualItemRect(stages->item(i)).right() <= stages->viewport()->width(),
                      qPrintable(stages->item(i)->text()));
@@ -346,7 +346,7 @@ private slots:
         const QString outOfRange = QDir::temp().filePath("viewpipe-session-out-of-range.obj");
         QVERIFY(writeFile(outOfRange, "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 9\n"));
         const std::string before = sceneToJson(w.document()->scene());
-        QVERIFY(!w.importMesh(truncated));
+        QVERIFY(!w.sceneFiles()->importMesh(truncated));
         QVERIFY2(w.lastMessage().contains("too short"), qPrintable(w.lastMessage()));
         QMimeData dropped;
         dropped.setUrls({QUrl::fromLocalFile(outOfRange)});
@@ -377,7 +377,7 @@ private slots:
 
         MainWindow& w = *window_;
         answerNextQuestion("Recover");
-        QVERIFY(w.offerRecovery());
+        QVERIFY(w.sceneFiles()->offerRecovery());
         QCOMPARE(std::get<foley::ViewSpec<double>>(w.document()->scene().camera).back, -25.0);
         QCOMPARE(w.document()->filePath(), kHouse);
         QVERIFY(w.document()->isModified());
@@ -393,17 +393,17 @@ private slots:
     {
         MainWindow& w = *window_;
         moveBackPlane(w, -30);
-        w.autosave()->saveNow();
-        const QString autosaved = w.autosave()->scenePath();
+        w.sceneFiles()->autosave()->saveNow();
+        const QString autosaved = w.sceneFiles()->autosave()->scenePath();
         QVERIFY(QFile::exists(autosaved));
         QCOMPARE(std::get<foley::ViewSpec<double>>(loadScene(autosaved.toStdString()).camera).back, -30.0);
         QVERIFY(Autosave::orphans().empty());
         w.document()->undoStack()->undo(); // back to the saved state: nothing to recover
         QVERIFY(!QFile::exists(autosaved));
         moveBackPlane(w, -31);
-        w.autosave()->saveNow();
-        QVERIFY(QFile::exists(w.autosave()->scenePath()));
-        const QString second = w.autosave()->scenePath();
+        w.sceneFiles()->autosave()->saveNow();
+        QVERIFY(QFile::exists(w.sceneFiles()->autosave()->scenePath()));
+        const QString second = w.sceneFiles()->autosave()->scenePath();
         window_.reset(); // closed with unsaved changes, as after "Discard"
         QVERIFY(!QFile::exists(second));
         window_ = std::make_unique<MainWindow>();

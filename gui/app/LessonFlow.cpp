@@ -1,0 +1,312 @@
+#include "LessonFlow.h"
+
+#include <QDir>
+#include <QDockWidget>
+#include <QFileDialog>
+#include <QFileInfo>
+#include <QMenu>
+#include <QMessageBox>
+#include <QSignalBlocker>
+#include <QStatusBar>
+
+#include <cmath>
+
+#include "ActionRegistry.h"
+#include "AppPaths.h"
+#include "Document.h"
+#include "LessonDocument.h"
+#include "LessonPanel.h"
+#include "MainWindow.h"
+#include "PresentMode.h"
+#include "Stepper.h"
+#include "viewpipe/stage.hpp"
+
+namespace viewpipe::gui {
+
+LessonFlow::LessonFlow(MainWindow* window)
+    : QObject(window), window_(window), lesson_(new LessonDocument(this)), panel_(new LessonPanel(lesson_))
+{
+    connect(lesson_, &LessonDocument::stepChanged, this, &LessonFlow::showLessonStep);
+    connect(panel_, &LessonPanel::addStepRequested, this, &LessonFlow::addLessonStepFromView);
+    connect(panel_, &LessonPanel::saveResultsRequested, this, &LessonFlow::chooseAndSaveResults);
+}
+
+bool LessonFlow::hidesAnswers() const
+{
+    return lesson_->isAsking();
+}
+
+std::vector<std::array<int, 2>> LessonFlow::highlightedEntries(int stage) const
+{
+    const bool stepShown =
+        lesson_->isOpen() && shownStep_ == lesson_->step() && stage == revealedStage(lesson_->currentStep());
+    return stepShown ? lesson_->currentStep().entries : std::vector<std::array<int, 2>>{};
+}
+
+void LessonFlow::addActions(ActionRegistry& actions)
+{
+    actions.add("lesson.open", tr("&Open Lesson…"), [this] {
+        if (!confirmDiscardLesson())
+            return;
+        const QString path = QFileDialog::getOpenFileName(window_, tr("Open lesson"), lessonsDirectory(), tr("Lessons (*.json)"));
+        if (!path.isEmpty())
+            openLesson(path);
+    }, QKeySequence(Qt::CTRL | Qt::Key_L));
+    actions.add("lesson.new", tr("&New Lesson From View"), [this] {
+        if (confirmDiscardLesson())
+            newLessonFromView();
+    });
+    actions.add("lesson.save", tr("&Save Lesson"), [this] { saveLessonAs(); });
+    actions.add("lesson.saveAs", tr("Save Lesson &As…"), [this] { saveLessonAs(true); });
+    actions.add("lesson.addStep", tr("Add Step From &View"), [this] { addLessonStepFromView(); });
+    actions.add("lesson.saveAnswers", tr("Save My &Answers…"), [this] { chooseAndSaveResults(); });
+    actions.add("lesson.close", tr("&Close Lesson"), [this] {
+        if (confirmDiscardLesson())
+            lesson_->close();
+    });
+}
+
+void LessonFlow::fillMenu(QMenu* menu, const ActionRegistry& actions)
+{
+    actions.fill(menu, {"lesson.open"});
+    QMenu* builtIn = menu->addMenu(tr("&Built-in Lessons"));
+    for (const QFileInfo& info : QDir(lessonsDirectory()).entryInfoList({"*.json"}, QDir::Files, QDir::Name)) {
+        QString title = info.completeBaseName();
+        try {
+            title = QString::fromStdString(loadLesson(info.absoluteFilePath().toStdString()).title);
+        } catch (const InputError&) {
+            continue; // a broken lesson is not offered
+        }
+        builtIn->addAction(title, this, [this, path = info.absoluteFilePath()] {
+            if (confirmDiscardLesson())
+                openLesson(path);
+        });
+    }
+    actions.fill(menu, {"lesson.new", "-", "lesson.save", "lesson.saveAs", "lesson.addStep", "lesson.saveAnswers",
+                        "lesson.close"});
+    // These need a lesson open.
+    connect(menu, &QMenu::aboutToShow, this, [this, &actions] {
+        for (const char* id : {"lesson.save", "lesson.saveAs", "lesson.addStep", "lesson.saveAnswers", "lesson.close"})
+            actions.action(id)->setEnabled(lesson_->isOpen());
+    });
+}
+
+bool LessonFlow::openLesson(const QString& path)
+{
+    try {
+        return openLesson(loadLesson(path.toStdString()), path);
+    } catch (const InputError& e) {
+        window_->showMessage(tr("Cannot open the lesson %1: %2").arg(path, QString::fromStdString(e.what())));
+        return false;
+    }
+}
+
+bool LessonFlow::openLesson(Lesson lesson, const QString& path)
+{
+    try {
+        // Every step's scene is evaluated now (its meshes read): a step that cannot be shown stops nothing later.
+        lesson_->open(std::move(lesson), path);
+    } catch (const InputError& e) {
+        window_->showMessage(tr("Cannot open the lesson %1: %2").arg(path, QString::fromStdString(e.what())));
+        return false;
+    }
+    return true;
+}
+
+void LessonFlow::showLessonStep()
+{
+    auto* dock = window_->findChild<QDockWidget*>("lessonDock");
+    Stepper* stepper = window_->stepper();
+    if (!lesson_->isOpen()) {
+        shownStep_ = -1;
+        dock->hide();
+        window_->showStageDetails();
+        return;
+    }
+    if (!dock->isVisible() && !window_->presentMode()->isPresenting()) {
+        dock->show();
+        // The lesson's text and questions get the room; the stage list needs little.
+        const int height = window_->height();
+        window_->resizeDocks({window_->findChild<QDockWidget*>("stagesDock"), dock}, {height / 3, 2 * height / 3},
+                             Qt::Vertical);
+    }
+    dock->show();
+    dock->raise();
+    const int k = lesson_->step();
+    const LessonStep& step = lesson_->currentStep();
+    // Otherwise the step shown was just answered or revealed, or is the view on screen just added.
+    const bool newStep = !keepView_ && (k != shownStep_ || lesson_->generation() != shownGeneration_);
+    keepView_ = false;
+    Document* document = window_->document();
+    const bool sameScene = step.scene == document->scene();
+    if (!sameScene && !window_->confirmDiscard()) {
+        // The lesson and the view must agree: back to the step shown, or no lesson at all.
+        if (shownStep_ >= 0 && shownGeneration_ == lesson_->generation() && shownStep_ != k)
+            lesson_->goTo(shownStep_);
+        else if (shownStep_ < 0 || shownGeneration_ != lesson_->generation())
+            lesson_->close();
+        return;
+    }
+    if (!sameScene) { // the step's scene as the lesson evaluated it
+        const QString file = QString::fromStdString(step.scene.file.string());
+        {
+            const QSignalBlocker drawn(document);
+            document->load(lesson_->stepScene(k), file);
+        }
+        window_->showOpenedScene();
+    }
+    shownStep_ = k;
+    shownGeneration_ = lesson_->generation();
+    if (newStep || !sameScene) {
+        if (stepper->isAnimating())
+            stepper->goToStage(stepper->target(), false);
+        // What the step hides is not drawn, what it highlights is drawn wider; the picture stays at its stage.
+        ScenePainter* painter = window_->painter();
+        painter->setScene(shownAtStep(document->evaluated(), step));
+        if (!step.panel.empty())
+            window_->showPanel(QString::fromStdString(step.panel));
+        painter->resetView();
+        painter->orbit(step.yaw, step.pitch, step.zoom);
+        stepper->goToStage(stepper->stage(), false);
+    }
+    const bool revealed = !step.question || lesson_->isRevealed(k);
+    window_->traceVertex(tracedAt(step)); // the point asked about, followed through the stages once answered
+    const int stage = revealed ? revealedStage(step) : askingStage(step);
+    // The answer comes with the transition to the stage asked about; a step to the next stage plays it too.
+    stepper->goToStage(stage, sameScene && (!newStep || std::abs(stage - stepper->target()) == 1));
+    window_->showStageDetails();
+}
+
+LessonStep LessonFlow::stepFromView() const
+{
+    const Document* document = window_->document();
+    LessonStep step;
+    step.scene = document->scene();
+    // A scene with unsaved changes goes into the lesson itself, not as its file.
+    step.scene.file = document->isModified() || document->filePath().isEmpty()
+                          ? std::filesystem::path()
+                          : std::filesystem::path(QFileInfo(document->filePath()).absoluteFilePath().toStdString());
+    const int stage = window_->stepper()->target();
+    step.stage = stage;
+    const ScenePainter::Orbit orbit = window_->painter()->orbitAngles();
+    // Readable numbers in the file: a tenth of a degree, a thousandth of the zoom.
+    step.yaw = std::clamp(std::round(orbit.yaw * 10) / 10, -180.0, 180.0);
+    step.pitch = std::clamp(std::round(orbit.pitch * 10) / 10, -89.0, 89.0);
+    step.zoom = std::clamp(std::round(orbit.zoom * 1000) / 1000, 0.1, 20.0);
+    // The stage's name, for the author to go on from; not the picture's notes on framing and ghosts.
+    step.caption = stageText(document->pipeline().stages, std::size_t(stage), StageText::Caption);
+    step.trace = window_->traced();
+    return step;
+}
+
+void LessonFlow::newLessonFromView()
+{
+    try {
+        keepView_ = true;
+        lesson_->create(tr("A new lesson").toStdString(), stepFromView());
+        panel_->openEditor();
+    } catch (const InputError& e) {
+        window_->showMessage(tr("Cannot make a lesson of this view: %1").arg(QString::fromStdString(e.what())));
+    }
+    keepView_ = false;
+}
+
+void LessonFlow::addLessonStepFromView()
+{
+    if (!lesson_->isOpen())
+        return newLessonFromView();
+    try {
+        keepView_ = true; // the new step's view is the one on screen
+        lesson_->insertStep(lesson_->step() + 1, stepFromView());
+    } catch (const InputError& e) {
+        window_->showMessage(tr("Cannot add the step: %1").arg(QString::fromStdString(e.what())));
+    }
+    keepView_ = false;
+}
+
+bool LessonFlow::saveLesson(const QString& path)
+{
+    try {
+        lesson_->save(path);
+        window_->statusBar()->showMessage(tr("Saved %1").arg(path), 5000);
+        return true;
+    } catch (const InputError& e) {
+        window_->showMessage(tr("Cannot save the lesson: %1").arg(QString::fromStdString(e.what())));
+        return false;
+    }
+}
+
+bool LessonFlow::saveLessonAs(bool askForName)
+{
+    if (!panel_->applyPendingEdits())
+        return false;
+    QString path = lesson_->filePath();
+    // A built-in lesson is a copy's starting point, not a file to overwrite.
+    if (askForName || path.isEmpty() || QFileInfo(path).absolutePath() == QDir(lessonsDirectory()).absolutePath())
+        path = chooseFileToSave(window_, tr("Save lesson"), path.isEmpty() ? "lesson.json" : path, tr("Lessons (*.json)"));
+    return !path.isEmpty() && saveLesson(path);
+}
+
+bool LessonFlow::saveLessonResults(const QString& path)
+{
+    try {
+        lesson_->saveResults(path);
+        window_->statusBar()->showMessage(tr("Saved your answers to %1").arg(path), 5000);
+        return true;
+    } catch (const InputError& e) {
+        window_->showMessage(tr("Cannot save the answers: %1").arg(QString::fromStdString(e.what())));
+        return false;
+    }
+}
+
+void LessonFlow::chooseAndSaveResults()
+{
+    const QString path = chooseFileToSave(window_, tr("Save my answers"), "lesson-results.json", tr("Results (*.json)"));
+    if (!path.isEmpty())
+        saveLessonResults(path);
+}
+
+bool LessonFlow::confirmDiscardLesson()
+{
+    if (!panel_->applyPendingEdits()) {
+        const auto answer = QMessageBox::question(window_, tr("Edits not applied"),
+                                                  tr("%1\n\nDiscard the step's edits?").arg(window_->lastMessage()),
+                                                  QMessageBox::Discard | QMessageBox::Cancel);
+        if (answer != QMessageBox::Discard)
+            return false;
+        panel_->discardPendingEdits();
+    }
+    if (lesson_->hasUnsavedAnswers()) {
+        const auto answer = QMessageBox::question(window_, tr("Unsaved answers"),
+                                                  tr("Your answers to the lesson's questions are not saved. Save them first?"),
+                                                  QMessageBox::Save | QMessageBox::Discard | QMessageBox::Cancel);
+        if (answer == QMessageBox::Cancel)
+            return false;
+        if (answer == QMessageBox::Save) {
+            const QString path = chooseFileToSave(window_, tr("Save my answers"), "lesson-results.json", tr("Results (*.json)"));
+            if (path.isEmpty() || !saveLessonResults(path))
+                return false;
+        }
+    }
+    if (!lesson_->isModified())
+        return true;
+    const auto answer = QMessageBox::question(window_, tr("Unsaved lesson"),
+                                              tr("The lesson has unsaved changes. Save them first?"),
+                                              QMessageBox::Save | QMessageBox::Discard | QMessageBox::Cancel);
+    if (answer == QMessageBox::Save)
+        return saveLessonAs();
+    return answer == QMessageBox::Discard;
+}
+
+void LessonFlow::advance(int by)
+{
+    if (!lesson_->isOpen())
+        return window_->stepper()->stepBy(by);
+    if (!panel_->applyPendingEdits())
+        return;
+    if (by > 0 && lesson_->isAsking())
+        return lesson_->reveal();
+    lesson_->goTo(lesson_->step() + by);
+}
+
+} // namespace viewpipe::gui

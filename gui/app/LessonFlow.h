@@ -1,0 +1,73 @@
+#pragma once
+
+// The lesson flow (Lesson menu): opening a lesson shows its first step, each
+// step its scene, stage and world view; a question waits at the stage before
+// the one it asks about, with the stage names, matrices and captions hidden,
+// until it is answered or revealed. Authoring: a new lesson, or a step, from
+// the view on screen. Failures are shown, not thrown.
+
+#include <QObject>
+#include <QString>
+
+#include <array>
+#include <vector>
+
+#include "viewpipe/lesson.hpp"
+
+class QMenu;
+
+namespace viewpipe::gui {
+
+class ActionRegistry;
+class LessonDocument;
+class LessonPanel;
+class MainWindow;
+
+class LessonFlow : public QObject {
+    Q_OBJECT
+public:
+    explicit LessonFlow(MainWindow* window);
+
+    LessonDocument* lesson() { return lesson_; }
+    LessonPanel* panel() { return panel_; }
+
+    bool openLesson(const QString& path);
+    // The same for a lesson already read from `path`.
+    bool openLesson(Lesson lesson, const QString& path);
+    bool saveLesson(const QString& path);
+    bool saveLessonResults(const QString& path);
+    // A new lesson whose first step is the current view.
+    void newLessonFromView();
+    // The current view as a step after the one shown.
+    void addLessonStepFromView();
+    // The clicker: with a lesson open, the next step (a question not answered
+    // yet is revealed first) or the one before; otherwise the next or previous stage.
+    void advance(int by);
+    // Asks about unsaved answers, steps and lesson edits; false: stay.
+    bool confirmDiscardLesson();
+
+    // While a lesson's question waits: no stage names, matrices or captions.
+    bool hidesAnswers() const;
+    // The matrix entries the step shown highlights at `stage` (none at other stages).
+    std::vector<std::array<int, 2>> highlightedEntries(int stage) const;
+
+    // The Lesson menu's actions ("lesson.open", …) and the menu.
+    void addActions(ActionRegistry& actions);
+    void fillMenu(QMenu* menu, const ActionRegistry& actions);
+
+private:
+    void showLessonStep();
+    // The scene, stage and world view now, as a lesson step.
+    LessonStep stepFromView() const;
+    bool saveLessonAs(bool askForName = false);
+    void chooseAndSaveResults();
+
+    MainWindow* window_;
+    LessonDocument* lesson_;
+    LessonPanel* panel_;
+    int shownStep_ = -1;       // the step whose view is set up
+    int shownGeneration_ = -1; // of the lesson it was in
+    bool keepView_ = false;    // the step about to be shown is the view on screen
+};
+
+} // namespace viewpipe::gui

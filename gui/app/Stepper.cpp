@@ -1,0 +1,118 @@
+#include "Stepper.h"
+
+#include <QVariantAnimation>
+
+#include <algorithm>
+
+#include "Document.h"
+#include "painter/ScenePainter.h"
+
+namespace viewpipe::gui {
+namespace {
+
+constexpr int kStepMilliseconds = 1000;
+constexpr int kSkipMilliseconds = 600; // a step toward a stage further than the next
+
+} // namespace
+
+Stepper::Stepper(const Document* document, ScenePainter* painter, QObject* parent)
+    : QObject(parent), document_(document), painter_(painter), animation_(new QVariantAnimation(this)),
+      stepMilliseconds_(kStepMilliseconds)
+{
+    animation_->setStartValue(0.0);
+    animation_->setEndValue(1.0);
+    connect(animation_, &QVariantAnimation::valueChanged, this, [this](const QVariant& v) {
+        if (transition_) {
+            painter_->showMoment(transition_->at(v.toDouble()));
+            emit frameChanged();
+        }
+    });
+    connect(animation_, &QVariantAnimation::finished, this, [this] {
+        stage_ = transition_->to();
+        transition_.reset();
+        painter_->setMoving(stage_ != target_); // playing on: the next step starts from this frame
+        emit rested();
+        if (stage_ != target_)
+            startStep();
+        else
+            playing_ = false;
+        emit moved();
+    });
+}
+
+int Stepper::stageCount() const
+{
+    return int(document_->pipeline().stages.size());
+}
+
+bool Stepper::isAnimating() const
+{
+    return animation_->state() == QAbstractAnimation::Running;
+}
+
+int Stepper::shownStage() const
+{
+    return transition_ ? transition_->to() : stage_;
+}
+
+void Stepper::goToStage(int stage, bool animate)
+{
+    target_ = std::clamp(stage, 0, stageCount());
+    if (!animate) {
+        animation_->stop();
+        transition_.reset();
+        stage_ = target_;
+        playing_ = false;
+        rest();
+        emit moved();
+        return;
+    }
+    stepMilliseconds_ = std::abs(target_ - stage_) > 1 ? kSkipMilliseconds : kStepMilliseconds;
+    if (!isAnimating() && target_ != stage_)
+        startStep();
+    emit moved();
+}
+
+void Stepper::play()
+{
+    if (stage_ >= stageCount())
+        goToStage(0, false);
+    target_ = stageCount();
+    stepMilliseconds_ = kStepMilliseconds;
+    playing_ = true;
+    startStep();
+    emit moved();
+}
+
+void Stepper::stop()
+{
+    goToStage(shownStage(), false);
+}
+
+void Stepper::restart()
+{
+    animation_->stop();
+    transition_.reset();
+    playing_ = false;
+    stage_ = target_ = std::min(stage_, stageCount());
+    rest();
+    emit moved();
+}
+
+void Stepper::startStep()
+{
+    const int next = stage_ + (target_ > stage_ ? 1 : -1);
+    transition_.emplace(*document_->evaluated(), stage_, next);
+    painter_->setMoving(true);
+    animation_->setDuration(stepMilliseconds_);
+    animation_->start();
+}
+
+void Stepper::rest()
+{
+    painter_->setMoving(false);
+    painter_->showMoment(stageAtRest(*document_->evaluated(), stage_));
+    emit rested();
+}
+
+} // namespace viewpipe::gui
