@@ -112,6 +112,36 @@ LessonPanel::LessonPanel(LessonDocument* lesson, QWidget* parent) : QWidget(pare
     caption_ = richLabel("lessonCaption");
     layout->addWidget(caption_);
 
+    buildQuestion();
+    layout->addWidget(question_);
+
+    saveResults_ = new QPushButton(tr("Save My Answers…"));
+    saveResults_->setObjectName("saveResultsButton");
+    saveResults_->setToolTip(tr("Your answers and whether each was right, as a JSON file (the web page saves the same)"));
+    layout->addWidget(saveResults_, 0, Qt::AlignLeft);
+
+    buildEditor();
+    layout->addWidget(editor_);
+    layout->addStretch();
+
+    connect(previous, &QPushButton::clicked, this, [this] {
+        if (applyPendingEdits())
+            lesson_->goTo(lesson_->step() - 1);
+    });
+    connect(next, &QPushButton::clicked, this, [this] {
+        if (applyPendingEdits())
+            lesson_->goTo(lesson_->step() + 1);
+    });
+    connect(saveResults_, &QPushButton::clicked, this, &LessonPanel::saveResultsRequested);
+
+    connect(lesson_, &LessonDocument::lessonChanged, this, &LessonPanel::refreshLesson);
+    connect(lesson_, &LessonDocument::stepChanged, this, &LessonPanel::refreshStep);
+    refreshLesson();
+    refreshStep();
+}
+
+void LessonPanel::buildQuestion()
+{
     question_ = new QGroupBox(tr("Question"));
     question_->setObjectName("lessonQuestion");
     auto* q = new QVBoxLayout(question_);
@@ -140,13 +170,12 @@ LessonPanel::LessonPanel(LessonDocument* lesson, QWidget* parent) : QWidget(pare
         enter->setContext(Qt::WidgetWithChildrenShortcut);
         connect(enter, &QShortcut::activated, this, &LessonPanel::checkAnswer);
     }
-    layout->addWidget(question_);
+    connect(check_, &QPushButton::clicked, this, &LessonPanel::checkAnswer);
+    connect(reveal_, &QPushButton::clicked, lesson_, &LessonDocument::reveal);
+}
 
-    saveResults_ = new QPushButton(tr("Save My Answers…"));
-    saveResults_->setObjectName("saveResultsButton");
-    saveResults_->setToolTip(tr("Your answers and whether each was right, as a JSON file (the web page saves the same)"));
-    layout->addWidget(saveResults_, 0, Qt::AlignLeft);
-
+void LessonPanel::buildEditor()
+{
     // Authoring, folded away until asked for.
     editor_ = new QGroupBox(tr("Edit the lesson"));
     editor_->setObjectName("lessonEditor");
@@ -230,21 +259,8 @@ LessonPanel::LessonPanel(LessonDocument* lesson, QWidget* parent) : QWidget(pare
         if (open && lesson_->isAsking())
             lesson_->reveal(); // the question's file form and the captions give the answer
     });
-    layout->addWidget(editor_);
-    layout->addStretch();
 
-    connect(previous, &QPushButton::clicked, this, [this] {
-        if (applyPendingEdits())
-            lesson_->goTo(lesson_->step() - 1);
-    });
-    connect(next, &QPushButton::clicked, this, [this] {
-        if (applyPendingEdits())
-            lesson_->goTo(lesson_->step() + 1);
-    });
     connect(titleEdit_, &QLineEdit::returnPressed, this, &LessonPanel::applyPendingEdits);
-    connect(check_, &QPushButton::clicked, this, &LessonPanel::checkAnswer);
-    connect(reveal_, &QPushButton::clicked, lesson_, &LessonDocument::reveal);
-    connect(saveResults_, &QPushButton::clicked, this, &LessonPanel::saveResultsRequested);
     connect(steps_, &QListWidget::currentRowChanged, this, [this](int row) {
         if (row < 0 || row == lesson_->step())
             return;
@@ -268,11 +284,6 @@ LessonPanel::LessonPanel(LessonDocument* lesson, QWidget* parent) : QWidget(pare
     connect(down, &QPushButton::clicked, this, [this, guarded] { guarded([this] { lesson_->moveStep(lesson_->step(), lesson_->step() + 1); }); });
     connect(remove, &QPushButton::clicked, this, [this, guarded] { guarded([this] { lesson_->removeStep(lesson_->step()); }); });
     connect(apply, &QPushButton::clicked, this, [this, guarded] { guarded([this] { applyEdits(); }); });
-
-    connect(lesson_, &LessonDocument::lessonChanged, this, &LessonPanel::refreshLesson);
-    connect(lesson_, &LessonDocument::stepChanged, this, &LessonPanel::refreshStep);
-    refreshLesson();
-    refreshStep();
 }
 
 void LessonPanel::refreshLesson()

@@ -47,6 +47,8 @@ signals:
 private:
     void refreshLesson();
     void refreshStep();
+    void buildQuestion();
+    void buildEditor();
     void buildInputs();
     void applyEdits();
 
