@@ -6,6 +6,7 @@
 
 #include <vector>
 
+#include "build_paths.h"
 #include "viewpipe/effects.hpp"
 #include "viewpipe/scene.hpp"
 #include "viewpipe/transform.hpp"
@@ -17,7 +18,7 @@ using namespace viewpipe;
 const Pipeline<double>& housePipeline()
 {
     static const Pipeline<double> p =
-        buildPipeline(loadScene(std::string(VIEWPIPE_DATA_DIR) + "/scenes/house.json").camera);
+        buildPipeline(loadScene(std::string(viewpipe::build::dataDir) + "/scenes/house.json").camera);
     return p;
 }
 

@@ -17,6 +17,7 @@
 
 #include <filesystem>
 
+#include "build_paths.h"
 #include "export/Exporter.h"
 #include "painter/EigenVtk.h"
 #include "viewpipe/animation.hpp"
@@ -28,7 +29,7 @@ namespace fs = std::filesystem;
 
 const Scene& house()
 {
-    static const Scene scene = loadScene(std::string(VIEWPIPE_DATA_DIR) + "/scenes/house.json");
+    static const Scene scene = loadScene(std::string(viewpipe::build::dataDir) + "/scenes/house.json");
     return scene;
 }
 

@@ -10,6 +10,7 @@
 #include <fstream>
 #include <sstream>
 
+#include "build_paths.h"
 #include "viewpipe/evaluated_scene.hpp"
 #include "viewpipe/report/report.hpp"
 #include "viewpipe/report/web_page.hpp"
@@ -28,12 +29,12 @@ const FontMeasure fixedWidth = lineByLine([](const std::vector<MathRun>& runs, d
 
 void nativeEvaluate(benchmark::State& state)
 {
-    std::ifstream in(VIEWPIPE_DATA_DIR "/scenes/house.json");
+    std::ifstream in(std::string(viewpipe::build::dataDir) + "/scenes/house.json");
     std::stringstream text;
     text << in.rdbuf();
     const WebViewOptions options; // the page's: 1280 x 720, 20-pixel labels
     for (auto _ : state) {
-        const auto evaluated = evaluateScene(parseScene(text.str(), VIEWPIPE_DATA_DIR "/scenes"));
+        const auto evaluated = evaluateScene(parseScene(text.str(), std::string(viewpipe::build::dataDir) + "/scenes"));
         const std::string pipeline = cli::pipelineJson(evaluated->scene, cli::PrecisionChoice{}, evaluated->outcomes).dump();
         const std::string page = webPageData(*evaluated, webPageViews(*evaluated, options, fixedWidth));
         benchmark::DoNotOptimize(pipeline.size() + page.size());

@@ -27,6 +27,7 @@
 #include <optional>
 #include <thread>
 
+#include "build_paths.h"
 #include "faces_drawn.h"
 #include "sheet_mesh.h"
 #include "painter/EigenVtk.h"
@@ -45,7 +46,7 @@ constexpr int kFramesPerStep = 10; // transition frames timed in a step
 
 Scene house()
 {
-    return loadScene(std::string(VIEWPIPE_DATA_DIR) + "/scenes/house.json");
+    return loadScene(std::string(viewpipe::build::dataDir) + "/scenes/house.json");
 }
 
 // The wavy sheet of about 10^6 triangles across the house's front, written once.

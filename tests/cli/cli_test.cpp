@@ -13,6 +13,8 @@
 #include <sys/wait.h>
 #include <vector>
 
+#include "build_paths.h"
+
 namespace {
 
 using Json = nlohmann::json;
@@ -23,13 +25,13 @@ struct Result {
     std::string err;
 };
 
-const std::string kHouse = std::string(VIEWPIPE_DATA_DIR) + "/scenes/house.json";
+const std::string kHouse = std::string(viewpipe::build::dataDir) + "/scenes/house.json";
 
 Result run(const std::string& arguments)
 {
     const std::string errFile = std::filesystem::temp_directory_path() / ("viewpipe-cli-" + std::to_string(::getpid()));
     // A bounded run: a command that hangs fails the test instead of stopping the suite.
-    const std::string command = "timeout 120 " + std::string(VIEWPIPE_EXE) + " " + arguments + " 2>" + errFile;
+    const std::string command = "timeout 120 " + std::string(viewpipe::build::viewpipeExe) + " " + arguments + " 2>" + errFile;
     Result result;
     FILE* pipe = ::popen(command.c_str(), "r");
     std::array<char, 4096> buffer;
@@ -295,7 +297,7 @@ namespace {
 
 TEST(Cli, ClassifyNamesThePresets)
 {
-    const std::string dir = std::string(VIEWPIPE_DATA_DIR) + "/scenes/classical/";
+    const std::string dir = std::string(viewpipe::build::dataDir) + "/scenes/classical/";
     const std::vector<std::pair<std::string, std::string>> expected = {
         {"house-front", "parallel, multiview orthographic, front"},
         {"house-top", "parallel, multiview orthographic, top"},
@@ -340,7 +342,7 @@ namespace {
 
 TEST(Cli, EffectsInPipelineAndTrace)
 {
-    const std::string scene = std::string(VIEWPIPE_DATA_DIR) + "/scenes/clipping-eye-plane.json";
+    const std::string scene = std::string(viewpipe::build::dataDir) + "/scenes/clipping-eye-plane.json";
     const Json j = Json::parse(run("pipeline " + scene + " --json").out);
     ASSERT_TRUE(j.contains("effects"));
     EXPECT_EQ(j["stages"].back()["symbol"], "divide");

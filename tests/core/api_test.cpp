@@ -11,6 +11,7 @@
 #include <cmath>
 #include <limits>
 
+#include "build_paths.h"
 #include "support.hpp"
 #include "viewpipe/api.hpp"
 #include "viewpipe/effects.hpp"
@@ -376,7 +377,7 @@ TEST(Api, ConvertedCameraDrawsTheSamePicture)
 // mirrored winding of a left-handed camera and of Vulkan's y.
 TEST(Api, EffectsAgreeAcrossApisForTheSamePicture)
 {
-    const Scene scene = loadScene(std::string(VIEWPIPE_DATA_DIR) + "/scenes/opengl-perspective.json");
+    const Scene scene = loadScene(std::string(viewpipe::build::dataDir) + "/scenes/opengl-perspective.json");
     const auto& source = std::get<gl::Camera<double>>(scene.camera);
     std::vector<PolygonMesh> objects = {houseMesh()};
     EffectList effects;
@@ -456,7 +457,7 @@ TEST(Api, StagesShowTheStepToEachApisVolume)
 // The picture of Vulkan's volume says where its y points: the last stage's claim and the planes' labels.
 TEST(Api, VulkansVolumeIsLabelledWithItsYDown)
 {
-    const Scene scene = loadScene(std::string(VIEWPIPE_DATA_DIR) + "/scenes/apis/vulkan.json");
+    const Scene scene = loadScene(std::string(viewpipe::build::dataDir) + "/scenes/apis/vulkan.json");
     const std::shared_ptr<const EvaluatedScene> evaluated = evaluateScene(scene);
     EXPECT_EQ(evaluated->stageClaims.back(), "the volume is $-1 \\le x, y \\le 1$, $0 \\le z \\le 1$; $y$ points down in the image");
     std::set<std::string> labels;
@@ -472,7 +473,7 @@ TEST(Api, VulkansVolumeIsLabelledWithItsYDown)
 // (sides and near face on the canonical volume, the cut face between near and far) and says so.
 TEST(Api, AVolumeCutShortOfAnInfiniteFarIsStillClaimed)
 {
-    const Scene scene = loadScene(std::string(VIEWPIPE_DATA_DIR) + "/scenes/apis/vulkan-reversed-infinite.json");
+    const Scene scene = loadScene(std::string(viewpipe::build::dataDir) + "/scenes/apis/vulkan-reversed-infinite.json");
     EXPECT_EQ(evaluateScene(scene)->stageClaims.back(),
               "the volume is $-1 \\le x, y \\le 1$, $0 \\le z \\le 1$; $y$ points down in the image "
               "(far at infinity: the volume drawn is cut short of it)");

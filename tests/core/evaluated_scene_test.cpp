@@ -10,6 +10,7 @@
 #include <map>
 #include <set>
 
+#include "build_paths.h"
 #include "support.hpp"
 #include "viewpipe/evaluated_scene.hpp"
 
@@ -20,7 +21,7 @@ namespace fs = std::filesystem;
 
 Scene house()
 {
-    return loadScene(std::string(VIEWPIPE_DATA_DIR) + "/scenes/house.json");
+    return loadScene(std::string(viewpipe::build::dataDir) + "/scenes/house.json");
 }
 
 const Label& labelNamed(const EvaluatedScene& scene, const std::string& text)
@@ -216,20 +217,20 @@ TEST_F(MeshCacheTest, AFileThatCannotBeReadIsRefusedByItsField)
 TEST(EvaluatedScene, StagesClaimWhatTheyAchieve)
 {
     // The house: VRP at the origin and VPN along z already, so T(-VRP) and R are identities here.
-    const auto house = evaluateScene(loadScene(std::string(VIEWPIPE_DATA_DIR) + "/scenes/house.json"));
+    const auto house = evaluateScene(loadScene(std::string(viewpipe::build::dataDir) + "/scenes/house.json"));
     EXPECT_EQ(house->stageClaims, (std::vector<std::string>{"", "the identity here: nothing moves",
                                                             "the identity here: nothing moves", "PRP at the origin",
                                                             "DOP along the $z$ axis",
                                                             "sides on $x = \\pm z$, $y = \\pm z$; back at $z = -1$, "
                                                             "front at $z_{\\min} = -0.407$"}));
-    const auto gl = evaluateScene(loadScene(std::string(VIEWPIPE_DATA_DIR) + "/scenes/opengl-perspective.json"));
+    const auto gl = evaluateScene(loadScene(std::string(viewpipe::build::dataDir) + "/scenes/opengl-perspective.json"));
     EXPECT_EQ(gl->stageClaims,
               (std::vector<std::string>{"", "eye at the origin",
                                         "$s, u, -f$ along $x, y, -z$: the eye looks down $-z$; DOP along the $z$ axis",
                                         "sides on $x = \\pm z$, $y = \\pm z$",
                                         "the volume is the cube $-1 \\le x, y, z \\le 1$: near at $z = -1$, far at $z = 1$"}));
     const auto parallel =
-        evaluateScene(loadScene(std::string(VIEWPIPE_DATA_DIR) + "/scenes/house-parallel-oblique.json"));
+        evaluateScene(loadScene(std::string(viewpipe::build::dataDir) + "/scenes/house-parallel-oblique.json"));
     EXPECT_EQ(parallel->stageClaims.back(), "the volume is $-1 \\le x, y \\le 1$, $-1 \\le z \\le 0$");
 }
 

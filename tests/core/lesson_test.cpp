@@ -9,6 +9,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "build_paths.h"
 #include "plain_math.h"
 #include "support.hpp"
 #include "viewpipe/lesson.hpp"
@@ -18,7 +19,7 @@ namespace {
 
 using test::expectRefused;
 
-const std::string kScenes = std::string(VIEWPIPE_DATA_DIR) + "/scenes";
+const std::string kScenes = std::string(viewpipe::build::dataDir) + "/scenes";
 
 Lesson lessonWith(const std::string& step)
 {
@@ -104,7 +105,7 @@ TEST(Lesson, BadLessonsAreRefusedWithTheirFieldPaths)
 TEST(Lesson, TheBuiltInLessonsAreValid)
 {
     int count = 0;
-    for (const auto& entry : std::filesystem::directory_iterator(std::string(VIEWPIPE_DATA_DIR) + "/lessons")) {
+    for (const auto& entry : std::filesystem::directory_iterator(std::string(viewpipe::build::dataDir) + "/lessons")) {
         if (entry.path().extension() != ".json")
             continue;
         ++count;
@@ -153,7 +154,7 @@ TEST(Lesson, ALessonSavedReadsBackTheSame)
     namespace fs = std::filesystem;
     const fs::path elsewhere = fs::temp_directory_path() / ("viewpipe-lesson-elsewhere-" + std::to_string(::getpid()));
     fs::create_directories(elsewhere);
-    for (const auto& entry : fs::directory_iterator(std::string(VIEWPIPE_DATA_DIR) + "/lessons")) {
+    for (const auto& entry : fs::directory_iterator(std::string(viewpipe::build::dataDir) + "/lessons")) {
         const Lesson lesson = loadLesson(entry.path());
         for (const fs::path& folder : {entry.path().parent_path(), elsewhere}) {
             const Lesson again = parseLesson(lessonToJson(lesson, folder), folder);

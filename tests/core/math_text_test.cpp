@@ -3,6 +3,7 @@
 #include <fstream>
 #include <iterator>
 
+#include "build_paths.h"
 #include "viewpipe/error.hpp"
 #include "viewpipe/math_text.hpp"
 
@@ -81,7 +82,7 @@ TEST(MathText, ScriptsAreSetAsTexSetsThem)
 // docs/lesson-format.md lists every command of the subset, so that an author can read what is set.
 TEST(MathText, TheLessonFormatListsTheSubset)
 {
-    std::ifstream in(std::string(VIEWPIPE_DATA_DIR) + "/../docs/lesson-format.md");
+    std::ifstream in(std::string(viewpipe::build::dataDir) + "/../docs/lesson-format.md");
     const std::string doc((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
     ASSERT_FALSE(doc.empty());
     for (const std::string& command : mathSubsetCommands())

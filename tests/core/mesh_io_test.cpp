@@ -1,6 +1,7 @@
 // Mesh files: a cube in every format and encoding, and the hostile inputs
 // that crash VTK 9.1's readers, each refused with its reason.
 
+#include "build_paths.h"
 #include "support.hpp"
 #include "viewpipe/mesh_io.hpp"
 
@@ -14,7 +15,7 @@ namespace {
 
 using test::expectRefused;
 
-const std::filesystem::path kData = VIEWPIPE_DATA_DIR;
+const std::filesystem::path kData = viewpipe::build::dataDir;
 const PolygonMesh kCube = boxMesh({0, 0, 0}, {1, 1, 1});
 
 void refused(std::string_view bytes, MeshFormat format, const std::string& reason)

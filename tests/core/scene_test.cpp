@@ -1,5 +1,6 @@
 // Scene files: the default scene, refusals naming the field path, round trips.
 
+#include "build_paths.h"
 #include "support.hpp"
 #include "viewpipe/scene.hpp"
 
@@ -11,7 +12,7 @@ namespace {
 
 using test::expectRefused;
 
-const std::filesystem::path kData = VIEWPIPE_DATA_DIR;
+const std::filesystem::path kData = viewpipe::build::dataDir;
 
 std::string withView(const std::string& view, const std::string& rest = "")
 {

@@ -36,6 +36,7 @@
 #include <vtkRenderer.h>
 #include <vtkRendererCollection.h>
 
+#include "build_paths.h"
 #include "app_window.h"
 #include "faces_drawn.h"
 #include "files.h"
@@ -54,7 +55,7 @@ using namespace viewpipe::gui;
 
 namespace {
 
-const QString kHouse = QString(VIEWPIPE_DATA_DIR) + "/scenes/house.json";
+const QString kHouse = QString(viewpipe::build::dataDir) + "/scenes/house.json";
 
 QImage worldPicture(MainWindow& window)
 {
@@ -332,7 +333,7 @@ private slots:
     void clickTracesAVertexThroughAProjectiveStage()
     {
         MainWindow& w = *window_;
-        QVERIFY(w.sceneFiles()->openScene(QString(VIEWPIPE_DATA_DIR) + "/scenes/opengl-perspective.json"));
+        QVERIFY(w.sceneFiles()->openScene(QString(viewpipe::build::dataDir) + "/scenes/opengl-perspective.json"));
         const int last = w.stepper()->stageCount();
         w.stepper()->goToStage(last, false);
         const double w4 = (cumulativeAt(w.document()->pipeline().stages, last) * Vec4<double>(16, 10, 54, 1)).w();
@@ -500,7 +501,7 @@ private slots:
     void rasterMatchesVtk()
     {
         const int width = 320, height = 240;
-        Scene scene = loadScene((QString(VIEWPIPE_DATA_DIR) + "/scenes/opengl-perspective.json").toStdString());
+        Scene scene = loadScene((QString(viewpipe::build::dataDir) + "/scenes/opengl-perspective.json").toStdString());
         auto& camera = std::get<gl::Camera<double>>(scene.camera);
         auto& perspective = std::get<gl::Perspective<double>>(camera.projection);
         perspective.aspect = double(width) / height;
@@ -623,7 +624,7 @@ private slots:
     void depthBandsColorTheScene()
     {
         MainWindow& w = *window_;
-        QVERIFY(w.sceneFiles()->openScene(QString(VIEWPIPE_DATA_DIR) + "/scenes/depth-corridor.json"));
+        QVERIFY(w.sceneFiles()->openScene(QString(viewpipe::build::dataDir) + "/scenes/depth-corridor.json"));
         w.showPanel("depth");
         const int banded = bandPixels(w);
         QVERIFY2(banded > 2000, qPrintable(QString::number(banded)));

@@ -17,6 +17,7 @@
 #endif
 #include <memory>
 
+#include "build_paths.h"
 #include "app/ActionRegistry.h"
 #include "app/Autosave.h"
 #include "app/EffectsMenu.h"
@@ -58,7 +59,7 @@ inline void closeWindow(std::unique_ptr<viewpipe::gui::MainWindow>& window)
 // Stops at a scene that does not open or a failed check; returns the number of stages shown.
 inline int showEveryBuiltInStage(viewpipe::gui::MainWindow& window, const std::function<void(const QString& where)>& check)
 {
-    QDirIterator scenes(QString(VIEWPIPE_DATA_DIR) + "/scenes", {"*.json"}, QDir::Files, QDirIterator::Subdirectories);
+    QDirIterator scenes(QString(viewpipe::build::dataDir) + "/scenes", {"*.json"}, QDir::Files, QDirIterator::Subdirectories);
     int shown = 0;
     while (scenes.hasNext()) {
         const QString scene = scenes.next();

@@ -12,6 +12,7 @@
 #include <QPlainTextEdit>
 #include <QPushButton>
 
+#include "build_paths.h"
 #include "app_window.h"
 #include "app/CodePanel.h"
 #include "app/ParameterPanel.h"
@@ -23,7 +24,7 @@ namespace {
 
 QString scenePath(const QString& name)
 {
-    return QString(VIEWPIPE_DATA_DIR) + "/scenes/" + name;
+    return QString(viewpipe::build::dataDir) + "/scenes/" + name;
 }
 
 const gl::Camera<double>& cameraOf(MainWindow& window)

@@ -25,6 +25,7 @@
 #include <QtTest>
 #include <QVTKOpenGLNativeWidget.h>
 
+#include "build_paths.h"
 #include "app/LessonDocument.h"
 #include "app/LessonPanel.h"
 #include "app/MathText.h"
@@ -37,8 +38,8 @@ using namespace viewpipe::gui;
 
 namespace {
 
-const QString kHouse = QString(VIEWPIPE_DATA_DIR) + "/scenes/house.json";
-const QString kFoley = QString(VIEWPIPE_DATA_DIR) + "/lessons/foley-nper.json";
+const QString kHouse = QString(viewpipe::build::dataDir) + "/scenes/house.json";
+const QString kFoley = QString(viewpipe::build::dataDir) + "/lessons/foley-nper.json";
 
 template <class T> T* child(MainWindow& w, const QString& name)
 {
@@ -278,7 +279,7 @@ private slots:
     {
         MainWindow& w = *window_;
         QTemporaryDir folder;
-        const QString scenes = QString(VIEWPIPE_DATA_DIR) + "/scenes/";
+        const QString scenes = QString(viewpipe::build::dataDir) + "/scenes/";
         QFile file(folder.filePath("two-scenes.json"));
         QVERIFY(file.open(QIODevice::WriteOnly));
         file.write(QString(R"({"title": "Two scenes", "steps": [

@@ -34,6 +34,7 @@
 #include <cmath>
 #include <set>
 
+#include "build_paths.h"
 #include "app_window.h"
 #include "drawn_texts.h"
 #include "files.h"
@@ -49,7 +50,7 @@ using namespace viewpipe::gui;
 
 namespace {
 
-const QString kScenes = QString(VIEWPIPE_DATA_DIR) + "/scenes";
+const QString kScenes = QString(viewpipe::build::dataDir) + "/scenes";
 
 // The largest difference of one channel, 0 to 1.
 double difference(const Rgb& a, const Rgb& b)

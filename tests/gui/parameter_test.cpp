@@ -20,6 +20,7 @@
 #include <cstring>
 #include <map>
 
+#include "build_paths.h"
 #include "app_window.h"
 #include "app/MainWindow.h"
 #include "app/ParameterPanel.h"
@@ -33,7 +34,7 @@ using FieldValues = std::map<QString, std::vector<double>>;
 
 QString scenePath(const QString& name)
 {
-    return QString(VIEWPIPE_DATA_DIR) + "/scenes/" + name;
+    return QString(viewpipe::build::dataDir) + "/scenes/" + name;
 }
 
 bool sameBits(double a, double b)

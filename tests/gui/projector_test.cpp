@@ -11,6 +11,7 @@
 #include <vtkRenderWindow.h>
 #include <vtkRendererCollection.h>
 
+#include "build_paths.h"
 #include "app_window.h"
 #include "drawn_texts.h"
 
@@ -18,7 +19,7 @@ using namespace viewpipe::gui;
 
 namespace {
 
-const QString kScenes = QString(VIEWPIPE_DATA_DIR) + "/scenes";
+const QString kScenes = QString(viewpipe::build::dataDir) + "/scenes";
 
 vtkRenderer* renderer(MainWindow& window, const char* view)
 {

@@ -26,6 +26,7 @@
 #include <tuple>
 #include <vector>
 
+#include "build_paths.h"
 #include "files.h"
 
 namespace {
@@ -69,17 +70,17 @@ struct Run {
     QString out, err;
 };
 
-Run viewpipe(const QStringList& arguments, const QProcessEnvironment& environment = QProcessEnvironment::systemEnvironment())
+Run runViewpipe(const QStringList& arguments, const QProcessEnvironment& environment = QProcessEnvironment::systemEnvironment())
 {
     QProcess process;
     process.setProcessEnvironment(environment);
-    process.start(VIEWPIPE_EXE, arguments);
+    process.start(::viewpipe::build::viewpipeExe, arguments);
     if (!process.waitForFinished(300000))
         return {-1, "", "timed out"};
     return {process.exitCode(), process.readAllStandardOutput(), process.readAllStandardError()};
 }
 
-const QString kHouse = QString(VIEWPIPE_DATA_DIR) + "/scenes/house.json";
+const QString kHouse = QString(::viewpipe::build::dataDir) + "/scenes/house.json";
 
 // Pixels that differ from white (the light theme's background) by more than a little.
 constexpr int kDrawn = 40;
@@ -146,9 +147,9 @@ void compareWithBaseline(const QString& file, const QString& name)
     const QImage image(file);
     QVERIFY2(!image.isNull(), qPrintable("cannot read " + file));
     QVERIFY2(contentShare(image) > 0.02, qPrintable(name + " is nearly blank"));
-    const QImage baseline(QString(VIEWPIPE_BASELINE_DIR) + "/" + name);
+    const QImage baseline(QString(::viewpipe::build::baselineDir) + "/" + name);
     if (baseline.isNull()) {
-        const QString fresh = QString(VIEWPIPE_NEW_BASELINE_DIR) + "/" + name;
+        const QString fresh = QString(::viewpipe::build::newBaselineDir) + "/" + name;
         QDir().mkpath(QFileInfo(fresh).path());
         QFile::remove(fresh);
         QFile::copy(file, fresh);
@@ -192,7 +193,7 @@ private slots:
         QFETCH(int, stage);
         QTemporaryDir dir;
         const QString shot = dir.filePath("shot.png");
-        const Run r = viewpipe({"open", kHouse, "--stage", QString::number(stage), "--screenshot", shot, "--size",
+        const Run r = runViewpipe({"open", kHouse, "--stage", QString::number(stage), "--screenshot", shot, "--size",
                                 "1280x800"});
         QVERIFY2(r.exitCode == 0, qPrintable(r.err));
         QCOMPARE(QImage(shot).size(), QSize(1280, 800));
@@ -205,7 +206,7 @@ private slots:
     {
         QTemporaryDir dir;
         const QString out = dir.filePath("slides");
-        const Run r = viewpipe({"export", kHouse, "--out", out, "--quiet"});
+        const Run r = runViewpipe({"export", kHouse, "--out", out, "--quiet"});
         QVERIFY2(r.exitCode == 0, qPrintable(r.err));
         const QStringList expected = {"00-world.png", "01-t-vrp.png", "02-r.png",     "03-t-prp.png",
                                       "04-sh-per.png", "05-s-per.png", "matrices.json", "matrices.tex"};
@@ -215,7 +216,7 @@ private slots:
             compareWithBaseline(out + "/" + name, "export/house-" + name);
         }
         // matrices.json is the same object as `pipeline --json`.
-        const Run json = viewpipe({"pipeline", kHouse, "--json"});
+        const Run json = runViewpipe({"pipeline", kHouse, "--json"});
         QCOMPARE(QJsonDocument::fromJson(readAll(out + "/matrices.json").toUtf8()),
                  QJsonDocument::fromJson(json.out.toUtf8()));
     }
@@ -227,14 +228,14 @@ private slots:
     void exportDrawsEffects()
     {
         QTemporaryDir dir;
-        const QString corridor = QString(VIEWPIPE_DATA_DIR) + "/scenes/depth-corridor.json";
+        const QString corridor = QString(::viewpipe::build::dataDir) + "/scenes/depth-corridor.json";
         QJsonObject plain = QJsonDocument::fromJson(readAll(corridor).toUtf8()).object();
         plain.remove("effects");
         const QString plainScene = dir.filePath("plain.json");
         QVERIFY(writeFile(plainScene, QJsonDocument(plain).toJson()));
-        Run r = viewpipe({"export", corridor, "--out", dir.filePath("effects"), "--stages", "4", "--quiet"});
+        Run r = runViewpipe({"export", corridor, "--out", dir.filePath("effects"), "--stages", "4", "--quiet"});
         QVERIFY2(r.exitCode == 0, qPrintable(r.err));
-        r = viewpipe({"export", plainScene, "--out", dir.filePath("plain"), "--stages", "4", "--quiet"});
+        r = runViewpipe({"export", plainScene, "--out", dir.filePath("plain"), "--stages", "4", "--quiet"});
         QVERIFY2(r.exitCode == 0, qPrintable(r.err));
         QCOMPARE(QDir(dir.filePath("effects")).entryList(QDir::Files, QDir::Name),
                  QStringList({"04-p-depth.png", "depth-resolution.png", "matrices.json", "matrices.tex"}));
@@ -262,12 +263,12 @@ private slots:
     void exportWritesVectorFormats()
     {
         QTemporaryDir dir;
-        const QString glPerspective = QString(VIEWPIPE_DATA_DIR) + "/scenes/opengl-perspective.json";
+        const QString glPerspective = QString(::viewpipe::build::dataDir) + "/scenes/opengl-perspective.json";
         for (const auto& [scene, stage, name] : {std::tuple{kHouse, QString("0"), QString("00-world")},
                                                  std::tuple{kHouse, QString("4"), QString("04-sh-per")},
                                                  std::tuple{glPerspective, QString("4"), QString("04-p-depth")}}) {
             const QString out = dir.filePath(name);
-            const Run r = viewpipe({"export", scene, "--out", out, "--stages", stage, "--format", "png,svg,pdf", "--quiet"});
+            const Run r = runViewpipe({"export", scene, "--out", out, "--stages", stage, "--format", "png,svg,pdf", "--quiet"});
             QVERIFY2(r.exitCode == 0, qPrintable(r.err));
             const QImage png(out + "/" + name + ".png");
             QVERIFY(!png.isNull());
@@ -326,7 +327,7 @@ private slots:
     {
         QTemporaryDir dir;
         const QString out = dir.filePath("tikz");
-        const Run r = viewpipe({"export", kHouse, "--out", out, "--stages", "0,5", "--format", "tikz", "--quiet"});
+        const Run r = runViewpipe({"export", kHouse, "--out", out, "--stages", "0,5", "--format", "tikz", "--quiet"});
         QVERIFY2(r.exitCode == 0, qPrintable(r.err));
         const QString world = readAll(out + "/00-world-tikz.tex");
         QVERIFY(world.contains("\\definecolor{vpDOP}") && world.contains("vp DOP/.style="));
@@ -339,8 +340,8 @@ private slots:
         // The README's Beamer example, as it says to make it.
         const QString slides = dir.filePath("slides");
         QVERIFY(QDir().mkpath(slides));
-        QVERIFY(QFile::copy(QString(VIEWPIPE_SOURCE_DIR) + "/docs/examples/beamer.tex", slides + "/beamer.tex"));
-        const Run figures = viewpipe({"export", kHouse, "--out", slides + "/figures", "--stages", "4", "--format", "tikz",
+        QVERIFY(QFile::copy(QString(::viewpipe::build::sourceDir) + "/docs/examples/beamer.tex", slides + "/beamer.tex"));
+        const Run figures = runViewpipe({"export", kHouse, "--out", slides + "/figures", "--stages", "4", "--format", "tikz",
                                       "--size", "800x450", "--quiet"});
         QVERIFY2(figures.exitCode == 0, qPrintable(figures.err));
         QVERIFY(compilesWithPdflatex(slides, "beamer.tex"));
@@ -353,7 +354,7 @@ private slots:
         const QString scene = writeScene(dir, "ortho.json", R"({"camera": {"look_at": {"eye": [0, 0, 0],
             "center": [0, 0, -1], "up": [0, 1, 0]}, "projection": {"type": "ortho", "left": -20, "right": 30,
             "bottom": 10, "top": 50, "near": 15, "far": -25}}})");
-        const Run r = viewpipe({"export", scene, "--out", dir.filePath("out"), "--stages", "0", "--quiet"});
+        const Run r = runViewpipe({"export", scene, "--out", dir.filePath("out"), "--stages", "0", "--quiet"});
         QVERIFY2(r.exitCode == 0, qPrintable(r.err));
         const QString tex = readAll(dir.filePath("out/matrices.tex"));
         const QString projection = tex.mid(tex.indexOf("P =\n\\begin{bmatrix}"));
@@ -365,7 +366,7 @@ private slots:
         const QString oblique = writeScene(dir, "oblique.json", R"({"view": {"projection": "parallel",
             "vrp": [0, 0, 0], "vpn": [1, 0, 1], "vup": [0, 1, 0], "prp": [0, 0, 10], "window": [-1, 1, -1, 1],
             "front": 1, "back": -1}})");
-        QVERIFY(viewpipe({"export", oblique, "--out", dir.filePath("oblique"), "--stages", "0", "--quiet"}).exitCode == 0);
+        QVERIFY(runViewpipe({"export", oblique, "--out", dir.filePath("oblique"), "--stages", "0", "--quiet"}).exitCode == 0);
         const QString rotation = readAll(dir.filePath("oblique/matrices.tex"));
         QVERIFY2(rotation.contains("0.7071 & 0 & -0.7071 & 0"), qPrintable(rotation));
 
@@ -379,7 +380,7 @@ private slots:
     void exportAnimates()
     {
         QTemporaryDir dir;
-        const Run r = viewpipe({"export", kHouse, "--out", dir.filePath("a"), "--stages", "5", "--animate", "--fps",
+        const Run r = runViewpipe({"export", kHouse, "--out", dir.filePath("a"), "--stages", "5", "--animate", "--fps",
                                 "4", "--size", "320x180", "--quiet"});
         QVERIFY2(r.exitCode == 0, qPrintable(r.err));
         QFile video(dir.filePath("a/animation.mp4"));
@@ -394,7 +395,7 @@ private slots:
         QTemporaryDir dir;
         QProcessEnvironment environment = QProcessEnvironment::systemEnvironment();
         environment.remove("DISPLAY");
-        const Run r = viewpipe({"export", kHouse, "--out", dir.filePath("headless"), "--stages", "1", "--quiet"},
+        const Run r = runViewpipe({"export", kHouse, "--out", dir.filePath("headless"), "--stages", "1", "--quiet"},
                                environment);
         QVERIFY2(r.exitCode == 0, qPrintable(r.err));
         QVERIFY(contentShare(QImage(dir.filePath("headless/01-t-vrp.png"))) > 0.02);
@@ -406,7 +407,7 @@ private slots:
     {
         QTemporaryDir dir;
         const QString file = dir.filePath("sheet.png");
-        const Run r = viewpipe({"sheet", kHouse, "--out", file, "--size", "800x600"});
+        const Run r = runViewpipe({"sheet", kHouse, "--out", file, "--size", "800x600"});
         QVERIFY2(r.exitCode == 0, qPrintable(r.err));
         const QImage sheet(file);
         QCOMPARE(sheet.size(), QSize(800, 600));
@@ -429,7 +430,7 @@ private slots:
     {
         QTemporaryDir dir;
         // Bad options: exit 2, nothing created.
-        Run r = viewpipe({"export", kHouse, "--out", dir.filePath("bad"), "--format", "png,bmp"});
+        Run r = runViewpipe({"export", kHouse, "--out", dir.filePath("bad"), "--format", "png,bmp"});
         QCOMPARE(r.exitCode, 2);
         QVERIFY(r.err.contains("--format: unknown format \"bmp\""));
         QVERIFY(!QDir(dir.filePath("bad")).exists());
@@ -439,7 +440,7 @@ private slots:
         QDir().mkpath(out);
         QVERIFY(writeFile(out + "/00-world.png", "previous"));
         QProcess process;
-        process.start(VIEWPIPE_EXE, {"export", kHouse, "--out", out, "--animate", "--quiet"});
+        process.start(::viewpipe::build::viewpipeExe, {"export", kHouse, "--out", out, "--animate", "--quiet"});
         QVERIFY(process.waitForStarted());
         QTest::qWait(2500);
         ::kill(pid_t(process.processId()), SIGINT);
@@ -456,8 +457,8 @@ private slots:
     void lessonHandoutAndSlides()
     {
         QTemporaryDir out;
-        const QString lessonPath = QString(VIEWPIPE_DATA_DIR) + "/lessons/foley-nper.json";
-        const Run run = viewpipe({"lesson", "export", lessonPath, "--out", out.path(), "--format", "pdf"});
+        const QString lessonPath = QString(::viewpipe::build::dataDir) + "/lessons/foley-nper.json";
+        const Run run = runViewpipe({"lesson", "export", lessonPath, "--out", out.path(), "--format", "pdf"});
         QCOMPARE(run.exitCode, 0);
         QCOMPARE(run.out, out.path() + "/handout.pdf\n" + out.path() + "/slides.pdf\n");
         QCOMPARE(QDir(out.path()).entryList(QDir::Files | QDir::Hidden | QDir::AllDirs | QDir::NoDotAndDotDot),
@@ -518,14 +519,14 @@ private slots:
         QVERIFY2(contentShare(picture) > 0.05, qPrintable(QString::number(contentShare(picture))));
 
         // A bad format is refused before anything is made.
-        const Run bad = viewpipe({"lesson", "export", lessonPath, "--out", out.path() + "/none", "--format", "docx"});
+        const Run bad = runViewpipe({"lesson", "export", lessonPath, "--out", out.path() + "/none", "--format", "docx"});
         QCOMPARE(bad.exitCode, 2);
         QVERIFY2(bad.err.contains("--format: must be html or pdf"), qPrintable(bad.err));
         QVERIFY(!QDir(out.path() + "/none").exists());
 
         // Math outside the subset is refused as the lesson is read, naming its field (so a file outside the
         // lesson is never read through \\input); text pdflatex still cannot set is bad input, named by its step.
-        const QString house = QString(VIEWPIPE_DATA_DIR) + "/scenes/house.json";
+        const QString house = QString(::viewpipe::build::dataDir) + "/scenes/house.json";
         for (const auto& [caption, reason] : {std::pair<QString, QString>{"$\\\\nosuchmacro$", "steps[1].caption: has math with \\nosuchmacro"},
                                               {"$\\\\input{/etc/hostname}$", "steps[1].caption: has math with \\input"},
                                               {"Ω", "steps[1]: pdflatex cannot set its text:"}}) {
@@ -535,7 +536,7 @@ private slots:
             file.write(QString(R"({"title": "t", "steps": [{"scene": "%1", "caption": "fine"},
                                   {"scene": "%1", "caption": "%2"}]})").arg(house, caption).toUtf8());
             file.close();
-            const Run refused = viewpipe({"lesson", "export", broken, "--out", out.path() + "/none", "--format", "pdf", "--quiet"});
+            const Run refused = runViewpipe({"lesson", "export", broken, "--out", out.path() + "/none", "--format", "pdf", "--quiet"});
             QCOMPARE(refused.exitCode, 2);
             QVERIFY2(refused.err.contains(broken + ": " + reason), qPrintable(refused.err));
             QVERIFY(!QDir(out.path() + "/none").exists());

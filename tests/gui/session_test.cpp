@@ -25,6 +25,7 @@
 
 #include <csignal>
 
+#include "build_paths.h"
 #include "app/MathText.h"
 #include "app_window.h"
 #include "files.h"
@@ -39,8 +40,8 @@ using namespace viewpipe::gui;
 
 namespace {
 
-const QString kHouse = QString(VIEWPIPE_DATA_DIR) + "/scenes/house.json";
-const QString kCorridor = QString(VIEWPIPE_DATA_DIR) + "/scenes/depth-corridor.json";
+const QString kHouse = QString(viewpipe::build::dataDir) + "/scenes/house.json";
+const QString kCorridor = QString(viewpipe::build::dataDir) + "/scenes/depth-corridor.json";
 
 QAction* actionNamed(QWidget& window, const QString& text)
 {
@@ -162,7 +163,7 @@ private slots:
     void everyPresetAfterAnother()
     {
         MainWindow& w = *window_;
-        QDirIterator files(QString(VIEWPIPE_DATA_DIR) + "/scenes", {"*.json"}, QDir::Files,
+        QDirIterator files(QString(viewpipe::build::dataDir) + "/scenes", {"*.json"}, QDir::Files,
                            QDirIterator::Subdirectories);
         int opened = 0;
         while (files.hasNext()) {

@@ -9,6 +9,7 @@
 #include <random>
 #include <regex>
 
+#include "build_paths.h"
 #include "viewpipe/animation.hpp"
 #include "viewpipe/report/figure.hpp"
 #include "viewpipe/report/style.hpp"
@@ -137,7 +138,7 @@ Vec2<double> textMeasure(const std::string& text, double pixels, bool bold)
 // than at 100 %.
 TEST(PictureLayout, TextFitsApartAtEverySizeAndScale)
 {
-    const auto scene = evaluateScene(loadScene(fs::path(VIEWPIPE_DATA_DIR) / "scenes/house.json"));
+    const auto scene = evaluateScene(loadScene(fs::path(viewpipe::build::dataDir) / "scenes/house.json"));
     const std::string caption = "5. S_per - scale so that the view volume becomes the canonical perspective volume\n"
                                 "sides on x = \u00b1z, y = \u00b1z; back at z = -1, front at z_min = -0.407 (framed anew: this stage changes sizes)";
     for (const auto& [width, height] : {std::pair{1280, 720}, std::pair{800, 450}, std::pair{640, 360}, std::pair{1920, 1080}})
@@ -174,7 +175,7 @@ TEST(PictureLayout, TextFitsApartAtEverySizeAndScale)
 // A legend that would leave the stage too little room is left out; the caption shrinks to 100 % first.
 TEST(PictureLayout, LegendLeftOutWhereItLeavesTheStageNoRoom)
 {
-    const auto scene = evaluateScene(loadScene(fs::path(VIEWPIPE_DATA_DIR) / "scenes/house.json"));
+    const auto scene = evaluateScene(loadScene(fs::path(viewpipe::build::dataDir) / "scenes/house.json"));
     PictureText text;
     text.fontSize = 40;
     text.minFontSize = 20;
@@ -190,7 +191,7 @@ TEST(PictureLayout, LegendLeftOutWhereItLeavesTheStageNoRoom)
 // Labels that find no room are counted in a corner note, which no label covers; none is led across a reserved box.
 TEST(Figure, LeftOutLabelsAreCountedAndLeadersKeepOffReservedBoxes)
 {
-    const auto scene = evaluateScene(loadScene(fs::path(VIEWPIPE_DATA_DIR) / "scenes/house.json"));
+    const auto scene = evaluateScene(loadScene(fs::path(viewpipe::build::dataDir) / "scenes/house.json"));
     const auto& stages = scene->pipeline.stages;
     const StageShown stage(*scene, drawnAt(stages, double(stages.size())), 1);
     FigureView view = viewOf(stage);
@@ -244,7 +245,7 @@ TEST(Figure, EveryBuiltInSceneAtEveryStageHasNoOverlappingLabels)
     int figures = 0;
     std::size_t labels = 0;
     const Box2 title{Vec2<double>(25, 28), Vec2<double>(700, 52)};
-    for (const auto& entry : fs::recursive_directory_iterator(fs::path(VIEWPIPE_DATA_DIR) / "scenes")) {
+    for (const auto& entry : fs::recursive_directory_iterator(fs::path(viewpipe::build::dataDir) / "scenes")) {
         if (entry.path().extension() != ".json")
             continue;
         const auto scene = evaluateScene(loadScene(entry.path()));
@@ -276,7 +277,7 @@ TEST(Figure, EveryBuiltInSceneAtEveryStageHasNoOverlappingLabels)
 // The house at the world stage: a label's anchor is where the camera sees its point.
 TEST(Figure, LabelsAnchorWhereTheirPointsAreSeen)
 {
-    const auto scene = evaluateScene(loadScene(fs::path(VIEWPIPE_DATA_DIR) / "scenes/house.json"));
+    const auto scene = evaluateScene(loadScene(fs::path(viewpipe::build::dataDir) / "scenes/house.json"));
     const StageShown stage(*scene, Mat4<double>::Identity(), 0);
     const FigureView view = viewOf(stage);
     const Figure figure = drawFigure(stage, view, measure, {});
@@ -295,7 +296,7 @@ TEST(Figure, LabelsAnchorWhereTheirPointsAreSeen)
 // faint, where they were a stage before; not after the identity or a shear.
 TEST(Figure, TranslationsShowWhereThingsWere)
 {
-    const auto scene = evaluateScene(loadScene(fs::path(VIEWPIPE_DATA_DIR) / "scenes/house.json"));
+    const auto scene = evaluateScene(loadScene(fs::path(viewpipe::build::dataDir) / "scenes/house.json"));
     const auto& stages = scene->pipeline.stages;
     EXPECT_FALSE(ghostAt(stages, 1)); // T(-VRP) is the identity here: VRP is the origin
     EXPECT_FALSE(ghostAt(stages, 4)); // SH_per changes shapes
@@ -335,7 +336,7 @@ TEST(Tikz, LabelsAreTheirMathAndEscapedText)
 
 TEST(Tikz, OneCommandPerShapeAndLabelWithNamedStyles)
 {
-    const auto scene = evaluateScene(loadScene(fs::path(VIEWPIPE_DATA_DIR) / "scenes/house.json"));
+    const auto scene = evaluateScene(loadScene(fs::path(viewpipe::build::dataDir) / "scenes/house.json"));
     const StageShown stage(*scene, Mat4<double>::Identity(), 0);
     const Figure figure = drawFigure(stage, viewOf(stage), measure, {});
     const std::string tex = tikzFigure(figure, Theme::Light);
@@ -360,7 +361,7 @@ TEST(Tikz, OneCommandPerShapeAndLabelWithNamedStyles)
 // numbers at least 6 pt, whatever the picture's size in pixels.
 TEST(Tikz, TextAtLeastEightAndSixPointsTwelveCentimetresWide)
 {
-    const auto scene = evaluateScene(loadScene(fs::path(VIEWPIPE_DATA_DIR) / "scenes/house.json"));
+    const auto scene = evaluateScene(loadScene(fs::path(viewpipe::build::dataDir) / "scenes/house.json"));
     const StageShown stage(*scene, Mat4<double>::Identity(), 0);
     for (const auto& [width, height] : {std::pair{1280, 720}, std::pair{800, 450}, std::pair{640, 360}}) {
         SCOPED_TRACE(std::to_string(width) + "x" + std::to_string(height));

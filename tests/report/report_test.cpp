@@ -15,6 +15,7 @@
 
 #include <unistd.h>
 
+#include "build_paths.h"
 #include "viewpipe/format.hpp"
 #include "viewpipe/report/bench.hpp"
 #include "viewpipe/report/latex.hpp"
@@ -27,7 +28,7 @@ namespace {
 
 using Json = nlohmann::json;
 
-const std::filesystem::path kScenes = std::filesystem::path(VIEWPIPE_DATA_DIR) / "scenes";
+const std::filesystem::path kScenes = std::filesystem::path(viewpipe::build::dataDir) / "scenes";
 
 Scene sceneFrom(const std::string& json)
 {
@@ -292,7 +293,7 @@ TEST(Format, ShortestRoundTrip)
 // width, about 11 pt across A4's text, and were 6 pt at 0.55 of it (a defect found by a reader).
 TEST(LessonLatex, HandoutFiguresAreAsWideAsTheText)
 {
-    const Lesson lesson = loadLesson(std::string(VIEWPIPE_DATA_DIR) + "/lessons/foley-nper.json");
+    const Lesson lesson = loadLesson(std::string(viewpipe::build::dataDir) + "/lessons/foley-nper.json");
     std::vector<LessonFigures> figures;
     for (std::size_t k = 0; k < lesson.steps.size(); ++k)
         figures.push_back({"step-" + std::to_string(k) + "-asking.pdf", "step-" + std::to_string(k) + ".pdf"});

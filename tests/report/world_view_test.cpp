@@ -9,6 +9,7 @@
 #include <cmath>
 #include <filesystem>
 
+#include "build_paths.h"
 #include "viewpipe/animation.hpp"
 #include "viewpipe/gl.hpp"
 #include "viewpipe/report/world_view.hpp"
@@ -20,7 +21,7 @@ namespace fs = std::filesystem;
 
 std::shared_ptr<const EvaluatedScene> builtIn(const std::string& name)
 {
-    return evaluateScene(loadScene(fs::path(VIEWPIPE_DATA_DIR) / "scenes" / name));
+    return evaluateScene(loadScene(fs::path(viewpipe::build::dataDir) / "scenes" / name));
 }
 
 double relativeError(const Mat4<double>& a, const Mat4<double>& b)

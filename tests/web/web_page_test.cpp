@@ -32,6 +32,8 @@
 #include <thread>
 #include <vector>
 
+#include "build_paths.h"
+
 extern char** environ;
 
 namespace {
@@ -39,7 +41,7 @@ namespace {
 namespace fs = std::filesystem;
 using nlohmann::json;
 
-const std::string kData = VIEWPIPE_DATA_DIR;
+const std::string kData = viewpipe::build::dataDir;
 constexpr int kWidth = 960, kHeight = 540; // the export's picture and the browser's window
 
 struct Finished {
@@ -51,7 +53,7 @@ Finished viewpipe(const QStringList& arguments)
 {
     QProcess process;
     process.setProcessChannelMode(QProcess::MergedChannels);
-    process.start(VIEWPIPE_EXE, arguments);
+    process.start(viewpipe::build::viewpipeExe, arguments);
     const bool finished = process.waitForFinished(600000);
     const bool ran = finished && process.error() == QProcess::UnknownError && process.exitStatus() == QProcess::NormalExit;
     return {ran ? process.exitCode() : -1, process.readAll().toStdString() + (ran ? "" : "\n(did not run to its end: " +
