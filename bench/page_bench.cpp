@@ -35,7 +35,7 @@ void nativeEvaluate(benchmark::State& state)
     const WebViewOptions options; // the page's: 1280 x 720, 20-pixel labels
     for (auto _ : state) {
         const auto evaluated = evaluateScene(parseScene(text.str(), std::string(viewpipe::build::dataDir) + "/scenes"));
-        const std::string pipeline = cli::pipelineJson(evaluated->scene, cli::PrecisionChoice{}, evaluated->outcomes).dump();
+        const std::string pipeline = report::pipelineJson(evaluated->scene, report::PrecisionChoice{}, evaluated->outcomes).dump();
         const std::string page = webPageData(*evaluated, webPageViews(*evaluated, options, fixedWidth));
         benchmark::DoNotOptimize(pipeline.size() + page.size());
     }

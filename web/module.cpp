@@ -71,8 +71,8 @@ Outcome putFile(const std::string& path, const std::string& bytes)
 
 std::string pipelineText(const EvaluatedScene& evaluated)
 {
-    const cli::PrecisionChoice precision; // double, as the CLI's default
-    return cli::pipelineJson(evaluated.scene, precision, evaluated.outcomes).dump();
+    const report::PrecisionChoice precision; // double, as the CLI's default
+    return report::pipelineJson(evaluated.scene, precision, evaluated.outcomes).dump();
 }
 
 // What `viewpipe pipeline SCENE --json` prints for a scene's JSON.

@@ -5,7 +5,7 @@
 
 #include "viewpipe/format.hpp"
 
-namespace viewpipe::cli {
+namespace viewpipe {
 namespace {
 
 using Clock = std::chrono::steady_clock;
@@ -149,4 +149,4 @@ BenchResult runBench(const Scene& scene, const std::vector<Vec3<double>>& sceneV
     return result;
 }
 
-} // namespace viewpipe::cli
+} // namespace viewpipe

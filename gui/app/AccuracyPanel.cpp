@@ -96,11 +96,11 @@ void AccuracyPanel::measure(const EvaluatedScene& evaluated, std::size_t vertice
     const std::vector<Vec3<double>> objectPoints = evaluated.objectVertices();
     // The worker owns copies of everything it reads; results come back queued.
     worker_ = std::thread([this, scene, objectPoints, vertices, cancel = cancel_] {
-        cli::BenchOptions options;
+        BenchOptions options;
         options.vertices = vertices;
-        auto result = std::make_shared<cli::BenchResult>();
+        auto result = std::make_shared<BenchResult>();
         try {
-            *result = cli::runBench(scene, objectPoints, options, [this, cancel](int done, int, const std::string& tier) {
+            *result = runBench(scene, objectPoints, options, [this, cancel](int done, int, const std::string& tier) {
                 if (*cancel)
                     return false;
                 QMetaObject::invokeMethod(this, [this, done, tier, cancel] {
@@ -131,30 +131,30 @@ void AccuracyPanel::measure(const EvaluatedScene& evaluated, std::size_t vertice
     });
 }
 
-void AccuracyPanel::finish(const std::variant<cli::BenchResult, QString>& outcome)
+void AccuracyPanel::finish(const std::variant<BenchResult, QString>& outcome)
 {
     if (worker_.joinable())
         worker_.join();
     running_ = false;
     button_->setEnabled(true);
     progress_->hide();
-    if (const auto* result = std::get_if<cli::BenchResult>(&outcome))
+    if (const auto* result = std::get_if<BenchResult>(&outcome))
         showResult(*result);
     else
         status_->setText(std::get<QString>(outcome));
     emit finished();
 }
 
-void AccuracyPanel::showResult(cli::BenchResult result)
+void AccuracyPanel::showResult(BenchResult result)
 {
-    last_ = std::make_unique<cli::BenchResult>(std::move(result));
+    last_ = std::make_unique<BenchResult>(std::move(result));
     drawResult();
 }
 
 // Redraws the kept result (also on a theme change, which must not replace it while reading it).
 void AccuracyPanel::drawResult()
 {
-    const cli::BenchResult& result = *last_;
+    const BenchResult& result = *last_;
     status_->setText(tr("Reference: %1. %2 vertices timed; absolute errors, with units of each type's epsilon "
                         "in brackets; pixels at %3×%4.")
                          .arg(QString::fromStdString(result.reference))
@@ -163,8 +163,8 @@ void AccuracyPanel::drawResult()
                          .arg(result.viewport.height));
     table_->setRowCount(int(result.rows.size()));
     for (int i = 0; i < int(result.rows.size()); ++i) {
-        const cli::BenchRow& r = result.rows[std::size_t(i)];
-        auto withEps = [&r](double x) { return cli::errorCell(x, r.epsilon); };
+        const BenchRow& r = result.rows[std::size_t(i)];
+        auto withEps = [&r](double x) { return report::errorCell(x, r.epsilon); };
         const std::vector<std::string> cells = {r.precision,
                                                 std::to_string(r.bits),
                                                 formatSignificant(r.buildNs, 3),

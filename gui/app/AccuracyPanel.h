@@ -45,9 +45,9 @@ signals:
     void finished();
 
 private:
-    void showResult(cli::BenchResult result);
+    void showResult(BenchResult result);
     // Ends a measurement: shows its result, or says why it failed (the previous results stay).
-    void finish(const std::variant<cli::BenchResult, QString>& outcome);
+    void finish(const std::variant<BenchResult, QString>& outcome);
     void drawResult();
     void stop();
 
@@ -62,7 +62,7 @@ private:
     std::shared_ptr<std::atomic<bool>> cancel_;
     bool running_ = false;
     Theme theme_ = Theme::Dark;
-    std::unique_ptr<cli::BenchResult> last_;
+    std::unique_ptr<BenchResult> last_;
     std::function<std::shared_ptr<const EvaluatedScene>()> sceneSource_;
 
 public:

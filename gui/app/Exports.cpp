@@ -134,7 +134,7 @@ void Exports::copyMatrixAsLatex()
     }
     const Scene& scene = window_->document()->scene();
     const int stage = window_->stepper()->stage();
-    const std::string latex = stage == 0 ? cli::matricesLatex(scene, 4) : cli::stageLatex(scene, stage, 4);
+    const std::string latex = stage == 0 ? report::matricesLatex(scene, 4) : report::stageLatex(scene, stage, 4);
     QApplication::clipboard()->setText(QString::fromStdString(latex));
     window_->statusBar()->showMessage(tr("Copied the matrix as LaTeX"), 4000);
 }

@@ -21,21 +21,21 @@ int runBench(const BenchCommandOptions& options, const BenchPlotWriter& writePlo
     return guarded(options.scene.empty() ? std::string("viewpipe bench") : options.scene, "viewpipe bench", [&] {
         const std::string file = options.scene.empty() ? scenesDirectory() + "/house.json" : options.scene;
         const Scene scene = loadScene(file);
-        cli::BenchOptions o;
+        BenchOptions o;
         o.vertices = options.vertices;
         o.mpfrBits = options.bits;
         if (!options.viewport.empty())
             std::tie(o.viewport.width, o.viewport.height) = parseSize(options.viewport, "--viewport");
-        const cli::BenchResult result = cli::runBench(
+        const BenchResult result = runBench(
             scene, evaluateScene(scene)->objectVertices(), o, [&](int done, int total, const std::string& tier) {
                 if (!options.json && !tier.empty())
                     std::cerr << "[" << done + 1 << "/" << total << "] timing and measuring " << tier << "\n";
                 return true;
             });
         if (options.json)
-            std::cout << cli::benchJson(result).dump() << "\n";
+            std::cout << report::benchJson(result).dump() << "\n";
         else
-            cli::printBench(std::cout, result);
+            report::printBench(std::cout, result);
         if (!options.plot.empty()) {
             writePlot(result, options.plot);
             if (!options.json)

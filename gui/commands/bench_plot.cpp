@@ -6,7 +6,7 @@
 
 namespace viewpipe::commands {
 
-void writeBenchPlot(const cli::BenchResult& result, const std::string& file)
+void writeBenchPlot(const BenchResult& result, const std::string& file)
 {
     const gui::VirtualDisplay display;
     gui::writeAccuracyPlot(result, file, Theme::Light);

@@ -17,9 +17,9 @@ int runClassify(const ClassifyOptions& options)
     return guarded(options.scene, "viewpipe: internal error", [&] {
         const Scene scene = loadScene(options.scene);
         if (options.json)
-            std::cout << cli::classifyJson(scene).dump() << "\n";
+            std::cout << report::classifyJson(scene).dump() << "\n";
         else
-            cli::printClassification(std::cout, scene);
+            report::printClassification(std::cout, scene);
         return 0;
     });
 }

@@ -18,6 +18,6 @@ void addSheetCommand(CLI::App& app);
 void addLessonCommand(CLI::App& app);
 
 // `bench --plot`: the error-against-time chart as a PNG, on a virtual display if there is none.
-void writeBenchPlot(const cli::BenchResult& result, const std::string& file);
+void writeBenchPlot(const BenchResult& result, const std::string& file);
 
 } // namespace viewpipe::commands

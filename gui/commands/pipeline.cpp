@@ -18,12 +18,12 @@ int runPipeline(const PipelineOptions& options)
 {
     return guarded(options.scene, "viewpipe: internal error", [&] {
         const Scene scene = loadScene(options.scene);
-        const cli::PrecisionChoice precision = cli::parsePrecision(options.precision.precision, options.precision.bits);
+        const report::PrecisionChoice precision = report::parsePrecision(options.precision.precision, options.precision.bits);
         const EffectOutcomes outcomes = evaluateScene(scene)->outcomes;
         if (options.json)
-            std::cout << cli::pipelineJson(scene, precision, outcomes).dump() << "\n";
+            std::cout << report::pipelineJson(scene, precision, outcomes).dump() << "\n";
         else
-            cli::printPipeline(std::cout, scene, precision, outcomes);
+            report::printPipeline(std::cout, scene, precision, outcomes);
         return 0;
     });
 }

@@ -21,7 +21,7 @@ void addConvertCommand(CLI::App& app);
 void addCodeCommand(CLI::App& app);
 
 // `bench --plot FILE` draws through `writePlot`, given by the drawing commands.
-using BenchPlotWriter = std::function<void(const cli::BenchResult& result, const std::string& file)>;
+using BenchPlotWriter = std::function<void(const BenchResult& result, const std::string& file)>;
 void addBenchCommand(CLI::App& app, BenchPlotWriter writePlot);
 
 } // namespace viewpipe::commands

@@ -21,24 +21,24 @@ int runTrace(const TraceOptions& options)
 {
     return guarded(options.scene, "viewpipe: internal error", [&] {
         const Scene scene = loadScene(options.scene);
-        const cli::PrecisionChoice precision = cli::parsePrecision(options.precision.precision, options.precision.bits);
+        const report::PrecisionChoice precision = report::parsePrecision(options.precision.precision, options.precision.bits);
         const Vec3<double> point(options.point[0], options.point[1], options.point[2]);
         if (!point.allFinite())
             throw InputError("--point", "must be three finite numbers");
         if (options.apiGiven) {
-            if (precision.type != cli::Precision::Double)
+            if (precision.type != report::Precision::Double)
                 throw InputError("--precision", "the --api table is computed in double precision");
             const auto [width, height] = parseSize(options.viewport, "--viewport");
             if (options.json)
-                std::cout << cli::apiTraceJson(scene, point, options.api, width, height).dump() << "\n";
+                std::cout << report::apiTraceJson(scene, point, options.api, width, height).dump() << "\n";
             else
-                cli::printApiTrace(std::cout, scene, point, options.api, width, height);
+                report::printApiTrace(std::cout, scene, point, options.api, width, height);
             return 0;
         }
         if (options.json)
-            std::cout << cli::traceJson(scene, point, precision).dump() << "\n";
+            std::cout << report::traceJson(scene, point, precision).dump() << "\n";
         else
-            cli::printTrace(std::cout, scene, point, precision);
+            report::printTrace(std::cout, scene, point, precision);
         return 0;
     });
 }

@@ -28,7 +28,7 @@ const int kMarkers[] = {vtkPlotPoints::CIRCLE, vtkPlotPoints::SQUARE, vtkPlotPoi
 
 // `narrow`: a panel beside the views, where the legend and the labels take
 // room from the plot.
-void addPanel(vtkChartXY* chart, const cli::BenchResult& result, bool vertices, Theme theme, bool narrow)
+void addPanel(vtkChartXY* chart, const BenchResult& result, bool vertices, Theme theme, bool narrow)
 {
     styleChart(chart, vertices ? "Pushing vertices" : "Building N", theme);
     // Each chart lays out its own axes' titles and labels inside its cell,
@@ -39,7 +39,7 @@ void addPanel(vtkChartXY* chart, const cli::BenchResult& result, bool vertices, 
     chart->GetLegend()->SetHorizontalAlignment(vtkChartLegend::RIGHT);
     chart->GetLegend()->SetVerticalAlignment(vtkChartLegend::TOP);
     for (std::size_t i = 0; i < result.rows.size(); ++i) {
-        const cli::BenchRow& row = result.rows[i];
+        const BenchRow& row = result.rows[i];
         vtkNew<vtkTable> table;
         vtkNew<vtkDoubleArray> x, y;
         x->SetName("time");
@@ -57,7 +57,7 @@ void addPanel(vtkChartXY* chart, const cli::BenchResult& result, bool vertices, 
         plot->SetWidth(3);
     }
     double xLow = 1e300, xHigh = 0, yLow = 1e300, yHigh = 0;
-    for (const cli::BenchRow& row : result.rows) {
+    for (const BenchRow& row : result.rows) {
         const double x = vertices ? row.vertexNs : row.buildNs;
         const double y = std::max(vertices ? row.errors.ndcMaxError : row.errors.maxRelativeError, 1e-300);
         xLow = std::min(xLow, x), xHigh = std::max(xHigh, x), yLow = std::min(yLow, y), yHigh = std::max(yHigh, y);
@@ -72,7 +72,7 @@ void addPanel(vtkChartXY* chart, const cli::BenchResult& result, bool vertices, 
 
 } // namespace
 
-void drawAccuracyCharts(vtkChartMatrix* charts, const cli::BenchResult& result, Theme theme, bool stacked)
+void drawAccuracyCharts(vtkChartMatrix* charts, const BenchResult& result, Theme theme, bool stacked)
 {
     // vtkChartMatrix counts rows from the bottom: the vertex panel goes on top when stacked.
     charts->SetSize(stacked ? vtkVector2i(1, 2) : vtkVector2i(2, 1));
@@ -84,7 +84,7 @@ void drawAccuracyCharts(vtkChartMatrix* charts, const cli::BenchResult& result, 
              false, theme, stacked);
 }
 
-void writeAccuracyPlot(const cli::BenchResult& result, const std::filesystem::path& file, Theme theme)
+void writeAccuracyPlot(const BenchResult& result, const std::filesystem::path& file, Theme theme)
 {
     writeChartPng(
         [&](vtkContextView* view) {

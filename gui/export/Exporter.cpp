@@ -337,14 +337,14 @@ std::vector<fs::path> exportStages(const std::shared_ptr<const EvaluatedScene>& 
         }
 
         step("matrices.tex");
-        writeFileAtomically(temporary / "matrices.tex", cli::matricesLatex(scene, options.digits));
+        writeFileAtomically(temporary / "matrices.tex", report::matricesLatex(scene, options.digits));
         if (const auto& depth = evaluated->outcomes.depth) {
             step("depth-resolution.png");
             writeDepthPlot(pipeline, depth->options, temporary / "depth-resolution.png", options.theme, options.width,
                            options.height, options.textScale / 100.0);
         }
         step("matrices.json");
-        writeFileAtomically(temporary / "matrices.json", cli::pipelineJson(scene, cli::PrecisionChoice{}, evaluated->outcomes).dump(2) + "\n");
+        writeFileAtomically(temporary / "matrices.json", report::pipelineJson(scene, report::PrecisionChoice{}, evaluated->outcomes).dump(2) + "\n");
 
         if (options.animate) {
             const fs::path frames = temporary / "frames";

@@ -5,7 +5,7 @@
 
 #include "viewpipe/format.hpp"
 
-namespace viewpipe::cli {
+namespace viewpipe::report {
 
 nlohmann::json benchJson(const BenchResult& result)
 {
@@ -67,4 +67,4 @@ void printBench(std::ostream& out, const BenchResult& result)
     }
 }
 
-} // namespace viewpipe::cli
+} // namespace viewpipe::report

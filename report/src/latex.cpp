@@ -13,7 +13,7 @@
 #include <boost/multiprecision/eigen.hpp>
 #endif
 
-namespace viewpipe::cli {
+namespace viewpipe::report {
 namespace {
 
 #ifdef VIEWPIPE_WIDE_SCALARS
@@ -135,9 +135,9 @@ std::string matricesLatex(const Scene& scene, int digits)
     return out.str();
 }
 
-} // namespace viewpipe::cli
+} // namespace viewpipe::report
 
-namespace viewpipe::cli {
+namespace viewpipe::report {
 
 std::string stageLatex(const Scene& scene, int stage, int digits, const std::vector<std::array<int, 2>>& highlighted)
 {
@@ -170,4 +170,4 @@ std::vector<StageLatex> stagesLatex(const Scene& scene, int digits)
     return out;
 }
 
-} // namespace viewpipe::cli
+} // namespace viewpipe::report

@@ -68,7 +68,7 @@ std::string questionLatex(const LessonStep& step, int number)
     case QuestionKind::Inside: out << boxes({"inside the view volume", "clipped away"}); break;
     case QuestionKind::SignW: out << "$w$ is " << boxes({"positive", "zero", "negative"}); break;
     case QuestionKind::WhichStage:
-        out << fitted(cli::stageMatrixLatex(step.scene, q.stage, kDigits));
+        out << fitted(report::stageMatrixLatex(step.scene, q.stage, kDigits));
         for (int k : offeredChoices(q))
             options.push_back(symbol(q.choices[std::size_t(k)]));
         out << boxes(options);
@@ -96,7 +96,7 @@ std::string questionLatex(const LessonStep& step, int number)
 std::string matrixLatex(const LessonStep& step)
 {
     const int stage = revealedStage(step);
-    return stage > 0 ? fitted(cli::stageLatex(step.scene, stage, kDigits, step.entries)) : std::string();
+    return stage > 0 ? fitted(report::stageLatex(step.scene, stage, kDigits, step.entries)) : std::string();
 }
 
 std::string answerParagraphs(const LessonStep& step)
@@ -156,7 +156,7 @@ std::string answerText(const LessonStep& step)
         return out;
     }
     case QuestionKind::Entry: {
-        const std::string exact = cli::entryLatex(step.scene, q.stage, q.row, q.column, 6);
+        const std::string exact = report::entryLatex(step.scene, q.stage, q.row, q.column, 6);
         const std::string decimal = number(q.entry);
         return "$" + exact + "$" + (exact == decimal ? "" : " ($" + decimal + "$)");
     }

@@ -15,7 +15,7 @@
 #include "viewpipe/classical.hpp"
 #include "viewpipe/format.hpp"
 
-namespace viewpipe::cli {
+namespace viewpipe::report {
 namespace {
 
 using Json = nlohmann::json;
@@ -488,4 +488,4 @@ void printClassification(std::ostream& out, const Scene& scene)
     }
 }
 
-} // namespace viewpipe::cli
+} // namespace viewpipe::report

@@ -202,7 +202,7 @@ json sceneData(const EvaluatedScene& scene, const WebPageViews& views)
     const WebViewOptions& options = views.options;
     const Theme theme = options.theme;
     const std::vector<Stage<double>>& stages = scene.pipeline.stages;
-    const std::vector<cli::StageLatex> latex = cli::stagesLatex(scene.scene, 4);
+    const std::vector<report::StageLatex> latex = report::stagesLatex(scene.scene, 4);
     json stageList = json::array();
     for (std::size_t k = 0; k < views.stages.size(); ++k) {
         const WebStage& s = views.stages[k];

@@ -170,7 +170,7 @@ std::string lessonPage(const Lesson& lesson, const std::vector<int>& stepScenes,
         entry["shown"] = json::parse(stepShownJson(step));
         if (!step.entries.empty()) { // the stage's equation with those entries marked, as the page's own shows it
             entry["latexStage"] = revealedStage(step);
-            entry["latex"] = cli::stageLatex(step.scene, revealedStage(step), 4, step.entries);
+            entry["latex"] = report::stageLatex(step.scene, revealedStage(step), 4, step.entries);
         }
         if (step.question) {
             entry["question"] = questionData(*step.question);

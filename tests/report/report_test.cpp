@@ -59,7 +59,7 @@ TEST(Latex, GlOrthoSeedPrintsExactFractions)
     const Scene scene = sceneFrom(R"({"camera": {"look_at": {"eye": [0, 0, 0], "center": [0, 0, -1],
         "up": [0, 1, 0]}, "projection": {"type": "ortho", "left": -20, "right": 30, "bottom": 10, "top": 50,
         "near": 15, "far": -25}}})");
-    const std::string projection = after(cli::matricesLatex(scene, 4), "P =\n\\begin{bmatrix}");
+    const std::string projection = after(report::matricesLatex(scene, 4), "P =\n\\begin{bmatrix}");
     EXPECT_NE(projection.find("\\frac{1}{25} & 0 & 0 & -\\frac{1}{5} \\\\\n"), std::string::npos) << projection;
     EXPECT_NE(projection.find("0 & \\frac{1}{20} & 0 & -\\frac{3}{2} \\\\\n"), std::string::npos) << projection;
     EXPECT_NE(projection.find("0 & 0 & \\frac{1}{20} & -\\frac{1}{4} \\\\\n"), std::string::npos) << projection;
@@ -71,7 +71,7 @@ TEST(Latex, GlOrthoSeedPrintsExactFractions)
 TEST(Latex, OpenGlOrthoSceneProjectionIsExact)
 {
     const std::string projection =
-        after(cli::matricesLatex(loadScene(kScenes / "opengl-ortho.json"), 4), "P =\n\\begin{bmatrix}");
+        after(report::matricesLatex(loadScene(kScenes / "opengl-ortho.json"), 4), "P =\n\\begin{bmatrix}");
     EXPECT_NE(projection.find("\\frac{1}{20} & 0 & 0 & 0 \\\\\n"), std::string::npos) << projection;
     EXPECT_NE(projection.find("0 & \\frac{1}{15} & 0 & 0 \\\\\n"), std::string::npos) << projection;
     EXPECT_NE(projection.find("0 & 0 & -\\frac{1}{35} & -\\frac{9}{7} \\\\\n"), std::string::npos) << projection;
@@ -84,17 +84,17 @@ TEST(Latex, OpenGlOrthoSceneProjectionIsExact)
 TEST(Latex, HouseStagesAreExact)
 {
     const Scene house = loadScene(kScenes / "house.json");
-    const std::string shear = cli::stageLatex(house, 4, 4);
+    const std::string shear = report::stageLatex(house, 4, 4);
     EXPECT_EQ(shear.substr(0, shear.find('\n')), "\\mathit{SH}_{\\mathrm{per}} =");
     EXPECT_NE(shear.find("  1 & 0 & -\\frac{2}{21} & 0 \\\\\n  0 & 1 & -\\frac{1}{14} & 0 \\\\\n"),
               std::string::npos)
         << shear;
-    const std::string scale = cli::stageLatex(house, 5, 4);
+    const std::string scale = report::stageLatex(house, 5, 4);
     EXPECT_NE(scale.find("  \\frac{42}{1475} & 0 & 0 & 0 \\\\\n  0 & \\frac{42}{1475} & 0 & 0 \\\\\n"
                          "  0 & 0 & \\frac{1}{59} & 0 \\\\\n"),
               std::string::npos)
         << scale;
-    const std::string all = cli::matricesLatex(house, 4);
+    const std::string all = report::matricesLatex(house, 4);
     EXPECT_NE(all.find("N_{\\mathrm{per}} &= S_{\\mathrm{per}} \\, \\mathit{SH}_{\\mathrm{per}} \\, "
                        "T(-\\mathit{PRP}) \\, R \\, T(-\\mathit{VRP}) \\\\\n&="),
               std::string::npos)
@@ -118,7 +118,7 @@ TEST(Latex, EveryBuiltInScenesMatricesFitATwelveCentimetreColumn)
         if (entry.path().extension() != ".json")
             continue;
         const std::string name = "m" + std::to_string(scenes++) + ".tex";
-        std::ofstream(dir / name) << cli::matricesLatex(loadScene(entry.path()), 4);
+        std::ofstream(dir / name) << report::matricesLatex(loadScene(entry.path()), 4);
         document += "% " + entry.path().filename().string() + "\n\\input{" + name + "}\n\\clearpage\n";
     }
     std::ofstream(dir / "all.tex") << document << "\\end{document}\n";
@@ -136,22 +136,22 @@ TEST(Latex, OneEntryIsExactWhereItIsAFraction)
 {
     // Foley's SH_per for the house: shx = -DOPx/DOPz = -8/84 = -2/21.
     const Scene house = loadScene(kScenes / "house.json");
-    EXPECT_EQ(cli::entryLatex(house, 4, 1, 3, 6), "-\\frac{2}{21}");
-    EXPECT_EQ(cli::entryLatex(house, 4, 1, 1, 6), "1");
+    EXPECT_EQ(report::entryLatex(house, 4, 1, 3, 6), "-\\frac{2}{21}");
+    EXPECT_EQ(report::entryLatex(house, 4, 1, 1, 6), "1");
 }
 
 TEST(Latex, IrrationalEntriesAreDecimals)
 {
     const Scene oblique = sceneFrom(R"({"view": {"projection": "parallel", "vrp": [0, 0, 0], "vpn": [1, 0, 1],
         "vup": [0, 1, 0], "prp": [0, 0, 10], "window": [-1, 1, -1, 1], "front": 1, "back": -1}})");
-    EXPECT_NE(cli::stageLatex(oblique, 2, 4).find("0.7071 & 0 & -0.7071 & 0"), std::string::npos);
-    EXPECT_NE(cli::stageLatex(oblique, 2, 6).find("0.707107 & 0 & -0.707107 & 0"), std::string::npos);
+    EXPECT_NE(report::stageLatex(oblique, 2, 4).find("0.7071 & 0 & -0.7071 & 0"), std::string::npos);
+    EXPECT_NE(report::stageLatex(oblique, 2, 6).find("0.707107 & 0 & -0.707107 & 0"), std::string::npos);
 }
 
 TEST(PipelineJson, HouseHasTheContractedKeys)
 {
     const Scene house = loadScene(kScenes / "house.json");
-    const Json j = cli::pipelineJson(house, cli::PrecisionChoice{}, evaluateScene(house)->outcomes);
+    const Json j = report::pipelineJson(house, report::PrecisionChoice{}, evaluateScene(house)->outcomes);
     EXPECT_EQ(keys(j), (std::vector<std::string>{"composite", "convention", "precision", "projection", "stages",
                                                  "zmin"}));
     EXPECT_EQ(j["convention"], "foley");
@@ -172,16 +172,16 @@ TEST(PipelineJson, DivideStageSaysItDivides)
     const Scene scene = sceneFrom(R"({"camera": {"look_at": {"eye": [0, 0, 0], "center": [0, 0, -1], "up": [0, 1, 0]},
         "projection": {"type": "perspective", "fovy_deg": 60, "aspect": 1, "near": 1, "far": 10}},
         "effects": ["divide"]})");
-    const Json j = cli::pipelineJson(scene, cli::PrecisionChoice{}, evaluateScene(scene)->outcomes);
+    const Json j = report::pipelineJson(scene, report::PrecisionChoice{}, evaluateScene(scene)->outcomes);
     const Json& divide = j["stages"].back();
     EXPECT_EQ(divide["symbol"], "divide");
     EXPECT_EQ(divide["divides"], "(x, y, z, w) -> (x/w, y/w, z/w, 1)");
     EXPECT_FALSE(j["stages"][0].contains("divides"));
     std::ostringstream text;
-    cli::printPipeline(text, scene, cli::PrecisionChoice{}, evaluateScene(scene)->outcomes);
+    report::printPipeline(text, scene, report::PrecisionChoice{}, evaluateScene(scene)->outcomes);
     EXPECT_NE(text.str().find("(x, y, z, w) -> (x/w, y/w, z/w, 1), not a matrix"), std::string::npos);
     EXPECT_NE(text.str().find("P * V = P_depth * S_fovy * R_eye * T(-eye)\n"), std::string::npos);
-    const std::string tex = cli::matricesLatex(scene, 4);
+    const std::string tex = report::matricesLatex(scene, 4);
     EXPECT_NE(tex.find("(x, y, z, w) \\mapsto \\left(\\frac{x}{w}"), std::string::npos);
     EXPECT_NE(tex.find("P \\, V &= P_{\\mathrm{depth}}"), std::string::npos);
 }
@@ -189,17 +189,17 @@ TEST(PipelineJson, DivideStageSaysItDivides)
 TEST(PipelineJson, WidePrecisionsAreStrings)
 {
     const Scene house = loadScene(kScenes / "house.json");
-    const Json j = cli::pipelineJson(house, cli::parsePrecision("float128"), {});
+    const Json j = report::pipelineJson(house, report::parsePrecision("float128"), {});
     EXPECT_EQ(j["precision"], "float128");
     ASSERT_TRUE(j["zmin"].is_string());
     EXPECT_EQ(j["zmin"].get<std::string>().substr(0, 20), "-4.06779661016949152");
-    EXPECT_EQ(cli::precisionName(cli::parsePrecision("mpfr", 300)), "mpfr-300");
+    EXPECT_EQ(report::precisionName(report::parsePrecision("mpfr", 300)), "mpfr-300");
 }
 
 TEST(TraceJson, HouseHasTheContractedKeys)
 {
     const Scene house = loadScene(kScenes / "house.json");
-    const Json j = cli::traceJson(house, Vec3<double>(16, 10, 54), cli::PrecisionChoice{});
+    const Json j = report::traceJson(house, Vec3<double>(16, 10, 54), report::PrecisionChoice{});
     EXPECT_EQ(keys(j), (std::vector<std::string>{"clip", "convention", "divided", "inside", "point", "precision",
                                                  "projection", "stages"}));
     EXPECT_EQ(j["point"], Json({16.0, 10.0, 54.0}));
@@ -209,7 +209,7 @@ TEST(TraceJson, HouseHasTheContractedKeys)
 
 TEST(ClassifyJson, HouseHasTheContractedKeys)
 {
-    const Json j = cli::classifyJson(loadScene(kScenes / "house.json"));
+    const Json j = report::classifyJson(loadScene(kScenes / "house.json"));
     EXPECT_EQ(keys(j), (std::vector<std::string>{"alpha_deg", "description", "family", "foreshortening", "kind",
                                                  "projection", "vanishing_points"}));
     EXPECT_EQ(j["projection"], "perspective");
@@ -218,13 +218,13 @@ TEST(ClassifyJson, HouseHasTheContractedKeys)
     EXPECT_EQ(j["vanishing_points"][0]["axis"], "z");
 }
 
-cli::BenchResult oneRow()
+BenchResult oneRow()
 {
-    cli::BenchResult result;
+    BenchResult result;
     result.reference = "mpfr-256";
     result.vertices = 10;
     result.viewport = {640, 480};
-    cli::BenchRow row;
+    BenchRow row;
     row.precision = "float";
     row.bits = 24;
     row.epsilon = std::ldexp(1.0, -23);
@@ -236,7 +236,7 @@ cli::BenchResult oneRow()
 
 TEST(BenchReport, JsonHasTheContractedKeys)
 {
-    const Json j = cli::benchJson(oneRow());
+    const Json j = report::benchJson(oneRow());
     EXPECT_EQ(keys(j), (std::vector<std::string>{"reference", "rows", "vertices", "viewport"}));
     EXPECT_EQ(j["viewport"], Json({640, 480}));
     ASSERT_EQ(j["rows"].size(), 1u);
@@ -250,7 +250,7 @@ TEST(BenchReport, JsonHasTheContractedKeys)
 TEST(BenchReport, TableGivesErrorsInUnitsOfEpsilon)
 {
     std::ostringstream out;
-    cli::printBench(out, oneRow());
+    report::printBench(out, oneRow());
     const std::string table = out.str();
     EXPECT_NE(table.find("Reference: mpfr-256; 10 vertices timed; pixel errors at 640x480."), std::string::npos);
     // 3 * 2^-23 = 3.58e-07, three epsilons; the build time to three digits.

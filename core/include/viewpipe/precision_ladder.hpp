@@ -13,7 +13,7 @@
 #include "viewpipe/accuracy.hpp"
 #include "viewpipe/scene.hpp"
 
-namespace viewpipe::cli {
+namespace viewpipe {
 
 struct BenchRow {
     std::string precision; // "float", ..., "mpfr"
@@ -45,4 +45,4 @@ using BenchProgress = std::function<bool(int done, int total, const std::string&
 BenchResult runBench(const Scene& scene, const std::vector<Vec3<double>>& sceneVertices, const BenchOptions& options,
                      const BenchProgress& progress = {});
 
-} // namespace viewpipe::cli
+} // namespace viewpipe

@@ -10,11 +10,11 @@
 
 #include "viewpipe/precision_ladder.hpp"
 
-namespace viewpipe::cli {
+namespace viewpipe::report {
 
 nlohmann::json benchJson(const BenchResult& result);
 void printBench(std::ostream& out, const BenchResult& result);
 // An absolute error with its size in units of epsilon in brackets, as the table and the app's panel show it.
 std::string errorCell(double error, double epsilon);
 
-} // namespace viewpipe::cli
+} // namespace viewpipe::report

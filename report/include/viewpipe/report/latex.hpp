@@ -12,7 +12,7 @@
 
 #include "viewpipe/scene.hpp"
 
-namespace viewpipe::cli {
+namespace viewpipe::report {
 
 std::string matricesLatex(const Scene& scene, int digits);
 
@@ -31,4 +31,4 @@ std::vector<StageLatex> stagesLatex(const Scene& scene, int digits);
 // Entry (row, column), from 1, of stage `stage`'s matrix: an exact fraction where it is one, else a decimal.
 std::string entryLatex(const Scene& scene, int stage, int row, int column, int digits);
 
-} // namespace viewpipe::cli
+} // namespace viewpipe::report

@@ -11,7 +11,7 @@
 
 #include "viewpipe/scene.hpp"
 
-namespace viewpipe::cli {
+namespace viewpipe::report {
 
 enum class Precision { Float, Double, LongDouble, Float128, Mpfr };
 
@@ -45,4 +45,4 @@ void printApiTrace(std::ostream& out, const Scene& scene, const Vec3<double>& po
 nlohmann::json classifyJson(const Scene& scene);
 void printClassification(std::ostream& out, const Scene& scene);
 
-} // namespace viewpipe::cli
+} // namespace viewpipe::report
