@@ -3,7 +3,6 @@
 #include <atomic>
 #include <csignal>
 #include <cstdio>
-#include <sstream>
 
 #include "command.hpp"
 #include "drawing_commands.hpp"
@@ -40,10 +39,7 @@ int runExport(const ExportCommandOptions& options)
         o.stages = gui::parseStages(options.stages, int(scene->pipeline.stages.size()));
         o.theme = options.theme == "dark" ? Theme::Dark : Theme::Light;
         o.transparent = options.transparent;
-        std::istringstream formats(options.formats);
-        o.formats.clear();
-        for (std::string f; std::getline(formats, f, ',');)
-            o.formats.insert(f);
+        o.formats = gui::parseFormats(options.formats);
         o.animate = options.animate;
         o.fps = options.fps;
         o.digits = options.digits;
@@ -99,7 +95,10 @@ void addExportCommand(CLI::App& app)
         ->check(CLI::IsMember({"light", "dark"}))
         ->capture_default_str();
     command->add_flag("--transparent", options->transparent, "Transparent background (PNG)");
-    command->add_option("--format", options->formats, "png, svg, pdf, tikz, html (one self-contained page), comma-separated")->capture_default_str();
+    std::string formats = "Comma-separated:";
+    for (const gui::ExportFormat& format : gui::exportFormats())
+        formats += "\n  " + format.name + ": " + format.description;
+    command->add_option("--format", options->formats, formats)->capture_default_str();
     command->add_flag("--animate", options->animate, "Also the animated transition, animation.mp4");
     command->add_option("--fps", options->fps, "Frames per second of the animation")->capture_default_str();
     command->add_option("--digits", options->digits, "Significant digits of inexact entries in matrices.tex")

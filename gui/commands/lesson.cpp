@@ -1,15 +1,13 @@
-// `viewpipe lesson check FILE` and `viewpipe lesson export FILE --out DIR --format html|pdf`.
+// `viewpipe lesson check FILE` and `viewpipe lesson export FILE --out DIR --format html,pdf`.
 
 #include <filesystem>
 #include <iostream>
 
 #include "command.hpp"
 #include "drawing_commands.hpp"
-#include "export/Exporter.h"
 #include "export/LessonExport.h"
 #include "export/VirtualDisplay.h"
 #include "viewpipe/lesson.hpp"
-#include "viewpipe/report/web_page.hpp"
 
 namespace viewpipe::commands {
 namespace {
@@ -25,38 +23,20 @@ int runExport(const LessonOptions& options)
 {
     return guarded(options.file, "viewpipe lesson export", [&] {
         const Lesson lesson = loadLesson(options.file);
-        if (options.format != "html" && options.format != "pdf")
-            throw InputError("--format", "must be html or pdf (got \"" + options.format + "\")");
-        const auto [width, height] = parseSize(options.size, "--size");
-        const Theme theme = options.theme == "dark" ? Theme::Dark : Theme::Light;
+        gui::LessonExportOptions o;
+        o.out = options.out;
+        o.formats = gui::parseLessonFormats(options.format);
+        std::tie(o.width, o.height) = parseSize(options.size, "--size");
+        o.theme = options.theme == "dark" ? Theme::Dark : Theme::Light;
         const EvaluatedLesson evaluated = evaluateLesson(lesson);
         const gui::VirtualDisplay display;
-        auto say = [&](const std::string& what) {
+        const auto files = gui::exportLesson(lesson, evaluated, o, [&](const std::string& what) {
             if (!options.quiet)
                 std::cerr << what << "\n";
-        };
-        if (options.format == "pdf") {
-            for (const fs::path& file : gui::exportLessonPdf(lesson, evaluated.stepShown, evaluated.shown, options.out, width, height, theme, say))
-                if (!options.quiet)
-                    std::cout << file.string() << "\n";
-            return 0;
-        }
-        const WebAssets assets = loadWebAssets();
-        std::vector<LessonScene> scenes;
-        for (const auto& scene : evaluated.shown) {
-            say("recording " + scene->scene.name);
-            scenes.push_back({scene, gui::recordWebViews(scene, width, height, 1, theme, false, [](const std::string&) {})});
-        }
-        // Only now that the page is made: nothing is created for a lesson that fails.
-        const std::string page = lessonPage(lesson, evaluated.stepShown, scenes, assets);
-        std::error_code error;
-        fs::create_directories(options.out, error);
-        if (error || !fs::is_directory(options.out))
-            throw InputError("--out", "cannot create the folder \"" + options.out + "\": " + error.message());
-        const fs::path file = fs::path(options.out) / "lesson.html";
-        writeFileAtomically(file, page);
+        });
         if (!options.quiet)
-            std::cout << file.string() << "\n";
+            for (const fs::path& file : files)
+                std::cout << file.string() << "\n";
         return 0;
     });
 }
@@ -79,10 +59,10 @@ void addLessonCommand(CLI::App& app)
     });
 
     auto options = std::make_shared<LessonOptions>();
-    CLI::App* exportCommand = lesson->add_subcommand("export", "Write the lesson as one web page (lesson.html), or as handout.pdf and slides.pdf");
+    CLI::App* exportCommand = lesson->add_subcommand("export", "Write the lesson as one web page (lesson.html), as handout.pdf and slides.pdf, or both");
     exportCommand->add_option("FILE", options->file, "Lesson file (JSON)")->required();
     exportCommand->add_option("--out", options->out, "Folder for the files (created if missing)")->required();
-    exportCommand->add_option("--format", options->format, "html: one self-contained page; pdf: handout.pdf and 16:9 slides.pdf (needs pdflatex)")->capture_default_str();
+    exportCommand->add_option("--format", options->format, "html: one self-contained page, lesson.html; pdf: handout.pdf and 16:9 slides.pdf (needs pdflatex); or both, comma-separated")->capture_default_str();
     exportCommand->add_option("--size", options->size, "The pictures' size WxH, as export's (the PDF's figures too)")->capture_default_str();
     exportCommand->add_option("--theme", options->theme, "light or dark")
         ->check(CLI::IsMember({"light", "dark"}))

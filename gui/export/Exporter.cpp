@@ -22,6 +22,7 @@
 #include "DepthPlot.h"
 #include "Offscreen.h"
 #include "Process.h"
+#include "StagingFolder.h"
 #include "VectorFigure.h"
 #include "viewpipe/report/tikz.hpp"
 #include "viewpipe/report/latex.hpp"
@@ -76,6 +77,183 @@ void validatePictureSize(int width, int height, int scale)
         throw InputError("--scale", "must be 1 to 4, and size times scale at most 16384");
 }
 
+
+// Counts an export's steps for its progress bar; throws Cancelled once `cancel` is set.
+class Steps {
+public:
+    Steps(const ExportProgress& progress, const std::atomic<bool>& cancel, int total)
+        : progress_(progress), cancel_(cancel), total_(total)
+    {
+    }
+    void operator()(const std::string& what)
+    {
+        if (cancel_)
+            throw Cancelled{};
+        if (progress_)
+            progress_(++done_, total_, what);
+    }
+
+private:
+    const ExportProgress& progress_;
+    const std::atomic<bool>& cancel_;
+    int total_, done_ = 0;
+};
+
+// What a stage's files are drawn from: the painter's window and the stage's vector figure.
+struct StagePicture {
+    vtkRenderWindow* window;
+    bool transparent;
+    VectorFigure vector;
+};
+
+// What a scene's own files are made from, once every stage is drawn.
+struct SceneOutput {
+    std::shared_ptr<const EvaluatedScene> evaluated;
+    const ExportOptions& options;
+    std::vector<std::pair<std::string, std::string>> figures; // each stage's file name without extension, caption
+    fs::path folder;
+    Steps& step;
+};
+
+// An export format: a file for each stage (its name the stage's and `suffix`),
+// files for the whole scene, or both.
+struct Format {
+    ExportFormat about;
+    std::string suffix;
+    std::function<void(const StagePicture&, const fs::path&)> writeStage;
+    std::function<void(SceneOutput&)> writeScene;
+    std::function<int(const EvaluatedScene&)> sceneSteps; // progress steps of writeScene
+};
+
+// The web page's steps: every stage recorded, then the page.
+int pageSteps(const EvaluatedScene& scene)
+{
+    return int(scene.pipeline.stages.size()) + 2;
+}
+
+// The scene as one self-contained web page, its views recorded at the options' size.
+std::string scenePage(const std::shared_ptr<const EvaluatedScene>& evaluated, const ExportOptions& options, Steps& step)
+{
+    const WebPageViews views = recordWebViews(evaluated, options.width, options.height, options.scale, options.theme,
+                                              options.fixedFraming, std::ref(step), options.textScale / 100.0);
+    step("scene.html");
+    return viewpipe::webPage(*evaluated, views, loadWebAssets("/usr/share/javascript", {}, options.presets));
+}
+
+const std::vector<Format>& formatTable()
+{
+    static const std::vector<Format> table = {
+        {{"png", "a picture of each stage, as the app draws it"}, ".png",
+         [](const StagePicture& p, const fs::path& file) { writeWindowPng(p.window, p.transparent, file); }, {}, {}},
+        {{"svg", "a vector figure of each stage"}, ".svg",
+         [](const StagePicture& p, const fs::path& file) { writeVectorFigure(p.vector, "svg", file); }, {}, {}},
+        {{"pdf", "a vector figure of each stage"}, ".pdf",
+         [](const StagePicture& p, const fs::path& file) { writeVectorFigure(p.vector, "pdf", file); }, {}, {}},
+        // "-tikz.tex": pdflatex makes "-tikz.pdf" of it, not the PDF format's file.
+        {{"tikz", "a TikZ figure of each stage, and figures.tex showing them all"}, "-tikz.tex",
+         [](const StagePicture& p, const fs::path& file) {
+             writeFileAtomically(file, tikzFigure(flatFigure(p.vector), p.vector.theme));
+         },
+         [](SceneOutput& out) {
+             out.step("figures.tex");
+             std::vector<std::pair<std::string, std::string>> figures;
+             for (const auto& [base, caption] : out.figures)
+                 figures.emplace_back(base + "-tikz", caption);
+             writeFileAtomically(out.folder / "figures.tex", tikzFiguresDocument(figures));
+         },
+         [](const EvaluatedScene&) { return 1; }},
+        {{"html", "one self-contained web page of the scene, scene.html"}, "", {},
+         [](SceneOutput& out) { writeFileAtomically(out.folder / "scene.html", scenePage(out.evaluated, out.options, out.step)); },
+         pageSteps},
+    };
+    return table;
+}
+
+const Format& formatNamed(const std::string& name)
+{
+    for (const Format& format : formatTable())
+        if (format.about.name == name)
+            return format;
+    throw InputError("--format", "unknown format \"" + name + "\" (" + exportFormatNames() + ")");
+}
+
+// "03-t-prp": a stage's files' name, in stage order.
+std::string stageFileBase(const Pipeline<double>& pipeline, int k)
+{
+    return (k < 10 ? "0" : "") + std::to_string(k) + "-" +
+           (k == 0 ? std::string("world") : slug(pipeline.stages[std::size_t(k - 1)].symbol));
+}
+
+// matrices.tex, matrices.json and, with a depth buffer, depth-resolution.png.
+void writeReports(const EvaluatedScene& evaluated, const ExportOptions& options, const fs::path& folder, Steps& step)
+{
+    step("matrices.tex");
+    writeFileAtomically(folder / "matrices.tex", report::matricesLatex(evaluated.scene, options.digits));
+    if (const auto& depth = evaluated.outcomes.depth) {
+        step("depth-resolution.png");
+        writeDepthPlot(evaluated.pipeline, depth->options, folder / "depth-resolution.png", options.theme, options.width,
+                       options.height, options.textScale / 100.0);
+    }
+    step("matrices.json");
+    writeFileAtomically(folder / "matrices.json",
+                        report::pipelineJson(evaluated.scene, report::PrecisionChoice{}, evaluated.outcomes).dump(2) + "\n");
+}
+
+// Each step takes fps frames, and every stage is held for kHoldSeconds.
+int holdFrames(int fps)
+{
+    return int(std::lround(fps * kHoldSeconds));
+}
+
+int animationFrames(int stageCount, int fps)
+{
+    return stageCount * fps + (stageCount + 1) * holdFrames(fps);
+}
+
+// animation.mp4: the app's transitions, with the same motion and framing, each stage held.
+void writeAnimation(OffscreenPainter& offscreen, const EvaluatedScene& evaluated, const ExportOptions& options,
+                    const std::optional<Framing>& framing, const fs::path& folder, Steps& step,
+                    const std::atomic<bool>& cancel)
+{
+    const int n = int(evaluated.pipeline.stages.size()), total = animationFrames(n, options.fps);
+    const fs::path frames = folder / "frames";
+    fs::create_directories(frames);
+    int frame = 0;
+    auto emit = [&] {
+        char name[32];
+        std::snprintf(name, sizeof name, "%05d.png", frame++);
+        step("frame " + std::to_string(frame) + " of " + std::to_string(total));
+        offscreen.window->Render();
+        writeWindowPng(offscreen.window, false, frames / name);
+    };
+    for (int k = 0; k <= n; ++k) {
+        const std::string caption = stageCaption(evaluated, std::size_t(k), StageText::Heading);
+        offscreen.painter->setCaptions(caption, "");
+        if (k > 0) {
+            const StageMotion motion(evaluated, k - 1, k, framing);
+            for (int f = 1; f <= options.fps; ++f) {
+                offscreen.painter->showMoment(motion.at(double(f) / options.fps));
+                emit();
+            }
+        }
+        showStageAtRest(offscreen, evaluated, k, caption, framing);
+        for (int f = 0; f < holdFrames(options.fps); ++f)
+            emit();
+    }
+    // H.264 in MP4 with yuv420p plays in browsers and in slide software.
+    const int status = runProgram({"ffmpeg", "-hide_banner", "-loglevel", "error", "-y", "-framerate",
+                                   std::to_string(options.fps), "-i", (frames / "%05d.png").string(), "-vf",
+                                   "scale=trunc(iw/2)*2:trunc(ih/2)*2", "-c:v", "libx264", "-pix_fmt", "yuv420p",
+                                   "-movflags", "+faststart", (folder / "animation.mp4").string()});
+    if (cancel)
+        throw Cancelled{};
+    if (status == -1)
+        throw std::runtime_error("the animation needs ffmpeg (Debian package ffmpeg), which was not found");
+    if (status != 0)
+        throw std::runtime_error("ffmpeg failed to encode the animation (exit " + std::to_string(status) + ")");
+    fs::remove_all(frames);
+}
+
 void validate(const ExportOptions& o)
 {
     validatePictureSize(o.width, o.height, o.scale);
@@ -85,11 +263,10 @@ void validate(const ExportOptions& o)
         throw InputError("--fps", "must be 1 to 120");
     if (o.digits < 1 || o.digits > 17)
         throw InputError("--digits", "must be 1 to 17");
-    for (const std::string& f : o.formats)
-        if (f != "png" && f != "svg" && f != "pdf" && f != "tikz" && f != "html")
-            throw InputError("--format", "unknown format \"" + f + "\" (png, svg, pdf, tikz, html)");
     if (o.formats.empty())
         throw InputError("--format", "names no format");
+    for (const std::string& name : o.formats)
+        formatNamed(name);
 }
 
 } // namespace
@@ -98,20 +275,13 @@ void exportWebPage(const std::shared_ptr<const EvaluatedScene>& scene, const fs:
                    const ExportProgress& progress, const std::atomic<bool>& cancel)
 {
     ExportOptions options;
-    options.out = file.parent_path() / (".viewpipe-web-" + std::to_string(::getpid()));
-    options.formats = {"html"};
     options.theme = theme;
-    std::error_code error;
-    fs::remove_all(options.out, error);
+    Steps step(progress, cancel, pageSteps(*scene));
     try {
-        exportStages(scene, options, progress, cancel);
-        if (!cancel)
-            fs::rename(options.out / "scene.html", file);
-    } catch (...) {
-        fs::remove_all(options.out, error);
-        throw;
+        writeFileAtomically(file, scenePage(scene, options, step));
+    } catch (const Cancelled&) {
+        // Nothing was written.
     }
-    fs::remove_all(options.out, error);
 }
 
 void exportSheet(const EvaluatedScene& scene, const fs::path& file, int width, int height, Theme theme)
@@ -249,160 +419,79 @@ std::vector<fs::path> exportStages(const std::shared_ptr<const EvaluatedScene>& 
                                    const ExportProgress& progress, const std::atomic<bool>& cancel)
 {
     validate(options);
-    const Scene& scene = evaluated->scene;
-    const Pipeline<double>& pipeline = evaluated->pipeline;
-    const std::vector<Stage<double>>& stages = pipeline.stages;
-    const int n = int(stages.size());
-    std::vector<int> chosen = options.stages;
-    if (chosen.empty())
-        chosen = parseStages("all", n);
+    const int n = int(evaluated->pipeline.stages.size());
+    std::vector<int> chosen = options.stages.empty() ? parseStages("all", n) : options.stages;
     for (int k : chosen)
         if (k < 0 || k > n)
             throw InputError("--stages", "stage numbers run from 0 (the world) to " + std::to_string(n));
+    std::vector<const Format*> formats;
+    for (const Format& format : formatTable())
+        if (options.formats.count(format.about.name))
+            formats.push_back(&format);
 
-    // Each step takes fps frames, and every stage is held for `hold` frames.
-    const int hold = int(std::lround(options.fps * kHoldSeconds));
-    const int frameCount = options.animate ? n * options.fps + (n + 1) * hold : 0;
-    const bool webPage = options.formats.count("html") > 0;
-    const std::size_t pictureFormats = options.formats.size() - (webPage ? 1 : 0);
-    const int total = int(chosen.size() * pictureFormats) + 2 + int(options.formats.count("tikz")) +
-                      (scene.effects.depth ? 1 : 0) + frameCount + (webPage ? n + 2 : 0);
-    int done = 0;
-    auto step = [&](const std::string& what) {
-        if (cancel)
-            throw Cancelled{};
-        if (progress)
-            progress(++done, total, what);
-    };
+    int total = 2 + (evaluated->outcomes.depth ? 1 : 0) + (options.animate ? animationFrames(n, options.fps) : 0);
+    for (const Format* format : formats)
+        total += (format->writeStage ? int(chosen.size()) : 0) + (format->writeScene ? format->sceneSteps(*evaluated) : 0);
+    Steps step(progress, cancel, total);
 
-    std::error_code error;
-    const bool created = !fs::exists(options.out);
-    fs::create_directories(options.out, error);
-    if (error || !fs::is_directory(options.out))
-        throw InputError("--out", "cannot create the folder \"" + options.out.string() + "\": " + error.message());
-    const fs::path temporary = options.out / (".viewpipe-export-" + std::to_string(::getpid()));
-    fs::remove_all(temporary, error);
-    fs::create_directories(temporary);
-
-    auto cleanUp = [&] {
-        std::error_code ignored;
-        fs::remove_all(temporary, ignored);
-        if (created)
-            fs::remove(options.out, ignored); // only if still empty
-    };
-
+    StagingFolder staging(options.out);
     try {
         // One offscreen window, one painter, one camera framing every stage.
         OffscreenPainter offscreen(evaluated, options.width, options.height, options.scale, options.theme,
                                    options.transparent, options.textScale / 100.0);
-        vtkRenderWindow* window = offscreen.window;
-        ScenePainter& painter = *offscreen.painter;
         const std::optional<Framing> framing = fixedFraming(*evaluated, options.fixedFraming);
-        auto showAt = [&](int k, const std::string& caption) {
-            return showStageAtRest(offscreen, *evaluated, k, caption, framing);
-        };
-
-        std::vector<std::pair<std::string, std::string>> figures; // file name without extension, caption
+        SceneOutput scene{evaluated, options, {}, staging.path(), step};
         for (int k : chosen) {
-            const std::string base = (k < 10 ? "0" : "") + std::to_string(k) + "-" +
-                                     (k == 0 ? std::string("world") : slug(stages[std::size_t(k - 1)].symbol));
+            const std::string base = stageFileBase(evaluated->pipeline, k);
             const std::string caption = stageCaption(*evaluated, std::size_t(k), StageText::Heading);
-            const StageShown shown = showAt(k, caption);
-            const VectorFigure vector{&shown, painter.figureView(), caption, options.theme};
-            for (const std::string& format : options.formats) {
-                if (format == "html")
-                    continue; // one page for every stage, below
-                // "-tikz.tex": pdflatex makes "-tikz.pdf" of it, not the PDF export's file.
-                const std::string file = base + (format == "tikz" ? "-tikz.tex" : "." + format);
-                step("stage " + std::to_string(k) + " of " + std::to_string(n) + ": " + file);
-                if (format == "png")
-                    writeWindowPng(window, options.transparent, temporary / file);
-                else if (format == "tikz")
-                    writeFileAtomically(temporary / file, tikzFigure(flatFigure(vector), options.theme));
-                else
-                    writeVectorFigure(vector, format, temporary / file);
-            }
-            figures.emplace_back(base + "-tikz", caption);
-        }
-        if (options.formats.count("tikz")) {
-            step("figures.tex");
-            writeFileAtomically(temporary / "figures.tex", tikzFiguresDocument(figures));
-        }
-
-        if (webPage) {
-            const WebPageViews views = recordWebViews(evaluated, options.width, options.height, options.scale,
-                                                      options.theme, options.fixedFraming, step, options.textScale / 100.0);
-            step("scene.html");
-            writeFileAtomically(temporary / "scene.html", viewpipe::webPage(*evaluated, views, loadWebAssets("/usr/share/javascript", {}, options.presets)));
-        }
-
-        step("matrices.tex");
-        writeFileAtomically(temporary / "matrices.tex", report::matricesLatex(scene, options.digits));
-        if (const auto& depth = evaluated->outcomes.depth) {
-            step("depth-resolution.png");
-            writeDepthPlot(pipeline, depth->options, temporary / "depth-resolution.png", options.theme, options.width,
-                           options.height, options.textScale / 100.0);
-        }
-        step("matrices.json");
-        writeFileAtomically(temporary / "matrices.json", report::pipelineJson(scene, report::PrecisionChoice{}, evaluated->outcomes).dump(2) + "\n");
-
-        if (options.animate) {
-            const fs::path frames = temporary / "frames";
-            fs::create_directories(frames);
-            int frame = 0;
-            auto emit = [&] {
-                char name[32];
-                std::snprintf(name, sizeof name, "%05d.png", frame++);
-                step("frame " + std::to_string(frame) + " of " + std::to_string(frameCount));
-                window->Render();
-                writeWindowPng(window, false, frames / name);
-            };
-            for (int k = 0; k <= n; ++k) {
-                const std::string caption = stageCaption(*evaluated, std::size_t(k), StageText::Heading);
-                painter.setCaptions(caption, "");
-                if (k > 0) { // the app's transition: the same motion and framing
-                    const StageMotion motion(*evaluated, k - 1, k, framing);
-                    for (int f = 1; f <= options.fps; ++f) {
-                        painter.showMoment(motion.at(double(f) / options.fps));
-                        emit();
-                    }
+            const StageShown shown = showStageAtRest(offscreen, *evaluated, k, caption, framing);
+            const StagePicture picture{offscreen.window, options.transparent,
+                                       VectorFigure{&shown, offscreen.painter->figureView(), caption, options.theme}};
+            for (const Format* format : formats)
+                if (format->writeStage) {
+                    const std::string file = base + format->suffix;
+                    step("stage " + std::to_string(k) + " of " + std::to_string(n) + ": " + file);
+                    format->writeStage(picture, staging.path() / file);
                 }
-                showAt(k, caption);
-                for (int f = 0; f < hold; ++f)
-                    emit();
-            }
-            // H.264 in MP4 with yuv420p plays in browsers and in slide software.
-            const int status = runProgram({"ffmpeg", "-hide_banner", "-loglevel", "error", "-y", "-framerate",
-                                           std::to_string(options.fps), "-i", (frames / "%05d.png").string(), "-vf",
-                                           "scale=trunc(iw/2)*2:trunc(ih/2)*2", "-c:v", "libx264", "-pix_fmt",
-                                           "yuv420p", "-movflags", "+faststart",
-                                           (temporary / "animation.mp4").string()});
-            if (cancel)
-                throw Cancelled{};
-            if (status == -1)
-                throw std::runtime_error("the animation needs ffmpeg (Debian package ffmpeg), which was not found");
-            if (status != 0)
-                throw std::runtime_error("ffmpeg failed to encode the animation (exit " + std::to_string(status) + ")");
-            fs::remove_all(frames);
+            scene.figures.emplace_back(base, caption);
         }
-
-        // Everything is complete: move it into place, file by file (rename is atomic).
-        std::vector<fs::path> written;
-        for (const auto& entry : fs::directory_iterator(temporary)) {
-            const fs::path target = options.out / entry.path().filename();
-            fs::rename(entry.path(), target);
-            written.push_back(target);
-        }
-        fs::remove(temporary);
-        std::sort(written.begin(), written.end());
-        return written;
+        for (const Format* format : formats)
+            if (format->writeScene)
+                format->writeScene(scene);
+        writeReports(*evaluated, options, staging.path(), step);
+        if (options.animate)
+            writeAnimation(offscreen, *evaluated, options, framing, staging.path(), step, cancel);
+        return staging.commit();
     } catch (const Cancelled&) {
-        cleanUp();
         return {};
-    } catch (...) {
-        cleanUp();
-        throw;
     }
+}
+
+std::string exportFormatNames()
+{
+    std::string names;
+    for (const Format& format : formatTable())
+        names += (names.empty() ? "" : ", ") + format.about.name;
+    return names;
+}
+
+std::vector<ExportFormat> exportFormats()
+{
+    std::vector<ExportFormat> formats;
+    for (const Format& format : formatTable())
+        formats.push_back(format.about);
+    return formats;
+}
+
+std::set<std::string> parseFormats(const std::string& list)
+{
+    std::set<std::string> names;
+    std::istringstream in(list);
+    for (std::string name; std::getline(in, name, ',');)
+        names.insert(formatNamed(name).about.name);
+    if (names.empty())
+        throw InputError("--format", "names no format");
+    return names;
 }
 
 } // namespace viewpipe::gui

@@ -1,12 +1,14 @@
 #pragma once
 
-// Exports the stages of a scene as images for slides: one picture per stage
-// drawn by the scene painter, true vector SVG/PDF and TikZ figures of the same
-// stage with the same framing (and figures.tex showing them all), the scene
-// as one web page (scene.html), the matrices as LaTeX and JSON, and
-// the animated transition as an MP4 video (H.264, encoded by ffmpeg). Files
-// are written into a temporary folder and moved into place only when all are
-// complete: a failed or cancelled export leaves nothing half-written.
+// Exports the stages of a scene as images for slides, in the formats of one
+// table (Exporter.cpp's formatTable: a name, each stage's file, the scene's
+// files): one picture per stage drawn by the scene painter, true vector
+// SVG/PDF and TikZ figures of the same stage with the same framing (and
+// figures.tex showing them all), the scene as one web page (scene.html); and
+// always the matrices as LaTeX and JSON; the animated transition as an MP4
+// video (H.264, encoded by ffmpeg) on request. Files are written into a
+// staging folder and moved into place only when all are complete
+// (StagingFolder): a failed or cancelled export leaves nothing half-written.
 
 #include <atomic>
 #include <filesystem>
@@ -31,7 +33,7 @@ struct ExportOptions {
     std::vector<int> stages;     // empty: all, 0 (the world) to n
     Theme theme = Theme::Light;
     bool transparent = false;
-    std::set<std::string> formats = {"png"}; // png, svg, pdf, tikz, html
+    std::set<std::string> formats = {"png"}; // names of exportFormats()
     bool animate = false;
     int fps = 30;
     int digits = 4;              // decimals in matrices.tex
@@ -44,6 +46,17 @@ struct ExportOptions {
     // The scenes folder whose presets (presetScenes) the web page offers; empty: none.
     std::filesystem::path presets;
 };
+
+// A format `export` writes, as --format names it.
+struct ExportFormat {
+    std::string name;
+    std::string description;
+};
+std::vector<ExportFormat> exportFormats();
+// "png, svg, pdf, tikz, html": for help texts and messages.
+std::string exportFormatNames();
+// Parses a comma-separated list of format names; throws InputError naming --format.
+std::set<std::string> parseFormats(const std::string& list);
 
 // What an export is doing, for progress bars: `done` of `total` steps.
 using ExportProgress = std::function<void(int done, int total, const std::string& what)>;

@@ -4,13 +4,15 @@
 #include <cstdlib>
 #include <fstream>
 #include <sstream>
-#include <unistd.h>
 
 #include "Offscreen.h"
+#include "Exporter.h"
 #include "Process.h"
+#include "StagingFolder.h"
 #include "VectorFigure.h"
 #include "viewpipe/report/lesson_latex.hpp"
 #include "viewpipe/report/report.hpp"
+#include "viewpipe/report/web_page.hpp"
 
 namespace viewpipe::gui {
 namespace fs = std::filesystem;
@@ -99,68 +101,91 @@ void compile(const fs::path& folder, const std::string& document)
     }
 }
 
+// handout.pdf and slides.pdf in `folder`, with the figures and sources they are made of.
+void writeLessonPdf(const Lesson& lesson, const EvaluatedLesson& evaluated, const LessonExportOptions& options,
+                    const fs::path& folder, const std::function<void(const std::string&)>& step)
+{
+    std::vector<LessonFigures> handout(lesson.steps.size()), slides(lesson.steps.size());
+    for (std::size_t s = 0; s < evaluated.shown.size(); ++s) {
+        const auto& scene = evaluated.shown[s];
+        const OffscreenPainter paper(scene, options.width, options.height, 1, options.theme, false, kPaperFontScale);
+        const OffscreenPainter projector(scene, options.width, options.height, 1, options.theme, false, kSlideFontScale);
+        for (std::size_t k = 0; k < lesson.steps.size(); ++k) {
+            if (evaluated.stepShown[k] != int(s))
+                continue;
+            const LessonStep& lessonStep = lesson.steps[k];
+            step("figures of step " + std::to_string(k + 1) + " of " + std::to_string(lesson.steps.size()));
+            char name[32];
+            std::snprintf(name, sizeof name, "step-%02zu", k + 1);
+            auto figures = [&](const OffscreenPainter& offscreen, const std::string& prefix, LessonFigures& files) {
+                files.revealed = prefix + name + ".pdf";
+                writeStepFigure(offscreen, scene, lessonStep, revealedStage(lessonStep), true, tracedAt(lessonStep),
+                                options.theme, folder / files.revealed);
+                if (lessonStep.question) {
+                    files.asking = prefix + name + "-asking.pdf";
+                    writeStepFigure(offscreen, scene, lessonStep, askingStage(lessonStep), false, tracedAt(lessonStep),
+                                    options.theme, folder / files.asking);
+                }
+            };
+            figures(paper, "", handout[k]);
+            figures(projector, "slide-", slides[k]);
+        }
+    }
+    step("handout.pdf");
+    writeFileAtomically(folder / "handout.tex", lessonHandoutLatex(lesson, handout));
+    compile(folder, "handout");
+    step("slides.pdf");
+    writeFileAtomically(folder / "slides.tex", lessonSlidesLatex(lesson, slides));
+    compile(folder, "slides");
+}
+
+// lesson.html in `folder`: every scene shown recorded as the app draws it.
+void writeLessonPage(const Lesson& lesson, const EvaluatedLesson& evaluated, const LessonExportOptions& options,
+                     const fs::path& folder, const std::function<void(const std::string&)>& step)
+{
+    std::vector<LessonScene> scenes;
+    for (const auto& scene : evaluated.shown) {
+        step("recording " + scene->scene.name);
+        scenes.push_back({scene, recordWebViews(scene, options.width, options.height, 1, options.theme, false,
+                                                [](const std::string&) {})});
+    }
+    step("lesson.html");
+    writeFileAtomically(folder / "lesson.html", lessonPage(lesson, evaluated.stepShown, scenes, loadWebAssets()));
+}
+
 } // namespace
 
-std::vector<fs::path> exportLessonPdf(const Lesson& lesson, const std::vector<int>& stepScenes,
-                                      const std::vector<std::shared_ptr<const EvaluatedScene>>& scenes,
-                                      const fs::path& out, int width, int height, Theme theme,
-                                      const std::function<void(const std::string&)>& step)
+std::set<std::string> parseLessonFormats(const std::string& list)
 {
-    if (width < 64 || height < 64 || width > 8192 || height > 8192)
-        throw InputError("--size", "must be WxH with 64 <= W, H <= 8192");
-    std::error_code error;
-    const bool created = !fs::exists(out);
-    fs::create_directories(out, error);
-    if (error || !fs::is_directory(out))
-        throw InputError("--out", "cannot create the folder \"" + out.string() + "\": " + error.message());
-    const fs::path temporary = out / (".viewpipe-lesson-" + std::to_string(::getpid()));
-    fs::remove_all(temporary, error);
-    fs::create_directories(temporary);
-    try {
-        std::vector<LessonFigures> handout(lesson.steps.size()), slides(lesson.steps.size());
-        for (std::size_t s = 0; s < scenes.size(); ++s) {
-            const OffscreenPainter paper(scenes[s], width, height, 1, theme, false, kPaperFontScale);
-            const OffscreenPainter projector(scenes[s], width, height, 1, theme, false, kSlideFontScale);
-            for (std::size_t k = 0; k < lesson.steps.size(); ++k) {
-                if (stepScenes[k] != int(s))
-                    continue;
-                const LessonStep& lessonStep = lesson.steps[k];
-                step("figures of step " + std::to_string(k + 1) + " of " + std::to_string(lesson.steps.size()));
-                char name[32];
-                std::snprintf(name, sizeof name, "step-%02zu", k + 1);
-                auto figures = [&](const OffscreenPainter& offscreen, const std::string& prefix, LessonFigures& files) {
-                    files.revealed = prefix + name + ".pdf";
-                    writeStepFigure(offscreen, scenes[s], lessonStep, revealedStage(lessonStep), true,
-                                    tracedAt(lessonStep), theme, temporary / files.revealed);
-                    if (lessonStep.question) {
-                        files.asking = prefix + name + "-asking.pdf";
-                        writeStepFigure(offscreen, scenes[s], lessonStep, askingStage(lessonStep), false,
-                                        tracedAt(lessonStep), theme, temporary / files.asking);
-                    }
-                };
-                figures(paper, "", handout[k]);
-                figures(projector, "slide-", slides[k]);
-            }
-        }
-        step("handout.pdf");
-        writeFileAtomically(temporary / "handout.tex", lessonHandoutLatex(lesson, handout));
-        compile(temporary, "handout");
-        step("slides.pdf");
-        writeFileAtomically(temporary / "slides.tex", lessonSlidesLatex(lesson, slides));
-        compile(temporary, "slides");
-        std::vector<fs::path> written;
-        for (const char* file : {"handout.pdf", "slides.pdf"}) {
-            fs::rename(temporary / file, out / file);
-            written.push_back(out / file);
-        }
-        fs::remove_all(temporary);
-        return written;
-    } catch (...) {
-        fs::remove_all(temporary, error);
-        if (created)
-            fs::remove(out, error); // only if still empty
-        throw;
+    std::set<std::string> formats;
+    std::istringstream in(list);
+    for (std::string name; std::getline(in, name, ',');) {
+        if (name != "html" && name != "pdf")
+            throw InputError("--format", "must be html, pdf or both, comma-separated (got \"" + list + "\")");
+        formats.insert(name);
     }
+    if (formats.empty())
+        throw InputError("--format", "names no format");
+    return formats;
+}
+
+std::vector<fs::path> exportLesson(const Lesson& lesson, const EvaluatedLesson& evaluated,
+                                   const LessonExportOptions& options,
+                                   const std::function<void(const std::string&)>& step)
+{
+    if (options.width < 64 || options.height < 64 || options.width > 8192 || options.height > 8192)
+        throw InputError("--size", "must be WxH with 64 <= W, H <= 8192");
+    StagingFolder staging(options.out);
+    std::vector<std::string> files;
+    if (options.formats.count("html")) {
+        writeLessonPage(lesson, evaluated, options, staging.path(), step);
+        files.push_back("lesson.html");
+    }
+    if (options.formats.count("pdf")) {
+        writeLessonPdf(lesson, evaluated, options, staging.path(), step);
+        files.insert(files.end(), {"handout.pdf", "slides.pdf"});
+    }
+    return staging.commit(files);
 }
 
 } // namespace viewpipe::gui

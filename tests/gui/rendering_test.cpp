@@ -458,11 +458,12 @@ private slots:
     {
         QTemporaryDir out;
         const QString lessonPath = QString(::viewpipe::build::dataDir) + "/lessons/foley-nper.json";
-        const Run run = runViewpipe({"lesson", "export", lessonPath, "--out", out.path(), "--format", "pdf"});
+        // Formats are a list, as export's: the page beside the paper, made in one go.
+        const Run run = runViewpipe({"lesson", "export", lessonPath, "--out", out.path(), "--format", "pdf,html"});
         QCOMPARE(run.exitCode, 0);
-        QCOMPARE(run.out, out.path() + "/handout.pdf\n" + out.path() + "/slides.pdf\n");
+        QCOMPARE(run.out, out.path() + "/handout.pdf\n" + out.path() + "/lesson.html\n" + out.path() + "/slides.pdf\n");
         QCOMPARE(QDir(out.path()).entryList(QDir::Files | QDir::Hidden | QDir::AllDirs | QDir::NoDotAndDotDot),
-                 QStringList({"handout.pdf", "slides.pdf"}));
+                 QStringList({"handout.pdf", "lesson.html", "slides.pdf"}));
         auto tool = [](const QString& name, const QStringList& arguments) {
             QProcess process;
             process.start(QStandardPaths::findExecutable(name), arguments);
@@ -521,7 +522,7 @@ private slots:
         // A bad format is refused before anything is made.
         const Run bad = runViewpipe({"lesson", "export", lessonPath, "--out", out.path() + "/none", "--format", "docx"});
         QCOMPARE(bad.exitCode, 2);
-        QVERIFY2(bad.err.contains("--format: must be html or pdf"), qPrintable(bad.err));
+        QVERIFY2(bad.err.contains("--format: must be html, pdf or both"), qPrintable(bad.err));
         QVERIFY(!QDir(out.path() + "/none").exists());
 
         // Math outside the subset is refused as the lesson is read, naming its field (so a file outside the
