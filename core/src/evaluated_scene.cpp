@@ -531,6 +531,34 @@ struct Fact {
     std::function<bool(const std::function<std::optional<Vec3<double>>(const Vec3<double>&)>&)> holds;
 };
 
+// Each stage's claims: the facts it makes true. `scale` is the one the facts compare
+// within, set here to each stage's volume size.
+std::vector<std::string> claimsAtStages(const Pipeline<double>& pipeline, const ViewSetup<double>& s,
+                                        const std::vector<Fact>& facts, double& scale)
+{
+    using Image = std::function<std::optional<Vec3<double>>(const Vec3<double>&)>;
+    using V = Vec3<double>;
+    std::vector<std::string> claims(pipeline.stages.size() + 1);
+    std::vector<bool> before(facts.size());
+    for (std::size_t k = 0; k <= pipeline.stages.size(); ++k) {
+        const Mat4<double> m = drawnAt(pipeline.stages, double(k));
+        const Image image = [&](const V& p) { return projectPoint(m, p); };
+        scale = 1;
+        for (const V& c : s.volume)
+            if (const std::optional<V> q = image(c))
+                scale = std::max(scale, q->cwiseAbs().maxCoeff());
+        for (std::size_t f = 0; f < facts.size(); ++f) {
+            const bool now = facts[f].holds(image);
+            if (now && !before[f] && k > 0)
+                claims[k] += (claims[k].empty() ? "" : "; ") + facts[f].text;
+            before[f] = now;
+        }
+        if (k > 0 && claims[k].empty() && !pipeline.stages[k - 1].divides && pipeline.stages[k - 1].matrix.isIdentity(0))
+            claims[k] = "the identity here: nothing moves";
+    }
+    return claims;
+}
+
 std::vector<std::string> stageClaims(const Pipeline<double>& pipeline, const ViewSetup<double>& s, bool farCut)
 {
     using Image = std::function<std::optional<Vec3<double>>(const Vec3<double>&)>;
@@ -636,25 +664,7 @@ std::vector<std::string> stageClaims(const Pipeline<double>& pipeline, const Vie
         }
     }
 
-    std::vector<std::string> claims(pipeline.stages.size() + 1);
-    std::vector<bool> before(facts.size());
-    for (std::size_t k = 0; k <= pipeline.stages.size(); ++k) {
-        const Mat4<double> m = drawnAt(pipeline.stages, double(k));
-        const Image image = [&](const V& p) { return projectPoint(m, p); };
-        scale = 1;
-        for (const V& c : s.volume)
-            if (const std::optional<V> q = image(c))
-                scale = std::max(scale, q->cwiseAbs().maxCoeff());
-        for (std::size_t f = 0; f < facts.size(); ++f) {
-            const bool now = facts[f].holds(image);
-            if (now && !before[f] && k > 0)
-                claims[k] += (claims[k].empty() ? "" : "; ") + facts[f].text;
-            before[f] = now;
-        }
-        if (k > 0 && claims[k].empty() && !pipeline.stages[k - 1].divides && pipeline.stages[k - 1].matrix.isIdentity(0))
-            claims[k] = "the identity here: nothing moves";
-    }
-    return claims;
+    return claimsAtStages(pipeline, s, facts, scale);
 }
 
 std::shared_ptr<const EvaluatedScene> evaluate(const Scene& scene, MeshCache* cache)

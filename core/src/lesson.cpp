@@ -78,53 +78,10 @@ Scene readStepScene(const Json& j, const std::string& path, const std::filesyste
     }
 }
 
-Question readQuestion(const Json& j, const std::string& path, const Pipeline<double>& pipeline)
+// The question's answer as the scene gives it; an answer the file writes must agree with it.
+void solveQuestion(Question& q, const Json& j, const std::string& path, const Pipeline<double>& pipeline)
 {
-    if (!j.is_object())
-        throw InputError(path, "must be an object (got " + found(j) + ")");
-    if (!j.contains("kind"))
-        throw InputError(child(path, "kind"), "is missing");
-    const std::string kindName = readString(j["kind"], child(path, "kind"));
-    const auto named = std::find_if(std::begin(kKindNames), std::end(kKindNames),
-                                    [&](const auto& entry) { return kindName == entry.second; });
-    if (named == std::end(kKindNames))
-        throw InputError(child(path, "kind"), "must be one of where, inside, sign_w, which_stage, order, entry, "
-                                              "choice (got \"" + kindName + "\")");
-    Question q;
-    q.kind = named->first;
-    const std::set<std::string> common = {"kind", "prompt", "explanation", "answer", "tries"};
-    auto keys = [&](std::set<std::string> own, std::set<std::string> required) {
-        own.insert(common.begin(), common.end());
-        required.insert({"kind", "prompt"});
-        requireObject(j, path, own, required);
-    };
     const int n = int(pipeline.stages.size());
-    switch (q.kind) {
-    case QuestionKind::Where: keys({"point", "after", "tolerance"}, {"point", "after"}); break;
-    case QuestionKind::Inside: keys({"point"}, {"point"}); break;
-    case QuestionKind::SignW: keys({"point", "after"}, {"point", "after"}); break;
-    case QuestionKind::WhichStage: keys({"stage"}, {"stage"}); break;
-    case QuestionKind::Order: keys({}, {}); break;
-    case QuestionKind::Entry: keys({"stage", "row", "column"}, {"stage", "row", "column"}); break;
-    case QuestionKind::Choice: keys({"choices"}, {"choices", "answer"}); break;
-    }
-    q.prompt = readCaption(j["prompt"], child(path, "prompt"), true);
-    if (j.contains("explanation"))
-        q.explanation = readCaption(j["explanation"], child(path, "explanation"), false);
-    if (j.contains("point"))
-        q.point = readVec3(j["point"], child(path, "point"));
-    if (j.contains("after"))
-        q.stage = readIndex(j["after"], child(path, "after"), 1, n);
-    if (j.contains("stage"))
-        q.stage = readIndex(j["stage"], child(path, "stage"), 1, n);
-    if (j.contains("tolerance"))
-        q.tolerance = readIn(j["tolerance"], child(path, "tolerance"), 1e-9, 1);
-    if (j.contains("tries"))
-        q.tries = readIndex(j["tries"], child(path, "tries"), 1, 10);
-    for (const Stage<double>& stage : pipeline.stages)
-        if (q.kind == QuestionKind::WhichStage || q.kind == QuestionKind::Order)
-            q.choices.push_back(stage.symbol);
-
     const PointTrace<double> trace = tracePoint(pipeline, q.point);
     const std::string answerPath = child(path, "answer");
     const Json* answer = j.contains("answer") ? &j["answer"] : nullptr;
@@ -207,6 +164,56 @@ Question readQuestion(const Json& j, const std::string& path, const Pipeline<dou
         break;
     }
     }
+}
+
+Question readQuestion(const Json& j, const std::string& path, const Pipeline<double>& pipeline)
+{
+    if (!j.is_object())
+        throw InputError(path, "must be an object (got " + found(j) + ")");
+    if (!j.contains("kind"))
+        throw InputError(child(path, "kind"), "is missing");
+    const std::string kindName = readString(j["kind"], child(path, "kind"));
+    const auto named = std::find_if(std::begin(kKindNames), std::end(kKindNames),
+                                    [&](const auto& entry) { return kindName == entry.second; });
+    if (named == std::end(kKindNames))
+        throw InputError(child(path, "kind"), "must be one of where, inside, sign_w, which_stage, order, entry, "
+                                              "choice (got \"" + kindName + "\")");
+    Question q;
+    q.kind = named->first;
+    const std::set<std::string> common = {"kind", "prompt", "explanation", "answer", "tries"};
+    auto keys = [&](std::set<std::string> own, std::set<std::string> required) {
+        own.insert(common.begin(), common.end());
+        required.insert({"kind", "prompt"});
+        requireObject(j, path, own, required);
+    };
+    const int n = int(pipeline.stages.size());
+    switch (q.kind) {
+    case QuestionKind::Where: keys({"point", "after", "tolerance"}, {"point", "after"}); break;
+    case QuestionKind::Inside: keys({"point"}, {"point"}); break;
+    case QuestionKind::SignW: keys({"point", "after"}, {"point", "after"}); break;
+    case QuestionKind::WhichStage: keys({"stage"}, {"stage"}); break;
+    case QuestionKind::Order: keys({}, {}); break;
+    case QuestionKind::Entry: keys({"stage", "row", "column"}, {"stage", "row", "column"}); break;
+    case QuestionKind::Choice: keys({"choices"}, {"choices", "answer"}); break;
+    }
+    q.prompt = readCaption(j["prompt"], child(path, "prompt"), true);
+    if (j.contains("explanation"))
+        q.explanation = readCaption(j["explanation"], child(path, "explanation"), false);
+    if (j.contains("point"))
+        q.point = readVec3(j["point"], child(path, "point"));
+    if (j.contains("after"))
+        q.stage = readIndex(j["after"], child(path, "after"), 1, n);
+    if (j.contains("stage"))
+        q.stage = readIndex(j["stage"], child(path, "stage"), 1, n);
+    if (j.contains("tolerance"))
+        q.tolerance = readIn(j["tolerance"], child(path, "tolerance"), 1e-9, 1);
+    if (j.contains("tries"))
+        q.tries = readIndex(j["tries"], child(path, "tries"), 1, 10);
+    for (const Stage<double>& stage : pipeline.stages)
+        if (q.kind == QuestionKind::WhichStage || q.kind == QuestionKind::Order)
+            q.choices.push_back(stage.symbol);
+
+    solveQuestion(q, j, path, pipeline);
     return q;
 }
 
