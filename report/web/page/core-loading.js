@@ -1,0 +1,33 @@
+  // page/core-loading.js: the core loaded (or why not): the scene evaluated, the Scene and Code panels built.
+  let coreFailed = ''; // why the core did not load, if it did not
+  ViewPipeCore().catch((error) => {
+    coreFailed = `ViewPipe's core could not start in this browser (${error && error.message ? error.message : error}): ` +
+      'the stages are shown as exported, but nothing can be changed or checked.';
+    const shown = document.getElementById('scene-error');
+    shown.textContent = coreFailed;
+    shown.hidden = false;
+    return null;
+  }).then((module) => {
+    if (!module) return;
+    core = module;
+    const pipeline = evaluateScene();
+    if (!lesson) {
+      for (const dialect of JSON.parse(core.codeDialects()))
+        dialectPicker.add(new Option(dialect.title, dialect.name));
+      // With the camera's choices, which the core lists; a field being typed in keeps its text and focus.
+      const typing = fields.contains(document.activeElement) ? document.activeElement : null;
+      buildFields();
+      if (typing) {
+        const again = fields.querySelector(`[data-path='${typing.dataset.path}']:not(.field)`);
+        if (again) { again.value = typing.value; again.focus(); }
+      }
+      showCode();
+      edits.entries = [{ page: data, pipeline, text: data.scene, files: data.files }];
+      edits.at = 0;
+      openLink();
+      showEdits();
+      if (filesBeforeCore) openFiles(filesBeforeCore);
+    }
+    body.dataset.core = '1';
+  });
+

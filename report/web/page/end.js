@@ -1,0 +1,2 @@
+  // page/end.js: the script closes.
+})();

@@ -1,0 +1,61 @@
+  // page/framing.js: the picture fitted into a view, the camera as the user turned it, labels placed for it, points projected.
+  // ---- Drawing ----------------------------------------------------------------
+  function sizeOf(canvas) {
+    const box = canvas.parentElement.getBoundingClientRect();
+    return { width: Math.max(1, Math.round(box.width)), height: Math.max(1, Math.round(box.height)) };
+  }
+  function fitOverlay(overlay, size) {
+    const ratio = window.devicePixelRatio || 1;
+    overlay.width = size.width * ratio;
+    overlay.height = size.height * ratio;
+    const context = overlay.getContext('2d');
+    context.setTransform(ratio, 0, 0, ratio, 0, 0);
+    context.clearRect(0, 0, size.width, size.height);
+    return context;
+  }
+  // The export's picture fitted into the view, whole: pixels per export pixel.
+  function fitScale(size) {
+    return Math.min(size.width / data.width, size.height / data.height);
+  }
+
+  // The frame's camera with the user's orbit (about the focal point, in eye axes) and zoom.
+  function cameraMatrices(frame, size) {
+    const view = matrixOf(frame.view);
+    const focal = new THREE.Vector3(...frame.focal).applyMatrix4(view);
+    const turn = new THREE.Matrix4().makeRotationX(state.pitch * Math.PI / 180)
+      .multiply(new THREE.Matrix4().makeRotationY(state.yaw * Math.PI / 180));
+    const orbit = new THREE.Matrix4().makeTranslation(focal.x, focal.y, focal.z).multiply(turn)
+      .multiply(new THREE.Matrix4().makeTranslation(-focal.x, -focal.y, -focal.z));
+    const s = fitScale(size);
+    // z scaled down: nothing in front of the eye is clipped by near and far planes while orbiting.
+    const fit = new THREE.Matrix4().makeScale(data.width * s / size.width * state.zoom,
+                                              data.height * s / size.height * state.zoom, 0.02);
+    return { view: orbit.multiply(view), projection: fit.multiply(matrixOf(frame.projection)) };
+  }
+
+  // The stage's labels placed by the core for the view turned by the user, as at rest (in export pixels), as a
+  // lesson's step shows the scene; null where the core cannot (not loaded, or the scene's meshes left out).
+  let turned = { key: '', labels: null };
+  function labelsTurned() {
+    if (!core || data.filesLeftOut) return null;
+    const exportSize = { width: data.width, height: data.height };
+    const { view, projection } = cameraMatrices(stages[state.stage].rest, exportSize);
+    const clip = projection.multiply(view).elements; // column by column
+    const rows = [0, 1, 2, 3].flatMap((r) => [0, 1, 2, 3].map((c) => clip[4 * c + r]));
+    const shown = JSON.stringify(lesson ? lesson.steps[state.step].shown : null);
+    const key = `${state.stage} ${rows.join(' ')} ${data.scene.length} ${shown}`;
+    if (turned.key !== key) {
+      const outcome = core.placeLabels(data.scene, JSON.stringify(viewOptions()), state.stage, JSON.stringify(rows),
+                                       measureRuns, shown);
+      turned = { key, labels: outcome.error ? null : JSON.parse(outcome.text) };
+    }
+    return turned.labels;
+  }
+
+  function project(clipFromPoint, point, size) {
+    const p = new THREE.Vector4(point[0], point[1], point[2], 1).applyMatrix4(clipFromPoint);
+    if (!(p.w > 1e-12)) return null;
+    return { x: (p.x / p.w + 1) / 2 * size.width, y: (1 - p.y / p.w) / 2 * size.height };
+  }
+  const kept = (cut, point) => !cut || cut[0] * point[0] + cut[1] * point[1] + cut[2] * point[2] + cut[3] >= 0;
+

@@ -1,0 +1,254 @@
+  // page/lesson.js: a lesson: its steps (goToStep), questions asked, checked and answered, the answers saved.
+  const results = []; // one entry per question answered: {step, kind, answer, correct, tries}
+  const tries = []; // answers checked, per step
+  const closed = []; // per step: its question's answer shown
+  function buildLesson() {
+    document.getElementById('title').textContent = lesson.title;
+    document.getElementById('lesson').hidden = false;
+    document.getElementById('scene-editor').hidden = true;
+    document.getElementById('code-editor').hidden = true;
+    body.classList.add('lesson');
+    document.querySelector('header .keys').textContent =
+      'Keys: ← → (or Page Up, Page Down, Space) go through the steps, Home and End; Shift+arrows or drag orbit, ' +
+      '+ − zoom, 0 resets the view; answer a question, then Check (Enter).';
+    document.querySelector('#stepper .buttons #play').hidden = true;
+    document.getElementById('save').addEventListener('click', () => {
+      download(JSON.stringify({ lesson: lesson.title, answers: results.filter(Boolean) }, null, 2), 'lesson-results.json');
+    });
+  }
+
+  function matrixLatex(rows) {
+    let latex = '\\begin{bmatrix}';
+    for (let r = 0; r < 4; ++r)
+      latex += rows.slice(4 * r, 4 * r + 4).map(format).join(' & ') + (r < 3 ? ' \\\\ ' : '');
+    return latex + '\\end{bmatrix}';
+  }
+
+  // The question of a step: the student answers, the answer is checked, then shown.
+  function showQuestion(step, index) {
+    const box = document.getElementById('question');
+    box.textContent = '';
+    const question = step.question;
+    body.classList.toggle('asking', !!question && !closed[index]);
+    if (!question) return;
+    const prompt = document.createElement('p');
+    prompt.className = 'prompt';
+    setRichText(prompt, question.prompt);
+    box.appendChild(prompt);
+    // Which stage the question is about, where naming it gives nothing away.
+    if (question.stage && question.kind !== 'which_stage') {
+      const about = document.createElement('p');
+      about.className = 'about';
+      const symbol = `$${data.stages[question.stage].symbolMath}$`;
+      setRichText(about, question.kind === 'entry' ? `The matrix of stage ${question.stage}, ${symbol}.`
+                                                   : `After stage ${question.stage}, ${symbol}.`);
+      box.appendChild(about);
+    }
+    const form = document.createElement('form');
+    box.appendChild(form);
+    const feedback = document.createElement('p');
+    feedback.className = 'feedback'; // read through #live, once
+    let read = null; // the answer as the core's checkAnswer takes it, or null when none is picked
+    const input = (label) => {
+      const field = document.createElement('input');
+      field.type = 'text';
+      field.inputMode = 'decimal';
+      field.setAttribute('aria-label', label);
+      field.placeholder = label;
+      form.appendChild(field);
+      return field;
+    };
+    const picks = (labels) => {
+      const group = document.createElement('div');
+      group.setAttribute('role', 'radiogroup');
+      labels.forEach((label, k) => {
+        const option = document.createElement('label');
+        const radio = document.createElement('input');
+        radio.type = 'radio';
+        radio.name = 'answer-' + index;
+        radio.value = k;
+        option.append(radio, ' ', label);
+        group.appendChild(option);
+      });
+      form.appendChild(group);
+      return () => {
+        const chosen = form.querySelector('input[type=radio]:checked');
+        return chosen ? Number(chosen.value) : null;
+      };
+    };
+    const answerText = question.answerText; // as the app and the handout state it
+    switch (question.kind) {
+      case 'where': {
+        const fields = ['x', 'y', 'z'].map(input);
+        read = () => ({ where: fields.map((f) => f.value) });
+        break;
+      }
+      case 'inside': {
+        const chosen = picks(['inside the view volume', 'clipped away']);
+        read = () => (chosen() === null ? null : { inside: chosen() === 0 });
+        break;
+      }
+      case 'sign_w': {
+        const signs = [1, 0, -1];
+        const chosen = picks(['positive', 'zero', 'negative']);
+        read = () => (chosen() === null ? null : { signW: signs[chosen()] });
+        break;
+      }
+      case 'which_stage': {
+        const shownMatrix = document.createElement('div');
+        typeset(shownMatrix, matrixLatex(data.stages[question.stage].matrix));
+        form.appendChild(shownMatrix);
+        // Offered as the app and the handout offer them: the pipeline's order would give the answer's place away.
+        const shownOrder = question.offered;
+        const chosen = picks(shownOrder.map((k) => {
+          const span = document.createElement('span');
+          setRichText(span, question.choicesMath[k]);
+          return span;
+        }));
+        read = () => (chosen() === null ? null : { choice: shownOrder[chosen()] });
+        break;
+      }
+      case 'choice': {
+        const labels = question.choices.map((choice, k) => {
+          const span = document.createElement('span');
+          setRichText(span, `${question.letters[k]} ${choice}`); // lettered as in the app and the handout
+          return span;
+        });
+        const chosen = picks(labels);
+        read = () => (chosen() === null ? null : { choice: chosen() });
+        break;
+      }
+      case 'entry': {
+        const field = input(`entry (${question.row}, ${question.column})`);
+        read = () => ({ entry: field.value });
+        break;
+      }
+      case 'order': {
+        // The stages offered as the app and the handout offer them, moved with buttons.
+        const order = question.offered.slice();
+        const listOf = document.createElement('ol');
+        listOf.className = 'order';
+        const draw = () => {
+          listOf.textContent = '';
+          order.forEach((k, at) => {
+            const item = document.createElement('li');
+            const symbol = document.createElement('span');
+            setRichText(symbol, question.choicesMath[k]);
+            item.append(symbol, ' ');
+            for (const [label, by] of [['↑', -1], ['↓', 1]]) {
+              const button = document.createElement('button');
+              button.type = 'button';
+              button.textContent = label;
+              button.setAttribute('aria-label', `move ${question.choicesSpoken[k]} ${by < 0 ? 'up' : 'down'}`);
+              button.disabled = at + by < 0 || at + by >= order.length;
+              button.addEventListener('click', () => {
+                [order[at], order[at + by]] = [order[at + by], order[at]];
+                draw();
+                listOf.querySelectorAll('button')[2 * (at + by) + (by < 0 ? 0 : 1)].focus();
+              });
+              item.appendChild(button);
+            }
+            listOf.appendChild(item);
+          });
+        };
+        draw();
+        form.appendChild(listOf);
+        read = () => ({ order });
+        break;
+      }
+    }
+    const check = document.createElement('button');
+    check.type = 'submit';
+    check.textContent = 'Check';
+    form.appendChild(check);
+    box.appendChild(feedback);
+    const reveal = document.createElement('div');
+    reveal.className = 'reveal';
+    reveal.hidden = true;
+    box.appendChild(reveal);
+    const live = document.getElementById('live');
+    const say = (text) => { feedback.textContent = text; live.textContent = text; };
+    const tryAgain = () => {
+      const left = question.tries - tries[index];
+      feedback.className = 'feedback wrong';
+      feedback.textContent = `Not quite. Try again: ${left === 1 ? 'one more try' : left + ' more tries'} before the answer is shown.`;
+    };
+    // The question closed: the verdict, the answer, why, and (when just answered) the stage it is about.
+    const close = (correct, justAnswered) => {
+      form.querySelectorAll('input, button').forEach((control) => { control.disabled = true; });
+      setRichText(feedback, correct ? 'Right.' : `Not quite: the answer is ${answerText}.`);
+      feedback.className = 'feedback ' + (correct ? 'right' : 'wrong');
+      body.classList.remove('asking');
+      reveal.hidden = false;
+      reveal.textContent = '';
+      const said = document.createElement('p');
+      setRichText(said, `Answer: ${answerText}.`);
+      reveal.appendChild(said);
+      if (question.explanation) {
+        const why = document.createElement('p');
+        setRichText(why, question.explanation);
+        reveal.appendChild(why);
+      }
+      if (!justAnswered) return;
+      if (question.point) state.traced = question.point;
+      const revealed = revealedStage(step);
+      if (revealed !== state.stage) goTo(revealed, true);
+      else { showPanels(); drawWorld(); }
+      // Read once answered: the verdict, why, and the step's text (kept back while asking: it may hold the answer).
+      live.textContent = (correct ? 'Right.' : `Not quite: the answer is ${question.answerPlain}.`) +
+        (question.explanation ? ' ' + question.explanationPlain : '') + ' ' + step.captionPlain;
+      body.dataset.answered = String(closed.filter(Boolean).length);
+    };
+    form.addEventListener('submit', (event) => {
+      event.preventDefault();
+      const typed = read();
+      if (!typed) return say('Pick an answer first.');
+      if (!core) return say(coreFailed || 'The page is still loading: check again in a moment.');
+      // Checked by the core, as the app checks it.
+      const outcome = core.checkAnswer(data.scene, question.source, JSON.stringify(typed));
+      if (outcome.error === 'answer: unreadable')
+        return say('Answer first: every field needs a number (a fraction such as p/q is fine).');
+      if (outcome.error) return say(outcome.error);
+      const checked = JSON.parse(outcome.text);
+      tries[index] = (tries[index] || 0) + 1;
+      // The last answer checked, and how many were.
+      results[index] = { step: index + 1, kind: question.kind, answer: checked.answer, correct: checked.right, tries: tries[index] };
+      if (!checked.right && tries[index] < question.tries) { // tried again, the answer kept back
+        tryAgain();
+        live.textContent = feedback.textContent;
+        return;
+      }
+      closed[index] = true;
+      close(checked.right, true);
+    });
+    // Back at a step: a closed question stays closed, a try used is said.
+    if (closed[index]) close(results[index] ? results[index].correct : false, false);
+    else if (tries[index]) tryAgain();
+  }
+  // The stage a step shows once its question is closed, or all along without one.
+  const revealedStage = (step) =>
+    step.question && step.question.stage ? Math.max(step.stage, step.question.stage) : step.stage;
+
+  function goToStep(index, jump) {
+    index = Math.max(0, Math.min(lesson.steps.length - 1, index));
+    const step = lesson.steps[index];
+    const sameScene = step.scene === shownScene;
+    state.step = index;
+    useScene(step.scene);
+    Object.assign(state, { yaw: step.yaw, pitch: step.pitch, zoom: step.zoom });
+    state.traced = (step.question && step.question.point) || step.trace || null; // the point asked about, as the app marks it
+    document.getElementById('step-title').textContent = `Step ${index + 1} of ${lesson.steps.length}`;
+    setRichText(document.getElementById('step-caption'), step.caption);
+    showQuestion(step, index);
+    // Asking about stage K, the view waits before it: the answer comes with K's transition.
+    const question = step.question;
+    const shownStage = closed[index] ? revealedStage(step)
+      : question && question.stage && question.kind !== 'entry' ? Math.min(step.stage, question.stage - 1) : step.stage;
+    const from = state.stage;
+    if (sameScene && !jump && Math.abs(shownStage - from) === 1) goTo(shownStage, true);
+    else goTo(shownStage, false);
+    // While a question waits, its step's text is kept back (it may give the answer away), as on the screen.
+    document.getElementById('live').textContent = `Step ${index + 1} of ${lesson.steps.length}. ` +
+      (step.question && !closed[index] ? 'Question: ' + step.question.promptPlain : step.captionPlain);
+  }
+

@@ -1,0 +1,112 @@
+  // page/panels.js: the stage list, legends, the matrices (KaTeX), the trace table; showRest shows a stage at rest.
+  // ---- Panels -------------------------------------------------------------------
+  const list = document.getElementById('stage-list');
+  function buildPanels() {
+    list.textContent = '';
+    stages.forEach((stage, k) => {
+      const item = document.createElement('li');
+      setRichText(item, stage.list);
+      item.tabIndex = -1;
+      item.addEventListener('click', () => goTo(k, false));
+      list.appendChild(item);
+    });
+    legend(document.getElementById('legend'), data.legend);
+    legend(document.getElementById('projected-legend'), data.projected.legend);
+    setRichText(document.getElementById('note'), data.note);
+    vertices = floatsOf(data.vertices);
+  }
+  function legend(element, entries) {
+    element.textContent = '';
+    for (const entry of entries) {
+      const row = document.createElement('div');
+      const swatch = document.createElement('i');
+      if (entry.swatch === 'line') swatch.style.borderBottom = `3px solid ${cssColor(entry.color, entry.opacity)}`;
+      else if (entry.swatch === 'dot') Object.assign(swatch.style, { width: '0.7em', borderRadius: '50%', background: cssColor(entry.color) });
+      else swatch.style.background = cssColor(entry.color, Math.max(0.35, entry.opacity));
+      const text = document.createElement('span');
+      setRichText(text, entry.text);
+      row.append(swatch, text);
+      if (entry.canonical) row.dataset.canonical = '1';
+      element.appendChild(row);
+    }
+    element.hidden = entries.length === 0;
+  }
+
+  function typeset(element, latex) {
+    try {
+      katex.render(latex, element, { displayMode: true, throwOnError: true });
+    } catch (error) {
+      element.textContent = latex;
+    }
+  }
+  function format(x) {
+    return Math.abs(x) < 1e-12 ? '0' : Number(x.toPrecision(6)).toString();
+  }
+  function showTrace() {
+    const element = document.getElementById('trace');
+    if (!state.traced) {
+      element.innerHTML = '<p>Click a vertex of an object (or press T) to trace it through the stages.</p>';
+      return;
+    }
+    const table = document.createElement('table');
+    table.innerHTML = '<caption>The traced vertex after each stage</caption><tr><th>stage</th><th>x</th><th>y</th><th>z</th><th>w</th></tr>';
+    let p = new THREE.Vector4(...state.traced, 1);
+    stages.forEach((stage, k) => {
+      if (k > 0) p = stage.divides ? (p.w !== 0 ? p.clone().divideScalar(p.w) : p) : p.clone().applyMatrix4(matrixOf(stage.matrix));
+      const row = table.insertRow();
+      const cell = row.insertCell();
+      if (k === 0) cell.textContent = 'world';
+      else setRichText(cell, `$${stage.symbolMath}$`);
+      for (const value of [p.x, p.y, p.z, p.w]) row.insertCell().textContent = format(value);
+      if (k === state.stage) row.style.fontWeight = 'bold';
+    });
+    element.replaceChildren(table);
+  }
+  function showPanels() {
+    const stage = stages[state.stage];
+    list.querySelectorAll('li').forEach((item, k) => {
+      if (k === state.stage) item.setAttribute('aria-current', 'step');
+      else item.removeAttribute('aria-current');
+    });
+    setRichText(document.getElementById('matrix-title'), stage.list);
+    if (state.stage === 0) {
+      document.getElementById('matrix').textContent = 'The world: no matrix yet.';
+      document.getElementById('symbolic').textContent = '';
+      document.getElementById('cumulative').textContent = '';
+    } else {
+      const symbolic = document.getElementById('symbolic');
+      symbolic.textContent = '';
+      if (stage.symbolic) {
+        const matrix = document.createElement('div');
+        matrix.className = 'symbolic';
+        typeset(matrix, stage.symbolic.latex);
+        symbolic.appendChild(matrix);
+        for (const note of stage.symbolic.notes) {
+          const line = document.createElement('p');
+          line.className = 'definition';
+          setRichText(line, note);
+          symbolic.appendChild(line);
+        }
+      }
+      // A lesson step's own form of its stage's matrix: the entries it highlights marked.
+      const step = lesson && lesson.steps[state.step];
+      const own = step && step.latex && step.latexStage === state.stage && step.scene === shownScene;
+      typeset(document.getElementById('matrix'), own ? step.latex : stage.latex);
+      typeset(document.getElementById('cumulative'), stage.cumulativeLatex);
+    }
+    showTrace();
+    document.getElementById('live').textContent =
+      `Stage ${state.stage} of ${last}: ${stage.listText}.` + (stage.claim ? ' ' + stage.claimText + '.' : '');
+    body.dataset.stage = state.stage;
+  }
+
+  function showRest(k) {
+    if (frameAxes) retire(worldScene, frameAxes);
+    const stage = stages[k];
+    const axes = { surface: false, positions: stage.frame, color: data.frameColor };
+    frameAxes = drawable(geometryOf(axes), axes, 1, 2 * data.primitives.length + 1);
+    worldScene.add(frameAxes);
+    shown = { frame: stage.rest, atRest: true, ghost: stage.ghost };
+    drawWorld();
+  }
+

@@ -1,0 +1,51 @@
+  // page/picture-text.js: the caption, legend and note placed as the stage's picture lays them out; label runs' fonts.
+  // The caption, legend and note where the stage's picture has them (its layout, in export pixels), fitted as it is.
+  let placedText = '';
+  function placePictureText(size) {
+    const layout = stages[state.stage].layout;
+    const key = `${state.stage} ${size.width} ${size.height}`;
+    if (!layout || key === placedText) return;
+    placedText = key;
+    const s = fitScale(size);
+    const setBox = (element, box) => Object.assign(element.style, {
+      left: `${(box[0] - data.width / 2) * s + size.width / 2}px`, top: `${(box[1] - data.height / 2) * s + size.height / 2}px`,
+      right: 'auto', bottom: 'auto', maxWidth: 'none', margin: '0' });
+    const setText = (element, part) => {
+      setBox(element, part.box);
+      element.textContent = '';
+      part.lines.forEach((line, k) => {
+        if (k) element.append('\n');
+        const span = document.createElement('span');
+        setRichText(span, line);
+        element.appendChild(span);
+      });
+      Object.assign(element.style, { fontSize: `${part.size * s}px`, lineHeight: `${(part.line || 1.25 * part.size) * s}px` });
+    };
+    setText(document.getElementById('caption'), layout.caption);
+    setText(document.getElementById('note'), layout.note);
+    const legend = document.getElementById('legend');
+    legend.hidden = !layout.legend;
+    if (!layout.legend) return;
+    const { box, size: textSize, row, swatch, padding } = layout.legend;
+    setBox(legend, box);
+    Object.assign(legend.style, { fontSize: `${textSize * s}px`, padding: `${padding * s}px`, boxSizing: 'border-box',
+                                  width: `${(box[2] - box[0]) * s}px`, height: `${(box[3] - box[1]) * s}px` });
+    legend.querySelectorAll('div').forEach((entry) => { entry.style.height = `${row * s}px`; entry.style.gap = `${padding * s}px`; });
+    legend.querySelectorAll('i').forEach((mark) => { // half its slot, centred, as the app's legend draws it; a dot round
+      const width = mark.style.borderRadius ? 0.4 * swatch / 3 : swatch / 2;
+      Object.assign(mark.style, { width: `${width * s}px`, height: mark.style.borderRadius ? `${width * s}px` : '',
+                                  margin: `0 ${(swatch - width) / 2 * s}px` });
+    });
+  }
+
+  // A label's runs (the core's math: [text, italic, level]) as the PNG sets them: scripts smaller, moved off the line.
+  const fontOf = (px) => `${px}px "DejaVu Sans", "Segoe UI", Helvetica, Arial, sans-serif`;
+  const runFont = (run, px, weight) =>
+    (run[1] ? 'italic ' : '') + weight + fontOf(px * Math.pow(data.scripts.scale, Math.abs(run[2])));
+  function runsWidth(context, runs, px, weight) {
+    return runs.reduce((width, run) => {
+      context.font = runFont(run, px, weight);
+      return width + context.measureText(run[0]).width;
+    }, 0);
+  }
+

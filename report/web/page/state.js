@@ -1,0 +1,39 @@
+  // page/state.js: what is shown (stage, step, orbit, traced vertex), read from and written to the link's fragment.
+  // ---- State ------------------------------------------------------------------
+  const state = { stage: 0, step: 0, yaw: 0, pitch: 0, zoom: 1, figure: false, traced: null };
+  let shown = null; // the frame drawn: {frame, atRest, ghost}
+  let animation = null;
+  let playing = null;
+  let linkedStage = 0;
+
+  function readFragment() {
+    const values = new URLSearchParams(location.hash.slice(1));
+    const number = (name, fallback) => {
+      const value = Number(values.get(name));
+      return values.has(name) && Number.isFinite(value) ? value : fallback;
+    };
+    linkedStage = Math.max(0, Math.round(number('stage', 0))); // the linked scene may have more stages
+    state.stage = Math.min(last, linkedStage);
+    state.step = lesson ? Math.min(lesson.steps.length - 1, Math.max(0, Math.round(number('step', 1) - 1))) : 0;
+    state.yaw = number('yaw', 0);
+    state.pitch = Math.max(-89, Math.min(89, number('pitch', 0)));
+    state.zoom = Math.max(0.1, Math.min(20, number('zoom', 1)));
+    state.figure = values.has('figure');
+    body.classList.toggle('figure', state.figure);
+    pendingLink = values.get('scene'); // for the core, once it is loaded
+  }
+  function writeFragment() {
+    const values = new URLSearchParams();
+    // A lesson's moment is its step (its stage would name a which_stage answer).
+    if (lesson) values.set('step', state.step + 1);
+    else values.set('stage', state.stage);
+    if (state.yaw) values.set('yaw', state.yaw.toFixed(1));
+    if (state.pitch) values.set('pitch', state.pitch.toFixed(1));
+    if (state.zoom !== 1) values.set('zoom', state.zoom.toFixed(3));
+    if (state.figure) values.set('figure', '');
+    const linked = linkedSceneText();
+    if (linked) values.set('scene', linked);
+    history.replaceState(null, '', '#' + values.toString().replace(/=$|=(?=&)/g, ''));
+  }
+  const userMoved = () => state.yaw !== 0 || state.pitch !== 0 || state.zoom !== 1;
+
