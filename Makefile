@@ -3,18 +3,24 @@
 JOBS ?= $(shell nproc)
 MAKEFLAGS += --no-print-directory
 
-.PHONY: all deps build run test clean
+.PHONY: all deps build app run test clean
 
 all: build
 
 deps:
 	@scripts/install-deps.sh
 
+# Everything: the program, its tests and benchmarks.
 build: deps
 	@cmake --preset default >/dev/null
 	@cmake --build build -j $(JOBS)
 
-run: build
+# The program alone (and the core compiled for its web pages): what `make run` needs.
+app: deps
+	@cmake --preset default >/dev/null
+	@cmake --build build -j $(JOBS) --target viewpipe
+
+run: app
 	@scripts/run.sh
 
 test: build
