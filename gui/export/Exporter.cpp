@@ -278,7 +278,9 @@ void exportWebPage(const std::shared_ptr<const EvaluatedScene>& scene, const fs:
     options.theme = theme;
     Steps step(progress, cancel, pageSteps(*scene));
     try {
-        writeFileAtomically(file, scenePage(scene, options, step));
+        const std::string page = scenePage(scene, options, step);
+        if (!cancel) // a Cancel seen in the last step's progress
+            writeFileAtomically(file, page);
     } catch (const Cancelled&) {
         // Nothing was written.
     }

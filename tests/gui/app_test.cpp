@@ -21,6 +21,8 @@
 #include <QVTKOpenGLNativeWidget.h>
 #include <QtTest>
 
+#include <atomic>
+
 #include <vtkActor.h>
 #include <vtkCamera.h>
 #include <vtkCellArray.h>
@@ -410,6 +412,15 @@ private slots:
         QVERIFY(html.contains("<title>Foley's house · ViewPipe</title>"));
         QVERIFY(html.contains("\"transitions\""));
         QCOMPARE(QDir(dir.filePath("lecture")).entryList(QDir::Files | QDir::Hidden).size(), 1); // nothing left beside it
+
+        // Cancel clicked as the last step reports (the progress dialog's events run then): the page stays as it was.
+        file.close();
+        QVERIFY(QFile::resize(page, 0));
+        std::atomic<bool> cancel{false};
+        exportWebPage(w.document()->evaluated(), page.toStdString(), Theme::Light,
+                      [&cancel](int, int, const std::string& what) { cancel = what == "scene.html"; }, cancel);
+        QVERIFY(cancel);
+        QCOMPARE(QFileInfo(page).size(), 0);
     }
 
     void presentsFullScreenWithAClickersKeys()
