@@ -26,7 +26,7 @@ int runBench(const BenchCommandOptions& options, const BenchPlotWriter& writePlo
         o.mpfrBits = options.bits;
         if (!options.viewport.empty())
             std::tie(o.viewport.width, o.viewport.height) = parseSize(options.viewport, "--viewport");
-        const BenchResult result = runBench(
+        const BenchResult result = viewpipe::runBench(
             scene, evaluateScene(scene)->objectVertices(), o, [&](int done, int total, const std::string& tier) {
                 if (!options.json && !tier.empty())
                     std::cerr << "[" << done + 1 << "/" << total << "] timing and measuring " << tier << "\n";
