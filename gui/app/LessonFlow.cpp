@@ -259,11 +259,10 @@ bool LessonFlow::saveLessonResults(const QString& path)
     }
 }
 
-void LessonFlow::chooseAndSaveResults()
+bool LessonFlow::chooseAndSaveResults()
 {
     const QString path = chooseFileToSave(window_, tr("Save my answers"), "lesson-results.json", tr("Results (*.json)"));
-    if (!path.isEmpty())
-        saveLessonResults(path);
+    return !path.isEmpty() && saveLessonResults(path);
 }
 
 bool LessonFlow::confirmDiscardLesson()
@@ -282,11 +281,8 @@ bool LessonFlow::confirmDiscardLesson()
                                                   QMessageBox::Save | QMessageBox::Discard | QMessageBox::Cancel);
         if (answer == QMessageBox::Cancel)
             return false;
-        if (answer == QMessageBox::Save) {
-            const QString path = chooseFileToSave(window_, tr("Save my answers"), "lesson-results.json", tr("Results (*.json)"));
-            if (path.isEmpty() || !saveLessonResults(path))
-                return false;
-        }
+        if (answer == QMessageBox::Save && !chooseAndSaveResults())
+            return false;
     }
     if (!lesson_->isModified())
         return true;

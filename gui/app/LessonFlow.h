@@ -60,7 +60,8 @@ private:
     // The scene, stage and world view now, as a lesson step.
     LessonStep stepFromView() const;
     bool saveLessonAs(bool askForName = false);
-    void chooseAndSaveResults();
+    // Save My Answers: false when cancelled or refused.
+    bool chooseAndSaveResults();
 
     MainWindow* window_;
     LessonDocument* lesson_;

@@ -70,8 +70,8 @@ MainWindow::MainWindow(QWidget* parent)
         worldWindow_->Render();
         worldWidget_->update();
     });
+    // The matrices follow the stage at rest; the stage panel follows the stepper itself.
     connect(stepper_, &Stepper::rested, this, &MainWindow::showStageDetails);
-    connect(stepper_, &Stepper::moved, this, &MainWindow::updateMatrices);
     connect(presentMode_, &PresentMode::stepRequested, lessonFlow_, &LessonFlow::advance);
     connect(effectsMenu_, &EffectsMenu::message, this, &MainWindow::showMessage);
     connect(document_, &Document::changed, this, &MainWindow::onDocumentChanged);
