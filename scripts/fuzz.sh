@@ -1,8 +1,8 @@
 #!/usr/bin/env bash
 # Fuzzes the parsers of untrusted files (scene JSON, OBJ/PLY/STL meshes) with
 # libFuzzer under ASan and UBSan: builds fuzz/ with clang into build-fuzz/ (the
-# core libraries only, no Qt or VTK), runs each target for SECONDS (default 60)
-# on a temporary copy of its seed corpus, prints the executions and exits 1 if
+# core libraries only, no Qt or VTK), runs the targets side by side, each for
+# SECONDS (default 60) on a temporary copy of its seed corpus, prints the executions and exits 1 if
 # any target crashed (the input is kept in build-fuzz/crashes/).
 # Usage: scripts/fuzz.sh [SECONDS-PER-TARGET]
 # VIEWPIPE_FUZZ_BUILD, if set, is the command that builds: it gets the build
@@ -25,20 +25,29 @@ fi
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
 mkdir -p "$build/crashes"
+# The targets run side by side, each on a core of its own where there are two.
+fuzz_target() {
+  local target=$1 name=${1%_fuzz}
+  cp -r "fuzz/corpus/$name" "$work/$name"
+  "$build/$target" "$work/$name" -dict="fuzz/$name.dict" -max_total_time="$seconds" -timeout=25 \
+    -artifact_prefix="$build/crashes/$target-" -print_final_stats=1 >"$build/$target.log" 2>&1
+}
+declare -A pids
+for target in "${targets[@]}"; do
+  fuzz_target "$target" &
+  pids[$target]=$!
+done
 status=0
 for target in "${targets[@]}"; do
   name=${target%_fuzz}
-  corpus=$work/$name
-  cp -r "fuzz/corpus/$name" "$corpus"
   log=$build/$target.log
-  if "$build/$target" "$corpus" -dict="fuzz/$name.dict" -max_total_time="$seconds" -timeout=25 \
-       -artifact_prefix="$build/crashes/$target-" -print_final_stats=1 >"$log" 2>&1; then
+  if wait "${pids[$target]}"; then
     result=ok
   else
     result="CRASHED (see $log and $build/crashes/)"
     status=1
   fi
   runs=$(sed -n 's/^stat::number_of_executed_units: *//p' "$log" | tail -n 1)
-  echo "$target: ${runs:-?} executions in $seconds s, $(find "$corpus" -type f | wc -l) corpus inputs: $result"
+  echo "$target: ${runs:-?} executions in $seconds s, $(find "$work/$name" -type f | wc -l) corpus inputs: $result"
 done
 exit $status
