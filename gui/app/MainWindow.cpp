@@ -143,6 +143,8 @@ void MainWindow::buildViews()
     splitter->setStretchFactor(1, 3);
     splitter->setSizes({500, 300});
     setCentralWidget(splitter);
+    // From the start: a bar appearing with the first message (or after presenting) would shrink the views.
+    statusBar();
 }
 
 void MainWindow::buildDocks()

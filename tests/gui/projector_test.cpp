@@ -8,6 +8,7 @@
 #include <QVTKOpenGLNativeWidget.h>
 #include <QtTest>
 
+#include <vtkCamera.h>
 #include <vtkRenderWindow.h>
 #include <vtkRendererCollection.h>
 
@@ -32,6 +33,10 @@ class ProjectorTest : public QObject {
     Q_OBJECT
 
 private slots:
+    // Each test starts with the system's font, not the last test's Larger Text.
+    void initTestCase() { systemFont_ = QApplication::font(); }
+    void init() { QApplication::setFont(systemFont_); }
+
     void presentingWithLargerTextEveryStageReads()
     {
         QCOMPARE(QGuiApplication::primaryScreen()->size(), QSize(1280, 720));
@@ -47,12 +52,7 @@ private slots:
         QTest::keyClick(window.get(), Qt::Key_F5);
         QTRY_VERIFY(window->presentMode()->isPresenting());
         QTRY_COMPARE(window->size(), QSize(1280, 720));
-        // Until the views have their full-screen sizes (the layout settles over a few events).
-        QWidget* projected = window->findChild<QWidget*>("projectedView");
-        for (QSize last; projected->size() != last;) {
-            last = projected->size();
-            QTest::qWait(100);
-        }
+        settle(*window);
 
         const int pictures = showEveryBuiltInStage(*window, [&](const QString& where) {
             for (const char* view : {"worldView", "projectedView"}) {
@@ -62,6 +62,63 @@ private slots:
         });
         QVERIFY(pictures > 100);
         closeWindow(window);
+    }
+
+    // Present (F5), two steps on (Page Down), leave (Esc): the window as it
+    // was, the world view as it showed that stage before presenting, every
+    // text inside it.
+    void leavingPresentShowsTheWorldViewAsBefore()
+    {
+        auto window = openWindow(kScenes + "/house.json", {1000, 600});
+        QVERIFY(window);
+        settle(*window);
+        const QSize before = window->size();
+        vtkCamera* camera = renderer(*window, "worldView")->GetActiveCamera();
+        const auto where = [camera] {
+            std::array<double, 6> at{};
+            camera->GetPosition(at.data());
+            camera->GetFocalPoint(at.data() + 3);
+            return at;
+        };
+        window->stepper()->goToStage(2, false);
+        window->renderNow();
+        const std::array<double, 6> framed = where();
+        window->stepper()->goToStage(0, false);
+
+        QTest::keyClick(window.get(), Qt::Key_F5);
+        QTRY_VERIFY(window->presentMode()->isPresenting());
+        QTRY_COMPARE(window->size(), QSize(1280, 720));
+        settle(*window);
+        QTest::keyClick(window.get(), Qt::Key_PageDown);
+        QTest::keyClick(window.get(), Qt::Key_PageDown);
+        QTRY_COMPARE(window->stepper()->stage(), 2);
+        QTest::keyClick(window.get(), Qt::Key_Escape);
+        QTRY_VERIFY(!window->presentMode()->isPresenting());
+        QTRY_COMPARE(window->size(), before);
+        settle(*window);
+
+        const std::array<double, 6> shown = where();
+        for (int k = 0; k < 6; ++k)
+            QVERIFY2(std::abs(shown[k] - framed[k]) < 1e-6 * (1 + std::abs(framed[k])),
+                     qPrintable(QString("camera coordinate %1: %2 after presenting, %3 before").arg(k).arg(shown[k]).arg(framed[k])));
+        const std::string trouble = textTrouble(renderer(*window, "worldView"));
+        QVERIFY2(trouble.empty(), trouble.c_str());
+        closeWindow(window);
+    }
+
+private:
+    QFont systemFont_;
+
+    // Until the views have their sizes (the layout settles over a few events).
+    static void settle(MainWindow& window)
+    {
+        const auto sizes = [&window] {
+            return std::pair{window.findChild<QWidget*>("worldView")->size(), window.findChild<QWidget*>("projectedView")->size()};
+        };
+        for (std::pair<QSize, QSize> last; sizes() != last;) {
+            last = sizes();
+            QTest::qWait(100);
+        }
     }
 };
 
