@@ -293,6 +293,7 @@ void MainWindow::buildMenus()
 
 void MainWindow::showOpenedScene()
 {
+    const RenderHold once(*this);
     painter_->setScene(document_->evaluated());
     sceneFiles_->autosave()->saveNow(); // the previous scene's unsaved edits are not this one's to recover
     traceVertex(std::nullopt);
@@ -360,11 +361,25 @@ void MainWindow::updateCaptions()
 
 void MainWindow::renderNow()
 {
+    renderWanted_ = renderHolds_ > 0;
+    if (renderWanted_)
+        return;
     worldWindow_->Render();
     if (projectedWidget_->isVisible())
         projectedWindow_->Render();
     worldWidget_->update();
     projectedWidget_->update();
+}
+
+MainWindow::RenderHold::RenderHold(MainWindow& window) : window_(window)
+{
+    ++window_.renderHolds_;
+}
+
+MainWindow::RenderHold::~RenderHold()
+{
+    if (--window_.renderHolds_ == 0 && window_.renderWanted_)
+        window_.renderNow();
 }
 
 QImage MainWindow::worldViewImage()

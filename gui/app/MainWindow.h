@@ -67,7 +67,20 @@ public:
     // The stage panel, matrices and captions for the stage shown and the
     // lesson's question (hidden while it waits); then draws both views.
     void showStageDetails();
+    // Draws both views, or once the last RenderHold ends if one is held.
     void renderNow();
+    // Held through an operation that changes several things (opening a
+    // scene, entering Present): the views are drawn once, at its end.
+    class RenderHold {
+    public:
+        explicit RenderHold(MainWindow& window);
+        ~RenderHold();
+        RenderHold(const RenderHold&) = delete;
+        RenderHold& operator=(const RenderHold&) = delete;
+
+    private:
+        MainWindow& window_;
+    };
     // The world view as it is on screen.
     QImage worldViewImage();
 
@@ -105,6 +118,9 @@ protected:
     void dropEvent(QDropEvent* event) override;
 
 private:
+    int renderHolds_ = 0;
+    bool renderWanted_ = false; // asked for while held
+
     void buildViews();
     void buildDocks();
     void addActions();

@@ -41,6 +41,7 @@ void PresentMode::setPresenting(bool on, QScreen* screen)
 {
     if (on == isPresenting())
         return;
+    const MainWindow::RenderHold once(*window_);
     if (on)
         enter(screen);
     else
@@ -49,7 +50,6 @@ void PresentMode::setPresenting(bool on, QScreen* screen)
         shortcut->setEnabled(on);
     // A class sees the lesson, not its editing.
     window_->lessonPanel()->setEditorAvailable(!on);
-    window_->renderNow();
 }
 
 void PresentMode::enter(QScreen* screen)
