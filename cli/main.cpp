@@ -1,4 +1,4 @@
-// viewpipe: the one executable. Each subcommand is a file of gui/commands/;
+// viewpipe: the one executable. Each subcommand is a file of cli/;
 // those that print need neither VTK nor Qt, those that draw do. Bad input
 // exits 2 with one line "FILE: field.path: reason", internal errors exit 1.
 
@@ -6,9 +6,9 @@
 
 #include <string>
 
-#include "commands/command.hpp"
-#include "commands/drawing_commands.hpp"
-#include "commands/text_commands.hpp"
+#include "command.hpp"
+#include "drawing_commands.hpp"
+#include "text_commands.hpp"
 #include "viewpipe/version.hpp"
 
 int main(int argc, char** argv)
