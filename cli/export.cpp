@@ -88,7 +88,8 @@ void addExportCommand(CLI::App& app)
     command->add_option("--scale", options->scale, "Pixels per unit of size, 1 to 4 (2 for high-DPI)")
         ->capture_default_str();
     command->add_option("--text-scale", options->textScale,
-                        "Text size in percent, 50 to 400 (labels at least 2.4 % of the width at 100)")
+                        "Text size in percent, " + std::to_string(kMinTextScale) + " to " + std::to_string(kMaxTextScale) +
+                            " (labels at least 2.4 % of the width at 100)")
         ->capture_default_str();
     command->add_option("--stages", options->stages, "all, or a list such as 0,2,4-5")->capture_default_str();
     command->add_option("--theme", options->theme, "light or dark")

@@ -3,6 +3,7 @@
 #include "command.hpp"
 #include "drawing_commands.hpp"
 #include "app/OpenCommand.h"
+#include "viewpipe/report/style.hpp"
 
 namespace viewpipe::commands {
 namespace {
@@ -23,8 +24,7 @@ int runOpen(int argc, char** argv, OpenCommandOptions& options)
                 throw InputError("--size", "must be WxH with 200 <= W <= 8192 and 150 <= H <= 8192");
         }
         if (options.textScale != -1) {
-            if (options.textScale < 70 || options.textScale > 360)
-                throw InputError("--text-scale", "must be a whole percent from 70 to 360 (got " + std::to_string(options.textScale) + ")");
+            checkTextScale(options.textScale, "--text-scale");
             open.textScale = options.textScale;
         }
         if (!options.theme.empty())
@@ -46,7 +46,8 @@ void addOpenCommand(CLI::App& app, int argc, char** argv)
     command->add_option("--size", options->size,
                         "Window size WxH (default: 1600x950 for a screenshot, else fitted to the screen)");
     command->add_option("--text-scale", options->textScale,
-                        "Text size in percent of the default, as View > Larger Text sets it (70 to 360)");
+                        "Text size in percent of the default, as View > Larger Text sets it (" + std::to_string(kMinTextScale) +
+                            " to " + std::to_string(kMaxTextScale) + ")");
     command->add_option("--theme", options->theme, "dark or light")->check(CLI::IsMember({"dark", "light"}));
     command->add_option("--panel", open.panel, "Dock in front: stages, matrices, parameters, code (below the parameters), accuracy (measured) or depth")
         ->check(CLI::IsMember({"stages", "matrices", "parameters", "code", "accuracy", "depth"}));

@@ -401,7 +401,8 @@ void MainWindow::setTheme(Theme theme)
 
 void MainWindow::setFontSize(int points, bool remember)
 {
-    fontSize_ = std::clamp(points, 7, 40);
+    // The range `open --text-scale` and the exports take.
+    fontSize_ = std::clamp(points, (kDefaultFontSize * kMinTextScale + 99) / 100, kDefaultFontSize * kMaxTextScale / 100);
     QFont font = QApplication::font();
     font.setPointSize(fontSize_);
     QApplication::setFont(font);

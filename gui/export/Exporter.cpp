@@ -257,8 +257,7 @@ void writeAnimation(OffscreenPainter& offscreen, const EvaluatedScene& evaluated
 void validate(const ExportOptions& o)
 {
     validatePictureSize(o.width, o.height, o.scale);
-    if (o.textScale < 50 || o.textScale > 400)
-        throw InputError("--text-scale", "must be a whole percent from 50 to 400 (got " + std::to_string(o.textScale) + ")");
+    checkTextScale(o.textScale, "--text-scale");
     if (o.fps < 1 || o.fps > 120)
         throw InputError("--fps", "must be 1 to 120");
     if (o.digits < 1 || o.digits > 17)

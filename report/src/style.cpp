@@ -1,5 +1,7 @@
 #include "viewpipe/report/style.hpp"
 
+#include "viewpipe/error.hpp"
+
 #include <algorithm>
 #include <cmath>
 
@@ -56,6 +58,13 @@ std::array<unsigned char, 3> toBytes(const Rgb& color)
 double exportLabelSize(int widthPixels, double textScale)
 {
     return std::max(10.0, std::ceil(kLabelWidthShare * widthPixels * textScale)); // readable however small the picture
+}
+
+void checkTextScale(int percent, const std::string& field)
+{
+    if (percent < kMinTextScale || percent > kMaxTextScale)
+        throw InputError(field, "must be a whole percent from " + std::to_string(kMinTextScale) + " to " +
+                                    std::to_string(kMaxTextScale) + " (got " + std::to_string(percent) + ")");
 }
 
 double smallTextSize(double labelSize)

@@ -206,6 +206,20 @@ namespace {
 
 // Found crashing `pipeline` and `open` (segmentation faults, double free inside
 // VTK's readers): each is refused with its field and reason, exit 2.
+// export's and open's --text-scale take one range, the app's Larger and Smaller Text's.
+TEST(Cli, TextScaleIsOneRangeForExportAndOpen)
+{
+    const std::string out = (std::filesystem::temp_directory_path() / "viewpipe-text-scale").string();
+    for (const std::string scale : {"49", "401"})
+        for (const std::string& command : {"export " + kHouse + " --out " + out + " --text-scale ", "open " + kHouse + " --text-scale "}) {
+            const Result r = run(command + scale);
+            EXPECT_EQ(r.exitCode, 2) << command << scale;
+            EXPECT_NE(r.err.find("--text-scale: must be a whole percent from 50 to 400 (got " + scale + ")"), std::string::npos)
+                << r.err;
+        }
+    EXPECT_FALSE(std::filesystem::exists(out));
+}
+
 TEST(Cli, HostileMeshesAreRefusedByEveryCommand)
 {
     const std::string header = "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\n"

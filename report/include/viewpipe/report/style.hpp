@@ -6,6 +6,7 @@
 // colorblind people. No VTK, no Qt.
 
 #include <array>
+#include <string>
 
 #include "viewpipe/evaluated_scene.hpp"
 
@@ -30,6 +31,11 @@ Rgb backgroundColor(Theme theme, bool projectedView);
 // both (1 is 100 %), as the app's Larger Text does. Labels are never under 10 px.
 constexpr double kLabelWidthShare = 0.024, kSmallWidthShare = 0.018;
 double exportLabelSize(int widthPixels, double textScale);
+// Text scales in whole percent, 100 the default size: `export --text-scale`,
+// `open --text-scale` and the app's Larger and Smaller Text share this range.
+constexpr int kMinTextScale = 50, kMaxTextScale = 400;
+// Throws InputError naming `field` unless kMinTextScale <= percent <= kMaxTextScale.
+void checkTextScale(int percent, const std::string& field);
 // The smaller text beside labels of `labelSize`: three quarters, at least 8 px.
 double smallTextSize(double labelSize);
 
