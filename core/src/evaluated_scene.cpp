@@ -760,7 +760,8 @@ std::shared_ptr<const PolygonMesh> MeshCache::read(const std::filesystem::path& 
         if (found != entries_.end() && found->second.modified == modified && found->second.bytes == bytes)
             return found->second.mesh;
     }
-    ++fileReads_;
+    if (listener_)
+        listener_->readingMesh(file);
     auto mesh = std::make_shared<const PolygonMesh>(readMeshFile(file, field)); // reports a missing file
     if (!error)
         entries_[file] = {modified, bytes, mesh};
@@ -769,8 +770,15 @@ std::shared_ptr<const PolygonMesh> MeshCache::read(const std::filesystem::path& 
 
 std::shared_ptr<const EvaluatedScene> SceneEvaluator::evaluate(const Scene& scene)
 {
-    ++evaluations_;
+    if (listener_)
+        listener_->evaluating(scene);
     return viewpipe::evaluate(scene, &cache_);
+}
+
+void SceneEvaluator::setListener(EvaluationListener* listener)
+{
+    listener_ = listener;
+    cache_.setListener(listener);
 }
 
 std::shared_ptr<const EvaluatedScene> evaluateScene(const Scene& scene)

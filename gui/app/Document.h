@@ -28,11 +28,15 @@ public:
     const Pipeline<double>& pipeline() const { return evaluated_->pipeline; }
     // What every picture, panel and export of the scene reads.
     const std::shared_ptr<const EvaluatedScene>& evaluated() const { return evaluated_; }
-    const SceneEvaluator& evaluator() const { return evaluator_; }
+    // Hears each evaluation and mesh file read of this document's scenes; null: nobody.
+    void setEvaluationListener(EvaluationListener* listener) { evaluator_.setListener(listener); }
     QUndoStack* undoStack() { return &undo_; }
     QString filePath() const { return filePath_; }
     bool isModified() const { return !undo_.isClean(); }
 
+    // A scene evaluated through this document's cache, for load() (safe off
+    // the GUI thread while nothing else evaluates). Throws as load() does.
+    std::shared_ptr<const EvaluatedScene> evaluate(const Scene& scene) { return evaluator_.evaluate(scene); }
     // A scene read from `path` replaces the current one (no undo across it).
     // Throws InputError for a camera the core refuses or a mesh that cannot
     // be read, changing nothing.

@@ -15,6 +15,7 @@
 #include "Autosave.h"
 #include "Document.h"
 #include "MainWindow.h"
+#include "Waiting.h"
 
 namespace viewpipe::gui {
 namespace {
@@ -69,9 +70,13 @@ bool SceneFiles::openScene(const QString& path)
 bool SceneFiles::openScene(const Scene& scene, const QString& path, bool remember)
 {
     try {
+        // A large mesh takes a while to read: off the GUI thread, announced.
+        std::shared_ptr<const EvaluatedScene> evaluated;
+        waitShowingProgress(window_, tr("Opening %1…").arg(path.isEmpty() ? tr("the scene") : QFileInfo(path).fileName()),
+                            [&] { evaluated = document_->evaluate(scene); });
         const QSignalBlocker drawn(document_); // the picture is made once, when shown
-        document_->load(scene, path);          // a scene the core refuses is not opened
-    } catch (const InputError& e) {
+        document_->load(std::move(evaluated), path);
+    } catch (const InputError& e) { // a scene the core refuses is not opened
         window_->showMessage(tr("Cannot open %1: %2").arg(path, QString::fromStdString(e.what())));
         return false;
     }

@@ -11,6 +11,7 @@
 #include <set>
 
 #include "build_paths.h"
+#include "evaluation_count.h"
 #include "support.hpp"
 #include "viewpipe/evaluated_scene.hpp"
 
@@ -189,17 +190,19 @@ protected:
 TEST_F(MeshCacheTest, EachMeshFileIsReadOnceWhileItIsUnchanged)
 {
     SceneEvaluator evaluator;
+    test::EvaluationCount count;
+    evaluator.setListener(&count);
     const auto first = evaluator.evaluate(scene_);
     auto edited = scene_;
     std::get<foley::ViewSpec<double>>(edited.camera).back = 20;
     const auto second = evaluator.evaluate(edited);
-    EXPECT_EQ(evaluator.evaluations(), 2);
-    EXPECT_EQ(evaluator.meshReads(), 1);
+    EXPECT_EQ(count.evaluations, 2);
+    EXPECT_EQ(count.meshReads, 1);
     EXPECT_EQ(first->meshes[1], second->meshes[1]); // the same mesh, not a copy
 
     write("v 0 0 30\nv 16 0 30\nv 8 16 30\nv 8 6 50\nf 1 2 3\nf 1 2 4\n"); // a different size: read again
     const auto third = evaluator.evaluate(scene_);
-    EXPECT_EQ(evaluator.meshReads(), 2);
+    EXPECT_EQ(count.meshReads, 2);
     EXPECT_EQ(third->meshes[1]->faces.size(), 2u);
     EXPECT_EQ(first->meshes[1]->faces.size(), 1u); // what was drawn before is untouched
 }

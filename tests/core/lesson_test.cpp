@@ -10,6 +10,7 @@
 #include <nlohmann/json.hpp>
 
 #include "build_paths.h"
+#include "evaluation_count.h"
 #include "plain_math.h"
 #include "support.hpp"
 #include "viewpipe/lesson.hpp"
@@ -291,8 +292,10 @@ TEST(Lesson, ItsStepsAreEvaluatedOnceAndRefusedByStep)
         {"scene": "opengl-perspective.json", "caption": "d"},
         {"scene": "house.json", "caption": "e", "hide": ["projectors"]}]})", kScenes);
     SceneEvaluator evaluator;
+    test::EvaluationCount count;
+    evaluator.setListener(&count);
     const EvaluatedLesson evaluated = evaluateLesson(lesson, &evaluator);
-    EXPECT_EQ(evaluator.evaluations(), 2) << "the house once, the OpenGL scene once";
+    EXPECT_EQ(count.evaluations, 2) << "the house once, the OpenGL scene once";
     EXPECT_EQ(evaluated.stepShown, (std::vector<int>{0, 0, 1, 2, 1}));
     ASSERT_EQ(evaluated.shown.size(), 3u);
     ASSERT_EQ(evaluated.stepScene.size(), 5u);
@@ -307,7 +310,7 @@ TEST(Lesson, ItsStepsAreEvaluatedOnceAndRefusedByStep)
     Lesson edited = lesson;
     edited.steps[1].caption = "b, edited";
     const EvaluatedLesson again = evaluateLesson(edited, &evaluator, &evaluated);
-    EXPECT_EQ(evaluator.evaluations(), 2);
+    EXPECT_EQ(count.evaluations, 2);
     EXPECT_EQ(again.stepScene, evaluated.stepScene);
 
     // A mesh that parses as a file name but not as a mesh: refused when the step's scene is evaluated.

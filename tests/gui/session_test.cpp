@@ -13,6 +13,7 @@
 #include <QMimeData>
 #include <QMessageBox>
 #include <QProcess>
+#include <QProgressDialog>
 #include <QSlider>
 #include <QSignalSpy>
 #include <QStandardPaths>
@@ -23,9 +24,12 @@
 #include <QVTKOpenGLNativeWidget.h>
 #include <QtTest>
 
+#include <chrono>
 #include <csignal>
+#include <thread>
 
 #include "build_paths.h"
+#include "evaluation_count.h"
 #include "app/MathText.h"
 #include "app_window.h"
 #include "files.h"
@@ -239,33 +243,57 @@ private slots:
     void oneEditIsOneEvaluationAndNoMeshRead()
     {
         MainWindow& w = *window_;
-        const QDir dir = QDir::temp();
-        QVERIFY(writeFile(dir.filePath("viewpipe-session-tetrahedron.obj"),
-                          "v 0 0 30\nv 16 0 30\nv 8 16 30\nv 8 6 50\nf 1 3 2\nf 1 2 4\nf 2 3 4\nf 3 1 4\n"));
-        const QString scene = dir.filePath("viewpipe-session-mesh.json");
-        QString text = QString::fromStdString(sceneToJson(loadScene(kHouse.toStdString())));
-        text.replace(R"("objects": [)", R"("objects": [{"type": "mesh", "path": "viewpipe-session-tetrahedron.obj"}, )");
-        QVERIFY(writeFile(scene, text.toUtf8()));
+        const QString scene = writeMeshScene();
+        QVERIFY(!scene.isEmpty());
+        viewpipe::test::EvaluationCount count;
+        w.document()->setEvaluationListener(&count);
+        const auto stopCounting = qScopeGuard([&w] { w.document()->setEvaluationListener(nullptr); });
         QVERIFY(w.sceneFiles()->openScene(scene));
         QCOMPARE(w.document()->scene().objects.size(), std::size_t(2));
-        const SceneEvaluator& evaluator = w.document()->evaluator();
-        const long evaluations = evaluator.evaluations(), reads = evaluator.meshReads();
-        QVERIFY(reads >= 1);
+        const long evaluations = count.evaluations, reads = count.meshReads;
+        QCOMPARE(reads, 1L);
 
         QLineEdit* back = w.parameters()->fields("view.back").front();
         back->selectAll();
         QTest::keyClicks(back, "20");
         QTest::keyClick(back, Qt::Key_Return);
         QCOMPARE(std::get<foley::ViewSpec<double>>(w.document()->scene().camera).back, 20.0);
-        QCOMPARE(evaluator.evaluations(), evaluations + 1);
-        QCOMPARE(evaluator.meshReads(), reads);
+        QCOMPARE(count.evaluations, evaluations + 1);
+        QCOMPARE(count.meshReads, reads);
 
         QTest::keyClick(&w, Qt::Key_Z, Qt::ControlModifier);
         QTest::keyClick(&w, Qt::Key_Y, Qt::ControlModifier);
         for (int stage = 1; stage <= w.stepper()->stageCount(); ++stage)
             w.stepper()->goToStage(stage, false);
-        QCOMPARE(evaluator.evaluations(), evaluations + 1);
-        QCOMPARE(evaluator.meshReads(), reads);
+        QCOMPARE(count.evaluations, evaluations + 1);
+        QCOMPARE(count.meshReads, reads);
+    }
+
+    // Opening a scene whose mesh is slow to read (a listener here makes the
+    // read take a second): a dialog names the file being opened, and it is
+    // gone once the scene is shown.
+    void openingASlowSceneSaysWhatIsOpening()
+    {
+        MainWindow& w = *window_;
+        const QString scene = writeMeshScene();
+        QVERIFY(!scene.isEmpty());
+        struct SlowReads : EvaluationListener {
+            void readingMesh(const std::filesystem::path&) override { std::this_thread::sleep_for(std::chrono::seconds(1)); }
+        } slow;
+        w.document()->setEvaluationListener(&slow);
+        const auto stopListening = qScopeGuard([&w] { w.document()->setEvaluationListener(nullptr); });
+        QString announced;
+        QTimer look;
+        connect(&look, &QTimer::timeout, [&] {
+            if (auto* dialog = w.findChild<QProgressDialog*>("waitingProgress"); dialog && dialog->isVisible())
+                announced = dialog->labelText();
+        });
+        look.start(50);
+        QVERIFY(w.sceneFiles()->openScene(scene));
+        look.stop();
+        QCOMPARE(announced, QString("Opening viewpipe-session-mesh.json…"));
+        QCOMPARE(w.document()->scene().objects.size(), std::size_t(2));
+        QVERIFY(!w.findChild<QProgressDialog*>("waitingProgress"));
     }
 
     // Found: Ctrl+Y did nothing.
@@ -411,6 +439,20 @@ private slots:
     }
 
 private:
+    // A scene of the house and a tetrahedron read from an OBJ file, in the
+    // temporary folder; empty if it cannot be written.
+    static QString writeMeshScene()
+    {
+        const QDir dir = QDir::temp();
+        const QString scene = dir.filePath("viewpipe-session-mesh.json");
+        QString text = QString::fromStdString(sceneToJson(loadScene(kHouse.toStdString())));
+        text.replace(R"("objects": [)", R"("objects": [{"type": "mesh", "path": "viewpipe-session-tetrahedron.obj"}, )");
+        const bool written = writeFile(dir.filePath("viewpipe-session-tetrahedron.obj"),
+                                       "v 0 0 30\nv 16 0 30\nv 8 16 30\nv 8 6 50\nf 1 3 2\nf 1 2 4\nf 2 3 4\nf 3 1 4\n") &&
+                             writeFile(scene, text.toUtf8());
+        return written ? scene : QString();
+    }
+
     std::unique_ptr<MainWindow> window_;
 };
 

@@ -124,13 +124,23 @@ struct EvaluatedScene {
     Eigen::AlignedBox<double, 3> objectBounds() const;
 };
 
+// Hears what an evaluator does, as it does it: the work a scene costs (a
+// mesh file read, not found in the cache) for whoever shows or counts it.
+class EvaluationListener {
+public:
+    virtual ~EvaluationListener() = default;
+    virtual void evaluating(const Scene& /*scene*/) {}
+    virtual void readingMesh(const std::filesystem::path& /*file*/) {}
+};
+
 // Mesh files read once and kept while their path, size and modification time
 // are unchanged.
 class MeshCache {
 public:
     // Throws InputError(field, reason) for a file that cannot be read.
     std::shared_ptr<const PolygonMesh> read(const std::filesystem::path& file, const std::string& field);
-    long fileReads() const { return fileReads_; }
+    // Null: nobody listens. The listener outlives its use here.
+    void setListener(EvaluationListener* listener) { listener_ = listener; }
 
 private:
     struct Entry {
@@ -139,7 +149,7 @@ private:
         std::shared_ptr<const PolygonMesh> mesh;
     };
     std::map<std::filesystem::path, Entry> entries_;
-    long fileReads_ = 0;
+    EvaluationListener* listener_ = nullptr;
 };
 
 // Builds evaluated scenes, reading meshes through its cache.
@@ -147,12 +157,12 @@ class SceneEvaluator {
 public:
     // Throws InputError for a camera the core refuses or a mesh that cannot be read.
     std::shared_ptr<const EvaluatedScene> evaluate(const Scene& scene);
-    long evaluations() const { return evaluations_; }
-    long meshReads() const { return cache_.fileReads(); }
+    // Hears each evaluation and each mesh file read; null: nobody listens.
+    void setListener(EvaluationListener* listener);
 
 private:
     MeshCache cache_;
-    long evaluations_ = 0;
+    EvaluationListener* listener_ = nullptr;
 };
 
 // Each object's mesh: the built-in objects made, mesh files read (through

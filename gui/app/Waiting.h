@@ -1,0 +1,19 @@
+#pragma once
+
+// Work that can take a while (opening a scene with a large mesh) done off the
+// GUI thread, with the window kept painted and a word of what is under way.
+
+#include <QString>
+
+#include <functional>
+
+class QWidget;
+
+namespace viewpipe::gui {
+
+// Runs `work` on a worker thread and waits for it. Meanwhile the window takes
+// no input but keeps painting, and if the work takes longer than half a second
+// a dialog over `window` says `what` is under way. Rethrows what `work` throws.
+void waitShowingProgress(QWidget* window, const QString& what, const std::function<void()>& work);
+
+} // namespace viewpipe::gui
