@@ -15,11 +15,33 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdlib>
+#include <iomanip>
+#include <sstream>
 #include <stdexcept>
 
 #include "Exporter.h"
+#include "painter/VtkGeometry.h"
 
 namespace viewpipe::gui {
+
+namespace {
+
+// 10 to the power e as a reader sets it: "10⁻¹⁵", not "1e-15".
+std::string powerOfTen(int e)
+{
+    if (e == 0)
+        return "1";
+    static const char* const superscripts[] = {"⁰", "¹", "²", "³", "⁴", "⁵", "⁶", "⁷", "⁸", "⁹"};
+    std::string out = e < 0 ? "10⁻" : "10";
+    if (e == 1)
+        return out;
+    for (const char digit : std::to_string(std::abs(e)))
+        out += superscripts[digit - '0'];
+    return out;
+}
+
+} // namespace
 
 ChartText chartTextFor(int width, double textScale)
 {
@@ -27,9 +49,67 @@ ChartText chartTextFor(int width, double textScale)
     return {1.1 * label, label, small, small};
 }
 
+ChartText fitChartText(int width, int height, double textScale, const ChartWords& words)
+{
+    // The text at a scale, with the room it leaves the plot, and whether everything fits.
+    const auto measured = [&](double scale) {
+        ChartText text = chartTextFor(width, scale);
+        const auto wide = [](const std::string& line, double size, bool bold) { return figureTextSize(line, size, bold).x(); };
+        double legendWidth = 0;
+        for (const std::string& entry : words.legend)
+            legendWidth = std::max(legendWidth, wide(entry, text.legend, false) + 3 * text.legend); // and its swatch
+        const double legendHeight = words.legend.empty() ? 0 : 1.4 * text.legend * double(words.legend.size()) + text.legend;
+        // Top to bottom: the title, the plot, the bottom axis' numbers and title, the legend.
+        text.plotHeight = height - 1.6 * text.title - 1.6 * text.labels - 1.5 * text.axisTitle - legendHeight;
+        text.plotWidth = width - 3 * text.axisTitle - wide(words.widestLeftLabel, text.labels, false) - 2 * text.labels;
+        const bool fits = wide(words.title, text.title, false) <= 0.96 * width &&
+                          wide(words.bottomTitle, text.axisTitle, true) <= 0.96 * text.plotWidth &&
+                          wide(words.leftTitle, text.axisTitle, true) <= 0.96 * text.plotHeight &&
+                          legendWidth <= 0.96 * width && text.plotHeight >= height / 3.0;
+        return std::pair{text, fits};
+    };
+    for (double scale = textScale; scale > 1; scale -= 0.05)
+        if (const auto [text, fits] = measured(scale); fits)
+            return text;
+    return measured(1).first; // the 100 % sizes are the floor
+}
+
+void styleLinearAxis(vtkAxis* axis, const std::string& title, Theme theme, double low, double high, double length,
+                     const ChartText& text)
+{
+    styleAxis(axis, title, theme, text);
+    axis->SetBehavior(vtkAxis::FIXED);
+    axis->SetRange(low, high);
+    const auto label = [](double value, int decimals) {
+        std::ostringstream out;
+        out << std::fixed << std::setprecision(decimals) << value;
+        return out.str();
+    };
+    // The smallest round step whose labels, each as wide as the widest, leave a label's height between them.
+    for (double power = std::pow(10.0, std::floor(std::log10(std::max(high - low, 1e-300))) - 2);; power *= 10)
+        for (const double factor : {1.0, 2.0, 5.0}) {
+            const double step = factor * power;
+            const int decimals = std::max(0, -int(std::floor(std::log10(step) + 1e-9)));
+            const double widest = std::max(figureTextSize(label(low, decimals), text.labels, false).x(),
+                                           figureTextSize(label(high, decimals), text.labels, false).x());
+            if ((high - low) / step * (widest + text.labels) > length)
+                continue;
+            vtkNew<vtkDoubleArray> ticks;
+            vtkNew<vtkStringArray> labels;
+            for (double value = std::ceil(low / step) * step; value <= high + 1e-9 * step; value += step) {
+                ticks->InsertNextValue(value);
+                labels->InsertNextValue(label(std::abs(value) < 1e-9 * step ? 0.0 : value, decimals));
+            }
+            axis->SetCustomTickPositions(ticks, labels);
+            return;
+        }
+}
+
 void styleAxis(vtkAxis* axis, const std::string& title, Theme theme, const ChartText& text)
 {
     axis->SetTitle(title);
+    useFigureFont(axis->GetTitleProperties(), true);
+    useFigureFont(axis->GetLabelProperties(), false); // a font with superscripts (powerOfTen)
     axis->GetTitleProperties()->SetFontSize(int(std::lround(text.axisTitle)));
     axis->GetLabelProperties()->SetFontSize(int(std::lround(text.labels)));
     const double c = theme == Theme::Dark ? 0.9 : 0.1;
@@ -44,14 +124,14 @@ void styleLogAxis(vtkAxis* axis, const std::string& title, Theme theme, double l
     styleAxis(axis, title, theme, text);
     const int first = int(std::floor(std::log10(low))) - 1;
     const int last = int(std::ceil(std::log10(high))) + 1;
-    axis->SetBehavior(vtkAxis::FIXED);
-    axis->SetRange(first, last);
     const int step = std::max(1, (last - first + maxLabels - 1) / maxLabels);
+    axis->SetBehavior(vtkAxis::FIXED);
+    axis->SetRange(first - 0.5 * step, last); // the lowest number above the corner, where the other axis' first is
     vtkNew<vtkDoubleArray> ticks;
     vtkNew<vtkStringArray> labels;
     for (int e = first; e <= last; e += step) {
         ticks->InsertNextValue(double(e));
-        labels->InsertNextValue(e == 0 ? "1" : e == 1 ? "10" : "1e" + std::to_string(e));
+        labels->InsertNextValue(powerOfTen(e));
     }
     axis->SetCustomTickPositions(ticks, labels);
 }
@@ -60,6 +140,8 @@ void styleChart(vtkChart* chart, const std::string& title, Theme theme, const Ch
 {
     const bool dark = theme == Theme::Dark;
     chart->SetTitle(title);
+    useFigureFont(chart->GetTitleProperties(), false);
+    useFigureFont(chart->GetLegend()->GetLabelProperties(), false);
     chart->GetTitleProperties()->SetFontSize(int(std::lround(text.title)));
     const double c = dark ? 0.95 : 0.05;
     chart->GetTitleProperties()->SetColor(c, c, c);

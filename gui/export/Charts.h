@@ -6,6 +6,7 @@
 #include <filesystem>
 #include <functional>
 #include <string>
+#include <vector>
 
 #include "viewpipe/report/style.hpp"
 
@@ -17,10 +18,24 @@ namespace viewpipe::gui {
 
 // A chart's text sizes: as the app's panels set them (points on a screen), or
 // for an exported picture by its width (chartTextFor), as its pictures are.
+// For an exported chart, also the room its text leaves the plot (0: not known).
 struct ChartText {
     double title = 18, axisTitle = 16, labels = 13, legend = 14;
+    double plotWidth = 0, plotHeight = 0;
 };
 ChartText chartTextFor(int width, double textScale);
+
+// What a chart says, for fitChartText to measure.
+struct ChartWords {
+    std::string title, bottomTitle, leftTitle, widestLeftLabel;
+    std::vector<std::string> legend; // a row each, below the plot
+};
+// The text of a chart exported at width x height: at `textScale` where the
+// picture has room for it; where it has not (200 % at 800x450), at the
+// largest scale, down to 100 %, at which the title, the axes' titles and the
+// legend fit beside a plot at least a third of the picture high. Measured in
+// the figures' font, which the chart's styles set.
+ChartText fitChartText(int width, int height, double textScale, const ChartWords& words);
 
 // VTK's charts hold points in single precision, where tiny errors (1e-50)
 // underflow: values are plotted as log10 on a linear axis, labelled in powers
@@ -31,6 +46,10 @@ void styleLogAxis(vtkAxis* axis, const std::string& title, Theme theme, double l
 
 // A linear axis: title and labels in the theme's colors.
 void styleAxis(vtkAxis* axis, const std::string& title, Theme theme, const ChartText& text = {});
+// A linear axis from `low` to `high` labelled at round steps (1, 2 or 5 times
+// a power of ten), as many as fit along `length` pixels with room between them.
+void styleLinearAxis(vtkAxis* axis, const std::string& title, Theme theme, double low, double high, double length,
+                     const ChartText& text);
 
 // The chart's title and legend in the theme's colors.
 void styleChart(vtkChart* chart, const std::string& title, Theme theme, const ChartText& text = {});

@@ -40,31 +40,55 @@ const Format kFormats[] = {
     {{32, true, true}, {0, 114, 178}, 2.5f, vtkPen::DASH_DOT_LINE, ""},
 };
 
+// The usual formats and, if it is none of them, the scene's.
+std::vector<Format> chartFormats(const DepthOptions& options)
+{
+    std::vector<Format> formats(std::begin(kFormats), std::end(kFormats));
+    if (std::none_of(formats.begin(), formats.end(), [&](const Format& f) { return f.options == options; }))
+        formats.push_back({options, {}, 2.5f, vtkPen::SOLID_LINE, ""}); // red, as the scene's
+    return formats;
+}
+
+std::string legendEntry(const Format& format, const DepthOptions& options)
+{
+    return depthFormatName(format.options) + format.note + (format.options == options ? " (this scene)" : "");
+}
+
+ChartWords depthChartWords(const Pipeline<double>& pipeline, const DepthOptions& options)
+{
+    ChartWords words;
+    words.title = "Depth resolution against distance";
+    words.bottomTitle = pipeline.convention == Convention::Foley ? "distance from the front plane (F), along the view"
+                                                                  : "distance from the near plane, along the view";
+    words.leftTitle = "depth step\n(world units)"; // the labels, powers of ten, say the scale is logarithmic
+    words.widestLeftLabel = "10⁻¹⁸";
+    for (const Format& format : chartFormats(options))
+        words.legend.push_back(legendEntry(format, options));
+    return words;
+}
+
 } // namespace
 
 void drawDepthChart(vtkChartXY* chart, const Pipeline<double>& pipeline, const DepthOptions& options, Theme theme,
                     const ChartText& text)
 {
     chart->ClearPlots();
-    const bool foley = pipeline.convention == Convention::Foley;
-    styleChart(chart, "Depth resolution against distance", theme, text);
+    const ChartWords words = depthChartWords(pipeline, options);
+    styleChart(chart, words.title, theme, text);
     chart->SetShowLegend(true);
     // Below the plot, under the axis' title: inside, it would cover the curves' steep start.
     chart->GetLegend()->SetInline(false);
     chart->GetLegend()->SetHorizontalAlignment(vtkChartLegend::CENTER);
     chart->GetLegend()->SetVerticalAlignment(vtkChartLegend::BOTTOM);
 
-    std::vector<Format> formats(std::begin(kFormats), std::end(kFormats));
-    if (std::none_of(formats.begin(), formats.end(), [&](const Format& f) { return f.options == options; }))
-        formats.push_back({options, {}, 2.5f, vtkPen::SOLID_LINE, ""}); // red, as the scene's
     double low = 1e300, high = 0, reach = 0;
-    for (const Format& format : formats) {
+    for (const Format& format : chartFormats(options)) {
         const bool scene = format.options == options;
         const std::vector<DepthSample> curve = depthResolution(pipeline, format.options, 65);
         vtkNew<vtkTable> table;
         vtkNew<vtkDoubleArray> x, y;
         x->SetName("distance");
-        y->SetName((depthFormatName(format.options) + format.note + (scene ? " (this scene)" : "")).c_str());
+        y->SetName(legendEntry(format, options).c_str());
         for (const DepthSample& sample : curve) {
             if (sample.pastFar || !std::isfinite(sample.step) || !(sample.step > 0))
                 continue; // a level cut short by the far plane is no measure of resolution
@@ -88,11 +112,22 @@ void drawDepthChart(vtkChartXY* chart, const Pipeline<double>& pipeline, const D
     if (!(low <= high && reach > 0)) // no curve: VTK's axes would search forever for ticks over no range
         low = 1e-3, high = 1, reach = 1;
     vtkAxis* bottom = chart->GetAxis(vtkAxis::BOTTOM);
-    styleAxis(bottom, foley ? "distance from the front plane (F), along the view" : "distance from the near plane, along the view",
-              theme, text);
-    bottom->SetBehavior(vtkAxis::FIXED);
-    bottom->SetRange(0, reach);
-    styleLogAxis(chart->GetAxis(vtkAxis::LEFT), "depth step (world units, log scale)", theme, low, high, 12, text);
+    // An export knows the room its plot has (fitChartText): as many numbers as fit. The app's panel lets VTK choose.
+    if (text.plotWidth > 0) {
+        styleLinearAxis(bottom, words.bottomTitle, theme, 0, reach, text.plotWidth, text);
+    } else {
+        styleAxis(bottom, words.bottomTitle, theme, text);
+        bottom->SetBehavior(vtkAxis::FIXED);
+        bottom->SetRange(0, reach);
+    }
+    const int leftLabels = text.plotHeight > 0 ? std::max(2, int(text.plotHeight / (2.2 * text.labels))) : 12;
+    styleLogAxis(chart->GetAxis(vtkAxis::LEFT), words.leftTitle, theme, low, high, leftLabels, text);
+}
+
+void drawDepthChart(vtkChartXY* chart, const Pipeline<double>& pipeline, const DepthOptions& options, Theme theme,
+                    int width, int height, double textScale)
+{
+    drawDepthChart(chart, pipeline, options, theme, fitChartText(width, height, textScale, depthChartWords(pipeline, options)));
 }
 
 void writeDepthPlot(const Pipeline<double>& pipeline, const DepthOptions& options, const std::filesystem::path& file,
@@ -102,7 +137,7 @@ void writeDepthPlot(const Pipeline<double>& pipeline, const DepthOptions& option
         [&](vtkContextView* view) {
             vtkNew<vtkChartXY> chart;
             view->GetScene()->AddItem(chart);
-            drawDepthChart(chart, pipeline, options, theme, chartTextFor(width, textScale));
+            drawDepthChart(chart, pipeline, options, theme, width, height, textScale);
         },
         width, height, theme, file, "--out");
 }

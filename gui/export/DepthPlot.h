@@ -14,11 +14,15 @@ class vtkChartXY;
 
 namespace viewpipe::gui {
 
+// The chart with the app panel's text sizes (`text` as given), or as an
+// export draws it (text fitted to the picture, fitChartText: as many
+// numbers on the axes as fit).
 void drawDepthChart(vtkChartXY* chart, const Pipeline<double>& pipeline, const DepthOptions& options, Theme theme,
                     const ChartText& text = {});
+void drawDepthChart(vtkChartXY* chart, const Pipeline<double>& pipeline, const DepthOptions& options, Theme theme,
+                    int width, int height, double textScale);
 
-// Renders the chart offscreen to a PNG, atomically (needs a display).
-// At the export's size, its text sized as its pictures' (chartTextFor).
+// Renders the export's chart offscreen to a PNG, atomically (needs a display).
 void writeDepthPlot(const Pipeline<double>& pipeline, const DepthOptions& options, const std::filesystem::path& file,
                     Theme theme, int width, int height, double textScale);
 

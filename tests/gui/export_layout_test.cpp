@@ -23,13 +23,25 @@
 #include <sanitizer/lsan_interface.h>
 #endif
 
+#include <vtkAxis.h>
+#include <vtkChartLegend.h>
+#include <vtkChartXY.h>
+#include <vtkContext2D.h>
+#include <vtkContextScene.h>
+#include <vtkContextView.h>
+#include <vtkFloatArray.h>
+#include <vtkTextProperty.h>
 #include <vtkCamera.h>
+#include <vtkStringArray.h>
 #include <vtkNew.h>
 #include <vtkRenderWindow.h>
 #include <vtkRenderer.h>
 
 #include "build_paths.h"
 #include "drawn_texts.h"
+#include "export/Charts.h"
+#include "export/DepthPlot.h"
+#include "painter/VtkGeometry.h"
 #include "export/Exporter.h"
 #include "export/Offscreen.h"
 #include "painter/EigenVtk.h"
@@ -177,6 +189,67 @@ TEST_P(ExportLayoutAt, EveryTextReadsInsideThePictureAndApart)
         fs::remove_all(out);
 }
 
+// The depth chart as the export draws it (depth-resolution.png): the axes'
+// numbers apart and inside the picture, the legend inside it and off the
+// numbers and the bottom axis' title.
+TEST_P(ExportLayoutAt, TheDepthChartReadsInsideThePictureAndApart)
+{
+    const Shown shown = GetParam();
+    const auto scene = evaluateScene(loadScene(fs::path(viewpipe::build::dataDir) / "scenes" / "depth-corridor.json"));
+    ASSERT_TRUE(scene->outcomes.depth);
+    vtkNew<vtkContextView> view;
+    view->GetRenderWindow()->SetOffScreenRendering(1);
+    view->GetRenderWindow()->SetSize(shown.width, shown.height);
+    vtkNew<vtkChartXY> chart;
+    view->GetScene()->AddItem(chart);
+    drawDepthChart(chart, scene->pipeline, scene->outcomes.depth->options, Theme::Light, shown.width, shown.height,
+                   shown.percent / 100.0);
+    view->Render();
+
+    // Boxes x0, x1, y0, y1 in the scene's pixels (y up; inside the picture either way).
+    std::vector<std::pair<std::string, std::array<double, 4>>> boxes;
+    for (const int side : {vtkAxis::LEFT, vtkAxis::BOTTOM}) {
+        vtkAxis* axis = chart->GetAxis(side);
+        vtkFloatArray* at = axis->GetTickScenePositions();
+        vtkStringArray* labels = axis->GetTickLabels();
+        ASSERT_EQ(at->GetNumberOfTuples(), labels->GetNumberOfValues());
+        ASSERT_GE(labels->GetNumberOfValues(), 3) << "too few numbers on an axis";
+        const double size = axis->GetLabelProperties()->GetFontSize();
+        for (vtkIdType k = 0; k < labels->GetNumberOfValues(); ++k) {
+            const std::string text = labels->GetValue(k);
+            const Vec2<double> extent = figureTextSize(text, size, false);
+            const double p = at->GetValue(k);
+            const double axisAt = side == vtkAxis::LEFT ? axis->GetPoint1()[0] : axis->GetPoint1()[1];
+            boxes.push_back({text, side == vtkAxis::LEFT
+                                       ? std::array{axisAt - 5 - extent.x(), axisAt - 5, p - extent.y() / 2, p + extent.y() / 2}
+                                       : std::array{p - extent.x() / 2, p + extent.x() / 2, axisAt - 5 - extent.y(), axisAt - 5}});
+        }
+    }
+    // The axes' titles beside their numbers, as vtkAxis sets them: the bottom's centred
+    // below them, the left's turned, centred beside them.
+    const auto titleSize = [](vtkAxis* axis) {
+        return figureTextSize(axis->GetTitle(), axis->GetTitleProperties()->GetFontSize(), true);
+    };
+    vtkAxis* left = chart->GetAxis(vtkAxis::LEFT);
+    vtkAxis* bottom = chart->GetAxis(vtkAxis::BOTTOM);
+    double leftNumbers = 0, bottomNumbers = 0; // how far the numbers reach from their axis
+    for (const auto& [text, box] : boxes) {
+        leftNumbers = std::max(leftNumbers, left->GetPoint1()[0] - box[0]);
+        bottomNumbers = std::max(bottomNumbers, bottom->GetPoint1()[1] - box[2]);
+    }
+    const Vec2<double> leftTitle = titleSize(left), bottomTitle = titleSize(bottom);
+    const double leftMiddle = (left->GetPoint1()[1] + left->GetPoint2()[1]) / 2;
+    const double bottomMiddle = (bottom->GetPoint1()[0] + bottom->GetPoint2()[0]) / 2;
+    const double leftEdge = left->GetPoint1()[0] - leftNumbers - 2, bottomEdge = bottom->GetPoint1()[1] - bottomNumbers - 2;
+    boxes.push_back({left->GetTitle(), {leftEdge - leftTitle.y(), leftEdge, leftMiddle - leftTitle.x() / 2, leftMiddle + leftTitle.x() / 2}});
+    boxes.push_back({bottom->GetTitle(), {bottomMiddle - bottomTitle.x() / 2, bottomMiddle + bottomTitle.x() / 2, bottomEdge - bottomTitle.y(), bottomEdge}});
+    // The legend's box, in the scene's pixels.
+    const vtkRectf legend = chart->GetLegend()->GetBoundingRect(view->GetContext());
+    boxes.push_back({"the legend", {legend.GetX(), legend.GetX() + legend.GetWidth(), legend.GetY(), legend.GetY() + legend.GetHeight()}});
+    checkTexts(boxes, shown, "depth-corridor.json's depth chart at " + std::to_string(shown.width) + "x" +
+                                 std::to_string(shown.height) + ", text " + std::to_string(shown.percent) + " %: ");
+}
+
 INSTANTIATE_TEST_SUITE_P(Sizes, ExportLayoutAt,
                          ::testing::Values(Shown{1280, 720, 100}, Shown{800, 450, 100}, Shown{1280, 720, 200},
                                            Shown{800, 450, 200}),
@@ -234,6 +307,21 @@ TEST(ExportLayout, ThePagesStepsEndAtTheStagesAtRest)
                 EXPECT_LT((last.shown - rest.shown).cwiseAbs().maxCoeff(), 1e-12 * rest.shown.cwiseAbs().maxCoeff()) << at;
             }
         }
+}
+
+// The accuracy and depth plots' log axes: powers of ten as a reader sets
+// them, 10⁻¹⁵, not a program's 1e-15.
+TEST(ExportLayout, LogAxisNumbersArePowersOfTen)
+{
+    vtkNew<vtkAxis> axis;
+    styleLogAxis(axis, "error", Theme::Light, 2e-16, 3e2, 40, chartTextFor(1280, 1));
+    std::vector<std::string> labels;
+    for (vtkIdType k = 0; k < axis->GetTickLabels()->GetNumberOfValues(); ++k)
+        labels.push_back(axis->GetTickLabels()->GetValue(k));
+    const std::vector<std::string> expected = {"10⁻¹⁷", "10⁻¹⁶", "10⁻¹⁵", "10⁻¹⁴", "10⁻¹³", "10⁻¹²", "10⁻¹¹",
+                                               "10⁻¹⁰", "10⁻⁹",  "10⁻⁸",  "10⁻⁷",  "10⁻⁶",  "10⁻⁵",  "10⁻⁴",
+                                               "10⁻³",  "10⁻²",  "10⁻¹",  "1",     "10",    "10²",   "10³",   "10⁴"};
+    EXPECT_EQ(labels, expected);
 }
 
 } // namespace
