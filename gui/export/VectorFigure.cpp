@@ -213,14 +213,15 @@ void writeVectorFigure(const VectorFigure& f, const std::string& format, const s
         svg->setSize(QSize(figure.width, figure.height));
         svg->setViewBox(QRectF(0, 0, figure.width, figure.height));
         svg->setResolution(72);
-        svg->setTitle(QString::fromStdString(mathPlainText(f.caption))); // a title is plain text
+        // A title is plain text, the figure's accessible name: scripts as spoken ("S sub per"), not "S_per".
+        svg->setTitle(QString::fromStdString(mathSpokenText(f.caption)));
         device = std::move(svg);
     } else {
         auto pdf = std::make_unique<QPdfWriter>(&buffer);
         pdf->setResolution(72); // one pixel of the figure is one point of the page
         pdf->setPageSize(QPageSize(QSizeF(figure.width, figure.height), QPageSize::Point));
         pdf->setPageMargins(QMarginsF(0, 0, 0, 0));
-        pdf->setTitle(QString::fromStdString(mathPlainText(f.caption)));
+        pdf->setTitle(QString::fromStdString(mathSpokenText(f.caption)));
         pdf->setCreator("ViewPipe");
         device = std::move(pdf);
     }

@@ -264,9 +264,11 @@ private slots:
     {
         QTemporaryDir dir;
         const QString glPerspective = QString(::viewpipe::build::dataDir) + "/scenes/opengl-perspective.json";
-        for (const auto& [scene, stage, name] : {std::tuple{kHouse, QString("0"), QString("00-world")},
-                                                 std::tuple{kHouse, QString("4"), QString("04-sh-per")},
-                                                 std::tuple{glPerspective, QString("4"), QString("04-p-depth")}}) {
+        // The title, the figure's accessible name, reads its scripts as spoken.
+        for (const auto& [scene, stage, name, title] :
+             {std::tuple{kHouse, QString("0"), QString("00-world"), QString("World")},
+              std::tuple{kHouse, QString("4"), QString("04-sh-per"), QString("SH sub per")},
+              std::tuple{glPerspective, QString("4"), QString("04-p-depth"), QString("P sub depth")}}) {
             const QString out = dir.filePath(name);
             const Run r = runViewpipe({"export", scene, "--out", out, "--stages", stage, "--format", "png,svg,pdf", "--quiet"});
             QVERIFY2(r.exitCode == 0, qPrintable(r.err));
@@ -276,10 +278,13 @@ private slots:
             // SVG: well-formed XML, no embedded picture, shapes as paths, the labels as text.
             QXmlStreamReader xml(readAll(out + "/" + name + ".svg"));
             QStringList texts;
+            QString svgTitle;
             int images = 0, paths = 0;
             while (!xml.atEnd()) {
                 if (xml.readNext() != QXmlStreamReader::StartElement)
                     continue;
+                if (xml.name() == QLatin1String("title"))
+                    svgTitle = xml.readElementText();
                 images += xml.name() == QLatin1String("image");
                 paths += xml.name() == QLatin1String("path") || xml.name() == QLatin1String("polyline");
                 if (xml.name() == QLatin1String("text"))
@@ -289,6 +294,7 @@ private slots:
             QCOMPARE(images, 0);
             QVERIFY2(paths > 50, qPrintable(QString::number(paths)));
             QVERIFY2(texts.contains("CW") && texts.contains("x"), qPrintable(texts.join("|"))); // the axis name x, in italics
+            QVERIFY2(svgTitle.contains(title) && !svgTitle.contains('_') && !svgTitle.contains('$'), qPrintable(svgTitle));
             QSvgRenderer svg(out + "/" + name + ".svg");
             QImage fromSvg(png.size(), QImage::Format_RGB32);
             fromSvg.fill(Qt::white);
