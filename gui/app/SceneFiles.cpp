@@ -4,10 +4,12 @@
 #include <QMenu>
 #include <QMessageBox>
 #include <QPushButton>
+#include <QScopeGuard>
 #include <QSettings>
 #include <QSignalBlocker>
 #include <QStatusBar>
 
+#include <algorithm>
 #include <map>
 
 #include "ActionRegistry.h"
@@ -67,13 +69,28 @@ bool SceneFiles::openScene(const QString& path)
     return openScene(scene, path);
 }
 
+bool SceneFiles::isBusy(const QString& path)
+{
+    if (opening_)
+        window_->statusBar()->showMessage(tr("%1 waits: a scene is opening").arg(QFileInfo(path).fileName()), 4000);
+    return opening_;
+}
+
 bool SceneFiles::openScene(const Scene& scene, const QString& path, bool remember)
 {
+    if (isBusy(path))
+        return false;
+    opening_ = true;
+    const auto opened = qScopeGuard([this] { opening_ = false; });
     try {
-        // A large mesh takes a while to read: off the GUI thread, announced.
+        // A mesh file can take a while to read: off the GUI thread, announced.
         std::shared_ptr<const EvaluatedScene> evaluated;
-        waitShowingProgress(window_, tr("Opening %1…").arg(path.isEmpty() ? tr("the scene") : QFileInfo(path).fileName()),
-                            [&] { evaluated = document_->evaluate(scene); });
+        const auto evaluate = [&] { evaluated = document_->evaluate(scene); };
+        if (std::any_of(scene.objects.begin(), scene.objects.end(), [](const SceneObject& o) { return o.type == ObjectType::Mesh; }))
+            waitShowingProgress(window_, tr("Opening %1…").arg(path.isEmpty() ? tr("the scene") : QFileInfo(path).fileName()),
+                                evaluate);
+        else
+            evaluate();
         const QSignalBlocker drawn(document_); // the picture is made once, when shown
         document_->load(std::move(evaluated), path);
     } catch (const InputError& e) { // a scene the core refuses is not opened
@@ -158,6 +175,8 @@ bool SceneFiles::confirmDiscard()
 
 bool SceneFiles::importMesh(const QString& path)
 {
+    if (isBusy(path))
+        return false;
     SceneObject object;
     object.type = ObjectType::Mesh;
     object.resolvedPath = QFileInfo(path).absoluteFilePath().toStdString();
@@ -173,6 +192,8 @@ bool SceneFiles::importMesh(const QString& path)
 
 void SceneFiles::openDropped(const QString& path)
 {
+    if (isBusy(path))
+        return;
     const QString suffix = QFileInfo(path).suffix().toLower();
     if (suffix == "json") {
         if (confirmDiscard())

@@ -48,6 +48,10 @@ public:
     void setMenus(QMenu* presets, QMenu* recent);
 
 private:
+    // While a scene opens (its meshes read off the GUI thread, the window
+    // waiting), a drop or another open would evaluate beside it: refused,
+    // said in the status bar.
+    bool isBusy(const QString& path);
     void addRecent(const QString& path);
     void rebuildRecentMenu();
     void rebuildPresetMenu();
@@ -57,6 +61,7 @@ private:
     Autosave* autosave_;
     QMenu* presetMenu_ = nullptr;
     QMenu* recentMenu_ = nullptr;
+    bool opening_ = false;
 };
 
 } // namespace viewpipe::gui

@@ -35,7 +35,12 @@ void waitShowingProgress(QWidget* window, const QString& what, const std::functi
         }
         QMetaObject::invokeMethod(&loop, "quit", Qt::QueuedConnection);
     });
-    loop.exec(QEventLoop::ExcludeUserInputEvents);
+    try {
+        loop.exec(QEventLoop::ExcludeUserInputEvents);
+    } catch (...) { // an event handler threw: the worker still holds the loop
+        worker.join();
+        throw;
+    }
     worker.join();
     if (failure)
         std::rethrow_exception(failure);
