@@ -61,23 +61,28 @@ ChartText fitChartText(int width, int height, double textScale, const ChartWords
         const double legendHeight = words.legend.empty() ? 0 : 1.4 * text.legend * double(words.legend.size()) + text.legend;
         // Top to bottom: the title, the plot, the bottom axis' numbers and title, the legend.
         text.plotHeight = height - 1.6 * text.title - 1.6 * text.labels - 1.5 * text.axisTitle - legendHeight;
-        text.plotWidth = width - 3 * text.axisTitle - wide(words.widestLeftLabel, text.labels, false) - 2 * text.labels;
+        const double leftTitle = figureTextSize(words.leftTitle, text.axisTitle, true).y(); // turned: its height is its width
+        text.plotWidth = width - 1.2 * leftTitle - wide(words.widestLeftLabel, text.labels, false) - 2 * text.labels;
         const bool fits = wide(words.title, text.title, false) <= 0.96 * width &&
                           wide(words.bottomTitle, text.axisTitle, true) <= 0.96 * text.plotWidth &&
                           wide(words.leftTitle, text.axisTitle, true) <= 0.96 * text.plotHeight &&
                           legendWidth <= 0.96 * width && text.plotHeight >= height / 3.0;
         return std::pair{text, fits};
     };
-    for (double scale = textScale; scale > 1; scale -= 0.05)
-        if (const auto [text, fits] = measured(scale); fits)
+    // In whole percents (5 at a time) from the one asked down to 100 % (or the one asked, if smaller).
+    const int asked = int(std::lround(textScale * 100)), floor = std::min(100, asked);
+    for (int percent = asked; percent > floor; percent -= 5)
+        if (const auto [text, fits] = measured(percent / 100.0); fits)
             return text;
-    return measured(1).first; // the 100 % sizes are the floor
+    return measured(floor / 100.0).first;
 }
 
 void styleLinearAxis(vtkAxis* axis, const std::string& title, Theme theme, double low, double high, double length,
                      const ChartText& text)
 {
     styleAxis(axis, title, theme, text);
+    if (!(std::isfinite(low) && std::isfinite(high) && high > low && length > 0))
+        return; // nothing to divide: VTK's own numbers
     axis->SetBehavior(vtkAxis::FIXED);
     axis->SetRange(low, high);
     const auto label = [](double value, int decimals) {
@@ -86,17 +91,20 @@ void styleLinearAxis(vtkAxis* axis, const std::string& title, Theme theme, doubl
         return out.str();
     };
     // The smallest round step whose labels, each as wide as the widest, leave a label's height between them.
-    for (double power = std::pow(10.0, std::floor(std::log10(std::max(high - low, 1e-300))) - 2);; power *= 10)
+    const double span = high - low;
+    for (int decade = int(std::floor(std::log10(span))) - 2;; ++decade)
         for (const double factor : {1.0, 2.0, 5.0}) {
-            const double step = factor * power;
-            const int decimals = std::max(0, -int(std::floor(std::log10(step) + 1e-9)));
+            const double step = factor * std::pow(10.0, decade);
+            const int decimals = std::clamp(-decade, 0, 17);
             const double widest = std::max(figureTextSize(label(low, decimals), text.labels, false).x(),
                                            figureTextSize(label(high, decimals), text.labels, false).x());
-            if ((high - low) / step * (widest + text.labels) > length)
+            if (span / step * (widest + text.labels) > length && span / step > 1)
                 continue;
             vtkNew<vtkDoubleArray> ticks;
             vtkNew<vtkStringArray> labels;
-            for (double value = std::ceil(low / step) * step; value <= high + 1e-9 * step; value += step) {
+            const double first = std::ceil(low / step);
+            for (int k = 0; (first + k) * step <= high + 1e-9 * step; ++k) {
+                const double value = (first + k) * step;
                 ticks->InsertNextValue(value);
                 labels->InsertNextValue(label(std::abs(value) < 1e-9 * step ? 0.0 : value, decimals));
             }

@@ -61,7 +61,7 @@ ChartWords depthChartWords(const Pipeline<double>& pipeline, const DepthOptions&
     words.bottomTitle = pipeline.convention == Convention::Foley ? "distance from the front plane (F), along the view"
                                                                   : "distance from the near plane, along the view";
     words.leftTitle = "depth step\n(world units)"; // the labels, powers of ten, say the scale is logarithmic
-    words.widestLeftLabel = "10⁻¹⁸";
+    words.widestLeftLabel = "10⁻¹⁸"; // depth steps have two-digit exponents at most
     for (const Format& format : chartFormats(options))
         words.legend.push_back(legendEntry(format, options));
     return words;
