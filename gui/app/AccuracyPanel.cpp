@@ -58,6 +58,7 @@ AccuracyPanel::AccuracyPanel(QWidget* parent) : QWidget(parent)
     view_->SetRenderWindow(window);
     charts_ = vtkSmartPointer<vtkChartMatrix>::New();
     view_->GetScene()->AddItem(charts_);
+    paintBackground();
     layout->addWidget(button_);
     layout->addWidget(progress_);
     layout->addWidget(status_);
@@ -180,8 +181,18 @@ void AccuracyPanel::drawResult()
     }
     charts_->ClearItems();
     drawAccuracyCharts(charts_, result, theme_, true);
+    renderCharts();
+}
+
+void AccuracyPanel::paintBackground()
+{
     const double bg = theme_ == Theme::Dark ? 0.11 : 1.0;
     view_->GetRenderer()->SetBackground(bg, bg, bg);
+}
+
+void AccuracyPanel::renderCharts()
+{
+    paintBackground();
     chartWidget_->renderWindow()->Render();
     chartWidget_->update();
 }
@@ -191,6 +202,8 @@ void AccuracyPanel::setTheme(Theme theme)
     theme_ = theme;
     if (last_)
         drawResult();
+    else
+        renderCharts(); // the empty plot area in the theme's background, not a white box in the dark
 }
 
 void AccuracyPanel::clear()
@@ -202,8 +215,7 @@ void AccuracyPanel::clear()
     status_->setText(intro());
     table_->setRowCount(0);
     charts_->ClearItems();
-    chartWidget_->renderWindow()->Render();
-    chartWidget_->update();
+    renderCharts();
 }
 
 } // namespace viewpipe::gui

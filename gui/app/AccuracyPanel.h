@@ -49,6 +49,10 @@ private:
     // Ends a measurement: shows its result, or says why it failed (the previous results stay).
     void finish(const std::variant<BenchResult, QString>& outcome);
     void drawResult();
+    // The chart area's background in the theme's color.
+    void paintBackground();
+    // The background, then the charts drawn.
+    void renderCharts();
     void stop();
 
     QPushButton* button_;

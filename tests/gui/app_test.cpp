@@ -488,6 +488,23 @@ private slots:
         QVERIFY(w.accuracy()->table()->item(1, 5)->text().contains("e-16"));
     }
 
+    // Before any measurement the Accuracy panel's plot area is the theme's
+    // background: dark in the dark theme, not a white box; light in the light.
+    void accuracyPlotAreaTakesTheThemeBeforeAMeasurement()
+    {
+        MainWindow& w = *window_;
+        w.showPanel("accuracy");
+        auto* charts = w.accuracy()->findChild<QVTKOpenGLNativeWidget*>();
+        QVERIFY(charts);
+        QTRY_VERIFY(charts->isVisible() && charts->height() > 100);
+        for (const Theme theme : {Theme::Dark, Theme::Light, Theme::Dark}) {
+            w.setTheme(theme);
+            const QImage image = charts->grabFramebuffer();
+            const int lightness = image.pixelColor(image.width() / 2, image.height() / 2).lightness();
+            QVERIFY2(theme == Theme::Dark ? lightness < 60 : lightness > 200, qPrintable(QString::number(lightness)));
+        }
+    }
+
     void classicalProjectionIsOneUndoableEdit()
     {
         MainWindow& w = *window_;
