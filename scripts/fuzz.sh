@@ -23,7 +23,9 @@ else
 fi
 
 work=$(mktemp -d)
-trap 'rm -rf "$work"' EXIT
+declare -A pids
+# However the script ends, no fuzzer outlives it.
+trap 'kill "${pids[@]}" 2>/dev/null; wait; rm -rf "$work"' EXIT
 mkdir -p "$build/crashes"
 # The targets run side by side, each on a core of its own where there are two.
 fuzz_target() {
@@ -32,7 +34,6 @@ fuzz_target() {
   "$build/$target" "$work/$name" -dict="fuzz/$name.dict" -max_total_time="$seconds" -timeout=25 \
     -artifact_prefix="$build/crashes/$target-" -print_final_stats=1 >"$build/$target.log" 2>&1
 }
-declare -A pids
 for target in "${targets[@]}"; do
   fuzz_target "$target" &
   pids[$target]=$!
@@ -47,7 +48,7 @@ for target in "${targets[@]}"; do
     result="CRASHED (see $log and $build/crashes/)"
     status=1
   fi
-  runs=$(sed -n 's/^stat::number_of_executed_units: *//p' "$log" | tail -n 1)
+  runs=$(sed -n 's/^stat::number_of_executed_units: *//p' "$log" 2>/dev/null | tail -n 1 || true)
   echo "$target: ${runs:-?} executions in $seconds s, $(find "$work/$name" -type f | wc -l) corpus inputs: $result"
 done
 exit $status

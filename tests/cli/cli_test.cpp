@@ -204,8 +204,6 @@ TEST(Cli, CheckAndExitCodes)
 
 namespace {
 
-// Found crashing `pipeline` and `open` (segmentation faults, double free inside
-// VTK's readers): each is refused with its field and reason, exit 2.
 // export's and open's --text-scale take one range, the app's Larger and Smaller Text's.
 TEST(Cli, TextScaleIsOneRangeForExportAndOpen)
 {
@@ -220,6 +218,8 @@ TEST(Cli, TextScaleIsOneRangeForExportAndOpen)
     EXPECT_FALSE(std::filesystem::exists(out));
 }
 
+// Found crashing `pipeline` and `open` (segmentation faults, double free inside
+// VTK's readers): each is refused with its field and reason, exit 2.
 TEST(Cli, HostileMeshesAreRefusedByEveryCommand)
 {
     const std::string header = "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\n"
