@@ -25,7 +25,7 @@ fi
 work=$(mktemp -d)
 declare -A pids
 # However the script ends, no fuzzer outlives it.
-trap 'kill "${pids[@]}" 2>/dev/null; wait; rm -rf "$work"' EXIT
+trap 'kill "${pids[@]}" 2>/dev/null || true; wait; rm -rf "$work"' EXIT
 mkdir -p "$build/crashes"
 # The targets run side by side, each on a core of its own where there are two.
 fuzz_target() {
