@@ -42,11 +42,6 @@ Document::~Document()
     undo_.blockSignals(true);
 }
 
-void Document::load(const Scene& scene, const QString& path)
-{
-    load(evaluator_.evaluate(scene), path);
-}
-
 void Document::load(std::shared_ptr<const EvaluatedScene> evaluated, const QString& path)
 {
     evaluated_ = std::move(evaluated);

@@ -35,13 +35,11 @@ public:
     bool isModified() const { return !undo_.isClean(); }
 
     // A scene evaluated through this document's cache, for load() (safe off
-    // the GUI thread while nothing else evaluates). Throws as load() does.
+    // the GUI thread while nothing else evaluates). Throws InputError for a
+    // camera the core refuses or a mesh that cannot be read.
     std::shared_ptr<const EvaluatedScene> evaluate(const Scene& scene) { return evaluator_.evaluate(scene); }
-    // A scene read from `path` replaces the current one (no undo across it).
-    // Throws InputError for a camera the core refuses or a mesh that cannot
-    // be read, changing nothing.
-    void load(const Scene& scene, const QString& path);
-    // The same for a scene evaluated already (a lesson's step).
+    // An evaluated scene (a file's, a lesson step's) read from `path`
+    // replaces the current one (no undo across it).
     void load(std::shared_ptr<const EvaluatedScene> evaluated, const QString& path);
     // Throws InputError when the file cannot be written.
     void save(const QString& path);
