@@ -19,6 +19,7 @@ Stepper::Stepper(const Document* document, ScenePainter* painter, QObject* paren
     : QObject(parent), document_(document), painter_(painter), animation_(new QVariantAnimation(this)),
       stepMilliseconds_(kStepMilliseconds)
 {
+    clock_.start();
     animation_->setStartValue(0.0);
     animation_->setEndValue(1.0);
     connect(animation_, &QVariantAnimation::valueChanged, this, [this](const QVariant& v) {
@@ -33,7 +34,7 @@ Stepper::Stepper(const Document* document, ScenePainter* painter, QObject* paren
         painter_->setMoving(stage_ != target_); // playing on: the next step starts from this frame
         emit rested();
         if (stage_ != target_)
-            startStep();
+            startStep(true);
         else
             playing_ = false;
         emit moved();
@@ -69,7 +70,7 @@ void Stepper::goToStage(int stage, bool animate)
     }
     stepMilliseconds_ = std::abs(target_ - stage_) > 1 ? kSkipMilliseconds : kStepMilliseconds;
     if (!isAnimating() && target_ != stage_)
-        startStep();
+        startStep(false);
     emit moved();
 }
 
@@ -80,7 +81,7 @@ void Stepper::play()
     target_ = stageCount();
     stepMilliseconds_ = kStepMilliseconds;
     playing_ = true;
-    startStep();
+    startStep(false);
     emit moved();
 }
 
@@ -99,13 +100,22 @@ void Stepper::restart()
     emit moved();
 }
 
-void Stepper::startStep()
+void Stepper::startStep(bool follows)
 {
     const int next = stage_ + (target_ > stage_ ? 1 : -1);
     transition_.emplace(*document_->evaluated(), stage_, next);
     painter_->setMoving(true);
     animation_->setDuration(stepMilliseconds_);
+    // By the clock: a step that follows another starts when that one was due to
+    // end, so the time the stage at rest took on the way (its matrices, both views
+    // drawn) is made up by dropping frames, not added to Play. However late, the
+    // step still shows its last frame moving.
+    const qint64 now = clock_.elapsed();
+    const qint64 late = follows ? std::clamp<qint64>(now - stepEnds_, 0, stepMilliseconds_ - 1) : 0;
+    stepEnds_ = now - late + stepMilliseconds_;
     animation_->start();
+    if (late > 0)
+        animation_->setCurrentTime(int(late));
 }
 
 void Stepper::rest()

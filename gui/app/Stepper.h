@@ -4,6 +4,7 @@
 // step is a transition of the world view, timed by the clock; Play steps on to
 // the last stage. Stage 0 is the world; stage k is after the k-th matrix.
 
+#include <QElapsedTimer>
 #include <QObject>
 
 #include <optional>
@@ -49,7 +50,8 @@ signals:
     void moved();
 
 private:
-    void startStep();
+    // `follows`: the step follows one that just ended, and keeps to its time.
+    void startStep(bool follows);
     void rest();
 
     const Document* document_;
@@ -60,6 +62,8 @@ private:
     int stepMilliseconds_;
     bool playing_ = false;
     std::optional<StageMotion> transition_;
+    QElapsedTimer clock_;
+    qint64 stepEnds_ = 0; // on clock_: when the running step is due to end
 };
 
 } // namespace viewpipe::gui
