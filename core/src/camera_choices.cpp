@@ -16,7 +16,7 @@ gl::Frustum<double> nearRectangle(const gl::ProjectionSpec<double>& projection)
     return std::visit(
         [](const auto& p) {
             using P = std::decay_t<decltype(p)>;
-            const double zFar = std::isinf(p.zFar) ? 1000 * p.zNear : p.zFar;
+            const double zFar = std::isinf(p.zFar) ? gl::kStandInFar * p.zNear : p.zFar;
             if constexpr (std::is_same_v<P, gl::Perspective<double>>) {
                 const double top = p.zNear * std::tan(p.fovyDegrees * kPi / 360);
                 return gl::Frustum<double>{-top * p.aspect, top * p.aspect, -top, top, p.zNear, zFar};

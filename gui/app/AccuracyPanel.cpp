@@ -157,11 +157,12 @@ void AccuracyPanel::drawResult()
 {
     const BenchResult& result = *last_;
     status_->setText(tr("Reference: %1. %2 vertices timed; absolute errors, with units of each type's epsilon "
-                        "in brackets; pixels at %3×%4.")
+                        "in brackets; pixels at %3×%4. Corners and round trip: %5.")
                          .arg(QString::fromStdString(result.reference))
                          .arg(result.vertices)
                          .arg(result.viewport.width)
-                         .arg(result.viewport.height));
+                         .arg(result.viewport.height)
+                         .arg(QString::fromStdString(result.volume)));
     table_->setRowCount(int(result.rows.size()));
     for (int i = 0; i < int(result.rows.size()); ++i) {
         const BenchRow& r = result.rows[std::size_t(i)];

@@ -28,6 +28,7 @@ nlohmann::json benchJson(const BenchResult& result)
                         {"pixel_rms_error", e.pixelRmsError}});
     }
     return {{"reference", result.reference},
+            {"volume", result.volume},
             {"vertices", result.vertices},
             {"viewport", {result.viewport.width, result.viewport.height}},
             {"rows", rows}};
@@ -42,6 +43,7 @@ void printBench(std::ostream& out, const BenchResult& result)
 {
     out << "Reference: " << result.reference << "; " << result.vertices << " vertices timed; pixel errors at "
         << result.viewport.width << "x" << result.viewport.height << ".\n"
+        << "Corners and round trip: " << result.volume << ".\n"
         << "Errors are absolute, with units of the type's epsilon in brackets.\n\n";
     const std::vector<std::string> head = {"precision", "bits", "build ns", "ns/vertex", "max rel. error",
                                            "corner error", "|RR^T-I|", "|det R-1|", "round trip", "NDC max",

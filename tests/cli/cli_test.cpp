@@ -303,6 +303,26 @@ TEST(Cli, BenchJsonHasEveryTier)
     // Wider is more accurate: double beats float, float128 beats double.
     EXPECT_LT(j["rows"][1]["max_rel_error"].get<double>(), j["rows"][0]["max_rel_error"].get<double>());
     EXPECT_LT(j["rows"][4]["max_rel_error"].get<double>(), 1e-30);
+    EXPECT_EQ(j["volume"], "the view volume");
+}
+
+// Found: the Vulkan preset with its far plane at infinity was refused
+// ("camera.projection.far: is infinite") instead of measured.
+TEST(Cli, BenchMeasuresAViewVolumeWithoutAFarFace)
+{
+    const std::string scene = std::string(viewpipe::build::dataDir) + "/scenes/apis/vulkan-reversed-infinite.json";
+    const Result r = run("bench " + scene + " --json --vertices 2000");
+    ASSERT_EQ(r.exitCode, 0) << r.err;
+    const Json j = Json::parse(r.out);
+    EXPECT_EQ(j["volume"], "the view volume up to far = 1000 × near (its far plane is infinite)");
+    ASSERT_EQ(j["rows"].size(), 6u);
+    for (const Json& row : j["rows"]) {
+        EXPECT_LE(row["corner_error"].get<double>(), 8 * row["epsilon"].get<double>()) << row["precision"];
+        EXPECT_GT(row["ndc_max_error"].get<double>(), 0.0) << row["precision"]; // the scene's vertices measured
+    }
+    const Result text = run("bench " + scene + " --vertices 2000");
+    ASSERT_EQ(text.exitCode, 0) << text.err;
+    EXPECT_NE(text.out.find("Corners and round trip: the view volume up to far = 1000 × near"), std::string::npos);
 }
 
 } // namespace

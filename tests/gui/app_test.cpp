@@ -11,6 +11,7 @@
 #include <QTimer>
 #include <QScreen>
 #include <QWindow>
+#include <QLabel>
 #include <QLineEdit>
 #include <QListWidget>
 #include <QMenu>
@@ -514,6 +515,23 @@ private slots:
         QCOMPARE(w.accuracy()->table()->rowCount(), 6);
         QCOMPARE(w.accuracy()->table()->item(1, 0)->text(), QString("double"));
         QVERIFY(w.accuracy()->table()->item(1, 5)->text().contains("e-16"));
+    }
+
+    // Found: the Vulkan preset with its far plane at infinity was refused
+    // ("camera.projection.far: is infinite"); what can be measured is.
+    void accuracyMeasuresAVolumeWithoutAFarFace()
+    {
+        MainWindow& w = *window_;
+        QVERIFY(w.sceneFiles()->openScene(QString(viewpipe::build::dataDir) + "/scenes/apis/vulkan-reversed-infinite.json"));
+        QSignalSpy done(w.accuracy(), &AccuracyPanel::finished);
+        w.accuracy()->measure(*w.document()->evaluated(), 2000);
+        QVERIFY(done.wait(120000));
+        QCOMPARE(w.accuracy()->table()->rowCount(), 6);
+        QVERIFY(w.accuracy()->table()->item(1, 5)->text().contains("e-16")); // double's corners
+        const QList<QLabel*> labels = w.accuracy()->findChildren<QLabel*>();
+        QVERIFY(std::any_of(labels.begin(), labels.end(), [](const QLabel* label) {
+            return label->text().contains("up to far = 1000 × near (its far plane is infinite)");
+        }));
     }
 
     // Before any measurement the Accuracy panel's plot area is the theme's

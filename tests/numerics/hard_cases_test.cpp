@@ -5,8 +5,10 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <cstdio>
 #include <functional>
+#include <limits>
 
 #include "support.hpp"
 #include "viewpipe/accuracy.hpp"
@@ -59,6 +61,16 @@ foley::ViewSpec<double> with(std::function<void(foley::ViewSpec<double>&)> edit)
     foley::ViewSpec<double> s = house();
     edit(s);
     return s;
+}
+
+// The scene data/scenes/apis/vulkan-reversed-infinite.json's camera.
+gl::Camera<double> reversedInfinite()
+{
+    return {{{40, 30, 100}, {8, 8, 42}, {0, 1, 0}},
+            gl::Perspective<double>{40, 1.5, 30, std::numeric_limits<double>::infinity()},
+            gl::Api::Vulkan,
+            gl::Handedness::Right,
+            gl::DepthMode::Reversed};
 }
 
 const std::vector<Case>& cases()
@@ -116,6 +128,8 @@ const std::vector<Case>& cases()
         {"9. GL fovy 1e-9 degrees",
          [] { return CameraSpec<double>(gl::Camera<double>{{{0, 0, 5}, {0, 0, 0}, {0, 1, 0}}, gl::Perspective<double>{1e-9, 1.5, 1, 10}}); },
          8, nullptr, nullptr},
+        {"9. GL far at infinity, Vulkan reversed depth (measured up to far = 1000 near)",
+         [] { return CameraSpec<double>(reversedInfinite()); }, 8, nullptr, nullptr},
         {"9. GL fovy 180 - 1e-9 degrees",
          [] {
              return CameraSpec<double>(gl::Camera<double>{{{0, 0, 5}, {0, 0, 0}, {0, 1, 0}},
@@ -150,6 +164,25 @@ TEST_P(HardCase, BehavesAsStated)
 }
 
 INSTANTIATE_TEST_SUITE_P(Table, HardCase, ::testing::Range<std::size_t>(0, cases().size()));
+
+// 9. No far face: the volume measured ends at 1000 times near. Its near corners
+// go to Vulkan's reversed near depth 1, its stand-in far ones to depth
+// near / distance = 1/1000 (reversed-Z with an infinite far plane: depth = n / d).
+TEST(InfiniteFar, MeasuredUpToAStandInFarPlane)
+{
+    const ReferenceSolution ref = makeReference(CameraSpec<double>(reversedInfinite()), 256, 16);
+    EXPECT_TRUE(ref.farStandIn);
+    for (std::size_t k = 0; k < 8; ++k) {
+        SCOPED_TRACE(k);
+        EXPECT_NEAR(static_cast<double>(ref.canonical[k].z()), k < 4 ? 1.0 : 1e-3, 1e-15);
+        EXPECT_NEAR(std::abs(static_cast<double>(ref.canonical[k].x())), 1.0, 1e-15); // on the frustum's sides
+        EXPECT_NEAR(std::abs(static_cast<double>(ref.canonical[k].y())), 1.0, 1e-15);
+    }
+    EXPECT_FALSE(makeReference(CameraSpec<double>(gl::Camera<double>{{{0, 0, 5}, {0, 0, 0}, {0, 1, 0}},
+                                                                     gl::Perspective<double>{60, 1, 1, 10}}),
+                               256, 16)
+                     .farStandIn);
+}
 
 // 2. VUP nearly parallel to VPN, not axis-aligned: R orthonormal within 4 eps at
 // every angle accepted; refused below 16 eps radians.

@@ -54,6 +54,7 @@ struct ReferenceSolution {
     std::array<Vec3<Reference>, 8> corners;        // world
     std::array<Vec3<Reference>, 8> canonical;      // their exact images
     bool cornersDivide = false;                    // OpenGL: the canonical corners are after the divide
+    bool farStandIn = false;                       // an infinite far plane: corners and interior end at gl::kStandInFar * near
     std::vector<Vec3<double>> interior;            // inside the view volume, exact in double
 };
 
@@ -105,10 +106,23 @@ inline ReferenceSolution makeReference(const CameraSpec<double>& camera, unsigne
             if constexpr (std::is_same_v<C, foley::ViewSpec<Reference>>) {
                 ref.corners = foley::viewVolumeCorners(c);
                 ref.canonical = foley::canonicalCorners(c);
-            } else {
+            } else if (gl::hasFarFace(c)) {
                 ref.corners = gl::viewVolumeCorners(c);
                 ref.canonical = viewSetup(c).canonical;
                 ref.cornersDivide = true;
+            } else {
+                // No far face: the volume measured ends at gl::kStandInFar times near. The near face's
+                // corners still go to the canonical one; the stand-in far face's exact images are
+                // the reference's own.
+                gl::Camera<Reference> bounded = c;
+                std::visit([](auto& p) { p.zFar = Reference(gl::kStandInFar) * p.zNear; }, bounded.projection);
+                ref.corners = gl::viewVolumeCorners(bounded);
+                for (std::size_t k = 0; k < 8; ++k) {
+                    const Vec4<Reference> h = ref.pipeline.composite * ref.corners[k].homogeneous();
+                    ref.canonical[k] = h.template head<3>() / h.w();
+                }
+                ref.cornersDivide = true;
+                ref.farStandIn = true;
             }
         },
         exact);

@@ -439,6 +439,17 @@ template <class T> std::vector<Stage<T>> stages(const Camera<T>& camera)
     return all;
 }
 
+// Where a finite far plane stands in for an infinite one (a projection turned
+// into another type, the volume the accuracy is measured in): this times near.
+constexpr double kStandInFar = 1000;
+
+// False for an infinite far plane (glFrustum and gluPerspective's limit).
+template <class T> bool hasFarFace(const Camera<T>& camera)
+{
+    using std::isinf;
+    return std::visit([](const auto& p) { return !isinf(p.zFar); }, camera.projection);
+}
+
 // The view volume's 8 corners in world coordinates: near face first, then
 // far face, each in the order (l,b), (r,b), (r,t), (l,t) of the eye's x and y
 // (a left-handed eye's x is -s). They map to the NDC cube's corners, near face
