@@ -237,7 +237,7 @@ BenchResult oneRow()
 TEST(BenchReport, JsonHasTheContractedKeys)
 {
     const Json j = report::benchJson(oneRow());
-    EXPECT_EQ(keys(j), (std::vector<std::string>{"reference", "rows", "vertices", "viewport"}));
+    EXPECT_EQ(keys(j), (std::vector<std::string>{"reference", "rows", "vertices", "viewport", "volume"}));
     EXPECT_EQ(j["viewport"], Json({640, 480}));
     ASSERT_EQ(j["rows"].size(), 1u);
     EXPECT_EQ(keys(j["rows"][0]),
