@@ -130,14 +130,16 @@ void styleLogAxis(vtkAxis* axis, const std::string& title, Theme theme, double l
                   const ChartText& text)
 {
     styleAxis(axis, title, theme, text);
-    const int first = int(std::floor(std::log10(low))) - 1;
-    const int last = int(std::ceil(std::log10(high))) + 1;
+    const double room = std::max(1.0, (std::log10(high) - std::log10(low)) / 8);
+    const int first = int(std::floor(std::log10(low) - room));
+    const int last = int(std::ceil(std::log10(high) + room));
     const int step = std::max(1, (last - first + maxLabels - 1) / maxLabels);
+    const int start = int(std::floor(double(first) / step)) * step; // numbers at multiples of the step: 10⁻¹⁰, 10⁻⁵, 1
     axis->SetBehavior(vtkAxis::FIXED);
-    axis->SetRange(first - 0.5 * step, last); // the lowest number above the corner, where the other axis' first is
+    axis->SetRange(start - 0.5 * step, last); // the lowest number above the corner, where the other axis' first is
     vtkNew<vtkDoubleArray> ticks;
     vtkNew<vtkStringArray> labels;
-    for (int e = first; e <= last; e += step) {
+    for (int e = start; e <= last; e += step) {
         ticks->InsertNextValue(double(e));
         labels->InsertNextValue(powerOfTen(e));
     }

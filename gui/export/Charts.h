@@ -39,9 +39,11 @@ ChartText fitChartText(int width, int height, double textScale, const ChartWords
 
 // VTK's charts hold points in single precision, where tiny errors (1e-50)
 // underflow: values are plotted as log10 on a linear axis, labelled in powers
-// of ten, from a decade below `low` (and half a label's step more, which keeps
-// its number off the corner) to a decade above `high`, at most
-// `maxLabels` labels (fewer on a short axis, where they would run together).
+// of ten, from below `low` (and half a label's step more, which keeps its
+// number off the corner) to above `high`, at most `maxLabels` labels (fewer on
+// a short axis, where they would run together). The room beyond `low` and
+// `high`, a decade or an eighth of their span, keeps a marker there whole
+// however many decades the axis spans.
 void styleLogAxis(vtkAxis* axis, const std::string& title, Theme theme, double low, double high, int maxLabels = 12,
                   const ChartText& text = {});
 

@@ -16,6 +16,7 @@
 #include <filesystem>
 #include <optional>
 #include <string>
+#include <tuple>
 #include <vector>
 
 #include <unistd.h>
@@ -25,6 +26,7 @@
 
 #include <vtkAxis.h>
 #include <vtkChartLegend.h>
+#include <vtkChartMatrix.h>
 #include <vtkChartXY.h>
 #include <vtkContext2D.h>
 #include <vtkContextScene.h>
@@ -39,6 +41,7 @@
 
 #include "build_paths.h"
 #include "drawn_texts.h"
+#include "export/AccuracyPlot.h"
 #include "export/Charts.h"
 #include "export/DepthPlot.h"
 #include "painter/VtkGeometry.h"
@@ -318,10 +321,67 @@ TEST(ExportLayout, LogAxisNumbersArePowersOfTen)
     std::vector<std::string> labels;
     for (vtkIdType k = 0; k < axis->GetTickLabels()->GetNumberOfValues(); ++k)
         labels.push_back(axis->GetTickLabels()->GetValue(k));
-    const std::vector<std::string> expected = {"10⁻¹⁷", "10⁻¹⁶", "10⁻¹⁵", "10⁻¹⁴", "10⁻¹³", "10⁻¹²", "10⁻¹¹",
+    const std::vector<std::string> expected = {"10⁻¹⁸", "10⁻¹⁷", "10⁻¹⁶", "10⁻¹⁵", "10⁻¹⁴", "10⁻¹³", "10⁻¹²", "10⁻¹¹",
                                                "10⁻¹⁰", "10⁻⁹",  "10⁻⁸",  "10⁻⁷",  "10⁻⁶",  "10⁻⁵",  "10⁻⁴",
-                                               "10⁻³",  "10⁻²",  "10⁻¹",  "1",     "10",    "10²",   "10³",   "10⁴"};
+                                               "10⁻³",  "10⁻²",  "10⁻¹",  "1",     "10",    "10²",   "10³",   "10⁴",   "10⁵"};
     EXPECT_EQ(labels, expected);
+}
+
+// Found: in the app's narrow Accuracy panel the markers at the ends of an
+// axis spanning 45 decades were cut by the plot's edge. Every marker (14 px)
+// lies whole inside its plot, stacked at the panel's least height and beside
+// each other as `bench --plot` draws them.
+TEST(ExportLayout, AccuracyMarkersLieWholeInsideThePlots)
+{
+    BenchResult result; // the house's figures on this machine, the widest spread the ladder gives
+    const std::vector<std::tuple<const char*, double, double, double, double>> tiers = {
+        {"float", 1.1e3, 1.2, 2.5e-7, 1.3e-7},         {"double", 1.3e3, 2.3, 1.1e-15, 1.6e-16},
+        {"long-double", 7e3, 25, 4.3e-19, 3e-20},      {"double-double", 2e4, 24, 3e-33, 2e-32},
+        {"float128", 2e4, 460, 7.7e-34, 1e-33},        {"mpfr", 6.3e4, 1300, 6.3e-51, 2.5e-51}};
+    for (const auto& [name, build, vertex, entries, ndc] : tiers) {
+        BenchRow row;
+        row.precision = name;
+        row.buildNs = build;
+        row.vertexNs = vertex;
+        row.errors.maxRelativeError = entries;
+        row.errors.ndcMaxError = ndc;
+        result.rows.push_back(row);
+    }
+    constexpr double kMarkerHalf = 7; // AccuracyPlot's markers are 14 px
+    for (const auto& [width, height, stacked] : {std::tuple{360, 520, true}, std::tuple{1600, 700, false}}) {
+        SCOPED_TRACE(std::to_string(width) + "x" + std::to_string(height));
+        vtkNew<vtkContextView> view;
+        view->GetRenderWindow()->SetOffScreenRendering(1);
+        view->GetRenderWindow()->SetSize(width, height);
+        vtkNew<vtkChartMatrix> charts;
+        view->GetScene()->AddItem(charts);
+        drawAccuracyCharts(charts, result, Theme::Light, stacked);
+        view->Render();
+        for (const vtkVector2i cell : {vtkVector2i(0, 0), stacked ? vtkVector2i(0, 1) : vtkVector2i(1, 0)}) {
+            auto* chart = vtkChartXY::SafeDownCast(charts->GetChart(cell));
+            ASSERT_TRUE(chart);
+            const bool vertices = std::string(chart->GetTitle()) == "Pushing vertices";
+            vtkAxis* x = chart->GetAxis(vtkAxis::BOTTOM);
+            vtkAxis* y = chart->GetAxis(vtkAxis::LEFT);
+            // An axis maps its range onto the pixels between its two end points.
+            auto pixel = [](vtkAxis* axis, int along, double value) {
+                const double t = (value - axis->GetMinimum()) / (axis->GetMaximum() - axis->GetMinimum());
+                return axis->GetPoint1()[along] + t * (axis->GetPoint2()[along] - axis->GetPoint1()[along]);
+            };
+            const double left = x->GetPoint1()[0], right = x->GetPoint2()[0];
+            const double bottom = y->GetPoint1()[1], top = y->GetPoint2()[1];
+            ASSERT_GT(right - left, 50);
+            ASSERT_GT(top - bottom, 50);
+            for (const BenchRow& row : result.rows) {
+                const double px = pixel(x, 0, std::log10(vertices ? row.vertexNs : row.buildNs));
+                const double py = pixel(y, 1, std::log10(vertices ? row.errors.ndcMaxError : row.errors.maxRelativeError));
+                EXPECT_GE(px - kMarkerHalf, left) << chart->GetTitle() << " " << row.precision;
+                EXPECT_LE(px + kMarkerHalf, right) << chart->GetTitle() << " " << row.precision;
+                EXPECT_GE(py - kMarkerHalf, bottom) << chart->GetTitle() << " " << row.precision;
+                EXPECT_LE(py + kMarkerHalf, top) << chart->GetTitle() << " " << row.precision;
+            }
+        }
+    }
 }
 
 } // namespace
