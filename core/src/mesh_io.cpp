@@ -851,6 +851,8 @@ PolygonMesh readMeshFile(const std::filesystem::path& file, const std::string& f
     if (!in)
         throw InputError(field, "cannot read \"" + file.string() + "\": " + std::strerror(errno));
     std::string bytes;
+    if (!error)
+        bytes.reserve(static_cast<std::size_t>(size)); // read in one allocation, not copied at each doubling
     std::array<char, 1 << 16> buffer;
     while (in.read(buffer.data(), buffer.size()) || in.gcount() > 0)
         bytes.append(buffer.data(), static_cast<std::size_t>(in.gcount()));
