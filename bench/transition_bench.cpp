@@ -93,8 +93,8 @@ struct AppView : Window {
     explicit AppView(const std::string& name) : scene(evaluateScene(sceneNamed(name)))
     {
         painter.setScene(scene);
-        window->Render();
         painter.resetView();
+        window->Render();
     }
     // Moving, as Play is, once the decimated copies of large meshes are made (off the timing).
     void startMoving()

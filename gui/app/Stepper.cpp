@@ -1,5 +1,6 @@
 #include "Stepper.h"
 
+#include <QSignalBlocker>
 #include <QVariantAnimation>
 
 #include <algorithm>
@@ -113,9 +114,15 @@ void Stepper::startStep(bool follows)
     const qint64 now = clock_.elapsed();
     const qint64 late = follows ? std::clamp<qint64>(now - stepEnds_, 0, stepMilliseconds_ - 1) : 0;
     stepEnds_ = now - late + stepMilliseconds_;
-    animation_->start();
-    if (late > 0)
-        animation_->setCurrentTime(int(late));
+    if (late == 0) {
+        animation_->start();
+        return;
+    }
+    {
+        const QSignalBlocker quiet(animation_); // no frame drawn at the step's start, only where it is due
+        animation_->start();
+    }
+    animation_->setCurrentTime(int(late));
 }
 
 void Stepper::rest()

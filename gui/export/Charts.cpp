@@ -133,8 +133,12 @@ void styleLogAxis(vtkAxis* axis, const std::string& title, Theme theme, double l
     const double room = std::max(1.0, (std::log10(high) - std::log10(low)) / 8);
     const int first = int(std::floor(std::log10(low) - room));
     const int last = int(std::ceil(std::log10(high) + room));
-    const int step = std::max(1, (last - first + maxLabels - 1) / maxLabels);
-    const int start = int(std::floor(double(first) / step)) * step; // numbers at multiples of the step: 10⁻¹⁰, 10⁻⁵, 1
+    // Numbers at multiples of the step (10⁻¹⁰, 10⁻⁵, 1), at most maxLabels of them.
+    int step = std::max(1, (last - first + maxLabels - 1) / maxLabels);
+    auto startFor = [first](int s) { return int(std::floor(double(first) / s)) * s; };
+    while ((last - startFor(step)) / step + 1 > std::max(1, maxLabels))
+        ++step;
+    const int start = startFor(step);
     axis->SetBehavior(vtkAxis::FIXED);
     axis->SetRange(start - 0.5 * step, last); // the lowest number above the corner, where the other axis' first is
     vtkNew<vtkDoubleArray> ticks;

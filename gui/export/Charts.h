@@ -42,8 +42,8 @@ ChartText fitChartText(int width, int height, double textScale, const ChartWords
 // of ten, from below `low` (and half a label's step more, which keeps its
 // number off the corner) to above `high`, at most `maxLabels` labels (fewer on
 // a short axis, where they would run together). The room beyond `low` and
-// `high`, a decade or an eighth of their span, keeps a marker there whole
-// however many decades the axis spans.
+// `high`, a decade or an eighth of their span, keeps a 14 px marker there
+// whole on a plot about 80 px long or more, however many decades it spans.
 void styleLogAxis(vtkAxis* axis, const std::string& title, Theme theme, double low, double high, int maxLabels = 12,
                   const ChartText& text = {});
 

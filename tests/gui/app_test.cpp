@@ -217,7 +217,7 @@ private slots:
     {
         MainWindow& w = *window_;
         int frames = 0;
-        QVariantAnimation* animation = w.findChild<QVariantAnimation*>();
+        QVariantAnimation* animation = w.stepper()->findChild<QVariantAnimation*>();
         QVERIFY(animation);
         connect(animation, &QVariantAnimation::valueChanged, this, [&frames] { ++frames; });
         w.stepper()->goToStage(1);
@@ -236,7 +236,7 @@ private slots:
     {
         MainWindow& w = *window_;
         w.stepper()->goToStage(0, false);
-        QVariantAnimation* animation = w.findChild<QVariantAnimation*>();
+        QVariantAnimation* animation = w.stepper()->findChild<QVariantAnimation*>();
         QVERIFY(animation);
         const auto busy = connect(w.stepper(), &Stepper::rested, this, [] { QThread::msleep(400); });
         QList<int> startedAt; // each following step's time, in ms, as it starts

@@ -9,6 +9,7 @@
 #include <cstdio>
 #include <functional>
 #include <limits>
+#include <tuple>
 
 #include "support.hpp"
 #include "viewpipe/accuracy.hpp"
@@ -166,17 +167,24 @@ TEST_P(HardCase, BehavesAsStated)
 INSTANTIATE_TEST_SUITE_P(Table, HardCase, ::testing::Range<std::size_t>(0, cases().size()));
 
 // 9. No far face: the volume measured ends at 1000 times near. Its near corners
-// go to Vulkan's reversed near depth 1, its stand-in far ones to depth
-// near / distance = 1/1000 (reversed-Z with an infinite far plane: depth = n / d).
+// go to the API's near depth, its stand-in far ones to the depth an infinite
+// far plane gives at distance d = 1000 n: Vulkan reversed, n / d = 1/1000;
+// OpenGL, 1 - 2n / d = 0.998 (gluPerspective's limit: C = -1, D = -2n).
 TEST(InfiniteFar, MeasuredUpToAStandInFarPlane)
 {
-    const ReferenceSolution ref = makeReference(CameraSpec<double>(reversedInfinite()), 256, 16);
-    EXPECT_TRUE(ref.farStandIn);
-    for (std::size_t k = 0; k < 8; ++k) {
-        SCOPED_TRACE(k);
-        EXPECT_NEAR(static_cast<double>(ref.canonical[k].z()), k < 4 ? 1.0 : 1e-3, 1e-15);
-        EXPECT_NEAR(std::abs(static_cast<double>(ref.canonical[k].x())), 1.0, 1e-15); // on the frustum's sides
-        EXPECT_NEAR(std::abs(static_cast<double>(ref.canonical[k].y())), 1.0, 1e-15);
+    gl::Camera<double> opengl = reversedInfinite();
+    opengl.api = gl::Api::OpenGL;
+    opengl.depth = gl::DepthMode::Standard;
+    for (const auto& [camera, nearDepth, standInDepth] :
+         {std::tuple{reversedInfinite(), 1.0, 1e-3}, std::tuple{opengl, -1.0, 0.998}}) {
+        const ReferenceSolution ref = makeReference(CameraSpec<double>(camera), 256, 16);
+        EXPECT_TRUE(ref.farStandIn);
+        for (std::size_t k = 0; k < 8; ++k) {
+            SCOPED_TRACE(k);
+            EXPECT_NEAR(static_cast<double>(ref.canonical[k].z()), k < 4 ? nearDepth : standInDepth, 1e-15);
+            EXPECT_NEAR(std::abs(static_cast<double>(ref.canonical[k].x())), 1.0, 1e-15); // on the frustum's sides
+            EXPECT_NEAR(std::abs(static_cast<double>(ref.canonical[k].y())), 1.0, 1e-15);
+        }
     }
     EXPECT_FALSE(makeReference(CameraSpec<double>(gl::Camera<double>{{{0, 0, 5}, {0, 0, 0}, {0, 1, 0}},
                                                                      gl::Perspective<double>{60, 1, 1, 10}}),

@@ -111,9 +111,9 @@ inline ReferenceSolution makeReference(const CameraSpec<double>& camera, unsigne
                 ref.canonical = viewSetup(c).canonical;
                 ref.cornersDivide = true;
             } else {
-                // No far face: the volume measured ends at gl::kStandInFar times near. The near face's
-                // corners still go to the canonical one; the stand-in far face's exact images are
-                // the reference's own.
+                // No far face: the volume measured ends at gl::kStandInFar times near, and every
+                // corner's exact image is the reference's own (tests check the near face lands on
+                // the API's canonical one and the stand-in on depth n / d).
                 gl::Camera<Reference> bounded = c;
                 std::visit([](auto& p) { p.zFar = Reference(gl::kStandInFar) * p.zNear; }, bounded.projection);
                 ref.corners = gl::viewVolumeCorners(bounded);

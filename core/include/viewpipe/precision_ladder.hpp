@@ -28,7 +28,7 @@ struct BenchResult {
     std::string reference; // e.g. "mpfr-256 (agrees with mpfr-512 to 3.3e-80)"
     // Where the corners and the round trip are measured: "the view volume", or
     // for an infinite far plane the part of it up to a stand-in far plane.
-    std::string volume;
+    std::string volume = "the view volume";
     std::size_t vertices = 0;
     Viewport viewport;
     std::vector<BenchRow> rows;
