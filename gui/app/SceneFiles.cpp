@@ -69,7 +69,7 @@ bool SceneFiles::openScene(const QString& path)
     return openScene(scene, path);
 }
 
-bool SceneFiles::isBusy(const QString& path)
+bool SceneFiles::refusedWhileOpening(const QString& path)
 {
     if (opening_)
         window_->statusBar()->showMessage(tr("%1 waits: a scene is opening").arg(QFileInfo(path).fileName()), 4000);
@@ -78,7 +78,7 @@ bool SceneFiles::isBusy(const QString& path)
 
 bool SceneFiles::openScene(const Scene& scene, const QString& path, bool remember)
 {
-    if (isBusy(path))
+    if (refusedWhileOpening(path))
         return false;
     opening_ = true;
     const auto opened = qScopeGuard([this] { opening_ = false; });
@@ -175,7 +175,7 @@ bool SceneFiles::confirmDiscard()
 
 bool SceneFiles::importMesh(const QString& path)
 {
-    if (isBusy(path))
+    if (refusedWhileOpening(path))
         return false;
     SceneObject object;
     object.type = ObjectType::Mesh;
@@ -192,7 +192,7 @@ bool SceneFiles::importMesh(const QString& path)
 
 void SceneFiles::openDropped(const QString& path)
 {
-    if (isBusy(path))
+    if (refusedWhileOpening(path))
         return;
     const QString suffix = QFileInfo(path).suffix().toLower();
     if (suffix == "json") {

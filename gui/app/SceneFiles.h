@@ -51,7 +51,7 @@ private:
     // While a scene opens (its meshes read off the GUI thread, the window
     // waiting), a drop or another open would evaluate beside it: refused,
     // said in the status bar.
-    bool isBusy(const QString& path);
+    bool refusedWhileOpening(const QString& path);
     void addRecent(const QString& path);
     void rebuildRecentMenu();
     void rebuildPresetMenu();

@@ -456,7 +456,6 @@ template <class T> bool hasFarFace(const Camera<T>& camera)
 // at z = -1, before the step to the API's clip coordinates.
 template <class T> std::array<Vec3<T>, 8> viewVolumeCorners(const Camera<T>& camera)
 {
-    using std::isinf;
     const Basis<T> basis = eyeBasis(camera.lookAt);
     struct Box {
         T left, right, bottom, top, zNear, zFar;
@@ -474,7 +473,7 @@ template <class T> std::array<Vec3<T>, 8> viewVolumeCorners(const Camera<T>& cam
             }
         },
         camera.projection);
-    if (isinf(box.zFar))
+    if (!hasFarFace(camera))
         throw InputError(kProjectionField + "far", "is infinite: the view volume has no far face");
     std::array<Vec3<T>, 8> corners;
     const std::array<std::array<T, 2>, 4> face = {
