@@ -1,4 +1,4 @@
-// Export speed: `viewpipe export` of every stage of the default scene at
+// Export speed: `viewpipe export` of every stage of Foley's house at
 // 1920x1080 PNG against a bare VTK program that renders the same geometry
 // (the painter's props, moved by vtkProp3D::SetUserMatrix on the GPU) to the
 // same number of PNG files. Run both in one process, side by side:

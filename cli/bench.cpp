@@ -19,7 +19,7 @@ struct BenchCommandOptions {
 int runBench(const BenchCommandOptions& options, const BenchPlotWriter& writePlot)
 {
     return guarded(options.scene.empty() ? std::string("viewpipe bench") : options.scene, "viewpipe bench", [&] {
-        const std::string file = options.scene.empty() ? scenesDirectory() + "/house.json" : options.scene;
+        const std::string file = options.scene.empty() ? defaultScene() : options.scene;
         const Scene scene = loadScene(file);
         BenchOptions o;
         o.vertices = options.vertices;
@@ -51,7 +51,7 @@ void addBenchCommand(CLI::App& app, BenchPlotWriter writePlot)
 {
     auto options = std::make_shared<BenchCommandOptions>();
     CLI::App* command = app.add_subcommand(
-        "bench", "What each precision costs in time and buys in accuracy (default scene: the house)");
+        "bench", "What each precision costs in time and buys in accuracy (default scene: the house from its front-right corner)");
     command->add_option("SCENE", options->scene, "Scene file (JSON)");
     command->add_flag("--json", options->json, "One JSON object on stdout");
     command->add_option("--plot", options->plot, "Draw error against time (log-log) to this PNG");

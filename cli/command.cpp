@@ -54,4 +54,9 @@ std::string scenesDirectory()
     return std::string(data && *data ? data : VIEWPIPE_DATA_DIR) + "/scenes";
 }
 
+std::string defaultScene()
+{
+    return scenesDirectory() + "/house-corner.json";
+}
+
 } // namespace viewpipe::commands

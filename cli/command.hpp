@@ -53,5 +53,7 @@ void addPrecision(CLI::App* command, PrecisionOptions& options);
 // The built-in scenes: $VIEWPIPE_DATA/scenes if set, else the source tree's
 // data/scenes (as the app's, gui/app/AppPaths.h, without Qt).
 std::string scenesDirectory();
+// The scene `open` and `bench` take when none is given: one where every stage moves.
+std::string defaultScene();
 
 } // namespace viewpipe::commands

@@ -18,6 +18,8 @@ int runOpen(int argc, char** argv, OpenCommandOptions& options)
 {
     gui::OpenOptions& open = options.open;
     return guarded(open.scene.empty() ? std::string("viewpipe open") : open.scene, "viewpipe: internal error", [&] {
+        if (open.scene.empty())
+            open.scene = defaultScene();
         if (!options.size.empty()) {
             std::tie(open.width, open.height) = parseSize(options.size, "--size");
             if (open.width < 200 || open.height < 150 || open.width > 8192 || open.height > 8192)
@@ -39,7 +41,7 @@ void addOpenCommand(CLI::App& app, int argc, char** argv)
 {
     auto options = std::make_shared<OpenCommandOptions>();
     gui::OpenOptions& open = options->open;
-    CLI::App* command = app.add_subcommand("open", "Open the app on a scene (default: the built-in house)");
+    CLI::App* command = app.add_subcommand("open", "Open the app on a scene (default: the house from its front-right corner, where every stage moves)");
     command->add_option("SCENE", open.scene, "Scene file (JSON)");
     command->add_option("--stage", open.stage, "Stage to show: 0 is the world, K after the K-th matrix");
     command->add_option("--screenshot", open.screenshot, "Save a PNG of the whole window and exit");

@@ -4,7 +4,7 @@
 set -euo pipefail
 cd "$(dirname "$0")/.."
 viewpipe=build/bin/viewpipe
-scene=data/scenes/house.json
+scene=data/scenes/house-corner.json
 
 if [ -n "${DISPLAY:-}" ] || [ -n "${WAYLAND_DISPLAY:-}" ]; then
   exec "$viewpipe" open "$scene"

@@ -17,7 +17,6 @@
 #include <optional>
 
 #include "AccuracyPanel.h"
-#include "AppPaths.h"
 #include "LessonDocument.h"
 #include "LessonFlow.h"
 #include "MainWindow.h"
@@ -31,8 +30,7 @@ namespace viewpipe::gui {
 
 int runOpen(int argc, char** argv, const OpenOptions& options)
 {
-    const QString scenePath = options.scene.empty() ? scenesDirectory() + "/house.json"
-                                                    : QString::fromStdString(options.scene);
+    const QString scenePath = QString::fromStdString(options.scene);
     // Validate before any window appears: bad input is exit 2 with the core's message.
     const Scene scene = loadScene(scenePath.toStdString());
     const int stages = int(evaluateScene(scene)->pipeline.stages.size()); // reads the meshes

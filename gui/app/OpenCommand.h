@@ -9,7 +9,7 @@
 namespace viewpipe::gui {
 
 struct OpenOptions {
-    std::string scene;          // empty: the built-in default scene
+    std::string scene;          // the scene file
     int stage = 0;
     std::string screenshot;     // empty: interactive
     int width = 0, height = 0;  // 0: 1600x950 for a screenshot, else as large as that fits the screen

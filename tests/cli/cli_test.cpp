@@ -384,7 +384,7 @@ TEST(Cli, EffectsInPipelineAndTrace)
     EXPECT_EQ(clip["inside"].get<int>() + clip["clipped"].get<int>() + clip["outside"].get<int>(), 27); // 15 + 12 edges
     EXPECT_GT(clip["clipped"].get<int>(), 0);
     EXPECT_EQ(j["effects"]["cull"]["faces"], 13);
-    // The default scene lists no effects: no "effects" key, five stages as before.
+    // Foley's house lists no effects: no "effects" key, five stages as before.
     const Json plain = Json::parse(run("pipeline " + kHouse + " --json").out);
     EXPECT_FALSE(plain.contains("effects"));
     EXPECT_EQ(plain["stages"].size(), 5u);

@@ -7,7 +7,9 @@
 // vrp'_z = -PRP_n, i.e. 1 / (PRP_n - B) > 0, which takes the back plane to
 // z = -1). The hand computations below follow Foley's eqs. 6.31-6.48.
 
+#include "build_paths.h"
 #include "support.hpp"
+#include "viewpipe/scene.hpp"
 
 #include <boost/multiprecision/cpp_bin_float.hpp>
 
@@ -94,6 +96,35 @@ TEST(FoleyHouse, HouseLiesInsideTheCanonicalVolume)
     EXPECT_FALSE(tracePoint(p, Vec3<double>(90, 0, 40)).inside); // beside the window
     EXPECT_FALSE(tracePoint(p, Vec3<double>(8, 6, 84)).inside);  // the PRP itself: w = 0 after M
     EXPECT_FALSE(tracePoint(p, Vec3<double>(8, 6, 100)).inside); // behind the eye: w < 0
+}
+
+// The default scene (data/scenes/house-corner.json), where no stage is the identity. By hand:
+// VRP (16, 0, 54); n = (1, 0, 1)/sqrt2, u = VUP x n = (1, 0, -1)/sqrt2, v = n x u = (0, 1, 0).
+// CW = (3, 7, 0), DOP = CW - PRP = (9, -13, -36): shx = -DOP_x / DOP_z = 1/4, shy = -13/36.
+// vrp'_z = -36, B = -30: S_per = S(2*36 / (34*66), 2*36 / (22*66), 1/66) = S(6/187, 6/121, 1/66);
+// z_min = -(vrp'_z + F) / (vrp'_z + B) = -31/66.
+TEST(FoleyHouseCorner, DefaultSceneMovesAtEveryStageAsComputedByHand)
+{
+    const Scene scene = loadScene(std::filesystem::path(viewpipe::build::dataDir) / "scenes" / "house-corner.json");
+    const Pipeline<double> p = buildPipeline(scene.camera);
+    ASSERT_EQ(p.stages.size(), 5u);
+    const double s = 1 / std::sqrt(2.0);
+    const std::array<Mat4<double>, 5> expected = {
+        rows({{1, 0, 0, -16}, {0, 1, 0, 0}, {0, 0, 1, -54}, {0, 0, 0, 1}}),
+        rows({{s, 0, -s, 0}, {0, 1, 0, 0}, {s, 0, s, 0}, {0, 0, 0, 1}}),
+        rows({{1, 0, 0, 6}, {0, 1, 0, -20}, {0, 0, 1, -36}, {0, 0, 0, 1}}),
+        rows({{1, 0, 0.25, 0}, {0, 1, -13.0 / 36, 0}, {0, 0, 1, 0}, {0, 0, 0, 1}}),
+        rows({{6.0 / 187, 0, 0, 0}, {0, 6.0 / 121, 0, 0}, {0, 0, 1.0 / 66, 0}, {0, 0, 0, 1}})};
+    for (std::size_t k = 0; k < 5; ++k) {
+        EXPECT_TRUE(p.stages[k].matrix.isApprox(expected[k], 4 * eps<double>())) << p.stages[k].symbol;
+        EXPECT_FALSE(p.stages[k].matrix.isApprox(Mat4<double>::Identity(), 1e-3)) << p.stages[k].symbol << " does not move";
+    }
+    ASSERT_TRUE(p.zmin.has_value());
+    EXPECT_NEAR(*p.zmin, -31.0 / 66, 4 * eps<double>());
+    // The whole house lies inside the view volume.
+    for (double z : {30.0, 54.0})
+        for (const auto& xy : {std::pair{0.0, 0.0}, {16.0, 0.0}, {16.0, 10.0}, {8.0, 16.0}, {0.0, 10.0}})
+            EXPECT_TRUE(tracePoint(p, Vec3<double>(xy.first, xy.second, z)).inside) << xy.first << " " << z;
 }
 
 TEST(FoleyM, MapsPerspectiveCornersToParallelCorners)

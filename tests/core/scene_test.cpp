@@ -1,4 +1,4 @@
-// Scene files: the default scene, refusals naming the field path, round trips.
+// Scene files: Foley's house, refusals naming the field path, round trips.
 
 #include "build_paths.h"
 #include "support.hpp"
@@ -27,7 +27,7 @@ void refused(const std::string& text, const std::string& field, const std::strin
     expectRefused([&] { parseScene(text, kData); }, field, reason);
 }
 
-TEST(Scene, DefaultSceneIsFoleysHouse)
+TEST(Scene, FoleysHouseHasTheBooksView)
 {
     const Scene scene = loadScene(kData / "scenes" / "house.json");
     const auto& spec = std::get<foley::ViewSpec<double>>(scene.camera);

@@ -1,6 +1,6 @@
 // Rendering through the viewpipe executable: screenshots of the app
 // (`viewpipe open --stage K --screenshot`) and exported stages (`viewpipe
-// export`) of the default scene against reviewed images, with a threshold for
+// export`) of Foley's house against reviewed images, with a threshold for
 // rendering noise. A missing baseline is written to the build tree for review
 // and the test fails; copy it to tests/baselines/ only after looking at it.
 // Also the export's other outputs: SVG, PDF, LaTeX, JSON, the animation, and
@@ -201,7 +201,23 @@ private slots:
         compareWithBaseline(shot, QString("house-stage-%1.png").arg(stage));
     }
 
-    // The default scene's export (PNG, 1280x720, light theme) against reviewed images.
+    // `open` without a scene shows the house from its corner, where every stage moves (the
+    // matrices are checked by hand in foley_test): the same window as naming that file.
+    void openWithoutASceneShowsTheDefaultScene()
+    {
+        QTemporaryDir dir;
+        const QString given = dir.filePath("given.png"), byDefault = dir.filePath("default.png");
+        const QStringList shot = {"--stage", "3", "--size", "800x500"};
+        const Run named = runViewpipe(QStringList{"open", QString(::viewpipe::build::dataDir) + "/scenes/house-corner.json",
+                                                  "--screenshot", given} + shot);
+        QVERIFY2(named.exitCode == 0, qPrintable(named.err));
+        const Run unnamed = runViewpipe(QStringList{"open", "--screenshot", byDefault} + shot);
+        QVERIFY2(unnamed.exitCode == 0, qPrintable(unnamed.err));
+        QVERIFY2(contentShare(QImage(given)) > 0.2, "the screenshot is nearly blank");
+        QCOMPARE(QImage(byDefault), QImage(given));
+    }
+
+    // Foley's house's export (PNG, 1280x720, light theme) against reviewed images.
     void exportMatchesBaselines()
     {
         QTemporaryDir dir;
