@@ -93,6 +93,19 @@ bool segmentCrossesBox(const Segment2& s, const Box2& box)
     return t0 <= t1;
 }
 
+// Two segments cross at a point more than `margin` pixels from each one's ends
+// (leaders from one anchor, or meeting end to end, do not cross).
+bool segmentsCross(const Segment2& a, const Segment2& b, double margin)
+{
+    const Vec2d r = a[1] - a[0], s = b[1] - b[0], q = b[0] - a[0];
+    const double d = r.x() * s.y() - r.y() * s.x();
+    if (std::abs(d) < 1e-12 * r.squaredNorm() * s.squaredNorm())
+        return false; // parallel
+    const double t = (q.x() * s.y() - q.y() * s.x()) / d, u = (q.x() * r.y() - q.y() * r.x()) / d;
+    const double ta = margin / r.norm(), ub = margin / s.norm();
+    return t > ta && t < 1 - ta && u > ub && u < 1 - ub;
+}
+
 // The share of a box's area inside a convex polygon, sampled on a 5 x 5 grid.
 double shareInside(const Box2& box, const std::vector<Vec2d>& polygon)
 {
@@ -441,7 +454,6 @@ std::vector<std::optional<PlacedLabel>> placeLabels(const std::vector<LabelReque
     // Directions to try, the customary up-right first.
     const std::array<Vec2d, 8> directions = {{{1, -1}, {1, 0}, {1, 1}, {0, -1}, {-1, -1}, {-1, 0}, {-1, 1}, {0, 1}}};
     const std::array<double, 6> distances = {4, 24, 48, 80, 130, 200}; // pixels; from the second on, with a leader
-    const std::size_t reserved = obstacles.reserved.size(); // captions and legends: no leader ever crosses them
     const double farthest = 0.3 * std::hypot(width, height); // a leader longer than this would pile labels up
     std::vector<std::optional<PlacedLabel>> placed(requests.size());
 
@@ -462,12 +474,23 @@ std::vector<std::optional<PlacedLabel>> placeLabels(const std::vector<LabelReque
         padded.push_back(box.grown(kPadding));
         cleared.push_back(box.grown(1));
     };
-    for (const Box2& box : obstacles.reserved)
-        take(box);
-    // Free: inside the picture, off every box taken and (while leaders are
-    // kept apart) every leader drawn; with a leader to `anchor`, that leader
-    // crosses no box taken either.
-    bool leadersApart = true;
+    auto retake = [&] { // after a label placed before is moved
+        padded.clear();
+        cleared.clear();
+        leaders.clear();
+        for (const Box2& box : obstacles.reserved)
+            take(box);
+        for (const std::optional<PlacedLabel>& p : placed)
+            if (p) {
+                take(p->box);
+                if (p->leader)
+                    leaders.push_back({p->anchor, p->box.nearest(p->anchor)});
+            }
+    };
+    retake();
+    // Free: inside the picture, off every box taken and every leader drawn;
+    // with a leader to `anchor`, that leader crosses no box taken and no
+    // leader drawn either.
     auto free = [&](const Box2& box, const std::optional<Vec2d>& anchor) {
         if (!picture.contains(box))
             return false;
@@ -478,21 +501,35 @@ std::vector<std::optional<PlacedLabel>> placeLabels(const std::vector<LabelReque
             const Segment2 leader = {*anchor, box.nearest(*anchor)};
             if ((leader[1] - leader[0]).norm() > farthest)
                 return false;
-            for (std::size_t k = 0; k < cleared.size() && (leadersApart || k < reserved); ++k)
-                if (segmentCrossesBox(leader, cleared[k]))
+            for (const Box2& other : cleared)
+                if (segmentCrossesBox(leader, other))
+                    return false;
+            for (const Segment2& other : leaders)
+                if (segmentsCross(leader, other, 1))
                     return false;
         }
-        if (leadersApart) {
-            const Box2 clear = box.grown(1);
-            for (const Segment2& line : leaders)
-                if (segmentCrossesBox(line, clear))
-                    return false;
-        }
+        const Box2 clear = box.grown(1);
+        for (const Segment2& line : leaders)
+            if (segmentCrossesBox(line, clear))
+                return false;
         return true;
     };
 
-    for (std::size_t k = 0; k < requests.size(); ++k) {
+    // Leaders pointing away from the labels' middle fan out and seldom cross one another.
+    Vec2d middle = Vec2d::Zero();
+    double names = 0;
+    for (const LabelRequest& r : requests)
+        if (!r.minor) {
+            middle += r.anchor;
+            ++names;
+        }
+    middle /= std::max(names, 1.0);
+
+    // The best free place for a label given those taken: near its anchor, else (`anywhere`) the
+    // nearest free place in the picture, with a leader.
+    auto search = [&](std::size_t k, bool anywhere) -> std::optional<PlacedLabel> {
         const LabelRequest& r = requests[k];
+        const Vec2d outward = (r.anchor - middle).norm() > 1 ? Vec2d((r.anchor - middle).normalized()) : Vec2d::Zero();
         std::optional<Box2> best;
         double bestCost = 0;
         bool bestLeader = false;
@@ -516,30 +553,49 @@ std::vector<std::optional<PlacedLabel>> placeLabels(const std::vector<LabelReque
                 const Vec2d min(dir.x() > 0 ? 0 : dir.x() < 0 ? -r.size.x() : -r.size.x() / 2,
                                 dir.y() > 0 ? 0 : dir.y() < 0 ? -r.size.y() : -r.size.y() / 2);
                 const Box2 box{r.anchor + offset + min, r.anchor + offset + min + r.size};
-                // Nearer is better: a crossing line costs as much as going one ring further out.
-                consider(box, double(d) * 1.0 + 0.01 * double(j), d > 0);
+                // Nearer is better: a crossing line costs as much as going one ring further out. Beside
+                // the anchor, the customary direction; with a leader, outward (less than a ring's worth).
+                const double turn = d > 0 ? 0.45 * (1 - outward.dot(dir.normalized())) : 0;
+                consider(box, double(d) * 1.0 + turn + 0.01 * double(j), d > 0);
             }
             if (best && bestCost < double(d) + 1)
                 break; // nothing further out can do better
         }
-        // Crowded: the nearest free place anywhere, with a leader; failing that, one whose leader crosses others.
-        for (const bool apart : {true, false}) {
-            if (best || r.minor)
-                break;
-            leadersApart = apart;
+        if (!best && anywhere && !r.minor)
             for (double y = picture.min.y(); y + r.size.y() <= picture.max.y(); y += 8)
                 for (double x = picture.min.x(); x + r.size.x() <= picture.max.x(); x += 8) {
                     const Box2 box{Vec2d(x, y), Vec2d(x, y) + r.size};
                     consider(box, 0.02 * (box.min + r.size / 2 - r.anchor).norm(), true);
                 }
+        if (!best)
+            return std::nullopt;
+        return PlacedLabel{r.element, r.text, r.anchor, *best, bestLeader, r.minor};
+    };
+
+    for (std::size_t k = 0; k < requests.size(); ++k) {
+        if ((placed[k] = search(k, true))) {
+            take(placed[k]->box);
+            if (placed[k]->leader)
+                leaders.push_back({placed[k]->anchor, placed[k]->box.nearest(placed[k]->anchor)});
+            continue;
         }
-        leadersApart = true;
-        if (best) {
-            take(*best);
-            if (bestLeader)
-                leaders.push_back({r.anchor, best->nearest(r.anchor)});
-            placed[k] = PlacedLabel{r.element, r.text, r.anchor, *best, bestLeader, r.minor};
+        // Crowded out, often by a leader placed before: moving that label may leave room for both
+        // (near their anchors: the search anywhere is too slow to try for each).
+        for (std::size_t j = 0; j < k && !placed[k] && !requests[k].minor; ++j) {
+            if (!placed[j] || !placed[j]->leader)
+                continue;
+            const std::optional<PlacedLabel> before = std::move(placed[j]);
+            placed[j].reset();
+            retake();
+            if ((placed[k] = search(k, false))) {
+                retake();
+                if (!(placed[j] = search(j, false)))
+                    placed[k].reset();
+            }
+            if (!placed[j])
+                placed[j] = before;
         }
+        retake();
     }
     return placed;
 }
@@ -668,19 +724,21 @@ SceneLabels placeSceneLabels(const StageShown& stage, const FigureView& view, co
         }
     LabelObstacles obstacles = labelObstacles(stage, view, markers);
     obstacles.reserved.insert(obstacles.reserved.end(), reserved.begin(), reserved.end());
-    auto notice = [&](const std::vector<std::optional<PlacedLabel>>& placed) {
+    // Where the whole sentence finds no room (a narrow view), a brief one: "left out: 3 labels, 6 ticks".
+    auto notice = [&](const std::vector<std::optional<PlacedLabel>>& placed, bool brief) {
         int names = 0, ticks = 0;
         for (std::size_t k = 0; k < placed.size(); ++k)
             if (!placed[k])
                 ++(requests[k].minor ? ticks : names);
         auto count = [](int n, const char* one, const char* many) { return std::to_string(n) + " " + (n == 1 ? one : many); };
         return names + ticks == 0 ? std::string()
-                                  : "left out for room: " + (names ? count(names, "label", "labels") : "") +
-                                        (names && ticks ? ", " : "") + (ticks ? count(ticks, "tick number", "tick numbers") : "");
+                                  : (brief ? "left out: " : "left out for room: ") + (names ? count(names, "label", "labels") : "") +
+                                        (names && ticks ? ", " : "") +
+                                        (ticks ? brief ? count(ticks, "tick", "ticks") : count(ticks, "tick number", "tick numbers") : "");
     };
     std::vector<std::optional<PlacedLabel>> placed = placeLabels(requests, obstacles, view.width, view.height);
     SceneLabels result;
-    if (const std::string first = notice(placed); !first.empty()) {
+    if (const std::string first = notice(placed, false); !first.empty()) {
         // In the bottom right corner; else right above what is reserved at the bottom (the effects'
         // note), at the right or the left; else below the caption. Nowhere free: not said.
         constexpr double kEdge = 5;
@@ -707,14 +765,20 @@ SceneLabels placeSceneLabels(const StageShown& stage, const FigureView& view, co
         // pass left out fits the room (it grows by a few characters at most).
         const std::size_t reservedBefore = obstacles.reserved.size();
         std::string text = first;
-        for (int tries = 0; tries < 4 && !text.empty(); ++tries) {
+        bool brief = false;
+        for (int tries = 0; tries < 6 && !text.empty(); ++tries) {
             const std::optional<Box2> room = corner(sizeOf(text + "8"));
-            if (!room)
-                break;
+            if (!room) {
+                if (brief)
+                    break;
+                brief = true;
+                text = notice(placed, brief);
+                continue;
+            }
             obstacles.reserved.resize(reservedBefore);
             obstacles.reserved.push_back(*room);
             placed = placeLabels(requests, obstacles, view.width, view.height);
-            text = notice(placed);
+            text = notice(placed, brief);
             const Vec2d size = sizeOf(text);
             if (text.empty() || size.x() > room->max.x() - room->min.x())
                 continue;

@@ -4,8 +4,11 @@
 // actor's box and size, and the legend's box and entry size.
 
 #include <vtkActor2DCollection.h>
+#include <vtkCell.h>
 #include <vtkCoordinate.h>
 #include <vtkLegendBoxActor.h>
+#include <vtkPolyData.h>
+#include <vtkPolyDataMapper2D.h>
 #include <vtkRenderer.h>
 #include <vtkTextActor.h>
 #include <vtkTextProperty.h>
@@ -25,10 +28,15 @@ struct DrawnText {
     bool bold;
 };
 
+struct DrawnLeader {
+    std::array<double, 2> from, to; // viewport pixels (y up): at the anchor, at the label
+};
+
 struct DrawnTexts {
     std::vector<DrawnText> texts;
     std::optional<std::array<double, 4>> legend;
     int legendFontSize = 0;
+    std::vector<DrawnLeader> leaders; // the 2D lines drawn over the view: labels' leaders
 };
 
 inline DrawnTexts drawnTexts(vtkRenderer* view)
@@ -47,6 +55,19 @@ inline DrawnTexts drawnTexts(vtkRenderer* view)
             box = {box[0] + at[0], box[1] + at[0], box[2] + at[1], box[3] + at[1]};
             drawn.texts.push_back({text->GetInput(), box, text->GetTextProperty()->GetFontSize(),
                                    text->GetTextProperty()->GetBold() != 0});
+        } else if (auto* mapper = vtkPolyDataMapper2D::SafeDownCast(actor->GetMapper())) {
+            vtkPolyData* lines = mapper->GetInput();
+            if (!lines || lines->GetNumberOfLines() == 0 || lines->GetNumberOfPolys() != 0)
+                continue; // the markers are filled shapes
+            for (vtkIdType c = 0; c < lines->GetNumberOfCells(); ++c) {
+                vtkCell* cell = lines->GetCell(c);
+                if (cell->GetNumberOfPoints() != 2)
+                    continue;
+                double a[3], b[3];
+                lines->GetPoint(cell->GetPointId(0), a);
+                lines->GetPoint(cell->GetPointId(1), b);
+                drawn.leaders.push_back({{a[0], a[1]}, {b[0], b[1]}});
+            }
         } else if (auto* legend = vtkLegendBoxActor::SafeDownCast(actor)) {
             // Position2 is relative to Position: computed, it is the upper right corner.
             const int* low = legend->GetPositionCoordinate()->GetComputedViewportValue(view);

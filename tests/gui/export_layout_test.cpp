@@ -1,7 +1,8 @@
 // Every built-in scene at every stage as the export draws it, at 1280x720 and
 // 800x450 with text at 100 % and 200 %, read as a person reads it: in the PNG
 // (the painter's text actors) and in the SVG (its text elements, measured in
-// the font they name). Every text inside the picture and on no other; at
+// the font they name). Every text inside the picture and on no other, no
+// leader across another, a text or the legend (in the PNG); at
 // 100 %, labels and captions at least 2.4 % of the width and every text at
 // least 1.8 % (8 pt and 6 pt when the picture is 12 cm wide).
 
@@ -12,6 +13,7 @@
 #include <QFontMetricsF>
 #include <QXmlStreamReader>
 
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <optional>
@@ -128,6 +130,71 @@ void checkTexts(const std::vector<std::pair<std::string, std::array<double, 4>>>
     }
 }
 
+// The point where two segments cross, more than a pixel from either's ends; none where they do not.
+bool segmentsCross(const DrawnLeader& a, const DrawnLeader& b)
+{
+    const double rx = a.to[0] - a.from[0], ry = a.to[1] - a.from[1], sx = b.to[0] - b.from[0], sy = b.to[1] - b.from[1];
+    const double d = rx * sy - ry * sx;
+    if (std::abs(d) < 1e-9)
+        return false; // parallel
+    const double qx = b.from[0] - a.from[0], qy = b.from[1] - a.from[1];
+    const double t = (qx * sy - qy * sx) / d, u = (qx * ry - qy * rx) / d;
+    const double ta = 1 / std::hypot(rx, ry), ub = 1 / std::hypot(sx, sy); // a pixel along each
+    return t > ta && t < 1 - ta && u > ub && u < 1 - ub;
+}
+
+bool leaderCrossesBox(const DrawnLeader& l, const std::array<double, 4>& box)
+{
+    // Sampled every half pixel: leaders are short.
+    const double length = std::hypot(l.to[0] - l.from[0], l.to[1] - l.from[1]);
+    for (double s = 0; s <= length; s += 0.5) {
+        const double f = length > 0 ? s / length : 0;
+        const double x = l.from[0] + f * (l.to[0] - l.from[0]), y = l.from[1] + f * (l.to[1] - l.from[1]);
+        if (x > box[0] && x < box[1] && y > box[2] && y < box[3])
+            return true;
+    }
+    return false;
+}
+
+// Leaders as a reader follows them: no two cross, and none runs through a
+// text (other than the label it leads to) or the legend.
+void checkLeaders(const DrawnTexts& drawn, const std::string& at)
+{
+    auto labelOf = [&](const DrawnLeader& l) -> std::size_t { // the text the leader ends at
+        std::size_t nearest = drawn.texts.size();
+        double best = 4; // pixels
+        for (std::size_t k = 0; k < drawn.texts.size(); ++k) {
+            const auto& b = drawn.texts[k].box;
+            const double dx = std::max({b[0] - l.to[0], 0.0, l.to[0] - b[1]}), dy = std::max({b[2] - l.to[1], 0.0, l.to[1] - b[3]});
+            if (std::hypot(dx, dy) < best) {
+                best = std::hypot(dx, dy);
+                nearest = k;
+            }
+        }
+        return nearest;
+    };
+    auto name = [&](const DrawnLeader& l) {
+        const std::size_t k = labelOf(l);
+        return k < drawn.texts.size() ? "\"" + drawn.texts[k].text + "\"'s leader" : std::string("a leader");
+    };
+    for (std::size_t i = 0; i < drawn.leaders.size(); ++i) {
+        const DrawnLeader& l = drawn.leaders[i];
+        for (std::size_t j = i + 1; j < drawn.leaders.size(); ++j)
+            EXPECT_FALSE(segmentsCross(l, drawn.leaders[j])) << at << name(l) << " crosses " << name(drawn.leaders[j]);
+        const std::size_t own = labelOf(l);
+        for (std::size_t k = 0; k < drawn.texts.size(); ++k) {
+            const auto& b = drawn.texts[k].box;
+            const std::array<double, 4> inner = {b[0] + 1, b[1] - 1, b[2] + 1, b[3] - 1};
+            if (k != own) {
+                EXPECT_FALSE(leaderCrossesBox(l, inner)) << at << name(l) << " runs through \"" << drawn.texts[k].text << "\"";
+            }
+        }
+        if (drawn.legend) {
+            EXPECT_FALSE(leaderCrossesBox(l, *drawn.legend)) << at << name(l) << " runs through the legend";
+        }
+    }
+}
+
 // Each size a test of its own (CTest runs them side by side, tests/CMakeLists.txt).
 class ExportLayoutAt : public ::testing::TestWithParam<Shown> {};
 
@@ -163,6 +230,7 @@ TEST_P(ExportLayoutAt, EveryTextReadsInsideThePictureAndApart)
                 EXPECT_GE(drawn.legendFontSize, small - 1e-9) << at << "the legend";
             }
             checkTexts(boxes, shown, at + "PNG: ");
+            checkLeaders(drawn, at + "PNG: ");
 
             // The SVG, y down.
             const fs::path svg = out / "figure.svg";

@@ -186,10 +186,11 @@ struct PlacedLabel {
     bool minor = false;  // set smaller (tick numbers)
 };
 
-// Places each label near its anchor: inside the picture, on no other label
-// and no reserved box, crossing as few lines and objects as it can, moved
-// away with a leader line when nothing near is free. A label that finds no
-// free place at all is left out (its index is missing from the result).
+// Places each label near its anchor: inside the picture, on no other label,
+// leader or reserved box, crossing as few lines and objects as it can, moved
+// away with a leader line when nothing near is free (a leader crossing no
+// label, reserved box or other leader). A label that finds no free place at
+// all is left out (its index is missing from the result).
 std::vector<std::optional<PlacedLabel>> placeLabels(const std::vector<LabelRequest>& requests,
                                                     const LabelObstacles& obstacles, int width, int height);
 
@@ -202,8 +203,9 @@ int labelOverlaps(const std::vector<PlacedLabel>& labels);
 // priority: the canonical volume's labels, the scene's names, the frame
 // axes' names, tick numbers, so that where room runs out tick numbers are
 // left out first. When any is left out, a notice in the bottom right
-// corner says how many ("left out for room: 2 labels, 5 tick numbers"), set
-// as a tick number.
+// corner says how many ("left out for room: 2 labels, 5 tick numbers"; in a
+// view too narrow for that, "left out: 2 labels, 5 ticks"), set as a tick
+// number.
 struct SceneLabels {
     std::vector<std::optional<PlacedLabel>> placed; // each label's, in the order given; none where left out
     std::optional<PlacedLabel> leftOut;
