@@ -195,11 +195,15 @@ void MainWindow::buildDocks()
 void MainWindow::fitDocksToText()
 {
     // Widths in units of the text's average character, the views keeping at least 40 % of the window.
-    // A dock is never narrower than its content: a scroll area would cut it, not shrink it.
+    // A dock is as wide as its content where the screen has room (its scroll area would cut it, not
+    // shrink it); with large text on a small screen, at most 30 % of the screen, the content scrolling
+    // sideways, so that the window still fits the screen.
+    const int screenWidth = screen() ? screen()->availableGeometry().width() : 1280;
     for (QDockWidget* dock : findChildren<QDockWidget*>())
         if (auto* scroll = qobject_cast<QScrollArea*>(dock->widget()))
-            scroll->setMinimumWidth(scroll->widget()->minimumSizeHint().width() +
-                                    scroll->verticalScrollBar()->sizeHint().width() + 2 * scroll->frameWidth());
+            scroll->setMinimumWidth(std::min(int(0.3 * screenWidth),
+                                             scroll->widget()->minimumSizeHint().width() +
+                                                 scroll->verticalScrollBar()->sizeHint().width() + 2 * scroll->frameWidth()));
     const QFontMetrics metrics(QApplication::font());
     const int em = metrics.averageCharWidth();
     const double share = std::min(1.0, 0.6 * width() / double(em * (40 + 60)));

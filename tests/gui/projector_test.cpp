@@ -107,6 +107,27 @@ private slots:
         closeWindow(window);
     }
 
+    // Text at 200 % in a window filling the 1280x720 screen: found, the docks' contents made the
+    // window 1395 px wide, a sixth of it off the screen. The window fits; the views' texts read.
+    void largeTextKeepsTheWindowOnTheScreen()
+    {
+        auto window = openWindow(kScenes + "/house-corner.json", {1280, 720});
+        QVERIFY(window);
+        window->stepper()->goToStage(5, false); // its matrices panel the widest, with S_per's formulas
+        window->setFontSize(2 * MainWindow::kDefaultFontSize, false);
+        QTest::qWait(100); // the docks fit to the text once the widgets have taken it
+        settle(*window);
+        const QRect screen = window->screen()->availableGeometry();
+        QVERIFY2(window->frameGeometry().width() <= screen.width(),
+                 qPrintable(QString("the window is %1 px wide on a %2 px screen").arg(window->frameGeometry().width()).arg(screen.width())));
+        window->renderNow();
+        for (const char* view : {"worldView", "projectedView"}) {
+            const std::string trouble = textTrouble(renderer(*window, view));
+            QVERIFY2(trouble.empty(), qPrintable(QString(view) + ": " + QString::fromStdString(trouble)));
+        }
+        closeWindow(window);
+    }
+
 private:
     QFont systemFont_;
 
