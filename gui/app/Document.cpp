@@ -73,11 +73,9 @@ void Document::setEffects(const EffectList& effects, const QString& description)
     replace(std::move(next), description);
 }
 
-void Document::addObject(const SceneObject& object, const QString& description)
+void Document::edit(std::shared_ptr<const EvaluatedScene> after, const QString& description)
 {
-    Scene next = scene();
-    next.objects.push_back(object);
-    replace(std::move(next), description);
+    undo_.push(new SceneEdit(this, evaluated_, std::move(after), description, -1));
 }
 
 void Document::markRecovered(const Scene& saved)

@@ -48,8 +48,10 @@ public:
     // throws InputError and changes nothing. Consecutive edits with the same
     // `gesture` (>= 0: one drag of a number) make one undoable edit.
     void setCamera(const CameraSpec<double>& camera, const QString& description, int gesture = -1);
-    void addObject(const SceneObject& object, const QString& description);
     void setEffects(const EffectList& effects, const QString& description);
+    // A scene already evaluated (by evaluate(), off the GUI thread: an object
+    // added) becomes the current state, as one undoable edit.
+    void edit(std::shared_ptr<const EvaluatedScene> after, const QString& description);
 
     // After a crash: the loaded scene becomes one undoable edit away from
     // `saved` (the file as it was), so it shows as unsaved changes.

@@ -72,7 +72,7 @@ bool SceneFiles::openScene(const QString& path)
 bool SceneFiles::refusedWhileOpening(const QString& path)
 {
     if (opening_)
-        window_->statusBar()->showMessage(tr("%1 waits: a scene is opening").arg(QFileInfo(path).fileName()), 4000);
+        window_->statusBar()->showMessage(tr("%1 waits: a file is being read").arg(QFileInfo(path).fileName()), 4000);
     return opening_;
 }
 
@@ -177,12 +177,20 @@ bool SceneFiles::importMesh(const QString& path)
 {
     if (refusedWhileOpening(path))
         return false;
+    opening_ = true;
+    const auto opened = qScopeGuard([this] { opening_ = false; });
     SceneObject object;
     object.type = ObjectType::Mesh;
     object.resolvedPath = QFileInfo(path).absoluteFilePath().toStdString();
     object.path = object.resolvedPath.string();
+    Scene next = document_->scene();
+    next.objects.push_back(object);
+    const QString name = QFileInfo(path).fileName();
     try {
-        document_->addObject(object, tr("Import %1").arg(QFileInfo(path).fileName()));
+        // Read off the GUI thread, announced, as opening a scene with meshes.
+        std::shared_ptr<const EvaluatedScene> evaluated;
+        waitShowingProgress(window_, tr("Importing %1…").arg(name), [&] { evaluated = document_->evaluate(next); });
+        document_->edit(std::move(evaluated), tr("Import %1").arg(name));
         return true;
     } catch (const InputError& e) {
         window_->showMessage(tr("Cannot import %1: %2").arg(path, QString::fromStdString(e.reason())));

@@ -48,9 +48,9 @@ public:
     void setMenus(QMenu* presets, QMenu* recent);
 
 private:
-    // While a scene opens (its meshes read off the GUI thread, the window
-    // waiting), a drop or another open would evaluate beside it: refused,
-    // said in the status bar.
+    // While a scene opens or a mesh is imported (read off the GUI thread,
+    // the window waiting), a drop, another open or import would evaluate
+    // beside it: refused, said in the status bar.
     bool refusedWhileOpening(const QString& path);
     void addRecent(const QString& path);
     void rebuildRecentMenu();

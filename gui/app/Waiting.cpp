@@ -42,6 +42,11 @@ void waitShowingProgress(QWidget* window, const QString& what, const std::functi
         throw;
     }
     worker.join();
+    if (progress.isVisible()) { // keys go back to the window, not to wherever the dialog left them
+        progress.hide();
+        if (window)
+            window->activateWindow();
+    }
     if (failure)
         std::rethrow_exception(failure);
 }

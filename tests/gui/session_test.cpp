@@ -296,6 +296,41 @@ private slots:
         QVERIFY(!w.findChild<QProgressDialog*>("waitingProgress"));
     }
 
+    // Importing a mesh that is slow to read: read off the GUI thread, a dialog
+    // names the file, one undoable edit; found, the window froze while it read.
+    void importingASlowMeshSaysWhatIsImported()
+    {
+        MainWindow& w = *window_;
+        QVERIFY(!writeMeshScene().isEmpty()); // writes the mesh beside it
+        const std::size_t objects = w.document()->scene().objects.size();
+        struct SlowReads : EvaluationListener {
+            std::thread::id reader;
+            void readingMesh(const std::filesystem::path&) override
+            {
+                reader = std::this_thread::get_id();
+                std::this_thread::sleep_for(std::chrono::seconds(1));
+            }
+        } slow;
+        w.document()->setEvaluationListener(&slow);
+        const auto stopListening = qScopeGuard([&w] { w.document()->setEvaluationListener(nullptr); });
+        QString announced;
+        QTimer look;
+        connect(&look, &QTimer::timeout, [&] {
+            if (auto* dialog = w.findChild<QProgressDialog*>("waitingProgress"); dialog && dialog->isVisible())
+                announced = dialog->labelText();
+        });
+        look.start(50);
+        QVERIFY(w.sceneFiles()->importMesh(QDir::temp().filePath("viewpipe-session-tetrahedron.obj")));
+        look.stop();
+        QCOMPARE(announced, QString("Importing viewpipe-session-tetrahedron.obj…"));
+        QVERIFY(slow.reader != std::this_thread::get_id());
+        QCOMPARE(w.document()->scene().objects.size(), objects + 1);
+        QVERIFY(!w.findChild<QProgressDialog*>("waitingProgress"));
+        QTRY_VERIFY(QApplication::activeWindow() == &w); // keys reach the window again
+        QTest::keyClick(&w, Qt::Key_Z, Qt::ControlModifier);
+        QCOMPARE(w.document()->scene().objects.size(), objects);
+    }
+
     // Found: Ctrl+Y did nothing.
     void undoAndRedoByKeyboard()
     {
