@@ -1,7 +1,8 @@
 // Every built-in scene at every stage as the export draws it, at 1280x720 and
 // 800x450 with text at 100 % and 200 %, read as a person reads it: in the PNG
 // (the painter's text actors) and in the SVG (its text elements, measured in
-// the font they name). Every text inside the picture and on no other, no
+// the font they name), and at 800x450 in the PDF (its words as poppler reads
+// them). Every text inside the picture and on no other, no
 // leader across another, a text or the legend (in the PNG); at
 // 100 %, labels and captions at least 2.4 % of the width and every text at
 // least 1.8 % (8 pt and 6 pt when the picture is 12 cm wide).
@@ -9,6 +10,7 @@
 #include <gtest/gtest.h>
 
 #include <QFile>
+#include <QProcess>
 #include <QFont>
 #include <QFontMetricsF>
 #include <QXmlStreamReader>
@@ -107,6 +109,31 @@ std::vector<SvgText> svgTexts(const fs::path& file)
     }
     EXPECT_FALSE(xml.hasError()) << xml.errorString().toStdString();
     return texts;
+}
+
+// The words of a PDF as poppler reads them (pdftotext -bbox), in the page's units (the picture's
+// pixels), each box the font's line box shrunk to about the ink: a quarter of its height off the
+// top and bottom (a subscript's line box reaches into the next line's), a pixel off each side.
+std::vector<std::pair<std::string, std::array<double, 4>>> pdfWords(const fs::path& file, std::array<double, 2>& page)
+{
+    QProcess pdftotext;
+    pdftotext.start("pdftotext", {"-bbox", QString::fromStdString(file.string()), "-"});
+    EXPECT_TRUE(pdftotext.waitForFinished(60000) && pdftotext.exitCode() == 0) << file;
+    QXmlStreamReader xml(pdftotext.readAllStandardOutput());
+    std::vector<std::pair<std::string, std::array<double, 4>>> words;
+    while (!xml.atEnd()) {
+        if (xml.readNext() != QXmlStreamReader::StartElement)
+            continue;
+        const QXmlStreamAttributes a = xml.attributes();
+        if (xml.name() == QLatin1String("page"))
+            page = {a.value("width").toDouble(), a.value("height").toDouble()};
+        if (xml.name() != QLatin1String("word"))
+            continue;
+        const double x0 = a.value("xMin").toDouble(), x1 = a.value("xMax").toDouble();
+        const double y0 = a.value("yMin").toDouble(), y1 = a.value("yMax").toDouble(), cut = (y1 - y0) / 4;
+        words.push_back({xml.readElementText().toStdString(), {x0 + 1, x1 - 1, y0 + cut, y1 - cut}});
+    }
+    return words;
 }
 
 std::string where(const fs::path& scene, int k, const Shown& shown)
@@ -252,6 +279,18 @@ TEST_P(ExportLayoutAt, EveryTextReadsInsideThePictureAndApart)
             }
             EXPECT_GT(boxes.size(), 3u) << at << "SVG";
             checkTexts(boxes, shown, at + "SVG: ");
+
+            // The PDF, as a reader's viewer finds its words: inside the page, none on another. The SVG's
+            // writer on another device: checked at the small size, where text is tightest.
+            if (shown.width <= 800) {
+                const fs::path pdf = out / "figure.pdf";
+                writeVectorFigure({&stage, offscreen.painter->figureView(), caption, Theme::Light}, "pdf", pdf);
+                std::array<double, 2> page{};
+                const auto words = pdfWords(pdf, page);
+                EXPECT_EQ(page, (std::array<double, 2>{double(shown.width), double(shown.height)})) << at << "PDF";
+                EXPECT_GT(words.size(), 3u) << at << "PDF";
+                checkTexts(words, shown, at + "PDF: ");
+            }
             ++pictures;
         }
     }
