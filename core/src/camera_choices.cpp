@@ -27,9 +27,17 @@ gl::Frustum<double> nearRectangle(const gl::ProjectionSpec<double>& projection)
         projection);
 }
 
-gl::ProjectionSpec<double> projectionOfType(const gl::ProjectionSpec<double>& from, int type)
+// Between a perspective and glOrtho, the rectangle is taken to or from the look-at
+// distance `target`: what lies there keeps its size in the picture (the near
+// plane's rectangle as the box would show the scene 2 to 100 times larger).
+gl::ProjectionSpec<double> projectionOfType(const gl::ProjectionSpec<double>& from, int type, double target)
 {
-    const gl::Frustum<double> box = nearRectangle(from);
+    gl::Frustum<double> box = nearRectangle(from);
+    const bool wasOrtho = std::holds_alternative<gl::Ortho<double>>(from);
+    if (wasOrtho != (type == 1) && std::isfinite(target) && target > 0) {
+        const double scale = wasOrtho ? box.zNear / target : target / box.zNear;
+        box.left *= scale, box.right *= scale, box.bottom *= scale, box.top *= scale;
+    }
     if (type == 0)
         return box;
     if (type == 1)
@@ -83,7 +91,7 @@ CameraSpec<double> withChoice(const CameraSpec<double>& camera, const std::strin
     else if (field == "camera.depth")
         gl.depth = index == 0 ? gl::DepthMode::Standard : gl::DepthMode::Reversed;
     else if (index != int(gl.projection.index()))
-        gl.projection = projectionOfType(gl.projection, index);
+        gl.projection = projectionOfType(gl.projection, index, (gl.lookAt.eye - gl.lookAt.center).norm());
     return out;
 }
 

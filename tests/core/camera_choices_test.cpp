@@ -40,19 +40,32 @@ TEST(CameraChoices, PerspectiveToFrustumKeepsTheMatrix)
     EXPECT_NEAR(back.aspect, 2, 1e-15);
 }
 
-// glOrtho keeps the near plane's rectangle as its box; an infinite far becomes 1000 · near (glOrtho has none).
-TEST(CameraChoices, OrthoKeepsTheNearRectangle)
+// glOrtho's box is the near plane's rectangle taken to the look-at distance (5, near 0.5: ten times it); an
+// infinite far becomes 1000 · near (glOrtho has none). Found: the near rectangle itself as the box showed the
+// house about 2.3 times larger on the page.
+TEST(CameraChoices, OrthoKeepsWhatLiesAtTheLookAtPoint)
 {
     const double inf = std::numeric_limits<double>::infinity();
-    const CameraSpec<double> frustum = lookingDownZ(gl::Frustum<double>{-3, 1, -2, 2, 0.5, inf});
+    const CameraSpec<double> frustum = lookingDownZ(gl::Frustum<double>{-0.3, 0.1, -0.2, 0.2, 0.5, inf});
     const CameraSpec<double> ortho = withChoice(frustum, "camera.projection.type", 1);
     const auto& box = std::get<gl::Ortho<double>>(glOf(ortho).projection);
-    EXPECT_EQ(box.left, -3);
-    EXPECT_EQ(box.right, 1);
-    EXPECT_EQ(box.bottom, -2);
-    EXPECT_EQ(box.top, 2);
+    EXPECT_NEAR(box.left, -3, 1e-15);
+    EXPECT_NEAR(box.right, 1, 1e-15);
+    EXPECT_NEAR(box.bottom, -2, 1e-15);
+    EXPECT_NEAR(box.top, 2, 1e-15);
     EXPECT_EQ(box.zNear, 0.5);
     EXPECT_EQ(box.zFar, 500);
+    // A point in the plane of the look-at point lands where it did: same NDC x and y.
+    for (const Vec3<double>& p : {Vec3<double>(0, 0, 0), Vec3<double>(1.5, -0.7, 0), Vec3<double>(-2.5, 1.9, 0)}) {
+        const auto before = tracePoint(buildPipeline(frustum), p).divided, after = tracePoint(buildPipeline(ortho), p).divided;
+        ASSERT_TRUE(before && after);
+        EXPECT_NEAR(after->x(), before->x(), 1e-14) << p.transpose();
+        EXPECT_NEAR(after->y(), before->y(), 1e-14) << p.transpose();
+    }
+    // And back: the frustum again (its far now finite).
+    const auto& again = std::get<gl::Frustum<double>>(glOf(withChoice(ortho, "camera.projection.type", 0)).projection);
+    EXPECT_NEAR(again.left, -0.3, 1e-15);
+    EXPECT_NEAR(again.top, 0.2, 1e-15);
     // The type already chosen changes nothing (an infinite far stays infinite).
     const CameraSpec<double> same = withChoice(frustum, "camera.projection.type", 0);
     EXPECT_TRUE(std::isinf(std::get<gl::Frustum<double>>(glOf(same).projection).zFar));

@@ -274,11 +274,13 @@ private slots:
         QTest::newRow("ortho far") << ortho << -1 << "camera.projection.far" << "0=100" << QStringList{"0=10"}
                                    << "camera.projection.far";
 
-        // glFrustum: the ortho scene switched to it (same box, near 10, far 80).
-        QTest::newRow("frustum left") << ortho << 0 << "camera.projection.left" << "0=-25" << QStringList{"0=20"}
-                                      << "camera.projection.right";
-        QTest::newRow("frustum top") << ortho << 0 << "camera.projection.top" << "0=10" << QStringList{"0=-15"}
-                                     << "camera.projection.top";
+        // glFrustum: the ortho scene switched to it (near 10, far 80; the box taken from the look-at distance
+        // sqrt(2217) to the near plane: right 200 / sqrt(2217), bottom -150 / sqrt(2217), as doubles). glFrustum
+        // refuses only left = right and bottom = top (left > right mirrors the picture).
+        QTest::newRow("frustum left") << ortho << 0 << "camera.projection.left" << "0=-25"
+                                      << QStringList{"0=20", "0=4.247634593412197"} << "camera.projection.right";
+        QTest::newRow("frustum top") << ortho << 0 << "camera.projection.top" << "0=10"
+                                     << QStringList{"0=-15", "0=-3.185725945059148"} << "camera.projection.top";
         QTest::newRow("frustum near") << ortho << 0 << "camera.projection.near" << "0=5" << QStringList{"0=-1"}
                                       << "camera.projection.near";
         QTest::newRow("frustum far") << ortho << 0 << "camera.projection.far" << "0=infinity"

@@ -23,9 +23,11 @@ struct CameraChoice {
 std::vector<CameraChoice> cameraChoices(const CameraSpec<double>& camera);
 
 // `camera` with option `index` of choice `field` taken. Switching an OpenGL
-// camera between glFrustum and glOrtho keeps near, far (1000 · near for an
-// infinite far) and the near plane's rectangle; to gluPerspective, the
-// rectangle's size (centred, as gluPerspective's is).
+// camera's projection keeps near and far (1000 · near for an infinite far
+// in glOrtho); between glFrustum and gluPerspective the near plane's
+// rectangle (its size only, centred, to gluPerspective); between either and
+// glOrtho the rectangle at the look-at distance, so that what lies at the
+// look-at point keeps its place and size in the picture.
 // Throws InputError(field, ...) for a field the camera has no choice of, or
 // an index out of range.
 CameraSpec<double> withChoice(const CameraSpec<double>& camera, const std::string& field, int index);
