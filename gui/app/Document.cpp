@@ -73,6 +73,12 @@ void Document::setEffects(const EffectList& effects, const QString& description)
     replace(std::move(next), description);
 }
 
+std::shared_ptr<const EvaluatedScene> Document::evaluate(const Scene& scene)
+{
+    const std::lock_guard<std::mutex> one(evaluating_);
+    return evaluator_.evaluate(scene);
+}
+
 void Document::edit(std::shared_ptr<const EvaluatedScene> after, const QString& description)
 {
     undo_.push(new SceneEdit(this, evaluated_, std::move(after), description, -1));
@@ -80,12 +86,12 @@ void Document::edit(std::shared_ptr<const EvaluatedScene> after, const QString& 
 
 void Document::markRecovered(const Scene& saved)
 {
-    undo_.push(new SceneEdit(this, evaluator_.evaluate(saved), evaluated_, tr("Recover unsaved changes"), -1));
+    undo_.push(new SceneEdit(this, evaluate(saved), evaluated_, tr("Recover unsaved changes"), -1));
 }
 
 void Document::replace(Scene next, const QString& description, int gesture)
 {
-    std::shared_ptr<const EvaluatedScene> after = evaluator_.evaluate(next); // throws InputError: nothing changes
+    std::shared_ptr<const EvaluatedScene> after = evaluate(next); // throws InputError: nothing changes
     undo_.push(new SceneEdit(this, evaluated_, std::move(after), description, gesture));
 }
 

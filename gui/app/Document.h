@@ -11,6 +11,8 @@
 #include <QString>
 #include <QUndoStack>
 
+#include <mutex>
+
 #include <memory>
 
 #include "viewpipe/evaluated_scene.hpp"
@@ -34,10 +36,11 @@ public:
     QString filePath() const { return filePath_; }
     bool isModified() const { return !undo_.isClean(); }
 
-    // A scene evaluated through this document's cache, for load() (safe off
-    // the GUI thread while nothing else evaluates). Throws InputError for a
-    // camera the core refuses or a mesh that cannot be read.
-    std::shared_ptr<const EvaluatedScene> evaluate(const Scene& scene) { return evaluator_.evaluate(scene); }
+    // A scene evaluated through this document's cache, for load() and edit():
+    // safe off the GUI thread (one evaluation at a time: an edit on the GUI
+    // thread meanwhile waits for it). Throws InputError for a scene the core
+    // refuses.
+    std::shared_ptr<const EvaluatedScene> evaluate(const Scene& scene);
     // An evaluated scene (a file's, a lesson step's) read from `path`
     // replaces the current one (no undo across it).
     void load(std::shared_ptr<const EvaluatedScene> evaluated, const QString& path);
@@ -68,6 +71,7 @@ private:
     void replace(Scene next, const QString& description, int gesture = -1);
 
     SceneEvaluator evaluator_;
+    std::mutex evaluating_; // the evaluator's mesh cache is not thread-safe
     std::shared_ptr<const EvaluatedScene> evaluated_;
     QString filePath_;
     QUndoStack undo_;

@@ -151,8 +151,8 @@ void MainWindow::buildDocks()
 {
     auto dock = [this](const QString& title, const QString& name, QWidget* content, Qt::DockWidgetArea area) {
         auto* scroll = new QScrollArea;
-        // Texts wrap to the dock's width rather than run off to the side.
-        scroll->setHorizontalScrollBarPolicy(Qt::ScrollBarAlwaysOff);
+        // Texts wrap to the dock's width; only content wider than a dock may be (fitDocksToText) scrolls sideways.
+        scroll->setHorizontalScrollBarPolicy(Qt::ScrollBarAsNeeded);
         scroll->setWidget(content);
         scroll->setWidgetResizable(true);
         auto* d = new QDockWidget(title, this);

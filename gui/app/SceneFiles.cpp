@@ -72,7 +72,7 @@ bool SceneFiles::openScene(const QString& path)
 bool SceneFiles::refusedWhileOpening(const QString& path)
 {
     if (opening_)
-        window_->statusBar()->showMessage(tr("%1 waits: a file is being read").arg(QFileInfo(path).fileName()), 4000);
+        window_->statusBar()->showMessage(tr("%1 not opened: another file is being read").arg(QFileInfo(path).fileName()), 4000);
     return opening_;
 }
 
@@ -183,13 +183,19 @@ bool SceneFiles::importMesh(const QString& path)
     object.type = ObjectType::Mesh;
     object.resolvedPath = QFileInfo(path).absoluteFilePath().toStdString();
     object.path = object.resolvedPath.string();
-    Scene next = document_->scene();
-    next.objects.push_back(object);
+    const auto withMesh = [&] {
+        Scene next = document_->scene();
+        next.objects.push_back(object);
+        return next;
+    };
+    const std::shared_ptr<const EvaluatedScene> base = document_->evaluated();
     const QString name = QFileInfo(path).fileName();
     try {
         // Read off the GUI thread, announced, as opening a scene with meshes.
         std::shared_ptr<const EvaluatedScene> evaluated;
-        waitShowingProgress(window_, tr("Importing %1…").arg(name), [&] { evaluated = document_->evaluate(next); });
+        waitShowingProgress(window_, tr("Importing %1…").arg(name), [&, next = withMesh()] { evaluated = document_->evaluate(next); });
+        if (document_->evaluated() != base) // edited meanwhile (a field left by the dialog's focus): kept, the mesh read
+            evaluated = document_->evaluate(withMesh());
         document_->edit(std::move(evaluated), tr("Import %1").arg(name));
         return true;
     } catch (const InputError& e) {

@@ -49,8 +49,8 @@ public:
 
 private:
     // While a scene opens or a mesh is imported (read off the GUI thread,
-    // the window waiting), a drop, another open or import would evaluate
-    // beside it: refused, said in the status bar.
+    // the window waiting), a drop, another open or import is refused, said
+    // in the status bar.
     bool refusedWhileOpening(const QString& path);
     void addRecent(const QString& path);
     void rebuildRecentMenu();

@@ -99,7 +99,7 @@ bool segmentsCross(const Segment2& a, const Segment2& b, double margin)
 {
     const Vec2d r = a[1] - a[0], s = b[1] - b[0], q = b[0] - a[0];
     const double d = r.x() * s.y() - r.y() * s.x();
-    if (std::abs(d) < 1e-12 * r.squaredNorm() * s.squaredNorm())
+    if (std::abs(d) < 1e-12 * r.norm() * s.norm())
         return false; // parallel
     const double t = (q.x() * s.y() - q.y() * s.x()) / d, u = (q.x() * r.y() - q.y() * r.x()) / d;
     const double ta = margin / r.norm(), ub = margin / s.norm();
@@ -468,7 +468,7 @@ std::vector<std::optional<PlacedLabel>> placeLabels(const std::vector<LabelReque
     };
     std::vector<Segment2> leaders; // of the labels placed so far
     // The boxes taken (the reserved ones first, then each label's), grown by the padding (no label within) and by a pixel (no leader through);
-    // made once, as the crowded search below asks of every box taken for thousands of places.
+    // grown as each is taken (made again only when a label placed before moves), as the crowded search asks of every box for thousands of places.
     std::vector<Box2> padded, cleared;
     auto take = [&](const Box2& box) {
         padded.push_back(box.grown(kPadding));
@@ -595,7 +595,8 @@ std::vector<std::optional<PlacedLabel>> placeLabels(const std::vector<LabelReque
             if (!placed[j])
                 placed[j] = before;
         }
-        retake();
+        if (!requests[k].minor)
+            retake();
     }
     return placed;
 }

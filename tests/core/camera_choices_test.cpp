@@ -63,7 +63,8 @@ TEST(CameraChoices, OrthoKeepsWhatLiesAtTheLookAtPoint)
         EXPECT_NEAR(after->y(), before->y(), 1e-14) << p.transpose();
     }
     // And back: the frustum again (its far now finite).
-    const auto& again = std::get<gl::Frustum<double>>(glOf(withChoice(ortho, "camera.projection.type", 0)).projection);
+    const CameraSpec<double> frustumAgain = withChoice(ortho, "camera.projection.type", 0);
+    const auto& again = std::get<gl::Frustum<double>>(glOf(frustumAgain).projection);
     EXPECT_NEAR(again.left, -0.3, 1e-15);
     EXPECT_NEAR(again.top, 0.2, 1e-15);
     // The type already chosen changes nothing (an infinite far stays infinite).

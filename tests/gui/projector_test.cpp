@@ -5,6 +5,8 @@
 
 #include <QAction>
 #include <QScreen>
+#include <QScrollArea>
+#include <QScrollBar>
 #include <QVTKOpenGLNativeWidget.h>
 #include <QtTest>
 
@@ -125,6 +127,10 @@ private slots:
             const std::string trouble = textTrouble(renderer(*window, view));
             QVERIFY2(trouble.empty(), qPrintable(QString(view) + ": " + QString::fromStdString(trouble)));
         }
+        // A dock's content wider than the dock can be scrolled to, not cut.
+        for (const QScrollArea* scroll : window->findChildren<QScrollArea*>())
+            if (scroll->isVisible() && scroll->widget() && scroll->widget()->width() > scroll->viewport()->width())
+                QVERIFY2(scroll->horizontalScrollBar()->isVisible(), qPrintable(scroll->parentWidget()->objectName()));
         closeWindow(window);
     }
 

@@ -323,7 +323,8 @@ private slots:
         QVERIFY(w.sceneFiles()->importMesh(QDir::temp().filePath("viewpipe-session-tetrahedron.obj")));
         look.stop();
         QCOMPARE(announced, QString("Importing viewpipe-session-tetrahedron.obj…"));
-        QVERIFY(slow.reader != std::this_thread::get_id());
+        QVERIFY(slow.reader != std::thread::id()); // read,
+        QVERIFY(slow.reader != std::this_thread::get_id()); // and not here
         QCOMPARE(w.document()->scene().objects.size(), objects + 1);
         QVERIFY(!w.findChild<QProgressDialog*>("waitingProgress"));
         QTRY_VERIFY(QApplication::activeWindow() == &w); // keys reach the window again

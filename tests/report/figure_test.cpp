@@ -124,8 +124,8 @@ TEST(LabelPlacement, CrowdedLabelsNeverOverlapStayInsideAndStayNear)
             if (!q.leader || &q < &p)
                 continue;
             const Vec2<double> c = q.anchor, d = q.box.nearest(q.anchor);
-            const bool apart = (a - c).norm() < 1 || (a - d).norm() < 1 || (b - c).norm() < 1 || (b - d).norm() < 1;
-            EXPECT_FALSE(!apart && orientation(a, b, c) * orientation(a, b, d) < 0 && orientation(c, d, a) * orientation(c, d, b) < 0)
+            const bool sharesEnd = (a - c).norm() < 1 || (a - d).norm() < 1 || (b - c).norm() < 1 || (b - d).norm() < 1;
+            EXPECT_FALSE(!sharesEnd && orientation(a, b, c) * orientation(a, b, d) < 0 && orientation(c, d, a) * orientation(c, d, b) < 0)
                 << p.text << "'s leader crosses " << q.text << "'s";
         }
     }
