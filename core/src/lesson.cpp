@@ -5,6 +5,7 @@
 #include <cctype>
 #include <cmath>
 
+#include "file_paths.hpp"
 #include "json_fields.hpp"
 #include "parse_number.hpp"
 #include "viewpipe/format.hpp"
@@ -596,7 +597,7 @@ std::string lessonToJson(const Lesson& lesson, const std::filesystem::path& base
     for (const LessonStep& step : lesson.steps) {
         Json entry;
         if (!step.scene.file.empty()) {
-            entry["scene"] = std::filesystem::proximate(step.scene.file, baseDir).generic_string();
+            entry["scene"] = pathFrom(baseDir, step.scene.file).generic_string();
         } else {
             entry["scene"] = Json::parse(sceneToJson(step.scene, baseDir));
         }

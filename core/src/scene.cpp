@@ -1,5 +1,6 @@
 #include "viewpipe/scene.hpp"
 
+#include "file_paths.hpp"
 #include "json_fields.hpp"
 
 #include "viewpipe/format.hpp"
@@ -799,9 +800,7 @@ std::string sceneToJson(const Scene& scene, const std::filesystem::path& folder)
     Scene moved = scene;
     for (SceneObject& object : moved.objects)
         if (object.type == ObjectType::Mesh)
-            object.path = std::filesystem::proximate(std::filesystem::absolute(object.resolvedPath),
-                                                     std::filesystem::absolute(folder))
-                              .generic_string();
+            object.path = pathFrom(folder, object.resolvedPath).generic_string();
     return sceneToJson(moved);
 }
 

@@ -158,6 +158,22 @@ TEST(Lesson, ALessonSavedReadsBackTheSame)
     for (const auto& entry : fs::directory_iterator(std::string(viewpipe::build::dataDir) + "/lessons")) {
         const Lesson lesson = loadLesson(entry.path());
         for (const fs::path& folder : {entry.path().parent_path(), elsewhere}) {
+            // A scene file is named relative to the lesson only where that does not climb to the root
+            // (found: "../../work/..."), else absolutely; beside the lesson, in data/, relatively.
+            const nlohmann::json saved = nlohmann::json::parse(lessonToJson(lesson, folder));
+            for (const auto& step : saved["steps"])
+                if (step["scene"].is_string()) {
+                    const fs::path named = step["scene"].get<std::string>();
+                    std::size_t up = 0, depth = 0;
+                    for (const fs::path& part : named)
+                        up += part == "..";
+                    for (const fs::path& part : fs::weakly_canonical(folder).relative_path())
+                        depth += !part.empty();
+                    EXPECT_TRUE(named.is_absolute() || up < depth) << named << " from " << folder;
+                    if (folder == entry.path().parent_path()) {
+                        EXPECT_TRUE(named.is_relative()) << named;
+                    }
+                }
             const Lesson again = parseLesson(lessonToJson(lesson, folder), folder);
             ASSERT_EQ(again.steps.size(), lesson.steps.size());
             EXPECT_EQ(again.title, lesson.title);
