@@ -474,6 +474,11 @@ std::vector<std::optional<PlacedLabel>> placeLabels(const std::vector<LabelReque
         padded.push_back(box.grown(kPadding));
         cleared.push_back(box.grown(1));
     };
+    auto takeLabel = [&](const PlacedLabel& label) {
+        take(label.box);
+        if (label.leader)
+            leaders.push_back({label.anchor, label.box.nearest(label.anchor)});
+    };
     auto retake = [&] { // after a label placed before is moved
         padded.clear();
         cleared.clear();
@@ -481,11 +486,8 @@ std::vector<std::optional<PlacedLabel>> placeLabels(const std::vector<LabelReque
         for (const Box2& box : obstacles.reserved)
             take(box);
         for (const std::optional<PlacedLabel>& p : placed)
-            if (p) {
-                take(p->box);
-                if (p->leader)
-                    leaders.push_back({p->anchor, p->box.nearest(p->anchor)});
-            }
+            if (p)
+                takeLabel(*p);
     };
     retake();
     // Free: inside the picture, off every box taken and every leader drawn;
@@ -574,9 +576,7 @@ std::vector<std::optional<PlacedLabel>> placeLabels(const std::vector<LabelReque
 
     for (std::size_t k = 0; k < requests.size(); ++k) {
         if ((placed[k] = search(k, true))) {
-            take(placed[k]->box);
-            if (placed[k]->leader)
-                leaders.push_back({placed[k]->anchor, placed[k]->box.nearest(placed[k]->anchor)});
+            takeLabel(*placed[k]);
             continue;
         }
         // Crowded out, often by a leader placed before: moving that label may leave room for both

@@ -26,6 +26,7 @@
 
 #include <chrono>
 #include <csignal>
+#include <functional>
 #include <thread>
 
 #include "build_paths.h"
@@ -277,20 +278,9 @@ private slots:
         MainWindow& w = *window_;
         const QString scene = writeMeshScene();
         QVERIFY(!scene.isEmpty());
-        struct SlowReads : EvaluationListener {
-            void readingMesh(const std::filesystem::path&) override { std::this_thread::sleep_for(std::chrono::seconds(1)); }
-        } slow;
-        w.document()->setEvaluationListener(&slow);
-        const auto stopListening = qScopeGuard([&w] { w.document()->setEvaluationListener(nullptr); });
+        SlowReads slow;
         QString announced;
-        QTimer look;
-        connect(&look, &QTimer::timeout, [&] {
-            if (auto* dialog = w.findChild<QProgressDialog*>("waitingProgress"); dialog && dialog->isVisible())
-                announced = dialog->labelText();
-        });
-        look.start(50);
-        QVERIFY(w.sceneFiles()->openScene(scene));
-        look.stop();
+        QVERIFY(readSlowly(w, slow, announced, [&] { return w.sceneFiles()->openScene(scene); }));
         QCOMPARE(announced, QString("Opening viewpipe-session-mesh.json…"));
         QCOMPARE(w.document()->scene().objects.size(), std::size_t(2));
         QVERIFY(!w.findChild<QProgressDialog*>("waitingProgress"));
@@ -303,25 +293,10 @@ private slots:
         MainWindow& w = *window_;
         QVERIFY(!writeMeshScene().isEmpty()); // writes the mesh beside it
         const std::size_t objects = w.document()->scene().objects.size();
-        struct SlowReads : EvaluationListener {
-            std::thread::id reader;
-            void readingMesh(const std::filesystem::path&) override
-            {
-                reader = std::this_thread::get_id();
-                std::this_thread::sleep_for(std::chrono::seconds(1));
-            }
-        } slow;
-        w.document()->setEvaluationListener(&slow);
-        const auto stopListening = qScopeGuard([&w] { w.document()->setEvaluationListener(nullptr); });
+        SlowReads slow;
         QString announced;
-        QTimer look;
-        connect(&look, &QTimer::timeout, [&] {
-            if (auto* dialog = w.findChild<QProgressDialog*>("waitingProgress"); dialog && dialog->isVisible())
-                announced = dialog->labelText();
-        });
-        look.start(50);
-        QVERIFY(w.sceneFiles()->importMesh(QDir::temp().filePath("viewpipe-session-tetrahedron.obj")));
-        look.stop();
+        QVERIFY(readSlowly(w, slow, announced,
+                           [&] { return w.sceneFiles()->importMesh(QDir::temp().filePath("viewpipe-session-tetrahedron.obj")); }));
         QCOMPARE(announced, QString("Importing viewpipe-session-tetrahedron.obj…"));
         QVERIFY(slow.reader != std::thread::id()); // read,
         QVERIFY(slow.reader != std::this_thread::get_id()); // and not here
@@ -477,6 +452,30 @@ private slots:
 private:
     // A scene of the house and a tetrahedron read from an OBJ file, in the
     // temporary folder; empty if it cannot be written.
+    // A mesh read made to take a second, noting the thread that reads it.
+    struct SlowReads : EvaluationListener {
+        std::thread::id reader;
+        void readingMesh(const std::filesystem::path&) override
+        {
+            reader = std::this_thread::get_id();
+            std::this_thread::sleep_for(std::chrono::seconds(1));
+        }
+    };
+
+    // Runs `read` with `slow` listening, noting what the waiting dialog says meanwhile.
+    static bool readSlowly(MainWindow& w, SlowReads& slow, QString& announced, const std::function<bool()>& read)
+    {
+        w.document()->setEvaluationListener(&slow);
+        const auto stopListening = qScopeGuard([&w] { w.document()->setEvaluationListener(nullptr); });
+        QTimer look;
+        QObject::connect(&look, &QTimer::timeout, [&] {
+            if (auto* dialog = w.findChild<QProgressDialog*>("waitingProgress"); dialog && dialog->isVisible())
+                announced = dialog->labelText();
+        });
+        look.start(50);
+        return read();
+    }
+
     static QString writeMeshScene()
     {
         const QDir dir = QDir::temp();
