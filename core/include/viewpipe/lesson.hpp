@@ -138,8 +138,9 @@ struct EvaluatedLesson {
 EvaluatedLesson evaluateLesson(const Lesson& lesson, SceneEvaluator* evaluator = nullptr,
                                const EvaluatedLesson* before = nullptr);
 // The lesson as its file holds it, to be read from `baseDir`: a scene loaded
-// from a file as that file's path relative to baseDir, any other inline (its
-// meshes' paths made relative to baseDir); answers the scenes give are left out.
+// from a file as that file's path, any other inline with its meshes' paths;
+// each path relative to baseDir where the two share a folder below the root,
+// else absolute (pathFrom); answers the scenes give are left out.
 std::string lessonToJson(const Lesson& lesson, const std::filesystem::path& baseDir);
 // Reads the question of a step from JSON, as a lesson file holds it (for
 // editing one question), checked against the step's scene.

@@ -21,7 +21,7 @@ struct SceneObject {
     Vec3<double> min = Vec3<double>::Zero(); // box only
     Vec3<double> max = Vec3<double>::Zero(); // box only
     std::string path;                        // mesh only, as written in the file
-    std::filesystem::path resolvedPath;      // mesh only, relative to the scene file's folder
+    std::filesystem::path resolvedPath;      // mesh only, `path` resolved against the scene file's folder
 };
 
 struct Scene {
@@ -65,7 +65,8 @@ struct Preset {
 std::vector<Preset> presetScenes(const std::filesystem::path& scenes);
 
 std::string sceneToJson(const Scene& scene);
-// The same, to be read from `folder`: mesh paths relative to it.
+// The same, to be read from `folder`: a mesh path relative to it where the two
+// share a folder below the root, else absolute.
 std::string sceneToJson(const Scene& scene, const std::filesystem::path& folder);
 // Writes to a temporary file beside the target, then renames: a failed save
 // leaves the previous file untouched.
