@@ -6,7 +6,7 @@
 set -euo pipefail
 
 packages=(
-  build-essential cmake pkg-config ccache
+  build-essential cmake pkg-config ccache lld
   libeigen3-dev nlohmann-json3-dev libcli11-dev libfmt-dev libfast-float-dev
   libgtest-dev libgmock-dev libbenchmark-dev
   libboost-dev libmpfr-dev libglm-dev

@@ -16,6 +16,9 @@
 
 #include <cmath>
 #include <fstream>
+#include <map>
+#include <mutex>
+#include <tuple>
 
 namespace viewpipe::gui {
 
@@ -119,10 +122,26 @@ Vec2<double> textSize(vtkTextProperty* font, const std::string& text, int dpi)
 
 Vec2<double> figureTextSize(const std::string& text, double fontSize, bool bold, int dpi)
 {
+    // Each text measured once: the painter measures every label before each frame, and a
+    // picture's layout measures its caption's words again for each way of breaking its lines.
+    using Key = std::tuple<std::string, long, bool, int>;
+    static std::map<Key, Vec2<double>> measured;
+    static std::mutex measuring;
+    const Key key{text, std::lround(fontSize), bold, dpi};
+    {
+        const std::lock_guard<std::mutex> lock(measuring);
+        if (const auto found = measured.find(key); found != measured.end())
+            return found->second;
+    }
     vtkNew<vtkTextProperty> font;
     useFigureFont(font, bold);
-    font->SetFontSize(int(std::lround(fontSize)));
-    return textSize(font, text, dpi);
+    font->SetFontSize(int(std::get<1>(key)));
+    const Vec2<double> size = textSize(font, text, dpi);
+    const std::lock_guard<std::mutex> lock(measuring);
+    if (measured.size() >= 20000) // a bound for a long session's many texts
+        measured.clear();
+    measured.emplace(key, size);
+    return size;
 }
 
 FontMeasure figureFontMeasure(int dpi)

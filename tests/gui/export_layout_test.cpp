@@ -10,7 +10,6 @@
 #include <gtest/gtest.h>
 
 #include <QFile>
-#include <QProcess>
 #include <QFont>
 #include <QFontMetricsF>
 #include <QXmlStreamReader>
@@ -45,6 +44,7 @@
 
 #include "build_paths.h"
 #include "drawn_texts.h"
+#include "program_output.h"
 #include "export/AccuracyPlot.h"
 #include "export/Charts.h"
 #include "export/DepthPlot.h"
@@ -116,10 +116,9 @@ std::vector<SvgText> svgTexts(const fs::path& file)
 // top and bottom (a subscript's line box reaches into the next line's), a pixel off each side.
 std::vector<std::pair<std::string, std::array<double, 4>>> pdfWords(const fs::path& file, std::array<double, 2>& page)
 {
-    QProcess pdftotext;
-    pdftotext.start("pdftotext", {"-bbox", QString::fromStdString(file.string()), "-"});
-    EXPECT_TRUE(pdftotext.waitForFinished(60000) && pdftotext.exitCode() == 0) << file;
-    QXmlStreamReader xml(pdftotext.readAllStandardOutput());
+    const std::optional<std::string> text = programOutput({"pdftotext", "-bbox", file.string(), "-"});
+    EXPECT_TRUE(text) << "pdftotext " << file;
+    QXmlStreamReader xml(QByteArray::fromStdString(text.value_or("")));
     std::vector<std::pair<std::string, std::array<double, 4>>> words;
     while (!xml.atEnd()) {
         if (xml.readNext() != QXmlStreamReader::StartElement)
