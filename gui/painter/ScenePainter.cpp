@@ -415,15 +415,7 @@ void ScenePainter::placeLabelsOf(const StageShown& stage, const FigureView& view
         texts.push_back(label->label);
     vtkRenderWindow* window = world_->GetRenderWindow();
     const int dpi = window ? window->GetDPI() : 72;
-    vtkNew<vtkTextProperty> font; // as every label's
-    useFigureFont(font, true);
-    font->SetFontSize(fontSize_);
-    vtkNew<vtkTextProperty> minorFont; // as tick numbers
-    useFigureFont(minorFont, false);
-    minorFont->SetFontSize(int(smallTextSize(fontSize_)));
-    const LabelMeasure measure = [&](const viewpipe::Label& label) {
-        return textSize(label.minor ? minorFont.Get() : font.Get(), label.text, dpi);
-    };
+    const LabelMeasure measure = labelMeasure(figureFontMeasure(dpi), fontSize_); // as the labels are set (styleLabel)
     // Viewport pixels are y up, the placement's y down.
     auto up = [&](const Vec2<double>& p) { return Vec2<double>(p.x(), view.height - p.y()); };
     const SceneLabels scene = placeSceneLabels(stage, view, texts, markers, measure, captionBoxes());
