@@ -95,6 +95,10 @@ ScenePainter::ScenePainter(vtkRenderer* world, vtkRenderer* projected)
       leaders_(overlayActor(1.5)), markers_(overlayActor(1)), legend_(newLegend(true)), clippingRange_(vtkSmartPointer<vtkCallbackCommand>::New()),
       nearCut_(vtkSmartPointer<vtkPlane>::New())
 {
+    // Coinciding lines and faces are told apart by depth offsets, not by the order they are drawn in
+    // (which stitched them together pixel by pixel): lines over the faces they edge, and the canonical
+    // outline (setScene) over the view volume's edges, on which it lies at the last stage.
+    vtkMapper::SetResolveCoincidentTopologyToPolygonOffset();
     if (projected)
         projected_ = std::make_unique<ProjectedView>(projected);
     worldCaption_->GetPositionCoordinate()->SetCoordinateSystemToNormalizedViewport();
@@ -222,6 +226,9 @@ void ScenePainter::setScene(std::shared_ptr<const EvaluatedScene> scene)
             addLayer(p, faces.actor(), faces);
         } else {
             addLayer(p, unlitActor(linesData(p.segments)));
+            if (p.canonical)
+                for (vtkMapper* mapper : layers_.back().mappers())
+                    mapper->SetRelativeCoincidentTopologyLineOffsetParameters(0, -2);
         }
         if (StageShown::ghosted(p)) {
             Layer ghost{&p, unlitActor(static_cast<vtkPolyDataMapper*>(layers_.back().actor->GetMapper())->GetInput()), {}};

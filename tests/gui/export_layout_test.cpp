@@ -41,6 +41,8 @@
 #include <vtkNew.h>
 #include <vtkRenderWindow.h>
 #include <vtkRenderer.h>
+#include <vtkImageData.h>
+#include <vtkWindowToImageFilter.h>
 
 #include "build_paths.h"
 #include "drawn_texts.h"
@@ -398,6 +400,53 @@ TEST(ExportLayout, ThePageSeesEveryStageAsThePictureDoes)
                 EXPECT_LT((views.stages[k].labels[l].box.min - figure.labels[l].box.min).norm(), 1e-6) << at << figure.labels[l].text;
             }
         }
+    }
+}
+
+// At the last stage the canonical outline lies on the view volume's edges: drawn over them along
+// their whole length, not stitched with them pixel by pixel (both are lines at the same depths).
+TEST(ExportLayout, TheCanonicalOutlineCoversTheVolumesEdgesItLiesOn)
+{
+    for (const std::string name : {"house.json", "opengl-perspective.json", "house-parallel-oblique.json"}) {
+        const auto scene = evaluateScene(loadScene(fs::path(viewpipe::build::dataDir) / "scenes" / name));
+        const OffscreenPainter offscreen(scene, 1280, 720, 1, Theme::Light, false);
+        const int last = int(scene->pipeline.stages.size());
+        showStageAtRest(offscreen, *scene, last, stageCaption(*scene, std::size_t(last), StageText::Heading), std::nullopt);
+        vtkNew<vtkWindowToImageFilter> grab;
+        grab->SetInput(offscreen.window);
+        grab->SetInputBufferTypeToRGB();
+        grab->Update();
+        vtkImageData* image = grab->GetOutput();
+        int samples = 0, jumps = 0;
+        for (const Primitive& p : scene->primitives) {
+            if (!p.canonical || p.kind != PrimitiveKind::Lines)
+                continue;
+            for (std::size_t k = 0; k + 1 < p.segments.size(); k += 2) {
+                // Pixel by pixel along the edge's middle (off the corners, where other edges meet).
+                const auto a = offscreen.painter->figureView().pixel(p.segments[k]);
+                const auto b = offscreen.painter->figureView().pixel(p.segments[k + 1]);
+                if (!a || !b)
+                    continue;
+                const int steps = int((*b - *a).head<2>().norm() * 0.6);
+                std::optional<std::array<double, 3>> before;
+                for (int j = 0; j <= steps; ++j) {
+                    const Vec3<double> at = *a + (0.2 + 0.6 * j / std::max(steps, 1)) * (*b - *a);
+                    const int x = int(std::lround(at.x())), y = 720 - 1 - int(std::lround(at.y()));
+                    if (x < 0 || x >= 1280 || y < 0 || y >= 720)
+                        continue;
+                    const auto* pixel = static_cast<const unsigned char*>(image->GetScalarPointer(x, y, 0));
+                    const std::array<double, 3> color{pixel[0] / 255.0, pixel[1] / 255.0, pixel[2] / 255.0};
+                    ++samples;
+                    if (before && std::hypot(color[0] - (*before)[0], color[1] - (*before)[1], color[2] - (*before)[2]) > 0.25)
+                        ++jumps;
+                    before = color;
+                }
+            }
+        }
+        EXPECT_GT(samples, 500) << name;
+        // A line or a label crossing an edge changes its color twice (2 to 4 % here); stitched, 14 to 17 % of
+        // the pixels did.
+        EXPECT_LT(jumps, samples / 12) << name << ": " << jumps << " changes of color in " << samples << " pixels";
     }
 }
 
