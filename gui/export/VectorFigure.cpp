@@ -94,7 +94,7 @@ void drawLegend(QPainter& painter, const Figure& figure, const VectorFigure& f)
     const LegendLayout& rows = figure.layout.legendRows;
     const QRectF frame(box.min.x(), box.min.y(), box.max.x() - box.min.x(), box.max.y() - box.min.y());
     painter.setPen(QPen(qtColor(elementColor(Element::Frame, f.theme)), 1));
-    painter.setBrush(qtColor(backgroundColor(f.theme, false), 0.85));
+    painter.setBrush(Qt::NoBrush); // on its backdrop
     painter.drawRect(frame);
     painter.setFont(font(rows.textSize, false));
     const double h = rows.rowHeight;
@@ -152,6 +152,10 @@ void paint(QPainter& painter, const Figure& figure, const VectorFigure& f)
             painter.drawPolyline(polygon);
         }
     }
+    const PictureLayout& p = figure.layout;
+    for (const Box2& box : textBackdrops(p.caption, p.note, figure.legend.empty() ? Box2{} : p.legend, figure.height))
+        painter.fillRect(QRectF(box.min.x(), box.min.y(), box.max.x() - box.min.x(), box.max.y() - box.min.y()),
+                         qtColor(backgroundColor(f.theme, false)));
     const QFont labelFont = font(f.view.fontSize, true), minorFont = font(smallTextSize(f.view.fontSize), false);
     for (const PlacedLabel& l : figure.labels) {
         painter.setFont(l.minor ? minorFont : labelFont);
@@ -170,9 +174,6 @@ void paint(QPainter& painter, const Figure& figure, const VectorFigure& f)
     auto drawLines = [&](const std::vector<std::string>& lines, const QFont& qfont, const Box2& box, double line) {
         if (lines.empty())
             return;
-        // On the background, as in the PNG: lines behind do not cross the text.
-        painter.fillRect(QRectF(box.min.x(), box.min.y(), box.max.x() - box.min.x(), box.max.y() - box.min.y()),
-                         qtColor(backgroundColor(f.theme, false), 1.0));
         painter.setFont(qfont);
         const QFontMetricsF metrics(qfont);
         // Lines as VTK sets them: the last one's descent at the box's bottom, `line` apart.
@@ -180,7 +181,6 @@ void paint(QPainter& painter, const Figure& figure, const VectorFigure& f)
             drawMathText(painter, QPointF(box.min.x(), box.max.y() - double(lines.size() - 1 - k) * line - metrics.descent()),
                          lines[k], qfont);
     };
-    const PictureLayout& p = figure.layout;
     drawLines(p.captionLines, font(p.captionSize, true), p.caption, p.captionLine);
     drawLines(p.noteLines, font(p.noteSize, false), p.note, p.noteLine);
     drawLegend(painter, figure, f);

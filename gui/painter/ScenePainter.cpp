@@ -53,6 +53,28 @@ vtkSmartPointer<vtkPolyData> coloredLines2D(const std::vector<Segment2>& lines, 
     return data;
 }
 
+// Filled polygons given in the view's pixels (y down), each in its color, for a 2D actor (y up).
+vtkSmartPointer<vtkPolyData> polygonsData2D(const std::vector<std::vector<Vec2<double>>>& polygons,
+                                            const std::vector<Rgb>& colors, int height)
+{
+    auto points = vtkSmartPointer<vtkPoints>::New();
+    auto cells = vtkSmartPointer<vtkCellArray>::New();
+    auto scalars = vtkSmartPointer<vtkUnsignedCharArray>::New();
+    scalars->SetNumberOfComponents(3);
+    for (std::size_t k = 0; k < polygons.size(); ++k) {
+        std::vector<vtkIdType> ids;
+        for (const Vec2<double>& p : polygons[k])
+            ids.push_back(points->InsertNextPoint(p.x(), height - p.y(), 0));
+        cells->InsertNextCell(vtkIdType(ids.size()), ids.data());
+        scalars->InsertNextTypedTuple(toBytes(colors[k]).data());
+    }
+    auto data = vtkSmartPointer<vtkPolyData>::New();
+    data->SetPoints(points);
+    data->SetPolys(cells);
+    data->GetCellData()->SetScalars(scalars);
+    return data;
+}
+
 vtkSmartPointer<vtkActor2D> overlayActor(double lineWidth)
 {
     auto coordinate = vtkSmartPointer<vtkCoordinate>::New();
@@ -92,7 +114,7 @@ void addObjectActors(const std::vector<vtkRenderer*>& renderers, const Evaluated
 ScenePainter::ScenePainter(vtkRenderer* world, vtkRenderer* projected)
     : world_(world), worldCaption_(vtkSmartPointer<vtkTextActor>::New()),
       effectsCaption_(vtkSmartPointer<vtkTextActor>::New()), frameAxes_(unlitActor(linesData(std::vector<Segment2>{}))),
-      leaders_(overlayActor(1.5)), markers_(overlayActor(1)), legend_(newLegend(true)), clippingRange_(vtkSmartPointer<vtkCallbackCommand>::New()),
+      leaders_(overlayActor(1.5)), markers_(overlayActor(1)), backdrops_(overlayActor(1)), legend_(newLegend(true)), clippingRange_(vtkSmartPointer<vtkCallbackCommand>::New()),
       nearCut_(vtkSmartPointer<vtkPlane>::New())
 {
     // Coinciding lines and faces are told apart by depth offsets, not by the order they are drawn in
@@ -101,6 +123,7 @@ ScenePainter::ScenePainter(vtkRenderer* world, vtkRenderer* projected)
     vtkMapper::SetResolveCoincidentTopologyToPolygonOffset();
     if (projected)
         projected_ = std::make_unique<ProjectedView>(projected);
+    world_->AddActor2D(backdrops_); // first: under the text
     worldCaption_->GetPositionCoordinate()->SetCoordinateSystemToNormalizedViewport();
     worldCaption_->SetPosition(0.02, 0.96);
     worldCaption_->GetTextProperty()->SetVerticalJustificationToTop();
@@ -303,23 +326,23 @@ void ScenePainter::beforeFrame()
 
 void ScenePainter::drawMarkers(const std::vector<FigureShape>& shapes)
 {
-    const int height = world_->GetSize()[1];
-    auto points = vtkSmartPointer<vtkPoints>::New();
-    auto polygons = vtkSmartPointer<vtkCellArray>::New();
-    auto colors = vtkSmartPointer<vtkUnsignedCharArray>::New();
-    colors->SetNumberOfComponents(3);
+    std::vector<std::vector<Vec2<double>>> polygons;
+    std::vector<Rgb> colors;
     for (const FigureShape& shape : shapes) {
-        std::vector<vtkIdType> ids;
-        for (const Vec2<double>& p : shape.points)
-            ids.push_back(points->InsertNextPoint(p.x(), height - p.y(), 0));
-        polygons->InsertNextCell(vtkIdType(ids.size()), ids.data());
-        colors->InsertNextTypedTuple(toBytes(elementColor(shape.element, theme_)).data());
+        polygons.push_back(shape.points);
+        colors.push_back(elementColor(shape.element, theme_));
     }
-    auto data = vtkSmartPointer<vtkPolyData>::New();
-    data->SetPoints(points);
-    data->SetPolys(polygons);
-    data->GetCellData()->SetScalars(colors);
-    static_cast<vtkPolyDataMapper2D*>(markers_->GetMapper())->SetInputData(data);
+    static_cast<vtkPolyDataMapper2D*>(markers_->GetMapper())->SetInputData(polygonsData2D(polygons, colors, world_->GetSize()[1]));
+}
+
+void ScenePainter::drawBackdrops()
+{
+    const std::array<Box2, 3> shown = textBoxesShown();
+    std::vector<std::vector<Vec2<double>>> polygons;
+    for (const Box2& b : textBackdrops(shown[0], shown[1], shown[2], world_->GetSize()[1]))
+        polygons.push_back({b.min, Vec2<double>(b.max.x(), b.min.y()), b.max, Vec2<double>(b.min.x(), b.max.y())});
+    const std::vector<Rgb> colors(polygons.size(), backgroundColor(theme_, false));
+    static_cast<vtkPolyDataMapper2D*>(backdrops_->GetMapper())->SetInputData(polygonsData2D(polygons, colors, world_->GetSize()[1]));
 }
 
 void ScenePainter::fitCaptions()
@@ -336,6 +359,7 @@ void ScenePainter::fitCaptions()
     setCaptionText(worldCaption_, layout.captionLines, layout.captionSize);
     setCaptionText(effectsCaption_, layout.noteLines, layout.noteSize);
     placeLegend(legend_, world_, layout, text.legend, theme_, legendFontSize_);
+    drawBackdrops();
     const Box2 area = textVisible_ ? layout.scene : Box2{Vec2<double>::Zero(), Vec2<double>(size[0], size[1])};
     if ((area.min - sceneArea_.min).norm() + (area.max - sceneArea_.max).norm() > 0.5) {
         sceneArea_ = area;
@@ -358,29 +382,31 @@ FigureView ScenePainter::figureView() const
     return view;
 }
 
-std::vector<Box2> ScenePainter::captionBoxes() const
+std::array<Box2, 3> ScenePainter::textBoxesShown() const
 {
     // Viewport coordinates (y up) to the view's pixels (y down).
     const int height = world_->GetSize()[1];
     auto box = [&](const double* corners) {
         return Box2{Vec2<double>(corners[0], height - corners[3]), Vec2<double>(corners[1], height - corners[2])};
     };
-    std::vector<Box2> boxes;
-    for (vtkTextActor* caption : {worldCaption_.Get(), effectsCaption_.Get()})
+    std::array<Box2, 3> boxes;
+    for (int k = 0; k < 2; ++k) {
+        vtkTextActor* caption = k == 0 ? worldCaption_.Get() : effectsCaption_.Get();
         if (caption->GetVisibility() && caption->GetInput() && *caption->GetInput()) {
             double corners[4]; // relative to the caption's position
             caption->GetBoundingBox(world_, corners);
             const double* at = caption->GetPositionCoordinate()->GetComputedDoubleViewportValue(world_);
             const double placed[4] = {corners[0] + at[0], corners[1] + at[0], corners[2] + at[1], corners[3] + at[1]};
-            boxes.push_back(box(placed));
+            boxes[std::size_t(k)] = box(placed);
         }
+    }
     if (legend_->GetVisibility()) {
         // Position2 is relative to Position: computed, it is the upper right corner.
         const int* low = legend_->GetPositionCoordinate()->GetComputedViewportValue(world_);
         const double x0 = low[0], y0 = low[1];
         const int* high = legend_->GetPosition2Coordinate()->GetComputedViewportValue(world_);
         const double corners[4] = {x0, double(high[0]), y0, double(high[1])};
-        boxes.push_back(box(corners));
+        boxes[2] = box(corners);
     }
     return boxes;
 }
@@ -425,7 +451,11 @@ void ScenePainter::placeLabelsOf(const StageShown& stage, const FigureView& view
     const LabelMeasure measure = labelMeasure(figureFontMeasure(dpi), fontSize_); // as the labels are set (styleLabel)
     // Viewport pixels are y up, the placement's y down.
     auto up = [&](const Vec2<double>& p) { return Vec2<double>(p.x(), view.height - p.y()); };
-    const SceneLabels scene = placeSceneLabels(stage, view, texts, markers, measure, captionBoxes());
+    std::vector<Box2> reserved;
+    for (const Box2& box : textBoxesShown())
+        if (!box.isEmpty())
+            reserved.push_back(box);
+    const SceneLabels scene = placeSceneLabels(stage, view, texts, markers, measure, reserved);
     if (scene.leftOut) {
         leftOut_.actor->SetInput(scene.leftOut->text.c_str());
         leftOut_.actor->SetPosition(scene.leftOut->box.min.x(), view.height - scene.leftOut->box.max.y());
@@ -707,10 +737,6 @@ void ScenePainter::applyStyle()
     worldCaption_->GetTextProperty()->SetFontSize(fontSize_);
     effectsCaption_->GetTextProperty()->SetColor(ink.r, ink.g, ink.b);
     effectsCaption_->GetTextProperty()->SetFontSize(int(smallTextSize(fontSize_)));
-    for (vtkTextActor* caption : {worldCaption_.Get(), effectsCaption_.Get()}) { // lines behind do not cross them
-        caption->GetTextProperty()->SetBackgroundColor(back.r, back.g, back.b);
-        caption->GetTextProperty()->SetBackgroundOpacity(1.0);
-    }
     effectsCaption_->SetVisibility(textVisible_ && scene_ && !scene_->effectsNote.empty());
     const Rgb frame = elementColor(Element::Frame, theme_);
     frameAxes_->GetProperty()->SetColor(frame.r, frame.g, frame.b);

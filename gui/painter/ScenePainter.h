@@ -10,6 +10,7 @@
 
 #include <vtkSmartPointer.h>
 
+#include <array>
 #include <map>
 #include <memory>
 #include <optional>
@@ -129,8 +130,10 @@ private:
     void applyStyle();
     // Places every label with the one placement step the figures use, for the camera of the coming frame.
     void placeLabels();
-    // Where the captions and the legend are, in the view's pixels.
-    std::vector<Box2> captionBoxes() const;
+    // Where the caption, the note and the legend are, in the view's pixels (empty where not shown).
+    std::array<Box2, 3> textBoxesShown() const;
+    // The text's backdrops (textBackdrops): what runs behind the text stops at them.
+    void drawBackdrops();
     void beforeFrame();
     void placeLabelsOf(const StageShown& stage, const FigureView& view, const std::vector<Marker>& markers,
                        std::vector<Segment2>& leaders, std::vector<Rgb>& leaderColors);
@@ -158,6 +161,7 @@ private:
     vtkSmartPointer<vtkActor> frameAxes_;
     vtkSmartPointer<vtkActor2D> leaders_; // lines from labels moved away to their anchors
     vtkSmartPointer<vtkActor2D> markers_; // the points marked, one size on screen
+    vtkSmartPointer<vtkActor2D> backdrops_;
     vtkSmartPointer<vtkLegendBoxActor> legend_;
     vtkSmartPointer<vtkCallbackCommand> clippingRange_;
     vtkSmartPointer<vtkPlane> nearCut_; // the scene's near cut in the stage's coordinates

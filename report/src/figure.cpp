@@ -288,6 +288,18 @@ std::vector<Box2> textBoxes(const PictureLayout& layout)
     return boxes;
 }
 
+std::vector<Box2> textBackdrops(const Box2& caption, const Box2& note, const Box2& legend, int height)
+{
+    std::vector<Box2> backdrops;
+    if (!caption.isEmpty())
+        backdrops.push_back({Vec2d::Zero(), caption.max});
+    if (!note.isEmpty())
+        backdrops.push_back({Vec2d(0, note.min.y()), Vec2d(note.max.x(), height)});
+    if (!legend.isEmpty())
+        backdrops.push_back(legend);
+    return backdrops;
+}
+
 PictureLayout layoutPicture(int width, int height, const PictureText& text, const FontMeasure& measure)
 {
     PictureLayout layout;

@@ -183,6 +183,9 @@ std::string tikzFigure(const Figure& figure, Theme theme)
             tex << (k ? " -- " : "") << point(s.points[k]);
         tex << (s.surface ? " -- cycle;\n" : ";\n");
     }
+    // The text's backdrops over what runs behind it, as every picture draws them.
+    for (const Box2& box : textBackdrops(layout.caption, layout.note, figure.legend.empty() ? Box2{} : layout.legend, figure.height))
+        tex << "\\fill[vpBackground] " << point(box.min) << " rectangle " << point(box.max) << ";\n";
     for (std::size_t k = 0; k < figure.labels.size(); ++k) {
         const PlacedLabel& l = figure.labels[k];
         const std::string key = elementKey(l.element), name = "vp label " + std::to_string(k);
@@ -199,7 +202,7 @@ std::string tikzFigure(const Figure& figure, Theme theme)
             << " {" << texRichText(layout.noteLines[k]) << "};\n";
     }
     if (!figure.legend.empty()) {
-        tex << "\\draw[draw=vpFrame, fill=vpBackground] " << point(layout.legend.min) << " rectangle "
+        tex << "\\draw[draw=vpFrame] " << point(layout.legend.min) << " rectangle "
             << point(layout.legend.max) << ";\n";
         for (std::size_t k = 0; k < figure.legend.size(); ++k) {
             const LegendEntry& entry = *figure.legend[k];

@@ -153,12 +153,16 @@ std::vector<PlacedLabel> stageLabels(const EvaluatedScene& scene, const WorldMom
 }
 
 // The picture's text boxes and sizes (layoutPicture), for the page to set its caption, legend and note as the PNG does.
-json layoutJson(const PictureLayout& layout)
+json layoutJson(const PictureLayout& layout, int height)
 {
+    json backdrops = json::array();
+    for (const Box2& box : textBackdrops(layout.caption, layout.note, layout.legend, height))
+        backdrops.push_back(boxJson(box));
     json out = {{"caption", {{"box", boxJson(layout.caption)}, {"size", layout.captionSize}, {"line", layout.captionLine},
                              {"lines", layout.captionLines}}},
                 {"note", {{"box", boxJson(layout.note)}, {"size", layout.noteSize}, {"line", layout.noteLine},
-                          {"lines", layout.noteLines}}}};
+                          {"lines", layout.noteLines}}},
+                {"backdrops", backdrops}};
     if (!layout.legend.isEmpty()) {
         const LegendLayout& rows = layout.legendRows;
         out["legend"] = {{"box", boxJson(layout.legend)}, {"size", rows.textSize}, {"row", rows.rowHeight},
@@ -220,7 +224,7 @@ json sceneData(const EvaluatedScene& scene, const WebPageViews& views)
                       {"frame", floats(marks.lines)}};
         if (s.ghost)
             entry["ghost"] = matrix(*s.ghost);
-        entry["layout"] = layoutJson(s.layout);
+        entry["layout"] = layoutJson(s.layout, views.options.height);
         if (k > 0) {
             const Stage<double>& stage = stages[k - 1];
             entry["symbol"] = stage.symbol;

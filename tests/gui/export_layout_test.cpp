@@ -403,6 +403,71 @@ TEST(ExportLayout, ThePageSeesEveryStageAsThePictureDoes)
     }
 }
 
+// What runs behind the caption and the note (the axes, geometry cut at the eye that projects far
+// out) stops at their backdrops, which reach the picture's edges: the margin above the caption
+// and left of it, and below the note, show only the background and the labels placed there.
+TEST(ExportLayout, NothingRunsBehindTheCaptionOrTheNote)
+{
+    constexpr int width = 1280, height = 720;
+    for (const std::string name : {"clipping-eye-plane.json", "house.json", "opengl-perspective.json"}) {
+        const auto scene = evaluateScene(loadScene(fs::path(viewpipe::build::dataDir) / "scenes" / name));
+        const OffscreenPainter offscreen(scene, width, height, 1, Theme::Light, false);
+        const Rgb paper = backgroundColor(Theme::Light, false);
+        for (std::size_t k = 0; k <= scene->pipeline.stages.size(); ++k) {
+            const std::string caption = stageCaption(*scene, k, StageText::Heading);
+            showStageAtRest(offscreen, *scene, int(k), caption, std::nullopt);
+            vtkNew<vtkWindowToImageFilter> grab;
+            grab->SetInput(offscreen.window);
+            grab->SetInputBufferTypeToRGB();
+            grab->Update();
+            vtkImageData* image = grab->GetOutput();
+            const DrawnTexts drawn = drawnTexts(offscreen.renderer);
+            auto squeezed = [](std::string t) {
+                t.erase(std::remove_if(t.begin(), t.end(), [](unsigned char c) { return std::isspace(c); }), t.end());
+                return t;
+            };
+            std::optional<std::array<double, 4>> heading, note; // viewport pixels, y up
+            for (const DrawnText& t : drawn.texts) {
+                if (squeezed(t.text) == squeezed(caption))
+                    heading = t.box;
+                if (!scene->effectsNote.empty() && squeezed(t.text) == squeezed(scene->effectsNote))
+                    note = t.box;
+            }
+            const std::string at = name + " stage " + std::to_string(k) + ": ";
+            ASSERT_TRUE(heading) << at << "no caption drawn";
+            ASSERT_EQ(note.has_value(), !scene->effectsNote.empty()) << at;
+            // Off every text (a label may sit in the margin) and every leader, by a pixel or two of antialiasing.
+            auto onText = [&](int x, int y) {
+                for (const DrawnText& t : drawn.texts)
+                    if (x >= t.box[0] - 2 && x <= t.box[1] + 2 && y >= t.box[2] - 2 && y <= t.box[3] + 2)
+                        return true;
+                for (const DrawnLeader& l : drawn.leaders) {
+                    const Eigen::Vector2d a(l.from[0], l.from[1]), b(l.to[0], l.to[1]), p(x, y);
+                    const double u = std::clamp((p - a).dot(b - a) / std::max((b - a).squaredNorm(), 1e-9), 0.0, 1.0);
+                    if ((a + u * (b - a) - p).norm() < 3)
+                        return true;
+                }
+                return false;
+            };
+            int inked = 0;
+            auto count = [&](int x0, int x1, int y0, int y1) {
+                for (int y = std::max(y0, 0); y < std::min(y1, height); ++y)
+                    for (int x = std::max(x0, 0); x < std::min(x1, width); ++x) {
+                        const auto* pixel = static_cast<const unsigned char*>(image->GetScalarPointer(x, y, 0));
+                        const double off = std::abs(pixel[0] / 255.0 - paper.r) + std::abs(pixel[1] / 255.0 - paper.g) +
+                                           std::abs(pixel[2] / 255.0 - paper.b);
+                        inked += off > 0.02 && !onText(x, y);
+                    }
+            };
+            count(0, int((*heading)[1]), int((*heading)[3]) + 1, height);            // above the caption
+            count(0, int((*heading)[0]) - 1, int((*heading)[2]), int((*heading)[3])); // left of it
+            if (note)
+                count(0, int((*note)[1]), 0, int((*note)[2]) - 1); // below the note
+            EXPECT_EQ(inked, 0) << at << inked << " pixels drawn behind the caption's or the note's margin";
+        }
+    }
+}
+
 // At the last stage the canonical outline lies on the view volume's edges: drawn over them along
 // their whole length, not stitched with them pixel by pixel (both are lines at the same depths).
 TEST(ExportLayout, TheCanonicalOutlineCoversTheVolumesEdgesItLiesOn)

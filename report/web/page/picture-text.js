@@ -21,7 +21,16 @@
       });
       Object.assign(element.style, { fontSize: `${part.size * s}px`, lineHeight: `${(part.line || 1.25 * part.size) * s}px` });
     };
-    setText(document.getElementById('caption'), layout.caption);
+    const caption = document.getElementById('caption');
+    caption.parentNode.querySelectorAll('.backdrop').forEach((backdrop) => backdrop.remove());
+    layout.backdrops.forEach((box) => { // under the text, over what runs behind it
+      const backdrop = document.createElement('div');
+      backdrop.className = 'backdrop';
+      setBox(backdrop, box);
+      Object.assign(backdrop.style, { width: `${(box[2] - box[0]) * s}px`, height: `${(box[3] - box[1]) * s}px` });
+      caption.before(backdrop);
+    });
+    setText(caption, layout.caption);
     setText(document.getElementById('note'), layout.note);
     const legend = document.getElementById('legend');
     legend.hidden = !layout.legend;

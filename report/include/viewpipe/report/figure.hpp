@@ -138,6 +138,10 @@ PictureLayout layoutPicture(int width, int height, const PictureText& text, cons
 PictureText stagePictureText(const StageShown& stage, const std::string& caption, double fontSize, double minFontSize);
 // The boxes no label may take: the caption's, the note's and the legend's (where it is shown).
 std::vector<Box2> textBoxes(const PictureLayout& layout);
+// Where the picture's text stands on the background, hiding what runs behind it (axes, geometry cut
+// at the eye): the caption's box from the picture's top left corner, the note's from its bottom left
+// (the margins too) and the legend's box. Empty boxes: no such text.
+std::vector<Box2> textBackdrops(const Box2& caption, const Box2& note, const Box2& legend, int height);
 
 // The layout of the last picture asked for, made anew only when its size or
 // text changes: the painters ask before every frame.
