@@ -210,17 +210,17 @@ TEST(PictureLayout, LegendLeftOutWhereItLeavesTheStageNoRoom)
     EXPECT_FALSE(layout.scene.overlaps(layout.caption));
 }
 
-// Labels that find no room are counted in a corner note, which no label covers; none is led across a reserved box.
-TEST(Figure, LeftOutLabelsAreCountedAndLeadersKeepOffReservedBoxes)
+// The house's labels and the frame axes' at its last stage placed in a small picture with large text
+// (names 30 px high, tick numbers and notices 12: 7.2 px a character); `minor[k]`: label k a tick number.
+SceneLabels crowdedHouseLabels(int width, int height, const std::vector<Box2>& reserved, std::vector<bool>& minor)
 {
     const auto scene = evaluateScene(loadScene(fs::path(viewpipe::build::dataDir) / "scenes/house.json"));
     const auto& stages = scene->pipeline.stages;
     const StageShown stage(*scene, drawnAt(stages, double(stages.size())), 1);
     FigureView view = viewOf(stage);
-    view.width = 480;
-    view.height = 270;
-    const Box2 title{Vec2<double>(10, 10), Vec2<double>(300, 60)};
-    auto big = [](const Label& label) { // names 30 px high, tick numbers and notes 12
+    view.width = width;
+    view.height = height;
+    auto big = [](const Label& label) {
         const double size = label.minor ? 12 : 30;
         return Vec2<double>(0.6 * size * double(label.text.size()), size);
     };
@@ -230,13 +230,24 @@ TEST(Figure, LeftOutLabelsAreCountedAndLeadersKeepOffReservedBoxes)
     const FrameMarks marks = frameMarks(view.frameReach);
     for (const Label& label : marks.labels)
         labels.push_back(&label);
-    const SceneLabels placed = placeSceneLabels(stage, view, labels, {}, big, {title});
+    minor.clear();
+    for (const Label* label : labels)
+        minor.push_back(label->minor);
+    return placeSceneLabels(stage, view, labels, {}, big, reserved);
+}
+
+// Labels that find no room are counted in a corner note, which no label covers; none is led across a reserved box.
+TEST(Figure, LeftOutLabelsAreCountedAndLeadersKeepOffReservedBoxes)
+{
+    const Box2 title{Vec2<double>(10, 10), Vec2<double>(300, 60)};
+    std::vector<bool> minor;
+    const SceneLabels placed = crowdedHouseLabels(480, 270, {title}, minor);
     int missing = 0;
     std::vector<PlacedLabel> all;
     for (const auto& label : placed.placed)
         if (label)
             all.push_back(*label);
-    for (std::size_t k = 0; k < labels.size(); ++k)
+    for (std::size_t k = 0; k < placed.placed.size(); ++k)
         missing += !placed.placed[k];
     ASSERT_TRUE(placed.leftOut) << "so large a text in so small a picture leaves labels out: " << all.size() << " placed, " << missing << " not";
     const std::string& note = placed.leftOut->text;
@@ -258,6 +269,33 @@ TEST(Figure, LeftOutLabelsAreCountedAndLeadersKeepOffReservedBoxes)
             said += std::stoi(m[1]);
     EXPECT_GE(said, 1);
     EXPECT_LE(said, missing);
+}
+
+// Where the notice's sentence is wider than the picture (a narrow view), it says the same briefly.
+TEST(Figure, TheLeftOutNoticeShortensWhereTheSentenceFindsNoRoom)
+{
+    std::vector<bool> minor;
+    const SceneLabels placed = crowdedHouseLabels(240, 270, {}, minor); // the sentence about 300 px wide
+    int missingNames = 0, missingTicks = 0;
+    for (std::size_t k = 0; k < placed.placed.size(); ++k)
+        if (!placed.placed[k])
+            ++(minor[k] ? missingTicks : missingNames);
+    ASSERT_TRUE(placed.leftOut) << missingNames << " labels and " << missingTicks << " ticks left out, not said";
+    const std::string& note = placed.leftOut->text;
+    EXPECT_EQ(note.rfind("left out: ", 0), 0u) << note;
+    EXPECT_TRUE(inside(placed.leftOut->box, 240, 270)) << note;
+    for (const auto& label : placed.placed)
+        if (label) {
+            EXPECT_FALSE(label->box.overlaps(placed.leftOut->box)) << label->text << " under \"" << note << "\"";
+        }
+    // Both kinds counted, each at most those missing (an anchor outside the picture asks for no place).
+    std::smatch m;
+    const int names = std::regex_search(note, m, std::regex("([0-9]+) labels?")) ? std::stoi(m[1]) : 0;
+    const int ticks = std::regex_search(note, m, std::regex("([0-9]+) ticks?")) ? std::stoi(m[1]) : 0;
+    EXPECT_GT(names, 0) << note;
+    EXPECT_GT(ticks, 0) << note;
+    EXPECT_LE(names, missingNames) << note;
+    EXPECT_LE(ticks, missingTicks) << note;
 }
 
 // Every built-in scene at every stage: labels inside the picture, clear of
