@@ -44,9 +44,13 @@ LessonDocument::~LessonDocument()
     undo_.clear();
 }
 
-void LessonDocument::open(Lesson lesson, const QString& path)
+EvaluatedLesson LessonDocument::evaluate(const Lesson& lesson)
 {
-    EvaluatedLesson evaluated = evaluateLesson(lesson, &evaluator_);
+    return evaluateLesson(lesson, &evaluator_);
+}
+
+void LessonDocument::open(Lesson lesson, EvaluatedLesson evaluated, const QString& path)
+{
     ++generation_;
     undo_.clear();
     lesson_ = std::move(lesson);

@@ -30,10 +30,14 @@ public:
     bool isModified() const { return !undo_.isClean(); }
     QUndoStack* undoStack() { return &undo_; }
 
-    // A lesson read from `path` (loadLesson) replaces the one open, its steps
-    // evaluated (evaluateLesson); throws InputError naming the step whose scene
-    // the core refuses, keeping the lesson open before.
-    void open(Lesson lesson, const QString& path);
+    // A lesson's steps evaluated (evaluateLesson), their meshes read through this
+    // document's cache: may run off the GUI thread while nothing else edits the
+    // lesson. Throws InputError naming the step whose scene the core refuses.
+    EvaluatedLesson evaluate(const Lesson& lesson);
+    // A lesson read from `path` (loadLesson), its steps evaluated, replaces the one open.
+    void open(Lesson lesson, EvaluatedLesson evaluated, const QString& path);
+    // Hears of every mesh the steps' scenes read (the tests slow them down).
+    void setEvaluationListener(EvaluationListener* listener) { evaluator_.setListener(listener); }
     // A new lesson with one step.
     void create(const std::string& title, const LessonStep& first);
     void close();

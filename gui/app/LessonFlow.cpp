@@ -19,6 +19,7 @@
 #include "MainWindow.h"
 #include "PresentMode.h"
 #include "Stepper.h"
+#include "Waiting.h"
 #include "viewpipe/stage.hpp"
 
 namespace viewpipe::gui {
@@ -104,8 +105,12 @@ bool LessonFlow::openLesson(const QString& path)
 bool LessonFlow::openLesson(Lesson lesson, const QString& path)
 {
     try {
-        // Every step's scene is evaluated now (its meshes read): a step that cannot be shown stops nothing later.
-        lesson_->open(std::move(lesson), path);
+        // Every step's scene is evaluated now (its meshes read, off the GUI thread): a step that cannot
+        // be shown stops nothing later.
+        EvaluatedLesson evaluated;
+        waitShowingProgress(window_, tr("Opening %1…").arg(path.isEmpty() ? tr("the lesson") : QFileInfo(path).fileName()),
+                            [&] { evaluated = lesson_->evaluate(lesson); });
+        lesson_->open(std::move(lesson), std::move(evaluated), path);
     } catch (const InputError& e) {
         window_->showMessage(tr("Cannot open the lesson %1: %2").arg(path, QString::fromStdString(e.what())));
         return false;

@@ -36,6 +36,8 @@
 #include "files.h"
 #include "app/AccuracyPanel.h"
 #include "app/Autosave.h"
+#include "app/LessonDocument.h"
+#include "app/LessonFlow.h"
 #include "app/MainWindow.h"
 #include "app/MatrixPanel.h"
 #include "app/ParameterPanel.h"
@@ -307,6 +309,27 @@ private slots:
         QCOMPARE(w.document()->scene().objects.size(), objects);
     }
 
+    // Opening a lesson whose step shows a scene with a slow mesh: every step's
+    // scene is read off the GUI thread (it was read on it, the window frozen),
+    // and a dialog names the lesson meanwhile.
+    void openingASlowLessonSaysWhatIsOpening()
+    {
+        MainWindow& w = *window_;
+        QVERIFY(!writeMeshScene().isEmpty());
+        const QString lesson = QDir::temp().filePath("viewpipe-session-lesson.json");
+        QVERIFY(writeFile(lesson, R"({"title": "A slow mesh", "steps": [{"scene": "viewpipe-session-mesh.json",
+                                     "stage": 0, "caption": "The house and a tetrahedron."}]})"));
+        SlowReads slow;
+        QString announced;
+        QVERIFY(readSlowly(w, slow, announced, [&] { return w.lessonFlow()->openLesson(lesson); }));
+        QCOMPARE(announced, QString("Opening viewpipe-session-lesson.json…"));
+        QVERIFY(slow.reader != std::thread::id());
+        QVERIFY(slow.reader != std::this_thread::get_id());
+        QCOMPARE(w.document()->scene().objects.size(), std::size_t(2)); // the step's scene shown
+        QVERIFY(!w.findChild<QProgressDialog*>("waitingProgress"));
+        w.lessonFlow()->lesson()->close();
+    }
+
     // Found: Ctrl+Y did nothing.
     void undoAndRedoByKeyboard()
     {
@@ -462,11 +485,15 @@ private:
         }
     };
 
-    // Runs `read` with `slow` listening, noting what the waiting dialog says meanwhile.
+    // Runs `read` with `slow` listening (to the scene's reads and the lesson's), noting what the waiting dialog says meanwhile.
     static bool readSlowly(MainWindow& w, SlowReads& slow, QString& announced, const std::function<bool()>& read)
     {
         w.document()->setEvaluationListener(&slow);
-        const auto stopListening = qScopeGuard([&w] { w.document()->setEvaluationListener(nullptr); });
+        w.lessonFlow()->lesson()->setEvaluationListener(&slow);
+        const auto stopListening = qScopeGuard([&w] {
+            w.document()->setEvaluationListener(nullptr);
+            w.lessonFlow()->lesson()->setEvaluationListener(nullptr);
+        });
         QTimer look;
         QObject::connect(&look, &QTimer::timeout, [&] {
             if (auto* dialog = w.findChild<QProgressDialog*>("waitingProgress"); dialog && dialog->isVisible())
