@@ -23,11 +23,13 @@
     };
     const caption = document.getElementById('caption');
     caption.parentNode.querySelectorAll('.backdrop').forEach((backdrop) => backdrop.remove());
-    layout.backdrops.forEach((box) => { // under the text, over what runs behind it
+    layout.backdrops.forEach((box) => { // under the text, over what runs behind it; from the picture's edge to the view's
+      const x = (v) => (v - data.width / 2) * s + size.width / 2, y = (v) => (v - data.height / 2) * s + size.height / 2;
+      const left = box[0] <= 0 ? 0 : x(box[0]), top = box[1] <= 0 ? 0 : y(box[1]);
+      const bottom = box[3] >= data.height ? size.height : y(box[3]);
       const backdrop = document.createElement('div');
       backdrop.className = 'backdrop';
-      setBox(backdrop, box);
-      Object.assign(backdrop.style, { width: `${(box[2] - box[0]) * s}px`, height: `${(box[3] - box[1]) * s}px` });
+      Object.assign(backdrop.style, { left: `${left}px`, top: `${top}px`, width: `${x(box[2]) - left}px`, height: `${bottom - top}px` });
       caption.before(backdrop);
     });
     setText(caption, layout.caption);
