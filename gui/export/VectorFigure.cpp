@@ -153,7 +153,7 @@ void paint(QPainter& painter, const Figure& figure, const VectorFigure& f)
         }
     }
     const PictureLayout& p = figure.layout;
-    for (const Box2& box : textBackdrops(p.caption, p.note, figure.legend.empty() ? Box2{} : p.legend, figure.height))
+    for (const Box2& box : textBackdrops(p, figure.height))
         painter.fillRect(QRectF(box.min.x(), box.min.y(), box.max.x() - box.min.x(), box.max.y() - box.min.y()),
                          qtColor(backgroundColor(f.theme, false)));
     const QFont labelFont = font(f.view.fontSize, true), minorFont = font(smallTextSize(f.view.fontSize), false);

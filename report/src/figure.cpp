@@ -300,6 +300,11 @@ std::vector<Box2> textBackdrops(const Box2& caption, const Box2& note, const Box
     return backdrops;
 }
 
+std::vector<Box2> textBackdrops(const PictureLayout& layout, int height)
+{
+    return textBackdrops(layout.caption, layout.note, layout.legend, height);
+}
+
 PictureLayout layoutPicture(int width, int height, const PictureText& text, const FontMeasure& measure)
 {
     PictureLayout layout;

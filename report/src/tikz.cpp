@@ -184,7 +184,7 @@ std::string tikzFigure(const Figure& figure, Theme theme)
         tex << (s.surface ? " -- cycle;\n" : ";\n");
     }
     // The text's backdrops over what runs behind it, as every picture draws them.
-    for (const Box2& box : textBackdrops(layout.caption, layout.note, figure.legend.empty() ? Box2{} : layout.legend, figure.height))
+    for (const Box2& box : textBackdrops(layout, figure.height))
         tex << "\\fill[vpBackground] " << point(box.min) << " rectangle " << point(box.max) << ";\n";
     for (std::size_t k = 0; k < figure.labels.size(); ++k) {
         const PlacedLabel& l = figure.labels[k];

@@ -156,7 +156,7 @@ std::vector<PlacedLabel> stageLabels(const EvaluatedScene& scene, const WorldMom
 json layoutJson(const PictureLayout& layout, int height)
 {
     json backdrops = json::array();
-    for (const Box2& box : textBackdrops(layout.caption, layout.note, layout.legend, height))
+    for (const Box2& box : textBackdrops(layout, height))
         backdrops.push_back(boxJson(box));
     json out = {{"caption", {{"box", boxJson(layout.caption)}, {"size", layout.captionSize}, {"line", layout.captionLine},
                              {"lines", layout.captionLines}}},

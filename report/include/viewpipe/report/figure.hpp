@@ -142,6 +142,8 @@ std::vector<Box2> textBoxes(const PictureLayout& layout);
 // at the eye): the caption's box from the picture's top left corner, the note's from its bottom left
 // (the margins too) and the legend's box. Empty boxes: no such text.
 std::vector<Box2> textBackdrops(const Box2& caption, const Box2& note, const Box2& legend, int height);
+// The same for a picture's layout (its legend box is empty where no legend is shown).
+std::vector<Box2> textBackdrops(const PictureLayout& layout, int height);
 
 // The layout of the last picture asked for, made anew only when its size or
 // text changes: the painters ask before every frame.
