@@ -365,7 +365,7 @@ PictureLayout layoutPicture(int width, int height, const PictureText& text, cons
             }
             layout.scene = sceneArea(layout);
             const bool captionFits = layout.caption.max.y() - layout.caption.min.y() <= 0.3 * height;
-            const bool legendFits = !withLegend || (layout.legend.max.y() <= bottom && rows.size.x() <= 0.96 * width && roomy(layout.scene));
+            const bool legendFits = !withLegend || (layout.legend.max.y() <= bottom && legendLeft >= left && roomy(layout.scene));
             if (legendFits && (captionFits || k + 1 == sizes.size()))
                 return true;
         }
