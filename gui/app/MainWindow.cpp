@@ -15,6 +15,7 @@
 #include <QSettings>
 #include <QSplitter>
 #include <QStatusBar>
+#include <QStyle>
 #include <QTabBar>
 #include <QTimer>
 #include <QUndoStack>
@@ -196,24 +197,30 @@ void MainWindow::fitDocksToText()
 {
     // Widths in units of the text's average character, the views keeping at least 40 % of the window.
     // A dock is as wide as its content where the screen has room (its scroll area would cut it, not
-    // shrink it); with large text on a small screen, at most 30 % of the screen, the content scrolling
-    // sideways, so that the window still fits the screen.
+    // shrink it); with large text on a small screen, at most a quarter of the screen, the content
+    // scrolling sideways, so that the window fits the screen and the views keep their share.
     const int screenWidth = screen() ? screen()->availableGeometry().width() : 1280;
     for (QDockWidget* dock : findChildren<QDockWidget*>())
         if (auto* scroll = qobject_cast<QScrollArea*>(dock->widget()))
-            scroll->setMinimumWidth(std::min(int(0.3 * screenWidth),
+            scroll->setMinimumWidth(std::min(screenWidth / 4,
                                              scroll->widget()->minimumSizeHint().width() +
                                                  scroll->verticalScrollBar()->sizeHint().width() + 2 * scroll->frameWidth()));
     const QFontMetrics metrics(QApplication::font());
     const int em = metrics.averageCharWidth();
-    const double share = std::min(1.0, 0.6 * width() / double(em * (40 + 60)));
-    // The right docks' tabs need their titles in full.
+    QDockWidget* stages = findChild<QDockWidget*>("stagesDock");
+    const int separators = 2 * style()->pixelMetric(QStyle::PM_DockWidgetSeparatorExtent, nullptr, this);
+    const int docks = std::min(em * (40 + 60), width() * 60 / 100 - separators);
+    // The docks' tabs keep their titles whole: the right dock as wide as its tabs where the left can
+    // give it the room, else arrows scroll them.
     int tabs = 0;
-    for (const QTabBar* bar : findChildren<QTabBar*>())
+    for (QTabBar* bar : findChildren<QTabBar*>(QString(), Qt::FindDirectChildrenOnly)) {
+        bar->setElideMode(Qt::ElideNone);
         tabs = std::max(tabs, bar->sizeHint().width() + 2 * em);
-    const int right = std::max(int(em * 60 * share), tabs);
-    const int left = std::max(int(em * 40 * share), std::min(int(em * 40), int(0.6 * width()) - right));
-    resizeDocks({findChild<QDockWidget*>("stagesDock"), findChild<QDockWidget*>("matricesDock")}, {left, right},
+    }
+    const int leftMinimum = stages->minimumSizeHint().width();
+    const int right = std::max(docks - std::max(docks * 40 / 100, leftMinimum), std::min(tabs, docks - leftMinimum));
+    const int left = docks - right;
+    resizeDocks({stages, findChild<QDockWidget*>("matricesDock")}, {left, right},
                 Qt::Horizontal);
 }
 

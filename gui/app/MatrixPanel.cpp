@@ -29,7 +29,7 @@ QString table(const QString& caption, const std::array<QString, 16>& cells, cons
         html += "<tr>";
         for (int c = 0; c < 4; ++c) {
             const bool h = highlight[std::size_t(r * 4 + c)];
-            html += QString("<td align='right' style='%1'>%2</td>")
+            html += QString("<td align='right' style='white-space:nowrap; %1'>%2</td>") // a number never broken
                         .arg(h ? QString("background-color:%1; color:black; font-weight:bold;").arg(color) : QString())
                         .arg(cells[std::size_t(r * 4 + c)]);
         }

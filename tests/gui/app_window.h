@@ -8,6 +8,7 @@
 #include <QFileInfo>
 #include <QStandardPaths>
 #include <QSurfaceFormat>
+#include <QTabBar>
 #include <QVTKOpenGLNativeWidget.h>
 #include <QtTest>
 
@@ -52,6 +53,18 @@ inline void closeWindow(std::unique_ptr<viewpipe::gui::MainWindow>& window)
     if (window)
         window->document()->undoStack()->setClean();
     window.reset();
+}
+
+// The first of the window's dock tabs whose title is cut short (elided), "" when every title is
+// whole; tabs that do not all fit are scrolled with arrows, not shortened. `tabs`: how many were seen.
+inline QString cutDockTabTitle(const viewpipe::gui::MainWindow& window, int& tabs)
+{
+    tabs = 0;
+    for (const QTabBar* bar : window.findChildren<QTabBar*>(QString(), Qt::FindDirectChildrenOnly))
+        for (int k = 0; bar->isVisible() && k < bar->count(); ++k, ++tabs)
+            if (bar->tabRect(k).width() < bar->fontMetrics().horizontalAdvance(bar->tabText(k)))
+                return bar->tabText(k);
+    return {};
 }
 
 // Every built-in scene (data/scenes) at every stage in `window`, rendered,

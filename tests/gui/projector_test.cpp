@@ -4,6 +4,7 @@
 // or on the legend. Run on a screen of that size (tests/CMakeLists.txt).
 
 #include <QAction>
+#include <QDockWidget>
 #include <QScreen>
 #include <QScrollArea>
 #include <QScrollBar>
@@ -127,6 +128,13 @@ private slots:
             const std::string trouble = textTrouble(renderer(*window, view));
             QVERIFY2(trouble.empty(), qPrintable(QString(view) + ": " + QString::fromStdString(trouble)));
         }
+        // The views keep 40 % of the window (found: 33 %); the docks' tabs show their titles whole (found: "Matri…").
+        QVERIFY2(100 * window->centralWidget()->width() >= 40 * window->width(),
+                 qPrintable(QString("the views are %1 px of %2, the docks %3 and %4").arg(window->centralWidget()->width()).arg(window->width()).arg(window->findChild<QDockWidget*>("stagesDock")->width()).arg(window->findChild<QDockWidget*>("matricesDock")->width())));
+        int tabs = 0;
+        const QString cut = cutDockTabTitle(*window, tabs);
+        QVERIFY2(cut.isEmpty(), qPrintable(cut + " is cut"));
+        QCOMPARE(tabs, 4);
         // A dock's content wider than the dock can be scrolled to, not cut.
         for (const QScrollArea* scroll : window->findChildren<QScrollArea*>())
             if (scroll->isVisible() && scroll->widget() && scroll->widget()->width() > scroll->viewport()->width())
