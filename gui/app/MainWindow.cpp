@@ -193,11 +193,23 @@ void MainWindow::buildDocks()
     fitDocksToText();
 }
 
+bool MainWindow::event(QEvent* event)
+{
+    // The docks' tab bars, made by Qt as docks are tabbed (also later: docked again, a layout restored),
+    // never shorten a title: arrows scroll the tabs that do not fit.
+    if (event->type() == QEvent::ChildPolished)
+        if (auto* bar = qobject_cast<QTabBar*>(static_cast<QChildEvent*>(event)->child())) {
+            bar->setElideMode(Qt::ElideNone);
+            bar->setUsesScrollButtons(true);
+        }
+    return QMainWindow::event(event);
+}
+
 void MainWindow::fitDocksToText()
 {
     // Widths in units of the text's average character, the views keeping at least 40 % of the window.
     // A dock is as wide as its content where the screen has room (its scroll area would cut it, not
-    // shrink it); with large text on a small screen, at most a quarter of the screen, the content
+    // shrink it); with large text on a small screen, each at most a quarter of the screen, the content
     // scrolling sideways, so that the window fits the screen and the views keep their share.
     const int screenWidth = screen() ? screen()->availableGeometry().width() : 1280;
     for (QDockWidget* dock : findChildren<QDockWidget*>())
@@ -210,16 +222,13 @@ void MainWindow::fitDocksToText()
     QDockWidget* stages = findChild<QDockWidget*>("stagesDock");
     const int separators = 2 * style()->pixelMetric(QStyle::PM_DockWidgetSeparatorExtent, nullptr, this);
     const int docks = std::min(em * (40 + 60), width() * 60 / 100 - separators);
-    // The docks' tabs keep their titles whole: the right dock as wide as its tabs where the left can
-    // give it the room, else arrows scroll them.
+    // The right docks' tabs keep their titles whole: the right dock as wide as its tabs where the left
+    // dock can give it the room (the left keeping its minimum), else arrows scroll them.
     int tabs = 0;
-    for (QTabBar* bar : findChildren<QTabBar*>(QString(), Qt::FindDirectChildrenOnly)) {
-        bar->setElideMode(Qt::ElideNone);
+    for (const QTabBar* bar : findChildren<QTabBar*>(QString(), Qt::FindDirectChildrenOnly))
         tabs = std::max(tabs, bar->sizeHint().width() + 2 * em);
-    }
-    const int leftMinimum = stages->minimumSizeHint().width();
-    const int right = std::max(docks - std::max(docks * 40 / 100, leftMinimum), std::min(tabs, docks - leftMinimum));
-    const int left = docks - right;
+    const int left = std::max({1, stages->minimumSizeHint().width(), std::min(docks * 40 / 100, docks - tabs)});
+    const int right = std::max(1, docks - left);
     resizeDocks({stages, findChild<QDockWidget*>("matricesDock")}, {left, right},
                 Qt::Horizontal);
 }

@@ -62,7 +62,7 @@ inline QString cutDockTabTitle(const viewpipe::gui::MainWindow& window, int& tab
     tabs = 0;
     for (const QTabBar* bar : window.findChildren<QTabBar*>(QString(), Qt::FindDirectChildrenOnly))
         for (int k = 0; bar->isVisible() && k < bar->count(); ++k, ++tabs)
-            if (bar->tabRect(k).width() < bar->fontMetrics().horizontalAdvance(bar->tabText(k)))
+            if (bar->elideMode() != Qt::ElideNone || bar->tabRect(k).width() < bar->fontMetrics().horizontalAdvance(bar->tabText(k)))
                 return bar->tabText(k);
     return {};
 }

@@ -211,7 +211,7 @@ TEST(PictureLayout, LegendLeftOutWhereItLeavesTheStageNoRoom)
 }
 
 // Narrow views (the app's projected view at 1280x720 with large text): the legend is inside the
-// picture or left out. Found: a legend 96 % of the view's width began 3 px left of it.
+// picture or left out. Found: a legend 96 % of the view's width began left of it.
 TEST(PictureLayout, LegendInsideANarrowPictureOrLeftOut)
 {
     const auto scene = evaluateScene(loadScene(fs::path(viewpipe::build::dataDir) / "scenes/house.json"));
@@ -226,6 +226,7 @@ TEST(PictureLayout, LegendInsideANarrowPictureOrLeftOut)
             continue;
         ++shown;
         EXPECT_TRUE((Box2{Vec2<double>::Zero(), Vec2<double>(width, 1000)}.contains(layout.legend))) << width << " px wide";
+        EXPECT_GE(layout.legend.min.x(), 0.02 * width) << "in from the left as the caption is";
     }
     EXPECT_GT(shown, 0);
 }
