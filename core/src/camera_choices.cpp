@@ -27,6 +27,15 @@ gl::Frustum<double> nearRectangle(const gl::ProjectionSpec<double>& projection)
         projection);
 }
 
+// The projection's forms, in ProjectionSpec's order: OpenGL's calls, as the lecture notes name them;
+// for another API the form itself, which takes the same numbers through that API's own call.
+std::vector<std::string> projectionForms(gl::Api api)
+{
+    if (api == gl::Api::OpenGL)
+        return {"glFrustum", "glOrtho", "gluPerspective"};
+    return {"frustum (off-center)", "orthographic", "perspective (field of view)"};
+}
+
 // Between a perspective and glOrtho, the rectangle is taken to or from the look-at
 // distance `target`: what lies there keeps its size in the picture (the near
 // plane's rectangle as the box would show the scene 2 to 100 times larger).
@@ -65,8 +74,7 @@ std::vector<CameraChoice> cameraChoices(const CameraSpec<double>& camera)
              gl.handedness == gl::Handedness::Right ? 0 : 1},
             {"camera.depth", "Depth", {"standard: near to the low end", "reversed: near to 1"},
              gl.depth == gl::DepthMode::Standard ? 0 : 1},
-            {"camera.projection.type", "Projection", {"glFrustum", "glOrtho", "gluPerspective"},
-             int(gl.projection.index())}};
+            {"camera.projection.type", "Projection", projectionForms(gl.api), int(gl.projection.index())}};
 }
 
 CameraSpec<double> withChoice(const CameraSpec<double>& camera, const std::string& field, int index)

@@ -227,8 +227,10 @@ void ParameterPanel::addFields(const CameraSpec<double>& camera)
               tooltip(tr("Depth"), tr("Reversed depth exchanges near and far in the depth range: with a float "
                                       "depth buffer, precision then stays nearly even with distance.")));
     addChoice(camera, "camera.projection.type",
-              tooltip(tr("Projection"), tr("The projection matrix: glFrustum, glOrtho or gluPerspective. Switching "
-                                           "keeps near, far and the size of the near plane's rectangle.")));
+              tooltip(tr("Projection"), tr("The projection matrix: a frustum, orthographic or a perspective by its "
+                                           "field of view (OpenGL's glFrustum, glOrtho, gluPerspective; the "
+                                           "fields below are named as OpenGL names them). Switching keeps near, "
+                                           "far and the size of the near plane's rectangle.")));
     if (std::holds_alternative<gl::Perspective<double>>(gl.projection)) {
         addRow("camera.projection.fovy_deg", tr("fovy (deg)"), {},
                tr("gluPerspective fovy: the vertical field of view, in degrees; 0 < fovy < 180."));
@@ -348,6 +350,7 @@ void ParameterPanel::addChoice(const CameraSpec<double>& camera, const std::stri
     auto* combo = new QComboBox;
     combo->setObjectName(QString::fromStdString(field));
     combo->addItems(items);
+    combo->setSizeAdjustPolicy(QComboBox::AdjustToContents); // its options renamed with the API
     combo->setToolTip(tip);
     connect(combo, QOverload<int>::of(&QComboBox::currentIndexChanged), this,
             [this, name = combo->objectName()](int index) { choose(name, index); });
@@ -386,12 +389,14 @@ void ParameterPanel::fill(const QWidget* except)
     }
     for (QBoxLayout* numbers : numbers_)
         numbers->invalidate(); // their texts decide between side by side and one under another
-    QMap<QString, int> chosen;
     for (const CameraChoice& choice : cameraChoices(camera_))
-        chosen[QString::fromStdString(choice.field)] = choice.chosen;
-    for (auto c = chosen.cbegin(); c != chosen.cend(); ++c)
-        if (QComboBox* choice = choices_.value(c.key()); choice && choice != except)
-            choice->setCurrentIndex(c.value());
+        if (QComboBox* combo = choices_.value(QString::fromStdString(choice.field))) {
+            for (int k = 0; k < combo->count() && k < int(choice.options.size()); ++k) // as the API names them
+                if (const QString option = QString::fromStdString(choice.options[std::size_t(k)]); combo->itemText(k) != option)
+                    combo->setItemText(k, option);
+            if (combo != except)
+                combo->setCurrentIndex(choice.chosen);
+        }
     filling_ = false;
 }
 

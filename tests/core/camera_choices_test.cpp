@@ -83,7 +83,12 @@ TEST(CameraChoices, ListTheConventionsChoicesWithTheCamerasOwn)
     EXPECT_EQ(choices[0].options[std::size_t(choices[0].chosen)], "Vulkan");
     EXPECT_EQ(choices[2].field, "camera.depth");
     EXPECT_EQ(choices[2].chosen, 1);
-    EXPECT_EQ(choices[3].options[std::size_t(choices[3].chosen)], "gluPerspective");
+    // Found: a Vulkan camera offered OpenGL's calls; the forms, named for what they are.
+    EXPECT_EQ(choices[3].options[std::size_t(choices[3].chosen)], "perspective (field of view)");
+    gl::Camera<double> opengl = vulkan;
+    opengl.api = gl::Api::OpenGL;
+    EXPECT_EQ(cameraChoices(opengl)[3].options,
+              (std::vector<std::string>{"glFrustum", "glOrtho", "gluPerspective"})); // as the lecture notes call them
 
     const CameraSpec<double> metal = withChoice(vulkan, "camera.api", 3);
     EXPECT_EQ(glOf(metal).api, gl::Api::Metal);

@@ -222,6 +222,10 @@ private slots:
         QCOMPARE(cameraOf(w).api, gl::Api::Vulkan);
         QCOMPARE(w.document()->pipeline().stages.size(), stages + 1);
         QCOMPARE(QString::fromStdString(w.document()->pipeline().stages.back().symbol), QString("NDC_vulkan"));
+        // Its projection is no longer named by OpenGL's call.
+        auto* projection = w.parameters()->findChild<QComboBox*>("camera.projection.type");
+        QVERIFY(projection);
+        QCOMPARE(projection->currentText(), QString("perspective (field of view)"));
         // The code follows the camera.
         w.showPanel("code");
         panel_->setDialect(code::Dialect::Glm);
@@ -229,6 +233,7 @@ private slots:
         w.document()->undoStack()->undo();
         QCOMPARE(cameraOf(w).api, gl::Api::OpenGL);
         QCOMPARE(api->currentIndex(), int(gl::Api::OpenGL));
+        QCOMPARE(projection->currentText(), QString("gluPerspective"));
     }
 
 private:

@@ -820,6 +820,7 @@ TEST_F(WebPage, ChoosesTheApiAndTheProjectionTypeAsTheAppDoes)
     const std::string expected = viewpipe({"pipeline", QString::fromStdString(vulkanFile.string()), "--json"}).output;
     ASSERT_TRUE(browser.waitFor(json + " + '\\n' === " + nlohmann::json(expected).dump()));
     EXPECT_EQ(selected("camera.api"), "Vulkan");
+    EXPECT_EQ(selected("camera.projection.type"), "perspective (field of view)") << "found: OpenGL's call shown for a Vulkan camera";
     for (const std::string& problem : browser.problems())
         ADD_FAILURE() << problem;
 }
