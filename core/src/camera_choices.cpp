@@ -33,7 +33,7 @@ std::vector<std::string> projectionForms(gl::Api api)
 {
     if (api == gl::Api::OpenGL)
         return {"glFrustum", "glOrtho", "gluPerspective"};
-    return {"frustum (off-center)", "orthographic", "perspective (field of view)"};
+    return {"frustum", "orthographic", "perspective (field of view)"};
 }
 
 // Between a perspective and glOrtho, the rectangle is taken to or from the look-at

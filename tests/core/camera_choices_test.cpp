@@ -84,6 +84,7 @@ TEST(CameraChoices, ListTheConventionsChoicesWithTheCamerasOwn)
     EXPECT_EQ(choices[2].field, "camera.depth");
     EXPECT_EQ(choices[2].chosen, 1);
     // Found: a Vulkan camera offered OpenGL's calls; the forms, named for what they are.
+    EXPECT_EQ(choices[3].options, (std::vector<std::string>{"frustum", "orthographic", "perspective (field of view)"}));
     EXPECT_EQ(choices[3].options[std::size_t(choices[3].chosen)], "perspective (field of view)");
     gl::Camera<double> opengl = vulkan;
     opengl.api = gl::Api::OpenGL;
