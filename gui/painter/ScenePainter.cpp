@@ -337,9 +337,8 @@ void ScenePainter::drawMarkers(const std::vector<FigureShape>& shapes)
 
 void ScenePainter::drawBackdrops()
 {
-    const std::array<Box2, 3> shown = textBoxesShown();
     std::vector<std::vector<Vec2<double>>> polygons;
-    for (const Box2& b : textBackdrops(shown[0], shown[1], shown[2], world_->GetSize()[1]))
+    for (const Box2& b : textBackdrops(textBoxes_[0], textBoxes_[1], textBoxes_[2], world_->GetSize()[1]))
         polygons.push_back({b.min, Vec2<double>(b.max.x(), b.min.y()), b.max, Vec2<double>(b.min.x(), b.max.y())});
     const std::vector<Rgb> colors(polygons.size(), backgroundColor(theme_, false));
     static_cast<vtkPolyDataMapper2D*>(backdrops_->GetMapper())->SetInputData(polygonsData2D(polygons, colors, world_->GetSize()[1]));
@@ -359,6 +358,7 @@ void ScenePainter::fitCaptions()
     setCaptionText(worldCaption_, layout.captionLines, layout.captionSize);
     setCaptionText(effectsCaption_, layout.noteLines, layout.noteSize);
     placeLegend(legend_, world_, layout, text.legend, theme_, legendFontSize_);
+    textBoxes_ = textBoxesShown(); // measured once a frame, for the backdrops and the labels' placement
     drawBackdrops();
     const Box2 area = textVisible_ ? layout.scene : Box2{Vec2<double>::Zero(), Vec2<double>(size[0], size[1])};
     if ((area.min - sceneArea_.min).norm() + (area.max - sceneArea_.max).norm() > 0.5) {
@@ -452,7 +452,7 @@ void ScenePainter::placeLabelsOf(const StageShown& stage, const FigureView& view
     // Viewport pixels are y up, the placement's y down.
     auto up = [&](const Vec2<double>& p) { return Vec2<double>(p.x(), view.height - p.y()); };
     std::vector<Box2> reserved;
-    for (const Box2& box : textBoxesShown())
+    for (const Box2& box : textBoxes_)
         if (!box.isEmpty())
             reserved.push_back(box);
     const SceneLabels scene = placeSceneLabels(stage, view, texts, markers, measure, reserved);
@@ -657,6 +657,7 @@ void ScenePainter::setTextVisible(bool visible)
     effectsCaption_->SetVisibility(visible && scene_ && !scene_->effectsNote.empty());
     if (projected_)
         projected_->setTextVisible(visible);
+    fitCaptions();
     placeLabels();
 }
 

@@ -132,7 +132,7 @@ private:
     void placeLabels();
     // Where the caption, the note and the legend are, in the view's pixels (empty where not shown).
     std::array<Box2, 3> textBoxesShown() const;
-    // The text's backdrops (textBackdrops): what runs behind the text stops at them.
+    // The text's backdrops (textBackdrops) around textBoxes_: what runs behind the text stops at them.
     void drawBackdrops();
     void beforeFrame();
     void placeLabelsOf(const StageShown& stage, const FigureView& view, const std::vector<Marker>& markers,
@@ -194,6 +194,7 @@ private:
     Framing framed_; // the last framing
     // Where frameOn fits the stage (layoutPicture's scene area), in pixels, y down; empty: the whole view.
     Box2 sceneArea_;
+    std::array<Box2, 3> textBoxes_; // textBoxesShown() as the last fitCaptions() measured it
     PictureLayoutCache layoutCache_;
     Mat4<double> shownMatrix_ = Mat4<double>::Identity();
 };

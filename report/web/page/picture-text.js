@@ -7,9 +7,10 @@
     if (!layout || key === placedText) return;
     placedText = key;
     const s = fitScale(size);
+    // The picture's pixels to the view's: the picture fitted, centred.
+    const x = (v) => (v - data.width / 2) * s + size.width / 2, y = (v) => (v - data.height / 2) * s + size.height / 2;
     const setBox = (element, box) => Object.assign(element.style, {
-      left: `${(box[0] - data.width / 2) * s + size.width / 2}px`, top: `${(box[1] - data.height / 2) * s + size.height / 2}px`,
-      right: 'auto', bottom: 'auto', maxWidth: 'none', margin: '0' });
+      left: `${x(box[0])}px`, top: `${y(box[1])}px`, right: 'auto', bottom: 'auto', maxWidth: 'none', margin: '0' });
     const setText = (element, part) => {
       setBox(element, part.box);
       element.textContent = '';
@@ -24,7 +25,6 @@
     const caption = document.getElementById('caption');
     caption.parentNode.querySelectorAll('.backdrop').forEach((backdrop) => backdrop.remove());
     layout.backdrops.forEach((box) => { // under the text, over what runs behind it; from the picture's edge to the view's
-      const x = (v) => (v - data.width / 2) * s + size.width / 2, y = (v) => (v - data.height / 2) * s + size.height / 2;
       const left = box[0] <= 0 ? 0 : x(box[0]), top = box[1] <= 0 ? 0 : y(box[1]);
       const bottom = box[3] >= data.height ? size.height : y(box[3]);
       const backdrop = document.createElement('div');
