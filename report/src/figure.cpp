@@ -467,6 +467,7 @@ std::vector<std::optional<PlacedLabel>> placeLabels(const std::vector<LabelReque
                                                     const LabelObstacles& obstacles, int width, int height)
 {
     constexpr double kPadding = 5; // between labels, and from the picture's edge
+    constexpr double kWordSpace = 0.3; // of a label's height (about a space) at least beside other text: large numbers a few pixels apart read as one
     const Box2 picture{Vec2d::Constant(kPadding), Vec2d(width - kPadding, height - kPadding)};
     // Directions to try, the customary up-right first.
     const std::array<Vec2d, 8> directions = {{{1, -1}, {1, 0}, {1, 1}, {0, -1}, {-1, -1}, {-1, 0}, {-1, 1}, {0, 1}}};
@@ -513,8 +514,10 @@ std::vector<std::optional<PlacedLabel>> placeLabels(const std::vector<LabelReque
     auto free = [&](const Box2& box, const std::optional<Vec2d>& anchor) {
         if (!picture.contains(box))
             return false;
+        const Vec2d space(std::max(0.0, kWordSpace * (box.max.y() - box.min.y()) - kPadding), 0);
+        const Box2 spaced{box.min - space, box.max + space};
         for (const Box2& other : padded)
-            if (box.overlaps(other))
+            if (spaced.overlaps(other))
                 return false;
         if (anchor) {
             const Segment2 leader = {*anchor, box.nearest(*anchor)};

@@ -131,6 +131,28 @@ TEST(LabelPlacement, CrowdedLabelsNeverOverlapStayInsideAndStayNear)
     }
 }
 
+TEST(LabelPlacement, LargeNumbersSideBySideKeepApart)
+{
+    // Tick numbers at twice the size, a tick apart along an axis: "200" and "150" read as "200150"
+    // when only 5 px lie between them. Beside other text, a label keeps a space (a third of its height) clear.
+    std::vector<LabelRequest> requests;
+    for (int k = 0; k < 6; ++k)
+        requests.push_back({Element::WorldAxes, std::to_string(250 - 50 * k), {300 + 60.0 * k, 300}, {54, 30}, true});
+    const auto placed = placeLabels(requests, {}, 800, 600);
+    std::vector<Box2> boxes;
+    for (const auto& p : placed)
+        if (p)
+            boxes.push_back(p->box);
+    ASSERT_GE(boxes.size(), 2u);
+    for (std::size_t i = 0; i < boxes.size(); ++i)
+        for (std::size_t j = i + 1; j < boxes.size(); ++j) {
+            const bool sideBySide = boxes[i].min.y() < boxes[j].max.y() && boxes[j].min.y() < boxes[i].max.y();
+            if (sideBySide)
+                EXPECT_GE(std::max(boxes[i].min.x() - boxes[j].max.x(), boxes[j].min.x() - boxes[i].max.x()), 0.3 * 30 - 0.01)
+                    << i << " and " << j << " are closer than a space";
+        }
+}
+
 TEST(LabelPlacement, NoRoomLeavesTheLabelOut)
 {
     const auto placed = placeLabels({{Element::Prp, "PRP", {50, 50}, {40, 20}}, {Element::Dop, "DOP", {50, 50}, {40, 20}}},
