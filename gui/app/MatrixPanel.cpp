@@ -11,10 +11,15 @@
 namespace viewpipe::gui {
 namespace {
 
+// As the pictures set numbers: a minus sign, not a hyphen.
 QString number(double x)
 {
-    return QString::fromStdString(formatSignificant(x, 5));
+    return QString::fromStdString(formatSignificant(x, 5)).replace('-', QChar(0x2212));
 }
+
+// A space of the panel's font before a column's text: the cells' pixel padding
+// stays 3 px when the text grows, and "0" "−20" at 200 % read as "0−20".
+const QString kColumnGap = "&nbsp;";
 
 constexpr const char* kChanged = "#f2c14e";  // the entries a stage changed in the product
 constexpr const char* kLessonMark = "#8ecae6"; // the entries a lesson step points at
@@ -29,9 +34,9 @@ QString table(const QString& caption, const std::array<QString, 16>& cells, cons
         html += "<tr>";
         for (int c = 0; c < 4; ++c) {
             const bool h = highlight[std::size_t(r * 4 + c)];
-            html += QString("<td align='right' style='white-space:nowrap; %1'>%2</td>") // a number never broken
+            html += QString("<td align='right' style='white-space:nowrap; %1'>%2%3</td>") // a number never broken
                         .arg(h ? QString("background-color:%1; color:black; font-weight:bold;").arg(color) : QString())
-                        .arg(cells[std::size_t(r * 4 + c)]);
+                        .arg(kColumnGap, cells[std::size_t(r * 4 + c)]);
         }
         html += "</tr>";
     }
@@ -129,10 +134,10 @@ void MatrixPanel::showTrace(const Pipeline<double>& pipeline, const std::optiona
     }
     const PointTrace<double> t = tracePoint(pipeline, *point);
     auto row = [](const QString& name, const Vec4<double>& p, bool current) {
-        return QString("<tr%1><td>%2</td><td align='right'>%3</td><td align='right'>%4</td><td align='right'>%5</td>"
-                       "<td align='right'>%6</td></tr>")
-            .arg(current ? " style='font-weight:bold'" : "", name, number(p.x()), number(p.y()),
-                 number(p.z()), number(p.w()));
+        QString cells = QString("<tr%1><td>%2</td>").arg(current ? " style='font-weight:bold'" : "", name);
+        for (int k = 0; k < 4; ++k)
+            cells += "<td align='right'>" + kColumnGap + number(p[k]) + "</td>";
+        return cells + "</tr>";
     };
     QString html = tr("<b>Traced vertex</b> (x, y, z, w):<table cellspacing='0' cellpadding='2'>");
     html += row(tr("world"), point->homogeneous(), stage == 0);

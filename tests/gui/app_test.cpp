@@ -368,8 +368,8 @@ private slots:
         clickWhereDrawn(w, Vec3<double>(16, 10, 54));
         QTRY_VERIFY(w.matrices()->traceText().contains("Traced vertex"));
         // After T(-PRP) the vertex is (16 - 8, 10 - 6, 54 - 84) = (8, 4, -30).
-        QVERIFY2(w.matrices()->traceText().contains("<td align='right'>8</td><td align='right'>4</td>"
-                                                    "<td align='right'>-30</td>"),
+        QVERIFY2(w.matrices()->traceText().contains("<td align='right'>&nbsp;8</td><td align='right'>&nbsp;4</td>"
+                                                    "<td align='right'>&nbsp;−30</td>"),
                  qPrintable(w.matrices()->traceText()));
     }
 
@@ -385,8 +385,8 @@ private slots:
         QVERIFY(w4 > 0 && std::abs(w4 - 1) > 0.1); // projective: the divide moves the point
         clickWhereDrawn(w, Vec3<double>(16, 10, 54));
         QTRY_VERIFY(w.matrices()->traceText().contains("Traced vertex"));
-        QVERIFY2(w.matrices()->traceText().contains("<td align='right'>16</td><td align='right'>10</td>"
-                                                    "<td align='right'>54</td>"),
+        QVERIFY2(w.matrices()->traceText().contains("<td align='right'>&nbsp;16</td><td align='right'>&nbsp;10</td>"
+                                                    "<td align='right'>&nbsp;54</td>"),
                  qPrintable(w.matrices()->traceText()));
     }
 

@@ -18,6 +18,11 @@
 #include <QSurfaceFormat>
 #include <QTemporaryDir>
 #include <QTextBrowser>
+#include <QAbstractTextDocumentLayout>
+#include <QTextDocument>
+#include <QTextTable>
+#include <QTextLayout>
+#include <QRegularExpression>
 #include <QVTKOpenGLNativeWidget.h>
 #include <QtTest>
 
@@ -240,6 +245,69 @@ private slots:
         QTest::qWait(200); // the layout settles
         QVERIFY(scroll->viewport()->width() > 100);
         QCOMPARE(scroll->horizontalScrollBar()->maximum(), 0); // all of it fits the panel's width
+    }
+
+    // At twice the text the matrices' columns keep a space between their numbers
+    // (a fixed 3 px read "0" and "−20" as "0−20"), and a minus is a minus sign.
+    void matrixNumbersKeepApartAtLargerText()
+    {
+        MainWindow window;
+        window.setPopupsEnabled(false);
+        window.resize(1280, 720);
+        window.setFontSize(20, false); // the default 10 points at 200 %
+        window.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&window));
+        window.showPanel("matrices");
+        auto* matrices = window.findChild<QLabel*>("matrices");
+        QVERIFY(matrices);
+        const QFontMetricsF metrics(matrices->font());
+        int rows = 0;
+        for (const QString scene : {"/house-corner.json", "/apis/direct3d.json"}) {
+        QVERIFY(window.sceneFiles()->openScene(kScenes + scene));
+        for (int stage = 1; stage <= window.stepper()->stageCount(); ++stage) {
+            window.stepper()->goToStage(stage, false);
+            QVERIFY2(!matrices->text().contains(QRegularExpression("'>(&nbsp;)*-[0-9]")), qPrintable(matrices->text()));
+            QTextDocument document;
+            document.setDefaultFont(matrices->font());
+            document.setHtml(matrices->text());
+            document.size(); // laid out
+            for (QTextFrame* frame : document.rootFrame()->childFrames()) {
+                auto* table = qobject_cast<QTextTable*>(frame);
+                if (!table)
+                    continue;
+                // Where a cell's text begins and ends on the page.
+                QAbstractTextDocumentLayout* layout = document.documentLayout();
+                auto extent = [&](const QTextTableCell& cell) {
+                    double left = 1e9, right = -1e9;
+                    for (QTextFrame::iterator it = cell.begin(); !it.atEnd(); ++it) {
+                        const QTextBlock block = it.currentBlock();
+                        if (!block.isValid() || block.text().trimmed().isEmpty())
+                            continue;
+                        const QTextLine line = block.layout()->lineAt(0);
+                        const QPointF at = layout->blockBoundingRect(block).topLeft() - block.layout()->boundingRect().topLeft();
+                        // The space before the number is the gap, not the text.
+                        const double lead = line.cursorToX(block.text().size() - block.text().trimmed().size());
+                        left = std::min(left, at.x() + lead);
+                        right = std::max(right, at.x() + line.naturalTextRect().right());
+                    }
+                    return std::pair<double, double>(left, right);
+                };
+                for (int r = 0; r < table->rows(); ++r)
+                    for (int c = 0; c + 1 < table->columns(); ++c) {
+                        const QTextTableCell a = table->cellAt(r, c), b = table->cellAt(r, c + 1);
+                        if (a.column() != c || b.column() != c + 1)
+                            continue; // the caption's row spans the columns
+                        const double gap = extent(b).first - extent(a).second;
+                        QVERIFY2(gap >= metrics.horizontalAdvance(' '),
+                                 qPrintable(QString("stage %1, row %2: columns %3 and %4 are %5 px apart, a space is %6 px")
+                                                .arg(stage).arg(r).arg(c).arg(c + 1).arg(gap)
+                                                .arg(metrics.horizontalAdvance(' '))));
+                        ++rows;
+                    }
+            }
+        }
+        }
+        QVERIFY(rows > 100);
     }
 
     void exportFolderIsTheUsersAndRemembered()
