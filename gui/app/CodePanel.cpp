@@ -1,4 +1,5 @@
 #include "CodePanel.h"
+#include "PanelCombo.h"
 
 #include <QApplication>
 #include <QClipboard>
@@ -341,6 +342,7 @@ CodePanel::CodePanel(QWidget* parent) : QWidget(parent)
     for (const code::Dialect d : code::kDialects)
         dialects_->addItem(QString::fromStdString(code::dialectTitle(d)));
     dialects_->setToolTip(tr("The library whose calls write the camera"));
+    fitComboToItsRow(dialects_);
     auto* copy = new QPushButton(tr("&Copy"));
     copy->setObjectName("codeCopy");
     copy->setToolTip(tr("Put the code on the clipboard"));

@@ -1,4 +1,5 @@
 #include "ParameterPanel.h"
+#include "PanelCombo.h"
 
 #include <QApplication>
 #include <QComboBox>
@@ -350,7 +351,7 @@ void ParameterPanel::addChoice(const CameraSpec<double>& camera, const std::stri
     auto* combo = new QComboBox;
     combo->setObjectName(QString::fromStdString(field));
     combo->addItems(items);
-    combo->setSizeAdjustPolicy(QComboBox::AdjustToContents); // its options renamed with the API
+    fitComboToItsRow(combo);
     combo->setToolTip(tip);
     connect(combo, QOverload<int>::of(&QComboBox::currentIndexChanged), this,
             [this, name = combo->objectName()](int index) { choose(name, index); });
