@@ -218,8 +218,17 @@ void ScenePainter::styleLabel(Label& label) const
     const Rgb c = elementColor(label.label->element, theme_);
     vtkTextProperty* text = label.actor->GetTextProperty();
     text->SetColor(c.r, c.g, c.b);
-    text->SetFontSize(label.label->minor ? int(smallTextSize(fontSize_)) : fontSize_);
+    text->SetFontSize(label.label->minor ? int(smallTextSize(labelSize_)) : labelSize_);
     useFigureFont(text, !label.label->minor); // the font file too: tick numbers were drawn bold, measured regular
+}
+
+void ScenePainter::styleLabels()
+{
+    for (Label& label : labels_)
+        styleLabel(label);
+    for (Label& label : frameLabels_)
+        styleLabel(label);
+    styleLabel(leftOut_);
 }
 
 void ScenePainter::setScene(std::shared_ptr<const EvaluatedScene> scene)
@@ -358,6 +367,12 @@ void ScenePainter::fitCaptions()
     setCaptionText(worldCaption_, layout.captionLines, layout.captionSize);
     setCaptionText(effectsCaption_, layout.noteLines, layout.noteSize);
     placeLegend(legend_, world_, layout, text.legend, theme_, legendFontSize_);
+    if (const int labels = int(labelSizeIn(layout, fontSize_)); labels != labelSize_) {
+        labelSize_ = labels;
+        styleLabels();
+        if (projected_) // side by side, the two views' titles at one size (presenting, they jumped from one to twice it)
+            projected_->applyStyle(theme_, labelSize_, minFontSize());
+    }
     textBoxes_ = textBoxesShown(); // measured once a frame, for the backdrops and the labels' placement
     drawBackdrops();
     const Box2 area = textVisible_ ? layout.scene : Box2{Vec2<double>::Zero(), Vec2<double>(size[0], size[1])};
@@ -376,7 +391,7 @@ FigureView ScenePainter::figureView() const
     view.width = world_->GetSize()[0];
     view.height = world_->GetSize()[1];
     view.frameReach = frameReach(framed_);
-    view.fontSize = fontSize_;
+    view.fontSize = labelSize_;
     view.minFontSize = minFontSize();
     view.lineScale = lineScale_;
     return view;
@@ -448,7 +463,7 @@ void ScenePainter::placeLabelsOf(const StageShown& stage, const FigureView& view
         texts.push_back(label->label);
     vtkRenderWindow* window = world_->GetRenderWindow();
     const int dpi = window ? window->GetDPI() : 72;
-    const LabelMeasure measure = labelMeasure(figureFontMeasure(dpi), fontSize_); // as the labels are set (styleLabel)
+    const LabelMeasure measure = labelMeasure(figureFontMeasure(dpi), labelSize_); // as the labels are set (styleLabel)
     // Viewport pixels are y up, the placement's y down.
     auto up = [&](const Vec2<double>& p) { return Vec2<double>(p.x(), view.height - p.y()); };
     std::vector<Box2> reserved;
@@ -728,11 +743,7 @@ void ScenePainter::applyStyle()
         ghost.actor->GetProperty()->SetOpacity(kGhostOpacity);
         ghost.actor->GetProperty()->SetLineWidth(lineScale_ * lineWidthOf(ghost.primitive->element, false));
     }
-    for (Label& label : labels_)
-        styleLabel(label);
-    for (Label& label : frameLabels_)
-        styleLabel(label);
-    styleLabel(leftOut_);
+    styleLabels();
     const Rgb ink = elementColor(Element::Objects, theme_);
     worldCaption_->GetTextProperty()->SetColor(ink.r, ink.g, ink.b);
     worldCaption_->GetTextProperty()->SetFontSize(fontSize_);
@@ -745,7 +756,7 @@ void ScenePainter::applyStyle()
     legendFontSize_ = 0; // filled anew in the theme's colors
     fitCaptions();
     if (projected_)
-        projected_->applyStyle(theme_, fontSize_, minFontSize());
+        projected_->applyStyle(theme_, labelSize_, minFontSize());
 }
 
 } // namespace viewpipe::gui

@@ -127,6 +127,7 @@ private:
     Label newLabel(const viewpipe::Label& text);
     void addLabel(const viewpipe::Label& label);
     void styleLabel(Label& label) const;
+    void styleLabels(); // every label, tick number and the left-out note, at labelSize_
     void applyStyle();
     // Places every label with the one placement step the figures use, for the camera of the coming frame.
     void placeLabels();
@@ -181,6 +182,7 @@ private:
     std::unique_ptr<viewpipe::Label> tracedLabel_;
     Theme theme_ = Theme::Dark;
     int fontSize_ = 18;
+    int labelSize_ = 18;  // fontSize_, or the caption's size where the view sets it smaller (labelSizeIn)
     int minFontSize_ = 0; // 0: as fontSize_
     int minFontSize() const { return minFontSize_ > 0 ? minFontSize_ : fontSize_; }
     double legendFontSize_ = 0; // the label size the legend was last filled for; 0: to be filled

@@ -378,6 +378,11 @@ PictureLayout layoutPicture(int width, int height, const PictureText& text, cons
     return layout;
 }
 
+double labelSizeIn(const PictureLayout& layout, double fontSize)
+{
+    return layout.captionSize > 0 ? std::min(fontSize, layout.captionSize) : fontSize;
+}
+
 const PictureLayout& PictureLayoutCache::layout(int width, int height, const PictureText& text, const FontMeasure& measure)
 {
     std::vector<std::string> legend; // the entries' texts: a new scene's entries may reuse an old one's addresses

@@ -146,10 +146,10 @@ std::vector<PlacedLabel> stageLabels(const EvaluatedScene& scene, const WorldMom
     view.width = o.width;
     view.height = o.height;
     view.frameReach = frameReach(moment.framing);
-    view.fontSize = o.fontSize;
+    view.fontSize = labelSizeIn(layout, o.fontSize); // the page sets each label to fit its box
     view.minFontSize = o.minFontSize;
     view.lineScale = o.lineScale;
-    return drawFigure(stageShown(scene, moment), view, labelMeasure(measure, o.fontSize), textBoxes(layout)).labels;
+    return drawFigure(stageShown(scene, moment), view, labelMeasure(measure, view.fontSize), textBoxes(layout)).labels;
 }
 
 // The picture's text boxes and sizes (layoutPicture), for the page to set its caption, legend and note as the PNG does.

@@ -3,7 +3,11 @@
 // and in what the camera sees: every text inside its view, none on another
 // or on the legend. Run on a screen of that size (tests/CMakeLists.txt).
 
+#include <QAbstractButton>
+#include <QAbstractItemView>
 #include <QAction>
+#include <QComboBox>
+#include <QLineEdit>
 #include <QDockWidget>
 #include <QScreen>
 #include <QScrollArea>
@@ -128,6 +132,18 @@ private slots:
             const std::string trouble = textTrouble(renderer(*window, view));
             QVERIFY2(trouble.empty(), qPrintable(QString(view) + ": " + QString::fromStdString(trouble)));
         }
+        // No text larger than the caption, which the narrow view sets smaller (found: labels of 40 px under a
+        // 17 px caption, covering the stage); the other view's title no larger either.
+        const DrawnTexts world = drawnTexts(renderer(*window, "worldView"));
+        QVERIFY(world.texts.size() > 5);
+        const DrawnText caption = *std::max_element(world.texts.begin(), world.texts.end(),
+                                                    [](const DrawnText& a, const DrawnText& b) { return a.box[3] < b.box[3]; });
+        for (const DrawnText& t : world.texts)
+            QVERIFY2(t.fontSize <= caption.fontSize, qPrintable(QString("\"%1\" at %2 px, the caption \"%3\" at %4 px")
+                                                              .arg(QString::fromStdString(t.text)).arg(t.fontSize)
+                                                              .arg(QString::fromStdString(caption.text)).arg(caption.fontSize)));
+        for (const DrawnText& t : drawnTexts(renderer(*window, "projectedView")).texts)
+            QVERIFY2(t.fontSize <= caption.fontSize, qPrintable(QString::fromStdString(t.text)));
         // The views keep 40 % of the window (found: 33 %); the docks' tabs show their titles whole (found: "Matri…").
         QVERIFY2(100 * window->centralWidget()->width() >= 40 * window->width(),
                  qPrintable(QString("the views are %1 px of %2, the docks %3 and %4").arg(window->centralWidget()->width()).arg(window->width()).arg(window->findChild<QDockWidget*>("stagesDock")->width()).arg(window->findChild<QDockWidget*>("matricesDock")->width())));
@@ -140,6 +156,51 @@ private slots:
             if (scroll->isVisible() && scroll->widget() && scroll->widget()->width() > scroll->viewport()->width())
                 QVERIFY2(scroll->horizontalScrollBar()->isVisible(), qPrintable(scroll->parentWidget()->objectName()));
         closeWindow(window);
+    }
+
+    // Text at 200 %: the Parameters dock (the camera's fields and its code) fits the dock's width (found:
+    // the longest option of a list widened the panel past the dock, the window's fourth value and the Copy
+    // button out of sight), and each list opens as wide as its longest option.
+    void largeTextParametersFitTheirDock()
+    {
+        for (const char* scene : {"/house-corner.json", "/apis/direct3d.json"}) {
+            auto window = openWindow(kScenes + scene, {1280, 720});
+            QVERIFY(window);
+            window->setFontSize(2 * MainWindow::kDefaultFontSize, false);
+            window->showPanel("parameters");
+            QTest::qWait(100); // the docks fit to the text once the widgets have taken it
+            settle(*window);
+            auto* scroll = qobject_cast<QScrollArea*>(window->findChild<QDockWidget*>("parametersDock")->widget());
+            QVERIFY(scroll && scroll->widget());
+            QTRY_COMPARE(scroll->horizontalScrollBar()->maximum(), 0);
+            int fields = 0;
+            for (QWidget* field : scroll->widget()->findChildren<QWidget*>()) {
+                if (!field->isVisible() ||
+                    !(qobject_cast<QLineEdit*>(field) || qobject_cast<QComboBox*>(field) || qobject_cast<QAbstractButton*>(field)))
+                    continue;
+                const int left = field->mapTo(scroll->viewport(), QPoint(0, 0)).x();
+                QVERIFY2(left >= 0 && left + field->width() <= scroll->viewport()->width(),
+                         qPrintable(QString("%1: %2 %3 spans %4 to %5 px of %6").arg(scene, field->metaObject()->className(), field->objectName())
+                                        .arg(left).arg(left + field->width()).arg(scroll->viewport()->width())));
+                ++fields;
+            }
+            QVERIFY(fields > 12);
+            int lists = 0;
+            for (QComboBox* combo : scroll->widget()->findChildren<QComboBox*>()) {
+                if (!combo->isVisible())
+                    continue;
+                combo->showPopup();
+                QTRY_VERIFY(combo->view()->isVisible());
+                QVERIFY2(combo->view()->viewport()->width() >= combo->view()->sizeHintForColumn(0),
+                         qPrintable(QString("%1: the list of %2 is %3 px wide, its longest option %4")
+                                        .arg(scene, combo->objectName()).arg(combo->view()->viewport()->width())
+                                        .arg(combo->view()->sizeHintForColumn(0))));
+                combo->hidePopup();
+                ++lists;
+            }
+            QVERIFY(lists >= 2);
+            closeWindow(window);
+        }
     }
 
 private:

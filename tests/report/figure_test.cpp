@@ -147,9 +147,10 @@ TEST(LabelPlacement, LargeNumbersSideBySideKeepApart)
     for (std::size_t i = 0; i < boxes.size(); ++i)
         for (std::size_t j = i + 1; j < boxes.size(); ++j) {
             const bool sideBySide = boxes[i].min.y() < boxes[j].max.y() && boxes[j].min.y() < boxes[i].max.y();
-            if (sideBySide)
+            if (sideBySide) {
                 EXPECT_GE(std::max(boxes[i].min.x() - boxes[j].max.x(), boxes[j].min.x() - boxes[i].max.x()), 0.3 * 30 - 0.01)
                     << i << " and " << j << " are closer than a space";
+            }
         }
 }
 
@@ -251,6 +252,24 @@ TEST(PictureLayout, LegendInsideANarrowPictureOrLeftOut)
         EXPECT_GE(layout.legend.min.x(), 0.02 * width) << "in from the left as the caption is";
     }
     EXPECT_GT(shown, 0);
+}
+
+// Labels follow the caption down where a narrow picture sets it smaller, never below the floor
+// (minFontSize), never above the size asked.
+TEST(PictureLayout, LabelsNoLargerThanTheCaption)
+{
+    const auto scene = evaluateScene(loadScene(fs::path(viewpipe::build::dataDir) / "scenes/house.json"));
+    PictureText text;
+    text.fontSize = 40; // 200 %
+    text.minFontSize = 20;
+    text.caption = "After S_per: sides on x = z, y = z; back at z = -1 (framed anew: this stage changes sizes)";
+    text.legend = legendShown(scene->worldLegend, true);
+    const PictureLayout wide = layoutPicture(1920, 1080, text, textMeasure);
+    EXPECT_EQ(labelSizeIn(wide, text.fontSize), text.fontSize) << "the caption at the size asked";
+    const PictureLayout narrow = layoutPicture(320, 560, text, textMeasure);
+    EXPECT_LT(narrow.captionSize, text.fontSize);
+    EXPECT_EQ(labelSizeIn(narrow, text.fontSize), narrow.captionSize);
+    EXPECT_GE(labelSizeIn(narrow, text.fontSize), text.minFontSize);
 }
 
 // The house's labels and the frame axes' at its last stage placed in a small picture with large text

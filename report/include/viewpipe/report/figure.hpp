@@ -134,6 +134,10 @@ struct PictureLayout {
     LegendLayout legendRows;                // zero size: no legend
 };
 PictureLayout layoutPicture(int width, int height, const PictureText& text, const FontMeasure& measure);
+// The labels' size in a picture laid out as `layout`, asked `fontSize`: no
+// larger than its caption, which a narrow or crowded picture sets smaller
+// (labels twice the caption's height covered a narrow view's stage).
+double labelSizeIn(const PictureLayout& layout, double fontSize);
 // What the picture of a stage says: its caption, the scene's effects note and the legend of what it draws.
 PictureText stagePictureText(const StageShown& stage, const std::string& caption, double fontSize, double minFontSize);
 // The boxes no label may take: the caption's, the note's and the legend's (where it is shown).
