@@ -472,7 +472,9 @@ std::vector<std::optional<PlacedLabel>> placeLabels(const std::vector<LabelReque
                                                     const LabelObstacles& obstacles, int width, int height)
 {
     constexpr double kPadding = 5; // between labels, and from the picture's edge
-    constexpr double kWordSpace = 0.3; // of a label's height (about a space) at least beside other text: large numbers a few pixels apart read as one
+    // Beside other text, at least this share of a label's height: a space for names; for tick numbers
+    // two (numbers have no letters' shapes to part them: "200" and "150" a space apart read "200150").
+    constexpr double kWordSpace = 0.3, kNumberSpace = 0.6;
     const Box2 picture{Vec2d::Constant(kPadding), Vec2d(width - kPadding, height - kPadding)};
     // Directions to try, the customary up-right first.
     const std::array<Vec2d, 8> directions = {{{1, -1}, {1, 0}, {1, 1}, {0, -1}, {-1, -1}, {-1, 0}, {-1, 1}, {0, 1}}};
@@ -516,10 +518,10 @@ std::vector<std::optional<PlacedLabel>> placeLabels(const std::vector<LabelReque
     // Free: inside the picture, off every box taken and every leader drawn;
     // with a leader to `anchor`, that leader crosses no box taken and no
     // leader drawn either.
-    auto free = [&](const Box2& box, const std::optional<Vec2d>& anchor) {
+    auto free = [&](const Box2& box, const std::optional<Vec2d>& anchor, bool number) {
         if (!picture.contains(box))
             return false;
-        const Vec2d space(std::max(0.0, kWordSpace * (box.max.y() - box.min.y()) - kPadding), 0);
+        const Vec2d space(std::max(0.0, (number ? kNumberSpace : kWordSpace) * (box.max.y() - box.min.y()) - kPadding), 0);
         const Box2 spaced{box.min - space, box.max + space};
         for (const Box2& other : padded)
             if (spaced.overlaps(other))
@@ -563,7 +565,7 @@ std::vector<std::optional<PlacedLabel>> placeLabels(const std::vector<LabelReque
         auto consider = [&](const Box2& box, double penalty, bool leader) {
             if (best && penalty >= bestCost)
                 return; // its cost is never below its penalty: it cannot do better
-            if (!free(box, leader ? std::optional<Vec2d>(r.anchor) : std::nullopt))
+            if (!free(box, leader ? std::optional<Vec2d>(r.anchor) : std::nullopt, r.minor))
                 return;
             const double c = cost(box) + penalty;
             if (!best || c < bestCost) {

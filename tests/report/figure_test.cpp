@@ -134,7 +134,8 @@ TEST(LabelPlacement, CrowdedLabelsNeverOverlapStayInsideAndStayNear)
 TEST(LabelPlacement, LargeNumbersSideBySideKeepApart)
 {
     // Tick numbers at twice the size, a tick apart along an axis: "200" and "150" read as "200150"
-    // when only 5 px lie between them. Beside other text, a label keeps a space (a third of its height) clear.
+    // when 5 px, or a space, lie between them. Beside other text, a tick number keeps two spaces (0.6 of its
+    // height) clear.
     std::vector<LabelRequest> requests;
     for (int k = 0; k < 6; ++k)
         requests.push_back({Element::WorldAxes, std::to_string(250 - 50 * k), {300 + 60.0 * k, 300}, {54, 30}, true});
@@ -148,8 +149,8 @@ TEST(LabelPlacement, LargeNumbersSideBySideKeepApart)
         for (std::size_t j = i + 1; j < boxes.size(); ++j) {
             const bool sideBySide = boxes[i].min.y() < boxes[j].max.y() && boxes[j].min.y() < boxes[i].max.y();
             if (sideBySide) {
-                EXPECT_GE(std::max(boxes[i].min.x() - boxes[j].max.x(), boxes[j].min.x() - boxes[i].max.x()), 0.3 * 30 - 0.01)
-                    << i << " and " << j << " are closer than a space";
+                EXPECT_GE(std::max(boxes[i].min.x() - boxes[j].max.x(), boxes[j].min.x() - boxes[i].max.x()), 0.6 * 30 - 0.01)
+                    << i << " and " << j << " are closer than two spaces";
             }
         }
 }
