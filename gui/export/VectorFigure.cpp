@@ -166,6 +166,9 @@ void paint(QPainter& painter, const Figure& figure, const VectorFigure& f)
             painter.setPen(QPen(c, 1.5 * f.view.lineScale));
             painter.drawLine(QPointF(l.anchor.x(), l.anchor.y()), QPointF(end.x(), end.y()));
         }
+        QColor backdrop = qtColor(backgroundColor(f.theme, false));
+        backdrop.setAlphaF(kLabelBackdropOpacity);
+        painter.fillRect(QRectF(l.box.min.x(), l.box.min.y(), l.box.max.x() - l.box.min.x(), l.box.max.y() - l.box.min.y()), backdrop);
         painter.setPen(c);
         // The box is the text's from the lowest descender up, as VTK measures it.
         drawMathText(painter, QPointF(l.box.min.x(), l.box.max.y() - metrics.descent()), l.text, painter.font());

@@ -218,6 +218,9 @@ void ScenePainter::styleLabel(Label& label) const
     const Rgb c = elementColor(label.label->element, theme_);
     vtkTextProperty* text = label.actor->GetTextProperty();
     text->SetColor(c.r, c.g, c.b);
+    const Rgb back = backgroundColor(theme_, false);
+    text->SetBackgroundColor(back.r, back.g, back.b);
+    text->SetBackgroundOpacity(kLabelBackdropOpacity);
     text->SetFontSize(label.label->minor ? int(smallTextSize(labelSize_)) : labelSize_);
     useFigureFont(text, !label.label->minor); // the font file too: tick numbers were drawn bold, measured regular
 }

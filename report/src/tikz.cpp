@@ -1,6 +1,7 @@
 #include "viewpipe/report/tikz.hpp"
 
 #include "viewpipe/error.hpp"
+#include "viewpipe/format.hpp"
 #include "viewpipe/math_text.hpp"
 
 #include <algorithm>
@@ -155,7 +156,8 @@ std::string tikzFigure(const Figure& figure, Theme theme)
     const double pt = unit / 2.54 * 72.27;
     // Text as large as the picture's: labels and tick numbers take the same share of the width.
     const double labelPt = figure.fontSize * pt, smallPt = smallTextSize(figure.fontSize) * pt;
-    tex << "\\tikzset{\n  vp label/.style={inner sep=0pt, anchor=north west, font=\\sffamily\\bfseries"
+    tex << "\\tikzset{\n  vp label/.style={inner sep=0pt, anchor=north west, fill=vpBackground, fill opacity="
+        << formatShortest(kLabelBackdropOpacity) << ", text opacity=1, font=\\sffamily\\bfseries"
            "\\fontsize{" << number(labelPt) << "}{" << number(1.2 * labelPt) << "}\\selectfont},\n";
     tex << "  vp tick label/.style={vp label, text=vpFrame, font=\\sffamily\\fontsize{" << number(smallPt)
         << "}{" << number(1.2 * smallPt) << "}\\selectfont},\n";

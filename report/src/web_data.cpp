@@ -287,6 +287,7 @@ json sceneData(const EvaluatedScene& scene, const WebPageViews& views)
                        {"smallFontSize", smallTextSize(options.fontSize)},
                        {"scripts", {{"scale", kScriptScale}, {"drop", kSubscriptDrop}, {"rise", kSuperscriptRise}}},
                        {"background", color(backgroundColor(theme, false))},
+                       {"labelBackdropOpacity", kLabelBackdropOpacity},
                        {"projectedBackground", color(backgroundColor(theme, true))},
                        {"ink", color(elementColor(Element::Objects, theme))},
                        {"dark", theme == Theme::Dark},

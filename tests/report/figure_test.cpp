@@ -471,6 +471,9 @@ TEST(Tikz, OneCommandPerShapeAndLabelWithNamedStyles)
     EXPECT_EQ(count("\n\\\\node\\[vp [A-Za-z]+ label\\] \\(vp label [0-9]+\\)"), figure.labels.size());
     EXPECT_NE(tex.find("\\definecolor{vpDOP}"), std::string::npos);
     EXPECT_NE(tex.find("vp DOP/.style={draw=vpDOP"), std::string::npos);
+    // Every label over its backdrop, as the PNG's and the SVG's are: lines run faintly under it.
+    EXPECT_NE(tex.find("vp label/.style={inner sep=0pt, anchor=north west, fill=vpBackground, fill opacity=0.75, text opacity=1"),
+              std::string::npos);
     EXPECT_NE(tex.find("{PRP}"), std::string::npos);
     EXPECT_NE(tex.find("{$u$}"), std::string::npos); // the label's math, as LaTeX
     EXPECT_NE(tex.find("\\documentclass[tikz,border=0pt]{standalone}"), std::string::npos);

@@ -104,6 +104,8 @@
         const weight = label.minor ? '' : 'bold ';
         const width = runsWidth(context, label.runs, px, weight);
         if (width > (x1 - x0) * s) px *= (x1 - x0) * s / width;
+        context.fillStyle = cssColor(data.background, data.labelBackdropOpacity);
+        context.fillRect(corner.x, corner.y, (x1 - x0) * s, (y1 - y0) * s);
         context.fillStyle = cssColor(label.color);
         drawRuns(label.runs, corner.x, corner.y + ((y1 - y0) * s - px) / 2, px, weight);
         if (label.leader) {
@@ -134,6 +136,8 @@
           const box = { x0: at.x + dx, y0: at.y + dy, x1: at.x + dx + width, y1: at.y + dy + px };
           if (overlaps(box)) continue;
           taken.push(box);
+          context.fillStyle = cssColor(data.background, data.labelBackdropOpacity);
+          context.fillRect(box.x0, box.y0, width, px);
           context.fillStyle = cssColor(label.color);
           drawRuns(label.runs, box.x0, box.y0, px, 'bold ');
           break;

@@ -24,6 +24,10 @@ Rgb faceColor(Theme theme);
 // An element's color: objects' surfaces take faceColor, everything else elementColor.
 Rgb styledColor(Element element, bool surface, Theme theme);
 Rgb backgroundColor(Theme theme, bool projectedView);
+// Behind each label and tick number, its box in the picture's background at
+// this opacity: the lines it could not keep off run faintly under it, not
+// through its letters (as a map sets names over roads).
+constexpr double kLabelBackdropOpacity = 0.75;
 // Text sizes in pixels. An exported picture sets its labels and captions at
 // least 2.4 % of its width and everything else (tick numbers, the legend, the
 // effects' note) at least 1.8 %: 8 pt and 6 pt when the picture is 12 cm
