@@ -93,10 +93,16 @@
         x += context.measureText(run[0]).width;
       }
     };
+    // Under a label, the picture's background: the lines it could not keep off run faintly under it.
+    const backdrop = (x, y, width, height) => {
+      context.fillStyle = cssColor(data.background, data.labelBackdropOpacity);
+      context.fillRect(x, y, width, height);
+    };
     const placed = !atRest ? null : userMoved() ? labelsTurned() : stages[state.stage].labels;
     if (placed) {
       // Where the core placed them, as in the app's pictures: export pixels, fitted.
-      const place = (x, y) => ({ x: (x - data.width / 2) * s + size.width / 2, y: (y - data.height / 2) * s + size.height / 2 });
+      const toView = pictureToView(size);
+      const place = (x, y) => ({ x: toView.x(x), y: toView.y(y) });
       for (const label of placed) {
         const [x0, y0, x1, y1] = label.box;
         const corner = place(x0, y0);
@@ -104,8 +110,7 @@
         const weight = label.minor ? '' : 'bold ';
         const width = runsWidth(context, label.runs, px, weight);
         if (width > (x1 - x0) * s) px *= (x1 - x0) * s / width;
-        context.fillStyle = cssColor(data.background, data.labelBackdropOpacity);
-        context.fillRect(corner.x, corner.y, (x1 - x0) * s, (y1 - y0) * s);
+        backdrop(corner.x, corner.y, (x1 - x0) * s, (y1 - y0) * s);
         context.fillStyle = cssColor(label.color);
         drawRuns(label.runs, corner.x, corner.y + ((y1 - y0) * s - px) / 2, px, weight);
         if (label.leader) {
@@ -136,8 +141,7 @@
           const box = { x0: at.x + dx, y0: at.y + dy, x1: at.x + dx + width, y1: at.y + dy + px };
           if (overlaps(box)) continue;
           taken.push(box);
-          context.fillStyle = cssColor(data.background, data.labelBackdropOpacity);
-          context.fillRect(box.x0, box.y0, width, px);
+          backdrop(box.x0, box.y0, width, px);
           context.fillStyle = cssColor(label.color);
           drawRuns(label.runs, box.x0, box.y0, px, 'bold ');
           break;

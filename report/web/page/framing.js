@@ -17,6 +17,11 @@
   function fitScale(size) {
     return Math.min(size.width / data.width, size.height / data.height);
   }
+  // The picture's pixels to the view's, x and y apart: the picture fitted, centred.
+  function pictureToView(size) {
+    const s = fitScale(size);
+    return { x: (v) => (v - data.width / 2) * s + size.width / 2, y: (v) => (v - data.height / 2) * s + size.height / 2 };
+  }
 
   // The frame's camera with the user's orbit (about the focal point, in eye axes) and zoom.
   function cameraMatrices(frame, size) {

@@ -7,8 +7,7 @@
     if (!layout || key === placedText) return;
     placedText = key;
     const s = fitScale(size);
-    // The picture's pixels to the view's: the picture fitted, centred.
-    const x = (v) => (v - data.width / 2) * s + size.width / 2, y = (v) => (v - data.height / 2) * s + size.height / 2;
+    const { x, y } = pictureToView(size);
     const setBox = (element, box) => Object.assign(element.style, {
       left: `${x(box[0])}px`, top: `${y(box[1])}px`, right: 'auto', bottom: 'auto', maxWidth: 'none', margin: '0' });
     const setText = (element, part) => {
