@@ -67,7 +67,7 @@ void LessonDocument::create(const std::string& title, const LessonStep& first)
     Lesson lesson{title, {first}};
     const std::filesystem::path folder = folderOf({});
     parseLesson(lessonToJson(lesson, folder), folder); // as every edit is checked
-    EvaluatedLesson evaluated = evaluateLesson(lesson, &evaluator_);
+    EvaluatedLesson evaluated = evaluateEdit(lesson, tr("Making the lesson"));
     ++generation_;
     undo_.clear();
     undo_.resetClean(); // never saved: closing it asks
@@ -164,8 +164,15 @@ void LessonDocument::edit(Lesson next, int step, const QString& description)
     parseLesson(text, folder);
     if (text == lessonToJson(lesson_, folder))
         return; // nothing changed: no edit to undo
-    EvaluatedLesson evaluated = evaluateLesson(next, &evaluator_, &evaluated_);
+    EvaluatedLesson evaluated = evaluateEdit(next, tr("Updating the lesson"));
     undo_.push(new LessonEdit(this, {lesson_, evaluated_, step_}, {std::move(next), std::move(evaluated), step}, description));
+}
+
+EvaluatedLesson LessonDocument::evaluateEdit(const Lesson& next, const QString& what)
+{
+    EvaluatedLesson evaluated;
+    runWork_(what + QString::fromUtf8("…"), [&] { evaluated = evaluateLesson(next, &evaluator_, &evaluated_); });
+    return evaluated;
 }
 
 void LessonDocument::restore(const Lesson& lesson, const EvaluatedLesson& evaluated, int step)

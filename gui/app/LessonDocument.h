@@ -10,6 +10,7 @@
 #include <QString>
 #include <QUndoStack>
 
+#include <functional>
 #include <optional>
 #include <vector>
 
@@ -36,6 +37,10 @@ public:
     EvaluatedLesson evaluate(const Lesson& lesson);
     // A lesson read from `path` (loadLesson), its steps evaluated, replaces the one open.
     void open(Lesson lesson, EvaluatedLesson evaluated, const QString& path);
+    // Runs what making a lesson or an edit evaluates (a new step's meshes read): the app runs it
+    // off the GUI thread (waitShowingProgress), saying `what` is under way; by default it runs here.
+    using WorkRunner = std::function<void(const QString& what, const std::function<void()>& work)>;
+    void setWorkRunner(WorkRunner runner) { runWork_ = std::move(runner); }
     // Hears of every mesh the steps' scenes read (the tests slow them down).
     void setEvaluationListener(EvaluationListener* listener) { evaluator_.setListener(listener); }
     // A new lesson with one step.
@@ -92,8 +97,10 @@ signals:
 private:
     void edit(Lesson next, int step, const QString& description);
     void resetAnswers();
+    EvaluatedLesson evaluateEdit(const Lesson& next, const QString& what);
 
     SceneEvaluator evaluator_; // the steps' meshes read once
+    WorkRunner runWork_ = [](const QString&, const std::function<void()>& work) { work(); };
     Lesson lesson_;
     EvaluatedLesson evaluated_;
     QString filePath_;

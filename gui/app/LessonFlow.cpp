@@ -27,6 +27,9 @@ namespace viewpipe::gui {
 LessonFlow::LessonFlow(MainWindow* window)
     : QObject(window), window_(window), lesson_(new LessonDocument(this)), panel_(new LessonPanel(lesson_))
 {
+    lesson_->setWorkRunner([window](const QString& what, const std::function<void()>& work) {
+        waitShowingProgress(window, what, work);
+    });
     connect(lesson_, &LessonDocument::stepChanged, this, &LessonFlow::showLessonStep);
     connect(panel_, &LessonPanel::addStepRequested, this, &LessonFlow::addLessonStepFromView);
     connect(panel_, &LessonPanel::saveResultsRequested, this, &LessonFlow::chooseAndSaveResults);

@@ -330,6 +330,43 @@ private slots:
         w.lessonFlow()->lesson()->close();
     }
 
+    // Making a lesson of a view with a slow mesh, and adding a step that shows
+    // another: the lesson reads each off the GUI thread (an edit read on it,
+    // the window frozen), and a dialog says what is under way.
+    void lessonEditsReadSlowMeshesOffTheGuiThread()
+    {
+        MainWindow& w = *window_;
+        const QString scene = writeMeshScene();
+        QVERIFY(!scene.isEmpty());
+        QVERIFY(w.sceneFiles()->openScene(scene));
+        SlowReads slow;
+        QString announced;
+        QVERIFY(readSlowly(w, slow, announced, [&] {
+            w.lessonFlow()->addLessonStepFromView(); // no lesson open: a new one of this view
+            return w.lessonFlow()->lesson()->isOpen();
+        }));
+        QCOMPARE(announced, QString("Making the lesson…"));
+        QVERIFY(slow.reader != std::thread::id());
+        QVERIFY(slow.reader != std::this_thread::get_id());
+
+        const QString other = QDir::temp().filePath("viewpipe-session-other.obj");
+        QVERIFY(QFile::remove(other) || !QFile::exists(other));
+        QVERIFY(QFile::copy(QDir::temp().filePath("viewpipe-session-tetrahedron.obj"), other));
+        QVERIFY(w.sceneFiles()->importMesh(other));
+        slow = SlowReads{};
+        announced.clear();
+        QVERIFY(readSlowly(w, slow, announced, [&] {
+            w.lessonFlow()->addLessonStepFromView();
+            return w.lessonFlow()->lesson()->lesson().steps.size() == 2;
+        }));
+        QCOMPARE(announced, QString("Updating the lesson…"));
+        QVERIFY(slow.reader != std::thread::id());
+        QVERIFY(slow.reader != std::this_thread::get_id());
+        QVERIFY(!w.findChild<QProgressDialog*>("waitingProgress"));
+        QCOMPARE(w.lessonFlow()->lesson()->stepScene(1)->meshes.size(), std::size_t(3));
+        w.lessonFlow()->lesson()->close();
+    }
+
     // Found: Ctrl+Y did nothing.
     void undoAndRedoByKeyboard()
     {
