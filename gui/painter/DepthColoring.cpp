@@ -24,7 +24,7 @@ vtkSmartPointer<vtkPolyData> depthLevels(const std::shared_ptr<const PolygonMesh
 {
     // Only the points of these faces: the others must not widen the bands' range.
     auto used = vtkSmartPointer<vtkCleanPolyData>::New();
-    used->SetInputData(facesData(faces));
+    used->SetInputData(facesData(faces, Coordinates::Exact)); // depths from the exact vertices
     used->PointMergingOff();
     used->SetOutputPointsPrecision(vtkAlgorithm::DOUBLE_PRECISION);
     auto data = vtkSmartPointer<vtkPolyData>::New();

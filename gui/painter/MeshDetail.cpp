@@ -41,14 +41,14 @@ vtkSmartPointer<vtkPolyData> decimated(const std::shared_ptr<const PolygonMesh>&
     clustering->SetDivisionOrigin(box.min().data()); // cubes of this side from the corner
     clustering->SetDivisionSpacing(side, side, side);
     clustering->CopyCellDataOff();
-    clustering->SetInputData(facesData(shared)); // its own VTK objects over the mesh: nothing the GUI thread draws is touched
+    clustering->SetInputData(facesData(shared, Coordinates::Exact)); // its own VTK objects over the mesh: nothing the GUI thread draws is touched
     clustering->Update();
     return clustering->GetOutput();
 }
 
 } // namespace
 
-MeshDetail::MeshDetail(std::shared_ptr<const PolygonMesh> mesh) : mesh_(std::move(mesh)), full_(facesData(mesh_))
+MeshDetail::MeshDetail(std::shared_ptr<const PolygonMesh> mesh) : mesh_(std::move(mesh)), full_(facesData(mesh_, Coordinates::Drawn))
 {
     if (large())
         making_ = std::async(std::launch::async, [mesh = mesh_] { return decimated(mesh); });

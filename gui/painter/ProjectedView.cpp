@@ -167,7 +167,7 @@ void ProjectedView::setScene(const EvaluatedScene& scene,
         const auto& fighting = scene.objectFaces[o].fighting;
         if (fighting && !fighting->faces.empty()) // faces the buffer cannot order, outlined over the picture
             for (const bool surface : {true, false}) {
-                auto actor = unlitActor(surface ? facesData(fighting) : edgesData(*fighting));
+                auto actor = unlitActor(surface ? facesData(fighting, Coordinates::Drawn) : edgesData(*fighting));
                 actor->GetProperty()->SetOpacity(surface ? 0.8 : 1.0);
                 actors_.push_back({actor, Element::ZFighting, surface});
             }

@@ -94,7 +94,7 @@ vtkSmartPointer<vtkActor2D> overlayActor(double lineWidth)
 void addObjectActors(const std::vector<vtkRenderer*>& renderers, const EvaluatedScene& scene, Theme theme)
 {
     for (std::size_t o = 0; o < scene.meshes.size(); ++o) {
-        const vtkSmartPointer<vtkPolyData> faces = facesData(scene.meshes[o]);
+        const vtkSmartPointer<vtkPolyData> faces = facesData(scene.meshes[o], Coordinates::Drawn);
         const bool edges = scene.scene.objects[o].type != ObjectType::Mesh; // meshes from files: faces only
         for (vtkRenderer* renderer : renderers)
             for (const bool surface : {true, false}) {

@@ -6,6 +6,9 @@
 #include <vtkCallbackCommand.h>
 #include <vtkCellArray.h>
 #include <vtkDoubleArray.h>
+#include <vtkFloatArray.h>
+#include <vtkOpenGLPolyDataMapper.h>
+#include <vtkOpenGLVertexBufferObject.h>
 #include <vtkTypeInt32Array.h>
 #include <vtkPoints.h>
 #include <vtkPolyData.h>
@@ -70,13 +73,44 @@ vtkSmartPointer<Array> arrayOver(const Value* values, std::size_t count, int com
     return array;
 }
 
+// Float keeps a mesh's detail for drawing where the mesh lies near the origin
+// for its size: within 100 of its diagonals, float's rounding is under 10^-5
+// of the mesh across (a hundredth of a pixel at 1920). Farther, VTK's shifting
+// of the coordinates before drawing needs them in double.
+bool floatKeepsDetail(const PolygonMesh& mesh)
+{
+    Eigen::AlignedBox<double, 3> box;
+    for (const Vec3<double>& v : mesh.vertices)
+        box.extend(v);
+    const double across = box.diagonal().norm();
+    return !box.isEmpty() && across > 0 && box.center().norm() <= 100 * across;
+}
+
+// A mesh's vertices for VTK: the mesh's own doubles, or for drawing a float copy
+// where float keeps the detail (VTK uploads it as it is; from doubles it packs a
+// float copy of its own for each view, and keeps it).
+vtkSmartPointer<vtkDataArray> vertices(const std::shared_ptr<const PolygonMesh>& mesh, Coordinates coordinates)
+{
+    static_assert(sizeof(Vec3<double>) == 3 * sizeof(double));
+    if (coordinates == Coordinates::Exact || !floatKeepsDetail(*mesh))
+        return arrayOver<vtkDoubleArray>(mesh->vertices.data()->data(), mesh->vertices.size(), 3, mesh);
+    auto floats = vtkSmartPointer<vtkFloatArray>::New();
+    floats->SetNumberOfComponents(3);
+    floats->SetNumberOfTuples(vtkIdType(mesh->vertices.size()));
+    float* out = floats->GetPointer(0);
+    for (const Vec3<double>& v : mesh->vertices)
+        for (int k = 0; k < 3; ++k)
+            *out++ = float(v[k]);
+    return floats;
+}
+
 } // namespace
 
-vtkSmartPointer<vtkPolyData> facesData(const std::shared_ptr<const PolygonMesh>& mesh)
+vtkSmartPointer<vtkPolyData> facesData(const std::shared_ptr<const PolygonMesh>& mesh, Coordinates coordinates)
 {
-    static_assert(sizeof(Vec3<double>) == 3 * sizeof(double) && sizeof(int) == sizeof(vtkTypeInt32));
+    static_assert(sizeof(int) == sizeof(vtkTypeInt32));
     auto points = vtkSmartPointer<vtkPoints>::New();
-    points->SetData(arrayOver<vtkDoubleArray>(mesh->vertices.data()->data(), mesh->vertices.size(), 3, mesh));
+    points->SetData(vertices(mesh, coordinates));
     const FaceList& faces = mesh->faces;
     auto polys = vtkSmartPointer<vtkCellArray>::New();
     polys->SetData(arrayOver<vtkTypeInt32Array>(faces.offsets().data(), faces.offsets().size(), 1, mesh),
@@ -99,6 +133,10 @@ vtkSmartPointer<vtkActor> unlitActor(vtkPolyData* data)
 {
     auto mapper = vtkSmartPointer<vtkPolyDataMapper>::New();
     mapper->SetInputData(data);
+    // Float points are a mesh's drawn as they are (Coordinates::Drawn), not packed into another copy.
+    auto* drawing = vtkOpenGLPolyDataMapper::SafeDownCast(mapper);
+    if (drawing && data->GetPoints() && data->GetPoints()->GetDataType() == VTK_FLOAT)
+        drawing->SetVBOShiftScaleMethod(vtkOpenGLVertexBufferObject::DISABLE_SHIFT_SCALE);
     auto actor = vtkSmartPointer<vtkActor>::New();
     actor->SetMapper(mapper);
     actor->GetProperty()->LightingOff();
@@ -107,7 +145,8 @@ vtkSmartPointer<vtkActor> unlitActor(vtkPolyData* data)
 
 vtkSmartPointer<vtkPolyData> primitiveData(const Primitive& primitive)
 {
-    return primitive.kind == PrimitiveKind::Faces ? facesData(primitive.faces) : linesData(primitive.segments);
+    return primitive.kind == PrimitiveKind::Faces ? facesData(primitive.faces, Coordinates::Drawn)
+                                                  : linesData(primitive.segments);
 }
 
 // Text in the font the vector figures use (DejaVu Sans, Debian's fonts-dejavu-core), so that a label

@@ -20,8 +20,11 @@ namespace viewpipe::gui {
 vtkSmartPointer<vtkPolyData> linesData(const std::vector<Vec3<double>>& ends);
 // Lines in a picture's plane (z = 0).
 vtkSmartPointer<vtkPolyData> linesData(const std::vector<Segment2>& segments);
-// A mesh's faces over its own vertices and indices (no copy; the poly data keeps the mesh).
-vtkSmartPointer<vtkPolyData> facesData(const std::shared_ptr<const PolygonMesh>& mesh);
+// A mesh's vertices as VTK gets them: Exact, its own doubles (no copy), for filters that compute with
+// them; Drawn, in float where float keeps the mesh's detail (one copy, drawn as it is in every view).
+enum class Coordinates { Exact, Drawn };
+// A mesh's faces over its own indices (no copy; the poly data keeps the mesh).
+vtkSmartPointer<vtkPolyData> facesData(const std::shared_ptr<const PolygonMesh>& mesh, Coordinates coordinates);
 // A mesh's edges, once each.
 vtkSmartPointer<vtkPolyData> edgesData(const PolygonMesh& mesh);
 vtkSmartPointer<vtkPolyData> primitiveData(const Primitive& primitive);

@@ -28,6 +28,7 @@
 #include <vtkActor.h>
 #include <vtkCamera.h>
 #include <vtkCellArray.h>
+#include <vtkDataArray.h>
 #include <vtkImageData.h>
 #include <vtkMatrix4x4.h>
 #include <vtkNew.h>
@@ -54,6 +55,7 @@
 #include "app/ParameterPanel.h"
 #include "app/Stepper.h"
 #include "painter/EigenVtk.h"
+#include "painter/VtkGeometry.h"
 
 using namespace viewpipe;
 using namespace viewpipe::gui;
@@ -183,6 +185,32 @@ private slots:
         sendMouse(w, QEvent::MouseButtonRelease, center + QPoint(40, 10), Qt::NoButton);
         w.renderNow();
         QCOMPARE(worldFacesDrawn(w), full);
+    }
+
+    // A mesh is drawn from one float copy of its vertices where float keeps its
+    // detail (from doubles VTK packs a float copy of its own for each view, and
+    // keeps it), from its own doubles where it lies far from the origin for its
+    // size; what computes with them (depth bands, the decimation) gets the doubles.
+    void meshVerticesAsVtkGetsThem()
+    {
+        using viewpipe::gui::Coordinates;
+        using viewpipe::gui::facesData;
+        const auto near = std::make_shared<const PolygonMesh>(boxMesh({0.1, -2, 30}, {16.3, 10, 54}));
+        const vtkSmartPointer<vtkPolyData> drawnData = facesData(near, Coordinates::Drawn);
+        vtkDataArray* drawn = drawnData->GetPoints()->GetData();
+        QCOMPARE(drawn->GetDataType(), VTK_FLOAT);
+        QCOMPARE(drawn->GetNumberOfTuples(), vtkIdType(near->vertices.size()));
+        for (std::size_t k = 0; k < near->vertices.size(); ++k)
+            for (int c = 0; c < 3; ++c)
+                QCOMPARE(drawn->GetComponent(vtkIdType(k), c), double(float(near->vertices[k][c])));
+        const vtkSmartPointer<vtkPolyData> exactData = facesData(near, Coordinates::Exact);
+        vtkDataArray* exact = exactData->GetPoints()->GetData();
+        QCOMPARE(exact->GetDataType(), VTK_DOUBLE);
+        QCOMPARE(exact->GetVoidPointer(0), static_cast<const void*>(near->vertices.data()->data())); // not a copy
+
+        // 10^4 across, 10^7 away: float would round its vertices to 1 unit, VTK shifts them first.
+        const auto far = std::make_shared<const PolygonMesh>(boxMesh({1e7, 1e7, 0}, {1e7 + 1e4, 1e7 + 1e4, 1e4}));
+        QCOMPARE(facesData(far, Coordinates::Drawn)->GetPoints()->GetDataType(), VTK_DOUBLE);
     }
 
     void stepperWalksThroughTheStages()
