@@ -7,8 +7,6 @@
 #include <vtkCellArray.h>
 #include <vtkDoubleArray.h>
 #include <vtkFloatArray.h>
-#include <vtkOpenGLPolyDataMapper.h>
-#include <vtkOpenGLVertexBufferObject.h>
 #include <vtkTypeInt32Array.h>
 #include <vtkPoints.h>
 #include <vtkPolyData.h>
@@ -73,26 +71,26 @@ vtkSmartPointer<Array> arrayOver(const Value* values, std::size_t count, int com
     return array;
 }
 
-// Float keeps a mesh's detail for drawing where the mesh lies near the origin
-// for its size: within 100 of its diagonals, float's rounding is under 10^-5
-// of the mesh across (a hundredth of a pixel at 1920). Farther, VTK's shifting
-// of the coordinates before drawing needs them in double.
-bool floatKeepsDetail(const PolygonMesh& mesh)
+// Whether VTK draws a mesh's coordinates as they are, not shifted and scaled
+// first: its own test (vtkOpenGLVertexBufferObject's automatic shift and
+// scale), a mesh near the origin for its size, neither very large nor very small.
+bool vtkDrawsUnshifted(const PolygonMesh& mesh)
 {
     Eigen::AlignedBox<double, 3> box;
     for (const Vec3<double>& v : mesh.vertices)
         box.extend(v);
-    const double across = box.diagonal().norm();
-    return !box.isEmpty() && across > 0 && box.center().norm() <= 100 * across;
+    const double diagonal2 = box.isEmpty() ? 0 : box.diagonal().squaredNorm();
+    return diagonal2 > 0 && box.center().squaredNorm() / diagonal2 <= 1e6 && std::abs(std::log10(diagonal2)) <= 3;
 }
 
 // A mesh's vertices for VTK: the mesh's own doubles, or for drawing a float copy
-// where float keeps the detail (VTK uploads it as it is; from doubles it packs a
-// float copy of its own for each view, and keeps it).
+// where VTK draws them unshifted. There VTK packs the doubles into the same
+// floats itself, one copy for each view, and keeps it; a float copy it uploads
+// as it is, so the views share one and the picture is the same bit for bit.
 vtkSmartPointer<vtkDataArray> vertices(const std::shared_ptr<const PolygonMesh>& mesh, Coordinates coordinates)
 {
     static_assert(sizeof(Vec3<double>) == 3 * sizeof(double));
-    if (coordinates == Coordinates::Exact || !floatKeepsDetail(*mesh))
+    if (coordinates == Coordinates::Exact || !vtkDrawsUnshifted(*mesh))
         return arrayOver<vtkDoubleArray>(mesh->vertices.data()->data(), mesh->vertices.size(), 3, mesh);
     auto floats = vtkSmartPointer<vtkFloatArray>::New();
     floats->SetNumberOfComponents(3);
@@ -133,10 +131,6 @@ vtkSmartPointer<vtkActor> unlitActor(vtkPolyData* data)
 {
     auto mapper = vtkSmartPointer<vtkPolyDataMapper>::New();
     mapper->SetInputData(data);
-    // Float points are a mesh's drawn as they are (Coordinates::Drawn), not packed into another copy.
-    auto* drawing = vtkOpenGLPolyDataMapper::SafeDownCast(mapper);
-    if (drawing && data->GetPoints() && data->GetPoints()->GetDataType() == VTK_FLOAT)
-        drawing->SetVBOShiftScaleMethod(vtkOpenGLVertexBufferObject::DISABLE_SHIFT_SCALE);
     auto actor = vtkSmartPointer<vtkActor>::New();
     actor->SetMapper(mapper);
     actor->GetProperty()->LightingOff();

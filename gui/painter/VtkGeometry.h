@@ -21,7 +21,7 @@ vtkSmartPointer<vtkPolyData> linesData(const std::vector<Vec3<double>>& ends);
 // Lines in a picture's plane (z = 0).
 vtkSmartPointer<vtkPolyData> linesData(const std::vector<Segment2>& segments);
 // A mesh's vertices as VTK gets them: Exact, its own doubles (no copy), for filters that compute with
-// them; Drawn, in float where float keeps the mesh's detail (one copy, drawn as it is in every view).
+// them; Drawn, in float where VTK would draw them unshifted (one copy, uploaded as it is by every view).
 enum class Coordinates { Exact, Drawn };
 // A mesh's faces over its own indices (no copy; the poly data keeps the mesh).
 vtkSmartPointer<vtkPolyData> facesData(const std::shared_ptr<const PolygonMesh>& mesh, Coordinates coordinates);

@@ -187,10 +187,10 @@ private slots:
         QCOMPARE(worldFacesDrawn(w), full);
     }
 
-    // A mesh is drawn from one float copy of its vertices where float keeps its
-    // detail (from doubles VTK packs a float copy of its own for each view, and
-    // keeps it), from its own doubles where it lies far from the origin for its
-    // size; what computes with them (depth bands, the decimation) gets the doubles.
+    // A mesh is drawn from one float copy of its vertices where VTK draws them
+    // unshifted (from doubles it packs a float copy of its own for each view, and
+    // keeps it); from its own doubles, not a copy, where VTK shifts and scales
+    // them first, and for what computes with them (Exact).
     void meshVerticesAsVtkGetsThem()
     {
         using viewpipe::gui::Coordinates;
@@ -208,9 +208,12 @@ private slots:
         QCOMPARE(exact->GetDataType(), VTK_DOUBLE);
         QCOMPARE(exact->GetVoidPointer(0), static_cast<const void*>(near->vertices.data()->data())); // not a copy
 
-        // 10^4 across, 10^7 away: float would round its vertices to 1 unit, VTK shifts them first.
+        // Where VTK shifts and scales: far from the origin for its size (float would round these
+        // vertices to a unit), and large (10^3 across).
         const auto far = std::make_shared<const PolygonMesh>(boxMesh({1e7, 1e7, 0}, {1e7 + 1e4, 1e7 + 1e4, 1e4}));
         QCOMPARE(facesData(far, Coordinates::Drawn)->GetPoints()->GetDataType(), VTK_DOUBLE);
+        const auto large = std::make_shared<const PolygonMesh>(boxMesh({-500, -500, -500}, {500, 500, 500}));
+        QCOMPARE(facesData(large, Coordinates::Drawn)->GetPoints()->GetDataType(), VTK_DOUBLE);
     }
 
     void stepperWalksThroughTheStages()
