@@ -37,6 +37,11 @@ QColor qtColor(const Rgb& c, double opacity = 1)
     return QColor::fromRgbF(c.r, c.g, c.b, opacity);
 }
 
+QRectF rectOf(const Box2& box)
+{
+    return QRectF(box.min.x(), box.min.y(), box.max.x() - box.min.x(), box.max.y() - box.min.y());
+}
+
 QFont font(double pixels, bool bold)
 {
     QFont f("DejaVu Sans");
@@ -92,7 +97,7 @@ void drawLegend(QPainter& painter, const Figure& figure, const VectorFigure& f)
         return;
     const Box2& box = figure.layout.legend;
     const LegendLayout& rows = figure.layout.legendRows;
-    const QRectF frame(box.min.x(), box.min.y(), box.max.x() - box.min.x(), box.max.y() - box.min.y());
+    const QRectF frame = rectOf(box);
     painter.setPen(QPen(qtColor(elementColor(Element::Frame, f.theme)), 1));
     painter.setBrush(Qt::NoBrush); // on its backdrop
     painter.drawRect(frame);
@@ -154,7 +159,7 @@ void paint(QPainter& painter, const Figure& figure, const VectorFigure& f)
     }
     const PictureLayout& p = figure.layout;
     for (const Box2& box : textBackdrops(p, figure.height))
-        painter.fillRect(QRectF(box.min.x(), box.min.y(), box.max.x() - box.min.x(), box.max.y() - box.min.y()),
+        painter.fillRect(rectOf(box),
                          qtColor(backgroundColor(f.theme, false)));
     const QFont labelFont = font(f.view.fontSize, true), minorFont = font(smallTextSize(f.view.fontSize), false);
     for (const PlacedLabel& l : figure.labels) {
@@ -166,9 +171,7 @@ void paint(QPainter& painter, const Figure& figure, const VectorFigure& f)
             painter.setPen(QPen(c, 1.5 * f.view.lineScale));
             painter.drawLine(QPointF(l.anchor.x(), l.anchor.y()), QPointF(end.x(), end.y()));
         }
-        QColor backdrop = qtColor(backgroundColor(f.theme, false));
-        backdrop.setAlphaF(kLabelBackdropOpacity);
-        painter.fillRect(QRectF(l.box.min.x(), l.box.min.y(), l.box.max.x() - l.box.min.x(), l.box.max.y() - l.box.min.y()), backdrop);
+        painter.fillRect(rectOf(l.box), qtColor(backgroundColor(f.theme, false), kLabelBackdropOpacity));
         painter.setPen(c);
         // The box is the text's from the lowest descender up, as VTK measures it.
         drawMathText(painter, QPointF(l.box.min.x(), l.box.max.y() - metrics.descent()), l.text, painter.font());

@@ -74,11 +74,9 @@ vtkSmartPointer<Array> arrayOver(const Value* values, std::size_t count, int com
 // Whether VTK draws a mesh's coordinates as they are, not shifted and scaled
 // first: its own test (vtkOpenGLVertexBufferObject's automatic shift and
 // scale), a mesh near the origin for its size, neither very large nor very small.
-bool vtkDrawsUnshifted(const PolygonMesh& mesh)
+bool vtkDrawsUnshifted(const std::shared_ptr<const PolygonMesh>& mesh)
 {
-    Eigen::AlignedBox<double, 3> box;
-    for (const Vec3<double>& v : mesh.vertices)
-        box.extend(v);
+    const Eigen::AlignedBox<double, 3> box = boundsOf({mesh});
     const double diagonal2 = box.isEmpty() ? 0 : box.diagonal().squaredNorm();
     return diagonal2 > 0 && box.center().squaredNorm() / diagonal2 <= 1e6 && std::abs(std::log10(diagonal2)) <= 3;
 }
@@ -90,7 +88,7 @@ bool vtkDrawsUnshifted(const PolygonMesh& mesh)
 vtkSmartPointer<vtkDataArray> vertices(const std::shared_ptr<const PolygonMesh>& mesh, Coordinates coordinates)
 {
     static_assert(sizeof(Vec3<double>) == 3 * sizeof(double));
-    if (coordinates == Coordinates::Exact || !vtkDrawsUnshifted(*mesh))
+    if (coordinates == Coordinates::Exact || !vtkDrawsUnshifted(mesh))
         return arrayOver<vtkDoubleArray>(mesh->vertices.data()->data(), mesh->vertices.size(), 3, mesh);
     auto floats = vtkSmartPointer<vtkFloatArray>::New();
     floats->SetNumberOfComponents(3);
