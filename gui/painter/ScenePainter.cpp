@@ -544,7 +544,11 @@ WorldCamera ScenePainter::camera() const
 
 void ScenePainter::setCamera(const WorldCamera& camera)
 {
-    vtkCamera* vtk = world_->GetActiveCamera();
+    setVtkCamera(world_->GetActiveCamera(), camera);
+}
+
+void setVtkCamera(vtkCamera* vtk, const WorldCamera& camera)
+{
     vtk->SetFocalPoint(camera.focalPoint.data());
     vtk->SetPosition(camera.position.data());
     vtk->SetViewUp(camera.viewUp.data());

@@ -24,6 +24,7 @@
 
 class vtkActor;
 class vtkActor2D;
+class vtkCamera;
 class vtkCallbackCommand;
 class vtkLegendBoxActor;
 class vtkMapper;
@@ -39,6 +40,9 @@ class ProjectedView;
 // The scene's objects alone (faces and edges, as the painter styles them),
 // added to each renderer; for pictures that need no set-up around them.
 void addObjectActors(const std::vector<vtkRenderer*>& renderers, const EvaluatedScene& scene, Theme theme);
+
+// Points a VTK camera as the world view's camera says.
+void setVtkCamera(vtkCamera* vtk, const WorldCamera& camera);
 
 class ScenePainter {
 public:
