@@ -62,7 +62,8 @@ public:
     // Appends a face: any range of vertex indices.
     template <class Indices> void push_back(const Indices& face)
     {
-        indices_.insert(indices_.end(), std::begin(face), std::end(face));
+        for (const int index : face) // not insert(): there GCC 12 warns falsely of an overflow
+            indices_.push_back(index);
         offsets_.push_back(int(indices_.size()));
     }
     void push_back(std::initializer_list<int> face) { push_back<std::initializer_list<int>>(face); }
