@@ -32,31 +32,32 @@ public:
         if (std::abs(x - pressX_) + std::abs(y - pressY_) < 3) {
             if (onClick)
                 onClick(x, y);
-        } else if (onCameraMoved) {
-            onCameraMoved();
+        } else {
+            cameraMoved();
         }
     }
 
-    void EndDolly() override { finish(&vtkInteractorStyleTrackballCamera::EndDolly); }
-    void EndPan() override { finish(&vtkInteractorStyleTrackballCamera::EndPan); }
-    void EndSpin() override { finish(&vtkInteractorStyleTrackballCamera::EndSpin); }
-    void OnMouseWheelForward() override
+    // Each calls its base by name: through a member pointer the call would be virtual, and come back here.
+    // The wheel zooms through StartDolly and EndDolly too.
+    void EndDolly() override
     {
-        vtkInteractorStyleTrackballCamera::OnMouseWheelForward();
-        if (onCameraMoved)
-            onCameraMoved();
+        vtkInteractorStyleTrackballCamera::EndDolly();
+        cameraMoved();
     }
-    void OnMouseWheelBackward() override
+    void EndPan() override
     {
-        vtkInteractorStyleTrackballCamera::OnMouseWheelBackward();
-        if (onCameraMoved)
-            onCameraMoved();
+        vtkInteractorStyleTrackballCamera::EndPan();
+        cameraMoved();
+    }
+    void EndSpin() override
+    {
+        vtkInteractorStyleTrackballCamera::EndSpin();
+        cameraMoved();
     }
 
 private:
-    void finish(void (vtkInteractorStyleTrackballCamera::*end)())
+    void cameraMoved()
     {
-        (this->*end)();
         if (onCameraMoved)
             onCameraMoved();
     }

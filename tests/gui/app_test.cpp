@@ -102,10 +102,11 @@ vtkIdType worldFacesDrawn(MainWindow& window)
 }
 
 // A mouse event on the world view (Qt 5's QTest cannot drag with a button held).
-void sendMouse(MainWindow& window, QEvent::Type type, QPoint at, Qt::MouseButtons held)
+void sendMouse(MainWindow& window, QEvent::Type type, QPoint at, Qt::MouseButtons held,
+               Qt::MouseButton button = Qt::LeftButton)
 {
     auto* view = window.findChild<QVTKOpenGLNativeWidget*>("worldView");
-    QMouseEvent event(type, at, view->mapToGlobal(at), type == QEvent::MouseMove ? Qt::NoButton : Qt::LeftButton, held,
+    QMouseEvent event(type, at, view->mapToGlobal(at), type == QEvent::MouseMove ? Qt::NoButton : button, held,
                       Qt::NoModifier);
     QApplication::sendEvent(view, &event);
 }
@@ -185,6 +186,45 @@ private slots:
         sendMouse(w, QEvent::MouseButtonRelease, center + QPoint(40, 10), Qt::NoButton);
         w.renderNow();
         QCOMPARE(worldFacesDrawn(w), full);
+    }
+
+    // The wheel and the right button zoom the world view, the middle button
+    // pans it, and the next stage keeps the zoom.
+    void wheelAndButtonsZoomAndPan()
+    {
+        MainWindow& w = *window_;
+        auto* view = w.findChild<QVTKOpenGLNativeWidget*>("worldView");
+        vtkCamera* camera = view->renderWindow()->GetRenderers()->GetFirstRenderer()->GetActiveCamera();
+        const QPoint center = view->rect().center();
+        const double distance = camera->GetDistance();
+        QWheelEvent wheel(center, view->mapToGlobal(center), QPoint(), QPoint(0, 120), Qt::NoButton, Qt::NoModifier,
+                          Qt::NoScrollPhase, false);
+        QApplication::sendEvent(view, &wheel);
+        QVERIFY2(camera->GetDistance() < 0.95 * distance, qPrintable(QString::number(camera->GetDistance())));
+        const double zoom = w.painter()->orbitAngles().zoom;
+        QVERIFY2(zoom > 1.05, qPrintable(QString::number(zoom)));
+
+        // Dragging up with the right button zooms in further.
+        sendMouse(w, QEvent::MouseButtonPress, center, Qt::RightButton, Qt::RightButton);
+        sendMouse(w, QEvent::MouseMove, center - QPoint(0, 40), Qt::RightButton);
+        sendMouse(w, QEvent::MouseButtonRelease, center - QPoint(0, 40), Qt::NoButton, Qt::RightButton);
+        const double dollied = w.painter()->orbitAngles().zoom;
+        QVERIFY2(dollied > 1.05 * zoom, qPrintable(QString::number(dollied)));
+
+        // Dragging with the middle button moves the focal point across the view, not along it.
+        Vec3<double> before, after, direction;
+        camera->GetFocalPoint(before.data());
+        camera->GetDirectionOfProjection(direction.data());
+        sendMouse(w, QEvent::MouseButtonPress, center, Qt::MiddleButton, Qt::MiddleButton);
+        sendMouse(w, QEvent::MouseMove, center + QPoint(60, 0), Qt::MiddleButton);
+        sendMouse(w, QEvent::MouseButtonRelease, center + QPoint(60, 0), Qt::NoButton, Qt::MiddleButton);
+        camera->GetFocalPoint(after.data());
+        QVERIFY((after - before).norm() > 1);
+        QVERIFY(std::abs((after - before).normalized().dot(direction)) < 1e-6);
+
+        w.stepper()->goToStage(1, false);
+        waitForRest(w);
+        QCOMPARE(w.painter()->orbitAngles().zoom, dollied);
     }
 
     // A mesh is drawn from one float copy of its vertices where VTK draws them
