@@ -524,11 +524,6 @@ void ScenePainter::showMoment(const WorldMoment& moment)
     frameOn(moment.framing);
 }
 
-void ScenePainter::frame()
-{
-    frameOn(scene_ ? framingOf(*scene_, {shownMatrix_}, canonicalOpacity_ > 0) : Framing{});
-}
-
 WorldCamera ScenePainter::camera() const
 {
     vtkCamera* vtk = world_->GetActiveCamera();
@@ -633,7 +628,7 @@ void ScenePainter::resetView()
     setCamera(WorldCamera{});
     userZoom_ = 1;
     userPan_.setZero();
-    frame();
+    frameOn(framed_); // the stage's framing at rest (the step's while it moves), as the view first showed it
 }
 
 std::optional<Vec3<double>> ScenePainter::pickVertex(int displayX, int displayY) const

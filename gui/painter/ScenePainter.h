@@ -90,10 +90,9 @@ public:
     // Shows a moment of the world view (world_view.hpp): its matrix, ghost and framing.
     void showMoment(const WorldMoment& moment);
     // Aims the world view's camera at a framing, keeping the user's
-    // direction, zoom and pan; frame() fits what is shown now; resetView()
-    // restores the default viewpoint.
+    // direction, zoom and pan; resetView() restores the default viewpoint,
+    // zoom and pan on the framing shown.
     void frameOn(const Framing& framing);
-    void frame();
     void resetView();
     // Turns the world view's camera about its focal point, in degrees (yaw
     // about the view's up, pitch about its right, as the web page turns) and
@@ -104,7 +103,7 @@ public:
         double yaw = 0, pitch = 0, zoom = 1;
     };
     Orbit orbitAngles() const;
-    // Call when the user has moved the camera, to keep that change in frame().
+    // Call when the user has moved the camera, to keep that change in later framing.
     void rememberUserCamera();
 
     // The original (world) coordinates of the object vertex drawn nearest a

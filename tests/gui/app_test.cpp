@@ -227,6 +227,29 @@ private slots:
         QCOMPARE(w.painter()->orbitAngles().zoom, dollied);
     }
 
+    // Reset View (R) brings back the view a scene opens with at a stage: its
+    // viewpoint and framing, the user's turn and zoom undone (it framed what
+    // the stage shows alone, tighter than the stage at rest is framed).
+    void resetViewReturnsToTheOpeningView()
+    {
+        MainWindow& w = *window_;
+        auto* view = w.findChild<QVTKOpenGLNativeWidget*>("worldView");
+        vtkCamera* camera = view->renderWindow()->GetRenderers()->GetFirstRenderer()->GetActiveCamera();
+        w.stepper()->goToStage(3, false);
+        w.painter()->orbit(30, -15, 1.5); // left behind by opening another scene
+        QVERIFY(w.sceneFiles()->openScene(QString(viewpipe::build::dataDir) + "/scenes/house-corner.json"));
+        w.renderNow();
+        Vec3<double> opened, reset;
+        camera->GetPosition(opened.data());
+        w.painter()->orbit(40, 20, 2);
+        w.renderNow();
+        QTest::keyClick(&w, Qt::Key_R);
+        camera->GetPosition(reset.data());
+        QVERIFY2((opened - reset).norm() < 1e-9 * opened.norm(),
+                 qPrintable(QString("%1 %2 %3 against %4 %5 %6").arg(reset.x()).arg(reset.y()).arg(reset.z())
+                                .arg(opened.x()).arg(opened.y()).arg(opened.z())));
+    }
+
     // A mesh is drawn from one float copy of its vertices where VTK draws them
     // unshifted (from doubles it packs a float copy of its own for each view, and
     // keeps it); from its own doubles, not a copy, where VTK shifts and scales
