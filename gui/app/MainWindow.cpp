@@ -71,7 +71,12 @@ MainWindow::MainWindow(QWidget* parent)
         worldWindow_->Render();
         worldWidget_->update();
     });
-    // The matrices follow the stage at rest; the stage panel follows the stepper itself.
+    // The captions and matrices name the step under way, then the stage at rest; the stage panel
+    // follows the stepper itself.
+    connect(stepper_, &Stepper::stepStarted, this, [this] {
+        updateCaptions();
+        updateMatrices();
+    });
     connect(stepper_, &Stepper::rested, this, &MainWindow::showStageDetails);
     connect(presentMode_, &PresentMode::stepRequested, lessonFlow_, &LessonFlow::advance);
     connect(effectsMenu_, &EffectsMenu::message, this, &MainWindow::showMessage);
@@ -366,7 +371,7 @@ void MainWindow::updateMatrices()
     stagePanel_->setAnswersHidden(waiting);
     if (waiting)
         return matrices_->showWaiting(tr("<i>The matrices follow the answer to the lesson's question.</i>"));
-    const int stage = stepper_->stage();
+    const int stage = stepper_->shownStage();
     matrices_->showStage(document_->pipeline(), stage, lessonFlow_->highlightedEntries(stage));
     matrices_->showTrace(document_->pipeline(), traced_, stage);
 }
@@ -375,7 +380,7 @@ void MainWindow::updateCaptions()
 {
     painter_->setCaptions(lessonFlow_->hidesAnswers()
                               ? std::string()
-                              : stageCaption(*document_->evaluated(), std::size_t(stepper_->stage()), StageText::Caption),
+                              : stageCaption(*document_->evaluated(), std::size_t(stepper_->shownStage()), StageText::Caption),
                           tr("What the camera sees").toStdString());
 }
 
@@ -534,7 +539,7 @@ void MainWindow::traceVertex(const std::optional<Vec3<double>>& point)
 {
     traced_ = point;
     painter_->markTraced(traced_);
-    matrices_->showTrace(document_->pipeline(), traced_, stepper_->stage());
+    matrices_->showTrace(document_->pipeline(), traced_, stepper_->shownStage());
     renderNow();
 }
 

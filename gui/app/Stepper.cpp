@@ -106,6 +106,7 @@ void Stepper::startStep(bool follows)
     const int next = stage_ + (target_ > stage_ ? 1 : -1);
     transition_.emplace(*document_->evaluated(), stage_, next);
     painter_->setMoving(true);
+    emit stepStarted();
     animation_->setDuration(stepMilliseconds_);
     // By the clock: a step that follows another starts when that one was due to
     // end, so the time the stage at rest took on the way (its matrices, both views

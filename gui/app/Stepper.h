@@ -44,6 +44,8 @@ public:
 signals:
     // A transition's frame is on the painter: the world view needs drawing.
     void frameChanged();
+    // A step toward shownStage() begins: captions and matrices name it while it moves.
+    void stepStarted();
     // The picture rests at stage(): captions, matrices and both views follow.
     void rested();
     // The stage, the target or Play changed: the widgets follow.

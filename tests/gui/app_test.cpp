@@ -250,6 +250,25 @@ private slots:
                                 .arg(opened.x()).arg(opened.y()).arg(opened.z())));
     }
 
+    // While a step moves, the caption and the matrices name the stage it moves
+    // to, as the stage list does (they named the stage it left: "the identity
+    // here: nothing moves" over a moving picture).
+    void aMovingStepIsNamedAsItMoves()
+    {
+        MainWindow& w = *window_;
+        w.stepper()->goToStage(3, false);
+        const std::string caption = w.painter()->worldCaption();
+        const QString matrices = w.matrices()->stageText();
+        w.stepper()->goToStage(2, false);
+        QVERIFY(w.painter()->worldCaption() != caption);
+        w.stepper()->goToStage(3);
+        QVERIFY(w.stepper()->isAnimating());
+        QCOMPARE(w.painter()->worldCaption(), caption);
+        QCOMPARE(w.matrices()->stageText(), matrices);
+        waitForRest(w);
+        QCOMPARE(w.painter()->worldCaption(), caption);
+    }
+
     // A mesh is drawn from one float copy of its vertices where VTK draws them
     // unshifted (from doubles it packs a float copy of its own for each view, and
     // keeps it); from its own doubles, not a copy, where VTK shifts and scales
