@@ -718,6 +718,7 @@ SceneLabels placeSceneLabels(const StageShown& stage, const FigureView& view, co
                              const std::vector<Marker>& markers, const LabelMeasure& measure,
                              const std::vector<Box2>& reserved)
 {
+    constexpr double kNamedAcross = 5; // the canonical volume is named once drawn this many label heights across
     std::vector<LabelRequest> requests;
     std::vector<std::size_t> from; // each request's label
     const Box2 picture{Vec2d::Zero(), Vec2d(view.width, view.height)};
@@ -726,6 +727,17 @@ SceneLabels placeSceneLabels(const StageShown& stage, const FigureView& view, co
     auto rank = [](const Label& label) {
         return label.minor ? 3 : label.element == Element::Canonical ? 0 : label.element == Element::Frame ? 2 : 1;
     };
+    // How wide the canonical volume is drawn: the step into S_per starts with it a few pixels across,
+    // where its labels would crowd a dot.
+    const double canonicalAcross = [&] {
+        Eigen::AlignedBox<double, 2> drawn;
+        for (const Primitive& p : stage.scene->primitives)
+            if (p.canonical)
+                for (int k = 0; k < 8; ++k)
+                    if (const auto px = view.pixel(p.bounds.corner(Eigen::AlignedBox<double, 3>::CornerType(k))))
+                        drawn.extend(px->head<2>());
+        return drawn.isEmpty() ? 0.0 : drawn.sizes().maxCoeff();
+    }();
     for (int priority = 0; priority <= 3; ++priority)
         for (std::size_t k = 0; k < labels.size(); ++k) {
             const Label& label = *labels[k];
@@ -735,6 +747,9 @@ SceneLabels placeSceneLabels(const StageShown& stage, const FigureView& view, co
                                            : stage.shows(label.anchor);
             if (!shown)
                 continue;
+            if (label.element == Element::Canonical && canonicalAcross < kNamedAcross * measure(label).y())
+                continue;
+
             auto q = label.fixed ? std::optional<Vec3d>(label.anchor) : projectPoint(stage.cumulative, label.anchor);
             if (label.element == Element::Frame && !label.minor && stage.cumulative.isIdentity(0))
                 continue; // the world's own axes name them

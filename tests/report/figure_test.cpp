@@ -14,6 +14,7 @@
 #include "viewpipe/report/figure.hpp"
 #include "viewpipe/report/style.hpp"
 #include "viewpipe/report/tikz.hpp"
+#include "viewpipe/report/world_view.hpp"
 
 namespace viewpipe {
 namespace {
@@ -297,6 +298,29 @@ SceneLabels crowdedHouseLabels(int width, int height, const std::vector<Box2>& r
     for (const Label* label : labels)
         minor.push_back(label->minor);
     return placeSceneLabels(stage, view, labels, {}, big, reserved);
+}
+
+// The canonical volume is named once it is drawn large enough to name: not as the step into S_per
+// starts, with the volume a few pixels across (its labels crowded it and everything near, fanned out
+// on leaders), and at rest at S_per.
+TEST(Figure, TheCanonicalVolumeIsNamedOnceDrawnLargeEnough)
+{
+    const auto scene = evaluateScene(loadScene(fs::path(viewpipe::build::dataDir) / "scenes/house.json"));
+    std::vector<const Label*> labels;
+    for (const Label& label : scene->labels)
+        labels.push_back(&label);
+    auto measure = [](const Label& label) { return Vec2<double>(0.6 * 20 * double(label.text.size()), 20); };
+    auto canonicalNamed = [&](const WorldMoment& moment) {
+        const StageShown stage(*scene, moment.drawn, moment.canonicalOpacity);
+        const SceneLabels placed = placeSceneLabels(stage, viewOf(stage), labels, {}, measure, {});
+        return std::count_if(placed.placed.begin(), placed.placed.end(),
+                             [](const auto& label) { return label && label->element == Element::Canonical; });
+    };
+    const int last = int(scene->pipeline.stages.size());
+    const WorldMoment starting = StageMotion(*scene, last - 1, last).at(0.4);
+    ASSERT_GT(starting.canonicalOpacity, 0) << "drawn, faintly";
+    EXPECT_EQ(canonicalNamed(starting), 0);
+    EXPECT_GE(canonicalNamed(stageAtRest(*scene, last)), 4);
 }
 
 // Labels that find no room are counted in a corner note, which no label covers; none is led across a reserved box.

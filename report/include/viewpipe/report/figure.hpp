@@ -215,7 +215,8 @@ int labelOverlaps(const std::vector<PlacedLabel>& labels);
 // left out first. When any is left out, a notice in the bottom right
 // corner says how many ("left out for room: 2 labels, 5 tick numbers"; in a
 // view too narrow for that, "left out: 2 labels, 5 ticks"), set as a tick
-// number.
+// number. The canonical volume is named once it is drawn at least five of
+// its labels' heights across (the step into S_per starts with it a dot).
 struct SceneLabels {
     std::vector<std::optional<PlacedLabel>> placed; // each label's, in the order given; none where left out
     std::optional<PlacedLabel> leftOut;
