@@ -467,19 +467,32 @@ void ParameterPanel::refuse(const QString& edited, const QString& field, const Q
     clearErrors();
     QString key = field;
     key.remove(QRegularExpression("\\[\\d+\\]$"));
+    const QString text = reasonText(key, reason);
     QLabel* label = errors_.value(key);
     if (label) {
-        label->setText(reason);
+        label->setText(text);
         label->show();
     } else {
-        generalError_->setText(field + ": " + reason);
+        generalError_->setText(text.startsWith(labels_.value(key, field)) ? text : field + ": " + text);
         generalError_->show();
     }
     if (QLabel* beside = errors_.value(edited); beside && beside != label) {
-        beside->setText(labels_.value(key, field) + ": " + reason);
+        beside->setText(text.startsWith(labels_.value(key, field)) ? text : labels_.value(key, field) + ": " + text);
         beside->show();
     }
     refused_ = edited.isEmpty() ? key : edited;
+}
+
+QString ParameterPanel::reasonText(const QString& field, const QString& reason) const
+{
+    QString text = reason;
+    QStringList paths = labels_.keys();
+    std::sort(paths.begin(), paths.end(), [](const QString& a, const QString& b) { return a.size() > b.size(); });
+    for (const QString& path : paths) // whole paths only: "view.vp" is no part of "view.vpn"
+        text.replace(QRegularExpression("(?<![\\w.])" + QRegularExpression::escape(path) + "(?![\\w])"), labels_.value(path));
+    if (!text.isEmpty() && text.front().isLower())
+        text = labels_.value(field, field) + " " + text;
+    return text;
 }
 
 void ParameterPanel::clearErrors()

@@ -58,6 +58,9 @@ private:
     void emitEdit(const CameraSpec<double>& candidate, const QString& field);
     // The reason goes beside `field`, and beside `edited` when the core names another field.
     void refuse(const QString& edited, const QString& field, const QString& reason);
+    // A reason of the core as the panel says it: fields named by their labels ("VPN", not
+    // "view.vpn"), and a reason that goes on from its field's name ("is parallel to …") given it.
+    QString reasonText(const QString& field, const QString& reason) const;
     // The text of the value a box stands for in camera_.
     QString valueText(QLineEdit* box);
     // Escape: whether the box shows other text than its value, or a refusal, and putting the value back.
