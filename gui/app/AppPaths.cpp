@@ -33,7 +33,7 @@ QString dialogPath(const QString& name)
     QString folder = QSettings().value(kDialogFolderKey).toString();
     if (folder.isEmpty() || !QDir(folder).exists())
         folder = QStandardPaths::writableLocation(QStandardPaths::DocumentsLocation);
-    if (folder.isEmpty())
+    if (folder.isEmpty() || !QDir(folder).exists()) // Qt's dialog takes a missing folder for a file's name
         folder = QDir::homePath();
     return name.isEmpty() ? folder : QDir(folder).filePath(name);
 }
