@@ -6,24 +6,18 @@
 // projected view shows it. Run under Xvfb:
 //   bare_vtk_open [MESH.ply]
 
-#include <vtkActor.h>
 #include <vtkCamera.h>
-#include <vtkNew.h>
-#include <vtkPLYReader.h>
-#include <vtkPolyData.h>
-#include <vtkProperty.h>
 #include <vtkRenderWindow.h>
 #include <vtkRenderer.h>
-#include <vtkSmartPointer.h>
 
 #include <cmath>
 #include <iostream>
 #include <string>
+#include <variant>
 
+#include "bare_vtk.h"
 #include "build_paths.h"
 #include "painter/ScenePainter.h"
-#include "painter/VtkGeometry.h"
-#include "viewpipe/evaluated_scene.hpp"
 #include "viewpipe/report/world_view.hpp"
 #include "viewpipe/scene.hpp"
 
@@ -34,13 +28,11 @@ int main(int argc, char** argv)
         std::cerr << "usage: bare_vtk_open [MESH.ply]\n";
         return 2;
     }
-    const auto house = evaluateScene(loadScene(std::string(build::dataDir) + "/scenes/house.json"));
+    const Scene scene = loadScene(std::string(build::dataDir) + "/scenes/house.json");
+    const auto house = evaluateScene(scene);
     vtkSmartPointer<vtkPolyData> mesh;
     if (argc == 2) {
-        vtkNew<vtkPLYReader> reader;
-        reader->SetFileName(argv[1]);
-        reader->Update();
-        mesh = reader->GetOutput();
+        mesh = bench::readWithVtk(argv[1]);
         if (mesh->GetNumberOfPolys() == 0) {
             std::cerr << "bare_vtk_open: no faces read from " << argv[1] << "\n";
             return 2;
@@ -51,11 +43,8 @@ int main(int argc, char** argv)
     vtkSmartPointer<vtkRenderWindow> windows[2];
     for (int view = 0; view < 2; ++view) {
         vtkNew<vtkRenderer> renderer;
-        for (const Primitive& p : house->primitives) {
-            vtkSmartPointer<vtkActor> actor = gui::unlitActor(gui::primitiveData(p));
-            actor->GetProperty()->SetOpacity(p.opacity);
+        for (const auto& actor : bench::primitiveActors(*house))
             renderer->AddActor(actor);
-        }
         if (mesh) {
             vtkSmartPointer<vtkActor> actor = gui::unlitActor(mesh);
             actor->GetProperty()->SetOpacity(0.35);
@@ -65,12 +54,14 @@ int main(int argc, char** argv)
             WorldCamera camera;
             frameOn(camera, stageFraming(*house, 0), ViewFit{widths[view], height, {}, 1, Vec3<double>::Zero()});
             gui::setVtkCamera(renderer->GetActiveCamera(), camera);
-        } else { // the house's view (VRC is world): from its PRP at its window, [-50, 50] across
+        } else { // from the PRP at the window's center, the window's width across (the house's VRC is world)
+            const auto& spec = std::get<foley::ViewSpec<double>>(scene.camera);
+            const Vec3<double> prp = spec.prp;
             vtkCamera* camera = renderer->GetActiveCamera();
-            camera->SetPosition(8, 6, 84);
-            camera->SetFocalPoint(8, 6, 0);
+            camera->SetPosition(prp.data());
+            camera->SetFocalPoint(prp.x(), prp.y(), 0);
             camera->UseHorizontalViewAngleOn();
-            camera->SetViewAngle(2 * std::atan(50.0 / 84) * 180 / 3.14159265358979);
+            camera->SetViewAngle(2 * std::atan(0.5 * (spec.window.umax - spec.window.umin) / prp.z()) * 180 / M_PI);
             renderer->ResetCameraClippingRange();
         }
         windows[view] = vtkSmartPointer<vtkRenderWindow>::New();

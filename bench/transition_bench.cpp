@@ -13,9 +13,7 @@
 #include <vtkCamera.h>
 #include <vtkMatrix4x4.h>
 #include <vtkNew.h>
-#include <vtkPLYReader.h>
 #include <vtkPolyData.h>
-#include <vtkPolyDataMapper.h>
 #include <vtkProperty.h>
 #include <vtkRenderWindow.h>
 #include <vtkRenderer.h>
@@ -28,6 +26,7 @@
 #include <optional>
 #include <thread>
 
+#include "bare_vtk.h"
 #include "build_paths.h"
 #include "faces_drawn.h"
 #include "sheet_mesh.h"
@@ -194,17 +193,9 @@ void bareVtkFrame(benchmark::State& state, const std::string& name)
     }
 
     Window w;
-    std::vector<vtkSmartPointer<vtkActor>> actors;
-    for (const Primitive& p : app.scene->primitives) {
-        vtkNew<vtkPolyDataMapper> mapper;
-        mapper->SetInputData(gui::primitiveData(p));
-        auto actor = vtkSmartPointer<vtkActor>::New();
-        actor->SetMapper(mapper);
-        actor->GetProperty()->LightingOff();
-        actor->GetProperty()->SetOpacity(p.opacity);
+    const std::vector<vtkSmartPointer<vtkActor>> actors = bench::primitiveActors(*app.scene);
+    for (const auto& actor : actors)
         w.renderer->AddActor(actor);
-        actors.push_back(actor);
-    }
     std::size_t frame = 0;
     for (auto _ : state) {
         const Shot& shot = *shots[frame++ % shots.size()];
@@ -264,21 +255,12 @@ void readScene(benchmark::State& state, const std::string& name)
         benchmark::DoNotOptimize(evaluateScene(scene)->meshes.size());
 }
 
-// A PLY file as VTK's own reader reads it.
-vtkSmartPointer<vtkPolyData> readWithVtk(const std::string& file)
-{
-    vtkNew<vtkPLYReader> reader;
-    reader->SetFileName(file.c_str());
-    reader->Update();
-    return reader->GetOutput();
-}
-
 // VTK's own reader on the scene's mesh file.
 void vtkReaderOpen(benchmark::State& state, const std::string&)
 {
     const std::string file = millionTriangleMesh().string();
     for (auto _ : state)
-        benchmark::DoNotOptimize(readWithVtk(file)->GetNumberOfPolys());
+        benchmark::DoNotOptimize(bench::readWithVtk(file)->GetNumberOfPolys());
 }
 
 // What a bare VTK viewer does to open the file, for a like-for-like ratio with Open/app: VTK's
@@ -293,7 +275,7 @@ void vtkReaderOpenAndDraw(benchmark::State& state, const std::string&)
         w.renderer->AddActor(gui::unlitActor(gui::primitiveData(p)));
     w.window->Render();
     for (auto _ : state) {
-        vtkSmartPointer<vtkActor> actor = gui::unlitActor(readWithVtk(file));
+        vtkSmartPointer<vtkActor> actor = gui::unlitActor(bench::readWithVtk(file));
         actor->GetProperty()->SetOpacity(0.35);
         w.renderer->AddActor(actor);
         w.renderer->ResetCamera();

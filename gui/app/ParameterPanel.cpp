@@ -468,16 +468,19 @@ void ParameterPanel::refuse(const QString& edited, const QString& field, const Q
     QString key = field;
     key.remove(QRegularExpression("\\[\\d+\\]$"));
     const QString text = reasonText(key, reason);
+    // Away from its field the reason says which it is about.
+    const QString name = labels_.value(key, field);
+    const QString named = text.startsWith(name) ? text : name + ": " + text;
     QLabel* label = errors_.value(key);
     if (label) {
         label->setText(text);
         label->show();
     } else {
-        generalError_->setText(text.startsWith(labels_.value(key, field)) ? text : field + ": " + text);
+        generalError_->setText(named);
         generalError_->show();
     }
     if (QLabel* beside = errors_.value(edited); beside && beside != label) {
-        beside->setText(text.startsWith(labels_.value(key, field)) ? text : labels_.value(key, field) + ": " + text);
+        beside->setText(named);
         beside->show();
     }
     refused_ = edited.isEmpty() ? key : edited;

@@ -732,7 +732,7 @@ SceneLabels placeSceneLabels(const StageShown& stage, const FigureView& view, co
     const double canonicalAcross = [&] {
         Eigen::AlignedBox<double, 2> drawn;
         for (const Primitive& p : stage.scene->primitives)
-            if (p.canonical)
+            if (p.canonical && stage.draws(p))
                 for (int k = 0; k < 8; ++k)
                     if (const auto px = view.pixel(p.bounds.corner(Eigen::AlignedBox<double, 3>::CornerType(k))))
                         drawn.extend(px->head<2>());
