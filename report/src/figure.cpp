@@ -93,6 +93,19 @@ bool segmentCrossesBox(const Segment2& s, const Box2& box)
     return t0 <= t1;
 }
 
+// The whole line through a segment's two points passes through the box: its corners are not all on one side.
+bool lineCrossesBox(const Segment2& line, const Box2& box)
+{
+    const Vec2d d = line[1] - line[0];
+    int below = 0, above = 0;
+    for (const Vec2d& corner : {box.min, box.max, Vec2d(box.min.x(), box.max.y()), Vec2d(box.max.x(), box.min.y())}) {
+        const double side = d.x() * (corner.y() - line[0].y()) - d.y() * (corner.x() - line[0].x());
+        below += side <= 0;
+        above += side >= 0;
+    }
+    return below > 0 && above > 0;
+}
+
 // Two segments cross at a point more than `margin` pixels from each one's ends
 // (leaders from one anchor, or meeting end to end, do not cross).
 bool segmentsCross(const Segment2& a, const Segment2& b, double margin)
@@ -475,6 +488,7 @@ std::vector<std::optional<PlacedLabel>> placeLabels(const std::vector<LabelReque
     // Beside other text, at least this share of a label's height: a space for names; for tick numbers
     // two (numbers have no letters' shapes to part them: "200" and "150" a space apart read "200150").
     constexpr double kWordSpace = 0.3, kNumberSpace = 0.6;
+    constexpr double kAxisClearance = 2; // pixels between a tick number and its axis, drawn 2 wide
     const Box2 picture{Vec2d::Constant(kPadding), Vec2d(width - kPadding, height - kPadding)};
     // Directions to try, the customary up-right first.
     const std::array<Vec2d, 8> directions = {{{1, -1}, {1, 0}, {1, 1}, {0, -1}, {-1, -1}, {-1, 0}, {-1, 1}, {0, 1}}};
@@ -517,8 +531,8 @@ std::vector<std::optional<PlacedLabel>> placeLabels(const std::vector<LabelReque
     retake();
     // Free: inside the picture, off every box taken and every leader drawn;
     // with a leader to `anchor`, that leader crosses no box taken and no
-    // leader drawn either.
-    auto free = [&](const Box2& box, const std::optional<Vec2d>& anchor, bool number) {
+    // leader drawn either; a tick number off its own axis.
+    auto free = [&](const Box2& box, const std::optional<Vec2d>& anchor, bool number, const std::optional<Segment2>& ownAxis) {
         if (!picture.contains(box))
             return false;
         const Vec2d space(std::max(0.0, (number ? kNumberSpace : kWordSpace) * (box.max.y() - box.min.y()) - kPadding), 0);
@@ -541,7 +555,7 @@ std::vector<std::optional<PlacedLabel>> placeLabels(const std::vector<LabelReque
         for (const Segment2& line : leaders)
             if (segmentCrossesBox(line, clear))
                 return false;
-        return true;
+        return !ownAxis || !lineCrossesBox(*ownAxis, box.grown(kAxisClearance));
     };
 
     // Leaders pointing away from the labels' middle fan out and seldom cross one another.
@@ -559,13 +573,15 @@ std::vector<std::optional<PlacedLabel>> placeLabels(const std::vector<LabelReque
     auto search = [&](std::size_t k, bool anywhere) -> std::optional<PlacedLabel> {
         const LabelRequest& r = requests[k];
         const Vec2d outward = (r.anchor - middle).norm() > 1 ? Vec2d((r.anchor - middle).normalized()) : Vec2d::Zero();
+        const std::optional<Segment2> ownAxis =
+            r.axis.isZero() ? std::nullopt : std::optional<Segment2>(Segment2{r.anchor, r.anchor + r.axis});
         std::optional<Box2> best;
         double bestCost = 0;
         bool bestLeader = false;
         auto consider = [&](const Box2& box, double penalty, bool leader) {
             if (best && penalty >= bestCost)
                 return; // its cost is never below its penalty: it cannot do better
-            if (!free(box, leader ? std::optional<Vec2d>(r.anchor) : std::nullopt, r.minor))
+            if (!free(box, leader ? std::optional<Vec2d>(r.anchor) : std::nullopt, r.minor, ownAxis))
                 return;
             const double c = cost(box) + penalty;
             if (!best || c < bestCost) {
@@ -762,7 +778,11 @@ SceneLabels placeSceneLabels(const StageShown& stage, const FigureView& view, co
             const auto px = q ? view.pixel(*q) : std::nullopt;
             if (!px || !picture.contains(Box2{px->head<2>(), px->head<2>()}))
                 continue;
-            requests.push_back({label.element, label.text, px->head<2>(), measure(label), label.minor});
+            Vec2d axis = Vec2d::Zero();
+            if (label.element == Element::Frame && label.minor) // a tick number, on its axis through the origin
+                if (const auto further = view.pixel(1.1 * label.anchor))
+                    axis = further->head<2>() - px->head<2>();
+            requests.push_back({label.element, label.text, px->head<2>(), measure(label), label.minor, axis});
             from.push_back(k);
         }
     LabelObstacles obstacles = labelObstacles(stage, view, markers);

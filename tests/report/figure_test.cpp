@@ -421,6 +421,52 @@ TEST(Figure, EveryBuiltInSceneAtEveryStageHasNoOverlappingLabels)
     EXPECT_GT(labels, 8u * std::size_t(figures));
 }
 
+// A tick number keeps off its own axis: the axis running into "100" reads "−100" (found at the
+// house's world stage, where +100 on z sat on the axis). Every built-in scene, every stage, at the
+// app's world view's shape as well.
+TEST(Figure, TickNumbersKeepOffTheirAxis)
+{
+    int ticks = 0;
+    for (const auto& entry : fs::recursive_directory_iterator(fs::path(viewpipe::build::dataDir) / "scenes")) {
+        if (entry.path().extension() != ".json")
+            continue;
+        const auto scene = evaluateScene(loadScene(entry.path()));
+        const auto& stages = scene->pipeline.stages;
+        for (std::size_t k = 0; k <= stages.size(); ++k)
+            for (const Vec2<int>& size : {Vec2<int>(1280, 720), Vec2<int>(490, 905)}) {
+                SCOPED_TRACE(entry.path().filename().string() + " stage " + std::to_string(k) + " at " +
+                             std::to_string(size.x()) + "x" + std::to_string(size.y()));
+                const StageShown stage(*scene, drawnAt(stages, double(k)), k == stages.size() ? 1 : 0);
+                FigureView view = viewOf(stage);
+                view.width = size.x();
+                view.height = size.y();
+                std::vector<Segment2> axes; // each frame axis as drawn
+                for (int axis = 0; axis < 3; ++axis) {
+                    const auto a = view.pixel(-view.frameReach * Vec3<double>::Unit(axis)),
+                               b = view.pixel(view.frameReach * Vec3<double>::Unit(axis));
+                    if (a && b)
+                        axes.push_back({a->head<2>(), b->head<2>()});
+                }
+                for (const PlacedLabel& label : drawFigure(stage, view, measure, {}).labels) {
+                    if (!label.minor)
+                        continue;
+                    ++ticks;
+                    for (const Segment2& axis : axes) {
+                        const Vec2<double> d = axis[1] - axis[0];
+                        const Vec2<double> q = label.anchor - axis[0];
+                        if (std::abs(d.x() * q.y() - d.y() * q.x()) / d.norm() > 0.5)
+                            continue; // the anchor is not on this axis
+                        for (double t = 0; t <= 1; t += 1e-4) {
+                            const Vec2<double> p = axis[0] + t * d;
+                            ASSERT_FALSE(label.box.contains(Box2{p, p})) << label.text << " crossed by its axis at " << p.transpose();
+                        }
+                    }
+                }
+            }
+    }
+    EXPECT_GT(ticks, 500) << "tick numbers are still drawn";
+}
+
 // The house at the world stage: a label's anchor is where the camera sees its point.
 TEST(Figure, LabelsAnchorWhereTheirPointsAreSeen)
 {
