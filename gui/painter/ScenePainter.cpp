@@ -593,7 +593,7 @@ void ScenePainter::fitClippingRange()
 void ScenePainter::rememberUserCamera()
 {
     const WorldCamera camera = this->camera();
-    userZoom_ = camera.distance() / fitDistance(camera, framed_.radius, viewFit());
+    userZoom_ = camera.distance() / fitDistance(camera, framed_, viewFit());
     userPan_ = (camera.focalPoint - framed_.center) / framed_.radius;
 }
 

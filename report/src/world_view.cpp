@@ -18,58 +18,74 @@ constexpr int kSweepSamples = 8; // positions sampled to frame a rotation's swee
 
 constexpr double kPi = 3.14159265358979323846;
 
-// Extends `box` with the primitive through `m`; false (and `box` unchanged)
-// when a point of it has no image. Points on the eye's side of `cut` do not count.
-bool extendThrough(Eigen::AlignedBox<double, 3>& box, const Primitive& primitive, const Mat4<double>& m,
+// The camera stands where it sees this share of the framing's sphere whole (the sphere overstates what
+// most directions see); the points beyond it are fitted one by one.
+constexpr double kSphereSeen = 0.95;
+// Those points at most this share of the way from the scene area's center to its edge: a marker there is drawn whole.
+constexpr double kEdgeRoom = 0.95;
+
+// Appends the primitive's points through `m` (a large one's by its box's corners); none when a
+// point of it has no image. Points on the eye's side of `cut` do not count.
+void appendThrough(std::vector<Vec3<double>>& framed, const Primitive& primitive, const Mat4<double>& m,
                    const std::optional<Vec4<double>>& cut)
 {
-    Eigen::AlignedBox<double, 3> through;
+    const std::size_t before = framed.size();
     auto add = [&](const Vec3<double>& p) {
         if (cut && cut->dot(p.homogeneous()) < 0)
             return true;
         const std::optional<Vec3<double>> q = projectPoint(m, p);
         if (q)
-            through.extend(*q);
+            framed.push_back(*q);
         return q.has_value();
     };
     const std::vector<Vec3<double>>& points =
         primitive.kind == PrimitiveKind::Lines ? primitive.segments : primitive.faces->vertices;
+    bool seen = true;
     if (points.size() > kExactFraming) {
-        if (primitive.bounds.isEmpty())
-            return false;
-        for (int k = 0; k < 8; ++k)
-            if (!add(primitive.bounds.corner(Eigen::AlignedBox<double, 3>::CornerType(k))))
-                return false;
+        seen = !primitive.bounds.isEmpty();
+        for (int k = 0; k < 8 && seen; ++k)
+            seen = add(primitive.bounds.corner(Eigen::AlignedBox<double, 3>::CornerType(k)));
     } else {
-        for (const Vec3<double>& p : points)
-            if (!add(p))
-                return false;
+        for (std::size_t k = 0; k < points.size() && seen; ++k)
+            seen = add(points[k]);
     }
-    box.extend(through);
-    return true;
+    if (!seen)
+        framed.resize(before);
 }
 
 Framing blend(const Framing& a, const Framing& b, double u)
 {
-    return {a.center + u * (b.center - a.center), a.radius + u * (b.radius - a.radius)};
+    Framing blended{a.center + u * (b.center - a.center), a.radius + u * (b.radius - a.radius), {}};
+    for (const Framing::Outermost& p : a.outermost)
+        blended.outermost.push_back({p.point, (1 - u) * p.weight});
+    for (const Framing::Outermost& p : b.outermost)
+        blended.outermost.push_back({p.point, u * p.weight});
+    return blended;
 }
 
 } // namespace
 
 Framing framingOf(const EvaluatedScene& scene, const std::vector<Mat4<double>>& cumulatives, bool withCanonical)
 {
-    Eigen::AlignedBox<double, 3> box;
+    std::vector<Vec3<double>> framed;
     for (const Primitive& primitive : scene.primitives) {
         const bool canonical = primitive.canonical;
         if (canonical && !withCanonical)
             continue;
         for (const Mat4<double>& m : cumulatives)
-            extendThrough(box, primitive, canonical ? Mat4<double>::Identity() : m,
+            appendThrough(framed, primitive, canonical ? Mat4<double>::Identity() : m,
                           !canonical && isProjective(m) ? scene.nearCut : std::nullopt);
     }
-    if (box.isEmpty())
+    if (framed.empty())
         return {};
-    return {box.center(), std::max(1e-9, 0.5 * box.diagonal().norm())};
+    Eigen::AlignedBox<double, 3> box;
+    for (const Vec3<double>& p : framed)
+        box.extend(p);
+    Framing framing{box.center(), std::max(1e-9, 0.5 * box.diagonal().norm()), {}};
+    for (const Vec3<double>& p : framed)
+        if ((p - framing.center).norm() > kSphereSeen * framing.radius)
+            framing.outermost.push_back({p, 1});
+    return framing;
 }
 
 Framing stageFraming(const EvaluatedScene& scene, int stage)
@@ -195,26 +211,36 @@ Mat4<double> WorldCamera::projection(double aspect) const
     return m;
 }
 
-double fitDistance(const WorldCamera& camera, double radius, const ViewFit& fit)
+double fitDistance(const WorldCamera& camera, const Framing& framing, const ViewFit& fit)
 {
-    // Fit the bounding sphere in the narrower of the two view angles of the
-    // scene area (where the picture's text leaves room); the sphere
-    // overstates what most directions see, so come a little closer.
-    const double halfVertical = camera.viewAngle * kPi / 360;
-    if (fit.sceneArea.isEmpty() || fit.height <= 0) {
-        const double aspect = fit.height > 0 ? double(fit.width) / fit.height : 1;
-        const double half = std::min(halfVertical, std::atan(std::tan(halfVertical) * aspect));
-        return 0.95 * radius / std::sin(half);
+    // The tangents of the scene area's half angles (where the picture's text leaves room), across and up.
+    const double tangent = std::tan(camera.viewAngle * kPi / 360);
+    const bool whole = fit.sceneArea.isEmpty() || fit.height <= 0;
+    const Vec2<double> extent = whole ? Vec2<double>(fit.height > 0 ? double(fit.width) / fit.height : 1, 1)
+                                      : Vec2<double>((fit.sceneArea.max - fit.sceneArea.min) / fit.height);
+    const Vec2<double> half = tangent * extent;
+    // Most of the framing's sphere seen whole from any direction, in the narrower of the two angles;
+    double distance = kSphereSeen * framing.radius / std::sin(std::atan(half.minCoeff()));
+    // the points beyond it, each in the picture from this direction (a point's weight scales how far it
+    // moves the camera back, so that a step's framings blend without a jump).
+    const Vec3<double> ahead = camera.direction();
+    const Vec3<double> across = camera.viewUp.cross(-ahead).normalized(), up = -ahead.cross(across);
+    if (!across.allFinite())
+        return distance; // no up for the picture (the view up along the direction): the sphere alone
+    for (const Framing::Outermost& p : framing.outermost) {
+        const Vec3<double> offset = p.point - framing.center;
+        const double depth = offset.dot(ahead);
+        const double needed =
+            std::max(std::abs(offset.dot(across)) / half.x(), std::abs(offset.dot(up)) / half.y()) / kEdgeRoom - depth;
+        distance = std::max(distance, p.weight * needed);
     }
-    const Vec2<double> extent = fit.sceneArea.max - fit.sceneArea.min;
-    const double half = std::atan(std::tan(halfVertical) * extent.minCoeff() / fit.height);
-    return 0.95 * radius / std::sin(half);
+    return distance;
 }
 
 void frameOn(WorldCamera& camera, const Framing& framing, const ViewFit& fit)
 {
     const Vec3<double> direction = camera.direction();
-    const double distance = fit.zoom * fitDistance(camera, framing.radius, fit);
+    const double distance = fit.zoom * fitDistance(camera, framing, fit);
     camera.focalPoint = framing.center + fit.pan * framing.radius;
     camera.position = camera.focalPoint - direction * distance;
     // The focal point at the scene area's center (VTK's window center is the view's center's opposite).

@@ -109,6 +109,49 @@ TEST(WorldView, AFramingHoldsEveryElementOfItsStage)
     }
 }
 
+// Every point a stage frames is in the picture's free area, from any direction the user turns the
+// view to: the PRP far out in a corner of everything was drawn half outside the app's world view,
+// its label left out, when the camera stood as far as a sphere a little smaller than everything.
+TEST(WorldView, EveryFramedPointIsInThePictureFromAnyDirection)
+{
+    const std::vector<ViewFit> fits = {ViewFit{1280, 720, {{25, 100}, {800, 700}}}, ViewFit{490, 905, {}}};
+    const std::vector<Vec3<double>> directions = {WorldCamera{}.position, {1, 0, 0}, {0.2, 1, 0.1}, {-1, 0.5, -1}, {0.3, -1, 0.6}};
+    int points = 0;
+    for (const auto& entry : fs::recursive_directory_iterator(fs::path(viewpipe::build::dataDir) / "scenes")) {
+        if (entry.path().extension() != ".json")
+            continue;
+        const auto scene = evaluateScene(loadScene(entry.path()));
+        for (int k = 0; k <= int(scene->pipeline.stages.size()); ++k) {
+            const WorldMoment moment = stageAtRest(*scene, k);
+            const StageShown shown(*scene, moment.drawn, moment.canonicalOpacity);
+            for (const ViewFit& fit : fits)
+                for (const Vec3<double>& direction : directions) {
+                    SCOPED_TRACE(entry.path().filename().string() + " stage " + std::to_string(k) + " at " +
+                                 std::to_string(fit.width) + "x" + std::to_string(fit.height));
+                    WorldCamera camera;
+                    camera.position = direction;
+                    frameOn(camera, moment.framing, fit);
+                    const Box2 area = fit.sceneArea.isEmpty() ? Box2{Vec2<double>::Zero(), Vec2<double>(fit.width, fit.height)}
+                                                              : fit.sceneArea;
+                    for (const Primitive& p : scene->primitives) {
+                        if (!shown.draws(p) || (p.kind == PrimitiveKind::Faces && p.faces->vertices.size() > 20000))
+                            continue;
+                        for (const Vec3<double>& world : p.kind == PrimitiveKind::Lines ? p.segments : p.faces->vertices) {
+                            const auto q = projectPoint(shown.matrixOf(p), world);
+                            if (!q || !shown.shows(world))
+                                continue;
+                            const Vec2<double> px = pixelOf(camera, fit, *q);
+                            ++points;
+                            ASSERT_TRUE(area.grown(0.5).contains(Box2{px, px}))
+                                << world.transpose() << " drawn at " << px.transpose() << ", direction " << direction.transpose();
+                        }
+                    }
+                }
+        }
+    }
+    EXPECT_GT(points, 10000);
+}
+
 TEST(WorldView, AStepStartsAndEndsAtTheStagesAtRestAndNeverJumps)
 {
     for (const std::string name : {"house.json", "house-oblique-view.json", "opengl-perspective.json", "clipping-eye-plane.json"}) {

@@ -13,10 +13,20 @@
 
 namespace viewpipe {
 
-// Where the world view's camera looks and how much it must see.
+// Where the world view's camera looks and how much it must see: a sphere
+// about everything framed, and the points near its surface, which a camera
+// fitted a little closer than the sphere (most directions see less of it)
+// could leave out.
 struct Framing {
+    // A point of the framing's outermost, and how much it counts (1; less while a step's framing
+    // blends into the next one's, whose points count more and more).
+    struct Outermost {
+        Vec3<double> point;
+        double weight = 1;
+    };
     Vec3<double> center = Vec3<double>::Zero();
     double radius = 1;
+    std::vector<Outermost> outermost;
 };
 
 // What framing shows every element as it would be through `cumulatives` (the
@@ -95,8 +105,8 @@ struct ViewFit {
     double zoom = 1;
     Vec3<double> pan = Vec3<double>::Zero(); // in framing radii
 };
-// How far the camera must stand from a framing of this radius to see all of it in the scene area.
-double fitDistance(const WorldCamera& camera, double radius, const ViewFit& fit);
+// How far the camera, looking at the framing's center, must stand to see all of it in the scene area.
+double fitDistance(const WorldCamera& camera, const Framing& framing, const ViewFit& fit);
 // Aims the camera at a framing, keeping its direction and the user's zoom and
 // pan, with the focal point at the scene area's center; fits the clipping range.
 void frameOn(WorldCamera& camera, const Framing& framing, const ViewFit& fit);
