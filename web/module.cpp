@@ -62,6 +62,7 @@ Outcome putFile(const std::string& path, const std::string& bytes)
     return guarded([&] {
         const std::filesystem::path file = (kSceneFolder / path).lexically_normal();
         std::filesystem::create_directories(file.parent_path());
+        std::filesystem::create_directories(kSceneFolder); // a path out of it (../meshes/f.obj) goes through it
         std::ofstream out(file, std::ios::binary | std::ios::trunc);
         if (!(out << bytes) || !out.flush())
             throw std::runtime_error("cannot keep " + path);

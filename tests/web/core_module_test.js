@@ -105,7 +105,11 @@ require(path.resolve(modulePath))().then((core) => {
     check(`the pipeline of ${path.relative(dataDir, file)}`, () => {
       const expected = cli(file);
       assert.strictEqual(expected.status, 0, expected.stderr);
-      const got = pipeline({ text: fs.readFileSync(file, 'utf8') });
+      const text = fs.readFileSync(file, 'utf8');
+      const files = {}; // its meshes, where the scene names them, as the page puts the files opened with it
+      for (const object of JSON.parse(text).objects || [])
+        if (object.type === 'mesh') files[object.path] = fs.readFileSync(path.resolve(path.dirname(file), object.path));
+      const got = pipeline({ text, files });
       assert.strictEqual(got.error, '');
       if (got.text + '\n' === expected.stdout) return;
       const differing = sameJson(JSON.parse(got.text), JSON.parse(expected.stdout));

@@ -663,6 +663,15 @@ TEST_F(WebPage, OpensAndDropsScenesAndMeshesReadByTheCore)
     EXPECT_EQ(browser.evaluate(json).get<std::string>() + "\n", expected.output);
     EXPECT_EQ(worldView(browser), tetrahedron);
     EXPECT_EQ(browser.evaluate("document.querySelectorAll('#stage-list li').length"), 6) << "the page still answers";
+
+    // A scene naming its mesh in another folder (../meshes/letter-f.obj), picked with the mesh: the
+    // mesh goes where the scene looks for it.
+    const std::string letterF = viewpipe({"pipeline", QString::fromStdString(kData + "/scenes/letter-f.json"), "--json"}).output;
+    browser.page("DOM.setFileInputFiles", {{"nodeId", picker},
+                                           {"files", {kData + "/scenes/letter-f.json", kData + "/meshes/letter-f.obj"}}});
+    ASSERT_TRUE(browser.waitFor(json + " + '\\n' === " + nlohmann::json(letterF).dump()))
+        << browser.evaluate("document.getElementById('scene-error').textContent");
+    EXPECT_TRUE(browser.evaluate("document.getElementById('scene-error').hidden").get<bool>());
     for (const std::string& problem : browser.problems())
         ADD_FAILURE() << problem;
 }
