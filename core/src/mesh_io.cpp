@@ -21,6 +21,19 @@
 namespace viewpipe {
 namespace {
 
+// The stop asked for on this thread (MeshReadingStop), if any: looked at every kStopLook lines,
+// elements or facets parsed and every 64 kB read, which keeps the looking out of the readers' time.
+thread_local const std::atomic<bool>* askedToStop = nullptr;
+constexpr std::uint64_t kStopLook = 1 << 14;
+
+struct Stopped {};
+
+void stopIfAsked(std::uint64_t count)
+{
+    if (count % kStopLook == 0 && askedToStop && askedToStop->load(std::memory_order_relaxed))
+        throw Stopped{};
+}
+
 // Caps that keep a hostile or absurd file from exhausting memory.
 constexpr std::size_t kMaxVertices = 50'000'000;
 constexpr std::size_t kMaxFaces = 50'000'000;
@@ -159,6 +172,7 @@ private:
 template <class Visit> void forEachLine(std::string_view text, Visit&& visit)
 {
     for (std::size_t number = 1; !text.empty(); ++number) {
+        stopIfAsked(number - 1);
         const std::size_t end = text.find('\n');
         const std::string_view line = text.substr(0, end);
         visit(line.substr(0, line.find('#')), number);
@@ -567,6 +581,7 @@ template <class Source> PolygonMesh readPlyData(Source& source, const PlyHeader&
         std::vector<int> face; // the face being read (one buffer for all)
         try {
             for (; i < element.count; ++i) {
+                stopIfAsked(i);
                 auto fail = [&](const std::string& reason) {
                     const bool known = element.name == "vertex" || element.name == "face";
                     throw InputError(field, source.where() + (known ? element.name : "element " + quotedWord(element.name)) +
@@ -691,6 +706,7 @@ PolygonMesh parseBinaryStl(std::string_view bytes, const std::string& field)
     VertexMerger merger(mesh, field);
     mesh.faces.reserve(count, 3 * count);
     for (std::uint64_t t = 0; t < count; ++t) {
+        stopIfAsked(t);
         source.skipBytes(12); // the normal: recomputed from the vertices wherever it is needed
         std::array<int, 3> face;
         for (int v = 0; v < 3; ++v) {
@@ -733,7 +749,8 @@ PolygonMesh parseAsciiStl(std::string_view bytes, const std::string& field)
     VertexMerger merger(mesh, field);
     expect("solid");
     in.skipLine();
-    for (;;) {
+    for (std::uint64_t facets = 0;; ++facets) {
+        stopIfAsked(facets);
         std::string_view word = in.next();
         if (equalsIgnoringCase(word, "endsolid")) {
             in.skipLine();
@@ -828,6 +845,8 @@ PolygonMesh parseMesh(std::string_view bytes, MeshFormat format, const std::stri
         }
     } catch (const Truncated&) {
         throw InputError(field, "the file ends before its data does");
+    } catch (const Stopped&) {
+        throw InputError(field, "reading was stopped");
     } catch (const std::bad_alloc&) {
         throw InputError(field, "the mesh is too large to hold in memory");
     }
@@ -854,11 +873,24 @@ PolygonMesh readMeshFile(const std::filesystem::path& file, const std::string& f
     if (!error)
         bytes.reserve(static_cast<std::size_t>(size)); // read in one allocation, not copied at each doubling
     std::array<char, 1 << 16> buffer;
-    while (in.read(buffer.data(), buffer.size()) || in.gcount() > 0)
+    while (in.read(buffer.data(), buffer.size()) || in.gcount() > 0) {
+        if (askedToStop && askedToStop->load(std::memory_order_relaxed)) // looked at every 64 kB
+            throw InputError(field, "reading was stopped");
         bytes.append(buffer.data(), static_cast<std::size_t>(in.gcount()));
+    }
     if (in.bad())
         throw InputError(field, "cannot read \"" + file.string() + "\": " + std::strerror(errno));
     return parseMesh(bytes, format, field);
+}
+
+MeshReadingStop::MeshReadingStop(const std::atomic<bool>& stop) : previous_(askedToStop)
+{
+    askedToStop = &stop;
+}
+
+MeshReadingStop::~MeshReadingStop()
+{
+    askedToStop = previous_;
 }
 
 } // namespace viewpipe

@@ -14,7 +14,9 @@ namespace viewpipe::gui {
 // Runs `work` on a worker thread and waits for it. Meanwhile the window keeps
 // painting; keys and clicks wait until the work is done (Qt delivers them
 // then), and if it takes longer than half a second a dialog over `window` says
-// `what` is under way. Rethrows what `work` throws.
+// `what` is under way, with Cancel: that stops the mesh files being read
+// (MeshReadingStop), so the work ends in InputError "reading was stopped".
+// Rethrows what `work` throws.
 void waitShowingProgress(QWidget* window, const QString& what, const std::function<void()>& work);
 
 } // namespace viewpipe::gui

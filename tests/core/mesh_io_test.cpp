@@ -5,10 +5,12 @@
 #include "support.hpp"
 #include "viewpipe/mesh_io.hpp"
 
+#include <atomic>
 #include <cstdio>
 #include <cstring>
 #include <fstream>
 #include <sstream>
+#include <thread>
 
 namespace viewpipe {
 namespace {
@@ -413,6 +415,30 @@ TEST(MeshIo, ReadsFiles)
         for (const auto& entry : std::filesystem::directory_iterator(kData / "meshes")) {
             EXPECT_FALSE(readMeshFile(entry.path(), "mesh").faces.empty()) << entry.path();
         }
+}
+
+// A read on a thread asked to stop (a wait the user cancels) ends with its reason, in every reader and
+// from a file; the stop is that thread's alone, and ends with its guard.
+TEST(MeshIo, ReadingStopsWhenAsked)
+{
+    const std::filesystem::path file = kData / "meshes" / "letter-f.obj";
+    std::atomic<bool> stop = true;
+    {
+        const MeshReadingStop stoppable(stop);
+        expectRefused([&] { readMeshFile(file, "objects[0].path"); }, "objects[0].path", "reading was stopped");
+        for (const auto& [bytes, format] : {std::pair{cubeObj(), MeshFormat::Obj},
+                                            std::pair{cubePly(Encoding::Ascii, false), MeshFormat::Ply},
+                                            std::pair{cubePly(Encoding::Little, false), MeshFormat::Ply},
+                                            std::pair{binaryStl(cubeTriangles()), MeshFormat::Stl},
+                                            std::pair{asciiStl(cubeTriangles()), MeshFormat::Stl}})
+            expectRefused([&] { parseMesh(bytes, format, "mesh"); }, "mesh", "reading was stopped");
+        std::thread other([&] { EXPECT_FALSE(readMeshFile(file, "mesh").faces.empty()) << "another thread reads on"; });
+        other.join();
+        stop = false;
+        EXPECT_FALSE(readMeshFile(file, "mesh").faces.empty()) << "not (yet) asked to stop";
+    }
+    stop = true;
+    EXPECT_FALSE(readMeshFile(file, "mesh").faces.empty()) << "the guard gone";
 }
 
 } // namespace

@@ -14,6 +14,7 @@
 #include <QMessageBox>
 #include <QProcess>
 #include <QProgressDialog>
+#include <QPushButton>
 #include <QSlider>
 #include <QSignalSpy>
 #include <QStandardPaths>
@@ -307,6 +308,46 @@ private slots:
         QTRY_VERIFY(QApplication::activeWindow() == &w); // keys reach the window again
         QTest::keyClick(&w, Qt::Key_Z, Qt::ControlModifier);
         QCOMPARE(w.document()->scene().objects.size(), objects);
+    }
+
+    // Importing a mesh that is slow to read, cancelled from its dialog (its button, or Escape): the
+    // reading stops, the scene is as it was and says why, nothing to undo; imported afterwards, the
+    // mesh reads whole.
+    void cancellingASlowImportKeepsTheScene()
+    {
+        MainWindow& w = *window_;
+        QVERIFY(!writeMeshScene().isEmpty()); // writes the mesh beside it
+        const QString mesh = QDir::temp().filePath("viewpipe-session-tetrahedron.obj");
+        const std::size_t objects = w.document()->scene().objects.size();
+        const int edits = w.document()->undoStack()->count();
+        SlowReads slow;
+        w.document()->setEvaluationListener(&slow);
+        const auto stopListening = qScopeGuard([&w] { w.document()->setEvaluationListener(nullptr); });
+        for (const bool byKey : {false, true}) {
+            bool cancelled = false;
+            QTimer press; // as soon as the dialog shows
+            QObject::connect(&press, &QTimer::timeout, [&] {
+                auto* dialog = w.findChild<QProgressDialog*>("waitingProgress");
+                if (cancelled || !dialog || !dialog->isVisible())
+                    return;
+                cancelled = true;
+                auto* button = dialog->findChild<QPushButton*>();
+                QVERIFY(button);
+                QCOMPARE(button->text(), QString("Cancel"));
+                if (byKey)
+                    QTest::keyClick(dialog, Qt::Key_Escape);
+                else
+                    QTest::mouseClick(button, Qt::LeftButton);
+            });
+            press.start(50);
+            QVERIFY(!w.sceneFiles()->importMesh(mesh));
+            QVERIFY(cancelled);
+            QVERIFY2(w.lastMessage().endsWith("reading was stopped"), qPrintable(w.lastMessage()));
+            QCOMPARE(w.document()->scene().objects.size(), objects);
+            QCOMPARE(w.document()->undoStack()->count(), edits);
+        }
+        QVERIFY(w.sceneFiles()->importMesh(mesh));
+        QCOMPARE(w.document()->scene().objects.size(), objects + 1);
     }
 
     // Opening a lesson whose step shows a scene with a slow mesh: every step's

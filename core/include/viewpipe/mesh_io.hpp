@@ -6,6 +6,7 @@
 // coordinate for finiteness, so hostile input ends in an InputError, never in
 // a crash (VTK 9.1's readers crash on out-of-range indices and truncated PLY).
 
+#include <atomic>
 #include <filesystem>
 #include <string>
 #include <string_view>
@@ -28,5 +29,19 @@ PolygonMesh parseMesh(std::string_view bytes, MeshFormat format, const std::stri
 
 // Reads and parses a file; its format from its extension.
 PolygonMesh readMeshFile(const std::filesystem::path& file, const std::string& field);
+
+// While one lives on a thread, reading or parsing a mesh on that thread
+// stops soon after `stop` is set (a wait the user cancels): InputError(field,
+// "reading was stopped"). The flag outlives it.
+class MeshReadingStop {
+public:
+    explicit MeshReadingStop(const std::atomic<bool>& stop);
+    ~MeshReadingStop();
+    MeshReadingStop(const MeshReadingStop&) = delete;
+    MeshReadingStop& operator=(const MeshReadingStop&) = delete;
+
+private:
+    const std::atomic<bool>* previous_;
+};
 
 } // namespace viewpipe
