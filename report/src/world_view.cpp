@@ -19,9 +19,11 @@ constexpr int kSweepSamples = 8; // positions sampled to frame a rotation's swee
 constexpr double kPi = 3.14159265358979323846;
 
 // The camera stands where it sees this share of the framing's sphere whole (the sphere overstates what
-// most directions see); the points beyond it are fitted one by one.
+// most directions see).
 constexpr double kSphereSeen = 0.95;
-// Those points at most this share of the way from the scene area's center to its edge: a marker there is drawn whole.
+// Every framed point at most this share of the way from the scene area's center to its edge, so that a
+// marker there is drawn whole: those within this share of that sphere are; those beyond it (the
+// framing's outermost) are fitted one by one.
 constexpr double kEdgeRoom = 0.95;
 
 // Appends the primitive's points through `m` (a large one's by its box's corners); none when a
@@ -55,11 +57,11 @@ void appendThrough(std::vector<Vec3<double>>& framed, const Primitive& primitive
 
 Framing blend(const Framing& a, const Framing& b, double u)
 {
-    Framing blended{a.center + u * (b.center - a.center), a.radius + u * (b.radius - a.radius), {}};
-    for (const Framing::Outermost& p : a.outermost)
-        blended.outermost.push_back({p.point, (1 - u) * p.weight});
-    for (const Framing::Outermost& p : b.outermost)
-        blended.outermost.push_back({p.point, u * p.weight});
+    Framing blended{a.center + u * (b.center - a.center), a.radius + u * (b.radius - a.radius), {}, {}};
+    if (a.center == b.center && a.radius == b.radius && a.outermost == b.outermost && a.blended.empty() && b.blended.empty())
+        blended.outermost = a.outermost; // one framing (a fixed one, or stages framed together)
+    else
+        blended.blended = {{a.center, a.radius, a.outermost, 1 - u}, {b.center, b.radius, b.outermost, u}};
     return blended;
 }
 
@@ -81,10 +83,10 @@ Framing framingOf(const EvaluatedScene& scene, const std::vector<Mat4<double>>& 
     Eigen::AlignedBox<double, 3> box;
     for (const Vec3<double>& p : framed)
         box.extend(p);
-    Framing framing{box.center(), std::max(1e-9, 0.5 * box.diagonal().norm()), {}};
+    Framing framing{box.center(), std::max(1e-9, 0.5 * box.diagonal().norm()), {}, {}};
     for (const Vec3<double>& p : framed)
-        if ((p - framing.center).norm() > kSphereSeen * framing.radius)
-            framing.outermost.push_back({p, 1});
+        if ((p - framing.center).norm() > kSphereSeen * kEdgeRoom * framing.radius)
+            framing.outermost.push_back(p);
     return framing;
 }
 
@@ -219,21 +221,28 @@ double fitDistance(const WorldCamera& camera, const Framing& framing, const View
     const Vec2<double> extent = whole ? Vec2<double>(fit.height > 0 ? double(fit.width) / fit.height : 1, 1)
                                       : Vec2<double>((fit.sceneArea.max - fit.sceneArea.min) / fit.height);
     const Vec2<double> half = tangent * extent;
-    // Most of the framing's sphere seen whole from any direction, in the narrower of the two angles;
-    double distance = kSphereSeen * framing.radius / std::sin(std::atan(half.minCoeff()));
-    // the points beyond it, each in the picture from this direction (a point's weight scales how far it
-    // moves the camera back, so that a step's framings blend without a jump).
+    // Most of a sphere seen whole from any direction, in the narrower of the two angles (a point within
+    // kSphereSeen * kEdgeRoom of its radius also a marker's room from the edge);
+    const double sine = std::sin(std::atan(half.minCoeff()));
+    auto sphere = [&](double radius) { return kSphereSeen * radius / sine; };
+    // how much further back the outermost points each need the camera, from this direction.
     const Vec3<double> ahead = camera.direction();
-    const Vec3<double> across = camera.viewUp.cross(-ahead).normalized(), up = -ahead.cross(across);
-    if (!across.allFinite())
-        return distance; // no up for the picture (the view up along the direction): the sphere alone
-    for (const Framing::Outermost& p : framing.outermost) {
-        const Vec3<double> offset = p.point - framing.center;
-        const double depth = offset.dot(ahead);
-        const double needed =
-            std::max(std::abs(offset.dot(across)) / half.x(), std::abs(offset.dot(up)) / half.y()) / kEdgeRoom - depth;
-        distance = std::max(distance, p.weight * needed);
-    }
+    const Vec3<double> side = camera.viewUp.cross(-ahead);
+    auto further = [&](const Vec3<double>& center, double radius, const std::vector<Vec3<double>>& outermost) {
+        if (side.squaredNorm() < 1e-24)
+            return 0.0; // no up for the picture (the view up along the direction): the sphere alone
+        const Vec3<double> across = side.normalized(), up = -ahead.cross(across);
+        double needed = 0;
+        for (const Vec3<double>& p : outermost) {
+            const Vec3<double> offset = p - center;
+            needed = std::max(needed, std::max(std::abs(offset.dot(across)) / half.x(), std::abs(offset.dot(up)) / half.y()) /
+                                          kEdgeRoom - offset.dot(ahead));
+        }
+        return std::max(0.0, needed - sphere(radius));
+    };
+    double distance = sphere(framing.radius) + further(framing.center, framing.radius, framing.outermost);
+    for (const Framing::Share& part : framing.blended) // each framing's setting back, by its share: nothing jumps
+        distance += part.share * further(part.center, part.radius, part.outermost);
     return distance;
 }
 

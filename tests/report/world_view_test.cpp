@@ -165,22 +165,29 @@ TEST(WorldView, AStepStartsAndEndsAtTheStagesAtRestAndNeverJumps)
                 const std::string at = name + " " + std::to_string(from) + " -> " + std::to_string(to);
                 EXPECT_LT(relativeError(start.drawn, first.drawn), 1e-12) << at;
                 EXPECT_LT(relativeError(end.drawn, last.drawn), 1e-12) << at;
+                // The camera's distance too, which the framing's outermost points may set back.
+                const WorldCamera camera;
+                auto distance = [&](const Framing& framing) { return fitDistance(camera, framing, ViewFit{}); };
                 for (const auto& [moment, rest] : {std::pair{start, first}, std::pair{end, last}}) {
                     EXPECT_LT((moment.framing.center - rest.framing.center).norm(), 1e-12 * rest.framing.radius) << at;
                     EXPECT_NEAR(moment.framing.radius, rest.framing.radius, 1e-12 * rest.framing.radius) << at;
+                    EXPECT_NEAR(distance(moment.framing), distance(rest.framing), 1e-12 * distance(rest.framing)) << at;
                 }
                 EXPECT_EQ(start.canonicalOpacity, first.canonicalOpacity) << at;
                 EXPECT_EQ(end.canonicalOpacity, last.canonicalOpacity) << at;
                 // Smooth phases of at least a fifth of the step each: a hundredth of it changes the
                 // framing by at most 1.5 / 0.2 / 100 of the distance between its phases' framings
                 // (at most twice the largest radius apart: each holds what the one before held).
-                double largest = 0;
-                for (int f = 0; f <= 100; ++f)
+                double largest = 0, farthest = 0;
+                for (int f = 0; f <= 100; ++f) {
                     largest = std::max(largest, motion.at(f / 100.0).framing.radius);
+                    farthest = std::max(farthest, distance(motion.at(f / 100.0).framing));
+                }
                 for (int f = 0; f < 100; ++f) {
                     const Framing a = motion.at(f / 100.0).framing, b = motion.at((f + 1) / 100.0).framing;
                     EXPECT_LE((a.center - b.center).norm(), 0.075 * 2 * largest) << at << " at " << f;
                     EXPECT_LE(std::abs(a.radius - b.radius), 0.075 * largest) << at << " at " << f;
+                    EXPECT_LE(std::abs(distance(a) - distance(b)), 0.075 * farthest) << at << " at " << f;
                 }
             }
     }
@@ -197,6 +204,12 @@ TEST(WorldView, AStepWithFixedFramingHoldsItsCamera)
             const Framing framing = motion.at(f / 10.0).framing;
             EXPECT_EQ(framing.center, fixed->center) << k << " at " << f;
             EXPECT_EQ(framing.radius, fixed->radius) << k << " at " << f;
+            // and the camera stands where it stood (the framing's outermost points count throughout)
+            for (const Vec3<double>& direction : {WorldCamera{}.position, Vec3<double>(-1, 0.5, -1)}) {
+                WorldCamera camera;
+                camera.position = direction;
+                EXPECT_DOUBLE_EQ(fitDistance(camera, framing, ViewFit{}), fitDistance(camera, *fixed, ViewFit{})) << k << " at " << f;
+            }
         }
     }
 }

@@ -18,15 +18,18 @@ namespace viewpipe {
 // fitted a little closer than the sphere (most directions see less of it)
 // could leave out.
 struct Framing {
-    // A point of the framing's outermost, and how much it counts (1; less while a step's framing
-    // blends into the next one's, whose points count more and more).
-    struct Outermost {
-        Vec3<double> point;
-        double weight = 1;
-    };
     Vec3<double> center = Vec3<double>::Zero();
     double radius = 1;
-    std::vector<Outermost> outermost;
+    std::vector<Vec3<double>> outermost;
+    // While a step's framing blends into the next: the two, and each one's share. The camera stands
+    // back from the blended sphere by the shares of how far each one's outermost points set it back.
+    struct Share {
+        Vec3<double> center = Vec3<double>::Zero();
+        double radius = 1;
+        std::vector<Vec3<double>> outermost;
+        double share = 0;
+    };
+    std::vector<Share> blended;
 };
 
 // What framing shows every element as it would be through `cumulatives` (the
@@ -105,7 +108,8 @@ struct ViewFit {
     double zoom = 1;
     Vec3<double> pan = Vec3<double>::Zero(); // in framing radii
 };
-// How far the camera, looking at the framing's center, must stand to see all of it in the scene area.
+// How far the camera, looking at the framing's center, must stand to see all of it in the scene area
+// (while framings blend, about what each of them would see).
 double fitDistance(const WorldCamera& camera, const Framing& framing, const ViewFit& fit);
 // Aims the camera at a framing, keeping its direction and the user's zoom and
 // pan, with the focal point at the scene area's center; fits the clipping range.
