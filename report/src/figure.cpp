@@ -93,19 +93,6 @@ bool segmentCrossesBox(const Segment2& s, const Box2& box)
     return t0 <= t1;
 }
 
-// The whole line through a segment's two points passes through the box: its corners are not all on one side.
-bool lineCrossesBox(const Segment2& line, const Box2& box)
-{
-    const Vec2d d = line[1] - line[0];
-    int below = 0, above = 0;
-    for (const Vec2d& corner : {box.min, box.max, Vec2d(box.min.x(), box.max.y()), Vec2d(box.max.x(), box.min.y())}) {
-        const double side = d.x() * (corner.y() - line[0].y()) - d.y() * (corner.x() - line[0].x());
-        below += side <= 0;
-        above += side >= 0;
-    }
-    return below > 0 && above > 0;
-}
-
 // Two segments cross at a point more than `margin` pixels from each one's ends
 // (leaders from one anchor, or meeting end to end, do not cross).
 bool segmentsCross(const Segment2& a, const Segment2& b, double margin)
@@ -555,7 +542,7 @@ std::vector<std::optional<PlacedLabel>> placeLabels(const std::vector<LabelReque
         for (const Segment2& line : leaders)
             if (segmentCrossesBox(line, clear))
                 return false;
-        return !ownAxis || !lineCrossesBox(*ownAxis, box.grown(kAxisClearance));
+        return !ownAxis || !segmentCrossesBox(*ownAxis, box.grown(kAxisClearance));
     };
 
     // Leaders pointing away from the labels' middle fan out and seldom cross one another.
@@ -573,15 +560,13 @@ std::vector<std::optional<PlacedLabel>> placeLabels(const std::vector<LabelReque
     auto search = [&](std::size_t k, bool anywhere) -> std::optional<PlacedLabel> {
         const LabelRequest& r = requests[k];
         const Vec2d outward = (r.anchor - middle).norm() > 1 ? Vec2d((r.anchor - middle).normalized()) : Vec2d::Zero();
-        const std::optional<Segment2> ownAxis =
-            r.axis.isZero() ? std::nullopt : std::optional<Segment2>(Segment2{r.anchor, r.anchor + r.axis});
         std::optional<Box2> best;
         double bestCost = 0;
         bool bestLeader = false;
         auto consider = [&](const Box2& box, double penalty, bool leader) {
             if (best && penalty >= bestCost)
                 return; // its cost is never below its penalty: it cannot do better
-            if (!free(box, leader ? std::optional<Vec2d>(r.anchor) : std::nullopt, r.minor, ownAxis))
+            if (!free(box, leader ? std::optional<Vec2d>(r.anchor) : std::nullopt, r.minor, r.axis))
                 return;
             const double c = cost(box) + penalty;
             if (!best || c < bestCost) {
@@ -778,10 +763,13 @@ SceneLabels placeSceneLabels(const StageShown& stage, const FigureView& view, co
             const auto px = q ? view.pixel(*q) : std::nullopt;
             if (!px || !picture.contains(Box2{px->head<2>(), px->head<2>()}))
                 continue;
-            Vec2d axis = Vec2d::Zero();
-            if (label.element == Element::Frame && label.minor) // a tick number, on its axis through the origin
-                if (const auto further = view.pixel(1.1 * label.anchor))
-                    axis = further->head<2>() - px->head<2>();
+            std::optional<Segment2> axis;
+            if (label.element == Element::Frame && label.minor) { // a tick number, on its axis as frameMarks draws it
+                const Vec3d along = view.frameReach * label.anchor.normalized();
+                const auto from = view.pixel(-along), to = view.pixel(along);
+                if (from && to)
+                    axis = Segment2{from->head<2>(), to->head<2>()};
+            }
             requests.push_back({label.element, label.text, px->head<2>(), measure(label), label.minor, axis});
             from.push_back(k);
         }

@@ -177,9 +177,8 @@ struct LabelRequest {
     Vec2<double> anchor; // pixels
     Vec2<double> size;   // pixels
     bool minor = false;  // right beside the anchor or not at all
-    // A tick number's axis on screen, a direction: the number keeps off that line through its anchor
-    // (crossed by it, "100" reads "−100"). Zero: none.
-    Vec2<double> axis = Vec2<double>::Zero();
+    // A tick number's axis as drawn (pixels): the number keeps off it (crossed by it, "100" reads "−100").
+    std::optional<Segment2> axis = std::nullopt;
 };
 
 // What labels keep clear of: the lines drawn, each object's outline (a
