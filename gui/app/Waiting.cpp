@@ -8,6 +8,7 @@
 #include <exception>
 #include <thread>
 
+#include "viewpipe/error.hpp"
 #include "viewpipe/mesh_io.hpp"
 
 namespace viewpipe::gui {
@@ -27,7 +28,7 @@ void waitShowingProgress(QWidget* window, const QString& what, const std::functi
     progress.reset(); // stops the dialog's own timer: the one below shows it
     const auto cancel = [&] {
         stop = true;
-        loop.quit(); // the rest of the wait (a moment) without the dialog, keys and clicks waiting again
+        loop.quit(); // the rest of the wait (the reading stops at once) without the dialog, keys and clicks waiting again
     };
     QObject::connect(&progress, &QProgressDialog::canceled, cancel); // its button, its window closed
     QObject::connect(&progress, &QDialog::rejected, cancel);         // Escape
@@ -48,12 +49,14 @@ void waitShowingProgress(QWidget* window, const QString& what, const std::functi
     announce.setSingleShot(true);
     QObject::connect(&announce, &QTimer::timeout, &loop, &QEventLoop::quit);
     announce.start(kQuietMilliseconds);
+    bool shown = false;
     try {
         // Keys and clicks wait until the work is done; if it takes long, the dialog says so and
         // takes them (its Cancel) while the window, modal to it, ignores them.
         loop.exec(QEventLoop::ExcludeUserInputEvents);
         if (!finished) {
             progress.show();
+            shown = true;
             loop.exec();
         }
         if (!finished)
@@ -64,13 +67,15 @@ void waitShowingProgress(QWidget* window, const QString& what, const std::functi
         throw;
     }
     worker.join();
-    if (progress.isVisible()) { // keys go back to the window, not to wherever the dialog left them
+    if (shown) { // keys go back to the window, not to wherever the dialog left them
         progress.hide();
         if (window)
             window->activateWindow();
     }
     if (failure)
         std::rethrow_exception(failure);
+    if (stop) // cancelled once nothing was left to read: what was asked for is still not done
+        throw InputError("$", "reading was stopped");
 }
 
 } // namespace viewpipe::gui
