@@ -19,34 +19,34 @@
     clearRefusals();
     const scene = files.find((f) => /\.json$/i.test(f.name));
     const meshes = files.filter((f) => meshFile.test(f.name));
-    let text = scene ? await scene.text() : null; // the scene's own, or the one shown with the meshes added
-    // Each mesh where the scene looks for a file of its name (such as ../meshes/letter-f.obj), else under its name.
+    if (!scene && !meshes.length) return refuseFiles('Open a scene (.json) or meshes (.obj, .ply, .stl).');
+    // The scene opened, or the one shown with the meshes; each mesh goes where the scene looks for a file of its
+    // name (such as ../meshes/letter-f.obj), replacing what was there, else under its name, added to the scene shown.
+    let text = scene ? await scene.text() : data.scene;
     let named = [];
-    if (scene) {
-      try {
-        named = (JSON.parse(text).objects || []).filter((o) => o && o.type === 'mesh').map((o) => String(o.path));
-      } catch (error) {
-        // not a scene: the core says why as it reads it
-      }
+    try {
+      named = (JSON.parse(text).objects || []).filter((o) => o && o.type === 'mesh').map((o) => String(o.path));
+    } catch (error) {
+      // not a scene: the core says why as it reads it
     }
+    const wherever = (name) => named.filter((where) => where.split(/[\\/]/).pop() === name);
     const kept = {};
     for (const mesh of meshes) {
       const bytes = new Uint8Array(await mesh.arrayBuffer());
       let binary = '';
       for (let k = 0; k < bytes.length; k += 0x8000) binary += String.fromCharCode(...bytes.subarray(k, k + 0x8000));
-      const wanted = named.filter((where) => where.split(/[\\/]/).pop() === mesh.name);
+      const wanted = wherever(mesh.name);
       for (const where of wanted.length ? wanted : [mesh.name]) {
         const outcome = core.putFile(where, bytes);
         if (outcome.error) return refuseFiles(`${mesh.name}: ${outcome.error}`);
         kept[where] = btoa(binary);
       }
     }
-    if (!scene && !meshes.length) return refuseFiles('Open a scene (.json) or meshes (.obj, .ply, .stl).');
     if (!scene) {
       const shown = JSON.parse(data.scene);
       shown.objects = shown.objects || [];
       for (const mesh of meshes)
-        if (!shown.objects.some((o) => o.type === 'mesh' && o.path === mesh.name)) shown.objects.push({ type: 'mesh', path: mesh.name });
+        if (!wherever(mesh.name).length) shown.objects.push({ type: 'mesh', path: mesh.name });
       text = JSON.stringify(shown, null, 2) + '\n';
     }
     changeScene(text, null, Object.assign({}, scene ? {} : data.files, kept));
