@@ -28,9 +28,14 @@ constexpr std::uint64_t kStopLook = 1 << 14;
 
 struct Stopped {};
 
+bool stopAsked()
+{
+    return askedToStop && askedToStop->load(std::memory_order_relaxed);
+}
+
 void stopIfAsked(std::uint64_t count)
 {
-    if (count % kStopLook == 0 && askedToStop && askedToStop->load(std::memory_order_relaxed))
+    if (count % kStopLook == 0 && stopAsked())
         throw Stopped{};
 }
 
@@ -874,7 +879,7 @@ PolygonMesh readMeshFile(const std::filesystem::path& file, const std::string& f
         bytes.reserve(static_cast<std::size_t>(size)); // read in one allocation, not copied at each doubling
     std::array<char, 1 << 16> buffer;
     while (in.read(buffer.data(), buffer.size()) || in.gcount() > 0) {
-        if (askedToStop && askedToStop->load(std::memory_order_relaxed)) // looked at every 64 kB
+        if (stopAsked()) // looked at every 64 kB
             throw InputError(field, "reading was stopped");
         bytes.append(buffer.data(), static_cast<std::size_t>(in.gcount()));
     }

@@ -226,12 +226,11 @@ double fitDistance(const WorldCamera& camera, const Framing& framing, const View
     const double sine = std::sin(std::atan(half.minCoeff()));
     auto sphere = [&](double radius) { return kSphereSeen * radius / sine; };
     // how much further back the outermost points each need the camera, from this direction.
-    const Vec3<double> ahead = camera.direction();
-    const Vec3<double> side = camera.viewUp.cross(-ahead);
+    const Mat4<double> view = camera.view(); // its rows: the picture's across, up and backward
+    const Vec3<double> across = view.row(0).head<3>(), up = view.row(1).head<3>(), ahead = -view.row(2).head<3>();
     auto further = [&](const Vec3<double>& center, double radius, const std::vector<Vec3<double>>& outermost) {
-        if (side.squaredNorm() < 1e-24)
+        if (across.isZero())
             return 0.0; // no up for the picture (the view up along the direction): the sphere alone
-        const Vec3<double> across = side.normalized(), up = -ahead.cross(across);
         double needed = 0;
         for (const Vec3<double>& p : outermost) {
             const Vec3<double> offset = p - center;
