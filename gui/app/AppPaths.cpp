@@ -51,11 +51,16 @@ QString chooseFileToOpen(QWidget* parent, const QString& title, const QString& f
     return path;
 }
 
+bool isBuiltInFile(const QString& path)
+{
+    return QFileInfo(path).absoluteFilePath().startsWith(QDir(dataDirectory()).absolutePath() + "/");
+}
+
 QString chooseFileToSave(QWidget* parent, const QString& title, const QString& suggested, const QString& filter)
 {
     // A document's own file stays where it is; a built-in one is a starting point, saved among the user's files.
     const QFileInfo file(suggested);
-    const bool own = file.isAbsolute() && !file.absoluteFilePath().startsWith(QDir(dataDirectory()).absolutePath() + "/");
+    const bool own = file.isAbsolute() && !isBuiltInFile(suggested);
     const QString path = QFileDialog::getSaveFileName(parent, title, own ? suggested : dialogPath(file.fileName()), filter);
     rememberDialogFolder(path);
     return path;

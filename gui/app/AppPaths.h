@@ -18,6 +18,10 @@ QString dialogPath(const QString& name = {});
 // Remembers the folder of a file chosen in a dialog, for the next dialog.
 void rememberDialogFolder(const QString& chosen);
 
+// A file of the built-in data (a preset scene, a built-in lesson): a starting
+// point for the user's own, never a file a save overwrites.
+bool isBuiltInFile(const QString& path);
+
 // The file dialogs, opening at dialogPath and remembering the folder chosen;
 // empty when cancelled. `suggested` is a file name, or a path kept as it is
 // when it lies outside the built-in data (a document's own file).

@@ -106,7 +106,7 @@ bool SceneFiles::openScene(const Scene& scene, const QString& path, bool remembe
 bool SceneFiles::saveSceneAs(bool askForName)
 {
     QString path = document_->filePath();
-    if (askForName || path.isEmpty())
+    if (askForName || path.isEmpty() || isBuiltInFile(path)) // a preset is a starting point, not a file to overwrite
         path = chooseFileToSave(window_, tr("Save scene"), path.isEmpty() ? "scene.json" : path, tr("Scenes (*.json)"));
     return !path.isEmpty() && saveScene(path);
 }
