@@ -379,6 +379,13 @@ int revealedStage(const LessonStep& step)
     return step.question && step.question->stage > 0 ? std::max(step.stage, step.question->stage) : step.stage;
 }
 
+StepShows stepShows(const LessonStep& step, bool answered, int stageCount)
+{
+    if (!step.question || answered)
+        return {stageCount, true};
+    return {askingStage(step), false};
+}
+
 std::optional<Vec3<double>> tracedAt(const LessonStep& step)
 {
     const std::optional<Question>& q = step.question;

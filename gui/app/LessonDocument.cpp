@@ -52,6 +52,7 @@ EvaluatedLesson LessonDocument::evaluate(const Lesson& lesson)
 void LessonDocument::open(Lesson lesson, EvaluatedLesson evaluated, const QString& path)
 {
     ++generation_;
+    ++openings_;
     undo_.clear();
     lesson_ = std::move(lesson);
     evaluated_ = std::move(evaluated);
@@ -69,6 +70,7 @@ void LessonDocument::create(const std::string& title, const LessonStep& first)
     parseLesson(lessonToJson(lesson, folder), folder); // as every edit is checked
     EvaluatedLesson evaluated = evaluateEdit(lesson, tr("Making the lesson"));
     ++generation_;
+    ++openings_;
     undo_.clear();
     undo_.resetClean(); // never saved: closing it asks
     lesson_ = std::move(lesson);
@@ -83,6 +85,7 @@ void LessonDocument::create(const std::string& title, const LessonStep& first)
 void LessonDocument::close()
 {
     ++generation_;
+    ++openings_;
     undo_.clear();
     lesson_ = Lesson{};
     evaluated_ = EvaluatedLesson{};
@@ -136,11 +139,11 @@ bool LessonDocument::check(const Answer& answer)
     return right;
 }
 
-void LessonDocument::reveal()
+void LessonDocument::reveal(bool forEditing)
 {
     if (!isOpen() || !currentStep().question)
         return;
-    if (!revealed_[std::size_t(step_)] && !answers_[std::size_t(step_)])
+    if (!forEditing && !revealed_[std::size_t(step_)] && !answers_[std::size_t(step_)])
         unsavedAnswers_ = true; // shown unanswered: the results say so
     revealed_[std::size_t(step_)] = true;
     emit stepChanged();

@@ -51,6 +51,8 @@ public:
 
     // Counts the lessons and versions of a lesson shown: opening one, an edit, an undo.
     int generation() const { return generation_; }
+    // Counts the lessons opened, made and closed: an edit or an undo keeps it.
+    int openings() const { return openings_; }
     int step() const { return step_; }
     const LessonStep& currentStep() const { return lesson_.steps.at(std::size_t(step_)); }
     // Step k's scene evaluated (as the app opens it).
@@ -68,8 +70,9 @@ public:
     // Records an answer to the current step's question (the last one checked counts) and reveals the
     // question's answer when it is right or the question's tries are used up; returns whether it is right.
     bool check(const Answer& answer);
-    // Shows the answer without taking one (a lecturer asking the room).
-    void reveal();
+    // Shows the answer without taking one (a lecturer asking the room); the results record it as
+    // revealed, unless it shows for the lesson's editor (`forEditing`), which is no student's doing.
+    void reveal(bool forEditing = false);
     // The results file, as the web page saves it.
     std::string resultsJson() const { return resultsToJson(lesson_, answers_, revealed_, tries_); }
     // Writes the results file atomically; throws InputError when it cannot.
@@ -106,6 +109,7 @@ private:
     QString filePath_;
     int step_ = 0;
     int generation_ = 0;
+    int openings_ = 0;
     std::vector<std::optional<Answer>> answers_;
     std::vector<bool> revealed_;
     std::vector<int> tries_;

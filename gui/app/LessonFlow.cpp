@@ -10,6 +10,7 @@
 #include <QStatusBar>
 
 #include <cmath>
+#include <utility>
 
 #include "ActionRegistry.h"
 #include "AppPaths.h"
@@ -37,7 +38,18 @@ LessonFlow::LessonFlow(MainWindow* window)
 
 bool LessonFlow::hidesAnswers() const
 {
-    return lesson_->isAsking();
+    return lesson_->isOpen() && !shows().stageTexts;
+}
+
+int LessonFlow::lastTracedStage(int stage) const
+{
+    return lesson_->isOpen() ? std::min(stage, shows().lastStage) : window_->stepper()->stageCount();
+}
+
+StepShows LessonFlow::shows() const
+{
+    const int k = lesson_->step();
+    return stepShows(lesson_->currentStep(), lesson_->isRevealed(k), window_->stepper()->stageCount());
 }
 
 std::vector<std::array<int, 2>> LessonFlow::highlightedEntries(int stage) const
@@ -107,12 +119,16 @@ bool LessonFlow::openLesson(const QString& path)
 
 bool LessonFlow::openLesson(Lesson lesson, const QString& path)
 {
+    // Asked before the lesson replaces the one open: Cancel leaves both the lesson and the scene as they are.
+    if (!(lesson.steps.front().scene == window_->document()->scene()) && !window_->confirmDiscard())
+        return false;
     try {
         // Every step's scene is evaluated now (its meshes read, off the GUI thread): a step that cannot
         // be shown stops nothing later.
         EvaluatedLesson evaluated;
         waitShowingProgress(window_, tr("Opening %1…").arg(path.isEmpty() ? tr("the lesson") : QFileInfo(path).fileName()),
                             [&] { evaluated = lesson_->evaluate(lesson); });
+        sceneDiscardConfirmed_ = true;
         lesson_->open(std::move(lesson), std::move(evaluated), path);
     } catch (const InputError& e) {
         window_->showMessage(tr("Cannot open the lesson %1: %2").arg(path, QString::fromStdString(e.what())));
@@ -127,6 +143,7 @@ void LessonFlow::showLessonStep()
     Stepper* stepper = window_->stepper();
     if (!lesson_->isOpen()) {
         shownStep_ = -1;
+        stepper->setLastStage(std::nullopt);
         dock->hide();
         window_->showStageDetails();
         return;
@@ -142,18 +159,20 @@ void LessonFlow::showLessonStep()
     dock->raise();
     const int k = lesson_->step();
     const LessonStep& step = lesson_->currentStep();
-    // Otherwise the step shown was just answered or revealed, or is the view on screen just added.
-    const bool newStep = !keepView_ && (k != shownStep_ || lesson_->generation() != shownGeneration_);
+    // Another lesson, another step, or an edit that changed this step's scene: the step's view is set up.
+    // An edit of the texts, an answer or a reveal keeps the view, and what the user changed in it.
+    const bool sameLesson = lesson_->openings() == shownOpening_;
+    const bool newStep = !keepView_ && (!sameLesson || k != shownStep_ || !(step.scene == shownStepScene_));
     keepView_ = false;
     Document* document = window_->document();
-    const bool sameScene = step.scene == document->scene();
-    if (!sameScene && !window_->confirmDiscard()) {
-        // The lesson and the view must agree: back to the step shown, or no lesson at all.
-        if (shownStep_ >= 0 && shownGeneration_ == lesson_->generation() && shownStep_ != k)
-            lesson_->goTo(shownStep_);
-        else if (shownStep_ < 0 || shownGeneration_ != lesson_->generation())
-            lesson_->close();
-        return;
+    const bool sceneConfirmed = std::exchange(sceneDiscardConfirmed_, false);
+    bool sameScene = !newStep || step.scene == document->scene();
+    if (!sameScene && !sceneConfirmed && !window_->confirmDiscard()) {
+        // Cancel changes nothing: a step moved to goes back to the step shown; after an edit of the
+        // lesson the view stays as the user left it (openLesson asked before a lesson replaced another).
+        if (sameLesson && shownGeneration_ == lesson_->generation() && shownStep_ != k)
+            return lesson_->goTo(shownStep_);
+        sameScene = true;
     }
     if (!sameScene) { // the step's scene as the lesson evaluated it
         const QString file = QString::fromStdString(step.scene.file.string());
@@ -165,7 +184,9 @@ void LessonFlow::showLessonStep()
     }
     shownStep_ = k;
     shownGeneration_ = lesson_->generation();
-    if (newStep || !sameScene) {
+    shownOpening_ = lesson_->openings();
+    shownStepScene_ = step.scene;
+    if (newStep) {
         if (stepper->isAnimating())
             stepper->goToStage(stepper->target(), false);
         // What the step hides is not drawn, what it highlights is drawn wider; the picture stays at its stage.
@@ -181,7 +202,9 @@ void LessonFlow::showLessonStep()
     window_->traceVertex(tracedAt(step)); // the point asked about, followed through the stages once answered
     const int stage = revealed ? revealedStage(step) : askingStage(step);
     // The answer comes with the transition to the stage asked about; a step to the next stage plays it too.
+    stepper->setLastStage(std::nullopt);
     stepper->goToStage(stage, sameScene && (!newStep || std::abs(stage - stepper->target()) == 1));
+    stepper->setLastStage(shows().lastStage);
     window_->showStageDetails();
 }
 
@@ -250,7 +273,7 @@ bool LessonFlow::saveLessonAs(bool askForName)
         return false;
     QString path = lesson_->filePath();
     // A built-in lesson is a copy's starting point, not a file to overwrite.
-    if (askForName || path.isEmpty() || QFileInfo(path).absolutePath() == QDir(lessonsDirectory()).absolutePath())
+    if (askForName || path.isEmpty() || isBuiltInFile(path))
         path = chooseFileToSave(window_, tr("Save lesson"), path.isEmpty() ? "lesson.json" : path, tr("Lessons (*.json)"));
     return !path.isEmpty() && saveLesson(path);
 }

@@ -50,6 +50,8 @@ public:
     bool hidesAnswers() const;
     // The matrix entries the step shown highlights at `stage` (none at other stages).
     std::vector<std::array<int, 2>> highlightedEntries(int stage) const;
+    // The last stage a traced point's rows show with the picture at `stage`: in a lesson, that stage (stepShows).
+    int lastTracedStage(int stage) const;
 
     // The Lesson menu's actions ("lesson.open", …) and the menu.
     void addActions(ActionRegistry& actions);
@@ -57,6 +59,8 @@ public:
 
 private:
     void showLessonStep();
+    // What the step shown lets the window show (the core's rule).
+    StepShows shows() const;
     // The scene, stage and world view now, as a lesson step.
     LessonStep stepFromView() const;
     bool saveLessonAs(bool askForName = false);
@@ -68,6 +72,9 @@ private:
     LessonPanel* panel_;
     int shownStep_ = -1;       // the step whose view is set up
     int shownGeneration_ = -1; // of the lesson it was in
+    int shownOpening_ = -1;    // the lesson it was in (LessonDocument::openings)
+    Scene shownStepScene_;     // its scene as the lesson had it
+    bool sceneDiscardConfirmed_ = false; // openLesson asked before the lesson replaced the scene
     bool keepView_ = false;    // the step about to be shown is the view on screen
 };
 

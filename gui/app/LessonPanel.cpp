@@ -257,7 +257,9 @@ void LessonPanel::buildEditor()
     connect(editor_, &QGroupBox::toggled, editorContent, &QWidget::setVisible);
     connect(editor_, &QGroupBox::toggled, this, [this](bool open) {
         if (open && lesson_->isAsking())
-            lesson_->reveal(); // the question's file form and the captions give the answer
+            lesson_->reveal(true); // the question's file form and the captions give the answer
+        if (!open) // leaving the editor applies what was typed; a refused edit opens it again, with the reason
+            applyPendingEdits();
     });
 
     connect(titleEdit_, &QLineEdit::returnPressed, this, &LessonPanel::applyPendingEdits);
@@ -328,7 +330,7 @@ void LessonPanel::refreshStep()
         questionEdit_->setPlainText(step.question ? QString::fromStdString(questionToJson(*step.question)) : QString());
     }
     if (editor_->isChecked() && lesson_->isAsking()) { // the editor shows the answers: so does the step
-        QTimer::singleShot(0, lesson_, &LessonDocument::reveal);
+        QTimer::singleShot(0, lesson_, [lesson = lesson_] { lesson->reveal(true); });
     }
     const bool asking = lesson_->isAsking();
     // The caption may give the answer away: it waits for it.

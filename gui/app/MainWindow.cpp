@@ -373,7 +373,15 @@ void MainWindow::updateMatrices()
         return matrices_->showWaiting(tr("<i>The matrices follow the answer to the lesson's question.</i>"));
     const int stage = stepper_->shownStage();
     matrices_->showStage(document_->pipeline(), stage, lessonFlow_->highlightedEntries(stage));
-    matrices_->showTrace(document_->pipeline(), traced_, stage);
+    updateTrace();
+}
+
+void MainWindow::updateTrace()
+{
+    if (lessonFlow_->hidesAnswers()) // a question waits: the trace follows its answer
+        return;
+    const int stage = stepper_->shownStage();
+    matrices_->showTrace(document_->pipeline(), traced_, stage, lessonFlow_->lastTracedStage(stage));
 }
 
 void MainWindow::updateCaptions()
@@ -539,7 +547,7 @@ void MainWindow::traceVertex(const std::optional<Vec3<double>>& point)
 {
     traced_ = point;
     painter_->markTraced(traced_);
-    matrices_->showTrace(document_->pipeline(), traced_, stepper_->shownStage());
+    updateTrace();
     renderNow();
 }
 

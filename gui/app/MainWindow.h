@@ -134,6 +134,8 @@ private:
     void updateCaptions();
     // The stage panel and the matrices: the stage's, or a note while a lesson's question waits.
     void updateMatrices();
+    // The traced point's rows, as far as a lesson's step lets them show (none while a question waits).
+    void updateTrace();
     void updateTitle();
     void pickAt(int x, int y);
 

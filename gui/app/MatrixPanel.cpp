@@ -126,7 +126,7 @@ void MatrixPanel::showStage(const Pipeline<double>& pipeline, int stage, const s
     matrices_->setText(html);
 }
 
-void MatrixPanel::showTrace(const Pipeline<double>& pipeline, const std::optional<Vec3<double>>& point, int stage)
+void MatrixPanel::showTrace(const Pipeline<double>& pipeline, const std::optional<Vec3<double>>& point, int stage, int lastRow)
 {
     if (!point) {
         trace_->setText(tr("Click a vertex of an object to trace it through the stages."));
@@ -141,9 +141,11 @@ void MatrixPanel::showTrace(const Pipeline<double>& pipeline, const std::optiona
     };
     QString html = tr("<b>Traced vertex</b> (x, y, z, w):<table cellspacing='0' cellpadding='2'>");
     html += row(tr("world"), point->homogeneous(), stage == 0);
-    for (std::size_t k = 0; k < pipeline.stages.size(); ++k)
+    for (std::size_t k = 0; k < pipeline.stages.size() && int(k) < lastRow; ++k)
         html += row(mathHtml("$" + symbolMath(pipeline.stages[k].symbol) + "$"), t.afterStage[k], int(k) + 1 == stage);
     html += "</table>";
+    if (lastRow < int(pipeline.stages.size()))
+        return trace_->setText(html);
     if (t.divided)
         html += tr("After the divide: (%1, %2, %3); ").arg(number(t.divided->x()), number(t.divided->y()),
                                                          number(t.divided->z()));

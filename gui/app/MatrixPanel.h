@@ -27,7 +27,8 @@ public:
     // stage 0 is the world (no matrix yet); stage k shows pipeline.stages[k-1],
     // the `highlighted` entries of its matrix (row, column from 1) marked.
     void showStage(const Pipeline<double>& pipeline, int stage, const std::vector<std::array<int, 2>>& highlighted = {});
-    void showTrace(const Pipeline<double>& pipeline, const std::optional<Vec3<double>>& point, int stage);
+    // The rows up to `lastRow` (a lesson's rule, stepShows), the verdict on the canonical volume with the last stage.
+    void showTrace(const Pipeline<double>& pipeline, const std::optional<Vec3<double>>& point, int stage, int lastRow);
     // No matrix, and why (a lesson's question waits for its answer).
     void showWaiting(const QString& why);
 

@@ -37,7 +37,8 @@ StagePanel::StagePanel(Stepper* stepper, QWidget* parent)
     auto* buttons = new QHBoxLayout;
     // Short labels: the row fits the dock at any text size.
     auto* previous = new QPushButton(tr("◀"));
-    auto* next = new QPushButton(tr("▶"));
+    next_ = new QPushButton(tr("▶"));
+    auto* next = next_;
     previous->setObjectName("previousButton");
     play_->setObjectName("playButton");
     next->setObjectName("nextButton");
@@ -99,6 +100,9 @@ void StagePanel::follow()
     if (!slider_->isSliderDown())
         slider_->setValue(stepper_->shownStage());
     play_->setText(stepper_->isPlaying() ? tr("Stop") : tr("Play"));
+    // A lesson's open question holds the stepper before the stage it asks about.
+    next_->setEnabled(stepper_->target() < stepper_->lastStage());
+    play_->setEnabled(stepper_->isPlaying() || stepper_->lastStage() > 0);
 }
 
 } // namespace viewpipe::gui

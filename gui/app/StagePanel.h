@@ -35,6 +35,7 @@ private:
     QLabel* wait_;
     QSlider* slider_;
     QPushButton* play_;
+    QPushButton* next_;
 };
 
 } // namespace viewpipe::gui

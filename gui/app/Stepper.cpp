@@ -52,6 +52,19 @@ bool Stepper::isAnimating() const
     return animation_->state() == QAbstractAnimation::Running;
 }
 
+void Stepper::setLastStage(std::optional<int> stage)
+{
+    lastStage_ = stage;
+    if (target_ > lastStage())
+        goToStage(lastStage(), false);
+    emit moved();
+}
+
+int Stepper::lastStage() const
+{
+    return std::clamp(lastStage_.value_or(stageCount()), 0, stageCount());
+}
+
 int Stepper::shownStage() const
 {
     return transition_ ? transition_->to() : stage_;
@@ -59,7 +72,7 @@ int Stepper::shownStage() const
 
 void Stepper::goToStage(int stage, bool animate)
 {
-    target_ = std::clamp(stage, 0, stageCount());
+    target_ = std::clamp(stage, 0, lastStage());
     if (!animate) {
         animation_->stop();
         transition_.reset();
@@ -77,9 +90,11 @@ void Stepper::goToStage(int stage, bool animate)
 
 void Stepper::play()
 {
-    if (stage_ >= stageCount())
+    if (stage_ >= lastStage())
         goToStage(0, false);
-    target_ = stageCount();
+    if (lastStage() == 0)
+        return;
+    target_ = lastStage();
     stepMilliseconds_ = kStepMilliseconds;
     playing_ = true;
     startStep(false);
@@ -96,7 +111,7 @@ void Stepper::restart()
     animation_->stop();
     transition_.reset();
     playing_ = false;
-    stage_ = target_ = std::min(stage_, stageCount());
+    stage_ = target_ = std::min(stage_, lastStage());
     rest();
     emit moved();
 }

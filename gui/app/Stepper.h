@@ -36,6 +36,10 @@ public:
     // The stage the picture is at or moving to.
     int shownStage() const;
     int stageCount() const;
+    // The highest stage the stepper goes to (a lesson's question holds it before the stage it asks
+    // about, stepShows); the last stage by default. A step beyond it goes no further.
+    void setLastStage(std::optional<int> stage);
+    int lastStage() const;
     bool isAnimating() const;
     bool isPlaying() const { return playing_; }
     // After the document's scene changed: the picture at rest at the same stage, or the last one.
@@ -61,6 +65,7 @@ private:
     QVariantAnimation* animation_;
     int stage_ = 0;  // where the picture is, or where the running step started
     int target_ = 0; // where the stepper is going
+    std::optional<int> lastStage_;
     int stepMilliseconds_;
     bool playing_ = false;
     std::optional<StageMotion> transition_;

@@ -132,6 +132,32 @@ TEST(Lesson, TheBuiltInLessonsAreValid)
 
 // Tries: two unless the lesson says; written back only when it says; the
 // results hold the last answer checked and how many were.
+// While a question is open its step shows no stage from the one it asks about on, nor the stages'
+// texts; once answered, every stage (the app's stepper and the page follow this one rule).
+TEST(Lesson, AnOpenQuestionHoldsTheStagesBeforeItsAnswer)
+{
+    int questions = 0;
+    for (const auto& entry : std::filesystem::directory_iterator(std::string(viewpipe::build::dataDir) + "/lessons")) {
+        const Lesson lesson = loadLesson(entry.path());
+        for (const LessonStep& step : lesson.steps) {
+            const int stages = int(buildPipeline(step.scene.camera, step.scene.effects).stages.size());
+            const StepShows answered = stepShows(step, true, stages);
+            EXPECT_EQ(answered.lastStage, stages);
+            EXPECT_TRUE(answered.stageTexts);
+            if (!step.question)
+                continue;
+            ++questions;
+            const StepShows asking = stepShows(step, false, stages);
+            EXPECT_FALSE(asking.stageTexts) << entry.path();
+            EXPECT_EQ(asking.lastStage, askingStage(step));
+            const Question& q = *step.question;
+            if (q.kind == QuestionKind::Where || q.kind == QuestionKind::SignW || q.kind == QuestionKind::WhichStage)
+                EXPECT_LT(asking.lastStage, q.stage) << entry.path() << ": the stage asked about is held back";
+        }
+    }
+    EXPECT_GT(questions, 30);
+}
+
 TEST(Lesson, AQuestionsTriesAreTwoUnlessTheLessonSays)
 {
     const Lesson twice = lessonWith(houseStep(R"({"kind": "inside", "prompt": "p", "point": [0, 0, 0]})"));

@@ -5,7 +5,12 @@
 
 #include <QApplication>
 #include <QDirIterator>
+#include <QAbstractButton>
+#include <QFileDialog>
 #include <QFileInfo>
+#include <QLineEdit>
+#include <QMessageBox>
+#include <QTimer>
 #include <QStandardPaths>
 #include <QSurfaceFormat>
 #include <QTabBar>
@@ -91,6 +96,63 @@ inline int showEveryBuiltInStage(viewpipe::gui::MainWindow& window, const std::f
         }
     }
     return shown;
+}
+
+// The dialog of type T on screen (a window that is not active has no active modal widget), or null.
+template <class T> T* shownDialog()
+{
+    for (QWidget* widget : QApplication::topLevelWidgets())
+        if (auto* dialog = qobject_cast<T*>(widget); dialog && dialog->isVisible())
+            return dialog;
+    return nullptr;
+}
+
+// Answers the next modal question boxes in turn, each by clicking the button
+// with its text; `asked`, where given, gets the last question's text.
+inline void answerNextQuestions(const QStringList& texts, QString* asked = nullptr, int triesLeft = 100)
+{
+    if (texts.isEmpty())
+        return;
+    QTimer::singleShot(100, [texts, asked, triesLeft] {
+        auto* box = shownDialog<QMessageBox>();
+        if (!box) {
+            if (triesLeft > 0)
+                answerNextQuestions(texts, asked, triesLeft - 1); // not up yet
+            return;
+        }
+        if (asked)
+            *asked = box->text();
+        for (QAbstractButton* button : box->buttons())
+            if (button->text() == texts.front()) {
+                button->click();
+                return answerNextQuestions(texts.mid(1), asked);
+            }
+        qFatal("no button \"%s\"", qPrintable(texts.front()));
+    });
+}
+
+inline void answerNextQuestion(const QString& text, QString* asked = nullptr, int triesLeft = 100)
+{
+    answerNextQuestions({text}, asked, triesLeft);
+}
+
+// Answers the next file dialog with `path`.
+inline void answerNextFileDialog(const QString& path, int triesLeft = 100)
+{
+    QTimer::singleShot(100, [path, triesLeft] {
+        auto* dialog = shownDialog<QFileDialog>();
+        if (!dialog) {
+            if (triesLeft > 0)
+                answerNextFileDialog(path, triesLeft - 1);
+            return;
+        }
+        // Typed into the file name, as a person types a whole path, then accepted.
+        auto* name = dialog->findChild<QLineEdit*>("fileNameEdit");
+        if (!name)
+            qFatal("the file dialog has no file name field");
+        name->setText(path);
+        QMetaObject::invokeMethod(dialog, "accept", Qt::QueuedConnection);
+    });
 }
 
 // The body of a GUI test's main(): VTK's OpenGL format, settings and data

@@ -87,23 +87,6 @@ void moveBackPlane(MainWindow& window, double back)
     window.document()->setCamera(view, "Edit view.back");
 }
 
-// Answers the next modal question box by clicking the button with `text`.
-void answerNextQuestion(const QString& text, int triesLeft = 100)
-{
-    QTimer::singleShot(100, [text, triesLeft] {
-        auto* box = qobject_cast<QMessageBox*>(QApplication::activeModalWidget());
-        if (!box) {
-            if (triesLeft > 0)
-                answerNextQuestion(text, triesLeft - 1); // not up yet
-            return;
-        }
-        for (QAbstractButton* button : box->buttons())
-            if (button->text() == text)
-                return button->click();
-        qFatal("no button \"%s\"", qPrintable(text));
-    });
-}
-
 // Run in a child process: edits the house, lets autosave write it, then dies
 // as a crash would (SIGKILL: no destructor, no clean-up).
 [[noreturn]] void editThenCrash()

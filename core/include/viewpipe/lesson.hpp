@@ -80,6 +80,19 @@ struct Lesson {
 int askingStage(const LessonStep& step);
 // The stage a step shows once its question is answered, or all along without one.
 int revealedStage(const LessonStep& step);
+// What a step lets the app and the page show, one rule for both. While its
+// question is open: no stage past the one it waits at (the stepper, the slider
+// and the stage list hold there) and none of the stages' names, matrices and
+// captions, nor the step's caption. Once answered, or without a question, any
+// stage with its texts. In a lesson a traced point's rows are those up to the
+// stage shown (a later row may be a later question's answer), and its verdict
+// on the canonical volume shows only at the last stage.
+struct StepShows {
+    int lastStage = 0;       // the highest stage the step may show
+    bool stageTexts = true;  // stage names, matrices, captions, the step's caption
+};
+StepShows stepShows(const LessonStep& step, bool answered, int stageCount);
+
 // The point a step marks: the point its question asks about (where, inside,
 // sign_w), otherwise the step's own trace.
 std::optional<Vec3<double>> tracedAt(const LessonStep& step);

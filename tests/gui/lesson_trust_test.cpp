@@ -1,0 +1,448 @@
+// A lesson used in front of a class: nothing the user typed is lost, whichever
+// way a prompt is answered, and nothing on screen gives a question's answer
+// (or a later one's) away before it is answered.
+
+#include <QAbstractButton>
+#include <QDir>
+#include <QDockWidget>
+#include <QFile>
+#include <QGroupBox>
+#include <QLabel>
+#include <QLineEdit>
+#include <QListWidget>
+#include <QPlainTextEdit>
+#include <QPushButton>
+#include <QSlider>
+#include <QTemporaryDir>
+#include <QTextDocumentFragment>
+#include <QtTest>
+
+#include <vtkRenderWindow.h>
+#include <vtkRendererCollection.h>
+
+#include <cmath>
+
+#include "build_paths.h"
+#include "drawn_texts.h"
+#include "app/LessonPanel.h"
+#include "app/MainWindow.h"
+#include "app/ParameterPanel.h"
+#include "app_window.h"
+#include "viewpipe/format.hpp"
+#include "viewpipe/lesson.hpp"
+
+using namespace viewpipe;
+using namespace viewpipe::gui;
+
+namespace {
+
+const QString kHouse = QString(viewpipe::build::dataDir) + "/scenes/house.json";
+const QString kFoley = QString(viewpipe::build::dataDir) + "/lessons/foley-nper.json";
+const QString kOpenGl = QString(viewpipe::build::dataDir) + "/lessons/opengl-perspective.json";
+
+template <class T> T* lessonChild(MainWindow& w, const QString& name)
+{
+    T* found = w.lessonPanel()->findChild<T*>(name);
+    if (!found)
+        qFatal("no %s", qPrintable(name));
+    return found;
+}
+
+vtkRenderer* renderer(MainWindow& window, const char* view)
+{
+    return window.findChild<QVTKOpenGLNativeWidget*>(view)->renderWindow()->GetRenderers()->GetFirstRenderer();
+}
+
+// Every text the window shows or says: visible labels, buttons, fields and
+// list entries, accessible names and descriptions, the window's title, and
+// the texts drawn in both views.
+QStringList shownTexts(MainWindow& w)
+{
+    w.renderNow();
+    QStringList texts{w.windowTitle()};
+    for (QWidget* widget : w.findChildren<QWidget*>()) {
+        if (!widget->isVisibleTo(&w))
+            continue;
+        texts << widget->accessibleName() << widget->accessibleDescription();
+        if (auto* label = qobject_cast<QLabel*>(widget))
+            texts << QTextDocumentFragment::fromHtml(label->text()).toPlainText();
+        else if (auto* button = qobject_cast<QAbstractButton*>(widget))
+            texts << button->text();
+        else if (auto* field = qobject_cast<QLineEdit*>(widget))
+            texts << field->text();
+        else if (auto* edit = qobject_cast<QPlainTextEdit*>(widget))
+            texts << edit->toPlainText();
+        else if (auto* list = qobject_cast<QListWidget*>(widget))
+            for (int k = 0; k < list->count(); ++k)
+                texts << list->item(k)->text() << list->item(k)->data(Qt::AccessibleTextRole).toString();
+    }
+    for (const char* view : {"worldView", "projectedView"})
+        if (w.findChild<QVTKOpenGLNativeWidget*>(view)->isVisible())
+            for (const DrawnText& text : drawnTexts(renderer(w, view)).texts)
+                texts << QString::fromStdString(text.text);
+    texts.removeAll(QString());
+    return texts;
+}
+
+// A number as any panel may write it, cut to four significant digits (a
+// panel rounds to four or more), its sign dropped (written − or -); nothing
+// where that is too short to be told from other numbers (0.5, 2, 10).
+std::optional<QString> telltale(double value)
+{
+    QString text = QString::fromStdString(formatSignificant(std::abs(value), 12));
+    if (text.contains('e'))
+        return std::nullopt;
+    int digits = 0, cut = 0;
+    bool significant = false;
+    for (; cut < text.size() && digits < 4; ++cut) {
+        significant = significant || (text[cut].isDigit() && text[cut] != '0');
+        digits += significant && text[cut].isDigit();
+    }
+    text.truncate(cut);
+    if (digits < 4 || !text.contains('.'))
+        return std::nullopt;
+    return text;
+}
+
+// The texts that would give a question's answer away, each a list of numbers
+// that one text holds in this order to give it: a point's coordinates (not
+// one of them alone: a matrix's entry may equal one), an entry; the verdict on
+// the canonical volume for the point an inside question asks about (checked
+// while that point is traced).
+QList<QStringList> answerTexts(const Question& question, const std::optional<Vec3<double>>& traced)
+{
+    QStringList numbers;
+    const auto add = [&numbers](double value) {
+        if (const auto text = telltale(value))
+            numbers << *text;
+    };
+    switch (question.kind) {
+    case QuestionKind::Where:
+        for (int k = 0; k < 3; ++k)
+            add(question.where[k]);
+        break;
+    case QuestionKind::Entry:
+        add(question.entry);
+        break;
+    case QuestionKind::Inside:
+        if (traced == question.point)
+            return {{"the canonical volume."}};
+        break;
+    default:
+        break;
+    }
+    return numbers.isEmpty() ? QList<QStringList>{} : QList<QStringList>{numbers};
+}
+
+// Whether `text` holds `parts` in order.
+bool holdsInOrder(const QString& text, const QStringList& parts)
+{
+    int from = 0;
+    for (const QString& part : parts) {
+        from = text.indexOf(part, from);
+        if (from < 0)
+            return false;
+        from += part.size();
+    }
+    return true;
+}
+
+// The first of `texts` that holds an answer of questions `from` on, with the question's step.
+QString givenAway(const Lesson& lesson, std::size_t from, const QStringList& texts, const std::optional<Vec3<double>>& traced)
+{
+    for (std::size_t j = from; j < lesson.steps.size(); ++j)
+        if (lesson.steps[j].question)
+            for (const QStringList& answer : answerTexts(*lesson.steps[j].question, traced))
+                for (const QString& text : texts)
+                    if (holdsInOrder(text, answer))
+                        return QString("step %1's answer %2 in \"%3\"").arg(j + 1).arg(answer.join(", "), text.simplified());
+    return {};
+}
+
+void typeInto(QWidget* field, const QString& text)
+{
+    field->setFocus();
+    QTest::keyClick(field, Qt::Key_A, Qt::ControlModifier);
+    QTest::keyClick(field, Qt::Key_Backspace);
+    QTest::keyClicks(field, text);
+    QTest::keyClick(field, Qt::Key_Return);
+}
+
+// Types a new VRP x in the parameter panel, as a person edits the scene.
+void editVrpX(MainWindow& w, const QString& x)
+{
+    typeInto(w.parameters()->fields("view.vrp").at(0), x);
+}
+
+double vrpX(MainWindow& w)
+{
+    return std::get<foley::ViewSpec<double>>(w.document()->scene().camera).vrp.x();
+}
+
+// Ticks "Edit the lesson" with a click on its check box, where it is not ticked yet.
+void openEditor(MainWindow& w)
+{
+    auto* editor = lessonChild<QGroupBox>(w, "lessonEditor");
+    QVERIFY(QTest::qWaitFor([editor] { return editor->isVisible(); }));
+    if (!editor->isChecked())
+        QTest::mouseClick(editor, Qt::LeftButton, {}, QPoint(10, 10));
+    QVERIFY(editor->isChecked());
+}
+
+} // namespace
+
+class LessonTrustTest : public QObject {
+    Q_OBJECT
+private slots:
+    void init() { window_ = openWindow(kHouse, {1280, 800}); }
+    void cleanup()
+    {
+        if (window_)
+            window_->lessonFlow()->lesson()->undoStack()->setClean();
+        closeWindow(window_);
+    }
+
+    // Before each question of every built-in lesson is answered, nothing the
+    // window shows or says holds its answer or a later one; ▶, the slider and
+    // Play hold before the stage a question asks about.
+    void nothingShownGivesAnAnswerAway()
+    {
+        MainWindow& w = *window_;
+        int looks = 0;
+        const QFileInfoList files = QDir(QString(viewpipe::build::dataDir) + "/lessons").entryInfoList({"*.json"}, QDir::Files, QDir::Name);
+        QVERIFY(files.size() >= 5);
+        for (const QFileInfo& file : files) {
+            const Lesson lesson = loadLesson(file.absoluteFilePath().toStdString());
+            QVERIFY(w.lessonFlow()->openLesson(file.absoluteFilePath()));
+            LessonDocument* document = w.lessonFlow()->lesson();
+            for (int k = 0; k < int(lesson.steps.size()); ++k) {
+                const QString where = file.fileName() + QString(", step %1").arg(k + 1);
+                document->goTo(k);
+                settle(w);
+                if (lesson.steps[std::size_t(k)].question) {
+                    const QString early = givenAway(lesson, std::size_t(k), shownTexts(w), w.traced());
+                    QVERIFY2(early.isEmpty(), qPrintable(where + ", asking: " + early));
+                    // The stepper holds: ▶, the slider and Play go no further than the stage the step waits at.
+                    const int holds = w.stepper()->target();
+                    QCOMPARE(holds, askingStage(lesson.steps[std::size_t(k)]));
+                    click(w.stagePanel()->findChild<QPushButton*>("nextButton"), false);
+                    w.stepper()->stepBy(1);
+                    QCOMPARE(w.stepper()->target(), holds);
+                    w.stagePanel()->findChild<QSlider*>("stageSlider")->setValue(holds + 1);
+                    QCOMPARE(w.stepper()->target(), holds);
+                    click(w.stagePanel()->findChild<QPushButton*>("playButton"), holds > 0);
+                    QCOMPARE(w.stepper()->target(), holds);
+                    settle(w);
+                    QCOMPARE(w.stepper()->shownStage(), holds);
+                    const QString pressed = givenAway(lesson, std::size_t(k), shownTexts(w), w.traced());
+                    QVERIFY2(pressed.isEmpty(), qPrintable(where + ", asking, after ▶ and Play: " + pressed));
+                    document->reveal();
+                    settle(w);
+                    ++looks;
+                }
+                const QString later = givenAway(lesson, std::size_t(k) + 1, shownTexts(w), w.traced());
+                QVERIFY2(later.isEmpty(), qPrintable(where + ", answered: " + later));
+                ++looks;
+            }
+            document->close();
+        }
+        QVERIFY(looks > 60);
+    }
+
+    // The answers themselves are found where they are shown: the check above can fail.
+    void anAnswerShownIsFound()
+    {
+        MainWindow& w = *window_;
+        const Lesson lesson = loadLesson(kFoley.toStdString());
+        QVERIFY(w.lessonFlow()->openLesson(kFoley));
+        w.lessonFlow()->lesson()->goTo(6); // step 7: where is (16, 10, 30) after S_per?
+        w.lessonFlow()->lesson()->reveal();
+        settle(w);
+        QVERIFY(!givenAway(lesson, 6, shownTexts(w), w.traced()).isEmpty());
+    }
+
+    // The reported loss: a scene edit, then a title typed in the lesson's editor.
+    void aTitleTypedAfterASceneEditIsKept()
+    {
+        MainWindow& w = *window_;
+        QVERIFY(w.lessonFlow()->openLesson(kFoley));
+        openEditor(w);
+        editVrpX(w, "3");
+        QCOMPARE(vrpX(w), 3.0);
+        QString asked;
+        answerNextQuestion("Cancel", &asked, 5); // were anything asked within half a second: the safe answer
+        QVERIFY(w.lessonFlow()->lesson()->isRevealed(0)); // the editor shows the answers
+        typeInto(lessonChild<QLineEdit>(w, "titleEdit"), "Foley, revised");
+        QTest::qWait(800);
+        QCOMPARE(asked, QString()); // nothing to ask: the view stays as the user left it
+        QVERIFY(w.lessonFlow()->lesson()->isOpen());
+        QCOMPARE(w.lessonFlow()->lesson()->lesson().title, std::string("Foley, revised"));
+        QCOMPARE(vrpX(w), 3.0);
+        QVERIFY(w.findChild<QDockWidget*>("lessonDock")->isVisible());
+        QCOMPARE(lessonChild<QLineEdit>(w, "titleEdit")->text(), QString("Foley, revised"));
+        QCOMPARE(w.lessonFlow()->lesson()->undoStack()->count(), 1);
+        // Quit asks about the lesson (not about answers: the editor's showing them is no student's answer);
+        // Cancel keeps the window, the lesson and the scene as they are.
+        QVERIFY(!w.lessonFlow()->lesson()->hasUnsavedAnswers());
+        answerNextQuestion("Cancel", &asked);
+        QVERIFY(!w.close());
+        QVERIFY2(asked.contains("lesson has unsaved changes"), qPrintable(asked));
+        QVERIFY(w.lessonFlow()->lesson()->isOpen());
+        QCOMPARE(w.lessonFlow()->lesson()->lesson().title, std::string("Foley, revised"));
+        QCOMPARE(vrpX(w), 3.0);
+    }
+
+    // Leaving the editor applies what was typed.
+    void leavingTheEditorKeepsWhatWasTyped()
+    {
+        MainWindow& w = *window_;
+        QVERIFY(w.lessonFlow()->openLesson(kFoley));
+        openEditor(w);
+        auto* title = lessonChild<QLineEdit>(w, "titleEdit");
+        title->setFocus();
+        QTest::keyClick(title, Qt::Key_End);
+        QTest::keyClicks(title, " (draft)");
+        QTest::mouseClick(lessonChild<QGroupBox>(w, "lessonEditor"), Qt::LeftButton, {}, QPoint(10, 10));
+        QVERIFY(!lessonChild<QGroupBox>(w, "lessonEditor")->isChecked());
+        QVERIFY(QString::fromStdString(w.lessonFlow()->lesson()->lesson().title).endsWith(" (draft)"));
+        // A refused edit (an empty title) opens the editor again with the reason, and keeps the text.
+        openEditor(w);
+        title->setFocus();
+        QTest::keyClick(title, Qt::Key_A, Qt::ControlModifier);
+        QTest::keyClick(title, Qt::Key_Backspace);
+        QTest::mouseClick(lessonChild<QGroupBox>(w, "lessonEditor"), Qt::LeftButton, {}, QPoint(10, 10));
+        QTRY_VERIFY(lessonChild<QGroupBox>(w, "lessonEditor")->isChecked());
+        QVERIFY(lessonChild<QLabel>(w, "editError")->text().contains("title"));
+        QVERIFY(QString::fromStdString(w.lessonFlow()->lesson()->lesson().title).endsWith(" (draft)"));
+    }
+
+    // A step on another scene, with the scene edited: each choice of the prompt.
+    void movingToAStepOnAnotherSceneAsksFirst()
+    {
+        MainWindow& w = *window_;
+        QVERIFY(w.lessonFlow()->openLesson(kFoley));
+        LessonDocument* lesson = w.lessonFlow()->lesson();
+        lesson->goTo(2);
+        w.lessonFlow()->lesson()->reveal();
+        editVrpX(w, "3");
+        // Step 4 shows another scene: Cancel stays at step 3 with the edit.
+        QString asked;
+        answerNextQuestion("Cancel", &asked);
+        click(lessonChild<QPushButton>(w, "lessonNext"));
+        QTRY_VERIFY(asked.contains("scene has unsaved changes"));
+        QCOMPARE(lesson->step(), 2);
+        QCOMPARE(vrpX(w), 3.0);
+        QVERIFY(w.document()->isModified());
+        // Discard goes on to step 4, its scene as the lesson has it.
+        asked.clear();
+        answerNextQuestion("Discard", &asked);
+        click(lessonChild<QPushButton>(w, "lessonNext"));
+        QTRY_COMPARE(lesson->step(), 3);
+        QVERIFY(asked.contains("scene has unsaved changes"));
+        QVERIFY(w.document()->scene() == lesson->currentStep().scene);
+        QVERIFY(!w.document()->isModified());
+        // Save writes the edited scene first, then goes on.
+        lesson->goTo(2);
+        QVERIFY(w.document()->scene() == lesson->currentStep().scene);
+        editVrpX(w, "4");
+        QTemporaryDir folder;
+        const QString saved = folder.filePath("edited-house.json");
+        answerNextQuestion("Save");
+        answerNextFileDialog(saved);
+        click(lessonChild<QPushButton>(w, "lessonNext"));
+        QTRY_COMPARE(lesson->step(), 3);
+        QVERIFY(QFile::exists(saved));
+        QCOMPARE(std::get<foley::ViewSpec<double>>(loadScene(kHouse.toStdString()).camera).vrp.x(), 0.0); // the preset untouched
+        const Scene written = loadScene(saved.toStdString());
+        QCOMPARE(std::get<foley::ViewSpec<double>>(written.camera).vrp.x(), 4.0);
+    }
+
+    // Opening another lesson over an edited scene: Cancel keeps the lesson open and the edit.
+    void openingAnotherLessonAsksFirst()
+    {
+        MainWindow& w = *window_;
+        QVERIFY(w.lessonFlow()->openLesson(kFoley));
+        w.lessonFlow()->lesson()->goTo(2);
+        editVrpX(w, "3");
+        QString asked;
+        answerNextQuestion("Cancel", &asked);
+        QVERIFY(!w.lessonFlow()->openLesson(kOpenGl));
+        QVERIFY(asked.contains("scene has unsaved changes"));
+        QCOMPARE(QFileInfo(w.lessonFlow()->lesson()->filePath()).fileName(), QString("foley-nper.json"));
+        QCOMPARE(w.lessonFlow()->lesson()->step(), 2);
+        QCOMPARE(vrpX(w), 3.0);
+        answerNextQuestion("Discard");
+        QVERIFY(w.lessonFlow()->openLesson(kOpenGl));
+        QCOMPARE(QFileInfo(w.lessonFlow()->lesson()->filePath()).fileName(), QString("opengl-perspective.json"));
+        QVERIFY(w.document()->scene() == w.lessonFlow()->lesson()->currentStep().scene);
+    }
+
+    // Closing a lesson with an edit, or with answers not saved: each choice.
+    void closingALessonAsksAboutEditsAndAnswers()
+    {
+        MainWindow& w = *window_;
+        QVERIFY(w.lessonFlow()->openLesson(kFoley));
+        LessonDocument* lesson = w.lessonFlow()->lesson();
+        lesson->reveal(); // shown unanswered: the results say so, and are not saved
+        QVERIFY(lesson->hasUnsavedAnswers());
+        QAction* close = w.actions()->action("lesson.close");
+        QString asked;
+        answerNextQuestion("Cancel", &asked);
+        close->trigger();
+        QVERIFY(asked.contains("answers"));
+        QVERIFY(lesson->isOpen());
+        QTemporaryDir folder;
+        const QString results = folder.filePath("lesson-results.json");
+        answerNextQuestion("Save");
+        answerNextFileDialog(results);
+        close->trigger();
+        QTRY_VERIFY(!lesson->isOpen());
+        QVERIFY(QFile::exists(results));
+
+        // An edit: Cancel keeps it, Save writes it, Discard drops it. (An edit asks the questions afresh:
+        // no answers to ask about.)
+        QVERIFY(w.lessonFlow()->openLesson(kFoley));
+        openEditor(w);
+        typeInto(lessonChild<QLineEdit>(w, "titleEdit"), "Kept");
+        answerNextQuestion("Cancel", &asked);
+        close->trigger();
+        QVERIFY2(asked.contains("lesson has unsaved changes"), qPrintable(asked));
+        QVERIFY(lesson->isOpen());
+        QCOMPARE(lesson->lesson().title, std::string("Kept"));
+        const QString file = folder.filePath("kept.json");
+        answerNextQuestion("Save");
+        answerNextFileDialog(file);
+        close->trigger();
+        QTRY_VERIFY(!lesson->isOpen());
+        QCOMPARE(loadLesson(file.toStdString()).title, std::string("Kept"));
+        QVERIFY(w.lessonFlow()->openLesson(file));
+        openEditor(w);
+        typeInto(lessonChild<QLineEdit>(w, "titleEdit"), "Dropped");
+        answerNextQuestion("Discard");
+        close->trigger();
+        QTRY_VERIFY(!lesson->isOpen());
+        QCOMPARE(loadLesson(file.toStdString()).title, std::string("Kept"));
+    }
+
+private:
+    // A click where a person clicks, on a button that is (or is not) enabled: a disabled one does nothing.
+    static void click(QWidget* widget, bool enabled = true)
+    {
+        QVERIFY(widget);
+        QCOMPARE(widget->isEnabled(), enabled);
+        QVERIFY(QTest::qWaitFor([widget] { return widget->isVisible() && widget->width() > 4; }));
+        QTest::mouseClick(widget, Qt::LeftButton, {}, widget->rect().center());
+    }
+
+    // The picture at rest where the stepper is going (a test's own pace, not the clock's).
+    static void settle(MainWindow& w) { w.stepper()->goToStage(w.stepper()->target(), false); }
+
+    std::unique_ptr<MainWindow> window_;
+};
+
+int main(int argc, char** argv)
+{
+    return runAppTests<LessonTrustTest>(argc, argv);
+}
+
+#include "lesson_trust_test.moc"
