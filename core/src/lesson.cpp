@@ -324,6 +324,7 @@ Lesson parseLesson(const std::string& text, const std::filesystem::path& baseDir
     lesson.title = readString(root["title"], "title"); // plain text: a page's title and heading
     if (lesson.title.find_first_not_of(" \t\n") == std::string::npos)
         throw InputError("title", "is empty");
+    checkTextCharacters(lesson.title, "title");
     const Json& steps = root["steps"];
     if (!steps.is_array() || steps.empty() || steps.size() > kMaxSteps)
         throw InputError("steps", "must be an array of 1 to " + std::to_string(kMaxSteps) + " steps");

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cctype>
+#include <cstdio>
 #include <cstring>
 #include <map>
 #include <utility>
@@ -304,9 +305,71 @@ std::vector<MathRun> mathRuns(const std::string& text, const std::string& path)
     return runs;
 }
 
+const std::vector<TextSymbol>& textSymbols()
+{
+    static const std::vector<TextSymbol> symbols = {
+        // Greek: those like Latin capitals are set as them, as TeX sets them.
+        {"α", "\\ensuremath{\\alpha}"}, {"β", "\\ensuremath{\\beta}"}, {"γ", "\\ensuremath{\\gamma}"},
+        {"δ", "\\ensuremath{\\delta}"}, {"ε", "\\ensuremath{\\varepsilon}"}, {"ζ", "\\ensuremath{\\zeta}"},
+        {"η", "\\ensuremath{\\eta}"}, {"θ", "\\ensuremath{\\theta}"}, {"ι", "\\ensuremath{\\iota}"},
+        {"κ", "\\ensuremath{\\kappa}"}, {"λ", "\\ensuremath{\\lambda}"}, {"μ", "\\ensuremath{\\mu}"},
+        {"ν", "\\ensuremath{\\nu}"}, {"ξ", "\\ensuremath{\\xi}"}, {"ο", "\\ensuremath{o}"},
+        {"π", "\\ensuremath{\\pi}"}, {"ρ", "\\ensuremath{\\rho}"}, {"ς", "\\ensuremath{\\varsigma}"},
+        {"σ", "\\ensuremath{\\sigma}"}, {"τ", "\\ensuremath{\\tau}"}, {"υ", "\\ensuremath{\\upsilon}"},
+        {"φ", "\\ensuremath{\\varphi}"}, {"χ", "\\ensuremath{\\chi}"}, {"ψ", "\\ensuremath{\\psi}"},
+        {"ω", "\\ensuremath{\\omega}"}, {"Α", "A"}, {"Β", "B"}, {"Γ", "\\ensuremath{\\Gamma}"},
+        {"Δ", "\\ensuremath{\\Delta}"}, {"Ε", "E"}, {"Ζ", "Z"}, {"Η", "H"}, {"Θ", "\\ensuremath{\\Theta}"},
+        {"Ι", "I"}, {"Κ", "K"}, {"Λ", "\\ensuremath{\\Lambda}"}, {"Μ", "M"}, {"Ν", "N"},
+        {"Ξ", "\\ensuremath{\\Xi}"}, {"Ο", "O"}, {"Π", "\\ensuremath{\\Pi}"}, {"Ρ", "P"},
+        {"Σ", "\\ensuremath{\\Sigma}"}, {"Τ", "T"}, {"Υ", "\\ensuremath{\\Upsilon}"},
+        {"Φ", "\\ensuremath{\\Phi}"}, {"Χ", "X"}, {"Ψ", "\\ensuremath{\\Psi}"}, {"Ω", "\\ensuremath{\\Omega}"},
+        // Signs and punctuation.
+        {"±", "\\ensuremath{\\pm}"}, {"×", "\\ensuremath{\\times}"}, {"÷", "\\ensuremath{\\div}"},
+        {"·", "\\ensuremath{\\cdot}"}, {"°", "\\ensuremath{^\\circ}"}, {"−", "\\ensuremath{-}"},
+        {"≤", "\\ensuremath{\\le}"}, {"≥", "\\ensuremath{\\ge}"}, {"≠", "\\ensuremath{\\ne}"},
+        {"≈", "\\ensuremath{\\approx}"}, {"≡", "\\ensuremath{\\equiv}"}, {"∼", "\\ensuremath{\\sim}"},
+        {"→", "\\ensuremath{\\to}"}, {"←", "\\ensuremath{\\leftarrow}"}, {"↔", "\\ensuremath{\\leftrightarrow}"},
+        {"⇒", "\\ensuremath{\\Rightarrow}"}, {"↦", "\\ensuremath{\\mapsto}"}, {"∞", "\\ensuremath{\\infty}"},
+        {"√", "\\ensuremath{\\surd}"}, {"∈", "\\ensuremath{\\in}"}, {"∉", "\\ensuremath{\\notin}"},
+        {"⊥", "\\ensuremath{\\perp}"}, {"∥", "\\ensuremath{\\parallel}"}, {"∘", "\\ensuremath{\\circ}"},
+        {"∠", "\\ensuremath{\\angle}"}, {"′", "\\ensuremath{'}"}, {"″", "\\ensuremath{''}"},
+        {"…", "\\ldots{}"}, {"–", "--"}, {"—", "---"}, {"‘", "`"}, {"’", "'"}, {"“", "``"}, {"”", "''"},
+        {"•", "\\textbullet{}"},
+        {"\u00a0", "~"},
+    };
+    return symbols;
+}
+
+void checkTextCharacters(const std::string& text, const std::string& path)
+{
+    for (std::size_t k = 0; k < text.size();) {
+        const unsigned char lead = static_cast<unsigned char>(text[k]);
+        const std::size_t length = lead < 0x80 ? 1 : lead < 0xE0 ? 2 : lead < 0xF0 ? 3 : 4;
+        const std::string character = text.substr(k, length);
+        k += length;
+        if (length == 1)
+            continue;
+        char32_t code = lead & (length == 2 ? 0x1F : length == 3 ? 0x0F : 0x07);
+        for (std::size_t b = 1; b < character.size(); ++b)
+            code = (code << 6) | (static_cast<unsigned char>(character[b]) & 0x3F);
+        // Latin-1's letters but Ð, Þ, ð, þ, which pdflatex's default (OT1) fonts lack.
+        const bool latinLetter = code >= 0xC0 && code <= 0xFF && code != 0xD7 && code != 0xF7 && code != 0xD0 &&
+                                 code != 0xDE && code != 0xF0 && code != 0xFE;
+        const auto& symbols = textSymbols();
+        if (latinLetter || std::any_of(symbols.begin(), symbols.end(), [&](const TextSymbol& s) { return character == s.utf8; }))
+            continue;
+        char codePoint[16];
+        std::snprintf(codePoint, sizeof codePoint, "U+%04X", unsigned(code));
+        throw InputError(path, "has the character " + character + " (" + codePoint +
+                                   "), which not every output sets (the handout's pdflatex and the pictures' font have "
+                                   "no glyph for it): write it in words, or as math");
+    }
+}
+
 void checkMathText(const std::string& text, const std::string& path)
 {
     mathRuns(text, path);
+    checkTextCharacters(text, path);
 }
 
 std::string mathPlainText(const std::string& text)

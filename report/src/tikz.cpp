@@ -7,6 +7,8 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <cstring>
+#include <optional>
 #include <map>
 #include <set>
 #include <sstream>
@@ -59,28 +61,29 @@ std::string point(const Vec2<double>& p)
     return "(" + number(p.x()) + "," + number(p.y()) + ")";
 }
 
+// The LaTeX of the character beyond ASCII at text[k] that textSymbols() holds, and its length; none otherwise.
+std::optional<std::pair<std::string, std::size_t>> texSymbolAt(const std::string& text, std::size_t k)
+{
+    if (static_cast<unsigned char>(text[k]) < 0x80)
+        return std::nullopt;
+    for (const TextSymbol& symbol : textSymbols())
+        if (text.compare(k, std::strlen(symbol.utf8), symbol.utf8) == 0)
+            return std::make_pair(std::string(symbol.latex), std::strlen(symbol.utf8));
+    return std::nullopt;
+}
+
 } // namespace
 
 std::string texEscaped(const std::string& text)
 {
     std::string out;
     for (std::size_t k = 0; k < text.size(); ++k) {
-        const char c = text[k];
-        // The signs the captions use beyond ASCII, which pdflatex does not know as text.
-        bool sign = false;
-        static const std::pair<std::string, std::string> signs[] = {
-            {"\u00b1", "$\\pm$"},    {"\u2264", "$\\le$"},     {"\u2265", "$\\ge$"},    {"\u2212", "$-$"},
-            {"\u00d7", "$\\times$"}, {"\u00b7", "$\\cdot$"},   {"\u2192", "$\\to$"},    {"\u2248", "$\\approx$"},
-            {"\u00b0", "$^\\circ$"}, {"\u221e", "$\\infty$"}, {"\u2013", "--"},        {"\u2014", "---"}};
-        for (const auto& [utf8, tex] : signs)
-            if (text.compare(k, utf8.size(), utf8) == 0) {
-                out += tex;
-                k += utf8.size() - 1;
-                sign = true;
-                break;
-            }
-        if (sign)
+        if (const auto symbol = texSymbolAt(text, k)) { // a sign pdflatex does not know as text
+            out += symbol->first;
+            k += symbol->second - 1;
             continue;
+        }
+        const char c = text[k];
         switch (c) {
         case '\\': out += "\\textbackslash{}"; break;
         case '&': case '%': case '$': case '#': case '_': case '{': case '}': out += std::string("\\") + c; break;
@@ -119,8 +122,18 @@ std::string texRichText(const std::string& text)
     for (const TextPart& part : parts)
         if (!part.math)
             out += texEscaped(part.text);
-        else if (part.text.find_first_not_of(" ") != std::string::npos) // "$$" would be display math
-            out += "$" + breakable(part.text) + "$";
+        else if (part.text.find_first_not_of(" ") != std::string::npos) { // "$$" would be display math
+            // Math holds characters beyond ASCII only in \text{…}: set as in prose.
+            std::string math;
+            for (std::size_t k = 0; k < part.text.size(); ++k)
+                if (const auto symbol = texSymbolAt(part.text, k)) {
+                    math += symbol->first;
+                    k += symbol->second - 1;
+                } else {
+                    math += part.text[k];
+                }
+            out += "$" + breakable(math) + "$";
+        }
     return out;
 }
 

@@ -60,6 +60,20 @@ TEST(MathText, RefusesWhatItDoesNotSetNamingTheField)
     EXPECT_EQ(refusal("$\\frac{1}{2} \\cdot \\sqrt{3} \\approx \\arctan x$", "x"), "");
 }
 
+// One definition of a lesson's text: what every output sets (textSymbols, Latin-1's letters) is taken,
+// in prose and in \text{…}; what none sets here is refused with its field and code point.
+TEST(MathText, TakesTheCharactersEveryOutputSetsAndNoOther)
+{
+    EXPECT_EQ(refusal("Char α here, ≠ and ≤, é, ü, ß, Å: $\\text{β}$", "steps[0].caption"), "");
+    for (const TextSymbol& symbol : textSymbols())
+        EXPECT_EQ(refusal(std::string("a ") + symbol.utf8 + " b", "x"), "") << symbol.utf8;
+    EXPECT_NE(refusal("Char 日 here", "steps[2].caption").find("has the character 日 (U+65E5)"), std::string::npos);
+    EXPECT_NE(refusal("🙂", "x").find("(U+1F642)"), std::string::npos);
+    EXPECT_NE(refusal("$\\text{日}$", "x").find("(U+65E5)"), std::string::npos);
+    EXPECT_NE(refusal("þ", "x").find("(U+00FE)"), std::string::npos); // pdflatex's default fonts lack it
+    EXPECT_NE(refusal("✓", "x").find("(U+2713)"), std::string::npos);
+}
+
 TEST(MathText, ScriptsAreSetAsTexSetsThem)
 {
     // A minus opening a script is a sign: 10^{-6} is "10" and a tight "−6" above it.

@@ -27,6 +27,7 @@
 #include <vector>
 
 #include "build_paths.h"
+#include "viewpipe/math_text.hpp"
 #include "files.h"
 
 namespace {
@@ -552,7 +553,8 @@ private slots:
         const QString house = QString(::viewpipe::build::dataDir) + "/scenes/house.json";
         for (const auto& [caption, reason] : {std::pair<QString, QString>{"$\\\\nosuchmacro$", "steps[1].caption: has math with \\nosuchmacro"},
                                               {"$\\\\input{/etc/hostname}$", "steps[1].caption: has math with \\input"},
-                                              {"Ω", "steps[1]: pdflatex cannot set its text:"}}) {
+                                              {"Char 日 here", "steps[1].caption: has the character 日 (U+65E5)"},
+                                              {"🙂", "steps[1].caption: has the character 🙂 (U+1F642)"}}) {
             const QString broken = out.path() + "/broken.json";
             QFile file(broken);
             QVERIFY(file.open(QIODevice::WriteOnly));
@@ -564,6 +566,24 @@ private slots:
             QVERIFY2(refused.err.contains(broken + ": " + reason), qPrintable(refused.err));
             QVERIFY(!QDir(out.path() + "/none").exists());
         }
+
+        // What lesson check accepts, pdflatex sets: every sign and letter beyond ASCII, in prose and in \text{…}.
+        QString every = "Char α here, $\\text{β ≠ γ}$, é ü ß Å ÿ:";
+        for (const ::viewpipe::TextSymbol& symbol : ::viewpipe::textSymbols())
+            every += QString(" ") + QString::fromUtf8(symbol.utf8);
+        QJsonObject step{{"scene", house}, {"caption", every}};
+        const QString accepted = out.path() + "/accepted.json";
+        QFile acceptedFile(accepted);
+        QVERIFY(acceptedFile.open(QIODevice::WriteOnly));
+        acceptedFile.write(QJsonDocument(QJsonObject{{"title", "Über α"}, {"steps", QJsonArray{step}}}).toJson());
+        acceptedFile.close();
+        const Run checked = runViewpipe({"lesson", "check", accepted});
+        QVERIFY2(checked.exitCode == 0, qPrintable(checked.err));
+        const Run set = runViewpipe({"lesson", "export", accepted, "--out", out.path() + "/accepted", "--format", "pdf", "--quiet"});
+        QVERIFY2(set.exitCode == 0, qPrintable(set.err));
+        const QString text = tool("pdftotext", {out.path() + "/accepted/handout.pdf", "-"});
+        // (pdftotext writes accents as combining marks, and Ω as the ohm sign.)
+        QVERIFY2(text.contains("Char α here") && text.contains("Φ X Ψ") && text.contains("± × ÷"), qPrintable(text));
     }
 };
 

@@ -45,7 +45,21 @@ std::vector<TextPart> mathTextParts(const std::string& text, const std::string& 
 // math outside the subset, braces that do not pair up, or a `$` not closed.
 std::vector<MathRun> mathRuns(const std::string& text, const std::string& path = "text");
 
-// Throws as mathRuns does: what a reader of untrusted text (a lesson) checks.
+// The characters beyond ASCII that text may hold (outside math, or in
+// \text{…}), each with the LaTeX that sets it: what the app, the page, the
+// pictures (DejaVu Sans) and pdflatex all set. pdflatex sets Latin-1's letters
+// (é, ü, ß; not Ð, Þ, ð, þ) through its own UTF-8 input, the rest as `latex`
+// (texEscaped); CJK, emoji and the like are set by no output here.
+struct TextSymbol {
+    const char* utf8;
+    const char* latex;
+};
+const std::vector<TextSymbol>& textSymbols();
+// Throws InputError(path, reason) for a character that textSymbols() and
+// Latin-1's letters do not hold, naming it and its code point.
+void checkTextCharacters(const std::string& text, const std::string& path);
+
+// Throws as mathRuns and checkTextCharacters do: what a reader of untrusted text (a lesson) checks.
 void checkMathText(const std::string& text, const std::string& path);
 
 // The runs as one line of Unicode text, scripts inline: what a plain-text
