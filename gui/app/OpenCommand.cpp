@@ -23,6 +23,7 @@
 #include "PresentMode.h"
 #include "SceneFiles.h"
 #include "Stepper.h"
+#include "export/VirtualDisplay.h"
 #include "viewpipe/lesson.hpp"
 #include "viewpipe/scene.hpp"
 
@@ -50,11 +51,19 @@ int runOpen(int argc, char** argv, const OpenOptions& options)
                                            std::to_string(options.step) + ")");
     }
 
+    const bool screenshot = !options.screenshot.empty();
+    // A screenshot needs no screen: a private one is started, as export starts it. A window without
+    // a display is refused here, where Qt would abort.
+    std::optional<VirtualDisplay> display;
+    if (screenshot)
+        display.emplace();
+    else if (qEnvironmentVariableIsEmpty("DISPLAY"))
+        throw InputError("DISPLAY", "is not set: the window needs an X display (--screenshot starts a virtual one; "
+                                    "`viewpipe export` saves the stages without one)");
     QSurfaceFormat::setDefaultFormat(QVTKOpenGLNativeWidget::defaultFormat());
     QApplication::setOrganizationName("ViewPipe");
     QApplication::setApplicationName("ViewPipe");
     QApplication app(argc, argv);
-    const bool screenshot = !options.screenshot.empty();
 
     QSettings settings;
     const QString themeName =

@@ -424,6 +424,22 @@ private slots:
         QVERIFY(contentShare(QImage(dir.filePath("headless/01-t-vrp.png"))) > 0.02);
     }
 
+    // A screenshot of the app needs no display either; the window alone is refused in words, not aborted.
+    void openWorksWithoutADisplayForAScreenshot()
+    {
+        QTemporaryDir dir;
+        QProcessEnvironment environment = QProcessEnvironment::systemEnvironment();
+        environment.remove("DISPLAY");
+        const QString file = dir.filePath("stage2.png");
+        const Run shot = runViewpipe({"open", kHouse, "--stage", "2", "--screenshot", file, "--size", "1280x720"}, environment);
+        QVERIFY2(shot.exitCode == 0, qPrintable(shot.err));
+        QCOMPARE(QImage(file).size(), QSize(1280, 720));
+        QVERIFY(contentShare(QImage(file)) > 0.05);
+        const Run window = runViewpipe({"open", kHouse}, environment);
+        QCOMPARE(window.exitCode, 2);
+        QVERIFY2(window.err.contains("DISPLAY: is not set"), qPrintable(window.err));
+    }
+
     // The CAD sheet: four views, each quadrant drawn, one scale (the front and
     // top views of the house are equally wide).
     void cadSheetHasFourViewsAtOneScale()
