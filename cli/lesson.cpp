@@ -1,4 +1,5 @@
-// `viewpipe lesson check FILE` and `viewpipe lesson export FILE --out DIR --format html,pdf`.
+// `viewpipe lesson check FILE`, `viewpipe lesson export FILE --out DIR --format html,pdf` and
+// `viewpipe lesson pack FILE --out DIR`.
 
 #include <filesystem>
 #include <iostream>
@@ -45,7 +46,7 @@ int runExport(const LessonOptions& options)
 
 void addLessonCommand(CLI::App& app)
 {
-    CLI::App* lesson = app.add_subcommand("lesson", "Check a lesson file, or export it as a web page or as a handout and slides");
+    CLI::App* lesson = app.add_subcommand("lesson", "Check a lesson file, export it as a web page or as a handout and slides, or pack it to travel");
     lesson->require_subcommand(1);
 
     auto file = std::make_shared<std::string>();
@@ -69,6 +70,21 @@ void addLessonCommand(CLI::App& app)
         ->capture_default_str();
     exportCommand->add_flag("--quiet", options->quiet, "Print nothing");
     setRun(exportCommand, [options] { return runExport(*options); });
+
+    auto pack = std::make_shared<LessonOptions>();
+    CLI::App* packCommand = lesson->add_subcommand("pack", "Write the lesson with the scenes and meshes it uses into one folder, paths relative to the lesson, to travel");
+    packCommand->add_option("FILE", pack->file, "Lesson file (JSON)")->required();
+    packCommand->add_option("--out", pack->out, "Folder for the lesson, scenes/ and meshes/ (created if missing)")->required();
+    packCommand->add_flag("--quiet", pack->quiet, "Print nothing");
+    setRun(packCommand, [pack] {
+        return guarded(pack->file, "viewpipe lesson pack", [&] {
+            const auto written = gui::packLessonInto(loadLesson(pack->file), fs::path(pack->file).filename().string(), pack->out);
+            if (!pack->quiet)
+                for (const fs::path& file : written)
+                    std::cout << file.string() << "\n";
+            return 0;
+        });
+    });
 }
 
 } // namespace viewpipe::commands

@@ -1,14 +1,16 @@
 #include "viewpipe/lesson.hpp"
-#include "viewpipe/math_text.hpp"
 
 #include <algorithm>
 #include <cctype>
 #include <cmath>
+#include <map>
+#include <set>
 
 #include "file_paths.hpp"
 #include "json_fields.hpp"
 #include "parse_number.hpp"
 #include "viewpipe/format.hpp"
+#include "viewpipe/math_text.hpp"
 
 namespace viewpipe {
 namespace {
@@ -623,6 +625,46 @@ std::string lessonToJson(const Lesson& lesson, const std::filesystem::path& base
         steps.push_back(entry);
     }
     return Json{{"title", lesson.title}, {"steps", steps}}.dump(2) + "\n";
+}
+
+LessonPack packLesson(const Lesson& lesson, const std::string& lessonFileName, const std::filesystem::path& folder)
+{
+    namespace fs = std::filesystem;
+    LessonPack pack;
+    std::map<fs::path, fs::path> placed; // a file read, where it goes (relative to the folder)
+    std::set<fs::path> taken;
+    // Where `source` goes in `subfolder`, and whether it is placed there for the first time.
+    const auto place = [&](const fs::path& source, const std::string& subfolder) -> std::pair<fs::path, bool> {
+        const fs::path key = fs::weakly_canonical(fs::absolute(source));
+        if (const auto found = placed.find(key); found != placed.end())
+            return {found->second, false};
+        fs::path name = fs::path(subfolder) / source.filename();
+        for (int k = 2; taken.count(name); ++k)
+            name = fs::path(subfolder) / (source.stem().string() + "-" + std::to_string(k) + source.extension().string());
+        taken.insert(name);
+        return {placed[key] = name, true};
+    };
+    const fs::path root = fs::absolute(folder);
+    Lesson packed = lesson;
+    for (LessonStep& step : packed.steps) {
+        Scene& scene = step.scene;
+        for (SceneObject& object : scene.objects) {
+            if (object.type != ObjectType::Mesh)
+                continue;
+            const auto [name, first] = place(object.resolvedPath, "meshes");
+            if (first)
+                pack.copies.emplace_back(name, object.resolvedPath);
+            object.resolvedPath = root / name;
+        }
+        if (scene.file.empty())
+            continue; // written inline, its meshes named from the lesson
+        const auto [name, first] = place(scene.file, "scenes");
+        scene.file = root / name;
+        if (first)
+            pack.texts.emplace_back(name, sceneToJson(scene, scene.file.parent_path()));
+    }
+    pack.texts.insert(pack.texts.begin(), {fs::path(lessonFileName), lessonToJson(packed, root)});
+    return pack;
 }
 
 Question parseQuestion(const std::string& text, const Scene& scene)

@@ -21,6 +21,7 @@
 #include "PresentMode.h"
 #include "Stepper.h"
 #include "Waiting.h"
+#include "export/LessonExport.h"
 #include "viewpipe/stage.hpp"
 
 namespace viewpipe::gui {
@@ -76,6 +77,10 @@ void LessonFlow::addActions(ActionRegistry& actions)
     actions.add("lesson.saveAs", tr("Save Lesson &As…"), [this] { saveLessonAs(true); });
     actions.add("lesson.addStep", tr("Add Step From &View"), [this] { addLessonStepFromView(); });
     actions.add("lesson.saveAnswers", tr("Save My &Answers…"), [this] { chooseAndSaveResults(); });
+    actions.add("lesson.pack", tr("&Pack Lesson…"), [this] {
+        if (lesson_->isOpen() && panel_->applyPendingEdits())
+            packLesson(QFileDialog::getExistingDirectory(window_, tr("Pack the lesson into"), dialogPath()));
+    });
     actions.add("lesson.close", tr("&Close Lesson"), [this] {
         if (confirmDiscardLesson())
             lesson_->close();
@@ -98,11 +103,11 @@ void LessonFlow::fillMenu(QMenu* menu, const ActionRegistry& actions)
                 openLesson(path);
         });
     }
-    actions.fill(menu, {"lesson.new", "-", "lesson.save", "lesson.saveAs", "lesson.addStep", "lesson.saveAnswers",
-                        "lesson.close"});
-    // These need a lesson open.
+    actions.fill(menu, {"lesson.new", "-", "lesson.save", "lesson.saveAs", "lesson.pack", "lesson.addStep",
+                        "lesson.saveAnswers", "lesson.close"});
+    // These need a lesson open (Pack Lesson, in the File menu too, is followed there as well).
     connect(menu, &QMenu::aboutToShow, this, [this, &actions] {
-        for (const char* id : {"lesson.save", "lesson.saveAs", "lesson.addStep", "lesson.saveAnswers", "lesson.close"})
+        for (const char* id : {"lesson.save", "lesson.saveAs", "lesson.pack", "lesson.addStep", "lesson.saveAnswers", "lesson.close"})
             actions.action(id)->setEnabled(lesson_->isOpen());
     });
 }
@@ -276,6 +281,22 @@ bool LessonFlow::saveLessonAs(bool askForName)
     if (askForName || path.isEmpty() || isBuiltInFile(path))
         path = chooseFileToSave(window_, tr("Save lesson"), path.isEmpty() ? "lesson.json" : path, tr("Lessons (*.json)"));
     return !path.isEmpty() && saveLesson(path);
+}
+
+bool LessonFlow::packLesson(const QString& folder)
+{
+    if (folder.isEmpty())
+        return false;
+    rememberDialogFolder(folder + "/");
+    const QString name = lesson_->filePath().isEmpty() ? "lesson.json" : QFileInfo(lesson_->filePath()).fileName();
+    try {
+        packLessonInto(lesson_->lesson(), name.toStdString(), folder.toStdString());
+        window_->statusBar()->showMessage(tr("Packed %1 with its scenes and meshes into %2").arg(name, folder), 5000);
+        return true;
+    } catch (const InputError& e) {
+        window_->showMessage(tr("Cannot pack the lesson: %1").arg(QString::fromStdString(e.what())));
+        return false;
+    }
 }
 
 bool LessonFlow::saveLessonResults(const QString& path)

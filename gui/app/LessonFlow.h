@@ -36,6 +36,8 @@ public:
     bool openLesson(Lesson lesson, const QString& path);
     bool saveLesson(const QString& path);
     bool saveLessonResults(const QString& path);
+    // File ▸ Pack Lesson: the lesson open (as edited) with its scenes and meshes into `folder`, to travel.
+    bool packLesson(const QString& folder);
     // A new lesson whose first step is the current view.
     void newLessonFromView();
     // The current view as a step after the one shown.

@@ -286,7 +286,8 @@ void MainWindow::buildMenus()
     QMenu* recent = file->addMenu(tr("Open &Recent"));
     sceneFiles_->setMenus(presets, recent);
     actions_->fill(file, {"file.save", "file.saveAs", "-", "file.importMesh", "file.exportStages", "file.exportWebPage",
-                          "file.exportSheet", "-", "file.quit"});
+                          "file.exportSheet", "lesson.pack", "-", "file.quit"});
+    connect(file, &QMenu::aboutToShow, this, [this] { actions_->action("lesson.pack")->setEnabled(lessonFlow_->lesson()->isOpen()); });
 
     QMenu* edit = menuBar()->addMenu(tr("&Edit"));
     QAction* undo = document_->undoStack()->createUndoAction(this, tr("&Undo"));

@@ -188,4 +188,26 @@ std::vector<fs::path> exportLesson(const Lesson& lesson, const EvaluatedLesson& 
     return staging.commit(files);
 }
 
+std::vector<fs::path> packLessonInto(const Lesson& lesson, const std::string& lessonFileName, const fs::path& out)
+{
+    const LessonPack pack = packLesson(lesson, lessonFileName, out);
+    StagingFolder staging(out);
+    std::set<std::string> names; // what `out` gains: the lesson, scenes/, meshes/
+    const auto target = [&](const fs::path& relative) {
+        names.insert(relative.begin()->string());
+        fs::create_directories((staging.path() / relative).parent_path());
+        return staging.path() / relative;
+    };
+    try {
+        for (const auto& [relative, text] : pack.texts)
+            writeFileAtomically(target(relative), text);
+        for (const auto& [relative, source] : pack.copies)
+            fs::copy_file(source, target(relative));
+    } catch (const std::exception& e) {
+        throw InputError("--out", std::string("cannot write the pack: ") + e.what());
+    }
+    evaluateLesson(loadLesson(staging.path() / lessonFileName)); // only a pack that reads back, meshes too
+    return staging.commit({names.begin(), names.end()});
+}
+
 } // namespace viewpipe::gui

@@ -38,11 +38,27 @@ std::vector<fs::path> StagingFolder::commit()
     return commit(names);
 }
 
+namespace {
+
+// A folder moves into one already there file by file (a pack written again
+// into its own folder); a file replaces one.
+void moveInto(const fs::path& from, const fs::path& to)
+{
+    if (fs::is_directory(from) && fs::is_directory(to)) {
+        for (const auto& entry : fs::directory_iterator(from))
+            moveInto(entry.path(), to / entry.path().filename());
+        return;
+    }
+    fs::rename(from, to);
+}
+
+} // namespace
+
 std::vector<fs::path> StagingFolder::commit(const std::vector<std::string>& names)
 {
     std::vector<fs::path> moved;
     for (const std::string& name : names) {
-        fs::rename(staging_ / name, out_ / name);
+        moveInto(staging_ / name, out_ / name);
         moved.push_back(out_ / name);
     }
     madeOut_ = false; // it holds the export now

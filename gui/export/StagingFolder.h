@@ -22,7 +22,8 @@ public:
 
     // Where to write.
     const std::filesystem::path& path() const { return staging_; }
-    // Moves every file written into `out`; their new paths, sorted.
+    // Moves every file (and folder) written into `out`, a folder into one already there file by file;
+    // their new paths, sorted.
     std::vector<std::filesystem::path> commit();
     // Moves the files `names` only (the rest were the making's: logs, sources).
     std::vector<std::filesystem::path> commit(const std::vector<std::string>& names);

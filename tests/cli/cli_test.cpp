@@ -397,4 +397,62 @@ TEST(Cli, EffectsInPipelineAndTrace)
     EXPECT_EQ(beside["clipping"]["outside_planes"], Json::parse(R"(["right"])"));
 }
 
+// A lesson packed travels: its folder, moved anywhere and away from the files the
+// lesson named, checks; scenes and meshes come along once each under unique names,
+// every path relative to the file that names it.
+TEST(Cli, ALessonPacksIntoAFolderThatTravels)
+{
+    namespace fs = std::filesystem;
+    const fs::path dir = fs::temp_directory_path() / ("viewpipe-pack-" + std::to_string(::getpid()));
+    fs::remove_all(dir);
+    fs::create_directories(dir / "other");
+    const std::string data = viewpipe::build::dataDir;
+    // Another scene named house.json, and an inline scene with the mesh the letter F's scene uses too.
+    std::ifstream house(kHouse);
+    Json other = Json::parse(house);
+    other["name"] = "Another house";
+    std::ofstream(dir / "other" / "house.json") << other.dump(2);
+    Json inlineScene = Json::parse(std::ifstream(data + "/scenes/letter-f.json"));
+    inlineScene["objects"][0]["path"] = data + "/meshes/letter-f.obj";
+    const Json lesson = {{"title", "Packed"},
+                         {"steps", {{{"scene", kHouse}, {"caption", "one"}},
+                                    {{"scene", (dir / "other" / "house.json").string()}, {"caption", "two"}},
+                                    {{"scene", data + "/scenes/letter-f.json"}, {"caption", "three"}},
+                                    {{"scene", inlineScene}, {"caption", "four"}},
+                                    {{"scene", kHouse}, {"caption", "five"}}}}};
+    std::ofstream(dir / "other" / "my-lesson.json") << lesson.dump(2);
+
+    Result r = run("lesson pack " + (dir / "other" / "my-lesson.json").string() + " --out " + (dir / "pack").string());
+    ASSERT_EQ(r.exitCode, 0) << r.err;
+    EXPECT_NE(r.out.find("my-lesson.json"), std::string::npos);
+    fs::rename(dir / "pack", dir / "moved"); // the folder travels; what the lesson named stays behind, then goes
+    fs::remove_all(dir / "other");
+    r = run("lesson check " + (dir / "moved" / "my-lesson.json").string());
+    EXPECT_EQ(r.exitCode, 0) << r.err;
+
+    const Json packed = Json::parse(std::ifstream(dir / "moved" / "my-lesson.json"));
+    EXPECT_EQ(packed["steps"][0]["scene"], "scenes/house.json");
+    EXPECT_EQ(packed["steps"][1]["scene"], "scenes/house-2.json");
+    EXPECT_EQ(packed["steps"][2]["scene"], "scenes/letter-f.json");
+    EXPECT_EQ(packed["steps"][3]["scene"]["objects"][0]["path"], "meshes/letter-f.obj");
+    EXPECT_EQ(packed["steps"][4]["scene"], "scenes/house.json");
+    EXPECT_EQ(Json::parse(std::ifstream(dir / "moved" / "scenes" / "house-2.json"))["name"], "Another house");
+    EXPECT_EQ(Json::parse(std::ifstream(dir / "moved" / "scenes" / "letter-f.json"))["objects"][0]["path"], "../meshes/letter-f.obj");
+    EXPECT_EQ(fs::file_size(dir / "moved" / "meshes" / "letter-f.obj"), fs::file_size(data + "/meshes/letter-f.obj"));
+    int files = 0;
+    for (const auto& entry : fs::recursive_directory_iterator(dir / "moved"))
+        files += entry.is_regular_file();
+    EXPECT_EQ(files, 5); // the lesson, three scenes, one mesh
+
+    // Packed again into its own folder: the same files, replaced.
+    r = run("lesson pack " + (dir / "moved" / "my-lesson.json").string() + " --out " + (dir / "moved").string() + " --quiet");
+    EXPECT_EQ(r.exitCode, 0) << r.err;
+    EXPECT_EQ(run("lesson check " + (dir / "moved" / "my-lesson.json").string()).exitCode, 0);
+    // A folder that cannot be made is bad input, named.
+    r = run("lesson pack " + std::string(viewpipe::build::dataDir) + "/lessons/foley-nper.json --out /proc/no-such-folder");
+    EXPECT_EQ(r.exitCode, 2);
+    EXPECT_NE(r.err.find("--out: cannot create the folder"), std::string::npos) << r.err;
+    fs::remove_all(dir);
+}
+
 } // namespace

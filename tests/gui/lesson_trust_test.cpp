@@ -424,6 +424,26 @@ private slots:
         QCOMPARE(loadLesson(file.toStdString()).title, std::string("Kept"));
     }
 
+    // File ▸ Pack Lesson… gathers the lesson as edited, with its scenes and meshes, into the folder chosen.
+    void aLessonIsPackedToTravel()
+    {
+        MainWindow& w = *window_;
+        QVERIFY(w.lessonFlow()->openLesson(kFoley));
+        openEditor(w);
+        typeInto(lessonChild<QLineEdit>(w, "titleEdit"), "Foley, to take home");
+        QTemporaryDir folder;
+        answerNextFileDialog(folder.path());
+        w.actions()->action("lesson.pack")->trigger();
+        const QString packed = folder.filePath("foley-nper.json");
+        QTRY_VERIFY(QFile::exists(packed));
+        const Lesson lesson = loadLesson(packed.toStdString());
+        QCOMPARE(lesson.title, std::string("Foley, to take home"));
+        for (const LessonStep& step : lesson.steps)
+            QVERIFY2(QString::fromStdString(step.scene.file.string()).startsWith(folder.filePath("scenes/")),
+                     step.scene.file.c_str());
+        evaluateLesson(lesson); // its scenes read from the pack
+    }
+
 private:
     // A click where a person clicks, on a button that is (or is not) enabled: a disabled one does nothing.
     static void click(QWidget* widget, bool enabled = true)

@@ -155,6 +155,16 @@ EvaluatedLesson evaluateLesson(const Lesson& lesson, SceneEvaluator* evaluator =
 // each path relative to baseDir where the two share a folder below the root,
 // else absolute (pathFrom); answers the scenes give are left out.
 std::string lessonToJson(const Lesson& lesson, const std::filesystem::path& baseDir);
+// A lesson gathered with the files it uses, to travel as one folder: the
+// lesson file as `lessonFileName`, each scene file its steps name as
+// scenes/NAME.json, each mesh as meshes/NAME (a number added where two files
+// share a name), every path relative to the file that names it. `folder` is
+// where the caller writes `texts` and copies `copies`; nothing is written here.
+struct LessonPack {
+    std::vector<std::pair<std::filesystem::path, std::string>> texts;            // relative path, contents (the lesson first)
+    std::vector<std::pair<std::filesystem::path, std::filesystem::path>> copies; // relative path, the file to copy there
+};
+LessonPack packLesson(const Lesson& lesson, const std::string& lessonFileName, const std::filesystem::path& folder);
 // Reads the question of a step from JSON, as a lesson file holds it (for
 // editing one question), checked against the step's scene.
 Question parseQuestion(const std::string& text, const Scene& scene);
