@@ -60,10 +60,10 @@ void addLessonCommand(CLI::App& app)
     });
 
     auto options = std::make_shared<LessonOptions>();
-    CLI::App* exportCommand = lesson->add_subcommand("export", "Write the lesson as one web page (lesson.html), as handout.pdf and slides.pdf, or both");
+    CLI::App* exportCommand = lesson->add_subcommand("export", "Write the lesson as one web page (lesson.html), as handout.pdf and slides.pdf, as a problem sheet (sheet.pdf), or any of them");
     exportCommand->add_option("FILE", options->file, "Lesson file (JSON)")->required();
     exportCommand->add_option("--out", options->out, "Folder for the files (created if missing)")->required();
-    exportCommand->add_option("--format", options->format, "html: one self-contained page, lesson.html; pdf: handout.pdf and 16:9 slides.pdf (needs pdflatex); or both, comma-separated")->capture_default_str();
+    exportCommand->add_option("--format", options->format, "html: one self-contained page, lesson.html; pdf: handout.pdf and 16:9 slides.pdf; sheet: sheet.pdf, a problem sheet with worked solutions (pdf and sheet need pdflatex); or a comma-separated list")->capture_default_str();
     exportCommand->add_option("--size", options->size, "The pictures' size WxH, as export's (the PDF's figures too)")->capture_default_str();
     exportCommand->add_option("--theme", options->theme, "light or dark")
         ->check(CLI::IsMember({"light", "dark"}))

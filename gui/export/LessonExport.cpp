@@ -19,10 +19,10 @@ namespace fs = std::filesystem;
 
 namespace {
 
-// The figures' text against the pictures' at their size: a page sets them
-// as wide as its text; a slide at 0.63 of its 152 mm beside the step's text,
-// where 1.25 sets labels of 2.4 % of the width at 8 pt.
-constexpr double kPaperFontScale = 1.0, kSlideFontScale = 1.25;
+// The figures' text against the pictures' at their size: a page sets them at
+// kHandoutFigureWidth of its text (lesson_latex.hpp); a slide at 0.63 of its
+// 152 mm beside the step's text, where 1.25 sets labels of 2.4 % of the width at 8 pt.
+constexpr double kPaperFontScale = kHandoutFigureTextScale, kSlideFontScale = 1.25;
 
 // Step `step`'s view of `stage` as a PDF figure: its camera, its stage, the
 // stage named only when the step does not hide it.
@@ -88,7 +88,7 @@ void compile(const fs::path& folder, const std::string& document)
                                    document + ".tex"},
                                   quiet, 60);
     if (status == -1)
-        throw std::runtime_error("the handout and slides need pdflatex (TeX Live), which was not found: "
+        throw std::runtime_error("the handout, slides and problem sheet need pdflatex (TeX Live), which was not found: "
                                  "scripts/install-deps.sh --pdf installs it");
     if (status == kTimedOut)
         throw InputError("steps", "pdflatex did not finish in a minute: a caption's macros may never end");
@@ -160,8 +160,8 @@ std::set<std::string> parseLessonFormats(const std::string& list)
     std::set<std::string> formats;
     std::istringstream in(list);
     for (std::string name; std::getline(in, name, ',');) {
-        if (name != "html" && name != "pdf")
-            throw InputError("--format", "must be html, pdf or both, comma-separated (got \"" + list + "\")");
+        if (name != "html" && name != "pdf" && name != "sheet")
+            throw InputError("--format", "must be html, pdf or sheet, or a comma-separated list of them (got \"" + list + "\")");
         formats.insert(name);
     }
     if (formats.empty())
@@ -184,6 +184,12 @@ std::vector<fs::path> exportLesson(const Lesson& lesson, const EvaluatedLesson& 
     if (options.formats.count("pdf")) {
         writeLessonPdf(lesson, evaluated, options, staging.path(), step);
         files.insert(files.end(), {"handout.pdf", "slides.pdf"});
+    }
+    if (options.formats.count("sheet")) {
+        step("sheet.pdf");
+        writeFileAtomically(staging.path() / "sheet.tex", lessonSheetLatex(lesson));
+        compile(staging.path(), "sheet");
+        files.push_back("sheet.pdf");
     }
     return staging.commit(files);
 }

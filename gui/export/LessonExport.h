@@ -1,8 +1,9 @@
 #pragma once
 // A lesson as files: lesson.html (one self-contained page, as the app shows
-// the lesson), and on paper handout.pdf (one A4 page per step, the questions
-// without their answers, the answer key at the end) and slides.pdf (16:9, a
-// question's answer on the slide after it). The figures are the stages'
+// the lesson), and on paper handout.pdf (each step the room it needs, the
+// questions without their answers, the answer key at the end), slides.pdf
+// (16:9, a question's answer on the slide after it) and sheet.pdf (the
+// questions as a problem sheet, then their solutions worked out). The figures are the stages'
 // vector figures through each step's camera; pdflatex sets the text and the math.
 #include <filesystem>
 #include <functional>
@@ -17,12 +18,12 @@ namespace viewpipe::gui {
 
 struct LessonExportOptions {
     std::filesystem::path out;
-    std::set<std::string> formats = {"html"}; // html: lesson.html; pdf: handout.pdf and slides.pdf
+    std::set<std::string> formats = {"html"}; // html: lesson.html; pdf: handout.pdf and slides.pdf; sheet: sheet.pdf
     int width = 1280, height = 720;           // the pictures' (the PDF's figures too)
     Theme theme = Theme::Light;
 };
 
-// "pdf,html": a comma-separated list of html and pdf; throws InputError naming --format.
+// "pdf,html": a comma-separated list of html, pdf and sheet; throws InputError naming --format.
 std::set<std::string> parseLessonFormats(const std::string& list);
 
 // Writes the lesson in every format asked for, moved into `out` only once all

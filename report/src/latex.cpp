@@ -66,6 +66,13 @@ std::string decimal(const Exact& x, int digits)
     return s;
 }
 
+// An exact fraction where x is one, else a decimal.
+std::string exactText(const Exact& x, int digits)
+{
+    std::string out;
+    return asFraction(x, out) ? out : decimal(x, digits);
+}
+
 // `highlighted`: entries (row, column from 1) set on a colored box (xcolor).
 std::string bmatrix(const Mat4<Exact>& m, int digits, const std::vector<std::array<int, 2>>& highlighted = {})
 {
@@ -73,9 +80,7 @@ std::string bmatrix(const Mat4<Exact>& m, int digits, const std::vector<std::arr
     for (int r = 0; r < 4; ++r) {
         out += "  ";
         for (int c = 0; c < 4; ++c) {
-            std::string cell;
-            if (!asFraction(m(r, c), cell))
-                cell = decimal(m(r, c), digits);
+            std::string cell = exactText(m(r, c), digits);
             if (std::find(highlighted.begin(), highlighted.end(), std::array<int, 2>{r + 1, c + 1}) != highlighted.end())
                 cell = "\\colorbox{yellow}{$" + cell + "$}"; // a color KaTeX and xcolor both name
             out += cell + (c < 3 ? " & " : (r < 3 ? " \\\\\n" : "\n"));
@@ -155,9 +160,22 @@ std::string stageMatrixLatex(const Scene& scene, int stage, int digits)
 std::string entryLatex(const Scene& scene, int stage, int row, int column, int digits)
 {
     const Pipeline<Exact> p = exactPipeline(scene);
-    const Exact& x = p.stages.at(std::size_t(stage - 1)).matrix(row - 1, column - 1);
-    std::string cell;
-    return asFraction(x, cell) ? cell : decimal(x, digits);
+    return exactText(p.stages.at(std::size_t(stage - 1)).matrix(row - 1, column - 1), digits);
+}
+
+std::vector<std::string> tracedLatex(const Scene& scene, const Vec3<double>& point, int stages, int digits)
+{
+    const Pipeline<Exact> p = exactPipeline(scene);
+    const auto exact = [](double x) { return fromDecimal<Exact>(x); };
+    const PointTrace<Exact> trace = tracePoint(p, Vec3<Exact>(exact(point.x()), exact(point.y()), exact(point.z())));
+    const auto text = [digits](const Vec4<Exact>& q) {
+        return "(" + exactText(q.x(), digits) + ", " + exactText(q.y(), digits) + ", " + exactText(q.z(), digits) + ", " +
+               exactText(q.w(), digits) + ")";
+    };
+    std::vector<std::string> out = {text(Vec4<Exact>(exact(point.x()), exact(point.y()), exact(point.z()), Exact(1)))};
+    for (int k = 0; k < stages && k < int(trace.afterStage.size()); ++k)
+        out.push_back(text(trace.afterStage[std::size_t(k)]));
+    return out;
 }
 
 std::vector<StageLatex> stagesLatex(const Scene& scene, int digits)

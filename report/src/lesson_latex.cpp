@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cmath>
 #include <sstream>
+#include <type_traits>
+#include <variant>
 
 #include "viewpipe/format.hpp"
 #include "viewpipe/math_text.hpp"
@@ -31,10 +33,12 @@ std::string symbol(const std::string& stageSymbol)
     return "$" + symbolMath(stageSymbol) + "$";
 }
 
-// Wide matrices shrink to the line; narrow ones keep their size.
+// Wide matrices shrink to the line; narrow ones keep their size. Fractions in
+// display style, rows apart (as matrices.tex sets them).
 std::string fitted(const std::string& math)
 {
-    return "\\begin{adjustbox}{max width=\\linewidth}$\\displaystyle " + math + "$\\end{adjustbox}\\par\n";
+    return "\\begin{adjustbox}{max width=\\linewidth}{\\renewcommand{\\arraystretch}{1.4}\\let\\frac\\dfrac"
+           "$\\displaystyle " + math + "$}\\end{adjustbox}\\par\n";
 }
 
 std::string stageSymbol(const LessonStep& step, int stage)
@@ -50,12 +54,12 @@ std::string boxes(const std::vector<std::string>& options)
     return out + "\\par\n";
 }
 
-// A question as the student sees it before answering.
-std::string questionLatex(const LessonStep& step, int number)
+// A question as the student sees it before answering; `setUp`, where given, the view's data it needs.
+std::string questionLatex(const LessonStep& step, int number, const std::string& setUp = {})
 {
     const Question& q = *step.question;
     std::ostringstream out;
-    out << "\\textbf{Question " << number << ".} " << texRichText(q.prompt) << "\\par\n";
+    out << "\\textbf{Question " << number << ".} " << texRichText(q.prompt) << "\\par\n" << setUp;
     if (const std::string context = questionContext(step); !context.empty())
         out << texRichText(context) << "\\par\n";
     const std::string blank = "\\rule{1.4cm}{0.4pt}";
@@ -118,6 +122,58 @@ std::string figure(const std::string& file)
     return "\\includegraphics[width=\\linewidth]{" + file + "}\\par\n";
 }
 
+// A step's figure with its text beside it, the figure kHandoutFigureWidth of the line.
+std::string beside(const std::string& file, const std::string& text)
+{
+    const std::string width = formatShortest(kHandoutFigureWidth);
+    return "\\begin{minipage}[t]{" + width + "\\linewidth}\\vspace{0pt}" + figure(file) + "\\end{minipage}\\hfill\n"
+           "\\begin{minipage}[t]{" + formatShortest(0.97 - kHandoutFigureWidth) + "\\linewidth}\\vspace{0pt}\\raggedright"
+           "\\setlength{\\parskip}{0.4em}\n" + text + "\\end{minipage}\\par\n";
+}
+
+// A block that stays on one page, heading and all.
+std::string unbroken(const std::string& body)
+{
+    return "\\begin{minipage}{\\linewidth}\\setlength{\\parskip}{0.4em}\n" + body + "\\end{minipage}\\par\\medskip\n";
+}
+
+std::string vec(const Vec3<double>& v)
+{
+    return "(" + formatShortest(v.x()) + ", " + formatShortest(v.y()) + ", " + formatShortest(v.z()) + ")";
+}
+
+// The set-up a problem on paper needs: the view or camera as the scene gives it, numbers as typed.
+std::string sceneDataLatex(const Scene& scene)
+{
+    const auto n = [](double x) { return formatShortest(x); };
+    if (const auto* view = std::get_if<foley::ViewSpec<double>>(&scene.camera)) {
+        const bool perspective = view->projection == foley::Projection::Perspective;
+        return std::string("A ") + (perspective ? "perspective" : "parallel") + " view: $\\mathit{VRP} = " + vec(view->vrp) +
+               "$, $\\mathit{VPN} = " + vec(view->vpn) + "$, $\\mathit{VUP} = " + vec(view->vup) + "$, $\\mathit{PRP} = " +
+               vec(view->prp) + "$, the window $[" + n(view->window.umin) + ", " + n(view->window.umax) + "] \\times [" +
+               n(view->window.vmin) + ", " + n(view->window.vmax) + "]$, $F = " + n(view->front) + "$, $B = " +
+               n(view->back) + "$.";
+    }
+    const auto& camera = std::get<gl::Camera<double>>(scene.camera);
+    std::string out = "\\texttt{gluLookAt}: eye $" + vec(camera.lookAt.eye) + "$, center $" + vec(camera.lookAt.center) +
+                      "$, up $" + vec(camera.lookAt.up) + "$; ";
+    out += std::visit(
+        [&n](const auto& box) {
+            using Box = std::decay_t<decltype(box)>;
+            if constexpr (std::is_same_v<Box, gl::Perspective<double>>)
+                return "\\texttt{gluPerspective}: $\\mathit{fovy} = " + n(box.fovyDegrees) + "^\\circ$, aspect $" +
+                       n(box.aspect) + "$, near $" + n(box.zNear) + "$, far $" + n(box.zFar) + "$";
+            else
+                return std::string(std::is_same_v<Box, gl::Frustum<double>> ? "\\texttt{glFrustum}" : "\\texttt{glOrtho}") +
+                       "$(" + n(box.left) + ", " + n(box.right) + ", " + n(box.bottom) + ", " + n(box.top) + ", " +
+                       n(box.zNear) + ", " + n(box.zFar) + ")$";
+        },
+        camera.projection);
+    if (camera.api != gl::Api::OpenGL || camera.depth != gl::DepthMode::Standard)
+        out += "; " + texEscaped(gl::apiTitle(camera.api)) + (camera.depth == gl::DepthMode::Reversed ? ", reversed depth" : "");
+    return out + ".";
+}
+
 const char* kPreamble = "\\usepackage{graphicx}\n\\usepackage{amsmath}\n\\usepackage{amssymb}\n\\usepackage{adjustbox}\n\\usepackage{xcolor}\n"
                         "\\setlength{\\parindent}{0pt}\n\\sloppy\n";
 
@@ -175,31 +231,90 @@ std::string lessonHandoutLatex(const Lesson& lesson, const std::vector<LessonFig
         << "{\\Large\\bfseries " << texEscaped(lesson.title) << "\\par}\\vspace{0.5em}\n";
     const std::size_t n = lesson.steps.size();
     int questions = 0;
+    // Each step takes the room it needs, whole on one page.
     for (std::size_t k = 0; k < n; ++k) {
         const LessonStep& step = lesson.steps[k];
-        out << stepMark(k) << "\\subsection*{Step " << k + 1 << " of " << n << "}\n";
-        if (step.question) {
-            out << figure(figures[k].asking) << questionLatex(step, ++questions);
-            out << "\\vspace{1em}\\textit{The step's text is in the answer key.}\\par\n";
-        } else {
-            out << figure(figures[k].revealed) << texRichText(step.caption) << "\\par\n" << matrixLatex(step);
-        }
-        out << "\\clearpage\n";
+        std::string body = "\\subsection*{Step " + std::to_string(k + 1) + " of " + std::to_string(n) + "}\n";
+        if (step.question)
+            body += beside(figures[k].asking, questionLatex(step, ++questions) +
+                                                  "\\textit{The step's text is in the answer key.}\\par\n");
+        else
+            body += beside(figures[k].revealed, matrixLatex(step)) + texRichText(step.caption) + "\\par\n";
+        out << stepMark(k) << unbroken(body);
     }
     if (questions > 0) {
-        out << "\\section*{Answer key}\n";
+        out << "\\clearpage\n\\section*{Answer key}\n";
         questions = 0;
         for (std::size_t k = 0; k < n; ++k) {
             const LessonStep& step = lesson.steps[k];
             if (!step.question)
                 continue;
-            // Each answer whole on one page: its heading, the stage it shows, its text and matrix together.
-            out << stepMark(k) << "\\begin{minipage}{\\linewidth}\\setlength{\\parskip}{0.5em}\n"
-                << "\\subsection*{Question " << ++questions << " (step " << k + 1 << ")}\n"
-                << figure(figures[k].revealed)
-                << answerParagraphs(step) << texRichText(step.caption) << "\\par\n" << matrixLatex(step)
-                << "\\end{minipage}\\par\\bigskip\n";
+            out << stepMark(k)
+                << unbroken("\\subsection*{Question " + std::to_string(++questions) + " (step " + std::to_string(k + 1) +
+                            ")}\n" + beside(figures[k].revealed, answerParagraphs(step) + matrixLatex(step)) +
+                            texRichText(step.caption) + "\\par\n");
         }
+    }
+    out << "\\end{document}\n";
+    return out.str();
+}
+
+std::string lessonSheetLatex(const Lesson& lesson)
+{
+    std::ostringstream out;
+    out << "% A ViewPipe problem sheet: the lesson's questions, then their solutions. Compile with pdflatex.\n"
+        << "\\documentclass[11pt,a4paper]{article}\n\\usepackage[margin=2cm]{geometry}\n" << kPreamble
+        << "\\setlength{\\parskip}{0.5em}\n\\pagestyle{plain}\n\\begin{document}\n"
+        << "{\\Large\\bfseries " << texEscaped(lesson.title) << "\\par}\\vspace{0.3em}{\\large Problems\\par}\\vspace{0.5em}\n";
+    int number = 0;
+    std::string before; // the set-up of the question before
+    for (std::size_t k = 0; k < lesson.steps.size(); ++k) {
+        const LessonStep& step = lesson.steps[k];
+        if (!step.question)
+            continue;
+        const std::string setUp = sceneDataLatex(step.scene);
+        ++number;
+        out << stepMark(k)
+            << unbroken(questionLatex(step, number,
+                                      (setUp == before ? "The same set-up as question " + std::to_string(number - 1) + "."
+                                                       : setUp) + "\\par\n"));
+        before = setUp;
+    }
+    out << "\\clearpage\n\\section*{Solutions}\n";
+    number = 0;
+    for (std::size_t k = 0; k < lesson.steps.size(); ++k) {
+        const LessonStep& step = lesson.steps[k];
+        if (!step.question)
+            continue;
+        const Question& q = *step.question;
+        std::string body = "\\subsection*{Question " + std::to_string(++number) + "}\n";
+        const int stages = int(buildPipeline(step.scene.camera, step.scene.effects).stages.size());
+        const bool traced = q.kind == QuestionKind::Where || q.kind == QuestionKind::SignW || q.kind == QuestionKind::Inside;
+        if (traced) {
+            // The stages' matrices up to the stage asked about (an inside question: all), three to a line,
+            // then the point after each of them.
+            const int last = q.kind == QuestionKind::Inside ? stages : q.stage;
+            std::string line;
+            for (int s = 1; s <= last; ++s) {
+                line += (line.empty() ? "" : " \\qquad ") + report::stageLatex(step.scene, s, kDigits);
+                if (s % 3 == 0 || s == last) {
+                    body += fitted(line);
+                    line.clear();
+                }
+            }
+            const std::vector<std::string> points = report::tracedLatex(step.scene, q.point, last, kDigits);
+            const std::vector<Stage<double>> named = buildPipeline(step.scene.camera, step.scene.effects).stages;
+            body += "The point $(x, y, z, w)$ after each stage:\\par\n{\\renewcommand{\\arraystretch}{1.5}\\let\\frac\\dfrac"
+                    "\\begin{tabular}{@{}l@{\\quad}l@{}}\n";
+            for (std::size_t s = 0; s < points.size(); ++s)
+                body += (s == 0 ? std::string("world") : symbol(named[s - 1].symbol)) + " & $" + points[s] + "$ \\\\\n";
+            body += "\\end{tabular}}\\par\n";
+        } else if (q.kind == QuestionKind::Entry) {
+            body += fitted(report::stageLatex(step.scene, q.stage, kDigits, {{q.row, q.column}}));
+        } else if (q.kind == QuestionKind::WhichStage) {
+            body += fitted(report::stageLatex(step.scene, q.stage, kDigits));
+        }
+        out << stepMark(k) << unbroken(body + answerParagraphs(step));
     }
     out << "\\end{document}\n";
     return out.str();

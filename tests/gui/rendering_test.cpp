@@ -489,10 +489,43 @@ private slots:
         QCOMPARE(readAll(out + "/00-world.png"), QString("previous"));
     }
 
-    // A lesson on paper: handout.pdf, one page per step and the answer key
-    // after them, and slides.pdf, 16:9, one slide per step and one more for
-    // each answer. No step's text spills onto a page of its own, and no answer
-    // shows before the key.
+    // A lesson as a problem sheet: foley-nper's nine questions and their solutions on at most eight A4 pages, the
+    // solutions after the questions, on a page of their own.
+    void lessonProblemSheet()
+    {
+        QTemporaryDir out;
+        const QString lessonPath = QString(::viewpipe::build::dataDir) + "/lessons/foley-nper.json";
+        const Run run = runViewpipe({"lesson", "export", lessonPath, "--out", out.path(), "--format", "sheet"});
+        QVERIFY2(run.exitCode == 0, qPrintable(run.err));
+        QCOMPARE(run.out, out.path() + "/sheet.pdf\n");
+        const auto tool = [](const QString& name, const QStringList& arguments) {
+            QProcess process;
+            process.start(QStandardPaths::findExecutable(name), arguments);
+            process.waitForFinished(60000);
+            return QString::fromUtf8(process.readAllStandardOutput());
+        };
+        const QString sheet = out.filePath("sheet.pdf");
+        const int pages = QRegularExpression("Pages:\\s+(\\d+)").match(tool("pdfinfo", {sheet})).captured(1).toInt();
+        QVERIFY2(pages >= 2 && pages <= 8, qPrintable(QString::number(pages)));
+        const QString text = tool("pdftotext", {sheet, "-"});
+        const int solutions = text.indexOf("Solutions");
+        QVERIFY2(solutions > 0, qPrintable(text));
+        const QString problems = text.left(solutions);
+        for (int k = 1; k <= 9; ++k)
+            QVERIFY2(problems.contains(QString("Question %1.").arg(k)), qPrintable(problems));
+        QVERIFY2(!problems.contains("Answer"), qPrintable(problems));
+        QCOMPARE(text.mid(solutions).count("Answer:"), 9);
+        const int firstPage = problems.count('\f') + 1;
+        const QString solutionsPage = tool("pdftotext", {"-f", QString::number(firstPage), "-l", QString::number(firstPage), sheet, "-"});
+        QVERIFY2(solutionsPage.trimmed().startsWith("Solutions"), qPrintable(solutionsPage));
+        tool("pdftoppm", {"-png", "-r", "50", "-f", QString::number(firstPage), "-l", QString::number(firstPage), "-singlefile", sheet,
+                          out.filePath("solutions")});
+        QVERIFY(contentShare(QImage(out.filePath("solutions.png"))) > 0.02);
+    }
+
+    // A lesson on paper: handout.pdf, each step the room it needs and the
+    // answer key after them, and slides.pdf, 16:9, one slide per step and one
+    // more for each answer. No answer shows before the key.
     void lessonHandoutAndSlides()
     {
         QTemporaryDir out;
@@ -527,24 +560,28 @@ private slots:
         QVERIFY2(std::abs(slide.width() / slide.height() - 16.0 / 9.0) < 1e-3, qPrintable(QString::number(slide.width())));
         const QSizeF a4 = pageSize(handout);
         QVERIFY(std::abs(a4.width() - 595.28) < 1 && std::abs(a4.height() - 841.89) < 1);
+        // Each step the room it needs: the nine questions and their key on at most ten pages.
         const int handoutPages = pages(handout);
-        QVERIFY2(handoutPages >= kSteps + 1 && handoutPages <= 2 * kSteps, qPrintable(QString::number(handoutPages)));
+        QVERIFY2(handoutPages >= 4 && handoutPages <= 10, qPrintable(QString::number(handoutPages)));
         QFile lessonFile(lessonPath);
         QVERIFY(lessonFile.open(QIODevice::ReadOnly));
         const QJsonArray steps = QJsonDocument::fromJson(lessonFile.readAll()).object()["steps"].toArray();
-        for (int page = 1; page <= kSteps; ++page) {
-            const QString text = tool("pdftotext", {"-f", QString::number(page), "-l", QString::number(page), handout, "-"});
-            QVERIFY2(text.contains(QString("Step %1 of 9").arg(page)), qPrintable(text));
-            QVERIFY2(text.contains(QString("Question %1.").arg(page)), qPrintable(text));
-            QVERIFY2(!text.contains("Answer"), qPrintable(text));
+        const QString whole = tool("pdftotext", {handout, "-"});
+        const int keyAt = whole.indexOf("Answer key");
+        QVERIFY2(keyAt > 0, qPrintable(whole));
+        const QString asked = whole.left(keyAt), key = whole.mid(keyAt);
+        for (int step = 1; step <= kSteps; ++step) {
+            QVERIFY2(asked.contains(QString("Step %1 of 9").arg(step)), qPrintable(asked));
+            QVERIFY2(asked.contains(QString("Question %1.").arg(step)), qPrintable(asked));
             // The step's text, which may give the answer away, waits for the key.
-            const QString opening = steps[page - 1].toObject()["caption"].toString().left(30);
-            QVERIFY2(!text.simplified().contains(opening.simplified()), qPrintable(opening));
+            const QString opening = steps[step - 1].toObject()["caption"].toString().left(30);
+            QVERIFY2(!asked.simplified().contains(opening.simplified()), qPrintable(opening));
         }
-        const QString key = tool("pdftotext", {"-f", QString::number(kSteps + 1), handout, "-"});
-        QVERIFY2(key.contains("Answer key"), qPrintable(key));
-        for (int question = 1; question <= kSteps; ++question)
-            QVERIFY2(key.contains(QString("Question %1 (step %1)").arg(question)), qPrintable(key));
+        QVERIFY2(!asked.contains("Answer"), qPrintable(asked));
+        // The key begins on a page of its own.
+        const QString keyPage = tool("pdftotext", {"-f", QString::number(whole.left(keyAt).count('\f') + 1), "-l",
+                                                   QString::number(whole.left(keyAt).count('\f') + 1), handout, "-"});
+        QVERIFY2(keyPage.trimmed().startsWith("Answer key"), qPrintable(keyPage));
         // Question 6's entry is an exact fraction (-dop_x/dop_z = -8/84 = -2/21), typeset as one.
         QVERIFY2(key.contains("Answer: −") && key.contains("21"), qPrintable(key));
         // The slide after a question holds its answer; the question's slide does not.
@@ -561,7 +598,7 @@ private slots:
         // A bad format is refused before anything is made.
         const Run bad = runViewpipe({"lesson", "export", lessonPath, "--out", out.path() + "/none", "--format", "docx"});
         QCOMPARE(bad.exitCode, 2);
-        QVERIFY2(bad.err.contains("--format: must be html, pdf or both"), qPrintable(bad.err));
+        QVERIFY2(bad.err.contains("--format: must be html, pdf or sheet"), qPrintable(bad.err));
         QVERIFY(!QDir(out.path() + "/none").exists());
 
         // Math outside the subset is refused as the lesson is read, naming its field (so a file outside the

@@ -289,9 +289,10 @@ TEST(Format, ShortestRoundTrip)
     }
 }
 
-// The handout sets every figure, the answer key's too, as wide as its text: the pictures' labels are 2.4 % of their
-// width, about 11 pt across A4's text, and were 6 pt at 0.55 of it (a defect found by a reader).
-TEST(LessonLatex, HandoutFiguresAreAsWideAsTheText)
+// The handout sets every figure, the answer key's too, at one width, their labels drawn larger to match: the
+// pictures' labels are 2.4 % of their width, 11.6 pt across A4's 17 cm of text, and were 6 pt at 0.55 of it with no
+// larger text (a defect found by a reader). At least 9.5 pt on paper.
+TEST(LessonLatex, HandoutFiguresKeepTheirLabelsReadable)
 {
     const Lesson lesson = loadLesson(std::string(viewpipe::build::dataDir) + "/lessons/foley-nper.json");
     std::vector<LessonFigures> figures;
@@ -299,18 +300,54 @@ TEST(LessonLatex, HandoutFiguresAreAsWideAsTheText)
         figures.push_back({"step-" + std::to_string(k) + "-asking.pdf", "step-" + std::to_string(k) + ".pdf"});
     const std::string handout = lessonHandoutLatex(lesson, figures);
     ASSERT_NE(handout.find("Answer key"), std::string::npos);
-    const std::string wide = "\\includegraphics[width=\\linewidth]{";
-    std::size_t figuresSet = 0;
-    for (std::size_t at = handout.find("\\includegraphics"); at != std::string::npos;
-         at = handout.find("\\includegraphics", at + 1)) {
-        EXPECT_EQ(handout.compare(at, wide.size(), wide), 0) << handout.substr(at, 60);
-        ++figuresSet;
-    }
+    // Every figure at that width, in a minipage of its own beside the step's text.
+    const std::string set =
+        "\\begin{minipage}[t]{" + formatShortest(kHandoutFigureWidth) + "\\linewidth}\\vspace{0pt}\\includegraphics[width=\\linewidth]{";
+    const auto count = [&handout](const std::string& what) {
+        std::size_t n = 0;
+        for (std::size_t at = handout.find(what); at != std::string::npos; at = handout.find(what, at + 1))
+            ++n;
+        return n;
+    };
+    const std::size_t figuresSet = count(set);
+    EXPECT_EQ(figuresSet, count("\\includegraphics"));
     const auto questions = std::count_if(lesson.steps.begin(), lesson.steps.end(), [](const LessonStep& step) {
         return step.question.has_value();
     });
     ASSERT_GT(questions, 0);
     EXPECT_EQ(figuresSet, lesson.steps.size() + std::size_t(questions)) << "each step, and each answer in the key";
+    const double labelPoints = 0.024 * 17 / 2.54 * 72 * kHandoutFigureWidth * kHandoutFigureTextScale;
+    EXPECT_GE(labelPoints, 9.5);
+}
+
+// The problem sheet: the questions with the set-up each needs and no answer, then the solutions worked with exact
+// numbers: foley-nper's question 7 traces (16, 10, 30) through five stages to S_per, whose entries are fractions.
+TEST(LessonLatex, TheProblemSheetAsksThenSolvesExactly)
+{
+    const Lesson lesson = loadLesson(std::string(viewpipe::build::dataDir) + "/lessons/foley-nper.json");
+    const std::string sheet = lessonSheetLatex(lesson);
+    const std::size_t solutions = sheet.find("\\section*{Solutions}");
+    ASSERT_NE(solutions, std::string::npos);
+    const std::string problems = sheet.substr(0, solutions), solved = sheet.substr(solutions);
+    for (int k = 1; k <= 9; ++k) {
+        EXPECT_NE(problems.find("\\textbf{Question " + std::to_string(k) + ".}"), std::string::npos) << k;
+        EXPECT_NE(solved.find("\\subsection*{Question " + std::to_string(k) + "}"), std::string::npos) << k;
+    }
+    EXPECT_EQ(problems.find("Answer"), std::string::npos);
+    EXPECT_EQ(problems.find("\\includegraphics"), std::string::npos);
+    // Foley's house view, as typed, once; the questions after on the same view say so.
+    EXPECT_NE(problems.find("$\\mathit{PRP} = (8, 6, 84)$"), std::string::npos);
+    EXPECT_NE(problems.find("The same set-up as question 2."), std::string::npos);
+    // Question 7: the matrices T(-VRP) to S_per and the point after each, exactly.
+    const std::size_t seventh = solved.find("\\subsection*{Question 7}"), eighth = solved.find("\\subsection*{Question 8}");
+    const std::string worked = solved.substr(seventh, eighth - seventh);
+    for (const char* symbol : {"T(-\\mathit{VRP}) =", "R =", "T(-\\mathit{PRP}) =", "\\mathit{SH}_{\\mathrm{per}} =",
+                               "S_{\\mathrm{per}} ="})
+        EXPECT_NE(worked.find(symbol), std::string::npos) << symbol;
+    EXPECT_NE(worked.find("world & $(16, 10, 30, 1)$"), std::string::npos) << worked;
+    EXPECT_NE(worked.find("$(8, 4, -54, 1)$"), std::string::npos) << worked; // after T(-PRP): (16-8, 10-6, 30-84)
+    EXPECT_NE(worked.find("\\frac{"), std::string::npos); // S_per's entries, and the point after it, as fractions
+    EXPECT_NE(worked.find("\\textbf{Answer:}"), std::string::npos);
 }
 
 } // namespace
