@@ -594,6 +594,8 @@ std::string resultsToJson(const Lesson& lesson, const std::vector<std::optional<
         if (!q || !a)
             continue;
         Json entry = {{"step", k + 1}, {"kind", questionKindName(q->kind)}, {"answer", givenJson(*q, *a)}, {"correct", isRight(*q, *a)}};
+        if (!a->typed.empty())
+            entry["typed"] = q->kind == QuestionKind::Entry ? Json(a->typed.front()) : Json(a->typed);
         if (k < tries.size())
             entry["tries"] = tries[k];
         entries.push_back(entry);

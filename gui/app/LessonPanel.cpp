@@ -493,7 +493,11 @@ bool LessonPanel::checkAnswer()
         return false;
     const Question& q = *lesson_->currentStep().question;
     Answer answer;
-    auto typed = [this](const char* name) { return parseTypedNumber(inputs_->findChild<QLineEdit*>(name)->text().toStdString()); };
+    // A field's number, its text kept beside it for the results.
+    auto typed = [this, &answer](const char* name) {
+        answer.typed.push_back(inputs_->findChild<QLineEdit*>(name)->text().toStdString());
+        return parseTypedNumber(answer.typed.back());
+    };
     auto chosen = [this]() {
         for (QRadioButton* radio : inputs_->findChildren<QRadioButton*>())
             if (radio->isChecked())

@@ -174,6 +174,36 @@ TEST(Lesson, AQuestionsTriesAreTwoUnlessTheLessonSays)
     EXPECT_EQ(results["answers"][0]["answer"], answer.inside);
 }
 
+// The results keep what was typed beside the value read from it: an entry's text, a point's three;
+// answers picked from a list, and answers shown unanswered, have none.
+TEST(Lesson, ResultsKeepEachAnswerAsTyped)
+{
+    const std::string entryStep = houseStep(R"({"kind": "entry", "prompt": "p", "stage": 4, "row": 1, "column": 3})");
+    const Lesson lesson = lessonWith(entryStep);
+    const Lesson three = lessonWith(entryStep + "," + houseStep(R"({"kind": "where", "prompt": "p", "point": [8, 6, 84], "after": 3})") +
+                                    "," + houseStep(R"({"kind": "inside", "prompt": "p", "point": [0, 0, 0]})"));
+    Answer entry;
+    entry.entry = *parseTypedNumber("-2/21");
+    entry.typed = {"-2/21"};
+    Answer where;
+    where.where = {1.0 / 3, 0, -1};
+    where.typed = {"1/3", "0", "-1"};
+    Answer inside;
+    inside.inside = true;
+    const auto results = nlohmann::json::parse(resultsToJson(three, {entry, where, inside}, {true, true, true}, {1, 2, 1}));
+    const auto& answers = results["answers"];
+    ASSERT_EQ(answers.size(), 3u);
+    EXPECT_EQ(answers[0]["answer"], -2.0 / 21);
+    EXPECT_EQ(answers[0]["typed"], "-2/21");
+    EXPECT_EQ(answers[0]["correct"], true); // SH_per's (1, 3) for the house is -2/21
+    EXPECT_EQ(answers[1]["typed"], nlohmann::json({"1/3", "0", "-1"}));
+    EXPECT_EQ(answers[1]["answer"][0], 1.0 / 3);
+    EXPECT_FALSE(answers[2].contains("typed"));
+    // Shown before any answer: no typed text, the entry as docs/lesson-format.md gives it.
+    const auto shown = nlohmann::json::parse(resultsToJson(lesson, {std::nullopt}, {true}, {0}))["answers"][0];
+    EXPECT_EQ(shown, nlohmann::json::parse(R"({"step": 1, "kind": "entry", "answer": null, "correct": false, "revealed": true})"));
+}
+
 // What the app saves reads back as the same lesson, from another folder too:
 // scene files as relative paths, every question with the same answer.
 TEST(Lesson, ALessonSavedReadsBackTheSame)

@@ -216,6 +216,9 @@ private slots:
         QCOMPARE(answers[3].toObject()["answer"].toArray(), QJsonArray({1, 2, 5})); // the last answer checked
         QCOMPARE(answers[3].toObject()["correct"].toBool(), false);
         QCOMPARE(answers[3].toObject()["tries"].toInt(), 2);
+        QCOMPARE(answers[3].toObject()["typed"].toArray(), QJsonArray({"1", "2", "5"})); // as typed, beside the numbers
+        QCOMPARE(answers[4].toObject()["typed"].toString(), QString::fromUtf8("\u22122/21"));
+        QVERIFY(!answers[0].toObject().contains("typed")); // an order is picked, not typed
         QCOMPARE(answers[4].toObject()["tries"].toInt(), 1);
         QCOMPARE(answers[4].toObject()["step"].toInt(), 6);
         QCOMPARE(answers[4].toObject()["correct"].toBool(), true);

@@ -110,6 +110,8 @@ struct Answer {
     int choice = -1;        // which_stage and choice: an index into the question's choices
     std::vector<int> order; // order: indices into the choices, first to last
     double entry = 0;
+    // where (x, y, z) and entry: the text as the student typed it ("-2/21"), kept beside its value
+    std::vector<std::string> typed;
 };
 // Whether an answer is right, with the web page's tolerances: a point within
 // the question's tolerance relative to its size (at least 1), an entry within
@@ -129,6 +131,7 @@ std::string answerToJson(const Question& question, const Answer& answer);
 // step k's. A question whose answer was shown before any was given
 // (revealed[k]) has an entry too: "answer": null, "correct": false, "revealed": true.
 // With `tries`, an answer is the last one checked and "tries" says how many were.
+// An answer with its typed text has "typed" too: a string (entry) or three (where).
 std::string resultsToJson(const Lesson& lesson, const std::vector<std::optional<Answer>>& answers,
                           const std::vector<bool>& revealed = {}, const std::vector<int>& tries = {});
 
