@@ -165,64 +165,106 @@ Outcome placeLabels(const std::string& sceneText, const std::string& options, in
     });
 }
 
-// A student's answer to a lesson's question (`question` as the lesson file
-// holds it, about `sceneText`), checked as the app checks it. `typed`: the
-// kind's field, {"where": [x, y, z]} or {"entry": n} as typed text, {"choice":
-// k}, {"inside": b}, {"signW": s} or {"order": [k, ...]}. Gives {"right": b,
-// "answer": a} (a as the results hold it), or the error "unreadable" when the
-// text typed is not a number.
+// A lesson's question (`question` as the lesson file holds it) about `sceneText`.
+Question questionAbout(const std::string& sceneText, const std::string& question)
+{
+    nlohmann::json scene = nlohmann::json::parse(sceneText);
+    scene.erase("objects"); // the answer is the camera's: meshes left out of the page do not matter
+    return parseQuestion(question, parseScene(scene.dump(), kSceneFolder));
+}
+
+// A student's answer to `q` as the page gives it: the kind's field, {"where":
+// [x, y, z]} or {"entry": n} as typed text (kept as typed), {"choice": k},
+// {"inside": b}, {"signW": s} or {"order": [k, ...]}. Throws the error
+// "answer: unreadable" when the text typed is not a number.
+Answer readAnswer(const Question& q, const nlohmann::json& given)
+{
+    Answer answer;
+    auto number = [&answer](const nlohmann::json& text) {
+        const std::optional<double> x = text.is_string() ? parseTypedNumber(text.get<std::string>()) : std::nullopt;
+        if (!x)
+            throw InputError("answer", "unreadable");
+        answer.typed.push_back(text.get<std::string>());
+        return *x;
+    };
+    // A whole number in [low, high], as the page's controls give it.
+    auto index = [](const nlohmann::json& k, int low, int high, const char* what) {
+        if (!k.is_number_integer() || k.get<int>() < low || k.get<int>() > high)
+            throw InputError(std::string("answer.") + what, "must be a whole number from " + std::to_string(low) +
+                                                               " to " + std::to_string(high));
+        return k.get<int>();
+    };
+    const int choices = int(q.choices.size());
+    if (given.contains("where")) {
+        if (!given["where"].is_array() || given["where"].size() != 3)
+            throw InputError("answer.where", "must be three typed numbers");
+        const double x = number(given["where"][0]), y = number(given["where"][1]), z = number(given["where"][2]);
+        answer.where = {x, y, z};
+    }
+    if (given.contains("entry"))
+        answer.entry = number(given["entry"]);
+    if (given.contains("choice"))
+        answer.choice = index(given["choice"], 0, choices - 1, "choice");
+    if (given.contains("inside")) {
+        if (!given["inside"].is_boolean())
+            throw InputError("answer.inside", "must be true or false");
+        answer.inside = given["inside"].get<bool>();
+    }
+    if (given.contains("signW"))
+        answer.signW = index(given["signW"], -1, 1, "signW");
+    if (given.contains("order")) {
+        if (!given["order"].is_array() || int(given["order"].size()) != choices)
+            throw InputError("answer.order", "must list each of the " + std::to_string(choices) + " stages once");
+        std::vector<bool> seen(std::size_t(choices), false);
+        for (const nlohmann::json& k : given["order"]) {
+            const int c = index(k, 0, choices - 1, "order");
+            if (seen[std::size_t(c)])
+                throw InputError("answer.order", "must list each of the " + std::to_string(choices) + " stages once");
+            seen[std::size_t(c)] = true;
+            answer.order.push_back(c);
+        }
+    }
+    return answer;
+}
+
+// A student's answer (readAnswer's `typed`) to a lesson's question about
+// `sceneText`, checked as the app checks it: {"right": b, "answer": a} (a as
+// the results hold it), or the error "answer: unreadable".
 Outcome checkAnswer(const std::string& sceneText, const std::string& question, const std::string& typed)
 {
     return guarded([&] {
-        nlohmann::json scene = nlohmann::json::parse(sceneText);
-        scene.erase("objects"); // the answer is the camera's: meshes left out of the page do not matter
-        const Question q = parseQuestion(question, parseScene(scene.dump(), kSceneFolder));
-        const nlohmann::json given = nlohmann::json::parse(typed);
-        Answer answer;
-        auto number = [](const nlohmann::json& text) {
-            const std::optional<double> x = text.is_string() ? parseTypedNumber(text.get<std::string>()) : std::nullopt;
-            if (!x)
-                throw InputError("answer", "unreadable");
-            return *x;
-        };
-        // A whole number in [low, high], as the page's controls give it.
-        auto index = [](const nlohmann::json& k, int low, int high, const char* what) {
-            if (!k.is_number_integer() || k.get<int>() < low || k.get<int>() > high)
-                throw InputError(std::string("answer.") + what, "must be a whole number from " + std::to_string(low) +
-                                                                   " to " + std::to_string(high));
-            return k.get<int>();
-        };
-        const int choices = int(q.choices.size());
-        if (given.contains("where")) {
-            if (!given["where"].is_array() || given["where"].size() != 3)
-                throw InputError("answer.where", "must be three typed numbers");
-            answer.where = {number(given["where"][0]), number(given["where"][1]), number(given["where"][2])};
-        }
-        if (given.contains("entry"))
-            answer.entry = number(given["entry"]);
-        if (given.contains("choice"))
-            answer.choice = index(given["choice"], 0, choices - 1, "choice");
-        if (given.contains("inside")) {
-            if (!given["inside"].is_boolean())
-                throw InputError("answer.inside", "must be true or false");
-            answer.inside = given["inside"].get<bool>();
-        }
-        if (given.contains("signW"))
-            answer.signW = index(given["signW"], -1, 1, "signW");
-        if (given.contains("order")) {
-            if (!given["order"].is_array() || int(given["order"].size()) != choices)
-                throw InputError("answer.order", "must list each of the " + std::to_string(choices) + " stages once");
-            std::vector<bool> seen(std::size_t(choices), false);
-            for (const nlohmann::json& k : given["order"]) {
-                const int c = index(k, 0, choices - 1, "order");
-                if (seen[std::size_t(c)])
-                    throw InputError("answer.order", "must list each of the " + std::to_string(choices) + " stages once");
-                seen[std::size_t(c)] = true;
-                answer.order.push_back(c);
-            }
-        }
+        const Question q = questionAbout(sceneText, question);
+        const Answer answer = readAnswer(q, nlohmann::json::parse(typed));
         const nlohmann::json checked = {{"right", isRight(q, answer)}, {"answer", nlohmann::json::parse(answerToJson(q, answer))}};
         return Outcome{checked.dump(), ""};
+    });
+}
+
+// A student's answers as the results file holds them (resultsToJson, as the
+// app saves them). `steps`: one entry a lesson step, null without a question,
+// else {"scene", "question" (as checkAnswer takes them), "given" (the last
+// answer checked, as checkAnswer takes it, or null), "tries", "closed" (its
+// answer shown: answered, or revealed without an answer)}.
+Outcome lessonResults(const std::string& title, const std::string& steps)
+{
+    return guarded([&] {
+        Lesson lesson;
+        lesson.title = title;
+        std::vector<std::optional<Answer>> answers;
+        std::vector<bool> closed;
+        std::vector<int> tries;
+        for (const nlohmann::json& step : nlohmann::json::parse(steps)) {
+            LessonStep& shown = lesson.steps.emplace_back();
+            answers.emplace_back();
+            closed.push_back(!step.is_null() && step.at("closed").get<bool>());
+            tries.push_back(step.is_null() ? 0 : step.at("tries").get<int>());
+            if (step.is_null())
+                continue;
+            shown.question = questionAbout(step.at("scene"), step.at("question"));
+            if (!step.at("given").is_null())
+                answers.back() = readAnswer(*shown.question, step["given"]);
+        }
+        return Outcome{resultsToJson(lesson, answers, closed, tries), ""};
     });
 }
 
@@ -327,6 +369,7 @@ EMSCRIPTEN_BINDINGS(viewpipe)
     emscripten::function("evaluate", &evaluate);
     emscripten::function("placeLabels", &placeLabels);
     emscripten::function("checkAnswer", &checkAnswer);
+    emscripten::function("lessonResults", &lessonResults);
     emscripten::function("codeDialects", &codeDialects);
     emscripten::function("cameraCode", &cameraCode);
     emscripten::function("withCodeNumber", &withCodeNumber);

@@ -177,6 +177,18 @@ require(path.resolve(modulePath))().then((core) => {
     const outcome = core.checkAnswer(JSON.stringify(house), where, JSON.stringify({ where: ['0', '0.005', '0'] }));
     assert.deepStrictEqual(JSON.parse(outcome.text), { right: true, answer: [0, 0.005, 0] });
   });
+  check('the results file as the app writes it: each typed answer beside its value, one shown unanswered', () => {
+    const where = JSON.stringify({ kind: 'where', prompt: 'p', point: [8, 6, 84], after: 3 });
+    const step = (question, given, tries, closed) => ({ scene: JSON.stringify(house), question, given, tries, closed });
+    const outcome = core.lessonResults('t', JSON.stringify([
+      step(entry, { entry: '-2/21' }, 1, true), null, step(where, { where: ['1/3', '0', '-1'] }, 1, false),
+      step(where, null, 0, true), step(where, null, 0, false)]));
+    assert.strictEqual(outcome.error, '');
+    assert.deepStrictEqual(JSON.parse(outcome.text), { lesson: 't', answers: [
+      { step: 1, kind: 'entry', answer: -2 / 21, typed: '-2/21', correct: true, tries: 1 },
+      { step: 3, kind: 'where', answer: [1 / 3, 0, -1], typed: ['1/3', '0', '-1'], correct: false, tries: 1 },
+      { step: 4, kind: 'where', answer: null, correct: false, revealed: true }] });
+  });
 
   fs.rmSync(work, { recursive: true, force: true });
   process.exit(failures ? 1 : 0);

@@ -262,6 +262,18 @@ private:
     std::string session_, buffer_;
 };
 
+// Waits until the browser has saved a download as `file` (its partial file renamed); false after `seconds`.
+bool waitForFile(const fs::path& file, double seconds = 30)
+{
+    const auto end = std::chrono::steady_clock::now() + std::chrono::duration<double>(seconds);
+    while (std::chrono::steady_clock::now() < end) {
+        if (fs::exists(file))
+            return true;
+        std::this_thread::sleep_for(std::chrono::milliseconds(50));
+    }
+    return false;
+}
+
 // Pixels that are not the (white) background.
 std::vector<bool> drawn(const QImage& image)
 {
@@ -848,7 +860,9 @@ TEST(LessonPage, QuestionsAreAnsweredCheckedAndRevealed)
                           "point": [8, 6, 84], "after": 3, "explanation": "It moves by $-\\mathit{PRP}$."}},
             {"scene": ")" << kData << R"(/scenes/house.json", "stage": 3, "caption": "The shear comes next.",
              "question": {"kind": "entry", "prompt": "Entry (1, 3) of $SH_{per}$?", "stage": 4, "row": 1, "column": 3},
-             "hide": ["labels"]}]})";
+             "hide": ["labels"]},
+            {"scene": ")" << kData << R"(/scenes/house.json", "stage": 4, "caption": "The last scale.",
+             "question": {"kind": "where", "prompt": "Where does $S_{per}$ take the PRP?", "point": [8, 6, 84], "after": 5}}]})";
     }
     const Finished run = viewpipe({"lesson", "export", QString::fromStdString((dir / "lesson.json").string()), "--out",
                                    QString::fromStdString((dir / "out").string()), "--quiet"});
@@ -857,7 +871,7 @@ TEST(LessonPage, QuestionsAreAnsweredCheckedAndRevealed)
         Browser browser(dir / "profile");
         browser.page("Page.navigate", {{"url", "file://" + (dir / "out" / "lesson.html").string()}});
         ASSERT_TRUE(browser.waitFor("document.body.dataset.ready === '1'"));
-        EXPECT_EQ(browser.evaluate("document.getElementById('step-title').textContent"), "Step 1 of 2");
+        EXPECT_EQ(browser.evaluate("document.getElementById('step-title').textContent"), "Step 1 of 3");
         // Asking: the caption and the matrices that would give the answer away are hidden.
         EXPECT_EQ(browser.evaluate("getComputedStyle(document.getElementById('matrices')).visibility"), "hidden");
         EXPECT_EQ(browser.evaluate("document.querySelectorAll('#step-caption .katex').length"), 1);
@@ -900,17 +914,42 @@ TEST(LessonPage, QuestionsAreAnsweredCheckedAndRevealed)
         // The clicker's key to the next step; an exact fraction is an answer.
         browser.evaluate("document.activeElement.blur()");
         browser.press("PageDown", 34);
-        ASSERT_TRUE(browser.waitFor("document.getElementById('step-title').textContent === 'Step 2 of 2'"));
+        ASSERT_TRUE(browser.waitFor("document.getElementById('step-title').textContent === 'Step 2 of 3'"));
         answer({"-2/21"});
         ASSERT_TRUE(browser.waitFor("document.querySelector('#question .feedback').textContent === 'Right.'"));
         ASSERT_TRUE(browser.waitFor("document.body.dataset.stage === '4' && !document.body.dataset.moving"));
         const std::string hash = browser.evaluate("location.hash");
         EXPECT_NE(hash.find("step=2"), std::string::npos);
 
+        // Step 3, predicted aloud: Show Answer closes it without an answer.
+        browser.evaluate("document.activeElement.blur()");
+        browser.press("PageDown", 34);
+        ASSERT_TRUE(browser.waitFor("document.getElementById('step-title').textContent === 'Step 3 of 3'"));
+        EXPECT_EQ(browser.evaluate("document.body.classList.contains('asking')"), true);
+        browser.evaluate("document.querySelector('#question .show-answer').click()");
+        ASSERT_TRUE(browser.waitFor("document.body.dataset.answered === '3'"));
+        EXPECT_EQ(browser.evaluate("document.querySelector('#question .feedback').firstChild.textContent"), "The answer is ");
+        EXPECT_EQ(browser.evaluate("[...document.querySelectorAll('#question input, #question button')].every(i => i.disabled)"), true);
+
+        // Saved: the results file as the app writes it, each typed answer beside its value, step 3 as revealed.
+        browser.call("Browser.setDownloadBehavior", {{"behavior", "allow"}, {"downloadPath", dir.string()}});
+        browser.evaluate("document.getElementById('save').click()");
+        ASSERT_TRUE(waitForFile(dir / "lesson-results.json")) << "the results are downloaded";
+        std::ifstream saved(dir / "lesson-results.json");
+        const json results = json::parse(saved);
+        EXPECT_EQ(results["lesson"], "Two questions");
+        ASSERT_EQ(results["answers"].size(), 3u) << results.dump();
+        EXPECT_EQ(results["answers"][0], json::parse(R"({"step": 1, "kind": "where", "answer": [8, 6, 83],
+                                                        "typed": ["8", "6", "83"], "correct": false, "tries": 2})"));
+        EXPECT_EQ(results["answers"][1], json::parse(R"({"step": 2, "kind": "entry", "answer": -0.09523809523809523,
+                                                        "typed": "-2/21", "correct": true, "tries": 1})"));
+        EXPECT_EQ(results["answers"][2], json::parse(R"({"step": 3, "kind": "where", "answer": null, "correct": false,
+                                                        "revealed": true})"));
+
         // Back at step 1: its question stays closed, at the stage it is about, and cannot be answered again.
         browser.evaluate("document.activeElement.blur()");
-        browser.press("PageUp", 33);
-        ASSERT_TRUE(browser.waitFor("document.getElementById('step-title').textContent === 'Step 1 of 2'"));
+        browser.press("Home", 36);
+        ASSERT_TRUE(browser.waitFor("document.getElementById('step-title').textContent === 'Step 1 of 3'"));
         ASSERT_TRUE(browser.waitFor("document.body.dataset.stage === '3' && !document.body.dataset.moving"));
         EXPECT_EQ(browser.evaluate("document.querySelector('#question .feedback').firstChild.textContent"),
                   "Not quite: the answer is ");
@@ -934,7 +973,7 @@ TEST(LessonPage, QuestionsAreAnsweredCheckedAndRevealed)
         EXPECT_TRUE(placed1) << "placed by the core";
         EXPECT_FALSE(names1.empty());
         browser.press("PageDown", 34);
-        ASSERT_TRUE(browser.waitFor("document.getElementById('step-title').textContent === 'Step 2 of 2'"));
+        ASSERT_TRUE(browser.waitFor("document.getElementById('step-title').textContent === 'Step 2 of 3'"));
         ASSERT_TRUE(browser.waitFor("!document.body.dataset.moving"));
         browser.press("ArrowRight", 39, 8);
         const auto [placed2, names2] = namesTurned();

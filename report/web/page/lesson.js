@@ -1,7 +1,9 @@
   // page/lesson.js: a lesson: its steps (goToStep), questions asked, checked and answered, the answers saved.
-  const results = []; // one entry per question answered: {step, kind, answer, correct, tries}
-  const tries = []; // answers checked, per step
-  const closed = []; // per step: its question's answer shown
+  // Per step: the last answer checked ({typed, right}; typed as the core's checkAnswer takes it), how many were,
+  // and whether its question is closed (answered, or its answer shown without one).
+  const checked = [];
+  const tries = [];
+  const closed = [];
   function buildLesson() {
     document.getElementById('title').textContent = lesson.title;
     document.getElementById('lesson').hidden = false;
@@ -12,9 +14,19 @@
       'Keys: ← → (or Page Up, Page Down, Space) go through the steps, Home and End; Shift+arrows or drag orbit, ' +
       '+ − zoom, 0 resets the view; answer a question, then Check (Enter).';
     document.querySelector('#stepper .buttons #play').hidden = true;
-    document.getElementById('save').addEventListener('click', () => {
-      download(JSON.stringify({ lesson: lesson.title, answers: results.filter(Boolean) }, null, 2), 'lesson-results.json');
-    });
+    document.getElementById('save').addEventListener('click', saveResults);
+  }
+
+  // The results file as the app writes it, made by the core (resultsToJson).
+  function saveResults() {
+    const live = document.getElementById('live');
+    if (!core) return void (live.textContent = coreFailed || 'The page is still loading: save again in a moment.');
+    const steps = lesson.steps.map((step, k) => step.question && {
+      scene: page.scenes[step.scene].scene, question: step.question.source,
+      given: checked[k] ? checked[k].typed : null, tries: tries[k] || 0, closed: !!closed[k] });
+    const outcome = core.lessonResults(lesson.title, JSON.stringify(steps));
+    if (outcome.error) return void (live.textContent = outcome.error);
+    download(outcome.text, 'lesson-results.json');
   }
 
   function matrixLatex(rows) {
@@ -153,14 +165,19 @@
         };
         draw();
         form.appendChild(listOf);
-        read = () => ({ order });
+        read = () => ({ order: order.slice() }); // as checked, not as moved after
         break;
       }
     }
     const check = document.createElement('button');
     check.type = 'submit';
     check.textContent = 'Check';
-    form.appendChild(check);
+    // For a class that predicted aloud: the answer without one taken; the results record it as revealed.
+    const show = document.createElement('button');
+    show.type = 'button';
+    show.className = 'show-answer';
+    show.textContent = 'Show Answer';
+    form.append(check, show);
     box.appendChild(feedback);
     const reveal = document.createElement('div');
     reveal.className = 'reveal';
@@ -173,29 +190,33 @@
       feedback.className = 'feedback wrong';
       feedback.textContent = `Not quite. Try again: ${left === 1 ? 'one more try' : left + ' more tries'} before the answer is shown.`;
     };
-    // The question closed: the verdict, the answer, why, and (when just answered) the stage it is about.
-    const close = (correct, justAnswered) => {
+    // The question closed: the verdict (right, wrong, or none: shown unanswered), the answer, why, and (when
+    // just closed) the stage it is about.
+    const close = (verdict, justClosed) => {
       form.querySelectorAll('input, button').forEach((control) => { control.disabled = true; });
-      setRichText(feedback, correct ? 'Right.' : `Not quite: the answer is ${answerText}.`);
-      feedback.className = 'feedback ' + (correct ? 'right' : 'wrong');
+      const said = { right: 'Right.', wrong: `Not quite: the answer is ${answerText}.`, shown: `The answer is ${answerText}.` };
+      setRichText(feedback, said[verdict]);
+      feedback.className = 'feedback ' + verdict;
       body.classList.remove('asking');
       reveal.hidden = false;
       reveal.textContent = '';
-      const said = document.createElement('p');
-      setRichText(said, `Answer: ${answerText}.`);
-      reveal.appendChild(said);
+      const answer = document.createElement('p');
+      setRichText(answer, `Answer: ${answerText}.`);
+      reveal.appendChild(answer);
       if (question.explanation) {
         const why = document.createElement('p');
         setRichText(why, question.explanation);
         reveal.appendChild(why);
       }
-      if (!justAnswered) return;
+      if (!justClosed) return;
       if (question.point) state.traced = question.point;
       const revealed = revealedStage(step);
       if (revealed !== state.stage) goTo(revealed, true);
       else { showPanels(); drawWorld(); }
       // Read once answered: the verdict, why, and the step's text (kept back while asking: it may hold the answer).
-      live.textContent = (correct ? 'Right.' : `Not quite: the answer is ${question.answerPlain}.`) +
+      const saidPlain = { right: 'Right.', wrong: `Not quite: the answer is ${question.answerPlain}.`,
+                          shown: `The answer is ${question.answerPlain}.` };
+      live.textContent = saidPlain[verdict] +
         (question.explanation ? ' ' + question.explanationPlain : '') + ' ' + step.captionPlain;
       body.dataset.answered = String(closed.filter(Boolean).length);
     };
@@ -209,20 +230,23 @@
       if (outcome.error === 'answer: unreadable')
         return say('Answer first: every field needs a number (a fraction such as p/q is fine).');
       if (outcome.error) return say(outcome.error);
-      const checked = JSON.parse(outcome.text);
+      const right = JSON.parse(outcome.text).right;
       tries[index] = (tries[index] || 0) + 1;
-      // The last answer checked, and how many were.
-      results[index] = { step: index + 1, kind: question.kind, answer: checked.answer, correct: checked.right, tries: tries[index] };
-      if (!checked.right && tries[index] < question.tries) { // tried again, the answer kept back
+      checked[index] = { typed, right }; // the last answer checked counts
+      if (!right && tries[index] < question.tries) { // tried again, the answer kept back
         tryAgain();
         live.textContent = feedback.textContent;
         return;
       }
       closed[index] = true;
-      close(checked.right, true);
+      close(right ? 'right' : 'wrong', true);
+    });
+    show.addEventListener('click', () => {
+      closed[index] = true;
+      close(checked[index] ? 'wrong' : 'shown', true); // a wrong try before stays the answer given
     });
     // Back at a step: a closed question stays closed, a try used is said.
-    if (closed[index]) close(results[index] ? results[index].correct : false, false);
+    if (closed[index]) close(!checked[index] ? 'shown' : checked[index].right ? 'right' : 'wrong', false);
     else if (tries[index]) tryAgain();
   }
   // The stage a step shows once its question is closed, or all along without one.
