@@ -163,7 +163,9 @@ std::string lessonPage(const Lesson& lesson, const std::vector<int>& stepScenes,
         const LessonStep& step = lesson.steps[k];
         json entry = {{"scene", stepScenes.at(k)}, {"stage", step.stage}, {"yaw", step.yaw},
                       {"pitch", step.pitch},       {"zoom", step.zoom},   {"caption", step.caption},
-                      {"captionPlain", mathSpokenText(step.caption)}};
+                      {"captionPlain", mathSpokenText(step.caption)},
+                      // The stages it shows while its question is open and once answered: the app's rule (stepShows).
+                      {"askingStage", askingStage(step)}, {"revealedStage", revealedStage(step)}};
         if (step.trace)
             entry["trace"] = {step.trace->x(), step.trace->y(), step.trace->z()};
         // What the step leaves out of its scene and draws wider, for the core to place labels as it shows them.

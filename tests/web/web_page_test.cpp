@@ -25,6 +25,8 @@
 #include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <iomanip>
+#include <optional>
 #include <set>
 #include <sstream>
 #include <stdexcept>
@@ -33,6 +35,7 @@
 #include <vector>
 
 #include "build_paths.h"
+#include "viewpipe/lesson.hpp"
 
 extern char** environ;
 
@@ -872,9 +875,11 @@ TEST(LessonPage, QuestionsAreAnsweredCheckedAndRevealed)
         browser.page("Page.navigate", {{"url", "file://" + (dir / "out" / "lesson.html").string()}});
         ASSERT_TRUE(browser.waitFor("document.body.dataset.ready === '1'"));
         EXPECT_EQ(browser.evaluate("document.getElementById('step-title').textContent"), "Step 1 of 3");
-        // Asking: the caption and the matrices that would give the answer away are hidden.
+        // Asking: the caption and the matrices that would give the answer away are not there at all.
         EXPECT_EQ(browser.evaluate("getComputedStyle(document.getElementById('matrices')).visibility"), "hidden");
-        EXPECT_EQ(browser.evaluate("document.querySelectorAll('#step-caption .katex').length"), 1);
+        EXPECT_EQ(browser.evaluate("document.getElementById('step-caption').textContent"), "");
+        EXPECT_EQ(browser.evaluate("document.getElementById('matrix').textContent"), "");
+        EXPECT_EQ(browser.evaluate("document.getElementById('stage-list').children.length"), 0);
 
         // A wrong answer first (typed into the fields, Enter), then the page says what is right.
         const auto answer = [&](const std::vector<std::string>& values) {
@@ -901,6 +906,7 @@ TEST(LessonPage, QuestionsAreAnsweredCheckedAndRevealed)
         answer({"8", "6", "83"});
         ASSERT_TRUE(browser.waitFor("document.body.dataset.answered === '1'"));
         EXPECT_NE(browser.evaluate(live).get<std::string>().find("VRC axes"), std::string::npos) << "the step's text, once answered";
+        EXPECT_EQ(browser.evaluate("document.querySelectorAll('#step-caption .katex').length"), 1);
         // The answer as the app and the handout state it, its math set by KaTeX (the annotation keeps the source).
         EXPECT_EQ(browser.evaluate("document.querySelector('#question .feedback').firstChild.textContent"),
                   "Not quite: the answer is ");
@@ -982,6 +988,145 @@ TEST(LessonPage, QuestionsAreAnsweredCheckedAndRevealed)
         for (const std::string& problem : browser.problems())
             ADD_FAILURE() << problem;
     } // the browser ends before its profile is removed
+    std::error_code ignored;
+    fs::remove_all(dir, ignored);
+}
+
+// What shows an answer: a number cut (not rounded) to 4 significant digits, its sign dropped; nothing
+// for a whole number or one of fewer digits, which the page's other numbers would show by chance.
+std::optional<std::string> cutNumber(double value)
+{
+    std::ostringstream fixed;
+    fixed << std::fixed << std::setprecision(12) << std::abs(value);
+    std::string text = fixed.str();
+    text.erase(text.find_last_not_of('0') + 1); // "2." for 2, "0.5" for 0.5
+    std::size_t digits = 0, at = 0;
+    for (; at < text.size() && digits < 4; ++at)
+        digits += std::isdigit(static_cast<unsigned char>(text[at])) && (digits > 0 || text[at] != '0');
+    if (text.back() == '.' || digits < 4)
+        return std::nullopt;
+    return text.substr(0, at);
+}
+
+// The texts that would show a question's answer, in order, as the test reads them; none where nothing can
+// be told from the page's other numbers (a point of whole numbers, 0.5).
+std::vector<std::string> answerShown(const viewpipe::Question& q)
+{
+    std::vector<std::string> texts;
+    switch (q.kind) {
+    case viewpipe::QuestionKind::Where:
+        for (int k = 0; k < 3; ++k)
+            if (const auto cut = cutNumber(q.where[k]))
+                texts.push_back(*cut);
+        break;
+    case viewpipe::QuestionKind::Entry:
+        if (const auto cut = cutNumber(q.entry))
+            texts.push_back(*cut);
+        break;
+    case viewpipe::QuestionKind::Inside:
+        texts.push_back(q.inside ? "inside the canonical volume" : "outside the canonical volume");
+        break;
+    default: break;
+    }
+    return texts;
+}
+
+// The page's text as a person or a screen reader meets it, one entry a text node or an element of one line
+// (a table row), and every aria-label and aria-description; never a script's (its data holds the answers).
+std::vector<std::string> pageTexts(Browser& browser)
+{
+    return json::parse(browser.evaluate(R"(JSON.stringify((() => {
+        const texts = [];
+        const outside = (node) => !node.parentElement || !node.parentElement.closest('script, style');
+        const walker = document.createTreeWalker(document.body, NodeFilter.SHOW_TEXT);
+        for (let node; (node = walker.nextNode());) if (outside(node)) texts.push(node.data);
+        for (const element of document.body.querySelectorAll('*')) {
+          if (element.closest('script, style')) continue;
+          const inner = element.innerText;
+          if (inner && !inner.includes('\n')) texts.push(inner);
+          for (const name of ['aria-label', 'aria-description'])
+            if (element.hasAttribute(name)) texts.push(element.getAttribute(name));
+        }
+        return texts;
+      })()))").get<std::string>());
+}
+
+// Whether one of the texts holds all of `shown`, in order.
+bool holds(const std::vector<std::string>& texts, const std::vector<std::string>& shown)
+{
+    return !shown.empty() && std::any_of(texts.begin(), texts.end(), [&](const std::string& text) {
+        std::size_t at = 0;
+        for (const std::string& part : shown) {
+            at = text.find(part, at);
+            if (at == std::string::npos)
+                return false;
+            at += part.size();
+        }
+        return true;
+    });
+}
+
+// Every built-in lesson, step by step in its page: before a step's question is answered nothing on the page
+// (but its scripts) shows that answer or a later question's; once it is shown (Show Answer), no later one's.
+TEST(LessonPage, NoAnswerIsOnThePageBeforeItsQuestionIsClosed)
+{
+    const fs::path dir = fs::temp_directory_path() / ("viewpipe-web-lessons-" + std::to_string(::getpid()));
+    fs::remove_all(dir);
+    int told = 0; // questions whose answer the page could show, checked
+    bool ownAnswerFound = false;
+    for (const auto& file : fs::directory_iterator(kData + "/lessons")) {
+        const std::string name = file.path().stem().string();
+        SCOPED_TRACE(name);
+        const viewpipe::Lesson lesson = viewpipe::loadLesson(file.path());
+        const Finished run = viewpipe({"lesson", "export", QString::fromStdString(file.path().string()), "--out",
+                                       QString::fromStdString((dir / name).string()), "--format", "html", "--quiet"});
+        ASSERT_EQ(run.exitCode, 0) << run.output;
+        Browser browser(dir / (name + "-profile"));
+        browser.page("Page.navigate", {{"url", "file://" + (dir / name / "lesson.html").string()}});
+        ASSERT_TRUE(browser.waitFor("document.body.dataset.ready === '1' && document.body.dataset.core === '1'"));
+        const int steps = int(lesson.steps.size());
+        std::vector<std::vector<std::string>> answers(lesson.steps.size());
+        for (int k = 0; k < steps; ++k)
+            if (lesson.steps[std::size_t(k)].question)
+                answers[std::size_t(k)] = answerShown(*lesson.steps[std::size_t(k)].question);
+        told += int(std::count_if(answers.begin(), answers.end(), [](const auto& a) { return !a.empty(); }));
+        // Nothing from `from` on shows, its question's answer and every later one.
+        const auto expectNoneFrom = [&](int from, int at, const char* when) {
+            const std::vector<std::string> texts = pageTexts(browser);
+            for (int j = from; j < steps; ++j)
+                EXPECT_FALSE(holds(texts, answers[std::size_t(j)]))
+                    << "step " << at + 1 << " " << when << " shows step " << j + 1 << "'s answer " << json(answers[std::size_t(j)]);
+        };
+        int closed = 0;
+        for (int k = 0; k < steps; ++k) {
+            const viewpipe::LessonStep& step = lesson.steps[std::size_t(k)];
+            const std::string title = "Step " + std::to_string(k + 1) + " of " + std::to_string(steps);
+            if (k > 0) {
+                browser.evaluate("document.activeElement.blur()");
+                browser.press("PageDown", 34);
+            }
+            ASSERT_TRUE(browser.waitFor("document.getElementById('step-title').textContent === '" + title +
+                                        "' && document.body.dataset.stage === '" + std::to_string(step.question ? viewpipe::askingStage(step) : viewpipe::revealedStage(step)) +
+                                        "' && !document.body.dataset.moving")) << title;
+            expectNoneFrom(step.question ? k : k + 1, k, "while asking");
+            if (!step.question)
+                continue;
+            browser.evaluate("document.querySelector('#question .show-answer').click()");
+            ASSERT_TRUE(browser.waitFor("document.body.dataset.answered === '" + std::to_string(++closed) +
+                                        "' && document.body.dataset.stage === '" + std::to_string(viewpipe::revealedStage(step)) +
+                                        "' && !document.body.dataset.moving")) << title;
+            expectNoneFrom(k + 1, k, "answered");
+            // The check finds an answer that is shown: foley-nper's step 7, once revealed, traces its point there.
+            if (name == "foley-nper" && k == 6) {
+                ASSERT_FALSE(answers[6].empty());
+                ownAnswerFound = holds(pageTexts(browser), answers[6]);
+            }
+        }
+        for (const std::string& problem : browser.problems())
+            ADD_FAILURE() << problem;
+    }
+    EXPECT_TRUE(ownAnswerFound) << "foley-nper's step 7 answer, revealed, is on the page";
+    EXPECT_GE(told, 10) << "questions whose answers the page could give away";
     std::error_code ignored;
     fs::remove_all(dir, ignored);
 }

@@ -3,7 +3,7 @@
   let core = null; // once loaded
   // The scene's numbers as the CLI prints them (`viewpipe pipeline SCENE --json`), or why the core refuses the scene.
   function showOutcome(outcome) {
-    if (!outcome.error) {
+    if (!outcome.error && !lesson) { // a lesson's later answers are among its numbers
       document.getElementById('json-left-out').textContent = data.filesLeftOut;
       document.getElementById('pipeline-json').textContent = outcome.pipeline;
     }

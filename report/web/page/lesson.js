@@ -4,6 +4,8 @@
   const checked = [];
   const tries = [];
   const closed = [];
+  // While a step's question is open the page shows no stage texts (names, matrices, captions), as the app (stepShows).
+  const asking = () => !!lesson && !!lesson.steps[state.step].question && !closed[state.step];
   function buildLesson() {
     document.getElementById('title').textContent = lesson.title;
     document.getElementById('lesson').hidden = false;
@@ -14,6 +16,7 @@
       'Keys: ← → (or Page Up, Page Down, Space) go through the steps, Home and End; Shift+arrows or drag orbit, ' +
       '+ − zoom, 0 resets the view; answer a question, then Check (Enter).';
     document.querySelector('#stepper .buttons #play').hidden = true;
+    document.getElementById('json-view').hidden = true; // every stage's matrices: later questions' answers
     document.getElementById('save').addEventListener('click', saveResults);
   }
 
@@ -41,7 +44,7 @@
     const box = document.getElementById('question');
     box.textContent = '';
     const question = step.question;
-    body.classList.toggle('asking', !!question && !closed[index]);
+    body.classList.toggle('asking', asking());
     if (!question) return;
     const prompt = document.createElement('p');
     prompt.className = 'prompt';
@@ -190,14 +193,15 @@
       feedback.className = 'feedback wrong';
       feedback.textContent = `Not quite. Try again: ${left === 1 ? 'one more try' : left + ' more tries'} before the answer is shown.`;
     };
-    // The question closed: the verdict (right, wrong, or none: shown unanswered), the answer, why, and (when
-    // just closed) the stage it is about.
+    // The question closed: the verdict (right, wrong, or none: shown unanswered), the answer, why, the step's
+    // caption, and (when just closed) the stage it is about.
     const close = (verdict, justClosed) => {
       form.querySelectorAll('input, button').forEach((control) => { control.disabled = true; });
       const said = { right: 'Right.', wrong: `Not quite: the answer is ${answerText}.`, shown: `The answer is ${answerText}.` };
       setRichText(feedback, said[verdict]);
       feedback.className = 'feedback ' + verdict;
       body.classList.remove('asking');
+      setRichText(document.getElementById('step-caption'), step.caption);
       reveal.hidden = false;
       reveal.textContent = '';
       const answer = document.createElement('p');
@@ -210,8 +214,7 @@
       }
       if (!justClosed) return;
       if (question.point) state.traced = question.point;
-      const revealed = revealedStage(step);
-      if (revealed !== state.stage) goTo(revealed, true);
+      if (step.revealedStage !== state.stage) goTo(step.revealedStage, true);
       else { showPanels(); drawWorld(); }
       // Read once answered: the verdict, why, and the step's text (kept back while asking: it may hold the answer).
       const saidPlain = { right: 'Right.', wrong: `Not quite: the answer is ${question.answerPlain}.`,
@@ -249,9 +252,6 @@
     if (closed[index]) close(!checked[index] ? 'shown' : checked[index].right ? 'right' : 'wrong', false);
     else if (tries[index]) tryAgain();
   }
-  // The stage a step shows once its question is closed, or all along without one.
-  const revealedStage = (step) =>
-    step.question && step.question.stage ? Math.max(step.stage, step.question.stage) : step.stage;
 
   function goToStep(index, jump) {
     index = Math.max(0, Math.min(lesson.steps.length - 1, index));
@@ -262,12 +262,11 @@
     Object.assign(state, { yaw: step.yaw, pitch: step.pitch, zoom: step.zoom });
     state.traced = (step.question && step.question.point) || step.trace || null; // the point asked about, as the app marks it
     document.getElementById('step-title').textContent = `Step ${index + 1} of ${lesson.steps.length}`;
-    setRichText(document.getElementById('step-caption'), step.caption);
+    // The caption often says what the answer is: it comes with it (close).
+    setRichText(document.getElementById('step-caption'), asking() ? '' : step.caption);
     showQuestion(step, index);
     // Asking about stage K, the view waits before it: the answer comes with K's transition.
-    const question = step.question;
-    const shownStage = closed[index] ? revealedStage(step)
-      : question && question.stage && question.kind !== 'entry' ? Math.min(step.stage, question.stage - 1) : step.stage;
+    const shownStage = asking() ? step.askingStage : step.revealedStage;
     const from = state.stage;
     if (sameScene && !jump && Math.abs(shownStage - from) === 1) goTo(shownStage, true);
     else goTo(shownStage, false);

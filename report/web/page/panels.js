@@ -3,13 +3,6 @@
   const list = document.getElementById('stage-list');
   function buildPanels() {
     list.textContent = '';
-    stages.forEach((stage, k) => {
-      const item = document.createElement('li');
-      setRichText(item, stage.list);
-      item.tabIndex = -1;
-      item.addEventListener('click', () => goTo(k, false));
-      list.appendChild(item);
-    });
     legend(document.getElementById('legend'), data.legend);
     legend(document.getElementById('projected-legend'), data.projected.legend);
     setRichText(document.getElementById('note'), data.note);
@@ -42,6 +35,18 @@
   function format(x) {
     return Math.abs(x) < 1e-12 ? '0' : Number(x.toPrecision(6)).toString();
   }
+  // The stages' names, left out while a question is open (a name may be its answer).
+  function showStageList() {
+    if (asking()) return void (list.textContent = '');
+    if (list.childElementCount) return;
+    stages.forEach((stage, k) => {
+      const item = document.createElement('li');
+      setRichText(item, stage.list);
+      item.tabIndex = -1;
+      item.addEventListener('click', () => goTo(k, false));
+      list.appendChild(item);
+    });
+  }
   function showTrace() {
     const element = document.getElementById('trace');
     if (!state.traced) {
@@ -51,7 +56,8 @@
     const table = document.createElement('table');
     table.innerHTML = '<caption>The traced vertex after each stage</caption><tr><th>stage</th><th>x</th><th>y</th><th>z</th><th>w</th></tr>';
     let p = new THREE.Vector4(...state.traced, 1);
-    stages.forEach((stage, k) => {
+    // In a lesson, rows up to the stage shown: a later row may be a later question's answer.
+    stages.slice(0, lesson ? state.stage + 1 : stages.length).forEach((stage, k) => {
       if (k > 0) p = stage.divides ? (p.w !== 0 ? p.clone().divideScalar(p.w) : p) : p.clone().applyMatrix4(matrixOf(stage.matrix));
       const row = table.insertRow();
       const cell = row.insertCell();
@@ -64,6 +70,13 @@
   }
   function showPanels() {
     const stage = stages[state.stage];
+    body.dataset.stage = state.stage;
+    showStageList();
+    if (asking()) { // the matrices, their names and the trace would give the answer away
+      for (const id of ['matrix-title', 'symbolic', 'matrix', 'cumulative', 'trace'])
+        document.getElementById(id).textContent = '';
+      return;
+    }
     list.querySelectorAll('li').forEach((item, k) => {
       if (k === state.stage) item.setAttribute('aria-current', 'step');
       else item.removeAttribute('aria-current');
@@ -97,7 +110,6 @@
     showTrace();
     document.getElementById('live').textContent =
       `Stage ${state.stage} of ${last}: ${stage.listText}.` + (stage.claim ? ' ' + stage.claimText + '.' : '');
-    body.dataset.stage = state.stage;
   }
 
   function showRest(k) {

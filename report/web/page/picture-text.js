@@ -3,7 +3,7 @@
   let placedText = '';
   function placePictureText(size) {
     const layout = stages[state.stage].layout;
-    const key = `${state.stage} ${size.width} ${size.height}`;
+    const key = `${state.stage} ${asking()} ${size.width} ${size.height}`;
     if (!layout || key === placedText) return;
     placedText = key;
     const s = fitScale(size);
@@ -31,7 +31,7 @@
       Object.assign(backdrop.style, { left: `${left}px`, top: `${top}px`, width: `${x(box[2]) - left}px`, height: `${bottom - top}px` });
       caption.before(backdrop);
     });
-    setText(caption, layout.caption);
+    setText(caption, asking() ? { ...layout.caption, lines: [] } : layout.caption); // the stage's name and claim
     setText(document.getElementById('note'), layout.note);
     const legend = document.getElementById('legend');
     legend.hidden = !layout.legend;
