@@ -633,11 +633,14 @@ LessonPack packLesson(const Lesson& lesson, const std::string& lessonFileName, c
 {
     namespace fs = std::filesystem;
     LessonPack pack;
-    std::map<fs::path, fs::path> placed; // a file read, where it goes (relative to the folder)
+    // A file read, with what it holds as written (a scene edited since another step named it is another
+    // scene), and where it goes, relative to the folder.
+    std::map<std::pair<fs::path, std::string>, fs::path> placed;
     std::set<fs::path> taken;
-    // Where `source` goes in `subfolder`, and whether it is placed there for the first time.
-    const auto place = [&](const fs::path& source, const std::string& subfolder) -> std::pair<fs::path, bool> {
-        const fs::path key = fs::weakly_canonical(fs::absolute(source));
+    // Where `source` holding `text` goes in `subfolder`, and whether it is placed there for the first time.
+    const auto place = [&](const fs::path& source, const std::string& text,
+                           const std::string& subfolder) -> std::pair<fs::path, bool> {
+        const auto key = std::make_pair(fs::weakly_canonical(fs::absolute(source)), text);
         if (const auto found = placed.find(key); found != placed.end())
             return {found->second, false};
         fs::path name = fs::path(subfolder) / source.filename();
@@ -653,14 +656,14 @@ LessonPack packLesson(const Lesson& lesson, const std::string& lessonFileName, c
         for (SceneObject& object : scene.objects) {
             if (object.type != ObjectType::Mesh)
                 continue;
-            const auto [name, first] = place(object.resolvedPath, "meshes");
+            const auto [name, first] = place(object.resolvedPath, {}, "meshes");
             if (first)
                 pack.copies.emplace_back(name, object.resolvedPath);
             object.resolvedPath = root / name;
         }
         if (scene.file.empty())
             continue; // written inline, its meshes named from the lesson
-        const auto [name, first] = place(scene.file, "scenes");
+        const auto [name, first] = place(scene.file, sceneToJson(scene), "scenes");
         scene.file = root / name;
         if (first)
             pack.texts.emplace_back(name, sceneToJson(scene, scene.file.parent_path()));

@@ -143,10 +143,23 @@ void LessonDocument::reveal(bool forEditing)
 {
     if (!isOpen() || !currentStep().question)
         return;
-    if (!forEditing && !revealed_[std::size_t(step_)] && !answers_[std::size_t(step_)])
-        unsavedAnswers_ = true; // shown unanswered: the results say so
-    revealed_[std::size_t(step_)] = true;
+    const std::size_t k = std::size_t(step_);
+    if (!revealed_[k] && !answers_[k]) {
+        if (forEditing)
+            shownForEditing_[k] = true; // the lecturer's doing, not the student's: not in the results
+        else
+            unsavedAnswers_ = true; // shown unanswered: the results say so
+    }
+    revealed_[k] = true;
     emit stepChanged();
+}
+
+std::string LessonDocument::resultsJson() const
+{
+    std::vector<bool> shownToStudent = revealed_;
+    for (std::size_t k = 0; k < shownToStudent.size(); ++k)
+        shownToStudent[k] = shownToStudent[k] && !shownForEditing_[k];
+    return resultsToJson(lesson_, answers_, shownToStudent, tries_);
 }
 
 void LessonDocument::saveResults(const QString& path)
@@ -193,6 +206,7 @@ void LessonDocument::resetAnswers()
 {
     answers_.assign(lesson_.steps.size(), std::nullopt);
     revealed_.assign(lesson_.steps.size(), false);
+    shownForEditing_.assign(lesson_.steps.size(), false);
     tries_.assign(lesson_.steps.size(), 0);
     unsavedAnswers_ = false;
 }

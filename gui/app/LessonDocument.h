@@ -74,7 +74,7 @@ public:
     // revealed, unless it shows for the lesson's editor (`forEditing`), which is no student's doing.
     void reveal(bool forEditing = false);
     // The results file, as the web page saves it.
-    std::string resultsJson() const { return resultsToJson(lesson_, answers_, revealed_, tries_); }
+    std::string resultsJson() const;
     // Writes the results file atomically; throws InputError when it cannot.
     void saveResults(const QString& path);
     // Answers given since the results were last saved.
@@ -112,6 +112,7 @@ private:
     int openings_ = 0;
     std::vector<std::optional<Answer>> answers_;
     std::vector<bool> revealed_;
+    std::vector<bool> shownForEditing_; // revealed by opening the editor, not by a student
     std::vector<int> tries_;
     bool unsavedAnswers_ = false;
     QUndoStack undo_;

@@ -289,11 +289,15 @@ bool LessonFlow::packLesson(const QString& folder)
         return false;
     rememberDialogFolder(folder + "/");
     const QString name = lesson_->filePath().isEmpty() ? "lesson.json" : QFileInfo(lesson_->filePath()).fileName();
+    if (isBuiltInFile(folder + "/" + name)) {
+        window_->showMessage(tr("Cannot pack the lesson into ViewPipe's own folder %1: choose one of yours").arg(folder));
+        return false;
+    }
     try {
         packLessonInto(lesson_->lesson(), name.toStdString(), folder.toStdString());
         window_->statusBar()->showMessage(tr("Packed %1 with its scenes and meshes into %2").arg(name, folder), 5000);
         return true;
-    } catch (const InputError& e) {
+    } catch (const std::exception& e) { // a refusal, or the file system's
         window_->showMessage(tr("Cannot pack the lesson: %1").arg(QString::fromStdString(e.what())));
         return false;
     }

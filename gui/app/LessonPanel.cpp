@@ -258,7 +258,9 @@ void LessonPanel::buildEditor()
     connect(editor_, &QGroupBox::toggled, this, [this](bool open) {
         if (open && lesson_->isAsking())
             lesson_->reveal(true); // the question's file form and the captions give the answer
-        if (!open) // leaving the editor applies what was typed; a refused edit opens it again, with the reason
+        // Leaving the editor applies what was typed; a refused edit opens it again, with the reason. Put out
+        // of reach (presenting), it keeps what was typed for later.
+        if (!open && editor_->isVisibleTo(this))
             applyPendingEdits();
     });
 

@@ -58,6 +58,7 @@ StagePanel::StagePanel(Stepper* stepper, QWidget* parent)
         if (value != stepper_->target())
             stepper_->goToStage(value);
     });
+    connect(slider_, &QSlider::sliderReleased, this, &StagePanel::follow); // dragged past where the stepper may go
     connect(previous, &QPushButton::clicked, this, [this] { stepper_->stepBy(-1); });
     connect(next, &QPushButton::clicked, this, [this] { stepper_->stepBy(1); });
     connect(play_, &QPushButton::clicked, this, [this] {

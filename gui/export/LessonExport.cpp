@@ -213,7 +213,11 @@ std::vector<fs::path> packLessonInto(const Lesson& lesson, const std::string& le
         throw InputError("--out", std::string("cannot write the pack: ") + e.what());
     }
     evaluateLesson(loadLesson(staging.path() / lessonFileName)); // only a pack that reads back, meshes too
-    return staging.commit({names.begin(), names.end()});
+    try {
+        return staging.commit({names.begin(), names.end()});
+    } catch (const fs::filesystem_error& e) {
+        throw InputError("--out", std::string("cannot move the pack into place: ") + e.what());
+    }
 }
 
 } // namespace viewpipe::gui

@@ -35,8 +35,8 @@ std::vector<std::filesystem::path> exportLesson(const Lesson& lesson, const Eval
                                                 const std::function<void(const std::string&)>& step);
 
 // Writes the lesson with the scenes and meshes it uses into `out` (packLesson),
-// the lesson as `lessonFileName`, all moved into place at once (StagingFolder)
-// and only once the lesson reads back from there with its meshes; returns what
+// the lesson as `lessonFileName`, written into a staging folder (StagingFolder)
+// and moved into place only once the lesson reads back from there with its meshes; returns what
 // `out` gained (the lesson, scenes/, meshes/). Throws InputError naming --out
 // when it cannot be written, or the file a step names that cannot be read.
 std::vector<std::filesystem::path> packLessonInto(const Lesson& lesson, const std::string& lessonFileName,

@@ -142,36 +142,42 @@ std::string vec(const Vec3<double>& v)
     return "(" + formatShortest(v.x()) + ", " + formatShortest(v.y()) + ", " + formatShortest(v.z()) + ")";
 }
 
-// The set-up a problem on paper needs: the view or camera as the scene gives it, numbers as typed.
+// The set-up a problem on paper needs: the view or camera as the scene gives it, numbers as typed, and
+// the effects it lists (the divide adds a stage).
 std::string sceneDataLatex(const Scene& scene)
 {
-    const auto n = [](double x) { return formatShortest(x); };
+    const auto n = [](double x) { return std::isinf(x) ? std::string(x > 0 ? "\\infty" : "-\\infty") : formatShortest(x); };
+    std::string out;
     if (const auto* view = std::get_if<foley::ViewSpec<double>>(&scene.camera)) {
         const bool perspective = view->projection == foley::Projection::Perspective;
-        return std::string("A ") + (perspective ? "perspective" : "parallel") + " view: $\\mathit{VRP} = " + vec(view->vrp) +
-               "$, $\\mathit{VPN} = " + vec(view->vpn) + "$, $\\mathit{VUP} = " + vec(view->vup) + "$, $\\mathit{PRP} = " +
-               vec(view->prp) + "$, the window $[" + n(view->window.umin) + ", " + n(view->window.umax) + "] \\times [" +
-               n(view->window.vmin) + ", " + n(view->window.vmax) + "]$, $F = " + n(view->front) + "$, $B = " +
-               n(view->back) + "$.";
+        out = std::string("A ") + (perspective ? "perspective" : "parallel") + " view: $\\mathit{VRP} = " + vec(view->vrp) +
+              "$, $\\mathit{VPN} = " + vec(view->vpn) + "$, $\\mathit{VUP} = " + vec(view->vup) + "$, $\\mathit{PRP} = " +
+              vec(view->prp) + "$, the window $[" + n(view->window.umin) + ", " + n(view->window.umax) + "] \\times [" +
+              n(view->window.vmin) + ", " + n(view->window.vmax) + "]$, $F = " + n(view->front) + "$, $B = " +
+              n(view->back) + "$";
+    } else {
+        const auto& camera = std::get<gl::Camera<double>>(scene.camera);
+        out = "A camera (" + texEscaped(gl::apiTitle(camera.api)) + "'s conventions, " +
+              texEscaped(gl::handednessName(camera.handedness)) + "-handed" +
+              (camera.depth == gl::DepthMode::Reversed ? ", reversed depth" : "") + "): look-at eye $" +
+              vec(camera.lookAt.eye) + "$, center $" + vec(camera.lookAt.center) + "$, up $" + vec(camera.lookAt.up) + "$; ";
+        out += std::visit(
+            [&n](const auto& box) {
+                using Box = std::decay_t<decltype(box)>;
+                if constexpr (std::is_same_v<Box, gl::Perspective<double>>)
+                    return "a perspective of $\\mathit{fovy} = " + n(box.fovyDegrees) + "^\\circ$, aspect $" + n(box.aspect) +
+                           "$, near $" + n(box.zNear) + "$, far $" + n(box.zFar) + "$";
+                else
+                    return std::string(std::is_same_v<Box, gl::Frustum<double>> ? "a frustum" : "an orthographic box") +
+                           " $(l, r, b, t, n, f) = (" + n(box.left) + ", " + n(box.right) + ", " + n(box.bottom) + ", " +
+                           n(box.top) + ", " + n(box.zNear) + ", " + n(box.zFar) + ")$";
+            },
+            camera.projection);
     }
-    const auto& camera = std::get<gl::Camera<double>>(scene.camera);
-    std::string out = "\\texttt{gluLookAt}: eye $" + vec(camera.lookAt.eye) + "$, center $" + vec(camera.lookAt.center) +
-                      "$, up $" + vec(camera.lookAt.up) + "$; ";
-    out += std::visit(
-        [&n](const auto& box) {
-            using Box = std::decay_t<decltype(box)>;
-            if constexpr (std::is_same_v<Box, gl::Perspective<double>>)
-                return "\\texttt{gluPerspective}: $\\mathit{fovy} = " + n(box.fovyDegrees) + "^\\circ$, aspect $" +
-                       n(box.aspect) + "$, near $" + n(box.zNear) + "$, far $" + n(box.zFar) + "$";
-            else
-                return std::string(std::is_same_v<Box, gl::Frustum<double>> ? "\\texttt{glFrustum}" : "\\texttt{glOrtho}") +
-                       "$(" + n(box.left) + ", " + n(box.right) + ", " + n(box.bottom) + ", " + n(box.top) + ", " +
-                       n(box.zNear) + ", " + n(box.zFar) + ")$";
-        },
-        camera.projection);
-    if (camera.api != gl::Api::OpenGL || camera.depth != gl::DepthMode::Standard)
-        out += "; " + texEscaped(gl::apiTitle(camera.api)) + (camera.depth == gl::DepthMode::Reversed ? ", reversed depth" : "");
-    return out + ".";
+    std::string effects;
+    for (const EffectKind effect : scene.effects.listed)
+        effects += (effects.empty() ? "" : ", ") + texEscaped(effectName(effect));
+    return out + (effects.empty() ? "." : "; effects: " + effects + ".");
 }
 
 const char* kPreamble = "\\usepackage{graphicx}\n\\usepackage{amsmath}\n\\usepackage{amssymb}\n\\usepackage{adjustbox}\n\\usepackage{xcolor}\n"
@@ -231,16 +237,17 @@ std::string lessonHandoutLatex(const Lesson& lesson, const std::vector<LessonFig
         << "{\\Large\\bfseries " << texEscaped(lesson.title) << "\\par}\\vspace{0.5em}\n";
     const std::size_t n = lesson.steps.size();
     int questions = 0;
-    // Each step takes the room it needs, whole on one page.
+    // Each step takes the room it needs: its heading, figure and what stands beside it on one page, a
+    // caption of any length after them.
     for (std::size_t k = 0; k < n; ++k) {
         const LessonStep& step = lesson.steps[k];
-        std::string body = "\\subsection*{Step " + std::to_string(k + 1) + " of " + std::to_string(n) + "}\n";
+        const std::string heading = "\\subsection*{Step " + std::to_string(k + 1) + " of " + std::to_string(n) + "}\n";
+        out << stepMark(k);
         if (step.question)
-            body += beside(figures[k].asking, questionLatex(step, ++questions) +
-                                                  "\\textit{The step's text is in the answer key.}\\par\n");
+            out << unbroken(heading + beside(figures[k].asking, questionLatex(step, ++questions) +
+                                                                    "\\textit{The step's text is in the answer key.}\\par\n"));
         else
-            body += beside(figures[k].revealed, matrixLatex(step)) + texRichText(step.caption) + "\\par\n";
-        out << stepMark(k) << unbroken(body);
+            out << unbroken(heading + beside(figures[k].revealed, matrixLatex(step))) << texRichText(step.caption) << "\\par\n";
     }
     if (questions > 0) {
         out << "\\clearpage\n\\section*{Answer key}\n";
@@ -251,8 +258,8 @@ std::string lessonHandoutLatex(const Lesson& lesson, const std::vector<LessonFig
                 continue;
             out << stepMark(k)
                 << unbroken("\\subsection*{Question " + std::to_string(++questions) + " (step " + std::to_string(k + 1) +
-                            ")}\n" + beside(figures[k].revealed, answerParagraphs(step) + matrixLatex(step)) +
-                            texRichText(step.caption) + "\\par\n");
+                            ")}\n" + beside(figures[k].revealed, answerParagraphs(step) + matrixLatex(step)))
+                << texRichText(step.caption) << "\\par\n";
         }
     }
     out << "\\end{document}\n";
@@ -267,18 +274,18 @@ std::string lessonSheetLatex(const Lesson& lesson)
         << "\\setlength{\\parskip}{0.5em}\n\\pagestyle{plain}\n\\begin{document}\n"
         << "{\\Large\\bfseries " << texEscaped(lesson.title) << "\\par}\\vspace{0.3em}{\\large Problems\\par}\\vspace{0.5em}\n";
     int number = 0;
-    std::string before; // the set-up of the question before
+    const Scene* before = nullptr; // the scene of the question before
     for (std::size_t k = 0; k < lesson.steps.size(); ++k) {
         const LessonStep& step = lesson.steps[k];
         if (!step.question)
             continue;
-        const std::string setUp = sceneDataLatex(step.scene);
+        const bool same = before && before->camera == step.scene.camera && before->effects == step.scene.effects;
         ++number;
         out << stepMark(k)
             << unbroken(questionLatex(step, number,
-                                      (setUp == before ? "The same set-up as question " + std::to_string(number - 1) + "."
-                                                       : setUp) + "\\par\n"));
-        before = setUp;
+                                      (same ? "The same set-up as question " + std::to_string(number - 1) + "."
+                                            : sceneDataLatex(step.scene)) + "\\par\n"));
+        before = &step.scene;
     }
     out << "\\clearpage\n\\section*{Solutions}\n";
     number = 0;

@@ -130,8 +130,6 @@ TEST(Lesson, TheBuiltInLessonsAreValid)
     EXPECT_GE(count, 5);
 }
 
-// Tries: two unless the lesson says; written back only when it says; the
-// results hold the last answer checked and how many were.
 // While a question is open its step shows no stage from the one it asks about on, nor the stages'
 // texts; once answered, every stage (the app's stepper and the page follow this one rule).
 TEST(Lesson, AnOpenQuestionHoldsTheStagesBeforeItsAnswer)
@@ -158,6 +156,27 @@ TEST(Lesson, AnOpenQuestionHoldsTheStagesBeforeItsAnswer)
     EXPECT_GT(questions, 30);
 }
 
+// A pack holds each scene as its steps show it: two steps naming one file, one of them edited since (the
+// app adds a step from the view of a scene saved over), get two scene files.
+TEST(Lesson, APackKeepsEachStepsOwnScene)
+{
+    Lesson lesson = loadLesson(std::string(viewpipe::build::dataDir) + "/lessons/foley-nper.json");
+    lesson.steps.resize(2);
+    auto& view = std::get<foley::ViewSpec<double>>(lesson.steps[1].scene.camera);
+    view.prp.z() = 90;
+    const std::filesystem::path folder = std::filesystem::temp_directory_path() / "viewpipe-pack-core";
+    const LessonPack pack = packLesson(lesson, "l.json", folder);
+    ASSERT_EQ(pack.texts.size(), 3u); // the lesson, scenes/house.json and scenes/house-2.json
+    EXPECT_EQ(pack.texts[1].first, std::filesystem::path("scenes/house.json"));
+    EXPECT_EQ(pack.texts[2].first, std::filesystem::path("scenes/house-2.json"));
+    EXPECT_NE(pack.texts[2].second.find("90"), std::string::npos);
+    const nlohmann::json written = nlohmann::json::parse(pack.texts[0].second);
+    EXPECT_EQ(written["steps"][0]["scene"], "scenes/house.json");
+    EXPECT_EQ(written["steps"][1]["scene"], "scenes/house-2.json");
+}
+
+// Tries: two unless the lesson says; written back only when it says; the
+// results hold the last answer checked and how many were.
 TEST(Lesson, AQuestionsTriesAreTwoUnlessTheLessonSays)
 {
     const Lesson twice = lessonWith(houseStep(R"({"kind": "inside", "prompt": "p", "point": [0, 0, 0]})"));

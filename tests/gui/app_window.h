@@ -107,13 +107,29 @@ template <class T> T* shownDialog()
     return nullptr;
 }
 
+// The context of the timers that answer dialogs: cancelAnswers() (a test's
+// cleanup) deletes it, so that no answer waits on into the next test.
+inline QObject*& answerContext()
+{
+    static QObject* context = nullptr;
+    if (!context)
+        context = new QObject;
+    return context;
+}
+inline void cancelAnswers()
+{
+    QObject*& context = answerContext();
+    delete context;
+    context = nullptr;
+}
+
 // Answers the next modal question boxes in turn, each by clicking the button
 // with its text; `asked`, where given, gets the last question's text.
 inline void answerNextQuestions(const QStringList& texts, QString* asked = nullptr, int triesLeft = 100)
 {
     if (texts.isEmpty())
         return;
-    QTimer::singleShot(100, [texts, asked, triesLeft] {
+    QTimer::singleShot(100, answerContext(), [texts, asked, triesLeft] {
         auto* box = shownDialog<QMessageBox>();
         if (!box) {
             if (triesLeft > 0)
@@ -139,7 +155,7 @@ inline void answerNextQuestion(const QString& text, QString* asked = nullptr, in
 // Answers the next file dialog with `path`.
 inline void answerNextFileDialog(const QString& path, int triesLeft = 100)
 {
-    QTimer::singleShot(100, [path, triesLeft] {
+    QTimer::singleShot(100, answerContext(), [path, triesLeft] {
         auto* dialog = shownDialog<QFileDialog>();
         if (!dialog) {
             if (triesLeft > 0)

@@ -197,6 +197,7 @@ private slots:
     void init() { window_ = openWindow(kHouse, {1280, 800}); }
     void cleanup()
     {
+        cancelAnswers();
         if (window_)
             window_->lessonFlow()->lesson()->undoStack()->setClean();
         closeWindow(window_);

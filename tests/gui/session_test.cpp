@@ -113,7 +113,11 @@ private slots:
         QVERIFY(window_);
     }
 
-    void cleanup() { closeWindow(window_); }
+    void cleanup()
+    {
+        cancelAnswers();
+        closeWindow(window_);
+    }
 
     // Found: Accuracy, measure, then a theme: std::bad_alloc, the app gone (a
     // redraw replaced the result it was reading).
