@@ -60,6 +60,10 @@ int runOpen(int argc, char** argv, const OpenOptions& options)
     else if (qEnvironmentVariableIsEmpty("DISPLAY"))
         throw InputError("DISPLAY", "is not set: the window needs an X display (--screenshot starts a virtual one; "
                                     "`viewpipe export` saves the stages without one)");
+    else if (!displayReachable())
+        throw InputError("DISPLAY", "is " + qEnvironmentVariable("DISPLAY").toStdString() +
+                                        ", which does not answer: the window needs an X display (--screenshot starts a "
+                                        "virtual one; `viewpipe export` saves the stages without one)");
     QSurfaceFormat::setDefaultFormat(QVTKOpenGLNativeWidget::defaultFormat());
     QApplication::setOrganizationName("ViewPipe");
     QApplication::setApplicationName("ViewPipe");

@@ -3,6 +3,7 @@
 #include <cstdio>
 #include <cstdlib>
 #include <fstream>
+#include <optional>
 #include <sstream>
 
 #include "Offscreen.h"
@@ -101,15 +102,21 @@ void compile(const fs::path& folder, const std::string& document)
     }
 }
 
-// handout.pdf and slides.pdf in `folder`, with the figures and sources they are made of.
-void writeLessonPdf(const Lesson& lesson, const EvaluatedLesson& evaluated, const LessonExportOptions& options,
-                    const fs::path& folder, const std::function<void(const std::string&)>& step)
+// The steps' figures, written into `folder`: on paper (the handout, the problem sheet) and, with
+// `forSlides`, for the slides.
+struct StepFigures {
+    std::vector<LessonFigures> paper, slides;
+};
+StepFigures writeStepFigures(const Lesson& lesson, const EvaluatedLesson& evaluated, const LessonExportOptions& options,
+                             const fs::path& folder, bool forSlides, const std::function<void(const std::string&)>& step)
 {
-    std::vector<LessonFigures> handout(lesson.steps.size()), slides(lesson.steps.size());
+    StepFigures made{std::vector<LessonFigures>(lesson.steps.size()), std::vector<LessonFigures>(lesson.steps.size())};
     for (std::size_t s = 0; s < evaluated.shown.size(); ++s) {
         const auto& scene = evaluated.shown[s];
         const OffscreenPainter paper(scene, options.width, options.height, 1, options.theme, false, kPaperFontScale);
-        const OffscreenPainter projector(scene, options.width, options.height, 1, options.theme, false, kSlideFontScale);
+        std::optional<OffscreenPainter> projector;
+        if (forSlides)
+            projector.emplace(scene, options.width, options.height, 1, options.theme, false, kSlideFontScale);
         for (std::size_t k = 0; k < lesson.steps.size(); ++k) {
             if (evaluated.stepShown[k] != int(s))
                 continue;
@@ -127,16 +134,12 @@ void writeLessonPdf(const Lesson& lesson, const EvaluatedLesson& evaluated, cons
                                     options.theme, folder / files.asking);
                 }
             };
-            figures(paper, "", handout[k]);
-            figures(projector, "slide-", slides[k]);
+            figures(paper, "", made.paper[k]);
+            if (projector)
+                figures(*projector, "slide-", made.slides[k]);
         }
     }
-    step("handout.pdf");
-    writeFileAtomically(folder / "handout.tex", lessonHandoutLatex(lesson, handout));
-    compile(folder, "handout");
-    step("slides.pdf");
-    writeFileAtomically(folder / "slides.tex", lessonSlidesLatex(lesson, slides));
-    compile(folder, "slides");
+    return made;
 }
 
 // lesson.html in `folder`: every scene shown recorded as the app draws it.
@@ -181,13 +184,22 @@ std::vector<fs::path> exportLesson(const Lesson& lesson, const EvaluatedLesson& 
         writeLessonPage(lesson, evaluated, options, staging.path(), step);
         files.push_back("lesson.html");
     }
-    if (options.formats.count("pdf")) {
-        writeLessonPdf(lesson, evaluated, options, staging.path(), step);
+    const bool pdf = options.formats.count("pdf") > 0, sheet = options.formats.count("sheet") > 0;
+    // The handout, the slides and the problem sheet, with the figures they are made of.
+    const StepFigures figures =
+        pdf || sheet ? writeStepFigures(lesson, evaluated, options, staging.path(), pdf, step) : StepFigures{};
+    if (pdf) {
+        step("handout.pdf");
+        writeFileAtomically(staging.path() / "handout.tex", lessonHandoutLatex(lesson, figures.paper));
+        compile(staging.path(), "handout");
+        step("slides.pdf");
+        writeFileAtomically(staging.path() / "slides.tex", lessonSlidesLatex(lesson, figures.slides));
+        compile(staging.path(), "slides");
         files.insert(files.end(), {"handout.pdf", "slides.pdf"});
     }
-    if (options.formats.count("sheet")) {
+    if (sheet) {
         step("sheet.pdf");
-        writeFileAtomically(staging.path() / "sheet.tex", lessonSheetLatex(lesson));
+        writeFileAtomically(staging.path() / "sheet.tex", lessonSheetLatex(lesson, figures.paper));
         compile(staging.path(), "sheet");
         files.push_back("sheet.pdf");
     }

@@ -4,17 +4,46 @@
 #include <cstdlib>
 #include <stdexcept>
 #include <string>
+#include <cstddef>
+#include <cstring>
 #include <poll.h>
+#include <sys/socket.h>
+#include <sys/un.h>
 #include <unistd.h>
 
 #include "Process.h"
 
 namespace viewpipe::gui {
 
-VirtualDisplay::VirtualDisplay()
+bool displayReachable()
 {
     const char* display = std::getenv("DISPLAY");
-    if (display && *display)
+    if (!display || !*display)
+        return false;
+    // A local display ":N" (or ":N.S") is a socket of the X server's; any other is taken on trust.
+    const std::string name = display;
+    if (name[0] != ':')
+        return true;
+    const std::string path = "/tmp/.X11-unix/X" + name.substr(1, name.find('.') - 1);
+    for (const bool abstract : {true, false}) { // Linux's X servers listen in the abstract namespace too
+        sockaddr_un address{};
+        address.sun_family = AF_UNIX;
+        std::strncpy(address.sun_path + (abstract ? 1 : 0), path.c_str(), sizeof address.sun_path - 2);
+        const int fd = ::socket(AF_UNIX, SOCK_STREAM | SOCK_CLOEXEC, 0);
+        if (fd < 0)
+            return false;
+        const socklen_t length = socklen_t(offsetof(sockaddr_un, sun_path) + (abstract ? 1 : 0) + path.size());
+        const bool connected = ::connect(fd, reinterpret_cast<const sockaddr*>(&address), length) == 0;
+        ::close(fd);
+        if (connected)
+            return true;
+    }
+    return false;
+}
+
+VirtualDisplay::VirtualDisplay()
+{
+    if (displayReachable())
         return;
     int fds[2];
     if (::pipe(fds) != 0)

@@ -1,6 +1,7 @@
 #pragma once
 
-// Debian's VTK renders through X only. Where there is no display, this starts
+// Debian's VTK renders through X only. Where there is no display (or one that
+// does not answer), this starts
 // a private Xvfb for the life of the object and points DISPLAY at it, so that
 // headless commands need nothing set up by the user.
 
@@ -8,10 +9,14 @@
 
 namespace viewpipe::gui {
 
+// Whether DISPLAY names an X server that answers (a local one is tried; a
+// remote one is taken on trust): where it does not, Qt would abort.
+bool displayReachable();
+
 class VirtualDisplay {
 public:
-    // Does nothing when DISPLAY is already set. Throws std::runtime_error when
-    // a display is needed and Xvfb cannot be started.
+    // Does nothing when DISPLAY names a display that answers; otherwise points
+    // DISPLAY at a private Xvfb. Throws std::runtime_error when Xvfb cannot be started.
     VirtualDisplay();
     ~VirtualDisplay();
     VirtualDisplay(const VirtualDisplay&) = delete;

@@ -1,6 +1,7 @@
 #include "viewpipe/report/lesson_latex.hpp"
 
 #include <algorithm>
+#include <cctype>
 #include <cmath>
 #include <sstream>
 #include <type_traits>
@@ -33,12 +34,17 @@ std::string symbol(const std::string& stageSymbol)
     return "$" + symbolMath(stageSymbol) + "$";
 }
 
-// Wide matrices shrink to the line; narrow ones keep their size. Fractions in
-// display style, rows apart (as matrices.tex sets them).
+// Rows far enough apart for fractions in display style (as matrices.tex sets them), where there are any.
+std::string rowsApart(const std::string& math)
+{
+    return math.find("\\frac") == std::string::npos ? "1.2" : "2";
+}
+
+// Wide matrices shrink to the line, tall ones to a quarter of the page (on a slide); others keep their size.
 std::string fitted(const std::string& math)
 {
-    return "\\begin{adjustbox}{max width=\\linewidth}{\\renewcommand{\\arraystretch}{1.4}\\let\\frac\\dfrac"
-           "$\\displaystyle " + math + "$}\\end{adjustbox}\\par\n";
+    return "\\begin{adjustbox}{max width=\\linewidth,max totalheight=0.25\\textheight}{\\renewcommand{\\arraystretch}{" + rowsApart(math) +
+           "}\\let\\frac\\dfrac$\\displaystyle " + math + "$}\\end{adjustbox}\\par\n";
 }
 
 std::string stageSymbol(const LessonStep& step, int stage)
@@ -137,16 +143,22 @@ std::string unbroken(const std::string& body)
     return "\\begin{minipage}{\\linewidth}\\setlength{\\parskip}{0.4em}\n" + body + "\\end{minipage}\\par\\medskip\n";
 }
 
-std::string vec(const Vec3<double>& v)
-{
-    return "(" + formatShortest(v.x()) + ", " + formatShortest(v.y()) + ", " + formatShortest(v.z()) + ")";
-}
-
 // The set-up a problem on paper needs: the view or camera as the scene gives it, numbers as typed, and
 // the effects it lists (the divide adds a stage).
 std::string sceneDataLatex(const Scene& scene)
 {
-    const auto n = [](double x) { return std::isinf(x) ? std::string(x > 0 ? "\\infty" : "-\\infty") : formatShortest(x); };
+    // As typed, but where that takes more than eight digits (a preset computed from angles): six, said so.
+    bool rounded = false;
+    const auto n = [&rounded](double x) {
+        if (std::isinf(x))
+            return std::string(x > 0 ? "\\infty" : "-\\infty");
+        const std::string typed = formatShortest(x);
+        if (std::count_if(typed.begin(), typed.end(), [](char c) { return std::isdigit(static_cast<unsigned char>(c)); }) <= 8)
+            return typed;
+        rounded = true;
+        return formatSignificant(x, 6);
+    };
+    const auto vec = [&n](const Vec3<double>& v) { return "(" + n(v.x()) + ", " + n(v.y()) + ", " + n(v.z()) + ")"; };
     std::string out;
     if (const auto* view = std::get_if<foley::ViewSpec<double>>(&scene.camera)) {
         const bool perspective = view->projection == foley::Projection::Perspective;
@@ -177,7 +189,7 @@ std::string sceneDataLatex(const Scene& scene)
     std::string effects;
     for (const EffectKind effect : scene.effects.listed)
         effects += (effects.empty() ? "" : ", ") + texEscaped(effectName(effect));
-    return out + (effects.empty() ? "." : "; effects: " + effects + ".");
+    return out + (effects.empty() ? "" : "; effects: " + effects) + (rounded ? " (numbers to six digits)." : ".");
 }
 
 const char* kPreamble = "\\usepackage{graphicx}\n\\usepackage{amsmath}\n\\usepackage{amssymb}\n\\usepackage{adjustbox}\n\\usepackage{xcolor}\n"
@@ -266,7 +278,7 @@ std::string lessonHandoutLatex(const Lesson& lesson, const std::vector<LessonFig
     return out.str();
 }
 
-std::string lessonSheetLatex(const Lesson& lesson)
+std::string lessonSheetLatex(const Lesson& lesson, const std::vector<LessonFigures>& figures)
 {
     std::ostringstream out;
     out << "% A ViewPipe problem sheet: the lesson's questions, then their solutions. Compile with pdflatex.\n"
@@ -282,9 +294,10 @@ std::string lessonSheetLatex(const Lesson& lesson)
         const bool same = before && before->camera == step.scene.camera && before->effects == step.scene.effects;
         ++number;
         out << stepMark(k)
-            << unbroken(questionLatex(step, number,
-                                      (same ? "The same set-up as question " + std::to_string(number - 1) + "."
-                                            : sceneDataLatex(step.scene)) + "\\par\n"));
+            << unbroken(beside(figures[k].asking,
+                               questionLatex(step, number,
+                                             (same ? "The same set-up as question " + std::to_string(number - 1) + "."
+                                                   : sceneDataLatex(step.scene)) + "\\par\n")));
         before = &step.scene;
     }
     out << "\\clearpage\n\\section*{Solutions}\n";
@@ -311,10 +324,11 @@ std::string lessonSheetLatex(const Lesson& lesson)
             }
             const std::vector<std::string> points = report::tracedLatex(step.scene, q.point, last, kDigits);
             const std::vector<Stage<double>> named = buildPipeline(step.scene.camera, step.scene.effects).stages;
-            body += "The point $(x, y, z, w)$ after each stage:\\par\n{\\renewcommand{\\arraystretch}{1.5}\\let\\frac\\dfrac"
-                    "\\begin{tabular}{@{}l@{\\quad}l@{}}\n";
+            std::string rows;
             for (std::size_t s = 0; s < points.size(); ++s)
-                body += (s == 0 ? std::string("world") : symbol(named[s - 1].symbol)) + " & $" + points[s] + "$ \\\\\n";
+                rows += (s == 0 ? std::string("world") : symbol(named[s - 1].symbol)) + " & $" + points[s] + "$ \\\\\n";
+            body += "The point $(x, y, z, w)$ after each stage:\\par\n{\\renewcommand{\\arraystretch}{" + rowsApart(rows) +
+                    "}\\let\\frac\\dfrac\\begin{tabular}{@{}l@{\\quad}l@{}}\n" + rows;
             body += "\\end{tabular}}\\par\n";
         } else if (q.kind == QuestionKind::Entry) {
             body += fitted(report::stageLatex(step.scene, q.stage, kDigits, {{q.row, q.column}}));

@@ -424,7 +424,8 @@ private slots:
         QVERIFY(contentShare(QImage(dir.filePath("headless/01-t-vrp.png"))) > 0.02);
     }
 
-    // A screenshot of the app needs no display either; the window alone is refused in words, not aborted.
+    // A screenshot of the app needs no display either (none, or one that does not answer); the window alone
+    // is refused in words, not aborted.
     void openWorksWithoutADisplayForAScreenshot()
     {
         QTemporaryDir dir;
@@ -438,6 +439,15 @@ private slots:
         const Run window = runViewpipe({"open", kHouse}, environment);
         QCOMPARE(window.exitCode, 2);
         QVERIFY2(window.err.contains("DISPLAY: is not set"), qPrintable(window.err));
+        // A display named that does not answer is as none (Qt aborted on it, exit 134).
+        environment.insert("DISPLAY", ":4321");
+        QFile::remove(file);
+        const Run silent = runViewpipe({"open", kHouse, "--stage", "2", "--screenshot", file, "--size", "1280x720"}, environment);
+        QVERIFY2(silent.exitCode == 0, qPrintable(silent.err));
+        QCOMPARE(QImage(file).size(), QSize(1280, 720));
+        const Run refused = runViewpipe({"open", kHouse}, environment);
+        QCOMPARE(refused.exitCode, 2);
+        QVERIFY2(refused.err.contains("DISPLAY: is :4321, which does not answer"), qPrintable(refused.err));
     }
 
     // The CAD sheet: four views, each quadrant drawn, one scale (the front and
@@ -490,7 +500,7 @@ private slots:
     }
 
     // A lesson as a problem sheet: foley-nper's nine questions and their solutions on at most eight A4 pages, the
-    // solutions after the questions, on a page of their own.
+    // solutions after the questions, on a page of their own. Every built-in lesson's paper fits its pages.
     void lessonProblemSheet()
     {
         QTemporaryDir out;
@@ -521,6 +531,28 @@ private slots:
         tool("pdftoppm", {"-png", "-r", "50", "-f", QString::number(firstPage), "-l", QString::number(firstPage), "-singlefile", sheet,
                           out.filePath("solutions")});
         QVERIFY(contentShare(QImage(out.filePath("solutions.png"))) > 0.02);
+
+        // Every built-in lesson: each slide on one page (a step's, and its answer's), the handout on at most
+        // ten pages, the sheet on at most eight.
+        const QFileInfoList lessons = QDir(QString(::viewpipe::build::dataDir) + "/lessons").entryInfoList({"*.json"}, QDir::Files);
+        QVERIFY(lessons.size() >= 5);
+        for (const QFileInfo& lesson : lessons) {
+            const QString folder = out.filePath(lesson.completeBaseName());
+            const Run made = runViewpipe({"lesson", "export", lesson.filePath(), "--out", folder, "--format", "pdf,sheet", "--quiet"});
+            QVERIFY2(made.exitCode == 0, qPrintable(lesson.fileName() + ": " + made.err));
+            QFile file(lesson.filePath());
+            QVERIFY(file.open(QIODevice::ReadOnly));
+            const QJsonArray steps = QJsonDocument::fromJson(file.readAll()).object()["steps"].toArray();
+            int slides = 0;
+            for (const QJsonValue& step : steps)
+                slides += step.toObject().contains("question") ? 2 : 1;
+            const auto pagesOf = [&](const QString& pdf) {
+                return QRegularExpression("Pages:\\s+(\\d+)").match(tool("pdfinfo", {folder + "/" + pdf})).captured(1).toInt();
+            };
+            QCOMPARE(pagesOf("slides.pdf"), slides);
+            QVERIFY2(pagesOf("handout.pdf") <= 10, qPrintable(lesson.fileName()));
+            QVERIFY2(pagesOf("sheet.pdf") <= 8, qPrintable(lesson.fileName()));
+        }
     }
 
     // A lesson on paper: handout.pdf, each step the room it needs and the

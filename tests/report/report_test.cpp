@@ -320,12 +320,15 @@ TEST(LessonLatex, HandoutFiguresKeepTheirLabelsReadable)
     EXPECT_GE(labelPoints, 9.5);
 }
 
-// The problem sheet: the questions with the set-up each needs and no answer, then the solutions worked with exact
+// The problem sheet: the questions with their pictures and the set-up each needs, no answer, then the solutions worked with exact
 // numbers: foley-nper's question 7 traces (16, 10, 30) through five stages to S_per, whose entries are fractions.
 TEST(LessonLatex, TheProblemSheetAsksThenSolvesExactly)
 {
     const Lesson lesson = loadLesson(std::string(viewpipe::build::dataDir) + "/lessons/foley-nper.json");
-    const std::string sheet = lessonSheetLatex(lesson);
+    std::vector<LessonFigures> figures;
+    for (std::size_t k = 0; k < lesson.steps.size(); ++k)
+        figures.push_back({"step-" + std::to_string(k) + "-asking.pdf", "step-" + std::to_string(k) + ".pdf"});
+    const std::string sheet = lessonSheetLatex(lesson, figures);
     const std::size_t solutions = sheet.find("\\section*{Solutions}");
     ASSERT_NE(solutions, std::string::npos);
     const std::string problems = sheet.substr(0, solutions), solved = sheet.substr(solutions);
@@ -334,7 +337,11 @@ TEST(LessonLatex, TheProblemSheetAsksThenSolvesExactly)
         EXPECT_NE(solved.find("\\subsection*{Question " + std::to_string(k) + "}"), std::string::npos) << k;
     }
     EXPECT_EQ(problems.find("Answer"), std::string::npos);
-    EXPECT_EQ(problems.find("\\includegraphics"), std::string::npos);
+    // Each question beside its picture as it is asked, none of the pictures of the answers.
+    for (std::size_t k = 0; k < lesson.steps.size(); ++k) {
+        EXPECT_NE(problems.find("{step-" + std::to_string(k) + "-asking.pdf}"), std::string::npos) << k;
+        EXPECT_EQ(sheet.find("{step-" + std::to_string(k) + ".pdf}"), std::string::npos) << k;
+    }
     // Foley's house view, as typed, once; the questions after on the same view say so.
     EXPECT_NE(problems.find("$\\mathit{PRP} = (8, 6, 84)$"), std::string::npos);
     EXPECT_NE(problems.find("The same set-up as question 2."), std::string::npos);

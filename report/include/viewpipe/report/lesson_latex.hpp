@@ -32,11 +32,12 @@ constexpr double kHandoutFigureTextScale = 0.86 / kHandoutFigureWidth;
 constexpr const char* kStepMark = "% steps";
 
 std::string lessonHandoutLatex(const Lesson& lesson, const std::vector<LessonFigures>& figures);
-// A problem sheet: the lesson's questions numbered, each with the set-up it
-// needs (the view or camera as typed, the point), no pictures; then the
+// A problem sheet: the lesson's questions numbered, each beside its picture
+// as the handout shows it while asking (`figures`, the handout's), with the
+// set-up it needs (the view or camera as typed, the point); then the
 // solutions worked by the core: the stages' matrices up to the stage asked,
 // the point after each stage, exact fractions where the numbers are ones.
-std::string lessonSheetLatex(const Lesson& lesson);
+std::string lessonSheetLatex(const Lesson& lesson, const std::vector<LessonFigures>& figures);
 std::string lessonSlidesLatex(const Lesson& lesson, const std::vector<LessonFigures>& figures);
 
 // A question's answer as lesson text (inline `$` math), as every writer
