@@ -389,9 +389,11 @@ StepShows stepShows(const LessonStep& step, bool answered, int stageCount)
     return {askingStage(step), false};
 }
 
-std::optional<Vec3<double>> tracedAt(const LessonStep& step)
+std::optional<Vec3<double>> tracedAt(const LessonStep& step, bool answered)
 {
     const std::optional<Question>& q = step.question;
+    if (q && q->kind == QuestionKind::Inside && !answered)
+        return step.trace == q->point ? std::nullopt : step.trace;
     if (q && (q->kind == QuestionKind::Where || q->kind == QuestionKind::Inside || q->kind == QuestionKind::SignW))
         return q->point;
     return step.trace;

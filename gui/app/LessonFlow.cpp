@@ -204,7 +204,7 @@ void LessonFlow::showLessonStep()
         stepper->goToStage(stepper->stage(), false);
     }
     const bool revealed = !step.question || lesson_->isRevealed(k);
-    window_->traceVertex(tracedAt(step)); // the point asked about, followed through the stages once answered
+    window_->traceVertex(tracedAt(step, revealed)); // the point asked about, followed through the stages once answered
     const int stage = revealed ? revealedStage(step) : askingStage(step);
     // The answer comes with the transition to the stage asked about; a step to the next stage plays it too.
     stepper->setLastStage(std::nullopt);

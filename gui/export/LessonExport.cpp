@@ -126,11 +126,11 @@ StepFigures writeStepFigures(const Lesson& lesson, const EvaluatedLesson& evalua
             std::snprintf(name, sizeof name, "step-%02zu", k + 1);
             auto figures = [&](const OffscreenPainter& offscreen, const std::string& prefix, LessonFigures& files) {
                 files.revealed = prefix + name + ".pdf";
-                writeStepFigure(offscreen, scene, lessonStep, revealedStage(lessonStep), true, tracedAt(lessonStep),
+                writeStepFigure(offscreen, scene, lessonStep, revealedStage(lessonStep), true, tracedAt(lessonStep, true),
                                 options.theme, folder / files.revealed);
                 if (lessonStep.question) {
                     files.asking = prefix + name + "-asking.pdf";
-                    writeStepFigure(offscreen, scene, lessonStep, askingStage(lessonStep), false, tracedAt(lessonStep),
+                    writeStepFigure(offscreen, scene, lessonStep, askingStage(lessonStep), false, tracedAt(lessonStep, false),
                                     options.theme, folder / files.asking);
                 }
             };

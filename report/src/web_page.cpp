@@ -166,8 +166,10 @@ std::string lessonPage(const Lesson& lesson, const std::vector<int>& stepScenes,
                       {"captionPlain", mathSpokenText(step.caption)},
                       // The stages it shows while its question is open and once answered: the app's rule (stepShows).
                       {"askingStage", askingStage(step)}, {"revealedStage", revealedStage(step)}};
-        if (step.trace)
-            entry["trace"] = {step.trace->x(), step.trace->y(), step.trace->z()};
+        // The point it marks while its question is open and once answered (tracedAt), or null.
+        const auto point = [](const std::optional<Vec3<double>>& p) { return p ? json{p->x(), p->y(), p->z()} : json(nullptr); };
+        entry["tracedAsking"] = point(tracedAt(step, false));
+        entry["tracedAnswered"] = point(tracedAt(step, true));
         // What the step leaves out of its scene and draws wider, for the core to place labels as it shows them.
         entry["shown"] = json::parse(stepShownJson(step));
         if (!step.entries.empty()) { // the stage's equation with those entries marked, as the page's own shows it

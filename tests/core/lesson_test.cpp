@@ -156,6 +156,20 @@ TEST(Lesson, AnOpenQuestionHoldsTheStagesBeforeItsAnswer)
     EXPECT_GT(questions, 30);
 }
 
+// The point a step marks: an open inside question's point is not (its place against the volume is the
+// answer); once answered it is, as a where question's is all along.
+TEST(Lesson, AnOpenInsideQuestionMarksNoPoint)
+{
+    const Lesson lesson = loadLesson(std::string(viewpipe::build::dataDir) + "/lessons/foley-nper.json");
+    const LessonStep& inside = lesson.steps[8]; // is (8, 16, 70) inside the view volume?
+    ASSERT_EQ(inside.question->kind, QuestionKind::Inside);
+    EXPECT_FALSE(tracedAt(inside, false));
+    EXPECT_EQ(tracedAt(inside, true), inside.question->point);
+    const LessonStep& where = lesson.steps[6]; // where is (16, 10, 30) after S_per?
+    EXPECT_EQ(tracedAt(where, false), where.question->point);
+    EXPECT_EQ(tracedAt(where, true), where.question->point);
+}
+
 // A pack holds each scene as its steps show it: two steps naming one file, one of them edited since (the
 // app adds a step from the view of a scene saved over), get two scene files.
 TEST(Lesson, APackKeepsEachStepsOwnScene)

@@ -223,6 +223,10 @@ private slots:
                 if (lesson.steps[std::size_t(k)].question) {
                     const QString early = givenAway(lesson, std::size_t(k), shownTexts(w), w.traced());
                     QVERIFY2(early.isEmpty(), qPrintable(where + ", asking: " + early));
+                    // An inside question's point is not marked: where it lies against the volume is the answer.
+                    const Question& asked = *lesson.steps[std::size_t(k)].question;
+                    if (asked.kind == QuestionKind::Inside)
+                        QVERIFY2(w.traced() != asked.point, qPrintable(where));
                     // The stepper holds: ▶, the slider and Play go no further than the stage the step waits at.
                     const int holds = w.stepper()->target();
                     QCOMPARE(holds, askingStage(lesson.steps[std::size_t(k)]));

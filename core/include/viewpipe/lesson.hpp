@@ -94,8 +94,9 @@ struct StepShows {
 StepShows stepShows(const LessonStep& step, bool answered, int stageCount);
 
 // The point a step marks: the point its question asks about (where, inside,
-// sign_w), otherwise the step's own trace.
-std::optional<Vec3<double>> tracedAt(const LessonStep& step);
+// sign_w), otherwise the step's own trace. While an inside question is open
+// its point is not marked: where it lies against the view volume is the answer.
+std::optional<Vec3<double>> tracedAt(const LessonStep& step, bool answered);
 
 // The order a question's choices are offered in, as indices: a choice
 // question's as written, a scene's stage symbols (which_stage, order) sorted,

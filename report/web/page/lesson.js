@@ -213,7 +213,7 @@
         reveal.appendChild(why);
       }
       if (!justClosed) return;
-      if (question.point) state.traced = question.point;
+      state.traced = step.tracedAnswered;
       if (step.revealedStage !== state.stage) goTo(step.revealedStage, true);
       else { showPanels(); drawWorld(); }
       // Read once answered: the verdict, why, and the step's text (kept back while asking: it may hold the answer).
@@ -260,7 +260,7 @@
     state.step = index;
     useScene(step.scene);
     Object.assign(state, { yaw: step.yaw, pitch: step.pitch, zoom: step.zoom });
-    state.traced = (step.question && step.question.point) || step.trace || null; // the point asked about, as the app marks it
+    state.traced = asking() ? step.tracedAsking : step.tracedAnswered; // the core's rule, as the app marks it
     document.getElementById('step-title').textContent = `Step ${index + 1} of ${lesson.steps.length}`;
     // The caption often says what the answer is: it comes with it (close).
     setRichText(document.getElementById('step-caption'), asking() ? '' : step.caption);
