@@ -9,8 +9,8 @@
 
 namespace viewpipe::gui {
 
-// Whether DISPLAY names an X server that answers (a local one is tried; a
-// remote one is taken on trust): where it does not, Qt would abort.
+// Whether DISPLAY names an X server that is there (a local one's socket; a
+// remote one is taken on trust): where it is not, Qt would abort.
 bool displayReachable();
 
 class VirtualDisplay {

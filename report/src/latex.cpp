@@ -163,11 +163,27 @@ std::string entryLatex(const Scene& scene, int stage, int row, int column, int d
     return exactText(p.stages.at(std::size_t(stage - 1)).matrix(row - 1, column - 1), digits);
 }
 
+namespace {
+
+PointTrace<Exact> exactTrace(const Scene& scene, const Vec3<double>& point)
+{
+    const auto exact = [](double x) { return fromDecimal<Exact>(x); };
+    return tracePoint(exactPipeline(scene), Vec3<Exact>(exact(point.x()), exact(point.y()), exact(point.z())));
+}
+
+} // namespace
+
+std::string pointAfterLatex(const Scene& scene, const Vec3<double>& point, int stage, int digits)
+{
+    const Vec4<Exact> q = exactTrace(scene, point).afterStage.at(std::size_t(stage - 1));
+    const Exact w = q.w() != 0 ? q.w() : Exact(1); // a where question's point has w != 0 (lesson.cpp)
+    return "(" + exactText(q.x() / w, digits) + ", " + exactText(q.y() / w, digits) + ", " + exactText(q.z() / w, digits) + ")";
+}
+
 std::vector<std::string> tracedLatex(const Scene& scene, const Vec3<double>& point, int stages, int digits)
 {
-    const Pipeline<Exact> p = exactPipeline(scene);
     const auto exact = [](double x) { return fromDecimal<Exact>(x); };
-    const PointTrace<Exact> trace = tracePoint(p, Vec3<Exact>(exact(point.x()), exact(point.y()), exact(point.z())));
+    const PointTrace<Exact> trace = exactTrace(scene, point);
     const auto text = [digits](const Vec4<Exact>& q) {
         return "(" + exactText(q.x(), digits) + ", " + exactText(q.y(), digits) + ", " + exactText(q.z(), digits) + ", " +
                exactText(q.w(), digits) + ")";

@@ -219,7 +219,11 @@ std::string answerText(const LessonStep& step)
 {
     const Question& q = *step.question;
     switch (q.kind) {
-    case QuestionKind::Where: return point(q.where);
+    case QuestionKind::Where: { // exactly, and as a decimal where that is another text
+        const std::string exact = report::pointAfterLatex(step.scene, q.point, q.stage, 6);
+        const std::string decimal = point(q.where);
+        return "$" + exact + "$" + ("$" + exact + "$" == decimal ? "" : " ($\\approx " + decimal.substr(1, decimal.size() - 2) + "$)");
+    }
     case QuestionKind::Inside: return q.inside ? "inside the view volume" : "clipped away";
     case QuestionKind::SignW: return std::string("$w$ is ") + (q.signW > 0 ? "positive" : q.signW < 0 ? "negative" : "zero");
     case QuestionKind::WhichStage: return symbol(q.choices[std::size_t(q.correct)]);

@@ -354,7 +354,11 @@ TEST(LessonLatex, TheProblemSheetAsksThenSolvesExactly)
     EXPECT_NE(worked.find("world & $(16, 10, 30, 1)$"), std::string::npos) << worked;
     EXPECT_NE(worked.find("$(8, 4, -54, 1)$"), std::string::npos) << worked; // after T(-PRP): (16-8, 10-6, 30-84)
     EXPECT_NE(worked.find("\\frac{"), std::string::npos); // S_per's entries, and the point after it, as fractions
-    EXPECT_NE(worked.find("\\textbf{Answer:}"), std::string::npos);
+    // The answer exactly, with its decimals beside it.
+    EXPECT_NE(worked.find("\\textbf{Answer:} $(\\frac{552}{1475},\\allowbreak \\frac{66}{295},\\allowbreak -\\frac{54}{59})$ "
+                          "($\\approx (0.374237,\\allowbreak 0.223729,\\allowbreak -0.915254)$)"),
+              std::string::npos)
+        << worked;
 }
 
 } // namespace
