@@ -30,6 +30,7 @@
 #include "app/Exports.h"
 #include "app/LessonDocument.h"
 #include "app/LessonFlow.h"
+#include "app/LessonPanel.h"
 #include "app/MainWindow.h"
 #include "app/PresentMode.h"
 #include "app/SceneFiles.h"
@@ -50,6 +51,15 @@ inline std::unique_ptr<viewpipe::gui::MainWindow> openWindow(const QString& scen
         return nullptr;
     }
     return window;
+}
+
+// A widget of the Lesson panel by its object name; a warning, and null, where there is none.
+template <class T> T* lessonChild(viewpipe::gui::MainWindow& window, const QString& name)
+{
+    T* found = window.lessonPanel()->findChild<T*>(name);
+    if (!found)
+        qWarning("no %s", qPrintable(name));
+    return found;
 }
 
 // Closes a window as a test ends, without asking about unsaved changes.

@@ -42,14 +42,6 @@ namespace {
 const QString kHouse = QString(viewpipe::build::dataDir) + "/scenes/house.json";
 const QString kFoley = QString(viewpipe::build::dataDir) + "/lessons/foley-nper.json";
 
-template <class T> T* child(MainWindow& w, const QString& name)
-{
-    T* found = w.lessonPanel()->findChild<T*>(name);
-    if (!found)
-        qWarning("no %s", qPrintable(name));
-    return found;
-}
-
 // A click where a person clicks: a button's middle, a radio button's circle.
 void click(QWidget* widget)
 {
@@ -83,7 +75,7 @@ double differingShare(const QImage& a, const QImage& b)
 
 QString feedback(MainWindow& w)
 {
-    return child<QLabel>(w, "feedback")->text();
+    return lessonChild<QLabel>(w, "feedback")->text();
 }
 
 // The step's view has settled: no transition running.
@@ -110,16 +102,16 @@ private slots:
         MainWindow& w = *window_;
         QVERIFY(w.lessonFlow()->openLesson(kFoley));
         QTRY_VERIFY(w.findChild<QDockWidget*>("lessonDock")->isVisible());
-        QCOMPARE(child<QLabel>(w, "lessonStep")->text(), QString("Step 1 of 9"));
+        QCOMPARE(lessonChild<QLabel>(w, "lessonStep")->text(), QString("Step 1 of 9"));
 
         // Step 1 asks for the order of the stages: while it waits, nothing names them.
         QVERIFY(!w.stagePanel()->stageList()->isVisible());
         QVERIFY(w.findChild<QLabel*>("stagesWait")->isVisible());
         QVERIFY(w.matrices()->stageText().contains("follow the answer"));
         QCOMPARE(w.painter()->worldCaption(), std::string());
-        QVERIFY(child<QLabel>(w, "lessonCaption")->text().contains("follows the answer"));
+        QVERIFY(lessonChild<QLabel>(w, "lessonCaption")->text().contains("follows the answer"));
         // The stages offered sorted by name, which gives nothing away; put them in order with the mouse.
-        auto* list = child<QListWidget>(w, "orderList");
+        auto* list = lessonChild<QListWidget>(w, "orderList");
         const QStringList order = {"T(-VRP)", "R", "T(-PRP)", "SH_per", "S_per"};
         QCOMPARE(list->item(0)->text(), QString("R"));
         for (int target = 0; target < order.size(); ++target) {
@@ -129,32 +121,32 @@ private slots:
             QTest::mouseClick(list->viewport(), Qt::LeftButton, {}, list->visualItemRect(list->item(row)).center());
             QCOMPARE(list->currentRow(), row);
             for (; row > target; --row)
-                click(child<QPushButton>(w, "orderUp"));
+                click(lessonChild<QPushButton>(w, "orderUp"));
         }
-        click(child<QPushButton>(w, "checkButton"));
+        click(lessonChild<QPushButton>(w, "checkButton"));
         QVERIFY2(feedback(w).contains("Right."), qPrintable(feedback(w)));
         QVERIFY(w.stagePanel()->stageList()->isVisible());
         QVERIFY(w.matrices()->stageText().contains("World"));
-        QVERIFY(child<QLabel>(w, "lessonCaption")->text().contains("The house in world coordinates"));
-        QVERIFY(!child<QPushButton>(w, "checkButton")->isEnabled()); // right: the question is closed
+        QVERIFY(lessonChild<QLabel>(w, "lessonCaption")->text().contains("The house in world coordinates"));
+        QVERIFY(!lessonChild<QPushButton>(w, "checkButton")->isEnabled()); // right: the question is closed
 
         // Step 2, a multiple choice: a click on the answer, then Check.
         QTest::keyClick(&w, Qt::Key_PageDown);
-        QCOMPARE(child<QLabel>(w, "lessonStep")->text(), QString("Step 2 of 9"));
+        QCOMPARE(lessonChild<QLabel>(w, "lessonStep")->text(), QString("Step 2 of 9"));
         QVERIFY(!w.stagePanel()->stageList()->isVisible());
-        click(child<QRadioButton>(w, "choice0"));
-        click(child<QPushButton>(w, "checkButton"));
+        click(lessonChild<QRadioButton>(w, "choice0"));
+        click(lessonChild<QPushButton>(w, "checkButton"));
         QVERIFY2(feedback(w).contains("Right."), qPrintable(feedback(w)));
 
         // Step 4: which stage is this matrix? It shows R's numbers; pick R.
         w.lessonFlow()->lesson()->goTo(3);
         QTRY_VERIFY(settled(w));
-        QVERIFY(child<QLabel>(w, "questionAbout")->text().contains("0.7071"));
+        QVERIFY(lessonChild<QLabel>(w, "questionAbout")->text().contains("0.7071"));
         QCOMPARE(w.stepper()->stage(), 1); // waiting before the stage asked about
         for (QRadioButton* radio : w.lessonPanel()->findChildren<QRadioButton*>())
             if (radio->accessibleName() == "R")
                 click(radio);
-        click(child<QPushButton>(w, "checkButton"));
+        click(lessonChild<QPushButton>(w, "checkButton"));
         QVERIFY2(feedback(w).contains("Right."), qPrintable(feedback(w)));
         QTRY_VERIFY(settled(w) && w.stepper()->stage() == 2); // the answer comes with R's transition
 
@@ -162,22 +154,22 @@ private slots:
         QTest::keyClick(&w, Qt::Key_PageDown);
         QTRY_VERIFY(settled(w));
         QCOMPARE(w.stepper()->stage(), 2);
-        QTest::keyClicks(child<QLineEdit>(w, "answerX"), "1");
-        QTest::keyClicks(child<QLineEdit>(w, "answerY"), "2");
-        QTest::keyClick(child<QLineEdit>(w, "answerY"), Qt::Key_Return);
+        QTest::keyClicks(lessonChild<QLineEdit>(w, "answerX"), "1");
+        QTest::keyClicks(lessonChild<QLineEdit>(w, "answerY"), "2");
+        QTest::keyClick(lessonChild<QLineEdit>(w, "answerY"), Qt::Key_Return);
         QVERIFY2(feedback(w).contains("Type three numbers"), qPrintable(feedback(w))); // nothing recorded yet
         QVERIFY(w.lessonFlow()->lesson()->isAsking());
-        QTest::keyClicks(child<QLineEdit>(w, "answerZ"), "3");
-        QTest::keyClick(child<QLineEdit>(w, "answerZ"), Qt::Key_Return);
+        QTest::keyClicks(lessonChild<QLineEdit>(w, "answerZ"), "3");
+        QTest::keyClick(lessonChild<QLineEdit>(w, "answerZ"), Qt::Key_Return);
         // Two tries (the default): the first wrong answer says so and keeps the answer back.
         QVERIFY2(feedback(w).contains("Not quite") && feedback(w).contains("one more try") && !feedback(w).contains("(0, 0, 0)"),
                  qPrintable(feedback(w)));
         QVERIFY(w.lessonFlow()->lesson()->isAsking());
-        QVERIFY(child<QLabel>(w, "lessonCaption")->text().contains("follows the answer"));
+        QVERIFY(lessonChild<QLabel>(w, "lessonCaption")->text().contains("follows the answer"));
         QCOMPARE(w.stepper()->stage(), 2);
-        QTest::keyClick(child<QLineEdit>(w, "answerZ"), Qt::Key_Backspace);
-        QTest::keyClicks(child<QLineEdit>(w, "answerZ"), "5");
-        QTest::keyClick(child<QLineEdit>(w, "answerZ"), Qt::Key_Return);
+        QTest::keyClick(lessonChild<QLineEdit>(w, "answerZ"), Qt::Key_Backspace);
+        QTest::keyClicks(lessonChild<QLineEdit>(w, "answerZ"), "5");
+        QTest::keyClick(lessonChild<QLineEdit>(w, "answerZ"), Qt::Key_Return);
         QVERIFY2(feedback(w).contains("Not quite") && feedback(w).contains("(0, 0, 0)"), qPrintable(feedback(w)));
         QTRY_VERIFY(settled(w) && w.stepper()->stage() == 3);
         QVERIFY(w.matrices()->traceText().contains("84")); // the PRP is followed through the stages
@@ -185,9 +177,9 @@ private slots:
         // Step 6: an entry as a fraction with the typeset minus sign.
         QTest::keyClick(&w, Qt::Key_PageDown);
         // The minus as a keyboard layout with it sends it (keyClicks takes ASCII only).
-        QTest::sendKeyEvent(QTest::Click, child<QLineEdit>(w, "answerEntry"), Qt::Key_unknown, QString::fromUtf8("\u2212"), {});
-        QTest::keyClicks(child<QLineEdit>(w, "answerEntry"), "2/21");
-        QTest::keyClick(child<QLineEdit>(w, "answerEntry"), Qt::Key_Return);
+        QTest::sendKeyEvent(QTest::Click, lessonChild<QLineEdit>(w, "answerEntry"), Qt::Key_unknown, QString::fromUtf8("\u2212"), {});
+        QTest::keyClicks(lessonChild<QLineEdit>(w, "answerEntry"), "2/21");
+        QTest::keyClick(lessonChild<QLineEdit>(w, "answerEntry"), Qt::Key_Return);
         QVERIFY2(feedback(w).contains("Right."), qPrintable(feedback(w)));
         // Revealed, SH_per's matrix marks the entries the step highlights: -2/21 and -1/14, and nothing else.
         QTRY_VERIFY(settled(w) && w.stepper()->stage() == 4);
@@ -226,7 +218,7 @@ private slots:
         // Found: Show Answer before any answer left no trace in the results.
         w.lessonFlow()->lesson()->goTo(7);
         QVERIFY(w.lessonFlow()->lesson()->isAsking());
-        click(child<QPushButton>(w, "revealButton"));
+        click(lessonChild<QPushButton>(w, "revealButton"));
         QVERIFY(w.lessonFlow()->lesson()->hasUnsavedAnswers());
         QVERIFY(w.lessonFlow()->saveLessonResults(results));
         file.close();
@@ -318,7 +310,7 @@ private slots:
         w.painter()->orbit(30, -15, 1.5);
         w.lessonFlow()->newLessonFromView();
         QVERIFY(w.lessonFlow()->lesson()->isOpen());
-        QVERIFY(child<QGroupBox>(w, "lessonEditor")->isChecked());
+        QVERIFY(lessonChild<QGroupBox>(w, "lessonEditor")->isChecked());
         const LessonStep first = w.lessonFlow()->lesson()->lesson().steps[0];
         QCOMPARE(first.stage, 3);
         QCOMPARE(first.yaw, 30.0);
@@ -328,36 +320,36 @@ private slots:
 
         // A second step at stage 5, then its caption and a question, edited in the panel.
         w.stepper()->goToStage(5, false);
-        click(child<QPushButton>(w, "addStepButton"));
+        click(lessonChild<QPushButton>(w, "addStepButton"));
         QCOMPARE(int(w.lessonFlow()->lesson()->lesson().steps.size()), 2);
         QCOMPARE(w.lessonFlow()->lesson()->step(), 1);
         QCOMPARE(w.stepper()->stage(), 5);
         // Found: a new step's caption carried the picture's note "(framed anew…)".
         QCOMPARE(w.lessonFlow()->lesson()->lesson().steps[1].caption, std::string("After $S_{\\mathrm{per}}$"));
-        auto* caption = child<QPlainTextEdit>(w, "captionEdit");
+        auto* caption = lessonChild<QPlainTextEdit>(w, "captionEdit");
         caption->setPlainText("After $S_{per}$ the volume is the canonical one.");
-        auto* question = child<QPlainTextEdit>(w, "questionEdit");
+        auto* question = lessonChild<QPlainTextEdit>(w, "questionEdit");
         question->setPlainText(R"({"kind": "where", "prompt": "Where is the PRP?", "point": [8, 6, 84], "after": 9})");
-        click(child<QPushButton>(w, "applyEditsButton"));
+        click(lessonChild<QPushButton>(w, "applyEditsButton"));
         // A bad question is refused with its field, and changes nothing.
-        QVERIFY2(child<QLabel>(w, "editError")->text().contains("steps[1].question.after: must be a whole number from 1 to 5"),
-                 qPrintable(child<QLabel>(w, "editError")->text()));
+        QVERIFY2(lessonChild<QLabel>(w, "editError")->text().contains("steps[1].question.after: must be a whole number from 1 to 5"),
+                 qPrintable(lessonChild<QLabel>(w, "editError")->text()));
         QVERIFY(!w.lessonFlow()->lesson()->lesson().steps[1].question);
         question->setPlainText(R"({"kind": "where", "prompt": "Where is the PRP?", "point": [8, 6, 84], "after": 3})");
-        click(child<QPushButton>(w, "applyEditsButton"));
-        QVERIFY(child<QLabel>(w, "editError")->text().isEmpty());
+        click(lessonChild<QPushButton>(w, "applyEditsButton"));
+        QVERIFY(lessonChild<QLabel>(w, "editError")->text().isEmpty());
         QVERIFY(w.lessonFlow()->lesson()->lesson().steps[1].question);
         QCOMPARE(w.lessonFlow()->lesson()->lesson().steps[1].caption, std::string("After $S_{per}$ the volume is the canonical one."));
         // The editor shows the question's answer: with it open, the step is answered too.
         QTRY_VERIFY(!w.lessonFlow()->lesson()->isAsking());
-        QVERIFY(child<QLabel>(w, "lessonCaption")->text().contains("<i>S</i><sub><i>per</i></sub>"));
+        QVERIFY(lessonChild<QLabel>(w, "lessonCaption")->text().contains("<i>S</i><sub><i>per</i></sub>"));
 
         // Reordered, undone and redone.
-        click(child<QPushButton>(w, "moveUpButton"));
+        click(lessonChild<QPushButton>(w, "moveUpButton"));
         QCOMPARE(w.lessonFlow()->lesson()->lesson().steps[0].stage, 5);
-        click(child<QPushButton>(w, "lessonUndo"));
+        click(lessonChild<QPushButton>(w, "lessonUndo"));
         QCOMPARE(w.lessonFlow()->lesson()->lesson().steps[0].stage, 3);
-        click(child<QPushButton>(w, "lessonRedo"));
+        click(lessonChild<QPushButton>(w, "lessonRedo"));
         QCOMPARE(w.lessonFlow()->lesson()->lesson().steps[0].stage, 5);
 
         // Saved atomically, and it reads back as the lesson it was.

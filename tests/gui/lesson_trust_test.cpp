@@ -40,14 +40,6 @@ const QString kHouse = QString(viewpipe::build::dataDir) + "/scenes/house.json";
 const QString kFoley = QString(viewpipe::build::dataDir) + "/lessons/foley-nper.json";
 const QString kOpenGl = QString(viewpipe::build::dataDir) + "/lessons/opengl-perspective.json";
 
-template <class T> T* lessonChild(MainWindow& w, const QString& name)
-{
-    T* found = w.lessonPanel()->findChild<T*>(name);
-    if (!found)
-        qFatal("no %s", qPrintable(name));
-    return found;
-}
-
 vtkRenderer* renderer(MainWindow& window, const char* view)
 {
     return window.findChild<QVTKOpenGLNativeWidget*>(view)->renderWindow()->GetRenderers()->GetFirstRenderer();

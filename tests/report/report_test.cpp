@@ -289,15 +289,22 @@ TEST(Format, ShortestRoundTrip)
     }
 }
 
+// Step k's figure files, named after it: "step-K-asking.pdf" and "step-K.pdf".
+std::vector<LessonFigures> figureFiles(const Lesson& lesson)
+{
+    std::vector<LessonFigures> figures;
+    for (std::size_t k = 0; k < lesson.steps.size(); ++k)
+        figures.push_back({"step-" + std::to_string(k) + "-asking.pdf", "step-" + std::to_string(k) + ".pdf"});
+    return figures;
+}
+
 // The handout sets every figure, the answer key's too, at one width, their labels drawn larger to match: the
 // pictures' labels are 2.4 % of their width, 11.6 pt across A4's 17 cm of text, and were 6 pt at 0.55 of it with no
 // larger text (a defect found by a reader). At least 9.5 pt on paper.
 TEST(LessonLatex, HandoutFiguresKeepTheirLabelsReadable)
 {
     const Lesson lesson = loadLesson(std::string(viewpipe::build::dataDir) + "/lessons/foley-nper.json");
-    std::vector<LessonFigures> figures;
-    for (std::size_t k = 0; k < lesson.steps.size(); ++k)
-        figures.push_back({"step-" + std::to_string(k) + "-asking.pdf", "step-" + std::to_string(k) + ".pdf"});
+    const std::vector<LessonFigures> figures = figureFiles(lesson);
     const std::string handout = lessonHandoutLatex(lesson, figures);
     ASSERT_NE(handout.find("Answer key"), std::string::npos);
     // Every figure at that width, in a minipage of its own beside the step's text.
@@ -325,9 +332,7 @@ TEST(LessonLatex, HandoutFiguresKeepTheirLabelsReadable)
 TEST(LessonLatex, TheProblemSheetAsksThenSolvesExactly)
 {
     const Lesson lesson = loadLesson(std::string(viewpipe::build::dataDir) + "/lessons/foley-nper.json");
-    std::vector<LessonFigures> figures;
-    for (std::size_t k = 0; k < lesson.steps.size(); ++k)
-        figures.push_back({"step-" + std::to_string(k) + "-asking.pdf", "step-" + std::to_string(k) + ".pdf"});
+    const std::vector<LessonFigures> figures = figureFiles(lesson);
     const std::string sheet = lessonSheetLatex(lesson, figures);
     const std::size_t solutions = sheet.find("\\section*{Solutions}");
     ASSERT_NE(solutions, std::string::npos);
