@@ -195,6 +195,14 @@ std::string sceneDataLatex(const Scene& scene)
 const char* kPreamble = "\\usepackage{graphicx}\n\\usepackage{amsmath}\n\\usepackage{amssymb}\n\\usepackage{adjustbox}\n\\usepackage{xcolor}\n"
                         "\\setlength{\\parindent}{0pt}\n\\sloppy\n";
 
+// An A4 document's opening, up to the lesson's title: what the handout and the problem sheet share.
+std::string a4Opening(const std::string& comment, const Lesson& lesson)
+{
+    return comment + "\n\\documentclass[11pt,a4paper]{article}\n\\usepackage[margin=2cm]{geometry}\n" + kPreamble +
+           "\\setlength{\\parskip}{0.5em}\n\\pagestyle{plain}\n\\begin{document}\n{\\Large\\bfseries " +
+           texEscaped(lesson.title) + "\\par}";
+}
+
 } // namespace
 
 std::string choiceLetter(std::size_t k)
@@ -247,10 +255,8 @@ std::string answerText(const LessonStep& step)
 std::string lessonHandoutLatex(const Lesson& lesson, const std::vector<LessonFigures>& figures)
 {
     std::ostringstream out;
-    out << "% A ViewPipe lesson handout. Compile with pdflatex; the figures are the PDF files beside it.\n"
-        << "\\documentclass[11pt,a4paper]{article}\n\\usepackage[margin=2cm]{geometry}\n" << kPreamble
-        << "\\setlength{\\parskip}{0.5em}\n\\pagestyle{plain}\n\\begin{document}\n"
-        << "{\\Large\\bfseries " << texEscaped(lesson.title) << "\\par}\\vspace{0.5em}\n";
+    out << a4Opening("% A ViewPipe lesson handout. Compile with pdflatex; the figures are the PDF files beside it.", lesson)
+        << "\\vspace{0.5em}\n";
     const std::size_t n = lesson.steps.size();
     int questions = 0;
     // Each step takes the room it needs: its heading, figure and what stands beside it on one page, a
@@ -285,10 +291,8 @@ std::string lessonHandoutLatex(const Lesson& lesson, const std::vector<LessonFig
 std::string lessonSheetLatex(const Lesson& lesson, const std::vector<LessonFigures>& figures)
 {
     std::ostringstream out;
-    out << "% A ViewPipe problem sheet: the lesson's questions, then their solutions. Compile with pdflatex.\n"
-        << "\\documentclass[11pt,a4paper]{article}\n\\usepackage[margin=2cm]{geometry}\n" << kPreamble
-        << "\\setlength{\\parskip}{0.5em}\n\\pagestyle{plain}\n\\begin{document}\n"
-        << "{\\Large\\bfseries " << texEscaped(lesson.title) << "\\par}\\vspace{0.3em}{\\large Problems\\par}\\vspace{0.5em}\n";
+    out << a4Opening("% A ViewPipe problem sheet: the lesson's questions, then their solutions. Compile with pdflatex.", lesson)
+        << "\\vspace{0.3em}{\\large Problems\\par}\\vspace{0.5em}\n";
     int number = 0;
     const Scene* before = nullptr; // the scene of the question before
     for (std::size_t k = 0; k < lesson.steps.size(); ++k) {
