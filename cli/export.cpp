@@ -16,7 +16,9 @@ struct ExportCommandOptions {
     std::string scene, out, size = "1280x720", stages = "all", theme = "light", formats = "png";
     int scale = 1, textScale = 100, fps = 30, digits = 4;
     bool transparent = false, animate = false, quiet = false;
-    std::string framing = "per-stage";
+    std::string framing = "together", legend = "best";
+    std::vector<std::string> hide;
+    double zoom = 1;
 };
 
 std::atomic<bool> interrupted{false};
@@ -43,7 +45,10 @@ int runExport(const ExportCommandOptions& options)
         o.animate = options.animate;
         o.fps = options.fps;
         o.digits = options.digits;
-        o.fixedFraming = options.framing == "fixed";
+        o.framing = *framingModeNamed(options.framing);
+        o.legend = *legendPlaceNamed(options.legend);
+        o.hidden.insert(options.hide.begin(), options.hide.end());
+        o.zoom = options.zoom;
         o.presets = scenesDirectory();
 
         std::signal(SIGINT, onInterrupt);
@@ -106,8 +111,22 @@ void addExportCommand(CLI::App& app)
         ->capture_default_str();
     command->add_flag("--quiet", options->quiet, "No progress bar, no list of files");
     command->add_option("--framing", options->framing,
-                        "per-stage: each picture framed on its stage; fixed: one framing for all")
-        ->check(CLI::IsMember({"fixed", "per-stage"}))
+                        "together: the stages that keep sizes share a framing, so that their motion shows;\n"
+                        "per-stage: each picture framed on its own stage, as large as it goes;\n"
+                        "fixed: one framing for all, to compare sizes")
+        ->check(CLI::IsMember({"together", "per-stage", "fixed"}))
+        ->capture_default_str();
+    std::string hidden;
+    for (const std::string& name : gui::hideNames())
+        hidden += (hidden.empty() ? "" : ", ") + name;
+    command->add_option("--hide", options->hide, "What the pictures leave out, comma-separated: " + hidden)
+        ->delimiter(',');
+    command->add_option("--legend", options->legend,
+                        "Where the legend goes: best (where it costs the subject least), beside, below, inside (in a "
+                        "corner the subject leaves free), none")
+        ->check(CLI::IsMember({"best", "beside", "below", "inside", "none"}))
+        ->capture_default_str();
+    command->add_option("--zoom", options->zoom, "The subject this many times larger than framed, 0.1 to 10")
         ->capture_default_str();
     setRun(command, [options] { return runExport(*options); });
 }

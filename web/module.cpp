@@ -100,7 +100,7 @@ FontMeasure pageMeasure(const emscripten::val& measure)
     });
 }
 
-// The page's own options: its data's width, height, fontSize, minFontSize, lineScale, fixedFraming and dark.
+// The page's own options: its data's width, height, fontSize, minFontSize, lineScale, framing and dark.
 WebViewOptions viewOptions(const std::string& options)
 {
     const nlohmann::json given = nlohmann::json::parse(options);
@@ -110,7 +110,7 @@ WebViewOptions viewOptions(const std::string& options)
     view.fontSize = given.at("fontSize");
     view.minFontSize = given.at("minFontSize");
     view.lineScale = given.at("lineScale");
-    view.fixedFraming = given.at("fixedFraming");
+    view.framing = framingModeNamed(given.at("framing")).value_or(FramingMode::Together);
     view.theme = given.at("dark") ? Theme::Dark : Theme::Light;
     return view;
 }

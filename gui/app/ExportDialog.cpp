@@ -73,8 +73,11 @@ ExportDialog::ExportDialog(int stageCount, Theme theme, QWidget* parent) : QDial
     theme_->setToolTip(tr("Light for slides and print, dark for the screen"));
     form->addRow(tr("Theme"), theme_);
     framing_ = new QComboBox;
-    framing_->addItems({tr("each stage framed on its own"), tr("one framing for all stages")});
-    framing_->setToolTip(tr("One framing for all keeps sizes comparable from stage to stage"));
+    framing_->addItem(tr("stages that keep sizes framed together"), int(FramingMode::Together));
+    framing_->addItem(tr("each stage framed on its own"), int(FramingMode::PerStage));
+    framing_->addItem(tr("one framing for all stages"), int(FramingMode::Fixed));
+    framing_->setToolTip(tr("Together shows the motion of translations and rotations; on its own, each stage as "
+                            "large as it goes; one framing for all keeps sizes comparable from stage to stage"));
     form->addRow(tr("Framing"), framing_);
     transparent_ = new QCheckBox(tr("Transparent background"));
     transparent_->setToolTip(tr("PNG pictures without a background, to lay over a slide"));
@@ -121,7 +124,7 @@ ExportOptions ExportDialog::options() const
     o.scale = scale_->value();
     o.stages = parseStages(stages_->text().trimmed().toStdString(), stageCount_);
     o.theme = theme_->currentIndex() == 1 ? Theme::Dark : Theme::Light;
-    o.fixedFraming = framing_->currentIndex() == 1;
+    o.framing = FramingMode(framing_->currentData().toInt());
     o.transparent = transparent_->isChecked();
     o.formats.clear();
     if (png_->isChecked())

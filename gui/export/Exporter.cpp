@@ -135,7 +135,7 @@ int pageSteps(const EvaluatedScene& scene)
 std::string scenePage(const std::shared_ptr<const EvaluatedScene>& evaluated, const ExportOptions& options, Steps& step)
 {
     const WebPageViews views = recordWebViews(evaluated, options.width, options.height, options.scale, options.theme,
-                                              options.fixedFraming, std::ref(step), options.textScale / 100.0);
+                                              options.framing, std::ref(step), options.textScale / 100.0);
     step("scene.html");
     return viewpipe::webPage(*evaluated, views, loadWebAssets("/usr/share/javascript", {}, options.presets));
 }
@@ -210,9 +210,15 @@ int animationFrames(int stageCount, int fps)
     return stageCount * fps + (stageCount + 1) * holdFrames(fps);
 }
 
+// The caption over stage k's picture: none where --hide names it.
+std::string pictureCaption(const EvaluatedScene& scene, int k, const ExportOptions& options)
+{
+    return options.hidden.count("caption") ? "" : stageCaption(scene, std::size_t(k), StageText::Heading);
+}
+
 // animation.mp4: the app's transitions, with the same motion and framing, each stage held.
 void writeAnimation(OffscreenPainter& offscreen, const EvaluatedScene& evaluated, const ExportOptions& options,
-                    const std::optional<Framing>& framing, const fs::path& folder, Steps& step,
+                    const StageFramings& framing, const fs::path& folder, Steps& step,
                     const std::atomic<bool>& cancel)
 {
     const int n = int(evaluated.pipeline.stages.size()), total = animationFrames(n, options.fps);
@@ -227,7 +233,7 @@ void writeAnimation(OffscreenPainter& offscreen, const EvaluatedScene& evaluated
         writeWindowPng(offscreen.window, false, frames / name);
     };
     for (int k = 0; k <= n; ++k) {
-        const std::string caption = stageCaption(evaluated, std::size_t(k), StageText::Heading);
+        const std::string caption = pictureCaption(evaluated, k, options);
         offscreen.painter->setCaptions(caption, "");
         if (k > 0) {
             const StageMotion motion(evaluated, k - 1, k, framing);
@@ -264,11 +270,42 @@ void validate(const ExportOptions& o)
         throw InputError("--digits", "must be 1 to 17");
     if (o.formats.empty())
         throw InputError("--format", "names no format");
+    if (!(o.zoom >= 0.1 && o.zoom <= 10))
+        throw InputError("--zoom", "must be 0.1 to 10");
+    const std::vector<std::string> names = hideNames();
+    for (const std::string& name : o.hidden)
+        if (std::find(names.begin(), names.end(), name) == names.end()) {
+            std::string list;
+            for (const std::string& known : names)
+                list += (list.empty() ? "" : ", ") + known;
+            throw InputError("--hide", "\"" + name + "\" is not one of " + list);
+        }
     for (const std::string& name : o.formats)
         formatNamed(name);
 }
 
+// The scene as the pictures show it, without the elements and labels `hidden` names.
+std::shared_ptr<const EvaluatedScene> withoutHidden(const std::shared_ptr<const EvaluatedScene>& scene,
+                                                    const std::set<std::string>& hidden)
+{
+    LessonStep shown;
+    for (const auto& [element, name] : lessonElementNames())
+        if (hidden.count(name))
+            shown.hidden.insert(element);
+    shown.labelsHidden = hidden.count("labels") > 0;
+    return shownAtStep(scene, shown);
+}
+
 } // namespace
+
+std::vector<std::string> hideNames()
+{
+    std::vector<std::string> names;
+    for (const auto& [element, name] : lessonElementNames())
+        names.emplace_back(name);
+    names.insert(names.end(), {"labels", "legend", "caption"});
+    return names;
+}
 
 void exportWebPage(const std::shared_ptr<const EvaluatedScene>& scene, const fs::path& file, Theme theme,
                    const ExportProgress& progress, const std::atomic<bool>& cancel)
@@ -397,7 +434,7 @@ std::vector<int> parseStages(const std::string& text, int stageCount)
 }
 
 WebPageViews recordWebViews(const std::shared_ptr<const EvaluatedScene>& evaluated, int width, int height, int scale,
-                            Theme theme, bool fixedFraming, const std::function<void(const std::string&)>& step,
+                            Theme theme, FramingMode framing, const std::function<void(const std::string&)>& step,
                             double textScale)
 {
     validatePictureSize(width, height, scale);
@@ -409,17 +446,18 @@ WebPageViews recordWebViews(const std::shared_ptr<const EvaluatedScene>& evaluat
     options.minFontSize = int(exportLabelSize(options.width, 1));
     options.lineScale = scale;
     options.theme = theme;
-    options.fixedFraming = fixedFraming;
+    options.framing = framing;
     const int n = int(evaluated->pipeline.stages.size());
     return webPageViews(*evaluated, options, figureFontMeasure(), [&](int k) {
         step("web page: stage " + std::to_string(k) + " of " + std::to_string(n));
     });
 }
 
-std::vector<fs::path> exportStages(const std::shared_ptr<const EvaluatedScene>& evaluated, const ExportOptions& options,
+std::vector<fs::path> exportStages(const std::shared_ptr<const EvaluatedScene>& scene, const ExportOptions& options,
                                    const ExportProgress& progress, const std::atomic<bool>& cancel)
 {
     validate(options);
+    const std::shared_ptr<const EvaluatedScene> evaluated = withoutHidden(scene, options.hidden);
     const int n = int(evaluated->pipeline.stages.size());
     std::vector<int> chosen = options.stages.empty() ? parseStages("all", n) : options.stages;
     for (int k : chosen)
@@ -440,11 +478,13 @@ std::vector<fs::path> exportStages(const std::shared_ptr<const EvaluatedScene>& 
         // One offscreen window, one painter, one camera framing every stage.
         OffscreenPainter offscreen(evaluated, options.width, options.height, options.scale, options.theme,
                                    options.transparent, options.textScale / 100.0);
-        const std::optional<Framing> framing = fixedFraming(*evaluated, options.fixedFraming);
-        SceneOutput scene{evaluated, options, {}, staging.path(), step};
+        offscreen.painter->setLegendPlace(options.hidden.count("legend") ? LegendPlace::None : options.legend);
+        offscreen.painter->orbit(0, 0, options.zoom);
+        const StageFramings framing = stageFramings(*evaluated, options.framing);
+        SceneOutput output{evaluated, options, {}, staging.path(), step};
         for (int k : chosen) {
             const std::string base = stageFileBase(evaluated->pipeline, k);
-            const std::string caption = stageCaption(*evaluated, std::size_t(k), StageText::Heading);
+            const std::string caption = pictureCaption(*evaluated, k, options);
             const StageShown shown = showStageAtRest(offscreen, *evaluated, k, caption, framing);
             const StagePicture picture{offscreen.window, options.transparent,
                                        VectorFigure{&shown, offscreen.painter->figureView(), caption, options.theme}};
@@ -454,11 +494,11 @@ std::vector<fs::path> exportStages(const std::shared_ptr<const EvaluatedScene>& 
                     step("stage " + std::to_string(k) + " of " + std::to_string(n) + ": " + file);
                     format->writeStage(picture, staging.path() / file);
                 }
-            scene.figures.emplace_back(base, caption);
+            output.figures.emplace_back(base, stageCaption(*evaluated, std::size_t(k), StageText::Heading));
         }
         for (const Format* format : formats)
             if (format->writeScene)
-                format->writeScene(scene);
+                format->writeScene(output);
         writeReports(*evaluated, options, staging.path(), step);
         if (options.animate)
             writeAnimation(offscreen, *evaluated, options, framing, staging.path(), step, cancel);

@@ -38,14 +38,23 @@ struct ExportOptions {
     int fps = 30;
     int digits = 4;              // decimals in matrices.tex
     // Every picture has the same camera direction, size and palette. By default
-    // each stage is framed on its own content: the scale stages shrink the
-    // scene (the default scene about 35 times at S_per), and one framing for
-    // all would leave those pictures nearly empty. fixedFraming uses one
-    // framing that holds every stage, for side-by-side comparison of sizes.
-    bool fixedFraming = false;
+    // the stages that keep sizes share a framing (their motion shows) and the
+    // others are framed anew: the scale stages shrink the scene (the default
+    // scene about 35 times at S_per), and one framing for all would leave those
+    // pictures nearly empty. Fixed uses one framing that holds every stage,
+    // for side-by-side comparison of sizes; per-stage frames each on its own.
+    FramingMode framing = FramingMode::Together;
+    // What the pictures leave out (--hide): the elements by the names a lesson step's `hide` takes,
+    // "labels", "legend" and "caption".
+    std::set<std::string> hidden;
+    LegendPlace legend = LegendPlace::Best;
+    double zoom = 1; // the subject this many times larger than framed, about its center
     // The scenes folder whose presets (presetScenes) the web page offers; empty: none.
     std::filesystem::path presets;
 };
+
+// The names --hide takes, in the order the help lists them.
+std::vector<std::string> hideNames();
 
 // A format `export` writes, as --format names it.
 struct ExportFormat {
@@ -78,7 +87,7 @@ void exportWebPage(const std::shared_ptr<const EvaluatedScene>& scene, const std
 // pictures' font. Throws InputError for a bad size or
 // scale; `step` hears of each stage. `textScale` as OffscreenPainter's.
 WebPageViews recordWebViews(const std::shared_ptr<const EvaluatedScene>& scene, int width, int height, int scale,
-                            Theme theme, bool fixedFraming, const std::function<void(const std::string&)>& step,
+                            Theme theme, FramingMode framing, const std::function<void(const std::string&)>& step,
                             double textScale = 1);
 
 // The CAD layout of seed 001 for a scene's objects, as one PNG: the top view

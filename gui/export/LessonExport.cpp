@@ -36,7 +36,7 @@ void writeStepFigure(const OffscreenPainter& offscreen, const std::shared_ptr<co
     painter.resetView();
     painter.orbit(step.yaw, step.pitch, step.zoom);
     const std::string caption = named ? stageCaption(*scene, std::size_t(stage), StageText::Heading) : std::string();
-    StageShown shown = showStageAtRest(offscreen, *scene, stage, caption, std::nullopt);
+    StageShown shown = showStageAtRest(offscreen, *scene, stage, caption, {});
     shown.traced = traced;
     writeVectorFigure({&shown, painter.figureView(), caption, theme}, "pdf", file);
 }
@@ -149,7 +149,7 @@ void writeLessonPage(const Lesson& lesson, const EvaluatedLesson& evaluated, con
     std::vector<LessonScene> scenes;
     for (const auto& scene : evaluated.shown) {
         step("recording " + scene->scene.name);
-        scenes.push_back({scene, recordWebViews(scene, options.width, options.height, 1, options.theme, false,
+        scenes.push_back({scene, recordWebViews(scene, options.width, options.height, 1, options.theme, FramingMode::Together,
                                                 [](const std::string&) {})});
     }
     step("lesson.html");

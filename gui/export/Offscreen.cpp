@@ -24,9 +24,9 @@ OffscreenPainter::OffscreenPainter(const std::shared_ptr<const EvaluatedScene>& 
 }
 
 StageShown showStageAtRest(const OffscreenPainter& offscreen, const EvaluatedScene& scene, int k,
-                           const std::string& caption, const std::optional<Framing>& fixedFraming)
+                           const std::string& caption, const StageFramings& framings)
 {
-    const WorldMoment moment = stageAtRest(scene, k, fixedFraming);
+    const WorldMoment moment = stageAtRest(scene, k, framings);
     ScenePainter& painter = *offscreen.painter;
     painter.setCaptions(caption, "");
     painter.showMoment(moment);

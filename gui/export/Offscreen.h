@@ -27,6 +27,6 @@ struct OffscreenPainter {
 // Stage k at rest as its picture shows it (the ghost of the stage before,
 // the caption, its framing or the fixed one), rendered; the stage as shown.
 StageShown showStageAtRest(const OffscreenPainter& offscreen, const EvaluatedScene& scene, int k,
-                           const std::string& caption, const std::optional<Framing>& fixedFraming);
+                           const std::string& caption, const StageFramings& framings);
 
 } // namespace viewpipe::gui

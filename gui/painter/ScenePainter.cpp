@@ -366,6 +366,9 @@ void ScenePainter::fitCaptions()
     text.note = effectsCaption_->GetVisibility() ? effectsNote_ : "";
     if (scene_)
         text.legend = legendShown(scene_->worldLegend, canonicalOpacity_ > 0);
+    text.subject = subject_;
+    text.shown = subjectShown_;
+    text.legendPlace = legendPlace_;
     const PictureLayout& layout = layoutCache_.layout(size[0], size[1], text, viewFontMeasure(world_));
     setCaptionText(worldCaption_, layout.captionLines, layout.captionSize);
     setCaptionText(effectsCaption_, layout.noteLines, layout.noteSize);
@@ -393,9 +396,12 @@ FigureView ScenePainter::figureView() const
         fromVtk(world_->GetActiveCamera()->GetCompositeProjectionTransformMatrix(world_->GetTiledAspectRatio(), -1, 1));
     view.width = world_->GetSize()[0];
     view.height = world_->GetSize()[1];
-    view.frameReach = frameReach(framed_);
+    view.frameExtent = frameExtent(framed_);
     view.fontSize = labelSize_;
     view.minFontSize = minFontSize();
+    view.subject = subject_;
+    view.subjectShown = subjectShown_;
+    view.legendPlace = legendPlace_;
     view.lineScale = lineScale_;
     return view;
 }
@@ -564,8 +570,13 @@ void ScenePainter::frameOn(const Framing& framing)
     viewpipe::frameOn(camera, framing, viewFit());
     setCamera(camera);
     framed_ = framing;
-    // The fixed axes reach across everything in view, with their ticks and labels.
-    const FrameMarks marks = frameMarks(frameReach(framing));
+    if (framing.blended.empty()) // at rest, or moving under one framing: while framings blend the text stays put
+    {
+        subject_ = subjectOutline(camera, framing);
+        subjectShown_ = subjectOutline(camera, framing, true);
+    }
+    // The fixed axes run across everything framed, with their ticks and labels.
+    const FrameMarks marks = frameMarks(frameExtent(framing));
     static_cast<vtkPolyDataMapper*>(frameAxes_->GetMapper())->SetInputData(linesData(marks.lines));
     const bool sameTexts = marks.labels.size() == frameLabelTexts_.size() &&
                            std::equal(marks.labels.begin(), marks.labels.end(), frameLabelTexts_.begin(),
@@ -593,8 +604,9 @@ void ScenePainter::fitClippingRange()
 void ScenePainter::rememberUserCamera()
 {
     const WorldCamera camera = this->camera();
-    userZoom_ = camera.distance() / fitDistance(camera, framed_, viewFit());
-    userPan_ = (camera.focalPoint - framed_.center) / framed_.radius;
+    const CameraAim aim = fitAim(camera, framed_, viewFit());
+    userZoom_ = camera.distance() / aim.distance;
+    userPan_ = (camera.focalPoint - aim.focalPoint) / framed_.radius;
 }
 
 // The web page turns its points by RotX(pitch) RotY(yaw) in the default eye's
@@ -606,6 +618,7 @@ void ScenePainter::orbit(double yaw, double pitch, double zoom)
     camera->Azimuth(-yaw);
     camera->Elevation(pitch);
     camera->OrthogonalizeViewUp();
+    frameOn(framed_); // fitted anew from the new direction (a fit depends on it), as much zoomed and panned
     camera->Dolly(zoom);
     rememberUserCamera();
 }
@@ -621,6 +634,11 @@ ScenePainter::Orbit ScenePainter::orbitAngles() const
     const Vec3<double> eye(direction.dot(right), direction.dot(up), direction.dot(back));
     constexpr double degrees = 180 / 3.14159265358979323846;
     return {std::atan2(eye.x(), -eye.z()) * degrees, std::asin(std::clamp(-eye.y(), -1.0, 1.0)) * degrees, 1 / userZoom_};
+}
+
+void ScenePainter::setLegendPlace(LegendPlace place)
+{
+    legendPlace_ = place;
 }
 
 void ScenePainter::resetView()

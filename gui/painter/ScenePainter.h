@@ -94,6 +94,8 @@ public:
     // zoom and pan on the framing shown.
     void frameOn(const Framing& framing);
     void resetView();
+    // Where the world view's legend goes (the picture's layout: layoutPicture).
+    void setLegendPlace(LegendPlace place);
     // Turns the world view's camera about its focal point, in degrees (yaw
     // about the view's up, pitch about its right, as the web page turns) and
     // zooms it, as a lesson step asks; later framing keeps both.
@@ -201,6 +203,8 @@ private:
     Box2 sceneArea_;
     std::array<Box2, 3> textBoxes_; // textBoxesShown() as the last fitCaptions() measured it
     PictureLayoutCache layoutCache_;
+    std::vector<Vec2<double>> subject_, subjectShown_; // the framed subject's outline, for the text's layout (subjectOutline)
+    LegendPlace legendPlace_ = LegendPlace::Best;
     Mat4<double> shownMatrix_ = Mat4<double>::Identity();
 };
 

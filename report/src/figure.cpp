@@ -43,7 +43,9 @@ std::vector<Vec4d> clipPolygon(const std::vector<Vec4d>& points, const Vec4d& pl
     return kept;
 }
 
-// The convex hull of points (Andrew's monotone chain), counter-clockwise.
+} // namespace
+
+// Andrew's monotone chain.
 std::vector<Vec2d> convexHull(std::vector<Vec2d> points)
 {
     std::sort(points.begin(), points.end(),
@@ -68,6 +70,8 @@ std::vector<Vec2d> convexHull(std::vector<Vec2d> points)
     hull.resize(k - 1);
     return hull;
 }
+
+namespace {
 
 bool segmentCrossesBox(const Segment2& s, const Box2& box)
 {
@@ -217,24 +221,35 @@ std::vector<std::string> wrapLines(const std::string& text, double width, const 
     return wrapped;
 }
 
-FrameMarks frameMarks(double reach)
+std::array<Vec3d, 2> frameAxis(const Eigen::AlignedBox<double, 3>& extent, int axis)
+{
+    const Vec3d along = Vec3d::Unit(axis);
+    return {extent.min()[axis] * along, extent.max()[axis] * along};
+}
+
+FrameMarks frameMarks(const Eigen::AlignedBox<double, 3>& extent)
 {
     FrameMarks marks;
+    const double reach = extent.isEmpty() ? 0 : extent.sizes().maxCoeff();
     if (!(reach > 0))
         return marks;
-    // Ticks at a round step (1, 2 or 5 times a power of ten), two or three each way.
-    const double rough = reach / 3, power = std::pow(10.0, std::floor(std::log10(rough)));
+    // Ticks at a round step (1, 2 or 5 times a power of ten), five or six along the longest axis.
+    const double rough = reach / 6, power = std::pow(10.0, std::floor(std::log10(rough)));
     const double step = power * (rough >= 5 * power ? 5 : rough >= 2 * power ? 2 : 1);
     const char* names[] = {"$x$", "$y$", "$z$"};
     for (int axis = 0; axis < 3; ++axis) {
         const Vec3d along = Vec3d::Unit(axis), across = Vec3d::Unit(axis == 0 ? 1 : 0);
-        marks.lines.insert(marks.lines.end(), {-reach * along, reach * along});
-        marks.labels.push_back({Element::Frame, names[axis], reach * along, true});
-        for (int j = -int(std::floor(reach / step * 0.999)); step * j <= 0.999 * reach; ++j) {
+        const auto [from, to] = frameAxis(extent, axis);
+        if (from == to)
+            continue;
+        marks.lines.insert(marks.lines.end(), {from, to});
+        marks.labels.push_back({Element::Frame, names[axis], to, true});
+        const double low = extent.min()[axis], high = extent.max()[axis];
+        for (int j = int(std::ceil(low / step * 0.999)); step * j <= 0.999 * high; ++j) {
             if (j == 0)
                 continue;
             const Vec3d at = step * j * along;
-            marks.lines.insert(marks.lines.end(), {at - 0.02 * reach * across, at + 0.02 * reach * across});
+            marks.lines.insert(marks.lines.end(), {at - 0.01 * reach * across, at + 0.01 * reach * across});
             marks.labels.push_back({Element::Frame, "$" + formatShortest(step * j) + "$", at, true, true}); // a real minus sign
         }
     }
@@ -269,9 +284,13 @@ LegendLayout legendLayout(const std::vector<const LegendEntry*>& entries, double
     return rows;
 }
 
-PictureText stagePictureText(const StageShown& stage, const std::string& caption, double fontSize, double minFontSize)
+PictureText stagePictureText(const StageShown& stage, const std::string& caption, double fontSize, double minFontSize,
+                             std::vector<Vec2<double>> subject, std::vector<Vec2<double>> shown, LegendPlace legendPlace)
 {
     PictureText text;
+    text.subject = std::move(subject);
+    text.shown = std::move(shown);
+    text.legendPlace = legendPlace;
     text.fontSize = fontSize;
     text.minFontSize = minFontSize;
     text.caption = caption;
@@ -305,6 +324,44 @@ std::vector<Box2> textBackdrops(const PictureLayout& layout, int height)
     return textBackdrops(layout.caption, layout.note, layout.legend, height);
 }
 
+namespace {
+
+// Whether a box and a convex polygon share any point.
+bool boxMeetsPolygon(const Box2& box, const std::vector<Vec2d>& polygon)
+{
+    if (polygon.empty())
+        return false;
+    for (const Vec2d& p : polygon)
+        if (box.contains(Box2{p, p}))
+            return true;
+    for (std::size_t k = 0; k < polygon.size(); ++k)
+        if (segmentCrossesBox({polygon[k], polygon[(k + 1) % polygon.size()]}, box))
+            return true;
+    return polygon.size() >= 3 && shareInside({box.min, box.min}, polygon) > 0; // the box within the polygon
+}
+
+} // namespace
+
+const char* legendPlaceName(LegendPlace place)
+{
+    switch (place) {
+    case LegendPlace::Best: return "best";
+    case LegendPlace::Beside: return "beside";
+    case LegendPlace::Below: return "below";
+    case LegendPlace::Inside: return "inside";
+    case LegendPlace::None: return "none";
+    }
+    return "";
+}
+
+std::optional<LegendPlace> legendPlaceNamed(const std::string& name)
+{
+    for (const LegendPlace place : {LegendPlace::Best, LegendPlace::Beside, LegendPlace::Below, LegendPlace::Inside, LegendPlace::None})
+        if (name == legendPlaceName(place))
+            return place;
+    return std::nullopt;
+}
+
 PictureLayout layoutPicture(int width, int height, const PictureText& text, const FontMeasure& measure)
 {
     PictureLayout layout;
@@ -320,25 +377,100 @@ PictureLayout layoutPicture(int width, int height, const PictureText& text, cons
         const double top = fromBottom ? 0.98 * height - extent.y() : 0.04 * height;
         return std::pair{lines, Box2{Vec2<double>(left, top), Vec2<double>(left + extent.x(), top + extent.y())}};
     };
-    double bottom = height; // above the note
-
-    // The stage's room: the larger of the areas left of and below the legend, between the caption and the note.
-    auto sceneArea = [&](const PictureLayout& l) {
-        const Box2 full{Vec2<double>(0, l.caption.max.y() + margin), Vec2<double>(width, bottom)};
-        if (l.legend.isEmpty())
-            return full;
-        const Box2 beside{full.min, Vec2<double>(l.legend.min.x() - margin, bottom)};
-        const Box2 below{Vec2<double>(0, std::max(full.min.y(), l.legend.max.y() + margin)), full.max};
-        auto area = [](const Box2& b) { return b.isEmpty() ? 0.0 : (b.max.x() - b.min.x()) * (b.max.y() - b.min.y()); };
-        return area(beside) >= area(below) ? beside : below;
-    };
     auto roomy = [&](const Box2& scene) {
         return scene.max.x() - scene.min.x() >= 0.4 * width && scene.max.y() - scene.min.y() >= 0.4 * height;
     };
+    // The subject's outline and the box about it, as the text's layout sees it.
+    Eigen::AlignedBox<double, 2> outline;
+    for (const Vec2d& p : text.subject)
+        outline.extend(p);
+    const bool subjectKnown = !outline.isEmpty() && (outline.sizes().array() > 0).all();
+    // How large the subject draws in a room (its scale), or, not knowing it, how large the room is.
+    auto scaleIn = [&](const Box2& room) {
+        if (room.isEmpty())
+            return 0.0;
+        const Vec2d size = room.max - room.min;
+        return subjectKnown ? size.cwiseQuotient(outline.sizes()).minCoeff() : size.prod();
+    };
+    // What the picture shows of the subject as the camera fits the subject in a room (centred, 0.95 of the
+    // way to the nearer edges), grown by a little for the camera's perspective, which the outline (seen
+    // from afar) leaves out.
+    auto subjectIn = [&](const Box2& room) {
+        const double scale = 0.95 * scaleIn(room), grow = 0.04 * (room.max - room.min).minCoeff();
+        const Vec2d center = (room.min + room.max) / 2;
+        std::vector<Vec2d> drawn;
+        for (const Vec2d& p : text.shown.empty() ? text.subject : text.shown) {
+            const Vec2d offset = scale * (p - outline.center());
+            drawn.push_back(center + offset + grow * offset.normalized());
+        }
+        return drawn;
+    };
+
     std::vector<double> sizes; // largest first
     for (double size = text.fontSize; size > text.minFontSize && size >= 1 && sizes.size() < 30; size = std::floor(0.9 * size))
         sizes.push_back(size);
     sizes.push_back(std::max(1.0, std::min(text.fontSize, text.minFontSize)));
+    // The legend beside the stage (top right), below it (bottom right), or inside the stage's room in a
+    // corner the subject leaves free: where asked, else where the subject draws largest.
+    std::vector<LegendPlace> places = {text.legendPlace};
+    if (text.legendPlace == LegendPlace::Best)
+        places = subjectKnown ? std::vector<LegendPlace>{LegendPlace::Beside, LegendPlace::Below, LegendPlace::Inside}
+                              : std::vector<LegendPlace>{LegendPlace::Beside, LegendPlace::Below};
+    // At one size, the legend put at `where`: the layout, or none where it does not fit.
+    auto arrange = [&](double size, LegendPlace where, const LegendLayout& rows, double bottom) -> std::optional<PictureLayout> {
+        PictureLayout l = layout;
+        l.legendRows = rows;
+        l.legend = {};
+        const Vec2d legendSize = rows.size;
+        const double legendLeft = width - margin - legendSize.x();
+        // The caption beside a legend at the top right where that leaves it half the width and two lines at most.
+        bool captionBeside = where == LegendPlace::Beside && legendLeft - margin - left >= 0.5 * width;
+        std::tie(l.captionLines, l.caption) =
+            place(text.caption, size, true, captionBeside ? legendLeft - margin - left : 0.96 * width, l.captionLine, false);
+        if (captionBeside && l.captionLines.size() > 2) {
+            std::tie(l.captionLines, l.caption) = place(text.caption, size, true, 0.96 * width, l.captionLine, false);
+            captionBeside = false;
+        }
+        const Box2 full{Vec2d(0, l.caption.max.y() + margin), Vec2d(width, bottom)};
+        switch (where) {
+        case LegendPlace::Best:
+        case LegendPlace::None:
+            l.scene = full;
+            return l;
+        case LegendPlace::Beside: {
+            const double top = captionBeside ? 0.04 * height + 1.6 * size : l.caption.max.y() + 0.6 * size;
+            l.legend = {Vec2d(legendLeft, top), Vec2d(width - margin, top + legendSize.y())};
+            l.scene = {full.min, Vec2d(legendLeft - margin, bottom)};
+            break;
+        }
+        case LegendPlace::Below:
+            l.legend = {Vec2d(legendLeft, bottom - legendSize.y()), Vec2d(width - margin, bottom)};
+            l.scene = {full.min, Vec2d(width, l.legend.min.y() - margin)};
+            break;
+        case LegendPlace::Inside: {
+            l.scene = full;
+            const std::vector<Vec2d> subject = subjectIn(full);
+            const Box2 inner = full.grown(-margin);
+            l.legend = {};
+            for (const Vec2d& corner : {Vec2d(1, 0), Vec2d(1, 1), Vec2d(0, 1), Vec2d(0, 0)}) { // top right first
+                const Vec2d at = inner.min + corner.cwiseProduct(inner.max - inner.min - legendSize);
+                const Box2 box{at, at + legendSize};
+                if (!boxMeetsPolygon(box.grown(margin), subject)) {
+                    l.legend = box;
+                    break;
+                }
+            }
+            if (l.legend.isEmpty() && text.legendPlace != LegendPlace::Inside)
+                return std::nullopt; // no corner free: not inside
+            if (l.legend.isEmpty()) // asked for: the top right corner all the same
+                l.legend = {Vec2d(inner.max.x() - legendSize.x(), inner.min.y()), Vec2d(inner.max.x(), inner.min.y() + legendSize.y())};
+            break;
+        }
+        }
+        const bool fits = l.legend.min.x() >= left && l.legend.min.y() >= 0 && l.legend.max.y() <= bottom + 1e-9 &&
+                          roomy(l.scene);
+        return fits ? std::optional<PictureLayout>(l) : std::nullopt;
+    };
     // The largest size at which the caption takes at most 30 % of the height and the legend fits with room
     // left for the stage; at the smallest, the caption as it falls. Where the legend fits at no size, none.
     auto attempt = [&](bool withLegend) {
@@ -347,31 +479,23 @@ PictureLayout layoutPicture(int width, int height, const PictureText& text, cons
             layout.captionSize = size;
             layout.noteSize = smallTextSize(size); // the note no larger than the caption's lines
             std::tie(layout.noteLines, layout.note) = place(text.note, layout.noteSize, false, 0.96 * width, layout.noteLine, true);
-            bottom = (layout.noteLines.empty() ? height : layout.note.min.y()) - margin;
+            const double bottom = (layout.noteLines.empty() ? height : layout.note.min.y()) - margin;
             const LegendLayout rows = legendLayout(withLegend ? text.legend : std::vector<const LegendEntry*>{}, size, measure);
-            const double legendLeft = width - margin - rows.size.x();
-            bool beside = !withLegend || legendLeft - margin - left >= 0.5 * width;
-            std::tie(layout.captionLines, layout.caption) = place(
-                text.caption, size, true, beside && withLegend ? legendLeft - margin - left : 0.96 * width, layout.captionLine, false);
-            if (beside && withLegend && layout.captionLines.size() > 2) { // a narrow column: above the legend, the width's
-                std::tie(layout.captionLines, layout.caption) = place(text.caption, size, true, 0.96 * width, layout.captionLine, false);
-                beside = false;
-            }
-            layout.legendRows = rows;
-            layout.legend = {};
-            if (withLegend) {
-                const double legendTop = beside ? 0.04 * height + 1.6 * size : layout.caption.max.y() + 0.6 * size;
-                layout.legend = {Vec2<double>(legendLeft, legendTop), Vec2<double>(width - margin, legendTop + rows.size.y())};
-            }
-            layout.scene = sceneArea(layout);
-            const bool captionFits = layout.caption.max.y() - layout.caption.min.y() <= 0.3 * height;
-            const bool legendFits = !withLegend || (layout.legend.max.y() <= bottom && legendLeft >= left && roomy(layout.scene));
-            if (legendFits && (captionFits || k + 1 == sizes.size()))
+            std::optional<PictureLayout> best;
+            for (const LegendPlace where : withLegend ? places : std::vector<LegendPlace>{LegendPlace::None})
+                if (std::optional<PictureLayout> l = arrange(size, where, rows, bottom); l && (!best || scaleIn(l->scene) > scaleIn(best->scene)))
+                    best = std::move(l);
+            if (!best)
+                continue;
+            const bool captionFits = best->caption.max.y() - best->caption.min.y() <= 0.3 * height;
+            if (captionFits || k + 1 == sizes.size()) {
+                layout = std::move(*best);
                 return true;
+            }
         }
         return false;
     };
-    if (!attempt(!text.legend.empty()))
+    if (text.legend.empty() || text.legendPlace == LegendPlace::None || !attempt(true))
         attempt(false);
     if (!(layout.scene.max.x() - layout.scene.min.x() > 0.2 * width && layout.scene.max.y() - layout.scene.min.y() > 0.2 * height))
         layout.scene = {Vec2<double>::Zero(), Vec2<double>(width, height)}; // no room apart: the whole picture
@@ -388,7 +512,8 @@ const PictureLayout& PictureLayoutCache::layout(int width, int height, const Pic
     std::vector<std::string> legend; // the entries' texts: a new scene's entries may reuse an old one's addresses
     for (const LegendEntry* entry : text.legend)
         legend.push_back(entry->text);
-    auto key = std::make_tuple(width, height, text.fontSize, text.minFontSize, text.caption, text.note, std::move(legend));
+    auto key = std::make_tuple(width, height, text.fontSize, text.minFontSize, text.caption, text.note, std::move(legend),
+                               text.subject, text.shown, text.legendPlace);
     if (key_ != key) {
         layout_ = layoutPicture(width, height, text, measure);
         key_ = std::move(key);
@@ -704,7 +829,7 @@ LabelObstacles labelObstacles(const StageShown& stage, const FigureView& view, c
             obstacles.objects.push_back(convexHull(std::move(outline)));
         }
     }
-    const std::vector<Vec3d> axes = frameMarks(view.frameReach).lines;
+    const std::vector<Vec3d> axes = frameMarks(view.frameExtent).lines;
     for (std::size_t k = 0; k + 1 < axes.size(); k += 2) {
         const auto a = view.pixel(axes[k]), b = view.pixel(axes[k + 1]);
         if (a && b)
@@ -765,8 +890,10 @@ SceneLabels placeSceneLabels(const StageShown& stage, const FigureView& view, co
                 continue;
             std::optional<Segment2> axis;
             if (label.element == Element::Frame && label.minor) { // a tick number, on its axis as frameMarks draws it
-                const Vec3d along = view.frameReach * label.anchor.normalized();
-                const auto from = view.pixel(-along), to = view.pixel(along);
+                int along = 0;
+                label.anchor.cwiseAbs().maxCoeff(&along);
+                const auto [start, end] = frameAxis(view.frameExtent, along);
+                const auto from = view.pixel(start), to = view.pixel(end);
                 if (from && to)
                     axis = Segment2{from->head<2>(), to->head<2>()};
             }
@@ -891,7 +1018,7 @@ Figure drawFigure(const StageShown& stage, const FigureView& view, const LabelMe
             add(p.element, true, opacity, throughView(stage, view, m, corners, true, !p.canonical));
         }
     }
-    const FrameMarks frame = frameMarks(view.frameReach);
+    const FrameMarks frame = frameMarks(view.frameExtent);
     {
         const std::vector<Vec3d>& axes = frame.lines;
         static const Mat4<double> identity = Mat4<double>::Identity();

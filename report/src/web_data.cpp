@@ -133,7 +133,10 @@ PictureLayout stageLayout(const EvaluatedScene& scene, int k, const WorldMoment&
                           const FontMeasure& measure)
 {
     const std::string caption = stageCaption(scene, std::size_t(k), StageText::Heading);
-    return layoutPicture(o.width, o.height, stagePictureText(stageShown(scene, moment), caption, o.fontSize, o.minFontSize),
+    return layoutPicture(o.width, o.height,
+                         stagePictureText(stageShown(scene, moment), caption, o.fontSize, o.minFontSize,
+                                          subjectOutline(WorldCamera{}, moment.framing), // from the exports' viewpoint
+                                          subjectOutline(WorldCamera{}, moment.framing, true), o.legend),
                          measure);
 }
 
@@ -145,7 +148,7 @@ std::vector<PlacedLabel> stageLabels(const EvaluatedScene& scene, const WorldMom
     view.camera = camera;
     view.width = o.width;
     view.height = o.height;
-    view.frameReach = frameReach(moment.framing);
+    view.frameExtent = frameExtent(moment.framing);
     view.fontSize = labelSizeIn(layout, o.fontSize); // the page sets each label to fit its box
     view.minFontSize = o.minFontSize;
     view.lineScale = o.lineScale;
@@ -211,7 +214,7 @@ json sceneData(const EvaluatedScene& scene, const WebPageViews& views)
     for (std::size_t k = 0; k < views.stages.size(); ++k) {
         const WebStage& s = views.stages[k];
         const json labels = placedLabelsJson(s.labels, theme);
-        const FrameMarks marks = frameMarks(s.frameReach);
+        const FrameMarks marks = frameMarks(s.frameExtent);
         const std::string list = stageText(stages, k, StageText::ListEntry);
         const std::string claim = k < scene.stageClaims.size() ? scene.stageClaims[k] : "";
         json entry = {{"list", list},
@@ -283,7 +286,7 @@ json sceneData(const EvaluatedScene& scene, const WebPageViews& views)
                        {"fontSize", options.fontSize},
                        {"minFontSize", options.minFontSize},
                        {"lineScale", options.lineScale},
-                       {"fixedFraming", options.fixedFraming},
+                       {"framing", framingModeName(options.framing)},
                        {"smallFontSize", smallTextSize(options.fontSize)},
                        {"scripts", {{"scale", kScriptScale}, {"drop", kSubscriptDrop}, {"rise", kSuperscriptRise}}},
                        {"background", color(backgroundColor(theme, false))},
@@ -354,7 +357,7 @@ WebPageViews webPageViews(const EvaluatedScene& scene, const WebViewOptions& o, 
     const int n = int(stages.size());
     WebPageViews views;
     views.options = o;
-    const std::optional<Framing> fixed = fixedFraming(scene, o.fixedFraming);
+    const StageFramings framings = stageFramings(scene, o.framing);
     WorldCamera camera; // from the default viewpoint, as every export is seen
     ViewFit fit{o.width, o.height, {}, 1, Vec3<double>::Zero()};
     auto frameOf = [&](const WorldMoment& moment) {
@@ -375,7 +378,7 @@ WebPageViews webPageViews(const EvaluatedScene& scene, const WebViewOptions& o, 
     std::vector<PictureLayout> layouts;
     std::vector<Box2> sceneAreas; // kept apart: each layout is moved into its stage
     for (int k = 0; k <= n; ++k) {
-        moments.push_back(stageAtRest(scene, k, fixed));
+        moments.push_back(stageAtRest(scene, k, framings));
         layouts.push_back(stageLayout(scene, k, moments.back(), o, measure));
         sceneAreas.push_back(layouts.back().scene);
     }
@@ -383,7 +386,7 @@ WebPageViews webPageViews(const EvaluatedScene& scene, const WebViewOptions& o, 
         if (onStage)
             onStage(k);
         if (k > 0) { // the app's transition, frame by frame
-            const StageMotion motion(scene, k - 1, k, fixed);
+            const StageMotion motion(scene, k - 1, k, framings);
             const Box2 before = sceneAreas[std::size_t(k - 1)], after = sceneAreas[std::size_t(k)];
             std::vector<WebFrame> frames;
             for (int f = 1; f <= kWebFramesPerStep; ++f) {
@@ -398,7 +401,7 @@ WebPageViews webPageViews(const EvaluatedScene& scene, const WebViewOptions& o, 
         fit.sceneArea = layout.scene;
         const WebFrame rest = frameOf(moment);
         std::vector<PlacedLabel> labels = stageLabels(scene, moment, rest.projection * rest.view, layout, o, measure);
-        views.stages.push_back({rest, moment.ghost, frameReach(moment.framing), std::move(labels), std::move(layout)});
+        views.stages.push_back({rest, moment.ghost, frameExtent(moment.framing), std::move(labels), std::move(layout)});
     }
     return views;
 }
@@ -406,7 +409,7 @@ WebPageViews webPageViews(const EvaluatedScene& scene, const WebViewOptions& o, 
 std::string webStageLabels(const EvaluatedScene& scene, int stage, const Mat4<double>& camera, const WebViewOptions& o,
                            const FontMeasure& measure)
 {
-    const WorldMoment moment = stageAtRest(scene, stage, fixedFraming(scene, o.fixedFraming));
+    const WorldMoment moment = stageAtRest(scene, stage, stageFramings(scene, o.framing));
     return placedLabelsJson(stageLabels(scene, moment, camera, stageLayout(scene, stage, moment, o, measure), o, measure),
                             o.theme)
         .dump();

@@ -18,13 +18,11 @@ constexpr int kSweepSamples = 8; // positions sampled to frame a rotation's swee
 
 constexpr double kPi = 3.14159265358979323846;
 
-// The camera stands where it sees this share of the framing's sphere whole (the sphere overstates what
-// most directions see).
-constexpr double kSphereSeen = 0.95;
-// Every framed point at most this share of the way from the scene area's center to its edge, so that a
-// marker there is drawn whole: those within this share of that sphere are; those beyond it (the
-// framing's outermost) are fitted one by one.
+// Every framed point at most this share of the way from the scene area's center to its edge: room for
+// a marker drawn whole and for the labels beside the points.
 constexpr double kEdgeRoom = 0.95;
+// The fixed axes run this share of the subject's size beyond it.
+constexpr double kAxesBeyond = 0.08;
 
 // Appends the primitive's points through `m` (a large one's by its box's corners); none when a
 // point of it has no image. Points on the eye's side of `cut` do not count.
@@ -57,58 +55,161 @@ void appendThrough(std::vector<Vec3<double>>& framed, const Primitive& primitive
 
 Framing blend(const Framing& a, const Framing& b, double u)
 {
-    Framing blended{a.center + u * (b.center - a.center), a.radius + u * (b.radius - a.radius), {}, {}};
-    if (a.center == b.center && a.radius == b.radius && a.outermost == b.outermost && a.blended.empty() && b.blended.empty())
-        blended.outermost = a.outermost; // one framing (a fixed one, or stages framed together)
+    auto between = [u](const Eigen::AlignedBox<double, 3>& p, const Eigen::AlignedBox<double, 3>& q) {
+        return p.isEmpty() || q.isEmpty() ? Eigen::AlignedBox<double, 3>()
+                                          : Eigen::AlignedBox<double, 3>(p.min() + u * (q.min() - p.min()),
+                                                                         p.max() + u * (q.max() - p.max()));
+    };
+    Framing blended;
+    blended.center = a.center + u * (b.center - a.center);
+    blended.radius = a.radius + u * (b.radius - a.radius);
+    blended.box = between(a.box, b.box);
+    blended.drawn = between(a.drawn, b.drawn);
+    if (a.center == b.center && a.radius == b.radius && a.points == b.points && a.blended.empty() && b.blended.empty())
+        blended.points = a.points; // one framing (a fixed one, or stages framed together)
     else
-        blended.blended = {{a.center, a.radius, a.outermost, 1 - u}, {b.center, b.radius, b.outermost, u}};
+        blended.blended = {{a.center, a.radius, a.points, 1 - u}, {b.center, b.radius, b.points, u}};
     return blended;
+}
+
+// The camera's axes for its direction: the picture's across, up and ahead (across zero where the view
+// up runs along the direction: the picture has no up).
+struct CameraAxes {
+    Vec3<double> across, up, ahead;
+};
+CameraAxes cameraAxes(const WorldCamera& camera)
+{
+    const Mat4<double> view = camera.view(); // its rows: the picture's across, up and backward
+    return {view.row(0).head<3>(), view.row(1).head<3>(), -view.row(2).head<3>()};
+}
+
+// The aim at one set of points: the focal point moved across the view until their picture is centred,
+// then the distance at which the farthest out of them reaches kEdgeRoom of the way to the edge.
+CameraAim aimAt(const CameraAxes& axes, const Vec2<double>& half, const Vec3<double>& center, double radius,
+                const std::vector<Vec3<double>>& points)
+{
+    constexpr int kCentring = 6; // rounds of centring: each one a perspective correction of the last
+    const double sphere = radius / std::sin(std::atan(half.minCoeff()));
+    if (points.empty() || axes.across.isZero())
+        return {center, sphere};
+    auto distanceFrom = [&](const Vec3<double>& focal) {
+        double needed = 0, behind = -radius;
+        for (const Vec3<double>& p : points) {
+            const Vec3<double> offset = p - focal;
+            const double depth = offset.dot(axes.ahead);
+            needed = std::max(needed, std::max(std::abs(offset.dot(axes.across)) / half.x(),
+                                               std::abs(offset.dot(axes.up)) / half.y()) / kEdgeRoom - depth);
+            behind = std::max(behind, -depth);
+        }
+        return std::max(needed, behind + 1e-3 * radius); // nothing framed at or behind the eye
+    };
+    Vec3<double> focal = center;
+    for (int round = 0; round < kCentring; ++round) {
+        const double distance = distanceFrom(focal);
+        Eigen::AlignedBox<double, 2> seen; // the points' picture, in tangents of the angle from the view's center
+        for (const Vec3<double>& p : points) {
+            const Vec3<double> offset = p - focal;
+            seen.extend(Vec2<double>(offset.dot(axes.across), offset.dot(axes.up)) / (distance + offset.dot(axes.ahead)));
+        }
+        focal += distance * (seen.center().x() * axes.across + seen.center().y() * axes.up);
+    }
+    return {focal, distanceFrom(focal)};
+}
+
+// Framed together, a stage whose step kept sizes (a translation or rotation) is framed with the stage
+// before it: its picture shows where the step moved it from (its ghost).
+bool framedWithTheOneBefore(const std::vector<Stage<double>>& stages, int stage)
+{
+    return stage > 0 && keepsShape(stages[std::size_t(stage - 1)]);
 }
 
 } // namespace
 
+bool framedElement(Element element)
+{
+    switch (element) {
+    case Element::Window:
+    case Element::Projectors:
+    case Element::Frame:
+    case Element::Vanishing:
+        return false;
+    default:
+        return true;
+    }
+}
+
 Framing framingOf(const EvaluatedScene& scene, const std::vector<Mat4<double>>& cumulatives, bool withCanonical)
 {
-    std::vector<Vec3<double>> framed;
+    std::vector<Vec3<double>> framed, past; // past: drawn, not framed
     for (const Primitive& primitive : scene.primitives) {
         const bool canonical = primitive.canonical;
         if (canonical && !withCanonical)
             continue;
         for (const Mat4<double>& m : cumulatives)
-            appendThrough(framed, primitive, canonical ? Mat4<double>::Identity() : m,
+            appendThrough(framedElement(primitive.element) ? framed : past, primitive,
+                          canonical ? Mat4<double>::Identity() : m,
                           !canonical && isProjective(m) ? scene.nearCut : std::nullopt);
     }
+    for (const Marker& marker : scene.markers) // the view's points: the PRP, CW
+        for (const Mat4<double>& m : cumulatives)
+            if (!(isProjective(m) && scene.nearCut && scene.nearCut->dot(marker.point.homogeneous()) < 0))
+                if (const std::optional<Vec3<double>> q = projectPoint(m, marker.point))
+                    framed.push_back(*q);
     if (framed.empty())
         return {};
-    Eigen::AlignedBox<double, 3> box;
+    Framing framing;
     for (const Vec3<double>& p : framed)
-        box.extend(p);
-    Framing framing{box.center(), std::max(1e-9, 0.5 * box.diagonal().norm()), {}, {}};
-    for (const Vec3<double>& p : framed)
-        if ((p - framing.center).norm() > kSphereSeen * kEdgeRoom * framing.radius)
-            framing.outermost.push_back(p);
+        framing.box.extend(p);
+    framing.center = framing.box.center();
+    framing.radius = std::max(1e-9, 0.5 * framing.box.diagonal().norm());
+    framing.drawn = framing.box;
+    for (const Vec3<double>& p : past)
+        framing.drawn.extend(p);
+    framing.points = std::move(framed);
     return framing;
 }
 
-Framing stageFraming(const EvaluatedScene& scene, int stage)
+const char* framingModeName(FramingMode mode)
 {
-    const std::vector<Stage<double>>& stages = scene.pipeline.stages;
-    const auto [first, last] = framedTogether(stages, stage);
-    std::vector<Mat4<double>> positions;
-    for (int k = first * kSweepSamples; k <= last * kSweepSamples; ++k)
-        positions.push_back(drawnAt(stages, double(k) / kSweepSamples));
-    return framingOf(scene, positions, canonicalOpacityAt(stage, stages.size()) > 0);
+    switch (mode) {
+    case FramingMode::Together: return "together";
+    case FramingMode::PerStage: return "per-stage";
+    case FramingMode::Fixed: return "fixed";
+    }
+    return "";
 }
 
-std::optional<Framing> fixedFraming(const EvaluatedScene& scene, bool fixed)
+std::optional<FramingMode> framingModeNamed(const std::string& name)
 {
-    if (!fixed)
-        return std::nullopt;
+    for (const FramingMode mode : {FramingMode::Together, FramingMode::PerStage, FramingMode::Fixed})
+        if (name == framingModeName(mode))
+            return mode;
+    return std::nullopt;
+}
+
+Framing stageFraming(const EvaluatedScene& scene, int stage, FramingMode mode)
+{
+    const std::vector<Stage<double>>& stages = scene.pipeline.stages;
+    const int first = mode == FramingMode::Together && framedWithTheOneBefore(stages, stage) ? stage - 1 : stage, last = stage;
+    std::vector<Mat4<double>> positions;
+    for (int k = first; k <= last; ++k)
+        positions.push_back(drawnAt(stages, double(k)));
+    const bool canonical = canonicalOpacityAt(stage, stages.size()) > 0;
+    Framing framing = framingOf(scene, positions, canonical);
+    if (first < last)
+        framing.shown = framingOf(scene, {drawnAt(stages, stage)}, canonical).points;
+    return framing;
+}
+
+StageFramings stageFramings(const EvaluatedScene& scene, FramingMode mode)
+{
+    if (mode != FramingMode::Fixed)
+        return {mode, std::nullopt};
     const std::vector<Stage<double>>& stages = scene.pipeline.stages;
     std::vector<Mat4<double>> all;
     for (std::size_t k = 0; k <= stages.size(); ++k)
         all.push_back(drawnAt(stages, double(k)));
-    return framingOf(scene, all, true);
+    return {mode, framingOf(scene, all, true)};
 }
 
 double canonicalOpacityAt(double position, std::size_t stageCount)
@@ -122,11 +223,11 @@ double smoothStep(double u)
     return u * u * (3 - 2 * u);
 }
 
-WorldMoment stageAtRest(const EvaluatedScene& scene, int stage, const std::optional<Framing>& fixed)
+WorldMoment stageAtRest(const EvaluatedScene& scene, int stage, const StageFramings& framings)
 {
     const std::vector<Stage<double>>& stages = scene.pipeline.stages;
     return {drawnAt(stages, stage), canonicalOpacityAt(stage, stages.size()), ghostAt(stages, stage),
-            fixed ? *fixed : stageFraming(scene, stage)};
+            framings.fixed ? *framings.fixed : stageFraming(scene, stage, framings.mode)};
 }
 
 StageShown stageShown(const EvaluatedScene& scene, const WorldMoment& moment)
@@ -136,25 +237,31 @@ StageShown stageShown(const EvaluatedScene& scene, const WorldMoment& moment)
     return shown;
 }
 
-StageMotion::StageMotion(const EvaluatedScene& scene, int from, int to, const std::optional<Framing>& fixed)
+StageMotion::StageMotion(const EvaluatedScene& scene, int from, int to, const StageFramings& framings)
     : stages_(scene.pipeline.stages), from_(from), to_(to)
 {
     const std::vector<Stage<double>>& stages = stages_;
     ghost_ = to == from + 1 ? ghostAt(stages, to) : std::nullopt; // where it starts, while it moves
-    if (fixed) {
-        start_ = sweep_ = end_ = *fixed;
+    if (framings.fixed) {
+        start_ = sweep_ = end_ = *framings.fixed;
         return;
     }
-    start_ = stageFraming(scene, from);
-    end_ = stageFraming(scene, to);
-    if (framedTogether(stages, from) == framedTogether(stages, to)) {
-        sweep_ = start_; // one framing: the motion is seen against it
+    start_ = stageFraming(scene, from, framings.mode);
+    end_ = stageFraming(scene, to, framings.mode);
+    const int later = std::max(from, to);
+    const bool together = framings.mode == FramingMode::Together && std::abs(to - from) == 1 && framedWithTheOneBefore(stages, later);
+    if (together && stages[std::size_t(later - 1)].matrix.topLeftCorner<3, 3>().isIdentity(0)) {
+        sweep_ = stageFraming(scene, later, framings.mode); // a translation: seen against the framing of both ends
         return;
     }
+    // The camera takes in the whole motion (a rotation's arc leaves the stages' own framing).
     const bool canonical = canonicalOpacityAt(from, stages.size()) > 0 || canonicalOpacityAt(to, stages.size()) > 0;
     std::vector<Mat4<double>> sweep;
     for (int k = 0; k <= kSweepSamples; ++k)
         sweep.push_back(drawnAt(stages, from + (to - from) * double(k) / kSweepSamples));
+    if (together) // and both ends whole
+        for (const int k : {later - 1, later})
+            sweep.push_back(drawnAt(stages, double(k)));
     sweep_ = framingOf(scene, sweep, canonical);
 }
 
@@ -213,7 +320,7 @@ Mat4<double> WorldCamera::projection(double aspect) const
     return m;
 }
 
-double fitDistance(const WorldCamera& camera, const Framing& framing, const ViewFit& fit)
+CameraAim fitAim(const WorldCamera& camera, const Framing& framing, const ViewFit& fit)
 {
     // The tangents of the scene area's half angles (where the picture's text leaves room), across and up.
     const double tangent = std::tan(camera.viewAngle * kPi / 360);
@@ -221,36 +328,24 @@ double fitDistance(const WorldCamera& camera, const Framing& framing, const View
     const Vec2<double> extent = whole ? Vec2<double>(fit.height > 0 ? double(fit.width) / fit.height : 1, 1)
                                       : Vec2<double>((fit.sceneArea.max - fit.sceneArea.min) / fit.height);
     const Vec2<double> half = tangent * extent;
-    // Most of a sphere seen whole from any direction, in the narrower of the two angles (a point within
-    // kSphereSeen * kEdgeRoom of its radius also a marker's room from the edge);
-    const double sine = std::sin(std::atan(half.minCoeff()));
-    auto sphere = [&](double radius) { return kSphereSeen * radius / sine; };
-    // how much further back the outermost points each need the camera, from this direction.
-    const Mat4<double> view = camera.view(); // its rows: the picture's across, up and backward
-    const Vec3<double> across = view.row(0).head<3>(), up = view.row(1).head<3>(), ahead = -view.row(2).head<3>();
-    auto further = [&](const Vec3<double>& center, double radius, const std::vector<Vec3<double>>& outermost) {
-        if (across.isZero())
-            return 0.0; // no up for the picture (the view up along the direction): the sphere alone
-        double needed = 0;
-        for (const Vec3<double>& p : outermost) {
-            const Vec3<double> offset = p - center;
-            needed = std::max(needed, std::max(std::abs(offset.dot(across)) / half.x(), std::abs(offset.dot(up)) / half.y()) /
-                                          kEdgeRoom - offset.dot(ahead));
-        }
-        return std::max(0.0, needed - sphere(radius));
-    };
-    double distance = sphere(framing.radius) + further(framing.center, framing.radius, framing.outermost);
-    for (const Framing::Share& part : framing.blended) // each framing's setting back, by its share: nothing jumps
-        distance += part.share * further(part.center, part.radius, part.outermost);
-    return distance;
+    const CameraAxes axes = cameraAxes(camera);
+    if (framing.blended.empty())
+        return aimAt(axes, half, framing.center, framing.radius, framing.points);
+    CameraAim aim{Vec3<double>::Zero(), 0};
+    for (const Framing::Share& part : framing.blended) {
+        const CameraAim own = aimAt(axes, half, part.center, part.radius, part.points);
+        aim.focalPoint += part.share * own.focalPoint;
+        aim.distance += part.share * own.distance;
+    }
+    return aim;
 }
 
 void frameOn(WorldCamera& camera, const Framing& framing, const ViewFit& fit)
 {
     const Vec3<double> direction = camera.direction();
-    const double distance = fit.zoom * fitDistance(camera, framing, fit);
-    camera.focalPoint = framing.center + fit.pan * framing.radius;
-    camera.position = camera.focalPoint - direction * distance;
+    const CameraAim aim = fitAim(camera, framing, fit);
+    camera.focalPoint = aim.focalPoint + fit.pan * framing.radius;
+    camera.position = camera.focalPoint - direction * fit.zoom * aim.distance;
     // The focal point at the scene area's center (VTK's window center is the view's center's opposite).
     if (fit.width > 0 && fit.height > 0 && !fit.sceneArea.isEmpty()) {
         const Vec2<double> center = (fit.sceneArea.min + fit.sceneArea.max) / 2;
@@ -261,20 +356,36 @@ void frameOn(WorldCamera& camera, const Framing& framing, const ViewFit& fit)
     fitClippingRange(camera, framing);
 }
 
-double frameReach(const Framing& framing)
+std::vector<Vec2<double>> subjectOutline(const WorldCamera& camera, const Framing& framing, bool shownOnly)
 {
-    return framing.center.norm() + 1.5 * framing.radius;
+    const CameraAxes axes = cameraAxes(camera);
+    if (axes.across.isZero())
+        return {};
+    std::vector<Vec2<double>> seen;
+    for (const Vec3<double>& p : shownOnly && !framing.shown.empty() ? framing.shown : framing.points)
+        seen.emplace_back(p.dot(axes.across), -p.dot(axes.up));
+    return convexHull(std::move(seen));
+}
+
+Eigen::AlignedBox<double, 3> frameExtent(const Framing& framing)
+{
+    Eigen::AlignedBox<double, 3> extent(Vec3<double>::Zero(), Vec3<double>::Zero());
+    if (framing.box.isEmpty())
+        return extent;
+    extent.extend(framing.box);
+    const double beyond = kAxesBeyond * framing.box.sizes().maxCoeff();
+    return {extent.min() - Vec3<double>::Constant(beyond), extent.max() + Vec3<double>::Constant(beyond)};
 }
 
 void fitClippingRange(WorldCamera& camera, const Framing& framing)
 {
-    // Everything framed lies within the framing's sphere; the fixed axes within their reach of the origin.
+    // Everything drawn and the fixed axes lie within the sphere about their box.
     const Vec3<double> direction = camera.direction();
-    const double reach = frameReach(framing);
-    const double along = (framing.center - camera.position).dot(direction), extent = 1.05 * framing.radius;
-    const double axesAlong = -camera.position.dot(direction);
-    const double nearest = std::min(along - extent, axesAlong - reach);
-    const double farthest = std::max(along + extent, axesAlong + reach);
+    Eigen::AlignedBox<double, 3> all = frameExtent(framing);
+    if (!framing.drawn.isEmpty())
+        all.extend(framing.drawn);
+    const double along = (all.center() - camera.position).dot(direction), extent = 0.5 * 1.05 * all.diagonal().norm();
+    const double nearest = along - extent, farthest = along + extent;
     camera.nearPlane = std::max(nearest, 1e-3 * farthest);
     camera.farPlane = farthest;
 }

@@ -53,7 +53,7 @@ FigureView viewOf(const StageShown& stage)
                                     gl::Perspective<double>{30, 1280.0 / 720, 0.5 * distance, 3 * distance}};
     FigureView view;
     view.camera = buildPipeline(CameraSpec<double>{camera}).composite;
-    view.frameReach = center.norm() + 1.5 * radius;
+    view.frameExtent = box.extend(Vec3<double>::Zero());
     return view;
 }
 
@@ -256,6 +256,49 @@ TEST(PictureLayout, LegendInsideANarrowPictureOrLeftOut)
     EXPECT_GT(shown, 0);
 }
 
+// The legend goes where the subject draws largest: inside, in a corner the subject leaves free, where
+// there is one; beside a tall subject; below a wide one. Asked for a place, it goes there.
+TEST(PictureLayout, TheLegendGoesWhereItCostsTheSubjectLeast)
+{
+    const auto scene = evaluateScene(loadScene(fs::path(viewpipe::build::dataDir) / "scenes/house.json"));
+    PictureText text;
+    text.caption = "1. T(-VRP) - translate the view reference point to the origin";
+    text.legend = legendShown(scene->worldLegend, false);
+    auto scaleIn = [](const Box2& room, const std::vector<Vec2<double>>& subject) {
+        Eigen::AlignedBox<double, 2> box;
+        for (const Vec2<double>& p : subject)
+            box.extend(p);
+        return (room.max - room.min).cwiseQuotient(box.sizes()).minCoeff();
+    };
+    // A triangle along the bottom and the left (y down): the top right corner is free.
+    text.subject = {{0, 0}, {0, 1}, {2, 1}};
+    const PictureLayout corner = layoutPicture(1280, 720, text, textMeasure);
+    ASSERT_FALSE(corner.legend.isEmpty());
+    EXPECT_TRUE(corner.scene.contains(corner.legend)) << "inside the stage's room";
+    EXPECT_GT(corner.legend.min.x(), 640);
+    EXPECT_LT(corner.legend.max.y(), 360);
+    // A square: no corner free; the legend beside it, where it draws larger than above it.
+    text.subject = {{0, 0}, {1, 0}, {1, 1}, {0, 1}};
+    const PictureLayout tall = layoutPicture(1280, 720, text, textMeasure);
+    EXPECT_FALSE(tall.scene.overlaps(tall.legend));
+    EXPECT_LE(tall.scene.max.x(), tall.legend.min.x());
+    // A wide band: the legend below it.
+    text.subject = {{0, 0}, {8, 0}, {8, 1}, {0, 1}};
+    const PictureLayout wide = layoutPicture(1280, 720, text, textMeasure);
+    EXPECT_FALSE(wide.scene.overlaps(wide.legend));
+    EXPECT_LE(wide.scene.max.y(), wide.legend.min.y());
+    EXPECT_GT(scaleIn(wide.scene, text.subject), scaleIn(tall.scene, text.subject)) << "larger than beside it";
+    // Asked for.
+    text.legendPlace = LegendPlace::Beside;
+    EXPECT_LE(layoutPicture(1280, 720, text, textMeasure).scene.max.x(), wide.legend.min.x());
+    text.legendPlace = LegendPlace::None;
+    const PictureLayout none = layoutPicture(1280, 720, text, textMeasure);
+    EXPECT_TRUE(none.legend.isEmpty());
+    EXPECT_EQ(none.scene.max.x(), 1280);
+    for (const LegendPlace place : {LegendPlace::Best, LegendPlace::Beside, LegendPlace::Below, LegendPlace::Inside, LegendPlace::None})
+        EXPECT_EQ(legendPlaceNamed(legendPlaceName(place)), place);
+}
+
 // Labels follow the caption down where a narrow picture sets it smaller, never below the floor
 // (minFontSize), never above the size asked.
 TEST(PictureLayout, LabelsNoLargerThanTheCaption)
@@ -291,7 +334,7 @@ SceneLabels crowdedHouseLabels(int width, int height, const std::vector<Box2>& r
     std::vector<const Label*> labels;
     for (const Label& label : scene->labels)
         labels.push_back(&label);
-    const FrameMarks marks = frameMarks(view.frameReach);
+    const FrameMarks marks = frameMarks(view.frameExtent);
     for (const Label& label : marks.labels)
         labels.push_back(&label);
     minor.clear();
@@ -442,8 +485,8 @@ TEST(Figure, TickNumbersKeepOffTheirAxis)
                 view.height = size.y();
                 std::vector<Segment2> axes; // each frame axis as drawn
                 for (int axis = 0; axis < 3; ++axis) {
-                    const auto a = view.pixel(-view.frameReach * Vec3<double>::Unit(axis)),
-                               b = view.pixel(view.frameReach * Vec3<double>::Unit(axis));
+                    const auto [from, to] = frameAxis(view.frameExtent, axis);
+                    const auto a = view.pixel(from), b = view.pixel(to);
                     if (a && b)
                         axes.push_back({a->head<2>(), b->head<2>()});
                 }

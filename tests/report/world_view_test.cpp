@@ -1,7 +1,7 @@
 // The world view's framing, motion and camera (world_view.hpp): the camera's
 // matrices are gluLookAt's and glFrustum's (the OpenGL 2.1 reference pages,
 // through the core's gl.hpp, tested against them on its own); a framed stage
-// sits in the picture's free area; a step between stages starts and ends
+// fills the picture's free area; a step between stages starts and ends
 // where the stages at rest are, and moves without jumps.
 
 #include <gtest/gtest.h>
@@ -63,32 +63,42 @@ Vec2<double> pixelOf(const WorldCamera& camera, const ViewFit& fit, const Vec3<d
     return {(clip.x() / clip.w() + 1) / 2 * fit.width, (1 - clip.y() / clip.w()) / 2 * fit.height};
 }
 
-TEST(WorldView, AFramedStageSitsInTheAreaTheTextLeaves)
+// The picture of what a framing frames, through a camera (pixels).
+Eigen::AlignedBox<double, 2> pictureOf(const WorldCamera& camera, const ViewFit& fit, const Framing& framing)
+{
+    Eigen::AlignedBox<double, 2> picture;
+    for (const Vec3<double>& p : framing.points)
+        picture.extend(pixelOf(camera, fit, p));
+    return picture;
+}
+
+TEST(WorldView, AFramedStageFillsTheAreaTheTextLeaves)
 {
     const auto scene = builtIn("house.json");
     ViewFit fit;
     fit.sceneArea = {{100, 150}, {900, 700}}; // a caption above, a legend to the right
+    const Eigen::AlignedBox<double, 2> area(Vec2<double>(100, 150), Vec2<double>(900, 700));
     for (int k = 0; k <= int(scene->pipeline.stages.size()); ++k) {
         const Framing framing = stageFraming(*scene, k);
         WorldCamera camera;
         frameOn(camera, framing, fit);
-        // The focal point (the framing's center) at the area's center.
-        EXPECT_LT((pixelOf(camera, fit, framing.center) - Vec2<double>(500, 425)).norm(), 1e-6) << "stage " << k;
         EXPECT_NEAR(camera.direction().dot(WorldCamera{}.direction()), 1, 1e-12) << "the direction is kept";
-        // The framing's sphere seen across at most the area's height (550 px), a little closer than touching.
-        const Vec3<double> side = camera.view().block<1, 3>(0, 0).transpose(); // the view's right
-        const double across = (pixelOf(camera, fit, framing.center + framing.radius * side) -
-                               pixelOf(camera, fit, framing.center - framing.radius * side)).norm();
-        EXPECT_GT(across, 0.8 * 550) << "stage " << k;
-        EXPECT_LT(across, 1.1 * 550) << "stage " << k;
-        // Everything framed lies between the near and far planes.
-        const double along = (framing.center - camera.position).dot(camera.direction());
-        EXPECT_LT(camera.nearPlane, along - framing.radius) << "stage " << k;
-        EXPECT_GT(camera.farPlane, along + framing.radius) << "stage " << k;
+        // What is framed drawn in the middle of the area, reaching 0.95 of the way to its edges across or up.
+        const Eigen::AlignedBox<double, 2> picture = pictureOf(camera, fit, framing);
+        EXPECT_LT((picture.center() - area.center()).norm(), 0.02 * 550) << "stage " << k;
+        const Vec2<double> filled = picture.sizes().cwiseQuotient(area.sizes());
+        EXPECT_LE(filled.maxCoeff(), 0.95 + 1e-9) << "stage " << k;
+        EXPECT_GT(filled.maxCoeff(), 0.93) << "stage " << k;
+        // Everything drawn lies between the near and far planes.
+        for (const Vec3<double>& corner : {framing.drawn.min(), framing.drawn.max()}) {
+            const double along = (corner - camera.position).dot(camera.direction());
+            EXPECT_LT(camera.nearPlane, along) << "stage " << k;
+            EXPECT_GT(camera.farPlane, along) << "stage " << k;
+        }
     }
 }
 
-TEST(WorldView, AFramingHoldsEveryElementOfItsStage)
+TEST(WorldView, AFramingHoldsEveryFramedElementOfItsStage)
 {
     const auto scene = builtIn("house.json");
     const int n = int(scene->pipeline.stages.size());
@@ -101,11 +111,15 @@ TEST(WorldView, AFramingHoldsEveryElementOfItsStage)
             for (const Vec3<double>& world : p.segments) {
                 const auto q = projectPoint(shown.matrixOf(p), world);
                 if (q && shown.shows(world)) {
-                    EXPECT_LE((*q - moment.framing.center).norm(), moment.framing.radius * (1 + 1e-12))
-                        << "stage " << k << ": " << world.transpose();
+                    EXPECT_TRUE(moment.framing.drawn.contains(*q)) << "stage " << k << ": " << world.transpose();
+                    if (framedElement(p.element))
+                        EXPECT_TRUE(moment.framing.box.contains(*q)) << "stage " << k << ": " << world.transpose();
                 }
             }
         }
+        for (const Marker& marker : scene->markers)
+            if (const auto q = projectPoint(moment.drawn, marker.point); q && shown.shows(marker.point))
+                EXPECT_TRUE(moment.framing.box.contains(*q)) << "stage " << k << ": " << marker.point.transpose();
     }
 }
 
@@ -134,7 +148,8 @@ TEST(WorldView, EveryFramedPointIsInThePictureFromAnyDirection)
                     const Box2 area = fit.sceneArea.isEmpty() ? Box2{Vec2<double>::Zero(), Vec2<double>(fit.width, fit.height)}
                                                               : fit.sceneArea;
                     for (const Primitive& p : scene->primitives) {
-                        if (!shown.draws(p) || (p.kind == PrimitiveKind::Faces && p.faces->vertices.size() > 20000))
+                        if (!shown.draws(p) || !framedElement(p.element) ||
+                            (p.kind == PrimitiveKind::Faces && p.faces->vertices.size() > 20000))
                             continue;
                         for (const Vec3<double>& world : p.kind == PrimitiveKind::Lines ? p.segments : p.faces->vertices) {
                             const auto q = projectPoint(shown.matrixOf(p), world);
@@ -165,13 +180,15 @@ TEST(WorldView, AStepStartsAndEndsAtTheStagesAtRestAndNeverJumps)
                 const std::string at = name + " " + std::to_string(from) + " -> " + std::to_string(to);
                 EXPECT_LT(relativeError(start.drawn, first.drawn), 1e-12) << at;
                 EXPECT_LT(relativeError(end.drawn, last.drawn), 1e-12) << at;
-                // The camera's distance too, which the framing's outermost points may set back.
+                // The camera's aim too.
                 const WorldCamera camera;
-                auto distance = [&](const Framing& framing) { return fitDistance(camera, framing, ViewFit{}); };
+                auto distance = [&](const Framing& framing) { return fitAim(camera, framing, ViewFit{}).distance; };
+                auto focal = [&](const Framing& framing) { return fitAim(camera, framing, ViewFit{}).focalPoint; };
                 for (const auto& [moment, rest] : {std::pair{start, first}, std::pair{end, last}}) {
                     EXPECT_LT((moment.framing.center - rest.framing.center).norm(), 1e-12 * rest.framing.radius) << at;
                     EXPECT_NEAR(moment.framing.radius, rest.framing.radius, 1e-12 * rest.framing.radius) << at;
                     EXPECT_NEAR(distance(moment.framing), distance(rest.framing), 1e-12 * distance(rest.framing)) << at;
+                    EXPECT_LT((focal(moment.framing) - focal(rest.framing)).norm(), 1e-12 * distance(rest.framing)) << at;
                 }
                 EXPECT_EQ(start.canonicalOpacity, first.canonicalOpacity) << at;
                 EXPECT_EQ(end.canonicalOpacity, last.canonicalOpacity) << at;
@@ -188,6 +205,7 @@ TEST(WorldView, AStepStartsAndEndsAtTheStagesAtRestAndNeverJumps)
                     EXPECT_LE((a.center - b.center).norm(), 0.075 * 2 * largest) << at << " at " << f;
                     EXPECT_LE(std::abs(a.radius - b.radius), 0.075 * largest) << at << " at " << f;
                     EXPECT_LE(std::abs(distance(a) - distance(b)), 0.075 * farthest) << at << " at " << f;
+                    EXPECT_LE((focal(a) - focal(b)).norm(), 0.075 * farthest) << at << " at " << f;
                 }
             }
     }
@@ -196,19 +214,22 @@ TEST(WorldView, AStepStartsAndEndsAtTheStagesAtRestAndNeverJumps)
 TEST(WorldView, AStepWithFixedFramingHoldsItsCamera)
 {
     const auto scene = builtIn("house.json");
-    const std::optional<Framing> fixed = fixedFraming(*scene, true);
+    const StageFramings framings = stageFramings(*scene, FramingMode::Fixed);
+    const std::optional<Framing>& fixed = framings.fixed;
     ASSERT_TRUE(fixed);
     for (int k = 1; k <= int(scene->pipeline.stages.size()); ++k) {
-        const StageMotion motion(*scene, k - 1, k, fixed);
+        const StageMotion motion(*scene, k - 1, k, framings);
         for (int f = 0; f <= 10; ++f) {
             const Framing framing = motion.at(f / 10.0).framing;
             EXPECT_EQ(framing.center, fixed->center) << k << " at " << f;
             EXPECT_EQ(framing.radius, fixed->radius) << k << " at " << f;
-            // and the camera stands where it stood (the framing's outermost points count throughout)
+            // and the camera stands where it stood (the framing's points count throughout)
             for (const Vec3<double>& direction : {WorldCamera{}.position, Vec3<double>(-1, 0.5, -1)}) {
                 WorldCamera camera;
                 camera.position = direction;
-                EXPECT_DOUBLE_EQ(fitDistance(camera, framing, ViewFit{}), fitDistance(camera, *fixed, ViewFit{})) << k << " at " << f;
+                const CameraAim aim = fitAim(camera, framing, ViewFit{}), held = fitAim(camera, *fixed, ViewFit{});
+                EXPECT_DOUBLE_EQ(aim.distance, held.distance) << k << " at " << f;
+                EXPECT_EQ(aim.focalPoint, held.focalPoint) << k << " at " << f;
             }
         }
     }

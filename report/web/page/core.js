@@ -45,7 +45,7 @@
   // The scene evaluated anew by the core: what the page draws and the JSON view; or why the core refuses it.
   // The page's picture as the core lays it out.
   const viewOptions = () => ({ width: data.width, height: data.height, fontSize: data.fontSize, minFontSize: data.minFontSize,
-                               lineScale: data.lineScale, fixedFraming: data.fixedFraming, dark: data.dark });
+                               lineScale: data.lineScale, framing: data.framing, dark: data.dark });
   function evaluateText(text, files, filesLeftOut) {
     const outcome = core.evaluate(text, JSON.stringify(viewOptions()), measureRuns);
     if (outcome.error) return { error: outcome.error };

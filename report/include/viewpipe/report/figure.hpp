@@ -65,13 +65,25 @@ Label tracedLabel(const Vec3<double>& point);
 // A matrix divides when w is not 1 everywhere.
 bool isProjective(const Mat4<double>& m);
 
+// Where a picture's legend goes (export --legend): wherever it costs the
+// subject least; at the top right with the stage left of it; at the bottom
+// right with the stage above it; inside the stage's room in a corner the
+// subject leaves free; or nowhere.
+enum class LegendPlace { Best, Beside, Below, Inside, None };
+// The names --legend takes ("best", "beside", "below", "inside", "none").
+const char* legendPlaceName(LegendPlace place);
+std::optional<LegendPlace> legendPlaceNamed(const std::string& name);
+
 // Where a picture is seen from and how it is drawn.
 struct FigureView {
     Mat4<double> camera = Mat4<double>::Identity(); // stage coordinates -> the picture's clip coordinates
     int width = 1280, height = 720;                 // pixels
-    double frameReach = 0;  // the fixed axes run from -reach to reach along x, y and z (0: none)
+    Eigen::AlignedBox<double, 3> frameExtent; // where the fixed axes run along x, y and z (empty: none)
     double fontSize = 20;   // pixels
     double minFontSize = 20; // where room runs out, the caption and legend may shrink to this (PictureText)
+    // What its text was laid out for (PictureText): the subject's outline, and where the legend was asked to go.
+    std::vector<Vec2<double>> subject, subjectShown;
+    LegendPlace legendPlace = LegendPlace::Best;
     double lineScale = 1;
     // Pixels a world point is drawn at, and its depth (smaller: nearer); nothing when it has no image.
     std::optional<Vec3<double>> pixel(const Vec3<double>& stagePoint) const;
@@ -108,12 +120,20 @@ struct LegendLayout {
 };
 LegendLayout legendLayout(const std::vector<const LegendEntry*>& entries, double labelSize, const FontMeasure& measure);
 
+// The convex hull of points (counter-clockwise where y runs up).
+std::vector<Vec2<double>> convexHull(std::vector<Vec2<double>> points);
+
 // What a picture says beside its stage.
 struct PictureText {
     double fontSize = 20;    // the labels' and the caption's, as asked (text scale applied)
     double minFontSize = 20; // the smallest the caption and legend may take where room runs out (100 %)
     std::string caption, note;
     std::vector<const LegendEntry*> legend;
+    // The subject's outline as the picture frames it, at any scale (subjectOutline): the legend goes where
+    // the subject draws largest. Empty: not known, the larger room. `shown`: the part of it the picture
+    // shows (stages framed together frame where the others go too), which a legend inside keeps clear of.
+    std::vector<Vec2<double>> subject, shown;
+    LegendPlace legendPlace = LegendPlace::Best;
 };
 
 // Where a picture's caption (top left), legend (top right) and effects note
@@ -124,8 +144,12 @@ struct PictureText {
 // height and the legend fits above the note leaving the stage 40 % of the
 // width and height, else the largest size down to minFontSize that does; a
 // legend that fits at no size is left out.
-// `scene` is where the stage is framed: the larger of the area left of the
-// legend and the area below it, between the caption and the note.
+// `scene` is where the stage is framed, between the caption and the note,
+// where the legend leaves room (PictureText::legendPlace): left of it, above
+// it, or all of it with the legend inside in a corner the subject leaves free
+// (Inside, where asked: the top right corner if none is). Best takes the
+// place where the subject draws largest (beside or below where its outline is
+// not known: the larger room).
 struct PictureLayout {
     std::vector<std::string> captionLines, noteLines;
     Box2 caption, legend, note, scene;
@@ -139,7 +163,9 @@ PictureLayout layoutPicture(int width, int height, const PictureText& text, cons
 // (labels twice the caption's height covered a narrow view's stage).
 double labelSizeIn(const PictureLayout& layout, double fontSize);
 // What the picture of a stage says: its caption, the scene's effects note and the legend of what it draws.
-PictureText stagePictureText(const StageShown& stage, const std::string& caption, double fontSize, double minFontSize);
+PictureText stagePictureText(const StageShown& stage, const std::string& caption, double fontSize, double minFontSize,
+                             std::vector<Vec2<double>> subject = {}, std::vector<Vec2<double>> shown = {},
+                             LegendPlace legendPlace = LegendPlace::Best);
 // The boxes no label may take: the caption's, the note's and the legend's (where it is shown).
 std::vector<Box2> textBoxes(const PictureLayout& layout);
 // Where the picture's text stands on the background, hiding what runs behind it (axes, geometry cut
@@ -156,7 +182,9 @@ public:
     const PictureLayout& layout(int width, int height, const PictureText& text, const FontMeasure& measure);
 
 private:
-    std::optional<std::tuple<int, int, double, double, std::string, std::string, std::vector<std::string>>> key_;
+    std::optional<std::tuple<int, int, double, double, std::string, std::string, std::vector<std::string>,
+                             std::vector<Vec2<double>>, std::vector<Vec2<double>>, LegendPlace>>
+        key_;
     PictureLayout layout_;
 };
 
@@ -227,14 +255,17 @@ SceneLabels placeSceneLabels(const StageShown& stage, const FigureView& view, co
                              const std::vector<Marker>& markers, const LabelMeasure& measure,
                              const std::vector<Box2>& reserved);
 
-// The fixed axes of the coordinates a stage maps into, reaching `reach` each
-// way: the axes and their ticks (end points by pairs) and the labels naming
-// them and numbering the ticks, all in the stage's coordinates.
+// The fixed axes of the coordinates a stage maps into, running through the
+// origin across `extent`: the axes and their ticks (end points by pairs) and
+// the labels naming them and numbering the ticks, all in the stage's
+// coordinates. An axis the extent gives no length is left out.
 struct FrameMarks {
     std::vector<Vec3<double>> lines;
     std::vector<Label> labels;
 };
-FrameMarks frameMarks(double reach);
+FrameMarks frameMarks(const Eigen::AlignedBox<double, 3>& extent);
+// Where fixed axis `axis` (0: x, 1: y, 2: z) runs across `extent`: its two ends.
+std::array<Vec3<double>, 2> frameAxis(const Eigen::AlignedBox<double, 3>& extent, int axis);
 
 // One filled polygon or one line of the flat figure.
 struct FigureShape {

@@ -18,6 +18,7 @@
 #include "viewpipe/lesson.hpp"
 #include "viewpipe/report/figure.hpp"
 #include "viewpipe/report/style.hpp"
+#include "viewpipe/report/world_view.hpp"
 
 namespace viewpipe {
 
@@ -32,22 +33,23 @@ struct WebFrame {
 };
 
 // A stage at rest: its frame, the ghost of the stage before, the fixed
-// axes' reach and the labels as the app places them (pixels of the page's size).
+// axes' extent and the labels as the app places them (pixels of the page's size).
 struct WebStage {
     WebFrame rest;
     std::optional<Mat4<double>> ghost;
-    double frameReach = 0;
+    Eigen::AlignedBox<double, 3> frameExtent;
     std::vector<PlacedLabel> labels;
     PictureLayout layout; // where the caption, legend and note go, as in the PNG
 };
 
 // What the page's views are made for: the picture's size in pixels, its
-// text and lines, its theme, and whether one framing holds every stage.
+// text and lines, its theme, and how its stages are framed.
 struct WebViewOptions {
     int width = 1280, height = 720;
     double fontSize = 20, minFontSize = 20, lineScale = 1;
     Theme theme = Theme::Light;
-    bool fixedFraming = false;
+    FramingMode framing = FramingMode::Together;
+    LegendPlace legend = LegendPlace::Best;
 };
 
 struct WebPageViews {

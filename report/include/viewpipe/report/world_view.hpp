@@ -7,41 +7,65 @@
 // view and projection matrices. No VTK, no Qt.
 
 #include <optional>
+#include <string>
 #include <vector>
 
 #include "viewpipe/report/figure.hpp"
 
 namespace viewpipe {
 
-// Where the world view's camera looks and how much it must see: a sphere
-// about everything framed, and the points near its surface, which a camera
-// fitted a little closer than the sphere (most directions see less of it)
-// could leave out.
+// What the world view frames: the stage's subject (objects, view volume,
+// the view's points and axes: framedElement), every point of it, the box
+// about them and a sphere about that box (for the clipping range and the
+// user's pan, in its radii).
 struct Framing {
     Vec3<double> center = Vec3<double>::Zero();
     double radius = 1;
-    std::vector<Vec3<double>> outermost;
-    // While a step's framing blends into the next: the two, and each one's share. The camera stands
-    // back from the blended sphere by the shares of how far each one's outermost points set it back.
+    std::vector<Vec3<double>> points;
+    Eigen::AlignedBox<double, 3> box;
+    Eigen::AlignedBox<double, 3> drawn; // about every element drawn, framed or not: for the clipping range
+    // Where stages are framed together: the points of the stage at rest alone (a still picture's text may
+    // cover where the others go). Empty: `points`.
+    std::vector<Vec3<double>> shown;
+    // While a step's framing blends into the next: the two, and each one's share. The camera's aim
+    // blends each one's aim by its share: nothing jumps.
     struct Share {
         Vec3<double> center = Vec3<double>::Zero();
         double radius = 1;
-        std::vector<Vec3<double>> outermost;
+        std::vector<Vec3<double>> points;
         double share = 0;
     };
     std::vector<Share> blended;
 };
 
-// What framing shows every element as it would be through `cumulatives` (the
-// canonical outline included when `withCanonical`); an element partly behind
-// the eye does not count.
+// Whether the world view frames an element: the subject of a stage's picture. The window, the
+// projectors and the fixed axes may run past it (the window lies where the view-plane is, often far
+// beyond the volume).
+bool framedElement(Element element);
+
+// What framing shows every framed element and marker as it would be through
+// `cumulatives` (the canonical outline included when `withCanonical`); an
+// element partly behind the eye does not count.
 Framing framingOf(const EvaluatedScene& scene, const std::vector<Mat4<double>>& cumulatives, bool withCanonical);
-// The framing of stage k at rest: one for all the stages framed together with
-// it (translations and rotations between them are seen moving, rotations'
-// sweeps included).
-Framing stageFraming(const EvaluatedScene& scene, int stage);
-// With `fixed` (export --framing fixed): one framing that holds every stage; else none.
-std::optional<Framing> fixedFraming(const EvaluatedScene& scene, bool fixed);
+// How the pictures of a scene's stages are framed (export --framing): a stage
+// reached by a step that keeps sizes (a translation or rotation) framed
+// together with the stage before it, so that the step's motion shows, the
+// default; every stage on its own; or one framing that holds every stage, for
+// comparing sizes.
+enum class FramingMode { Together, PerStage, Fixed };
+// The names --framing takes: "together", "per-stage", "fixed".
+const char* framingModeName(FramingMode mode);
+std::optional<FramingMode> framingModeNamed(const std::string& name);
+
+// The framing of stage k at rest: Together, with the stage before it where
+// the step between keeps sizes; otherwise its own.
+Framing stageFraming(const EvaluatedScene& scene, int stage, FramingMode mode = FramingMode::Together);
+// A scene's stages framed as a mode asks, Fixed's one framing made once.
+struct StageFramings {
+    FramingMode mode = FramingMode::Together;
+    std::optional<Framing> fixed;
+};
+StageFramings stageFramings(const EvaluatedScene& scene, FramingMode mode);
 
 // The canonical outline fades in while the last stage is reached.
 double canonicalOpacityAt(double position, std::size_t stageCount);
@@ -56,8 +80,8 @@ struct WorldMoment {
     std::optional<Mat4<double>> ghost;
     Framing framing;
 };
-// Stage k at rest: framed on its own, or on `fixed` (export --framing fixed).
-WorldMoment stageAtRest(const EvaluatedScene& scene, int stage, const std::optional<Framing>& fixed = std::nullopt);
+// Stage k at rest, framed as `framings` ask.
+WorldMoment stageAtRest(const EvaluatedScene& scene, int stage, const StageFramings& framings = {});
 // A moment as the pictures show it: its matrix, canonical outline, cut and ghost.
 StageShown stageShown(const EvaluatedScene& scene, const WorldMoment& moment);
 
@@ -65,11 +89,11 @@ StageShown stageShown(const EvaluatedScene& scene, const WorldMoment& moment);
 // the camera first widens to take in the whole motion, the picture then moves
 // with the interpolated cumulative matrix under a still camera (so the motion
 // reads against the screen), and the camera finally closes in on the result.
-// Nothing jumps: every phase starts where the last one ended. With `fixed`
-// (export --framing fixed) the camera holds that framing throughout.
+// Nothing jumps: every phase starts where the last one ended. With one fixed
+// framing the camera holds it throughout.
 class StageMotion {
 public:
-    StageMotion(const EvaluatedScene& scene, int from, int to, const std::optional<Framing>& fixed = std::nullopt);
+    StageMotion(const EvaluatedScene& scene, int from, int to, const StageFramings& framings = {});
     WorldMoment at(double s) const;
     int from() const { return from_; }
     int to() const { return to_; }
@@ -108,16 +132,24 @@ struct ViewFit {
     double zoom = 1;
     Vec3<double> pan = Vec3<double>::Zero(); // in framing radii
 };
-// How far the camera, looking at the framing's center, must stand to see all of it in the scene area
-// (while framings blend, about what each of them would see).
-double fitDistance(const WorldCamera& camera, const Framing& framing, const ViewFit& fit);
+// Where the camera, looking along its direction, aims to see everything framed in the scene area, a
+// little in from its edges, and as large as it can: the focal point (the framing's points centred in
+// the scene area) and the distance from it (while framings blend, each one's aim by its share).
+struct CameraAim {
+    Vec3<double> focalPoint = Vec3<double>::Zero();
+    double distance = 1;
+};
+CameraAim fitAim(const WorldCamera& camera, const Framing& framing, const ViewFit& fit);
 // Aims the camera at a framing, keeping its direction and the user's zoom and
 // pan, with the focal point at the scene area's center; fits the clipping range.
 void frameOn(WorldCamera& camera, const Framing& framing, const ViewFit& fit);
-// The near and far planes around everything framed and the fixed axes
-// (which reach frameReach(framing) from the origin).
+// The near and far planes around everything framed and the fixed axes.
 void fitClippingRange(WorldCamera& camera, const Framing& framing);
-// How far the fixed axes reach for a framing: across everything in view.
-double frameReach(const Framing& framing);
+// The outline of what a framing frames through a camera looking along its direction, seen from afar
+// (picture coordinates, y down, any scale), or of what its stage at rest shows (`shownOnly`, in the
+// same coordinates): the picture's layout puts its legend where it costs the subject least.
+std::vector<Vec2<double>> subjectOutline(const WorldCamera& camera, const Framing& framing, bool shownOnly = false);
+// Where the fixed axes run for a framing: through the origin, a little beyond everything framed.
+Eigen::AlignedBox<double, 3> frameExtent(const Framing& framing);
 
 } // namespace viewpipe
