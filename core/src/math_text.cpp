@@ -8,6 +8,7 @@
 #include <utility>
 
 #include "viewpipe/error.hpp"
+#include "viewpipe/gl.hpp"
 
 namespace viewpipe {
 namespace {
@@ -460,10 +461,23 @@ std::string symbolMath(const std::string& symbol)
     const std::string math = base.size() > 1 ? "\\mathit{" + base + "}" : base;
     if (underscore == std::string::npos)
         return math;
-    std::string subscript = symbol.substr(underscore + 1);
-    for (std::size_t at = 0; (at = subscript.find('_', at)) != std::string::npos; at += 2)
-        subscript.replace(at, 1, "\\_"); // NDC_vulkan_reversed: one subscript with an underscore in it
-    return math + "_{\\mathrm{" + subscript + "}}";
+    // The subscript's words, an API's as people name it: NDC_vulkan_reversed -> NDC sub "Vulkan, reversed".
+    std::vector<std::string> words;
+    for (std::size_t at = underscore; at != std::string::npos;) {
+        const std::size_t next = symbol.find('_', at + 1);
+        std::string word = symbol.substr(at + 1, next == std::string::npos ? std::string::npos : next - at - 1);
+        for (const gl::Api api : gl::kApis)
+            if (word == gl::apiName(api))
+                word = gl::apiTitle(api);
+        words.push_back(word);
+        at = next;
+    }
+    if (words.size() == 1)
+        return math + "_{\\mathrm{" + words.front() + "}}";
+    std::string text;
+    for (const std::string& word : words)
+        text += (text.empty() ? "" : ", ") + word;
+    return math + "_{\\text{" + text + "}}"; // words apart, as prose sets them
 }
 
 } // namespace viewpipe

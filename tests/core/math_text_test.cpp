@@ -108,6 +108,10 @@ TEST(MathText, StageSymbolsAreMath)
     EXPECT_EQ(symbolMath("SH_per"), "\\mathit{SH}_{\\mathrm{per}}");
     EXPECT_EQ(symbolMath("T(-VRP)"), "T(-\\mathit{VRP})");
     EXPECT_EQ(symbolMath("R"), "R");
-    EXPECT_EQ(symbolMath("NDC_vulkan_reversed"), "\\mathit{NDC}_{\\mathrm{vulkan\\_reversed}}"); // one subscript
-    EXPECT_EQ(mathPlainText("$" + symbolMath("NDC_vulkan_reversed") + "$"), "NDC_vulkan_reversed");
+    // An API as people name it; a subscript of two words, words apart.
+    EXPECT_EQ(symbolMath("NDC_direct3d"), "\\mathit{NDC}_{\\mathrm{Direct3D}}");
+    EXPECT_EQ(symbolMath("NDC_reversed"), "\\mathit{NDC}_{\\mathrm{reversed}}");
+    EXPECT_EQ(symbolMath("NDC_vulkan_reversed"), "\\mathit{NDC}_{\\text{Vulkan, reversed}}");
+    EXPECT_EQ(mathPlainText("$" + symbolMath("NDC_vulkan_reversed") + "$"), "NDC_(Vulkan, reversed)");
+    EXPECT_EQ(mathSpokenText("$" + symbolMath("NDC_webgpu_reversed") + "$"), "NDC sub WebGPU, reversed");
 }

@@ -51,6 +51,7 @@
 #include "app/MainWindow.h"
 #include "app/MatrixPanel.h"
 #include "viewpipe/animation.hpp"
+#include "viewpipe/math_text.hpp"
 
 using namespace viewpipe;
 using namespace viewpipe::gui;
@@ -398,10 +399,11 @@ private slots:
         QCOMPARE(GuideDialog::showFor(&parent), guide); // one guide, brought to the front
         const QString text = guide->browser()->toPlainText();
         for (const std::string& symbol : symbols) {
-            // As math: SH_frustum is SH with "frustum" below it, T(-VRP) has a minus sign.
-            QString written = QString::fromStdString(symbol).replace('-', "−");
-            if (const int script = written.indexOf('_'); script >= 0)
-                written.remove(script, 1);
+            // As math: SH_frustum is SH with "frustum" below it, T(-VRP) has a minus sign, NDC_vulkan_reversed is
+            // NDC with "Vulkan, reversed" below it.
+            QString written;
+            for (const MathRun& run : mathRuns("$" + symbolMath(symbol) + "$"))
+                written += QString::fromStdString(run.text);
             QVERIFY2(text.contains(written), symbol.c_str());
         }
         for (const char* words : {"Matrices", "Parameters", "Accuracy", "Depth", "Ctrl+Z", "Ctrl+Y", "Ctrl+E", "Ctrl+K",

@@ -76,7 +76,8 @@ std::vector<std::string> mathTextWords(const std::string& line);
 // (docs/lesson-format.md lists them; a test keeps the two alike).
 std::vector<std::string> mathSubsetCommands();
 
-// A stage symbol as math: "SH_per" -> "\mathit{SH}_{\mathrm{per}}", "T(-VRP)" -> "T(-\mathit{VRP})".
+// A stage symbol as math: "SH_per" -> "\mathit{SH}_{\mathrm{per}}", "T(-VRP)" -> "T(-\mathit{VRP})",
+// "NDC_direct3d" -> "\mathit{NDC}_{\mathrm{Direct3D}}", "NDC_vulkan_reversed" -> "\mathit{NDC}_{\text{Vulkan, reversed}}".
 std::string symbolMath(const std::string& symbol);
 
 } // namespace viewpipe
