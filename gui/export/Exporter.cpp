@@ -110,7 +110,7 @@ struct StagePicture {
 struct SceneOutput {
     std::shared_ptr<const EvaluatedScene> evaluated;
     const ExportOptions& options;
-    std::vector<std::pair<std::string, std::string>> figures; // each stage's file name without extension, caption
+    std::vector<std::pair<std::string, int>> figures; // each stage's file name without extension, and its number
     fs::path folder;
     Steps& step;
 };
@@ -157,8 +157,8 @@ const std::vector<Format>& formatTable()
          [](SceneOutput& out) {
              out.step("figures.tex");
              std::vector<std::pair<std::string, std::string>> figures;
-             for (const auto& [base, caption] : out.figures)
-                 figures.emplace_back(base + "-tikz", caption);
+             for (const auto& [base, k] : out.figures) // numbered by the document, not by the stage
+                 figures.emplace_back(base + "-tikz", stageCaption(*out.evaluated, std::size_t(k), StageText::Figure));
              writeFileAtomically(out.folder / "figures.tex", tikzFiguresDocument(figures));
          },
          [](const EvaluatedScene&) { return 1; }},
@@ -494,7 +494,7 @@ std::vector<fs::path> exportStages(const std::shared_ptr<const EvaluatedScene>& 
                     step("stage " + std::to_string(k) + " of " + std::to_string(n) + ": " + file);
                     format->writeStage(picture, staging.path() / file);
                 }
-            output.figures.emplace_back(base, stageCaption(*evaluated, std::size_t(k), StageText::Heading));
+            output.figures.emplace_back(base, k);
         }
         for (const Format* format : formats)
             if (format->writeScene)

@@ -18,6 +18,10 @@ namespace viewpipe {
 namespace {
 
 constexpr double kWidthCm = 16;
+// The size figure text is set at before it is scaled to the picture's.
+constexpr double kTextPt = 10;
+// How far a line's descenders reach below its baseline (about a fifth of the size): a box's bottom.
+constexpr double kDescent = 0.22;
 
 // The name each element's color and styles take in the document.
 std::string elementKey(Element element)
@@ -70,6 +74,42 @@ std::optional<std::pair<std::string, std::size_t>> texSymbolAt(const std::string
         if (text.compare(k, std::strlen(symbol.utf8), symbol.utf8) == 0)
             return std::make_pair(std::string(symbol.latex), std::strlen(symbol.utf8));
     return std::nullopt;
+}
+
+// Text in a figure as the other pictures set it (math_text.hpp's runs), in
+// the figure's own font: italic runs slanted, scripts as text scripts, so that
+// a label's math is as bold and as sans as its words.
+std::string figureText(const std::string& text)
+{
+    std::vector<MathRun> runs;
+    try {
+        runs = mathRuns(text);
+    } catch (const InputError&) {
+        return texEscaped(text); // read files are checked: only a program's slip gets here
+    }
+    // Signs the font has (textcomp's TS1 encoding): as bold as the text, where math's would be a font of its own.
+    static const std::pair<std::string, std::string> ownSigns[] = {
+        {"−", "\\textminus{}"}, {"±", "\\textpm{}"}, {"×", "\\texttimes{}"}, {"÷", "\\textdiv{}"}, {"°", "\\textdegree{}"}};
+    std::string out;
+    for (const MathRun& run : runs) {
+        std::string set;
+        std::size_t from = 0; // the text not yet set
+        for (std::size_t k = 0; k < run.text.size(); ++k)
+            for (const auto& [sign, tex] : ownSigns)
+                if (run.text.compare(k, sign.size(), sign) == 0) {
+                    set += texEscaped(run.text.substr(from, k - from)) + tex;
+                    from = k + sign.size();
+                    k = from - 1;
+                    break;
+                }
+        set += texEscaped(run.text.substr(from));
+        if (run.italic)
+            set = "{\\slshape " + set + "}";
+        for (int level = 0; level < std::abs(run.level); ++level)
+            set = (run.level < 0 ? "\\textsubscript{" : "\\textsuperscript{") + set + "}";
+        out += set;
+    }
+    return out;
 }
 
 } // namespace
@@ -158,8 +198,9 @@ std::string tikzFigure(const Figure& figure, Theme theme)
 
     std::ostringstream tex;
     tex << "% A ViewPipe figure. Compile with pdflatex, or \\input it in a document that loads\n"
-           "% the standalone package (see figures.tex).\n"
-           "\\documentclass[tikz,border=0pt]{standalone}\n\\usepackage{amsmath}\n\\begin{document}\n"
+           "% tikz and the standalone package (see figures.tex); it needs no other package and no\n"
+           "% font set-up: its text is set at 10 pt and scaled, in Helvetica (psnfss).\n"
+           "\\documentclass[tikz,border=0pt]{standalone}\n\\begin{document}\n"
            "% Colors and styles: change them here to restyle the figure.\n";
     tex << "\\definecolor{vpBackground}" << color(backgroundColor(theme, false)) << "\n";
     tex << "\\definecolor{vpObjectsFace}" << color(faceColor(theme)) << "\n";
@@ -167,16 +208,21 @@ std::string tikzFigure(const Figure& figure, Theme theme)
         tex << "\\definecolor{vp" << elementKey(e) << "}" << color(elementColor(e, theme)) << "\n";
     // One pixel of the picture is `unit` cm; line widths and the font follow.
     const double pt = unit / 2.54 * 72.27;
-    // Text as large as the picture's: labels and tick numbers take the same share of the width.
-    const double labelPt = figure.fontSize * pt, smallPt = smallTextSize(figure.fontSize) * pt;
-    tex << "\\tikzset{\n  vp label/.style={inner sep=0pt, anchor=north west, fill=vpBackground, fill opacity="
-        << formatShortest(kLabelBackdropOpacity) << ", text opacity=1, font=\\sffamily\\bfseries"
-           "\\fontsize{" << number(labelPt) << "}{" << number(1.2 * labelPt) << "}\\selectfont},\n";
-    tex << "  vp tick label/.style={vp label, text=vpFrame, font=\\sffamily\\fontsize{" << number(smallPt)
-        << "}{" << number(1.2 * smallPt) << "}\\selectfont},\n";
+    // Text as large as the picture's: labels and tick numbers take the same share of the width. It is set at
+    // 10 pt and scaled, so that the math fonts of its signs and scripts are asked for at 10, 7 and 5 pt, sizes
+    // Computer Modern has: no document needs more fonts for it. Helvetica (psnfss), as the pictures' DejaVu
+    // Sans, has a bold oblique for a bold label's math, and is scalable.
+    const double labelScale = figure.fontSize * pt / kTextPt, smallScale = smallTextSize(figure.fontSize) * pt / kTextPt;
+    const std::string font = "\\fontfamily{phv}\\fontsize{" + number(kTextPt) + "}{" + number(1.2 * kTextPt) + "}";
+    tex << "\\tikzset{\n  vp text/.style={inner sep=0pt, transform shape},\n"
+        << "  vp label/.style={vp text, anchor=base, scale=" << formatShortest(labelScale) << ", font=" << font
+        << "\\bfseries\\selectfont},\n";
+    tex << "  vp tick label/.style={vp text, anchor=base, scale=" << formatShortest(smallScale)
+        << ", text=vpFrame, font=" << font << "\\selectfont},\n";
+    tex << "  vp backdrop/.style={fill=vpBackground, fill opacity=" << formatShortest(kLabelBackdropOpacity) << "},\n";
     tex << "  vp leader/.style={line width=" << number(figure.lineScale * pt) << "pt},\n";
-    tex << "  vp small text/.style={inner sep=0pt, anchor=west, text=vpObjects, font=\\sffamily\\fontsize{" << number(smallPt)
-        << "}{" << number(1.2 * smallPt) << "}\\selectfont},\n";
+    tex << "  vp small text/.style={vp text, anchor=west, scale=" << formatShortest(smallScale)
+        << ", text=vpObjects, font=" << font << "\\selectfont},\n";
     for (const Element e : used) {
         const std::string key = elementKey(e);
         tex << "  vp " << key << "/.style={draw=vp" << key << ", line width=" << number(figure.lineScale * lineWidthOf(e, false) * pt) << "pt, line cap=round},\n";
@@ -201,20 +247,25 @@ std::string tikzFigure(const Figure& figure, Theme theme)
     // The text's backdrops over what runs behind it, as every picture draws them.
     for (const Box2& box : textBackdrops(layout, figure.height))
         tex << "\\fill[vpBackground] " << point(box.min) << " rectangle " << point(box.max) << ";\n";
-    for (std::size_t k = 0; k < figure.labels.size(); ++k) {
-        const PlacedLabel& l = figure.labels[k];
-        const std::string key = elementKey(l.element), name = "vp label " + std::to_string(k);
-        tex << "\\node[vp " << (l.minor ? std::string("tick") : key) << " label] (" << name << ") at "
-            << point(l.box.min) << " {" << texRichText(l.text) << "};\n";
-        if (l.leader) // to the node's border as TeX sets the text, whose width differs from the picture's font
-            tex << "\\draw[vp leader, draw=vp" << key << "] " << point(l.anchor) << " -- (" << name << ");\n";
+    // Each label as the other pictures draw it: its leader to the box's nearest point (the line the placement
+    // kept off every other label), the box's backdrop, the text on the box's baseline. Helvetica is narrower
+    // than DejaVu Sans: the text is centered in the box measured for it.
+    for (const PlacedLabel& l : figure.labels) {
+        const std::string key = elementKey(l.element);
+        if (l.leader)
+            tex << "\\draw[vp leader, draw=vp" << key << "] " << point(l.anchor) << " -- " << point(l.box.nearest(l.anchor)) << ";\n";
+        tex << "\\fill[vp backdrop] " << point(l.box.min) << " rectangle " << point(l.box.max) << ";\n";
+        const double size = l.minor ? smallTextSize(figure.fontSize) : figure.fontSize;
+        const Vec2<double> base((l.box.min.x() + l.box.max.x()) / 2, l.box.max.y() - kDescent * size);
+        tex << "\\node[vp " << (l.minor ? std::string("tick") : key) << " label] at " << point(base) << " {"
+            << figureText(l.text) << "};\n";
     }
     // The effects' note, line by line, and the legend, where the picture has them.
     for (std::size_t k = 0; k < layout.noteLines.size(); ++k) {
         // The box's bottom is the last line's descenders (about a fifth of the size below its baseline).
-        const double baseline = layout.note.max.y() - 0.22 * layout.noteSize - double(layout.noteLines.size() - 1 - k) * layout.noteLine;
+        const double baseline = layout.note.max.y() - kDescent * layout.noteSize - double(layout.noteLines.size() - 1 - k) * layout.noteLine;
         tex << "\\node[vp small text, anchor=base west] at " << point(Vec2<double>(layout.note.min.x(), baseline))
-            << " {" << texRichText(layout.noteLines[k]) << "};\n";
+            << " {" << figureText(layout.noteLines[k]) << "};\n";
     }
     if (!figure.legend.empty()) {
         tex << "\\draw[draw=vpFrame] " << point(layout.legend.min) << " rectangle "
@@ -247,7 +298,7 @@ std::string tikzFigure(const Figure& figure, Theme theme)
                     << " rectangle " << point(Vec2<double>(c.x() + 0.75 * h, c.y() + half)) << ";\n";
             }
             tex << "\\node[vp small text] at " << point(Vec2<double>(row.textLeft, (row.row.min.y() + row.row.max.y()) / 2))
-                << " {" << texRichText(entry.text) << "};\n";
+                << " {" << figureText(entry.text) << "};\n";
         }
     }
     tex << "\\end{tikzpicture}\n\\end{document}\n";
@@ -258,6 +309,9 @@ std::string tikzFiguresDocument(const std::vector<std::pair<std::string, std::st
 {
     std::ostringstream tex;
     tex << "% Every ViewPipe figure of this folder, one a page with its caption. Compile with pdflatex.\n"
+           "% To use a figure in your own document, load tikz and standalone in its preamble (the\n"
+           "% figures need nothing else) and \\input the figure, scaled as you like:\n"
+           "%   \\resizebox{\\linewidth}{!}{\\input{" << (figures.empty() ? std::string("NN-SLUG-tikz") : figures.front().first) << "}}\n"
            "\\documentclass[a4paper]{article}\n\\usepackage[margin=2cm]{geometry}\n\\usepackage{amsmath}\n"
            "\\usepackage{caption} % a line break in a caption\n"
            "\\usepackage{tikz}\n\\usepackage{standalone}\n\\begin{document}\n";

@@ -168,6 +168,37 @@ QString readAll(const QString& file)
     return f.open(QIODevice::ReadOnly) ? QString::fromUtf8(f.readAll()) : QString();
 }
 
+// The font warnings in the log pdflatex wrote for `file` in `folder`: sizes it substituted, shapes it lacked.
+QStringList fontWarnings(const QString& folder, const QString& file)
+{
+    QStringList warnings;
+    const QString log = readAll(folder + "/" + QFileInfo(file).completeBaseName() + ".log");
+    for (const QString& line : log.split('\n'))
+        if (line.contains("Font Warning") || line.contains("not available"))
+            warnings << line;
+    return warnings;
+}
+
+// A PDF's text as pdftotext (poppler-utils, which `make test` installs) reads it, page by page.
+QString pdfText(const QString& pdf)
+{
+    QProcess text;
+    text.start(QStandardPaths::findExecutable("pdftotext"), {"-layout", pdf, "-"});
+    return text.waitForFinished(60000) && text.exitCode() == 0 ? QString::fromUtf8(text.readAllStandardOutput()) : QString();
+}
+
+// A PDF's page count, as pdfinfo reads it.
+int pdfPages(const QString& pdf)
+{
+    QProcess info;
+    info.start(QStandardPaths::findExecutable("pdfinfo"), {pdf});
+    if (!info.waitForFinished(60000) || info.exitCode() != 0)
+        return -1;
+    const QRegularExpressionMatch pages =
+        QRegularExpression("^Pages:\\s+(\\d+)", QRegularExpression::MultilineOption).match(info.readAllStandardOutput());
+    return pages.hasMatch() ? pages.captured(1).toInt() : -1;
+}
+
 QString writeScene(const QTemporaryDir& dir, const QString& name, const QByteArray& json)
 {
     const QString file = dir.filePath(name);
@@ -345,29 +376,49 @@ private slots:
         }
     }
 
-    // TikZ: one standalone document per stage and figures.tex with them all, each compiling with pdflatex as written.
+    // TikZ: one standalone document per stage and figures.tex with them all, each compiling with pdflatex as written,
+    // with every font at the size asked for (no substitution warnings).
     void exportWritesTikzThatCompiles()
     {
         QTemporaryDir dir;
         const QString out = dir.filePath("tikz");
-        const Run r = runViewpipe({"export", kHouse, "--out", out, "--stages", "0,5", "--format", "tikz", "--quiet"});
+        const Run r = runViewpipe({"export", kHouse, "--out", out, "--stages", "0,4,5", "--format", "tikz", "--quiet"});
         QVERIFY2(r.exitCode == 0, qPrintable(r.err));
         const QString world = readAll(out + "/00-world-tikz.tex");
         QVERIFY(world.contains("\\definecolor{vpDOP}") && world.contains("vp DOP/.style="));
-        QVERIFY(world.contains("{PRP}") && world.contains("{VRP}") && world.contains("{front ($F$)}") &&
-                world.contains("{$x$}")); // each label's math as LaTeX
-        QVERIFY(readAll(out + "/figures.tex").contains("\\input{05-s-per-tikz}"));
-        for (const char* file : {"00-world-tikz.tex", "05-s-per-tikz.tex", "figures.tex"})
+        // Each label's math in the label's own font, as the other pictures set it: italic letters slanted.
+        QVERIFY(world.contains("{PRP}") && world.contains("{VRP}") && world.contains("{front ({\\slshape F})}") &&
+                world.contains("{{\\slshape x}}"));
+        QVERIFY(!world.contains("$")); // no math font: every text in the figure's own
+        const QString figures = readAll(out + "/figures.tex");
+        QVERIFY(figures.contains("\\input{05-s-per-tikz}"));
+        for (const char* file : {"00-world-tikz.tex", "05-s-per-tikz.tex", "figures.tex"}) {
             QVERIFY2(compilesWithPdflatex(out, file), qPrintable(file));
+            const QStringList warnings = fontWarnings(out, file);
+            QVERIFY2(warnings.isEmpty(), qPrintable(file + QString(": ") + warnings.join('\n')));
+        }
+        // Each figure numbered once, by the document: "Figure 3: S_per – scale ...", not "Figure 3: 5. S_per".
+        const QString captions = pdfText(out + "/figures.pdf");
+        QVERIFY2(captions.contains(QRegularExpression("Figure 3: S ?per – scale")), qPrintable(captions));
+        const QRegularExpression twice("Figure \\d+: \\d+\\.");
+        QVERIFY2(!captions.contains(twice), qPrintable(twice.match(captions).captured()));
 
-        // The README's Beamer example, as it says to make it.
+        // At S_per each label's leader ends on its own box, as in the PNG and SVG: no leader runs into another label.
+        const QString sper = readAll(out + "/05-s-per-tikz.tex");
+        QVERIFY(sper.contains("\\draw[vp leader"));
+        QVERIFY(!sper.contains("-- (vp label")); // not to a node's border, which TeX sets where the placement did not
+
+        // The README's Beamer example, three figures, as it says to make them.
         const QString slides = dir.filePath("slides");
         QVERIFY(QDir().mkpath(slides));
         QVERIFY(QFile::copy(QString(::viewpipe::build::sourceDir) + "/docs/examples/beamer.tex", slides + "/beamer.tex"));
-        const Run figures = runViewpipe({"export", kHouse, "--out", slides + "/figures", "--stages", "4", "--format", "tikz",
-                                      "--size", "800x450", "--quiet"});
-        QVERIFY2(figures.exitCode == 0, qPrintable(figures.err));
+        const Run made = runViewpipe({"export", kHouse, "--out", slides + "/figures", "--stages", "1,4,5", "--format",
+                                      "tikz", "--size", "800x450", "--quiet"});
+        QVERIFY2(made.exitCode == 0, qPrintable(made.err));
         QVERIFY(compilesWithPdflatex(slides, "beamer.tex"));
+        const QStringList warnings = fontWarnings(slides, "beamer.tex");
+        QVERIFY2(warnings.isEmpty(), qPrintable(warnings.join('\n')));
+        QCOMPARE(pdfPages(slides + "/beamer.pdf"), 3);
     }
 
     // The seeds' glOrtho example (seed 001): entries 1/25, -1/5, 1/20, -3/2, -1/4.

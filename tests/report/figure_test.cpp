@@ -580,15 +580,15 @@ TEST(Tikz, OneCommandPerShapeAndLabelWithNamedStyles)
         const std::regex re(pattern);
         return std::size_t(std::distance(std::sregex_iterator(tex.begin(), tex.end(), re), std::sregex_iterator()));
     };
-    EXPECT_EQ(count("\n\\\\(fill|draw)\\[vp (?!leader)[A-Za-z]+( face)?[\\],]"), figure.shapes.size());
-    EXPECT_EQ(count("\n\\\\node\\[vp [A-Za-z]+ label\\] \\(vp label [0-9]+\\)"), figure.labels.size());
+    EXPECT_EQ(count("\n\\\\(fill|draw)\\[vp (?!leader|backdrop)[A-Za-z]+( face)?[\\],]"), figure.shapes.size());
+    EXPECT_EQ(count("\n\\\\node\\[vp [A-Za-z]+ label\\] at "), figure.labels.size());
+    EXPECT_EQ(count("\n\\\\fill\\[vp backdrop\\] "), figure.labels.size());
     EXPECT_NE(tex.find("\\definecolor{vpDOP}"), std::string::npos);
     EXPECT_NE(tex.find("vp DOP/.style={draw=vpDOP"), std::string::npos);
     // Every label over its backdrop, as the PNG's and the SVG's are: lines run faintly under it.
-    EXPECT_NE(tex.find("vp label/.style={inner sep=0pt, anchor=north west, fill=vpBackground, fill opacity=0.75, text opacity=1"),
-              std::string::npos);
+    EXPECT_NE(tex.find("vp backdrop/.style={fill=vpBackground, fill opacity=0.75}"), std::string::npos);
     EXPECT_NE(tex.find("{PRP}"), std::string::npos);
-    EXPECT_NE(tex.find("{$u$}"), std::string::npos); // the label's math, as LaTeX
+    EXPECT_NE(tex.find("{{\\slshape u}}"), std::string::npos); // the label's math, in the label's font
     EXPECT_NE(tex.find("\\documentclass[tikz,border=0pt]{standalone}"), std::string::npos);
     const std::string all = tikzFiguresDocument({{"00-world-tikz", "0. World coordinates"}, {"01-t-vrp-tikz", "1. T(-VRP)"}});
     EXPECT_NE(all.find("\\usepackage{standalone}"), std::string::npos);
@@ -613,23 +613,35 @@ TEST(Tikz, TextAtLeastEightAndSixPointsTwelveCentimetresWide)
         std::smatch m;
         ASSERT_TRUE(std::regex_search(tex, m, std::regex("x=([0-9.e-]+)cm")));
         const double widthCm = std::stod(m[1]) * width, toColumn = 12 / widthCm;
-        ASSERT_TRUE(std::regex_search(tex, m, std::regex("vp label/.style=\\{[^\n]*fontsize\\{([0-9.]+)\\}")));
-        EXPECT_GE(std::stod(m[1]) * toColumn, 8 - 0.05);
-        ASSERT_TRUE(std::regex_search(tex, m, std::regex("vp tick label/.style=\\{[^\n]*fontsize\\{([0-9.]+)\\}")));
-        EXPECT_GE(std::stod(m[1]) * toColumn, 6 - 0.05);
+        // Set at 10 pt (a size Computer Modern's math has) and scaled.
+        const std::regex label("vp label/.style=\\{[^\n]*scale=([0-9.e-]+), font=[^\n]*fontsize\\{10\\.0\\}");
+        ASSERT_TRUE(std::regex_search(tex, m, label));
+        EXPECT_GE(10 * std::stod(m[1]) * toColumn, 8 - 0.05);
+        const std::regex tick("vp tick label/.style=\\{[^\n]*scale=([0-9.e-]+), [^\n]*fontsize\\{10\\.0\\}");
+        ASSERT_TRUE(std::regex_search(tex, m, tick));
+        EXPECT_GE(10 * std::stod(m[1]) * toColumn, 6 - 0.05);
     }
 }
 
-// Leaders end at the label as TeX sets it: drawn to the node, not to a box measured in another font.
-TEST(Tikz, LeadersEndAtTheirLabelsNode)
+// Each label where the placement put it, as the PNG and SVG draw it: its backdrop the box measured for it,
+// its leader to the box's nearest point (the line the placement kept off other labels), the text centered
+// in the box on its baseline. Its math in its own font: letters slanted, scripts as text scripts, a text minus.
+TEST(Tikz, LabelsAndLeadersWhereThePlacementPutThem)
 {
     Figure figure;
     figure.width = 1280;
     figure.height = 720;
+    figure.fontSize = 20;
     figure.labels.push_back({Element::Prp, "PRP", Vec2<double>(100, 100), {{200, 200}, {260, 230}}, true, false});
+    figure.labels.push_back({Element::Canonical, "$z = z_{\\min}$", Vec2<double>(500, 500), {{500, 500}, {580, 525}}, false, false});
+    figure.labels.push_back({Element::Canonical, "$y = -z$", Vec2<double>(700, 500), {{700, 500}, {760, 525}}, false, false});
     const std::string tex = tikzFigure(figure, Theme::Light);
-    EXPECT_NE(tex.find("\\node[vp PRP label] (vp label 0) at (200.0,200.0)"), std::string::npos) << tex;
-    EXPECT_NE(tex.find("\\draw[vp leader, draw=vpPRP] (100.0,100.0) -- (vp label 0);"), std::string::npos) << tex;
+    EXPECT_NE(tex.find("\\draw[vp leader, draw=vpPRP] (100.0,100.0) -- (200.0,200.0);"), std::string::npos) << tex;
+    EXPECT_NE(tex.find("\\fill[vp backdrop] (200.0,200.0) rectangle (260.0,230.0);"), std::string::npos) << tex;
+    EXPECT_NE(tex.find("\\node[vp PRP label] at (230.0,225.6) {PRP};"), std::string::npos) << tex; // 230 - 0.22 of 20
+    EXPECT_NE(tex.find("{{\\slshape z} = {\\slshape z}\\textsubscript{min}}"), std::string::npos) << tex;
+    EXPECT_NE(tex.find("{{\\slshape y} = \\textminus{}{\\slshape z}}"), std::string::npos) << tex;
+    EXPECT_EQ(tex.find("$"), std::string::npos);
 }
 
 // figures.tex: A4, a figure a page, the caption's two lines apart.

@@ -42,6 +42,7 @@ enum class StageText {
     ListEntry, // "0. World — the scene in world coordinates", "2. $R$ — rotate ...": the app's list of stages
     Caption,   // "World coordinates", "After $R$": over the picture of the world view
     Heading,   // "0. World coordinates", "2. $R$ – rotate ...": exported pictures
+    Figure,    // "World coordinates", "$R$ – rotate ...": a figure in a document, which numbers it
 };
 
 template <class T> std::string stageText(const std::vector<Stage<T>>& stages, std::size_t k, StageText text)
@@ -51,6 +52,7 @@ template <class T> std::string stageText(const std::vector<Stage<T>>& stages, st
         case StageText::ListEntry: return "0. World — the scene in world coordinates";
         case StageText::Caption: return "World coordinates";
         case StageText::Heading: return "0. World coordinates";
+        case StageText::Figure: return "World coordinates";
         }
     }
     const Stage<T>& stage = stages[k - 1];
@@ -60,6 +62,7 @@ template <class T> std::string stageText(const std::vector<Stage<T>>& stages, st
     case StageText::ListEntry: return number + symbol + " — " + stage.explanation;
     case StageText::Caption: return "After " + symbol;
     case StageText::Heading: return number + symbol + " – " + stage.explanation;
+    case StageText::Figure: return symbol + " – " + stage.explanation;
     }
     return "";
 }
