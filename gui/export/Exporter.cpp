@@ -188,7 +188,7 @@ std::string stageFileBase(const Pipeline<double>& pipeline, int k)
 void writeReports(const EvaluatedScene& evaluated, const ExportOptions& options, const fs::path& folder, Steps& step)
 {
     step("matrices.tex");
-    writeFileAtomically(folder / "matrices.tex", report::matricesLatex(evaluated.scene, options.digits));
+    writeFileAtomically(folder / "matrices.tex", report::matricesDocument(evaluated.scene, options.digits));
     if (const auto& depth = evaluated.outcomes.depth) {
         step("depth-resolution.png");
         writeDepthPlot(evaluated.pipeline, depth->options, folder / "depth-resolution.png", options.theme, options.width,

@@ -6,6 +6,8 @@
 
 #include "viewpipe/format.hpp"
 #include "viewpipe/math_text.hpp"
+#include "viewpipe/report/stage_symbols.hpp"
+#include "viewpipe/report/tikz.hpp"
 #ifdef VIEWPIPE_WIDE_SCALARS
 #include "viewpipe/precision.hpp"
 #else // the browser's build (web/): Boost's own 100-digit float, where MPFR is not built
@@ -113,31 +115,79 @@ std::string stageEquation(const Stage<Exact>& stage, int digits, const std::vect
 std::string matricesLatex(const Scene& scene, int digits)
 {
     const Pipeline<Exact> p = exactPipeline(scene);
+    const std::vector<Mat4<Exact>> products = cumulativeProducts(p.stages);
     std::ostringstream out;
     out << "% " << scene.name << ": the stages of the normalizing transformation (column vectors, p' = M p).\n"
         << "% Made by viewpipe; needs \\usepackage{amsmath}. Exact fractions where the entry is rational.\n"
-        << "% Fractions at full size, rows apart; each display fits a 12 cm column.\n"
-        << "\\begingroup\n\\renewcommand{\\arraystretch}{2.1}\n\\let\\frac\\dfrac\n\n";
+        << "% Each stage in symbols and in numbers, and the product so far; each display fits a 12 cm column.\n"
+        << "\\begingroup\n\\renewcommand{\\arraystretch}{1.2}\n\\setlength{\\parskip}{0pt}\n"
+        << "\\setlength{\\abovedisplayskip}{4pt plus 2pt}\\setlength{\\belowdisplayskip}{4pt plus 2pt}\n"
+        << "\\setlength{\\abovedisplayshortskip}{2pt plus 2pt}\\setlength{\\belowdisplayshortskip}{4pt plus 2pt}\n"
+        << "\\noindent Each stage $k$ in symbols and in numbers, and $M_k$, the stages so far: "
+           "a point $p$ after stage $k$ is $M_k \\, p$.\n\n";
+    const std::string composite = bmatrix(p.composite, digits);
+    std::size_t last = 0; // the last stage that is a matrix: its product, where it is the composite, is shown once
+    for (std::size_t k = 0; k < p.stages.size(); ++k)
+        last = p.stages[k].divides ? last : k;
+    const bool lastIsComposite = bmatrix(products[last], digits) == composite;
     std::string product;
+    int factor = 0; // the stages so far that are matrices
     for (std::size_t k = 0; k < p.stages.size(); ++k) {
         const Stage<Exact>& stage = p.stages[k];
-        out << "% " << k + 1 << ". " << stage.symbol << ": " << mathPlainText(stage.explanation) << "\n"
-            << "\\[\n" << stageEquation(stage, digits) << "\n\\]\n\n";
-        if (stage.divides)
+        const std::string symbol = symbolMath(stage.symbol);
+        out << "% " << k + 1 << ". " << mathPlainText("$" + symbol + "$") << ": " << mathPlainText(stage.explanation) << "\n"
+            << "\\par\\smallskip\\noindent\\textbf{" << k + 1 << ".}~$" << symbol << "$: " << texRichText(stage.explanation)
+            << "\n";
+        if (stage.divides) {
+            out << "\\[\n" << stageEquation(stage, digits) << "\n\\]\n\n";
             continue; // no factor of the product
-        product = symbolMath(stage.symbol) + (product.empty() ? "" : " \\, " + product);
+        }
+        // As the Matrices panel shows it: in symbols (where it has them), defined by its notes, then in numbers.
+        const std::string symbolic = symbolicLatex(stage.symbol);
+        out << "\\[\n" << (symbolic.empty() ? symbol : symbolic) << "\n=\n" << bmatrix(stage.matrix, digits) << "\n\\]\n";
+        const SymbolicForm form = symbolicMatrix(stage.symbol);
+        std::string notes;
+        for (const std::string& note : form.notes)
+            notes += (notes.empty() ? "" : "; ") + texRichText(note);
+        if (!notes.empty())
+            out << "{\\small\\noindent where " << notes << ".\\par}\n";
+        if (factor++ > 0 && !(k == last && lastIsComposite)) // the first stage's product is the stage
+            out << "\\[\nM_{" << k + 1 << "} = " << symbol << " \\, M_{" << product << "} =\n" << bmatrix(products[k], digits)
+                << "\n\\]\n";
+        product = std::to_string(k + 1);
+        out << "\n";
     }
+    std::string stages;
+    for (const Stage<Exact>& stage : p.stages)
+        if (!stage.divides)
+            stages = symbolMath(stage.symbol) + (stages.empty() ? "" : " \\, " + stages);
     const std::string name = p.convention == Convention::OpenGL            ? "P \\, V"
                              : p.projection == ProjectionKind::Perspective ? "N_{\\mathrm{per}}"
                                                                            : "N_{\\mathrm{par}}";
     // The product on a line of its own: with the matrix beside it, it was wider than the text.
-    out << "% The composite\n\\begin{align*}\n" << name << " &= " << product << " \\\\\n&=\n"
-        << bmatrix(p.composite, digits) << "\n\\end{align*}\n";
+    out << "% The composite\n\\par\\smallskip\\noindent The composite:\n\\begin{align*}\n" << name << " &= " << stages
+        << " \\\\\n&= " << (lastIsComposite ? "M_{" + std::to_string(last + 1) + "} = " : "") << "\n" << composite
+        << "\n\\end{align*}\n";
+    if (p.zmin) // Foley's vrp'_z = -PRP_n
+        out << "% The front plane in the canonical perspective volume\n"
+               "\\noindent The front plane in the canonical perspective volume, with $\\mathit{vrp}'_z = -\\mathit{PRP}_n$:\n"
+               "\\[\nz_{\\min} = -\\frac{\\mathit{vrp}'_z + F}{\\mathit{vrp}'_z + B} = "
+            << exactText(*p.zmin, digits) << "\n\\]\n";
     if (p.view && p.projectionMatrix)
         out << "\n% The view (gluLookAt) and projection matrices\n\\[\nV =\n" << bmatrix(*p.view, digits)
             << "\n\\]\n\\[\nP =\n" << bmatrix(*p.projectionMatrix, digits) << "\n\\]\n";
     out << "\\endgroup\n";
     return out.str();
+}
+
+std::string matricesDocument(const Scene& scene, int digits)
+{
+    // The standalone class sets the page to the text; a document that loads the standalone package
+    // skips this preamble where it \inputs the file.
+    return "% Compiles on its own (pdflatex matrices.tex), one page as wide as a 12 cm column, and\n"
+           "% \\inputs into a document whose preamble has \\usepackage{amsmath} and \\usepackage{standalone}.\n"
+           "\\documentclass[varwidth=12cm, border=5mm]{standalone}\n\\usepackage{amsmath}\n\\begin{document}\n" +
+           matricesLatex(scene, digits) + "\\end{document}\n";
 }
 
 } // namespace viewpipe::report

@@ -421,6 +421,28 @@ private slots:
         QCOMPARE(pdfPages(slides + "/beamer.pdf"), 3);
     }
 
+    // A stage's name is math wherever it is shown: Vulkan's reversed depth stage is NDC with the subscript
+    // "Vulkan, reversed" in the figures, their captions, the SVG and matrices.tex, never "vulkan_reversed".
+    void stageNamesAreMathInEveryExport()
+    {
+        QTemporaryDir dir;
+        const QString out = dir.filePath("vulkan");
+        const Run r = runViewpipe({"export", QString(::viewpipe::build::dataDir) + "/scenes/apis/vulkan-reversed-infinite.json",
+                                   "--out", out, "--format", "svg,tikz", "--size", "640x360", "--quiet"});
+        QVERIFY2(r.exitCode == 0, qPrintable(r.err));
+        const QStringList texts = QDir(out).entryList({"*.tex", "*.svg"}, QDir::Files);
+        QVERIFY(texts.size() > 10);
+        for (const QString& file : texts) {
+            const QString text = readAll(out + "/" + file);
+            QVERIFY2(!text.contains("vulkan_reversed") && !text.contains("vulkan\\_reversed"), qPrintable(file));
+        }
+        QVERIFY(readAll(out + "/figures.tex").contains("\\mathit{NDC}_{\\text{Vulkan, reversed}}"));
+        QVERIFY(readAll(out + "/matrices.tex").contains("\\mathit{NDC}_{\\text{Vulkan, reversed}}"));
+        QVERIFY(compilesWithPdflatex(out, "figures.tex"));
+        const QString captions = pdfText(out + "/figures.pdf");
+        QVERIFY2(captions.contains("Vulkan, reversed") && !captions.contains("vulkan"), qPrintable(captions));
+    }
+
     // The seeds' glOrtho example (seed 001): entries 1/25, -1/5, 1/20, -3/2, -1/4.
     void latexPrintsExactFractions()
     {
@@ -444,11 +466,18 @@ private slots:
         const QString rotation = readAll(dir.filePath("oblique/matrices.tex"));
         QVERIFY2(rotation.contains("0.7071 & 0 & -0.7071 & 0"), qPrintable(rotation));
 
-        // The files compile, within a document (they are fragments).
+        // Each file compiles on its own, on one page, and within a document that loads the standalone package.
+        for (const char* folder : {"out", "oblique"}) {
+            QVERIFY2(compilesWithPdflatex(dir.filePath(folder), "matrices.tex"), folder);
+            QVERIFY2(fontWarnings(dir.filePath(folder), "matrices.tex").isEmpty(), folder);
+            QCOMPARE(pdfPages(dir.filePath(folder) + "/matrices.pdf"), 1);
+        }
         QVERIFY(writeFile(dir.filePath("check.tex"),
-                          "\\documentclass{article}\n\\usepackage{amsmath}\n\\begin{document}\n\\input{out/matrices.tex}\n"
-                          "\\input{oblique/matrices.tex}\n\\end{document}\n"));
+                          "\\documentclass{article}\n\\usepackage{amsmath}\n\\usepackage{standalone}\n\\begin{document}\n"
+                          "Before.\n\\input{out/matrices.tex}\n\\input{oblique/matrices.tex}\nAfter.\n\\end{document}\n"));
         QVERIFY(compilesWithPdflatex(dir.path(), "check.tex"));
+        const QString both = pdfText(dir.filePath("check.pdf"));
+        QVERIFY2(both.contains("Before.") && both.contains("After.") && both.count("The composite") == 2, qPrintable(both));
     }
 
     void exportAnimates()

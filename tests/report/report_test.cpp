@@ -101,9 +101,34 @@ TEST(Latex, HouseStagesAreExact)
         << all;
 }
 
-// cos 45 degrees is irrational: a decimal with the digits asked for.
-// matrices.tex of every built-in scene set by pdflatex in a 12 cm column (a
-// lecture's notes): no display wider than the text.
+// Each stage as the Matrices panel shows it, in symbols (defined by its notes) and in numbers; the product so
+// far, M_k = (stage k) M_{k-1}; the composite, which is M_5, written once; and Foley's z_min, exact.
+TEST(Latex, HouseMatricesHaveSymbolsNumbersProductsAndZMin)
+{
+    const std::string all = report::matricesLatex(loadScene(kScenes / "house.json"), 4);
+    EXPECT_NE(all.find("\\mathit{SH}_{\\mathrm{per}} = \\begin{bmatrix}\n1 & 0 & \\mathit{sh}_x & 0 \\\\\n"), std::string::npos) << all;
+    EXPECT_NE(all.find("\\mathit{sh}_x = -\\mathit{DOP}_x / \\mathit{DOP}_z"), std::string::npos);
+    EXPECT_NE(all.find("M_{3} = T(-\\mathit{PRP}) \\, M_{2} =\n\\begin{bmatrix}\n  1 & 0 & 0 & -8 \\\\\n"), std::string::npos) << all;
+    EXPECT_NE(all.find("M_{4} = \\mathit{SH}_{\\mathrm{per}} \\, M_{3} ="), std::string::npos);
+    EXPECT_EQ(all.find("M_{5} = S_{\\mathrm{per}}"), std::string::npos); // the composite
+    EXPECT_NE(all.find("&= M_{5} = \n\\begin{bmatrix}"), std::string::npos);
+    // z_min = -(vrp'_z + F) / (vrp'_z + B) = -24/59, exact (pipeline --json's zmin, -0.40678).
+    EXPECT_NE(all.find("z_{\\min} = -\\frac{\\mathit{vrp}'_z + F}{\\mathit{vrp}'_z + B} = -\\frac{24}{59}"), std::string::npos);
+}
+
+// Stage names are math: Vulkan's reversed depth stage is NDC sub "Vulkan, reversed", in the comments too.
+TEST(Latex, StageNamesAreMath)
+{
+    const std::string all = report::matricesDocument(loadScene(kScenes / "apis/vulkan-reversed-infinite.json"), 4);
+    EXPECT_NE(all.find("\\mathit{NDC}_{\\text{Vulkan, reversed}}"), std::string::npos);
+    EXPECT_NE(all.find("% 5. NDC_(Vulkan, reversed): "), std::string::npos) << all;
+    EXPECT_EQ(all.find("vulkan_reversed"), std::string::npos);
+    EXPECT_EQ(all.find("vulkan\\_reversed"), std::string::npos);
+}
+
+// matrices.tex of every built-in scene \input (as the standalone package
+// lets it) into a 12 cm column (a lecture's notes): no display wider than the
+// text, every font at its size. The house's also on its own: one page.
 TEST(Latex, EveryBuiltInScenesMatricesFitATwelveCentimetreColumn)
 {
     ASSERT_EQ(std::system("pdflatex --version > /dev/null 2>&1"), 0)
@@ -112,13 +137,13 @@ TEST(Latex, EveryBuiltInScenesMatricesFitATwelveCentimetreColumn)
         std::filesystem::temp_directory_path() / ("viewpipe-latex-test-" + std::to_string(::getpid()));
     std::filesystem::create_directories(dir);
     std::string document = "\\documentclass[a4paper]{article}\n\\usepackage[textwidth=12cm]{geometry}\n"
-                           "\\usepackage{amsmath}\n\\usepackage{xcolor}\n\\begin{document}\n";
+                           "\\usepackage{amsmath}\n\\usepackage{standalone}\n\\begin{document}\n";
     int scenes = 0;
     for (const auto& entry : std::filesystem::recursive_directory_iterator(kScenes)) {
         if (entry.path().extension() != ".json")
             continue;
         const std::string name = "m" + std::to_string(scenes++) + ".tex";
-        std::ofstream(dir / name) << report::matricesLatex(loadScene(entry.path()), 4);
+        std::ofstream(dir / name) << report::matricesDocument(loadScene(entry.path()), 4);
         document += "% " + entry.path().filename().string() + "\n\\input{" + name + "}\n\\clearpage\n";
     }
     std::ofstream(dir / "all.tex") << document << "\\end{document}\n";
@@ -127,7 +152,13 @@ TEST(Latex, EveryBuiltInScenesMatricesFitATwelveCentimetreColumn)
     std::ifstream log(dir / "all.log");
     const std::string text((std::istreambuf_iterator<char>(log)), {});
     EXPECT_EQ(text.find("Overfull \\hbox"), std::string::npos) << text.substr(text.find("Overfull"), 400);
+    EXPECT_EQ(text.find("Font Warning"), std::string::npos) << text.substr(text.find("Font Warning"), 400);
     EXPECT_GT(scenes, 15);
+    std::ofstream(dir / "house.tex") << report::matricesDocument(loadScene(kScenes / "house.json"), 4);
+    const std::string alone = "cd '" + dir.string() + "' && pdflatex -interaction=nonstopmode -halt-on-error house.tex > /dev/null 2>&1";
+    EXPECT_EQ(std::system(alone.c_str()), 0) << "see " << (dir / "house.log");
+    const std::string pages = "pdfinfo '" + (dir / "house.pdf").string() + "' | grep -q '^Pages: *1$'";
+    EXPECT_EQ(std::system(pages.c_str()), 0) << "house.pdf is not one page";
     if (!HasFailure())
         std::filesystem::remove_all(dir);
 }

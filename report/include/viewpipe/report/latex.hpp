@@ -14,7 +14,12 @@
 
 namespace viewpipe::report {
 
+// Every stage in symbols (stage_symbols.hpp) and in numbers with the product
+// so far, the composite and z_min: a fragment for a document that loads amsmath.
 std::string matricesLatex(const Scene& scene, int digits);
+// The same as a document of its own (matrices.tex) that also \inputs into a
+// document loading the standalone package.
+std::string matricesDocument(const Scene& scene, int digits);
 
 // One stage's matrix (stage >= 1) as "symbol = \begin{bmatrix}...\end{bmatrix}", the
 // `highlighted` entries (row, column from 1) on a colored box (needs xcolor).
