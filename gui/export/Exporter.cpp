@@ -481,7 +481,7 @@ std::vector<fs::path> exportStages(const std::shared_ptr<const EvaluatedScene>& 
         offscreen.painter->setLegendPlace(options.hidden.count("legend") ? LegendPlace::None : options.legend);
         offscreen.painter->orbit(0, 0, options.zoom);
         const StageFramings framing = stageFramings(*evaluated, options.framing);
-        SceneOutput output{evaluated, options, {}, staging.path(), step};
+        SceneOutput output{scene, options, {}, staging.path(), step}; // the page draws the scene whole
         for (int k : chosen) {
             const std::string base = stageFileBase(evaluated->pipeline, k);
             const std::string caption = pictureCaption(*evaluated, k, options);
