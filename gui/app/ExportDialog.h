@@ -1,6 +1,7 @@
 #pragma once
 
-// File > Export Stages: the options of `viewpipe export`, in a dialog. The
+// File > Export Stages: every option of `viewpipe export`, in a dialog, its
+// formats from export's table (exportFormats). The
 // folder proposed is the last one exported into (QSettings "exportFolder"),
 // else ViewPipe in the user's pictures.
 
@@ -10,6 +11,7 @@
 
 class QCheckBox;
 class QComboBox;
+class QDoubleSpinBox;
 class QLineEdit;
 class QSpinBox;
 
@@ -36,9 +38,11 @@ private:
     QComboBox* theme_;
     QComboBox* framing_;
     QCheckBox* transparent_;
-    QCheckBox* png_;
-    QCheckBox* svg_;
-    QCheckBox* pdf_;
+    QSpinBox* textScale_;
+    QComboBox* legend_;
+    QDoubleSpinBox* zoom_;
+    std::vector<std::pair<std::string, QCheckBox*>> hide_, formats_; // by export's names
+    QSpinBox* digits_;
     QCheckBox* animate_;
     QSpinBox* fps_;
 };

@@ -4,6 +4,7 @@
 // program's, a guide that names every stage, and tooltips on the controls.
 
 #include <QAbstractButton>
+#include <QCheckBox>
 #include <QComboBox>
 #include <QDirIterator>
 #include <QFileInfo>
@@ -409,6 +410,31 @@ private slots:
         for (const char* words : {"Matrices", "Parameters", "Accuracy", "Depth", "Ctrl+Z", "Ctrl+Y", "Ctrl+E", "Ctrl+K",
                                   "Left", "Play"})
             QVERIFY2(text.contains(words), words);
+    }
+
+    // The dialog is made from export's tables: every format and everything --hide names is offered, and
+    // what is chosen is what export is asked for.
+    void exportDialogOffersEveryFormatAndOption()
+    {
+        ExportDialog dialog(5, Theme::Light);
+        for (const ExportFormat& format : exportFormats()) {
+            auto* box = dialog.findChild<QCheckBox*>(QString::fromStdString("format-" + format.name));
+            QVERIFY2(box, format.name.c_str());
+            box->setChecked(format.name == "tikz" || format.name == "svg");
+        }
+        for (const std::string& name : hideNames()) {
+            auto* box = dialog.findChild<QCheckBox*>(QString::fromStdString("hide-" + name));
+            QVERIFY2(box, name.c_str());
+            box->setChecked(name == "legend" || name == "projectors");
+        }
+        const ExportOptions o = dialog.options();
+        QCOMPARE(o.formats, (std::set<std::string>{"svg", "tikz"}));
+        QCOMPARE(o.hidden, (std::set<std::string>{"legend", "projectors"}));
+        QCOMPARE(o.textScale, 100);
+        QCOMPARE(o.digits, 4);
+        QCOMPARE(o.zoom, 1.0);
+        QVERIFY(o.legend == LegendPlace::Best);
+        QVERIFY(o.framing == FramingMode::Together);
     }
 
     void everyControlSaysWhatItIs()
