@@ -220,16 +220,17 @@ Question readQuestion(const Json& j, const std::string& path, const Pipeline<dou
     return q;
 }
 
-// An array of element names; "labels" too where `labels` is given (it says whether the array names them).
-std::set<Element> readElements(const Json& j, const std::string& path, bool* labels)
+// An array of element names; "labels" and "legend" too where `step` is given (whose labelsHidden and
+// legendHidden say whether the array names them).
+std::set<Element> readElements(const Json& j, const std::string& path, LessonStep* step)
 {
     if (!j.is_array())
         throw InputError(path, "must be an array of element names (got " + found(j) + ")");
     std::set<Element> elements;
     for (std::size_t k = 0; k < j.size(); ++k) {
         const std::string name = readString(j[k], element(path, k));
-        if (labels && name == "labels") {
-            *labels = true;
+        if (step && (name == "labels" || name == "legend")) {
+            (name == "labels" ? step->labelsHidden : step->legendHidden) = true;
             continue;
         }
         const auto& names = lessonElementNames();
@@ -238,7 +239,7 @@ std::set<Element> readElements(const Json& j, const std::string& path, bool* lab
             std::string all;
             for (const auto& entry : names)
                 all += std::string(all.empty() ? "" : ", ") + entry.second;
-            throw InputError(element(path, k), "must be one of " + all + (labels ? ", labels" : "") + " (got \"" + name + "\")");
+            throw InputError(element(path, k), "must be one of " + all + (step ? ", labels, legend" : "") + " (got \"" + name + "\")");
         }
         elements.insert(known->first);
     }
@@ -249,7 +250,7 @@ void readShown(const Json& j, const std::string& path, LessonStep& step, const P
 {
     static const std::vector<std::string> panels = {"stages", "matrices", "parameters", "code", "accuracy", "depth"};
     if (j.contains("hide"))
-        step.hidden = readElements(j["hide"], child(path, "hide"), &step.labelsHidden);
+        step.hidden = readElements(j["hide"], child(path, "hide"), &step);
     if (j.contains("highlight")) {
         const std::string at = child(path, "highlight");
         requireObject(j["highlight"], at, {"elements", "entries"}, {});
@@ -347,7 +348,7 @@ const std::vector<std::pair<Element, const char*>>& lessonElementNames()
 
 std::shared_ptr<const EvaluatedScene> shownAtStep(const std::shared_ptr<const EvaluatedScene>& scene, const LessonStep& step)
 {
-    if (step.hidden.empty() && !step.labelsHidden && step.highlighted.empty())
+    if (step.hidden.empty() && !step.labelsHidden && !step.legendHidden && step.highlighted.empty())
         return scene;
     auto shown = std::make_shared<EvaluatedScene>(*scene);
     auto hidden = [&](Element e) { return step.hidden.count(e) > 0; };
@@ -368,6 +369,10 @@ std::shared_ptr<const EvaluatedScene> shownAtStep(const std::shared_ptr<const Ev
         shown->labels.clear();
     else
         drop(shown->labels);
+    if (step.legendHidden) {
+        shown->worldLegend.clear();
+        shown->projectedLegend.clear();
+    }
     return shown;
 }
 
@@ -414,7 +419,7 @@ EvaluatedLesson evaluateLesson(const Lesson& lesson, SceneEvaluator* evaluator, 
     };
     const auto showAlike = [](const LessonStep& a, const LessonStep& b) {
         return a.scene == b.scene && a.hidden == b.hidden && a.highlighted == b.highlighted &&
-               a.labelsHidden == b.labelsHidden;
+               a.labelsHidden == b.labelsHidden && a.legendHidden == b.legendHidden;
     };
     for (std::size_t k = 0; k < lesson.steps.size(); ++k) {
         const LessonStep& step = lesson.steps[k];
@@ -511,6 +516,8 @@ void writeShown(const LessonStep& step, Json& entry)
         hide.push_back(name(e));
     if (step.labelsHidden)
         hide.push_back("labels");
+    if (step.legendHidden)
+        hide.push_back("legend");
     if (!hide.empty())
         entry["hide"] = hide;
     if (!step.highlighted.empty() || !step.entries.empty()) {
@@ -696,7 +703,7 @@ LessonStep stepShownFrom(const std::string& text)
     const Json j = parseJson(text);
     LessonStep step;
     if (j.contains("hide"))
-        step.hidden = readElements(j["hide"], "hide", &step.labelsHidden);
+        step.hidden = readElements(j["hide"], "hide", &step);
     if (j.contains("highlight") && j["highlight"].contains("elements"))
         step.highlighted = readElements(j["highlight"]["elements"], "highlight.elements", nullptr);
     return step;

@@ -284,7 +284,7 @@ void validate(const ExportOptions& o)
         formatNamed(name);
 }
 
-// The scene as the pictures show it, without the elements and labels `hidden` names.
+// The scene as the pictures show it, without the elements, labels and legend `hidden` names.
 std::shared_ptr<const EvaluatedScene> withoutHidden(const std::shared_ptr<const EvaluatedScene>& scene,
                                                     const std::set<std::string>& hidden)
 {
@@ -293,6 +293,7 @@ std::shared_ptr<const EvaluatedScene> withoutHidden(const std::shared_ptr<const 
         if (hidden.count(name))
             shown.hidden.insert(element);
     shown.labelsHidden = hidden.count("labels") > 0;
+    shown.legendHidden = hidden.count("legend") > 0;
     return shownAtStep(scene, shown);
 }
 
@@ -478,7 +479,7 @@ std::vector<fs::path> exportStages(const std::shared_ptr<const EvaluatedScene>& 
         // One offscreen window, one painter, one camera framing every stage.
         OffscreenPainter offscreen(evaluated, options.width, options.height, options.scale, options.theme,
                                    options.transparent, options.textScale / 100.0);
-        offscreen.painter->setLegendPlace(options.hidden.count("legend") ? LegendPlace::None : options.legend);
+        offscreen.painter->setLegendPlace(options.legend);
         offscreen.painter->orbit(0, 0, options.zoom);
         const StageFramings framing = stageFramings(*evaluated, options.framing);
         SceneOutput output{scene, options, {}, staging.path(), step}; // the page draws the scene whole

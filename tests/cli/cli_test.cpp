@@ -218,6 +218,34 @@ TEST(Cli, TextScaleIsOneRangeForExportAndOpen)
     EXPECT_FALSE(std::filesystem::exists(out));
 }
 
+// What export leaves out: the names a lesson step's hide takes and the picture's own parts; a name it does not
+// take is refused naming those it does, and nothing is written.
+TEST(Cli, ExportLeavesOutWhatItIsAsked)
+{
+    const std::filesystem::path out = std::filesystem::temp_directory_path() / "viewpipe-hide";
+    std::filesystem::remove_all(out);
+    Result r = run("export " + kHouse + " --out " + out.string() + " --hide legend,plate --quiet");
+    EXPECT_EQ(r.exitCode, 2);
+    EXPECT_NE(r.err.find("--hide: \"plate\" is not one of objects, world_axes"), std::string::npos) << r.err;
+    EXPECT_FALSE(std::filesystem::exists(out));
+    for (const std::string& option : {"--zoom 0", "--legend left", "--framing loose"})
+        EXPECT_EQ(run("export " + kHouse + " --out " + out.string() + " " + option + " --quiet").exitCode, 2) << option;
+
+    auto svgOf = [&](const std::string& options) {
+        std::filesystem::remove_all(out);
+        const Result made = run("export " + kHouse + " --out " + out.string() + " --stages 4 --format svg --quiet " + options);
+        EXPECT_EQ(made.exitCode, 0) << options << made.err;
+        std::ifstream in(out / "04-sh-per.svg");
+        return std::string(std::istreambuf_iterator<char>(in), {});
+    };
+    const std::string whole = svgOf(""), bare = svgOf("--hide legend,caption,labels --legend beside --zoom 1.5");
+    for (const char* text : {"projectors", "shear so that", "PRP"}) { // a legend's line, the caption, a label
+        EXPECT_NE(whole.find(text), std::string::npos) << text;
+        EXPECT_EQ(bare.find(text), std::string::npos) << text;
+    }
+    std::filesystem::remove_all(out);
+}
+
 // Found crashing `pipeline` and `open` (segmentation faults, double free inside
 // VTK's readers): each is refused with its field and reason, exit 2.
 TEST(Cli, HostileMeshesAreRefusedByEveryCommand)

@@ -272,8 +272,8 @@ TEST(Lesson, ALessonSavedReadsBackTheSame)
                 EXPECT_EQ(fs::weakly_canonical(a.scene.file), fs::weakly_canonical(b.scene.file));
                 EXPECT_EQ(std::tie(a.stage, a.yaw, a.pitch, a.zoom, a.caption), std::tie(b.stage, b.yaw, b.pitch, b.zoom, b.caption));
                 EXPECT_EQ(a.trace.has_value(), b.trace.has_value());
-                EXPECT_EQ(std::tie(a.hidden, a.labelsHidden, a.highlighted, a.entries, a.panel),
-                          std::tie(b.hidden, b.labelsHidden, b.highlighted, b.entries, b.panel));
+                EXPECT_EQ(std::tie(a.hidden, a.labelsHidden, a.legendHidden, a.highlighted, a.entries, a.panel),
+                          std::tie(b.hidden, b.labelsHidden, b.legendHidden, b.highlighted, b.entries, b.panel));
                 ASSERT_EQ(a.question.has_value(), b.question.has_value());
                 if (!a.question)
                     continue;
@@ -347,7 +347,7 @@ TEST(Lesson, AQuestionIsEditedAsTheFileHoldsIt)
 // What a step hides is not in the scene its pictures draw; what it highlights is wider there.
 TEST(Lesson, AStepHidesAndHighlightsElementsAndEntries)
 {
-    const Lesson lesson = lessonWith(R"({"scene": "house.json", "stage": 4, "caption": "c", "hide": ["projectors", "labels"],
+    const Lesson lesson = lessonWith(R"({"scene": "house.json", "stage": 4, "caption": "c", "hide": ["projectors", "labels", "legend"],
         "highlight": {"elements": ["window"], "entries": [[1, 3], [2, 3]]}, "panel": "matrices"})");
     const LessonStep& step = lesson.steps[0];
     EXPECT_EQ(step.hidden, std::set<Element>{Element::Projectors});
@@ -364,6 +364,9 @@ TEST(Lesson, AStepHidesAndHighlightsElementsAndEntries)
         EXPECT_EQ(p.widthScale, p.element == Element::Window ? 2.5 : 1.0);
     EXPECT_TRUE(shown->labels.empty());
     EXPECT_FALSE(full->labels.empty());
+    EXPECT_TRUE(step.legendHidden);
+    EXPECT_TRUE(shown->worldLegend.empty() && shown->projectedLegend.empty());
+    EXPECT_FALSE(full->worldLegend.empty());
     // A step that changes nothing draws the scene itself.
     EXPECT_EQ(shownAtStep(full, lessonWith(R"({"scene": "house.json", "caption": "c"})").steps[0]), full);
 

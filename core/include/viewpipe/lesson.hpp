@@ -49,6 +49,7 @@ struct LessonStep {
     std::optional<Question> question;
     std::set<Element> hidden;           // not drawn at this step
     bool labelsHidden = false;          // no label drawn at this step
+    bool legendHidden = false;          // no legend drawn at this step
     std::set<Element> highlighted;      // drawn with wider lines
     std::vector<std::array<int, 2>> entries; // the shown stage's matrix entries highlighted (row, column from 1)
     std::string panel;                  // the app's panel in front: stages, matrices, parameters, code, accuracy, depth
@@ -64,7 +65,7 @@ const std::vector<std::pair<Element, const char*>>& lessonElementNames();
 std::string stepShownJson(const LessonStep& step);
 LessonStep stepShownFrom(const std::string& text);
 
-// A scene as a step shows it: without the elements (and labels) it hides,
+// A scene as a step shows it: without the elements (labels, legends) it hides,
 // its highlighted elements' lines wider; the scene itself where the step
 // changes nothing. Every picture of the step draws this.
 std::shared_ptr<const EvaluatedScene> shownAtStep(const std::shared_ptr<const EvaluatedScene>& scene, const LessonStep& step);
