@@ -267,6 +267,30 @@ void MainWindow::addActions()
     actions_->action("view.darkTheme")->setChecked(true);
     actions_->add("view.present", tr("&Present"), [this] { presentMode_->setPresenting(!presentMode_->isPresenting()); },
                   QKeySequence(Qt::Key_F5));
+    // Where each view's legend goes, kept for the next session.
+    for (const char* view : {"world", "projected"}) {
+        auto* places = new QActionGroup(this);
+        const QString key = QString(view) + "Legend";
+        const LegendPlace kept = legendPlaceNamed(QSettings().value(key, "best").toString().toStdString()).value_or(LegendPlace::Best);
+        for (const auto& [place, text] : {std::pair{LegendPlace::Best, tr("Where It Costs Least")}, std::pair{LegendPlace::Beside, tr("Beside")},
+                                          std::pair{LegendPlace::Below, tr("Below")}, std::pair{LegendPlace::Inside, tr("Inside, in a Free Corner")},
+                                          std::pair{LegendPlace::None, tr("Hidden")}}) {
+            const bool world = std::string(view) == "world";
+            QAction* action = actions_->addToggle(std::string("view.") + view + "Legend." + legendPlaceName(place),
+                                                  text, [this, world, key, place = place](bool on) {
+                if (!on)
+                    return;
+                world ? painter_->setLegendPlace(place) : painter_->setProjectedLegendPlace(place);
+                QSettings().setValue(key, legendPlaceName(place));
+                renderNow();
+            });
+            places->addAction(action);
+            if (place == kept) {
+                action->setChecked(true);
+                world ? painter_->setLegendPlace(place) : painter_->setProjectedLegendPlace(place);
+            }
+        }
+    }
     actions_->add("view.largerText", tr("&Larger Text"), [this] { setFontSize(fontSize_ + 2); }, QKeySequence::ZoomIn);
     actions_->add("view.smallerText", tr("&Smaller Text"), [this] { setFontSize(fontSize_ - 2); }, QKeySequence::ZoomOut);
     actions_->add("effects.depthPanel", tr("Show the &Depth Panel"), [this] { showPanel("depth"); });
@@ -310,6 +334,11 @@ void MainWindow::buildMenus()
                                  this, [this, screen] { presentMode_->setPresenting(true, screen); });
     });
     actions_->fill(view, {"-", "view.largerText", "view.smallerText"});
+    for (const char* which : {"world", "projected"}) {
+        QMenu* legend = view->addMenu(std::string(which) == "world" ? tr("&World View Legend") : tr("&Camera View Legend"));
+        for (const LegendPlace place : {LegendPlace::Best, LegendPlace::Beside, LegendPlace::Below, LegendPlace::Inside, LegendPlace::None})
+            legend->addAction(actions_->action(std::string("view.") + which + "Legend." + legendPlaceName(place)));
+    }
 
     menuBar()->addMenu(effectsMenu_);
     actions_->fill(effectsMenu_, {"-", "effects.depthPanel"});

@@ -233,6 +233,11 @@ void ProjectedView::setTextVisible(bool visible)
     caption_->SetVisibility(visible);
 }
 
+void ProjectedView::setLegendPlace(LegendPlace place)
+{
+    legendPlace_ = place;
+}
+
 Box2 ProjectedView::layOutText()
 {
     const int* size = renderer_->GetSize();
@@ -241,6 +246,7 @@ Box2 ProjectedView::layOutText()
     text.minFontSize = std::min(fontSize_, minFontSize_);
     text.caption = captionText_;
     text.legend = legendShown(entries_, false);
+    text.legendPlace = legendPlace_;
     const PictureLayout& layout = layoutCache_.layout(size[0], size[1], text, viewFontMeasure(renderer_));
     setCaptionText(caption_, layout.captionLines, layout.captionSize);
     placeLegend(legend_, renderer_, layout, text.legend, theme_, legendFontSize_);

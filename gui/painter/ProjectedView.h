@@ -41,6 +41,8 @@ public:
     void applyStyle(Theme theme, int fontSize, int minFontSize);
     void setCaption(const std::string& text);
     void setTextVisible(bool visible);
+    // Where its legend goes (layoutPicture).
+    void setLegendPlace(LegendPlace place);
 
 private:
     struct StyledActor {
@@ -66,6 +68,7 @@ private:
     Theme theme_ = Theme::Dark;
     int fontSize_ = 18, minFontSize_ = 18;
     double legendFontSize_ = 0; // the size the legend was last filled for; 0: to be filled
+    LegendPlace legendPlace_ = LegendPlace::Best;
     PictureLayoutCache layoutCache_;
     std::string captionText_;
     bool textVisible_ = true;

@@ -641,6 +641,12 @@ void ScenePainter::setLegendPlace(LegendPlace place)
     legendPlace_ = place;
 }
 
+void ScenePainter::setProjectedLegendPlace(LegendPlace place)
+{
+    if (projected_)
+        projected_->setLegendPlace(place);
+}
+
 void ScenePainter::resetView()
 {
     setCamera(WorldCamera{});

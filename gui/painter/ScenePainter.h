@@ -94,8 +94,9 @@ public:
     // zoom and pan on the framing shown.
     void frameOn(const Framing& framing);
     void resetView();
-    // Where the world view's legend goes (the picture's layout: layoutPicture).
+    // Where the world view's legend goes, and the projected view's (the picture's layout: layoutPicture).
     void setLegendPlace(LegendPlace place);
+    void setProjectedLegendPlace(LegendPlace place);
     // Turns the world view's camera about its focal point, in degrees (yaw
     // about the view's up, pitch about its right, as the web page turns) and
     // zooms it, as a lesson step asks; later framing keeps both.

@@ -234,8 +234,14 @@ FrameMarks frameMarks(const Eigen::AlignedBox<double, 3>& extent)
     if (!(reach > 0))
         return marks;
     // Ticks at a round step (1, 2 or 5 times a power of ten), five or six along the longest axis.
-    const double rough = reach / 6, power = std::pow(10.0, std::floor(std::log10(rough)));
-    const double step = power * (rough >= 5 * power ? 5 : rough >= 2 * power ? 2 : 1);
+    const double rough = reach / 6;
+    const int exponent = int(std::floor(std::log10(rough)));
+    const double power = std::pow(10.0, exponent);
+    const int mantissa = rough >= 5 * power ? 5 : rough >= 2 * power ? 2 : 1;
+    const double step = mantissa * power;
+    // Tick j's number, j * mantissa over a power of ten where that is a fraction: the double nearest the
+    // decimal (3 * 0.2 is 0.6000000000000001).
+    auto tick = [&](int j) { return exponent >= 0 ? j * step : double(j * mantissa) / std::pow(10.0, -exponent); };
     const char* names[] = {"$x$", "$y$", "$z$"};
     for (int axis = 0; axis < 3; ++axis) {
         const Vec3d along = Vec3d::Unit(axis), across = Vec3d::Unit(axis == 0 ? 1 : 0);
@@ -248,9 +254,9 @@ FrameMarks frameMarks(const Eigen::AlignedBox<double, 3>& extent)
         for (int j = int(std::ceil(low / step * 0.999)); step * j <= 0.999 * high; ++j) {
             if (j == 0)
                 continue;
-            const Vec3d at = step * j * along;
+            const Vec3d at = tick(j) * along;
             marks.lines.insert(marks.lines.end(), {at - 0.01 * reach * across, at + 0.01 * reach * across});
-            marks.labels.push_back({Element::Frame, "$" + formatShortest(step * j) + "$", at, true, true}); // a real minus sign
+            marks.labels.push_back({Element::Frame, "$" + formatShortest(tick(j)) + "$", at, true, true}); // a real minus sign
         }
     }
     return marks;

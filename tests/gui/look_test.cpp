@@ -11,6 +11,7 @@
 #include <QDockWidget>
 #include <QLabel>
 #include <QLineEdit>
+#include <QMenu>
 #include <QScrollArea>
 #include <QScrollBar>
 #include <QSettings>
@@ -410,6 +411,36 @@ private slots:
         for (const char* words : {"Matrices", "Parameters", "Accuracy", "Depth", "Ctrl+Z", "Ctrl+Y", "Ctrl+E", "Ctrl+K",
                                   "Left", "Play"})
             QVERIFY2(text.contains(words), words);
+    }
+
+    // View ▸ World View Legend puts the legend where it is asked, hides it, and the choice is kept.
+    void theLegendGoesWhereTheViewMenuSays()
+    {
+        auto window = openWindow(kScenes + "/house.json", {1280, 800});
+        QVERIFY(window);
+        const auto restore = qScopeGuard([] { QSettings().remove("worldLegend"); });
+        window->stepper()->goToStage(4, false);
+        QAction* none = nullptr;
+        QAction* below = nullptr;
+        for (const QMenu* menu : window->findChildren<QMenu*>())
+            if (menu->title() == "&World View Legend")
+                for (QAction* action : menu->actions()) {
+                    if (action->text() == "Hidden")
+                        none = action;
+                    if (action->text() == "Below")
+                        below = action;
+                }
+        QVERIFY(none && below);
+        below->trigger();
+        window->renderNow();
+        const DrawnTexts placed = drawnTexts(renderer(*window, "worldView"));
+        QVERIFY(placed.legend);
+        QVERIFY2((*placed.legend)[2] < 0.2 * renderer(*window, "worldView")->GetSize()[1], "at the bottom");
+        QCOMPARE(QSettings().value("worldLegend").toString(), QString("below"));
+        none->trigger();
+        window->renderNow();
+        QVERIFY(!drawnTexts(renderer(*window, "worldView")).legend);
+        closeWindow(window);
     }
 
     // The dialog is made from export's tables: every format and everything --hide names is offered, and

@@ -1,7 +1,8 @@
 // A lecturer at a 1280x720 projector: Larger Text pressed four times, then
 // View > Present (F5). Every built-in scene at every stage, in the world view
 // and in what the camera sees: every text inside its view, none on another
-// or on the legend. Run on a screen of that size (tests/CMakeLists.txt).
+// or on the legend, and the legend on no part of the subject. Run on a screen
+// of that size (tests/CMakeLists.txt).
 
 #include <QAbstractButton>
 #include <QAbstractItemView>
@@ -22,6 +23,7 @@
 #include "build_paths.h"
 #include "app_window.h"
 #include "drawn_texts.h"
+#include "viewpipe/report/world_view.hpp"
 
 using namespace viewpipe::gui;
 
@@ -32,6 +34,39 @@ const QString kScenes = QString(viewpipe::build::dataDir) + "/scenes";
 vtkRenderer* renderer(MainWindow& window, const char* view)
 {
     return window.findChild<QVTKOpenGLNativeWidget*>(view)->renderWindow()->GetRenderers()->GetFirstRenderer();
+}
+
+// Whether the world view's legend covers a point of the subject (the objects and the view volume, their
+// vertices and points along their edges) as the view draws the stage shown.
+bool legendCoversTheSubject(MainWindow& window, std::string& where)
+{
+    const DrawnTexts drawn = drawnTexts(renderer(window, "worldView"));
+    if (!drawn.legend)
+        return false;
+    const viewpipe::FigureView view = window.painter()->figureView();
+    const auto [x0, x1, y0, y1] = *drawn.legend; // viewport pixels, y up
+    const viewpipe::Box2 legend{{x0, view.height - y1}, {x1, view.height - y0}};
+    const auto& scene = *window.document()->evaluated();
+    const viewpipe::StageShown stage = viewpipe::stageShown(scene, viewpipe::stageAtRest(scene, window.stepper()->stage()));
+    using viewpipe::Element;
+    for (const viewpipe::Primitive& p : scene.primitives) {
+        if (!stage.draws(p) || !(p.element == Element::Objects || p.element == Element::Volume ||
+                                 p.element == Element::FrontPlane || p.element == Element::BackPlane))
+            continue;
+        std::vector<viewpipe::Vec3<double>> points = p.kind == viewpipe::PrimitiveKind::Lines ? p.segments : p.faces->vertices;
+        if (p.kind == viewpipe::PrimitiveKind::Lines)
+            for (std::size_t k = 0; k + 1 < p.segments.size(); k += 2)
+                for (int t = 1; t < 16; ++t)
+                    points.push_back(p.segments[k] + t / 16.0 * (p.segments[k + 1] - p.segments[k]));
+        for (const viewpipe::Vec3<double>& world : points)
+            if (stage.shows(world))
+                if (const auto q = viewpipe::projectPoint(stage.matrixOf(p), world))
+                    if (const auto px = view.pixel(*q); px && legend.contains({px->head<2>(), px->head<2>()})) {
+                        where = "(" + std::to_string(px->x()) + ", " + std::to_string(px->y()) + ")";
+                        return true;
+                    }
+    }
+    return false;
 }
 
 } // namespace
@@ -66,6 +101,9 @@ private slots:
                 const std::string trouble = textTrouble(renderer(*window, view));
                 QVERIFY2(trouble.empty(), qPrintable(where + ", " + view + ": " + QString::fromStdString(trouble)));
             }
+            std::string covered;
+            QVERIFY2(!legendCoversTheSubject(*window, covered),
+                     qPrintable(where + ": the legend covers the subject at " + QString::fromStdString(covered)));
         });
         QVERIFY(pictures > 100);
         closeWindow(window);

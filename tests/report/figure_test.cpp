@@ -256,6 +256,35 @@ TEST(PictureLayout, LegendInsideANarrowPictureOrLeftOut)
     EXPECT_GT(shown, 0);
 }
 
+// The fixed axes run through the origin across what is framed, their ticks at round numbers written as
+// such: found, "0.6000000000000001" at opengl-perspective's last stage (3 times a step of 0.2).
+TEST(FrameMarks, AxesRunAcrossTheExtentWithRoundTicks)
+{
+    const std::regex round(R"(\$-?[0-9]+(\.[0-9]{1,3})?\$)"); // a minus sign written as '-'
+    for (const double size : {0.03, 0.3, 1.2, 1.8, 3.0, 7.0, 150.0, 2400.0}) {
+        const Eigen::AlignedBox<double, 3> extent(Vec3<double>(-0.4, -0.1, -1) * size, Vec3<double>(0.6, 0.2, 0.1) * size);
+        const FrameMarks marks = frameMarks(extent);
+        int ticks = 0;
+        for (const Label& label : marks.labels) {
+            if (!label.minor)
+                continue;
+            ++ticks;
+            std::string text = label.text;
+            const std::string minus = "\u2212";
+            if (const auto at = text.find(minus); at != std::string::npos)
+                text.replace(at, minus.size(), "-");
+            EXPECT_TRUE(std::regex_match(text, round)) << size << ": " << label.text;
+            EXPECT_TRUE(extent.contains(label.anchor)) << size << ": " << label.text;
+        }
+        EXPECT_GE(ticks, 5) << size;
+        for (int axis = 0; axis < 3; ++axis) {
+            const auto [from, to] = frameAxis(extent, axis);
+            EXPECT_EQ(from[axis], extent.min()[axis]);
+            EXPECT_EQ(to[axis], extent.max()[axis]);
+        }
+    }
+}
+
 // The legend goes where the subject draws largest: inside, in a corner the subject leaves free, where
 // there is one; beside a tall subject; below a wide one. Asked for a place, it goes there.
 TEST(PictureLayout, TheLegendGoesWhereItCostsTheSubjectLeast)
