@@ -63,10 +63,10 @@ Finished viewpipe(const QStringList& arguments)
                                                                                process.errorString().toStdString() + ")")};
 }
 
-// A headless Chromium and one page in it.
+// A headless Chromium and one page in it, its window `width` by `height`.
 class Browser {
 public:
-    explicit Browser(const fs::path& profile)
+    explicit Browser(const fs::path& profile, int width = kWidth, int height = kHeight)
     {
         int toBrowser[2], fromBrowser[2];
         if (::pipe(toBrowser) != 0 || ::pipe(fromBrowser) != 0)
@@ -96,7 +96,7 @@ public:
         std::vector<std::string> arguments = {
             "chromium", "--headless", "--no-sandbox", "--use-angle=swiftshader", "--enable-unsafe-swiftshader",
             "--remote-debugging-pipe", "--hide-scrollbars", "--mute-audio", "--no-first-run",
-            "--user-data-dir=" + profile.string(), "--window-size=" + std::to_string(kWidth) + "," + std::to_string(kHeight),
+            "--user-data-dir=" + profile.string(), "--window-size=" + std::to_string(width) + "," + std::to_string(height),
             "about:blank"};
         std::vector<char*> argv;
         for (std::string& a : arguments)
@@ -120,7 +120,7 @@ public:
             for (const char* domain : {"Runtime.enable", "Log.enable", "Page.enable", "Network.enable"})
                 call(domain, json::object(), session_);
             call("Emulation.setDeviceMetricsOverride",
-                 {{"width", kWidth}, {"height", kHeight}, {"deviceScaleFactor", 1}, {"mobile", false}}, session_);
+                 {{"width", width}, {"height", height}, {"deviceScaleFactor", 1}, {"mobile", false}}, session_);
         } catch (...) {
             stop();
             throw;
@@ -845,6 +845,79 @@ TEST_F(WebPage, ChoosesTheApiAndTheProjectionTypeAsTheAppDoes)
     ASSERT_TRUE(browser.waitFor(json + " + '\\n' === " + nlohmann::json(expected).dump()));
     EXPECT_EQ(selected("camera.api"), "Vulkan");
     EXPECT_EQ(selected("camera.projection.type"), "perspective (field of view)") << "found: OpenGL's call shown for a Vulkan camera";
+    for (const std::string& problem : browser.problems())
+        ADD_FAILURE() << problem;
+}
+
+TEST_F(WebPage, OnHalfALaptopScreenFoldsItsPanelsAndNamesItsViews)
+{
+    const fs::path folder = *dir_ / "opengl";
+    const Finished run = viewpipe({"export", QString::fromStdString(kData + "/scenes/opengl-perspective.json"), "--out",
+                                   QString::fromStdString(folder.string()), "--format", "html", "--quiet"});
+    ASSERT_EQ(run.exitCode, 0) << run.output;
+    Browser browser(*dir_ / "profile-laptop", 800, 600);
+    browser.page("Page.navigate", {{"url", "file://" + (folder / "scene.html").string() + "#stage=3"}});
+    ASSERT_TRUE(browser.waitFor("document.body.dataset.ready === '1' && document.body.dataset.core === '1'"));
+    const auto box = [&](const std::string& selector) {
+        return json::parse(browser.evaluate("JSON.stringify((r => ({left: r.left, top: r.top, width: r.width, bottom: r.bottom}))"
+                                            "(document.querySelector('" + selector + "').getBoundingClientRect()))")
+                               .get<std::string>());
+    };
+
+    // The world view the window's width; the camera's view and the panels under it, not beside it.
+    const json world = box("#world-canvas");
+    EXPECT_GE(world["width"].get<double>(), 0.6 * 800) << world;
+    for (const char* panel : {"#projected-canvas", "nav", "#matrices"})
+        EXPECT_GE(box(panel)["top"].get<double>(), world["bottom"].get<double>() - 1) << panel;
+
+    // The vanishing lines (the overlay's pixels) inside the window, the blue rectangle the camera's view draws.
+    const json marks = json::parse(browser.evaluate(R"(JSON.stringify((() => {
+        const bounds = (canvas, drawnAt) => {
+          const copy = document.createElement('canvas');
+          copy.width = canvas.width; copy.height = canvas.height;
+          const context = copy.getContext('2d');
+          context.drawImage(canvas, 0, 0);
+          const pixels = context.getImageData(0, 0, copy.width, copy.height).data;
+          const b = { left: Infinity, top: Infinity, right: -Infinity, bottom: -Infinity, count: 0 };
+          for (let y = 0; y < copy.height; ++y)
+            for (let x = 0; x < copy.width; ++x) {
+              if (!drawnAt(pixels, 4 * (y * copy.width + x))) continue;
+              b.left = Math.min(b.left, x); b.right = Math.max(b.right, x);
+              b.top = Math.min(b.top, y); b.bottom = Math.max(b.bottom, y); ++b.count;
+            }
+          return b;
+        };
+        const blue = (p, k) => p[k] < 40 && Math.abs(p[k + 1] - 102) < 40 && p[k + 2] > 170; // the window's line
+        return { window: bounds(document.getElementById('projected-canvas'), blue),
+                 lines: bounds(document.getElementById('projected-overlay'), (p, k) => p[k + 3] > 0) };
+      })()))").get<std::string>());
+    const json& window = marks["window"];
+    const json& lines = marks["lines"];
+    ASSERT_GT(window["count"].get<int>(), 400) << marks;
+    ASSERT_GT(lines["count"].get<int>(), 400) << "the vanishing lines are drawn: " << marks;
+    EXPECT_GE(lines["left"].get<int>(), window["left"].get<int>() - 1) << marks;
+    EXPECT_LE(lines["right"].get<int>(), window["right"].get<int>() + 1) << marks;
+    EXPECT_GE(lines["top"].get<int>(), window["top"].get<int>() - 1) << marks;
+    EXPECT_LE(lines["bottom"].get<int>(), window["bottom"].get<int>() + 1) << marks;
+
+    // Each canvas named with the stage shown and what it shows (an overlay is its view's labels: hidden from the
+    // names' tree), named anew when the stage changes.
+    const std::string names = R"(JSON.stringify([...document.querySelectorAll('canvas')].map((c) =>
+        c.getAttribute('aria-hidden') === 'true' ? 'hidden' : c.getAttribute('role') + ': ' + c.getAttribute('aria-label'))))";
+    const auto expectNamed = [&](const std::string& stage) {
+        const json named = json::parse(browser.evaluate(names).get<std::string>());
+        ASSERT_EQ(named.size(), 4u) << named;
+        EXPECT_EQ(named[0].get<std::string>().rfind("img: World view, stage " + stage, 0), 0u) << named;
+        EXPECT_EQ(named[1], "hidden");
+        EXPECT_EQ(named[2].get<std::string>().rfind("img: What the camera sees, beside stage " + stage, 0), 0u) << named;
+        EXPECT_NE(named[2].get<std::string>().find("vanishing lines"), std::string::npos) << named;
+        EXPECT_EQ(named[3], "hidden");
+    };
+    expectNamed("3. S sub fovy");
+    browser.press("ArrowRight", 39);
+    ASSERT_TRUE(browser.waitFor("document.body.dataset.stage === '4' && !document.body.dataset.moving"));
+    expectNamed("4. P sub depth");
+
     for (const std::string& problem : browser.problems())
         ADD_FAILURE() << problem;
 }

@@ -160,7 +160,11 @@
     projectedCamera.projectionMatrixInverse.getInverse(projectedCamera.projectionMatrix);
     render(projected, projectedScene, projectedCamera);
     const context = fitOverlay(projectedOverlay, size);
-    // Marks in the picture's coordinates: the vanishing lines, the ring around faces that fight for depth.
+    // Marks in the picture's coordinates: the vanishing lines, the ring around faces that fight for depth; inside
+    // the window (a point they run to outside it would take them across the heading, the legend and off the view).
+    context.beginPath();
+    context.rect((1 - lx) / 2 * size.width, (1 - ly) / 2 * size.height, lx * size.width, ly * size.height);
+    context.clip();
     const marks = (segments, color, width) => {
       context.strokeStyle = color;
       context.lineWidth = width;

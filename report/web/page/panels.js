@@ -68,10 +68,19 @@
     });
     element.replaceChildren(table);
   }
+  // Each view's accessible name: the stage and what the view shows; no stage while a question is open (a name may
+  // be its answer). The overlays' labels are the same picture's: left out of the names' tree.
+  function nameViews() {
+    const stage = asking() ? 'the stage this step asks about' : `stage ${stages[state.stage].listText}`;
+    worldCanvas.setAttribute('aria-label', `World view, ${stage}: the scene drawn with this stage's matrices`);
+    projectedCanvas.setAttribute('aria-label', `What the camera sees, beside ${stage}: the objects in the camera's window` +
+                                 (data.projected.vanishing.length ? ', with their vanishing lines' : ''));
+  }
   function showPanels() {
     const stage = stages[state.stage];
     body.dataset.stage = state.stage;
     showStageList();
+    nameViews();
     if (asking()) { // the matrices, their names and the trace would give the answer away
       for (const id of ['matrix-title', 'symbolic', 'matrix', 'cumulative', 'trace'])
         document.getElementById(id).textContent = '';

@@ -146,7 +146,6 @@
     items = [];
     worldScene.background = new THREE.Color(...data.background);
     projectedScene.background = new THREE.Color(...data.projectedBackground);
-    document.getElementById('projected').style.setProperty('--projected', cssColor(data.projectedBackground));
     data.primitives.forEach((primitive, k) => {
       const geometry = geometryOf(primitive);
       // Lines twice: wide, and one pixel wide where a divide's cut applies (a wide line's
