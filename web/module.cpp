@@ -146,23 +146,37 @@ std::shared_ptr<const EvaluatedScene> shownAs(const std::shared_ptr<const Evalua
     return shown == "null" ? scene : shownAtStep(scene, stepShownFrom(shown));
 }
 
-// Stage k's labels seen through `camera` (16 numbers, row by row: stage
-// coordinates -> clip coordinates of the picture `options` sizes), placed by
-// the core as at rest: the page's labels while the view is turned; `shown`:
-// as a lesson's step shows the scene (shownAs).
-Outcome placeLabels(const std::string& sceneText, const std::string& options, int stage, const std::string& camera,
-                    const emscripten::val& measure, const std::string& shown)
+// Stage k seen through `camera` (16 numbers, row by row: stage coordinates
+// -> clip coordinates of the picture `options` sizes), as `draw` makes it
+// (webStageLabels, webStageFigure); `shown`: as a lesson's step shows the scene (shownAs).
+template <class Draw>
+Outcome stageThrough(const char* what, const std::string& sceneText, const std::string& options, int stage,
+                     const std::string& camera, const emscripten::val& measure, const std::string& shown, Draw draw)
 {
     return guarded([&] {
         const auto evaluated = shownAs(evaluatedOnce(sceneText, false), shown);
         const std::vector<double> rows = nlohmann::json::parse(camera);
         if (rows.size() != 16 || stage < 0 || stage > int(evaluated->pipeline.stages.size()))
-            throw std::invalid_argument("placeLabels: a stage and 16 numbers");
+            throw std::invalid_argument(std::string(what) + ": a stage and 16 numbers");
         Mat4<double> clip;
         for (int k = 0; k < 16; ++k)
             clip(k / 4, k % 4) = rows[std::size_t(k)];
-        return Outcome{webStageLabels(*evaluated, stage, clip, viewOptions(options), pageMeasure(measure)), ""};
+        return Outcome{draw(*evaluated, stage, clip, viewOptions(options), pageMeasure(measure)), ""};
     });
+}
+
+// The labels placed by the core as at rest: the page's labels while the view is turned.
+Outcome placeLabels(const std::string& sceneText, const std::string& options, int stage, const std::string& camera,
+                    const emscripten::val& measure, const std::string& shown)
+{
+    return stageThrough("placeLabels", sceneText, options, stage, camera, measure, shown, webStageLabels);
+}
+
+// The whole flat figure, as the SVG export draws it: the page's SVG of the view shown.
+Outcome stageFigure(const std::string& sceneText, const std::string& options, int stage, const std::string& camera,
+                    const emscripten::val& measure, const std::string& shown)
+{
+    return stageThrough("stageFigure", sceneText, options, stage, camera, measure, shown, webStageFigure);
 }
 
 // A lesson's question (`question` as the lesson file holds it) about `sceneText`.
@@ -368,6 +382,7 @@ EMSCRIPTEN_BINDINGS(viewpipe)
     emscripten::function("pipelineJson", &pipelineJson);
     emscripten::function("evaluate", &evaluate);
     emscripten::function("placeLabels", &placeLabels);
+    emscripten::function("stageFigure", &stageFigure);
     emscripten::function("checkAnswer", &checkAnswer);
     emscripten::function("lessonResults", &lessonResults);
     emscripten::function("codeDialects", &codeDialects);

@@ -140,9 +140,9 @@ PictureLayout stageLayout(const EvaluatedScene& scene, int k, const WorldMoment&
                          measure);
 }
 
-// Stage k's labels through `camera`, placed around its text.
-std::vector<PlacedLabel> stageLabels(const EvaluatedScene& scene, const WorldMoment& moment, const Mat4<double>& camera,
-                                     const PictureLayout& layout, const WebViewOptions& o, const FontMeasure& measure)
+// Stage k's flat figure through `camera`, its labels placed around its text.
+Figure stageFigure(const EvaluatedScene& scene, const WorldMoment& moment, const Mat4<double>& camera,
+                   const PictureLayout& layout, const WebViewOptions& o, const FontMeasure& measure)
 {
     FigureView view;
     view.camera = camera;
@@ -152,7 +152,7 @@ std::vector<PlacedLabel> stageLabels(const EvaluatedScene& scene, const WorldMom
     view.fontSize = labelSizeIn(layout, o.fontSize); // the page sets each label to fit its box
     view.minFontSize = o.minFontSize;
     view.lineScale = o.lineScale;
-    return drawFigure(stageShown(scene, moment), view, labelMeasure(measure, view.fontSize), textBoxes(layout)).labels;
+    return drawFigure(stageShown(scene, moment), view, labelMeasure(measure, view.fontSize), textBoxes(layout));
 }
 
 // The picture's text boxes and sizes (layoutPicture), for the page to set its caption, legend and note as the PNG does.
@@ -400,7 +400,8 @@ WebPageViews webPageViews(const EvaluatedScene& scene, const WebViewOptions& o, 
         PictureLayout& layout = layouts[std::size_t(k)];
         fit.sceneArea = layout.scene;
         const WebFrame rest = frameOf(moment);
-        std::vector<PlacedLabel> labels = stageLabels(scene, moment, rest.projection * rest.view, layout, o, measure);
+        std::vector<PlacedLabel> labels =
+            stageFigure(scene, moment, rest.projection * rest.view, layout, o, measure).labels;
         views.stages.push_back({rest, moment.ghost, frameExtent(moment.framing), std::move(labels), std::move(layout)});
     }
     return views;
@@ -410,8 +411,27 @@ std::string webStageLabels(const EvaluatedScene& scene, int stage, const Mat4<do
                            const FontMeasure& measure)
 {
     const WorldMoment moment = stageAtRest(scene, stage, stageFramings(scene, o.framing));
-    return placedLabelsJson(stageLabels(scene, moment, camera, stageLayout(scene, stage, moment, o, measure), o, measure),
-                            o.theme)
+    return placedLabelsJson(
+               stageFigure(scene, moment, camera, stageLayout(scene, stage, moment, o, measure), o, measure).labels,
+               o.theme)
+        .dump();
+}
+
+std::string webStageFigure(const EvaluatedScene& scene, int stage, const Mat4<double>& camera, const WebViewOptions& o,
+                           const FontMeasure& measure)
+{
+    const WorldMoment moment = stageAtRest(scene, stage, stageFramings(scene, o.framing));
+    const Figure figure = stageFigure(scene, moment, camera, stageLayout(scene, stage, moment, o, measure), o, measure);
+    json shapes = json::array();
+    for (const FigureShape& s : figure.shapes) {
+        json points = json::array();
+        for (const Vec2<double>& p : s.points)
+            points.push_back({p.x(), p.y()});
+        shapes.push_back({{"surface", s.surface}, {"color", color(styledColor(s.element, s.surface, o.theme))},
+                          {"opacity", s.opacity}, {"lineWidth", s.lineWidth}, {"points", points}});
+    }
+    return json{{"width", figure.width}, {"height", figure.height}, {"shapes", shapes},
+                {"labels", placedLabelsJson(figure.labels, o.theme)}}
         .dump();
 }
 

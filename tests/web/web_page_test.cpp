@@ -849,7 +849,7 @@ TEST_F(WebPage, ChoosesTheApiAndTheProjectionTypeAsTheAppDoes)
         ADD_FAILURE() << problem;
 }
 
-TEST_F(WebPage, OnHalfALaptopScreenFoldsItsPanelsAndNamesItsViews)
+TEST_F(WebPage, OnHalfALaptopScreenFoldsItsPanelsNamesItsViewsAndSavesTheView)
 {
     const fs::path folder = *dir_ / "opengl";
     const Finished run = viewpipe({"export", QString::fromStdString(kData + "/scenes/opengl-perspective.json"), "--out",
@@ -918,6 +918,24 @@ TEST_F(WebPage, OnHalfALaptopScreenFoldsItsPanelsAndNamesItsViews)
     ASSERT_TRUE(browser.waitFor("document.body.dataset.stage === '4' && !document.body.dataset.moving"));
     expectNamed("4. P sub depth");
 
+    // The view saved as shown: a PNG of the drawing with its labels, an SVG of the core's figure for it.
+    browser.call("Browser.setDownloadBehavior", {{"behavior", "allow"}, {"downloadPath", folder.string()}});
+    const std::string name = "opengl-camera-glulookat-and-gluperspective-stage-4";
+    browser.evaluate("document.getElementById('save-png').click()");
+    ASSERT_TRUE(waitForFile(folder / (name + ".png"))) << "the PNG is downloaded";
+    const QImage png(QString::fromStdString((folder / (name + ".png")).string()));
+    EXPECT_EQ(png.width(), world["width"].get<int>());
+    const std::vector<bool> ink = drawn(png);
+    EXPECT_GT(std::count(ink.begin(), ink.end(), true), 5000) << "the PNG holds the picture";
+    browser.evaluate("document.getElementById('save-svg').click()");
+    ASSERT_TRUE(waitForFile(folder / (name + ".svg"))) << "the SVG is downloaded";
+    browser.page("Page.navigate", {{"url", "file://" + (folder / (name + ".svg")).string()}});
+    ASSERT_TRUE(browser.waitFor("document.readyState === 'complete'"));
+    EXPECT_EQ(browser.evaluate("document.documentElement.localName + ' ' + !document.querySelector('parsererror')"), "svg true");
+    EXPECT_EQ(browser.evaluate("document.querySelector('title').textContent.startsWith('World view, stage 4. P sub depth')"), true);
+    EXPECT_GT(browser.evaluate("document.querySelectorAll('polygon').length").get<int>(), 10);
+    EXPECT_GT(browser.evaluate("document.querySelectorAll('polyline').length").get<int>(), 10);
+    EXPECT_EQ(browser.evaluate("[...document.querySelectorAll('text')].some((t) => t.textContent === 'CW')"), true);
     for (const std::string& problem : browser.problems())
         ADD_FAILURE() << problem;
 }

@@ -84,13 +84,9 @@
     }
     const drawRuns = (runs, x, top, px, weight) => {
       context.textBaseline = 'alphabetic';
-      context.font = weight + fontOf(px);
-      const baseline = top + context.measureText('Ág').fontBoundingBoxAscent;
-      for (const run of runs) {
-        context.font = runFont(run, px, weight);
-        const shift = run[2] > 0 ? -data.scripts.rise * run[2] * px : -data.scripts.drop * run[2] * px;
-        context.fillText(run[0], x, baseline + shift);
-        x += context.measureText(run[0]).width;
+      for (const run of runPlaces(context, runs, px, weight)) {
+        context.font = run.font;
+        context.fillText(run.text, x + run.x, top + run.y);
       }
     };
     // Under a label, the picture's background: the lines it could not keep off run faintly under it.
@@ -106,10 +102,7 @@
       for (const label of placed) {
         const [x0, y0, x1, y1] = label.box;
         const corner = place(x0, y0);
-        let px = (label.minor ? data.smallFontSize : data.fontSize) * s;
-        const weight = label.minor ? '' : 'bold ';
-        const width = runsWidth(context, label.runs, px, weight);
-        if (width > (x1 - x0) * s) px *= (x1 - x0) * s / width;
+        const { px, weight } = labelFont(context, label, s);
         backdrop(corner.x, corner.y, (x1 - x0) * s, (y1 - y0) * s);
         context.fillStyle = cssColor(label.color);
         drawRuns(label.runs, corner.x, corner.y + ((y1 - y0) * s - px) / 2, px, weight);

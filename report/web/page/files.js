@@ -1,7 +1,7 @@
   // page/files.js: the scene saved; files opened or dropped; the app's presets; the scene in a link.
   // The scene as a file the app opens.
   document.getElementById('save-scene').addEventListener('click', () => {
-    download(data.scene, (data.title || 'scene').replace(/[^A-Za-z0-9._-]+/g, '-').replace(/^-+|-+$/g, '').toLowerCase() + '.json');
+    download(data.scene, fileBase() + '.json');
   });
 
   // Files opened or dropped: meshes go into the core's file system under their names; a scene (JSON) among them

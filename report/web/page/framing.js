@@ -38,22 +38,33 @@
     return { view: orbit.multiply(view), projection: fit.multiply(matrixOf(frame.projection)) };
   }
 
-  // The stage's labels placed by the core for the view turned by the user, as at rest (in export pixels), as a
-  // lesson's step shows the scene; null where the core cannot (not loaded, or the scene's meshes left out).
-  let turned = { key: '', labels: null };
-  function labelsTurned() {
-    if (!core || data.filesLeftOut) return null;
+  // The view as the user turned it, for the core: the stage's camera in the export's picture (stage coordinates ->
+  // clip coordinates, row by row) and what a lesson's step shows of the scene.
+  function turnedView() {
     const exportSize = { width: data.width, height: data.height };
     const { view, projection } = cameraMatrices(stages[state.stage].rest, exportSize);
     const clip = projection.multiply(view).elements; // column by column
-    const rows = [0, 1, 2, 3].flatMap((r) => [0, 1, 2, 3].map((c) => clip[4 * c + r]));
-    const shown = JSON.stringify(lesson ? lesson.steps[state.step].shown : null);
+    return { rows: [0, 1, 2, 3].flatMap((r) => [0, 1, 2, 3].map((c) => clip[4 * c + r])),
+             shown: JSON.stringify(lesson ? lesson.steps[state.step].shown : null) };
+  }
+  // Whether the core can draw the scene shown: loaded, and with the scene's meshes.
+  const coreDraws = () => !!core && !data.filesLeftOut;
+  // The core's answer about the turned view: `ask` is placeLabels or stageFigure; null where it cannot answer.
+  function askAboutTurned(ask) {
+    if (!coreDraws()) return null;
+    const { rows, shown } = turnedView();
+    const outcome = core[ask](data.scene, JSON.stringify(viewOptions()), state.stage, JSON.stringify(rows), measureRuns, shown);
+    return outcome.error ? null : JSON.parse(outcome.text);
+  }
+
+  // The stage's labels placed by the core for the view turned by the user, as at rest (in export pixels), as a
+  // lesson's step shows the scene; null where the core cannot.
+  let turned = { key: '', labels: null };
+  function labelsTurned() {
+    if (!coreDraws()) return null;
+    const { rows, shown } = turnedView();
     const key = `${state.stage} ${rows.join(' ')} ${data.scene.length} ${shown}`;
-    if (turned.key !== key) {
-      const outcome = core.placeLabels(data.scene, JSON.stringify(viewOptions()), state.stage, JSON.stringify(rows),
-                                       measureRuns, shown);
-      turned = { key, labels: outcome.error ? null : JSON.parse(outcome.text) };
-    }
+    if (turned.key !== key) turned = { key, labels: askAboutTurned('placeLabels') };
     return turned.labels;
   }
 

@@ -59,3 +59,24 @@
     }, 0);
   }
 
+  // Where each run of a label goes from its top left corner: its font, x, and y of its baseline.
+  function runPlaces(context, runs, px, weight) {
+    context.font = weight + fontOf(px);
+    const baseline = context.measureText('Ág').fontBoundingBoxAscent;
+    let x = 0;
+    return runs.map((run) => {
+      const font = runFont(run, px, weight);
+      const shift = run[2] > 0 ? -data.scripts.rise * run[2] * px : -data.scripts.drop * run[2] * px;
+      const place = { text: run[0], font, x, y: baseline + shift };
+      context.font = font;
+      x += context.measureText(run[0]).width;
+      return place;
+    });
+  }
+  // A placed label's size (its kind's, smaller where its box is narrower) and weight, at `s` pixels per export pixel.
+  function labelFont(context, label, s) {
+    const weight = label.minor ? '' : 'bold ';
+    const px = (label.minor ? data.smallFontSize : data.fontSize) * s, room = (label.box[2] - label.box[0]) * s;
+    const width = runsWidth(context, label.runs, px, weight);
+    return { px: width > room ? px * room / width : px, weight };
+  }

@@ -88,6 +88,10 @@ WebPageViews webPageViews(const EvaluatedScene& scene, const WebViewOptions& opt
 // the view is turned. As JSON, as webPageData writes a stage's labels.
 std::string webStageLabels(const EvaluatedScene& scene, int stage, const Mat4<double>& camera,
                            const WebViewOptions& options, const FontMeasure& measure);
+// The same stage's whole flat figure (drawFigure: shapes back to front, in
+// pixels, with their colors, and the labels), as JSON: the page's SVG of the view.
+std::string webStageFigure(const EvaluatedScene& scene, int stage, const Mat4<double>& camera,
+                           const WebViewOptions& options, const FontMeasure& measure);
 
 // A scene as the page draws it, as JSON: what the page's core makes anew on every edit.
 std::string webPageData(const EvaluatedScene& scene, const WebPageViews& views);
