@@ -284,7 +284,7 @@ void validate(const ExportOptions& o)
         formatNamed(name);
 }
 
-// The scene as the pictures show it, without the elements, labels and legend `hidden` names.
+// The scene as the pictures show it, without the elements, labels, legend and effects' note `hidden` names.
 std::shared_ptr<const EvaluatedScene> withoutHidden(const std::shared_ptr<const EvaluatedScene>& scene,
                                                     const std::set<std::string>& hidden)
 {
@@ -294,7 +294,12 @@ std::shared_ptr<const EvaluatedScene> withoutHidden(const std::shared_ptr<const 
             shown.hidden.insert(element);
     shown.labelsHidden = hidden.count("labels") > 0;
     shown.legendHidden = hidden.count("legend") > 0;
-    return shownAtStep(scene, shown);
+    std::shared_ptr<const EvaluatedScene> without = shownAtStep(scene, shown);
+    if (!hidden.count("notes") || without->effectsNote.empty())
+        return without;
+    auto noteless = std::make_shared<EvaluatedScene>(*without);
+    noteless->effectsNote.clear();
+    return noteless;
 }
 
 } // namespace
@@ -304,7 +309,7 @@ std::vector<std::string> hideNames()
     std::vector<std::string> names;
     for (const auto& [element, name] : lessonElementNames())
         names.emplace_back(name);
-    names.insert(names.end(), {"labels", "legend", "caption"});
+    names.insert(names.end(), {"labels", "legend", "caption", "ticks", "notes"});
     return names;
 }
 
@@ -480,6 +485,7 @@ std::vector<fs::path> exportStages(const std::shared_ptr<const EvaluatedScene>& 
         OffscreenPainter offscreen(evaluated, options.width, options.height, options.scale, options.theme,
                                    options.transparent, options.textScale / 100.0);
         offscreen.painter->setLegendPlace(options.legend);
+        offscreen.painter->setTicksAndNotesShown(!options.hidden.count("ticks"), !options.hidden.count("notes"));
         offscreen.painter->orbit(0, 0, options.zoom);
         const StageFramings framing = stageFramings(*evaluated, options.framing);
         SceneOutput output{scene, options, {}, staging.path(), step}; // the page draws the scene whole

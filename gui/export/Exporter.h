@@ -45,7 +45,8 @@ struct ExportOptions {
     // for side-by-side comparison of sizes; per-stage frames each on its own.
     FramingMode framing = FramingMode::Together;
     // What the pictures leave out (--hide): the elements by the names a lesson step's `hide` takes,
-    // "labels", "legend" and "caption".
+    // "labels", "legend", "caption", "ticks" (the grey axes' ticks and numbers) and "notes" (the effects'
+    // note and the notice of labels left out for room).
     std::set<std::string> hidden;
     LegendPlace legend = LegendPlace::Best;
     double zoom = 1; // the subject this many times larger than framed, about its center

@@ -400,6 +400,8 @@ FigureView ScenePainter::figureView() const
     view.fontSize = labelSize_;
     view.minFontSize = minFontSize();
     view.subject = subject_;
+    view.ticks = ticksShown_;
+    view.notes = notesShown_;
     view.subjectShown = subjectShown_;
     view.legendPlace = legendPlace_;
     view.lineScale = lineScale_;
@@ -576,7 +578,7 @@ void ScenePainter::frameOn(const Framing& framing)
         subjectShown_ = subjectOutline(camera, framing, true);
     }
     // The fixed axes run across everything framed, with their ticks and labels.
-    const FrameMarks marks = frameMarks(frameExtent(framing));
+    const FrameMarks marks = frameMarks(frameExtent(framing), ticksShown_);
     static_cast<vtkPolyDataMapper*>(frameAxes_->GetMapper())->SetInputData(linesData(marks.lines));
     const bool sameTexts = marks.labels.size() == frameLabelTexts_.size() &&
                            std::equal(marks.labels.begin(), marks.labels.end(), frameLabelTexts_.begin(),
@@ -639,6 +641,13 @@ ScenePainter::Orbit ScenePainter::orbitAngles() const
 void ScenePainter::setLegendPlace(LegendPlace place)
 {
     legendPlace_ = place;
+}
+
+void ScenePainter::setTicksAndNotesShown(bool ticks, bool notes)
+{
+    ticksShown_ = ticks;
+    notesShown_ = notes;
+    frameOn(framed_); // the axes' marks anew
 }
 
 void ScenePainter::setProjectedLegendPlace(LegendPlace place)

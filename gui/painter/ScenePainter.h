@@ -97,6 +97,8 @@ public:
     // Where the world view's legend goes, and the projected view's (the picture's layout: layoutPicture).
     void setLegendPlace(LegendPlace place);
     void setProjectedLegendPlace(LegendPlace place);
+    // Whether the fixed axes' ticks and numbers are drawn, and the notice of labels left out for room.
+    void setTicksAndNotesShown(bool ticks, bool notes);
     // Turns the world view's camera about its focal point, in degrees (yaw
     // about the view's up, pitch about its right, as the web page turns) and
     // zooms it, as a lesson step asks; later framing keeps both.
@@ -206,6 +208,7 @@ private:
     PictureLayoutCache layoutCache_;
     std::vector<Vec2<double>> subject_, subjectShown_; // the framed subject's outline, for the text's layout (subjectOutline)
     LegendPlace legendPlace_ = LegendPlace::Best;
+    bool ticksShown_ = true, notesShown_ = true;
     Mat4<double> shownMatrix_ = Mat4<double>::Identity();
 };
 

@@ -227,7 +227,7 @@ std::array<Vec3d, 2> frameAxis(const Eigen::AlignedBox<double, 3>& extent, int a
     return {extent.min()[axis] * along, extent.max()[axis] * along};
 }
 
-FrameMarks frameMarks(const Eigen::AlignedBox<double, 3>& extent)
+FrameMarks frameMarks(const Eigen::AlignedBox<double, 3>& extent, bool ticks)
 {
     FrameMarks marks;
     const double reach = extent.isEmpty() ? 0 : extent.sizes().maxCoeff();
@@ -251,7 +251,7 @@ FrameMarks frameMarks(const Eigen::AlignedBox<double, 3>& extent)
         marks.lines.insert(marks.lines.end(), {from, to});
         marks.labels.push_back({Element::Frame, names[axis], to, true});
         const double low = extent.min()[axis], high = extent.max()[axis];
-        for (int j = int(std::ceil(low / step * 0.999)); step * j <= 0.999 * high; ++j) {
+        for (int j = int(std::ceil(low / step * 0.999)); ticks && step * j <= 0.999 * high; ++j) {
             if (j == 0)
                 continue;
             const Vec3d at = tick(j) * along;
@@ -418,10 +418,10 @@ PictureLayout layoutPicture(int width, int height, const PictureText& text, cons
     sizes.push_back(std::max(1.0, std::min(text.fontSize, text.minFontSize)));
     // The legend beside the stage (top right), below it (bottom right), or inside the stage's room in a
     // corner the subject leaves free: where asked, else where the subject draws largest.
-    std::vector<LegendPlace> places = {text.legendPlace};
-    if (text.legendPlace == LegendPlace::Best)
-        places = subjectKnown ? std::vector<LegendPlace>{LegendPlace::Beside, LegendPlace::Below, LegendPlace::Inside}
-                              : std::vector<LegendPlace>{LegendPlace::Beside, LegendPlace::Below};
+    const std::vector<LegendPlace> anywhere =
+        subjectKnown ? std::vector<LegendPlace>{LegendPlace::Beside, LegendPlace::Below, LegendPlace::Inside}
+                     : std::vector<LegendPlace>{LegendPlace::Beside, LegendPlace::Below};
+    std::vector<LegendPlace> places = text.legendPlace == LegendPlace::Best ? anywhere : std::vector<LegendPlace>{text.legendPlace};
     // At one size, the legend put at `where`: the layout, or none where it does not fit.
     auto arrange = [&](double size, LegendPlace where, const LegendLayout& rows, double bottom) -> std::optional<PictureLayout> {
         PictureLayout l = layout;
@@ -501,7 +501,10 @@ PictureLayout layoutPicture(int width, int height, const PictureText& text, cons
         }
         return false;
     };
-    if (text.legend.empty() || text.legendPlace == LegendPlace::None || !attempt(true))
+    // A legend that fits nowhere at any size is left out; one that does not fit where asked goes where it fits.
+    const bool placed = !text.legend.empty() && text.legendPlace != LegendPlace::None &&
+                        (attempt(true) || (places != anywhere && (places = anywhere, attempt(true))));
+    if (!placed)
         attempt(false);
     if (!(layout.scene.max.x() - layout.scene.min.x() > 0.2 * width && layout.scene.max.y() - layout.scene.min.y() > 0.2 * height))
         layout.scene = {Vec2<double>::Zero(), Vec2<double>(width, height)}; // no room apart: the whole picture
@@ -835,7 +838,7 @@ LabelObstacles labelObstacles(const StageShown& stage, const FigureView& view, c
             obstacles.objects.push_back(convexHull(std::move(outline)));
         }
     }
-    const std::vector<Vec3d> axes = frameMarks(view.frameExtent).lines;
+    const std::vector<Vec3d> axes = frameMarks(view.frameExtent, view.ticks).lines;
     for (std::size_t k = 0; k + 1 < axes.size(); k += 2) {
         const auto a = view.pixel(axes[k]), b = view.pixel(axes[k + 1]);
         if (a && b)
@@ -922,7 +925,7 @@ SceneLabels placeSceneLabels(const StageShown& stage, const FigureView& view, co
     };
     std::vector<std::optional<PlacedLabel>> placed = placeLabels(requests, obstacles, view.width, view.height);
     SceneLabels result;
-    if (const std::string first = notice(placed, false); !first.empty()) {
+    if (const std::string first = view.notes ? notice(placed, false) : ""; !first.empty()) {
         // In the bottom right corner; else right above what is reserved at the bottom (the effects'
         // note), at the right or the left; else below the caption. Nowhere free: not said.
         constexpr double kEdge = 5;
@@ -1024,7 +1027,7 @@ Figure drawFigure(const StageShown& stage, const FigureView& view, const LabelMe
             add(p.element, true, opacity, throughView(stage, view, m, corners, true, !p.canonical));
         }
     }
-    const FrameMarks frame = frameMarks(view.frameExtent);
+    const FrameMarks frame = frameMarks(view.frameExtent, view.ticks);
     {
         const std::vector<Vec3d>& axes = frame.lines;
         static const Mat4<double> identity = Mat4<double>::Identity();

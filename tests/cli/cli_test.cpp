@@ -238,8 +238,9 @@ TEST(Cli, ExportLeavesOutWhatItIsAsked)
         std::ifstream in(out / "04-sh-per.svg");
         return std::string(std::istreambuf_iterator<char>(in), {});
     };
-    const std::string whole = svgOf(""), bare = svgOf("--hide legend,caption,labels --legend beside --zoom 1.5");
-    for (const char* text : {"projectors", "shear so that", "PRP"}) { // a legend's line, the caption, a label
+    const std::string whole = svgOf(""), bare = svgOf("--hide legend,caption,labels,ticks,notes --legend beside --zoom 1.5");
+    // A legend's line, the caption, a label, a tick number, the notice of labels left out.
+    for (const char* text : {"projectors", "shear so that", "PRP", "\u221220", "left out"}) {
         EXPECT_NE(whole.find(text), std::string::npos) << text;
         EXPECT_EQ(bare.find(text), std::string::npos) << text;
     }

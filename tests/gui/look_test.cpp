@@ -416,7 +416,7 @@ private slots:
     // View ▸ World View Legend puts the legend where it is asked, hides it, and the choice is kept.
     void theLegendGoesWhereTheViewMenuSays()
     {
-        auto window = openWindow(kScenes + "/house.json", {1280, 800});
+        auto window = openWindow(kScenes + "/house.json", {1600, 1000});
         QVERIFY(window);
         const auto restore = qScopeGuard([] { QSettings().remove("worldLegend"); });
         window->stepper()->goToStage(4, false);

@@ -324,6 +324,11 @@ TEST(PictureLayout, TheLegendGoesWhereItCostsTheSubjectLeast)
     const PictureLayout none = layoutPicture(1280, 720, text, textMeasure);
     EXPECT_TRUE(none.legend.isEmpty());
     EXPECT_EQ(none.scene.max.x(), 1280);
+    // Asked below a stage too short to leave room under it: beside it, where it fits.
+    text.legendPlace = LegendPlace::Below;
+    const PictureLayout low = layoutPicture(1280, 330, text, textMeasure);
+    ASSERT_FALSE(low.legend.isEmpty());
+    EXPECT_LE(low.scene.max.x(), low.legend.min.x());
     for (const LegendPlace place : {LegendPlace::Best, LegendPlace::Beside, LegendPlace::Below, LegendPlace::Inside, LegendPlace::None})
         EXPECT_EQ(legendPlaceNamed(legendPlaceName(place)), place);
 }

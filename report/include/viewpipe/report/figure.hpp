@@ -79,6 +79,8 @@ struct FigureView {
     Mat4<double> camera = Mat4<double>::Identity(); // stage coordinates -> the picture's clip coordinates
     int width = 1280, height = 720;                 // pixels
     Eigen::AlignedBox<double, 3> frameExtent; // where the fixed axes run along x, y and z (empty: none)
+    bool ticks = true; // the fixed axes' ticks and their numbers drawn (export --hide ticks)
+    bool notes = true; // the notice of labels left out for room said (export --hide notes)
     double fontSize = 20;   // pixels
     double minFontSize = 20; // where room runs out, the caption and legend may shrink to this (PictureText)
     // What its text was laid out for (PictureText): the subject's outline, and where the legend was asked to go.
@@ -149,7 +151,8 @@ struct PictureText {
 // it, or all of it with the legend inside in a corner the subject leaves free
 // (Inside, where asked: the top right corner if none is). Best takes the
 // place where the subject draws largest (beside or below where its outline is
-// not known: the larger room).
+// not known: the larger room); a place asked for where the legend does not
+// fit, the best of those where it does.
 struct PictureLayout {
     std::vector<std::string> captionLines, noteLines;
     Box2 caption, legend, note, scene;
@@ -258,12 +261,13 @@ SceneLabels placeSceneLabels(const StageShown& stage, const FigureView& view, co
 // The fixed axes of the coordinates a stage maps into, running through the
 // origin across `extent`: the axes and their ticks (end points by pairs) and
 // the labels naming them and numbering the ticks, all in the stage's
-// coordinates. An axis the extent gives no length is left out.
+// coordinates. An axis the extent gives no length is left out; without
+// `ticks`, the axes and their names alone.
 struct FrameMarks {
     std::vector<Vec3<double>> lines;
     std::vector<Label> labels;
 };
-FrameMarks frameMarks(const Eigen::AlignedBox<double, 3>& extent);
+FrameMarks frameMarks(const Eigen::AlignedBox<double, 3>& extent, bool ticks = true);
 // Where fixed axis `axis` (0: x, 1: y, 2: z) runs across `extent`: its two ends.
 std::array<Vec3<double>, 2> frameAxis(const Eigen::AlignedBox<double, 3>& extent, int axis);
 
