@@ -146,7 +146,7 @@ void paint(QPainter& painter, const Figure& figure, const VectorFigure& f)
         QPolygonF polygon;
         for (const Vec2<double>& p : s.points)
             polygon << QPointF(p.x(), p.y());
-        const QColor c = qtColor(styledColor(s.element, s.surface, f.theme), s.opacity);
+        const QColor c = qtColor(s.color.value_or(styledColor(s.element, s.surface, f.theme)), s.opacity);
         if (s.surface) {
             painter.setPen(Qt::NoPen);
             painter.setBrush(c);

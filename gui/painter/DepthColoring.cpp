@@ -10,8 +10,6 @@
 #include <vtkPolyDataMapper.h>
 #include <vtkTriangleFilter.h>
 
-#include <algorithm>
-#include <cmath>
 #include <limits>
 
 #include "VtkGeometry.h"
@@ -60,15 +58,10 @@ vtkSmartPointer<vtkLookupTable> bandColors(const DepthBands& bands)
     table->SetNumberOfTableValues(bands.count);
     table->SetTableRange(bands.first, bands.first + bands.count * bands.levelsPerBand);
     for (int k = 0; k < bands.count; ++k) {
-        const double t = bands.count > 1 ? 4.0 * k / (bands.count - 1) : 0;
-        const std::size_t i = std::size_t(std::min(int(t), 3));
-        const double f = t - double(i), shade = k % 2 ? 0.72 : 1.0;
-        const Rgb& a = kBandRamp[i];
-        const Rgb& b = kBandRamp[i + 1];
-        table->SetTableValue(k, shade * (a.r + f * (b.r - a.r)), shade * (a.g + f * (b.g - a.g)),
-                             shade * (a.b + f * (b.b - a.b)), 1.0);
+        const Rgb c = bandColor(bands, k);
+        table->SetTableValue(k, c.r, c.g, c.b, 1.0);
     }
-    table->SetNanColor(0.5, 0.5, 0.5, 0.25);
+    table->SetNanColor(kNoBandColor.r, kNoBandColor.g, kNoBandColor.b, kNoBandOpacity);
     return table;
 }
 

@@ -23,7 +23,7 @@ namespace viewpipe::gui {
 vtkSmartPointer<vtkPolyData> depthLevels(const std::shared_ptr<const PolygonMesh>& faces, const Pipeline<double>& pipeline,
                                          const DepthOptions& options);
 
-// Alternating light and dark steps along the band ramp, so that neighbouring bands always differ.
+// The bands' colors (bandColor) by level, grey where the buffer stores nothing.
 vtkSmartPointer<vtkLookupTable> bandColors(const DepthBands& bands);
 
 // Each pixel of the actor's faces takes its band's color: sharp edges between bands.

@@ -8,6 +8,7 @@
 #include <array>
 #include <cmath>
 #include <limits>
+#include <numeric>
 #include <sstream>
 #include <tuple>
 
@@ -991,6 +992,80 @@ Label tracedLabel(const Vec3<double>& point)
     return Label{Element::Traced, "traced", point};
 }
 
+namespace {
+
+// Where the level the depth buffer stores passes from one of the scene's bands
+// to the next: planes in world coordinates, as the level changes with the
+// window depth alone (an affine function of z / w in clip coordinates).
+std::vector<Vec4d> bandBoundaries(const EvaluatedScene& scene)
+{
+    const DepthBands& bands = *scene.bands;
+    const DepthOptions& options = *scene.scene.effects.depth;
+    const ClipVolume volume = scene.pipeline.clipVolume;
+    const double at0 = windowDepth(Vec4d(0, 0, 0, 1), volume), slope = windowDepth(Vec4d(0, 0, 1, 1), volume) - at0;
+    const Mat4<double> clipT = scene.pipeline.clipMatrix().transpose();
+    std::vector<Vec4d> planes;
+    for (int k = 1; k < bands.count; ++k) {
+        const double level = bands.first + k * bands.levelsPerBand;
+        // The window depth where the stored level reaches band k's first: levels run one way along the depth.
+        const bool reachedAtNear = depthLevel(0, options) >= level;
+        double low = 0, high = 1;
+        for (int step = 0; step < 60; ++step) {
+            const double middle = (low + high) / 2;
+            ((depthLevel(middle, options) >= level) != reachedAtNear ? high : low) = middle;
+        }
+        planes.push_back(clipT * Vec4d(0, 0, 1, -(high - at0) / slope));
+    }
+    return planes;
+}
+
+// A face cut along the band boundaries it crosses: each piece lies in one band.
+std::vector<std::vector<Vec3d>> bandPieces(const std::vector<Vec3d>& face, const std::vector<Vec4d>& boundaries)
+{
+    std::vector<std::vector<Vec4d>> pieces(1);
+    for (const Vec3d& p : face)
+        pieces[0].push_back(p.homogeneous());
+    for (const Vec4d& plane : boundaries) {
+        std::vector<std::vector<Vec4d>> cut;
+        for (const std::vector<Vec4d>& piece : pieces) {
+            const auto [low, high] = std::minmax_element(piece.begin(), piece.end(), [&](const Vec4d& a, const Vec4d& b) {
+                return plane.dot(a) < plane.dot(b);
+            });
+            if (plane.dot(*low) >= 0 || plane.dot(*high) <= 0) {
+                cut.push_back(piece);
+                continue;
+            }
+            for (const Vec4d& side : {plane, Vec4d(-plane)})
+                if (std::vector<Vec4d> part = clipPolygon(piece, side, true); part.size() >= 3)
+                    cut.push_back(std::move(part));
+        }
+        pieces = std::move(cut);
+    }
+    std::vector<std::vector<Vec3d>> result;
+    for (const std::vector<Vec4d>& piece : pieces) {
+        result.emplace_back();
+        for (const Vec4d& p : piece)
+            result.back().push_back(p.head<3>() / p.w());
+    }
+    return result;
+}
+
+// A piece of a depth-colored face in its band's color (the level stored at its center), grey and faint where the
+// buffer stores nothing, as the painter colors each pixel.
+void colorByBand(FigureShape& shape, const EvaluatedScene& scene, const std::vector<Vec3d>& piece)
+{
+    const Vec3d center = std::accumulate(piece.begin(), piece.end(), Vec3d(Vec3d::Zero())) / double(piece.size());
+    if (const std::optional<double> level =
+            depthLevelAt(scene.pipeline.clipMatrix(), scene.pipeline.clipVolume, center, *scene.scene.effects.depth)) {
+        shape.color = bandColor(*scene.bands, bandOf(*scene.bands, *level));
+    } else {
+        shape.color = kNoBandColor;
+        shape.opacity *= kNoBandOpacity;
+    }
+}
+
+} // namespace
+
 Figure drawFigure(const StageShown& stage, const FigureView& view, const LabelMeasure& measure,
                   const std::vector<Box2>& reserved)
 {
@@ -1008,6 +1083,7 @@ Figure drawFigure(const StageShown& stage, const FigureView& view, const LabelMe
         figure.shapes.push_back({element, surface, opacity, view.lineScale * lineWidthOf(element, surface) * widthScale,
                                  flat(pixels), meanDepth(pixels) - bias});
     };
+    const std::vector<Vec4d> bandBounds = stage.scene->bands ? bandBoundaries(*stage.scene) : std::vector<Vec4d>();
     for (const Primitive& p : stage.scene->primitives) {
         if (!stage.draws(p))
             continue;
@@ -1019,12 +1095,22 @@ Figure drawFigure(const StageShown& stage, const FigureView& view, const LabelMe
                     p.widthScale);
             continue;
         }
+        const bool banded = p.depthColored && stage.scene->bands;
         std::vector<Vec3d> corners;
         for (const auto& face : p.faces->faces) {
             corners.clear();
             for (int v : face)
                 corners.push_back(p.faces->vertices[std::size_t(v)]);
-            add(p.element, true, opacity, throughView(stage, view, m, corners, true, !p.canonical));
+            if (!banded) {
+                add(p.element, true, opacity, throughView(stage, view, m, corners, true, !p.canonical));
+                continue;
+            }
+            for (const std::vector<Vec3d>& piece : bandPieces(corners, bandBounds)) {
+                const std::size_t before = figure.shapes.size();
+                add(p.element, true, opacity, throughView(stage, view, m, piece, true, !p.canonical));
+                if (figure.shapes.size() > before)
+                    colorByBand(figure.shapes.back(), *stage.scene, piece);
+            }
         }
     }
     const FrameMarks frame = frameMarks(view.frameExtent, view.ticks);

@@ -15,6 +15,21 @@ const std::array<Rgb, 4> kRasterPalette = {{{90 / 255.0, 140 / 255.0, 230 / 255.
                                             {80 / 255.0, 190 / 255.0, 110 / 255.0},
                                             {200 / 255.0, 90 / 255.0, 200 / 255.0}}};
 
+Rgb bandColor(const DepthBands& bands, int k)
+{
+    const double t = bands.count > 1 ? 4.0 * k / (bands.count - 1) : 0;
+    const std::size_t i = std::size_t(std::min(int(t), 3));
+    const double f = t - double(i), shade = k % 2 ? 0.72 : 1.0;
+    const Rgb& a = kBandRamp[i];
+    const Rgb& b = kBandRamp[i + 1];
+    return {shade * (a.r + f * (b.r - a.r)), shade * (a.g + f * (b.g - a.g)), shade * (a.b + f * (b.b - a.b))};
+}
+
+int bandOf(const DepthBands& bands, double level)
+{
+    return std::clamp(int(std::floor((level - bands.first) / bands.levelsPerBand)), 0, bands.count - 1);
+}
+
 Rgb faceColor(Theme theme)
 {
     return theme == Theme::Dark ? Rgb{0.45, 0.55, 0.80} : Rgb{0.62, 0.70, 0.90};

@@ -237,6 +237,10 @@ std::string tikzFigure(const Figure& figure, Theme theme)
     for (const FigureShape& s : figure.shapes) {
         const std::string key = elementKey(s.element);
         tex << (s.surface ? "\\fill[vp " + key + " face" : "\\draw[vp " + key);
+        if (s.color) { // a depth band's
+            const std::array<unsigned char, 3> c = toBytes(*s.color);
+            tex << ", fill={rgb,255:red," << int(c[0]) << ";green," << int(c[1]) << ";blue," << int(c[2]) << "}";
+        }
         if (s.opacity < 1)
             tex << ", opacity=" << number(s.opacity * 100) << "/100"; // whole percent: TeX parses it
         tex << "] ";

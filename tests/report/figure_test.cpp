@@ -8,6 +8,7 @@
 #include <filesystem>
 #include <random>
 #include <regex>
+#include <set>
 
 #include "build_paths.h"
 #include "viewpipe/animation.hpp"
@@ -592,6 +593,47 @@ TEST(Figure, TranslationsShowWhereThingsWere)
             return m->element == g->element && (m->points[0] - g->points[0]).norm() < 1e-6 &&
                    (m->points[1] - g->points[1]).norm() < 1e-6;
         }));
+}
+
+// The depth effect's faces take their band's color in the figure, as the painter colors them (bandColor),
+// cut where the band changes; z-fighting faces are drawn too. A scene without the effect keeps its face color.
+TEST(Figure, DepthBandsColorTheFacesAsThePainterDoes)
+{
+    const auto scene = evaluateScene(loadScene(fs::path(viewpipe::build::dataDir) / "scenes/depth-corridor.json"));
+    ASSERT_TRUE(scene->bands);
+    const auto& stages = scene->pipeline.stages;
+    const StageShown stage(*scene, drawnAt(stages, int(stages.size())), 0);
+    const Figure figure = drawFigure(stage, viewOf(stage), measure, {});
+    std::set<int> bands;
+    std::size_t colored = 0, fighting = 0;
+    for (const FigureShape& s : figure.shapes) {
+        fighting += s.surface && s.element == Element::ZFighting;
+        if (!s.color)
+            continue;
+        ++colored;
+        EXPECT_TRUE(s.surface && s.element == Element::Objects);
+        int band = -1;
+        for (int k = 0; k < scene->bands->count; ++k) {
+            const Rgb c = bandColor(*scene->bands, k);
+            if (c.r == s.color->r && c.g == s.color->g && c.b == s.color->b)
+                band = k;
+        }
+        EXPECT_GE(band, 0) << "a color not of the bands";
+        bands.insert(band);
+    }
+    EXPECT_GT(colored, 80u); // the 80 faces in front, some cut where their band changes
+    EXPECT_GE(bands.size(), 4u);
+    EXPECT_GT(fighting, 0u);
+    const std::string tex = tikzFigure(figure, Theme::Light);
+    std::size_t written = 0;
+    for (std::size_t at = tex.find("fill={rgb,255:"); at != std::string::npos; at = tex.find("fill={rgb,255:", at + 1))
+        ++written;
+    EXPECT_EQ(written, colored);
+
+    const auto house = evaluateScene(loadScene(fs::path(viewpipe::build::dataDir) / "scenes/house.json"));
+    const StageShown plain(*house, Mat4<double>::Identity(), 0);
+    for (const FigureShape& s : drawFigure(plain, viewOf(plain), measure, {}).shapes)
+        EXPECT_FALSE(s.color);
 }
 
 TEST(Tikz, LabelsAreTheirMathAndEscapedText)

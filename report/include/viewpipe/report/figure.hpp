@@ -15,6 +15,7 @@
 
 #include "viewpipe/evaluated_scene.hpp"
 #include "viewpipe/math_text.hpp"
+#include "viewpipe/report/style.hpp"
 
 namespace viewpipe {
 
@@ -279,6 +280,7 @@ struct FigureShape {
     double lineWidth;   // pixels
     std::vector<Vec2<double>> points;
     double depth;       // for sorting: larger is farther
+    std::optional<Rgb> color = std::nullopt; // its own where the element's is not: a face's depth band (bandColor)
 };
 
 // The markers that show at a stage, as filled polygons in pixels: a dot a

@@ -49,6 +49,13 @@ std::array<unsigned char, 3> toBytes(const Rgb& color);
 // The depth bands' ramp from near (yellow) to far (violet); no red or orange
 // in it, which mark z-fighting.
 extern const std::array<Rgb, 5> kBandRamp;
+// Band k's color: alternating light and dark steps along the ramp, so that neighbouring bands always differ.
+Rgb bandColor(const DepthBands& bands, int k);
+// The band a level lies in, the first or last where it lies beyond them (as a lookup table over the bands maps it).
+int bandOf(const DepthBands& bands, double level);
+// Where the depth buffer stores nothing (the point lies outside the volume): grey, a quarter opaque.
+constexpr Rgb kNoBandColor{0.5, 0.5, 0.5};
+constexpr double kNoBandOpacity = 0.25;
 // The raster effect's pixels, one color per object.
 extern const std::array<Rgb, 4> kRasterPalette;
 
