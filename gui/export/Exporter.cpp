@@ -494,7 +494,8 @@ std::vector<fs::path> exportStages(const std::shared_ptr<const EvaluatedScene>& 
             const std::string caption = pictureCaption(*evaluated, k, options);
             const StageShown shown = showStageAtRest(offscreen, *evaluated, k, caption, framing);
             const StagePicture picture{offscreen.window, options.transparent,
-                                       VectorFigure{&shown, offscreen.painter->figureView(), caption, options.theme}};
+                                       VectorFigure{&shown, offscreen.painter->figureView(), caption,
+                                                    offscreen.painter->placedLabels(), options.theme}};
             for (const Format* format : formats)
                 if (format->writeStage) {
                     const std::string file = base + format->suffix;

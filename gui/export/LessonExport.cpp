@@ -35,10 +35,11 @@ void writeStepFigure(const OffscreenPainter& offscreen, const std::shared_ptr<co
     painter.setScene(scene);
     painter.resetView();
     painter.orbit(step.yaw, step.pitch, step.zoom);
+    painter.markTraced(traced); // placed with the rest
     const std::string caption = named ? stageCaption(*scene, std::size_t(stage), StageText::Heading) : std::string();
     StageShown shown = showStageAtRest(offscreen, *scene, stage, caption, {});
     shown.traced = traced;
-    writeVectorFigure({&shown, painter.figureView(), caption, theme}, "pdf", file);
+    writeVectorFigure({&shown, painter.figureView(), caption, painter.placedLabels(), theme}, "pdf", file);
 }
 
 // What pdflatex's log says went wrong ("! ..." and the lines after it), and

@@ -198,9 +198,7 @@ Figure flatFigure(const VectorFigure& f)
 {
     ensureGuiApplication();
     const Layout layout = layoutOf(f);
-    // Measured as the PNG's painter measures them: both pictures place their labels alike.
-    const LabelMeasure measure = labelMeasure(figureFontMeasure(), f.view.fontSize);
-    Figure figure = drawFigure(*f.stage, f.view, measure, textBoxes(layout.picture));
+    Figure figure = drawFigure(*f.stage, f.view, f.labels);
     figure.layout = layout.picture;
     figure.legend = layout.entries;
     return figure;

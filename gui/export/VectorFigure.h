@@ -3,7 +3,7 @@
 // A stage's flat figure as true vector graphics through Qt's QSvgGenerator
 // and QPdfWriter: lines as paths, faces as filled polygons back to front,
 // labels, caption and legend as text (the PDF embeds its font). The same
-// palette, framing and label placement as the PNG of the stage.
+// palette, framing and labels as the PNG of the stage.
 
 #include <filesystem>
 #include <string>
@@ -17,6 +17,7 @@ struct VectorFigure {
     const StageShown* stage;
     FigureView view;
     std::string caption;
+    SceneLabels labels; // where the PNG's painter placed them: every format places them alike
     Theme theme = Theme::Light;
 };
 

@@ -447,6 +447,7 @@ void ScenePainter::placeLabels()
     for (Label& label : frameLabels_)
         label.actor->SetVisibility(false);
     leftOut_.actor->SetVisibility(false);
+    placed_ = {};
     if (scene_) {
         std::vector<Marker> markers = scene_->markers;
         if (tracedMarker_)
@@ -481,13 +482,13 @@ void ScenePainter::placeLabelsOf(const StageShown& stage, const FigureView& view
     for (const Box2& box : textBoxes_)
         if (!box.isEmpty())
             reserved.push_back(box);
-    const SceneLabels scene = placeSceneLabels(stage, view, texts, markers, measure, reserved);
-    if (scene.leftOut) {
-        leftOut_.actor->SetInput(scene.leftOut->text.c_str());
-        leftOut_.actor->SetPosition(scene.leftOut->box.min.x(), view.height - scene.leftOut->box.max.y());
+    placed_ = placeSceneLabels(stage, view, texts, markers, measure, reserved);
+    if (placed_.leftOut) {
+        leftOut_.actor->SetInput(placed_.leftOut->text.c_str());
+        leftOut_.actor->SetPosition(placed_.leftOut->box.min.x(), view.height - placed_.leftOut->box.max.y());
         leftOut_.actor->SetVisibility(true);
     }
-    const auto& placed = scene.placed;
+    const auto& placed = placed_.placed;
     for (std::size_t k = 0; k < all.size(); ++k) {
         if (!placed[k])
             continue;

@@ -118,6 +118,8 @@ public:
 
     // How the world view sees the stage shown, for figures drawn as it is.
     FigureView figureView() const;
+    // Where the last frame placed the labels (none while text is hidden): figures drawn as it is place them there.
+    const SceneLabels& placedLabels() const { return placed_; }
 
 private:
     struct Layer {
@@ -185,6 +187,7 @@ private:
     // "left out for room: ...", set as a tick number (placeSceneLabels).
     viewpipe::Label leftOutText_{Element::Frame, "", Vec3<double>::Zero(), true, true};
     Label leftOut_;
+    SceneLabels placed_;
     // The traced vertex's marker and label (not part of the scene).
     std::optional<Marker> tracedMarker_;
     std::unique_ptr<viewpipe::Label> tracedLabel_;

@@ -1064,10 +1064,18 @@ void colorByBand(FigureShape& shape, const EvaluatedScene& scene, const std::vec
     }
 }
 
+// The points a stage marks: the scene's and the traced one.
+std::vector<Marker> stageMarkers(const StageShown& stage)
+{
+    std::vector<Marker> markers = stage.scene->markers;
+    if (stage.traced)
+        markers.push_back(tracedMarker(*stage.traced));
+    return markers;
+}
+
 } // namespace
 
-Figure drawFigure(const StageShown& stage, const FigureView& view, const LabelMeasure& measure,
-                  const std::vector<Box2>& reserved)
+Figure drawFigure(const StageShown& stage, const FigureView& view, const SceneLabels& labels)
 {
     Figure figure;
     figure.width = view.width;
@@ -1137,26 +1145,29 @@ Figure drawFigure(const StageShown& stage, const FigureView& view, const LabelMe
     std::stable_sort(figure.shapes.begin(), figure.shapes.end(), [](const FigureShape& a, const FigureShape& b) {
         return a.depth > b.depth || (a.depth == b.depth && a.surface && !b.surface);
     });
-    std::vector<Marker> markers = stage.scene->markers;
+    const std::vector<FigureShape> markerFaces = markerShapes(stage, view, stageMarkers(stage));
+    figure.shapes.insert(figure.shapes.end(), markerFaces.begin(), markerFaces.end()); // over everything
+    for (const std::optional<PlacedLabel>& label : labels.placed)
+        if (label)
+            figure.labels.push_back(*label);
+    if (labels.leftOut)
+        figure.labels.push_back(*labels.leftOut);
+    return figure;
+}
+
+Figure drawFigure(const StageShown& stage, const FigureView& view, const LabelMeasure& measure,
+                  const std::vector<Box2>& reserved)
+{
     std::vector<const Label*> labels;
     for (const Label& label : stage.scene->labels)
         labels.push_back(&label);
+    const FrameMarks frame = frameMarks(view.frameExtent);
     for (const Label& label : frame.labels)
         labels.push_back(&label);
     const std::optional<Label> traced = stage.traced ? std::optional<Label>(tracedLabel(*stage.traced)) : std::nullopt;
-    if (traced) {
-        markers.push_back(tracedMarker(*stage.traced));
+    if (traced)
         labels.push_back(&*traced);
-    }
-    const std::vector<FigureShape> markerFaces = markerShapes(stage, view, markers);
-    figure.shapes.insert(figure.shapes.end(), markerFaces.begin(), markerFaces.end()); // over everything
-    SceneLabels placed = placeSceneLabels(stage, view, labels, markers, measure, reserved);
-    for (std::optional<PlacedLabel>& label : placed.placed)
-        if (label)
-            figure.labels.push_back(std::move(*label));
-    if (placed.leftOut)
-        figure.labels.push_back(std::move(*placed.leftOut));
-    return figure;
+    return drawFigure(stage, view, placeSceneLabels(stage, view, labels, stageMarkers(stage), measure, reserved));
 }
 
 } // namespace viewpipe

@@ -5,7 +5,8 @@
 // poppler reads them). Every text inside the picture and on no other, no
 // leader across another, a text or the legend (in the PNG); at
 // 100 %, labels and captions at least 2.4 % of the width and every text at
-// least 1.8 % (8 pt and 6 pt when the picture is 12 cm wide).
+// least 1.8 % (8 pt and 6 pt when the picture is 12 cm wide); and the PNG,
+// SVG and TikZ of each placing and leaving out the same labels.
 
 #include <gtest/gtest.h>
 
@@ -19,6 +20,7 @@
 #include <filesystem>
 #include <map>
 #include <optional>
+#include <set>
 #include <string>
 #include <tuple>
 #include <vector>
@@ -265,7 +267,7 @@ TEST_P(ExportLayoutAt, EveryTextReadsInsideThePictureAndApart)
 
             // The SVG, y down.
             const fs::path svg = out / "figure.svg";
-            writeVectorFigure({&stage, offscreen.painter->figureView(), caption, Theme::Light}, "svg", svg);
+            writeVectorFigure({&stage, offscreen.painter->figureView(), caption, offscreen.painter->placedLabels(), Theme::Light}, "svg", svg);
             boxes.clear();
             for (const SvgText& t : svgTexts(svg)) {
                 if (t.continues) { // one box for the whole text
@@ -288,7 +290,7 @@ TEST_P(ExportLayoutAt, EveryTextReadsInsideThePictureAndApart)
             // writer on another device: checked where text is tightest, the small size at 200 %.
             if (shown.width <= 800 && shown.percent == 200) {
                 const fs::path pdf = out / "figure.pdf";
-                writeVectorFigure({&stage, offscreen.painter->figureView(), caption, Theme::Light}, "pdf", pdf);
+                writeVectorFigure({&stage, offscreen.painter->figureView(), caption, offscreen.painter->placedLabels(), Theme::Light}, "pdf", pdf);
                 std::array<double, 2> page{};
                 const auto words = pdfWords(pdf, page);
                 EXPECT_EQ(page, (std::array<double, 2>{double(shown.width), double(shown.height)})) << at << "PDF";
@@ -300,6 +302,87 @@ TEST_P(ExportLayoutAt, EveryTextReadsInsideThePictureAndApart)
     }
     EXPECT_GT(pictures, 100);
     EXPECT_GT(leaders, 100u);
+    if (!::testing::Test::HasFailure())
+        fs::remove_all(out);
+}
+
+// A label's text as the pictures show it, whatever writes it: its math's runs joined, without spaces (an SVG
+// writes each run as a text of its own, and drops a run that is only a space).
+std::string shownText(const std::string& text)
+{
+    std::string shown;
+    for (const MathRun& run : mathRuns(text))
+        shown += run.text;
+    shown.erase(std::remove(shown.begin(), shown.end(), ' '), shown.end());
+    return shown;
+}
+
+bool isLeftOutNotice(const std::string& shown)
+{
+    return shown.rfind("leftout", 0) == 0;
+}
+
+// One picture in every format: the PNG, the SVG and the TikZ of a stage place
+// the same labels and leave out the same (and say so alike). The PNG's are the
+// painter's text actors, the SVG's its text elements off the caption, legend
+// and note, the TikZ's the figure its writer writes.
+TEST_P(ExportLayoutAt, EveryFormatPlacesTheSameLabels)
+{
+    const Shown shown = GetParam();
+    const fs::path out = fs::temp_directory_path() / ("viewpipe-label-parity-" + std::to_string(::getpid()));
+    fs::create_directories(out);
+    int pictures = 0;
+    for (const auto& entry : fs::recursive_directory_iterator(fs::path(viewpipe::build::dataDir) / "scenes")) {
+        if (entry.path().extension() != ".json")
+            continue;
+        const auto scene = evaluateScene(loadScene(entry.path()));
+        const OffscreenPainter offscreen(scene, shown.width, shown.height, 1, Theme::Light, false, shown.percent / 100.0);
+        for (std::size_t k = 0; k <= scene->pipeline.stages.size(); ++k) {
+            const std::string at = where(entry.path(), int(k), shown);
+            const std::string caption = stageCaption(*scene, k, StageText::Heading);
+            const StageShown stage = showStageAtRest(offscreen, *scene, int(k), caption, {});
+            const VectorFigure vector{&stage, offscreen.painter->figureView(), caption, offscreen.painter->placedLabels(), Theme::Light};
+            // What a label may read: the scene's and the fixed axes' (a caption's line or a legend's entry may read the same).
+            std::set<std::string> names;
+            for (const Label& label : scene->labels)
+                names.insert(shownText(label.text));
+            for (const Label& label : frameMarks(vector.view.frameExtent).labels)
+                names.insert(shownText(label.text));
+            auto isLabel = [&](const std::string& text) { return names.count(text) || isLeftOutNotice(text); };
+
+            std::multiset<std::string> png, svg, tikz;
+            for (const DrawnText& t : drawnTexts(offscreen.renderer).texts)
+                if (isLabel(shownText(t.text)))
+                    png.insert(shownText(t.text));
+            const Figure figure = flatFigure(vector);
+            for (const PlacedLabel& label : figure.labels)
+                tikz.insert(shownText(label.text));
+            const fs::path file = out / "figure.svg";
+            writeVectorFigure(vector, "svg", file);
+            std::vector<SvgText> texts = svgTexts(file);
+            const std::vector<Box2> text = textBoxes(figure.layout);
+            for (std::size_t i = 0; i < texts.size();) {
+                std::string joined = texts[i].text;
+                const Vec2<double> start(texts[i].box[0], texts[i].box[2]);
+                for (++i; i < texts.size() && texts[i].continues; ++i)
+                    joined += texts[i].text;
+                joined.erase(std::remove(joined.begin(), joined.end(), ' '), joined.end());
+                const bool inText = std::any_of(text.begin(), text.end(), [&](const Box2& box) { return box.contains({start, start}); });
+                if (!inText && isLabel(joined))
+                    svg.insert(joined);
+            }
+            auto list = [](const std::multiset<std::string>& texts) {
+                std::string all;
+                for (const std::string& t : texts)
+                    all += " \"" + t + "\"";
+                return all;
+            };
+            EXPECT_EQ(svg, png) << at << "SVG:" << list(svg) << "\nPNG:" << list(png);
+            EXPECT_EQ(tikz, png) << at << "TikZ:" << list(tikz) << "\nPNG:" << list(png);
+            ++pictures;
+        }
+    }
+    EXPECT_GT(pictures, 100);
     if (!::testing::Test::HasFailure())
         fs::remove_all(out);
 }
@@ -394,7 +477,7 @@ TEST(ExportLayout, ThePageSeesEveryStageAsThePictureDoes)
             EXPECT_LT((rest.view - view).cwiseAbs().maxCoeff(), 1e-12 * view.cwiseAbs().maxCoeff()) << at << "\n" << rest.view << "\n\n" << view;
             EXPECT_LT((rest.projection - projection).cwiseAbs().maxCoeff(), 1e-9 * projection.cwiseAbs().maxCoeff())
                 << at << "\n" << rest.projection << "\n\n" << projection;
-            const Figure figure = flatFigure({&shown, offscreen.painter->figureView(), caption, Theme::Light});
+            const Figure figure = flatFigure({&shown, offscreen.painter->figureView(), caption, offscreen.painter->placedLabels(), Theme::Light});
             ASSERT_EQ(views.stages[k].labels.size(), figure.labels.size()) << at;
             for (std::size_t l = 0; l < figure.labels.size(); ++l) {
                 EXPECT_EQ(views.stages[k].labels[l].text, figure.labels[l].text) << at;

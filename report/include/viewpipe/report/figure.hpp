@@ -299,8 +299,12 @@ struct Figure {
     std::vector<const LegendEntry*> legend;
 };
 
-// The flat figure of a stage; `reserved`: boxes the writer keeps for its
-// caption and legend.
+// The flat figure of a stage with its labels where `labels` placed them
+// (placeSceneLabels: the painter's, so that the PNG and the figure agree).
+Figure drawFigure(const StageShown& stage, const FigureView& view, const SceneLabels& labels);
+// The same, its labels placed here: the stage's, the fixed axes' and the
+// traced point's, clear of `reserved` (boxes the writer keeps for its caption
+// and legend); for pictures no painter draws (the page).
 Figure drawFigure(const StageShown& stage, const FigureView& view, const LabelMeasure& measure,
                   const std::vector<Box2>& reserved);
 
