@@ -84,7 +84,7 @@ Layout layoutOf(const VectorFigure& f)
 {
     Layout layout;
     const FigureView& v = f.view;
-    const PictureText text = stagePictureText(*f.stage, f.caption, v.fontSize, v.minFontSize, v.subject, v.subjectShown, v.legendPlace);
+    const PictureText text = stagePictureText(*f.stage, f.caption, v.textSize, v.minFontSize, v.subject, v.subjectShown, v.legendPlace);
     layout.picture = layoutPicture(v.width, v.height, text, figureFontMeasure());
     if (!layout.picture.legend.isEmpty())
         layout.entries = text.legend;

@@ -398,6 +398,7 @@ FigureView ScenePainter::figureView() const
     view.height = world_->GetSize()[1];
     view.frameExtent = frameExtent(framed_);
     view.fontSize = labelSize_;
+    view.textSize = fontSize_;
     view.minFontSize = minFontSize();
     view.subject = subject_;
     view.ticks = ticksShown_;

@@ -150,6 +150,7 @@ Figure stageFigure(const EvaluatedScene& scene, const WorldMoment& moment, const
     view.height = o.height;
     view.frameExtent = frameExtent(moment.framing);
     view.fontSize = labelSizeIn(layout, o.fontSize); // the page sets each label to fit its box
+    view.textSize = o.fontSize;
     view.minFontSize = o.minFontSize;
     view.lineScale = o.lineScale;
     return drawFigure(stageShown(scene, moment), view, labelMeasure(measure, view.fontSize), textBoxes(layout));

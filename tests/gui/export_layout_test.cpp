@@ -323,9 +323,10 @@ bool isLeftOutNotice(const std::string& shown)
 }
 
 // One picture in every format: the PNG, the SVG and the TikZ of a stage place
-// the same labels and leave out the same (and say so alike). The PNG's are the
-// painter's text actors, the SVG's its text elements off the caption, legend
-// and note, the TikZ's the figure its writer writes.
+// the same labels and leave out the same (and say so alike), and set the same
+// caption and note lines and legend box. The PNG's labels are the painter's
+// text actors, the SVG's its text elements off the caption, legend and note,
+// the TikZ's the figure its writer writes.
 TEST_P(ExportLayoutAt, EveryFormatPlacesTheSameLabels)
 {
     const Shown shown = GetParam();
@@ -351,10 +352,28 @@ TEST_P(ExportLayoutAt, EveryFormatPlacesTheSameLabels)
             auto isLabel = [&](const std::string& text) { return names.count(text) || isLeftOutNotice(text); };
 
             std::multiset<std::string> png, svg, tikz;
-            for (const DrawnText& t : drawnTexts(offscreen.renderer).texts)
+            const DrawnTexts drawn = drawnTexts(offscreen.renderer);
+            for (const DrawnText& t : drawn.texts)
                 if (isLabel(shownText(t.text)))
                     png.insert(shownText(t.text));
             const Figure figure = flatFigure(vector);
+            // The caption, note and legend laid out as the PNG has them: its lines, and its legend's box (y up there).
+            for (const std::vector<std::string>* lines : {&figure.layout.captionLines, &figure.layout.noteLines}) {
+                std::string joined;
+                for (const std::string& line : *lines)
+                    joined += (joined.empty() ? "" : "\n") + line;
+                EXPECT_TRUE(joined.empty() || std::any_of(drawn.texts.begin(), drawn.texts.end(), [&](const DrawnText& t) {
+                    return t.text == joined;
+                })) << at << "the PNG has no text \"" << joined << "\"";
+            }
+            ASSERT_EQ(drawn.legend.has_value(), !figure.layout.legend.isEmpty()) << at;
+            if (drawn.legend) {
+                const std::array<double, 4>& l = *drawn.legend;
+                const Box2& box = figure.layout.legend;
+                const std::array<double, 4> expected = {box.min.x(), box.max.x(), shown.height - box.max.y(), shown.height - box.min.y()};
+                for (std::size_t c = 0; c < 4; ++c)
+                    EXPECT_NEAR(l[c], expected[c], 1) << at << "the legend's box";
+            }
             for (const PlacedLabel& label : figure.labels)
                 tikz.insert(shownText(label.text));
             const fs::path file = out / "figure.svg";

@@ -82,8 +82,10 @@ struct FigureView {
     Eigen::AlignedBox<double, 3> frameExtent; // where the fixed axes run along x, y and z (empty: none)
     bool ticks = true; // the fixed axes' ticks and their numbers drawn (export --hide ticks)
     bool notes = true; // the notice of labels left out for room said (export --hide notes)
-    double fontSize = 20;   // pixels
-    double minFontSize = 20; // where room runs out, the caption and legend may shrink to this (PictureText)
+    double fontSize = 20;   // pixels: the labels', no larger than the caption (labelSizeIn)
+    // The size its text was laid out at (PictureText::fontSize), and where room runs out, the smallest the
+    // caption and legend may shrink to.
+    double textSize = 20, minFontSize = 20;
     // What its text was laid out for (PictureText): the subject's outline, and where the legend was asked to go.
     std::vector<Vec2<double>> subject, subjectShown;
     LegendPlace legendPlace = LegendPlace::Best;
