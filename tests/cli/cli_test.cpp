@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <array>
+#include <cstdlib>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
@@ -231,6 +232,11 @@ TEST(Cli, ExportLeavesOutWhatItIsAsked)
     for (const std::string& option : {"--zoom 0", "--legend left", "--framing loose"})
         EXPECT_EQ(run("export " + kHouse + " --out " + out.string() + " " + option + " --quiet").exitCode, 2) << option;
 
+    // The export process ends with blocks VTK 9.1 never frees (rendering_tests says so too): under the
+    // sanitizers its memory errors are still caught, its leaks not reported.
+    const std::string asan = std::getenv("ASAN_OPTIONS") ? std::getenv("ASAN_OPTIONS") : "";
+    ::setenv("ASAN_OPTIONS", (asan + (asan.empty() ? "" : ":") + "detect_leaks=0").c_str(), 1);
+    const auto restore = [&] { ::setenv("ASAN_OPTIONS", asan.c_str(), 1); };
     auto svgOf = [&](const std::string& options) {
         std::filesystem::remove_all(out);
         const Result made = run("export " + kHouse + " --out " + out.string() + " --stages 4 --format svg --quiet " + options);
@@ -244,6 +250,7 @@ TEST(Cli, ExportLeavesOutWhatItIsAsked)
         EXPECT_NE(whole.find(text), std::string::npos) << text;
         EXPECT_EQ(bare.find(text), std::string::npos) << text;
     }
+    restore();
     std::filesystem::remove_all(out);
 }
 
