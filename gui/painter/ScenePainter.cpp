@@ -574,8 +574,16 @@ void ScenePainter::frameOn(const Framing& framing)
     viewpipe::frameOn(camera, framing, viewFit());
     setCamera(camera);
     framed_ = framing;
-    if (framing.blended.empty()) // at rest, or moving under one framing: while framings blend the text stays put
-    {
+    // At rest, or moving under one framing (while framings blend the text stays put); made anew only for
+    // another framing or direction: every frame of a step frames the same one.
+    const std::array<double, 14> outlined = {framing.box.min().x(), framing.box.min().y(), framing.box.min().z(),
+                                            framing.box.max().x(), framing.box.max().y(), framing.box.max().z(),
+                                            double(framing.points.size()), double(framing.shown.size()),
+                                            camera.position.x() - camera.focalPoint.x(), camera.position.y() - camera.focalPoint.y(),
+                                            camera.position.z() - camera.focalPoint.z(), camera.viewUp.x(), camera.viewUp.y(),
+                                            camera.viewUp.z()};
+    if (framing.blended.empty() && outlined != outlined_) {
+        outlined_ = outlined;
         subject_ = subjectOutline(camera, framing);
         subjectShown_ = subjectOutline(camera, framing, true);
     }

@@ -210,6 +210,7 @@ private:
     std::array<Box2, 3> textBoxes_; // textBoxesShown() as the last fitCaptions() measured it
     PictureLayoutCache layoutCache_;
     std::vector<Vec2<double>> subject_, subjectShown_; // the framed subject's outline, for the text's layout (subjectOutline)
+    std::array<double, 14> outlined_{}; // the framing's box and sizes and the camera's direction and up they are of
     LegendPlace legendPlace_ = LegendPlace::Best;
     bool ticksShown_ = true, notesShown_ = true;
     Mat4<double> shownMatrix_ = Mat4<double>::Identity();

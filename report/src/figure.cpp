@@ -111,23 +111,28 @@ bool segmentsCross(const Segment2& a, const Segment2& b, double margin)
     return t > ta && t < 1 - ta && u > ub && u < 1 - ub;
 }
 
+// Whether a point lies in a convex polygon (counter-clockwise where y runs up).
+bool insideConvex(const Vec2d& p, const std::vector<Vec2d>& polygon)
+{
+    if (polygon.size() < 3)
+        return false;
+    for (std::size_t k = 0; k < polygon.size(); ++k) {
+        const Vec2d a = polygon[k], b = polygon[(k + 1) % polygon.size()];
+        if ((b - a).x() * (p - a).y() - (b - a).y() * (p - a).x() < 0)
+            return false;
+    }
+    return true;
+}
+
 // The share of a box's area inside a convex polygon, sampled on a 5 x 5 grid.
 double shareInside(const Box2& box, const std::vector<Vec2d>& polygon)
 {
-    if (polygon.size() < 3)
-        return 0;
     int inside = 0;
     for (int i = 0; i < 5; ++i)
-        for (int j = 0; j < 5; ++j) {
-            const Vec2d p(box.min.x() + (i + 0.5) / 5 * (box.max.x() - box.min.x()),
-                          box.min.y() + (j + 0.5) / 5 * (box.max.y() - box.min.y()));
-            bool in = true;
-            for (std::size_t k = 0; k < polygon.size() && in; ++k) {
-                const Vec2d a = polygon[k], b = polygon[(k + 1) % polygon.size()];
-                in = (b - a).x() * (p - a).y() - (b - a).y() * (p - a).x() >= 0;
-            }
-            inside += in;
-        }
+        for (int j = 0; j < 5; ++j)
+            inside += insideConvex(Vec2d(box.min.x() + (i + 0.5) / 5 * (box.max.x() - box.min.x()),
+                                         box.min.y() + (j + 0.5) / 5 * (box.max.y() - box.min.y())),
+                                   polygon);
     return inside / 25.0;
 }
 
@@ -344,7 +349,7 @@ bool boxMeetsPolygon(const Box2& box, const std::vector<Vec2d>& polygon)
     for (std::size_t k = 0; k < polygon.size(); ++k)
         if (segmentCrossesBox({polygon[k], polygon[(k + 1) % polygon.size()]}, box))
             return true;
-    return polygon.size() >= 3 && shareInside({box.min, box.min}, polygon) > 0; // the box within the polygon
+    return insideConvex(box.min, polygon); // the box within the polygon
 }
 
 } // namespace
