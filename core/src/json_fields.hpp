@@ -6,6 +6,7 @@
 #include <nlohmann/json.hpp>
 
 #include <filesystem>
+#include <map>
 #include <set>
 #include <string>
 #include <vector>
@@ -24,7 +25,20 @@ std::string element(const std::string& parent, std::size_t index);
 // An object with only `allowed` keys and every `required` one.
 void requireObject(const Json& j, const std::string& path, const std::set<std::string>& allowed,
                    const std::set<std::string>& required);
-double readNumber(const Json& j, const std::string& path); // finite
+// A finite number; while a TypedExpressions scope is open, also an exact
+// expression as a string ("20*sqrt(2)"), read as its nearest double and kept
+// as typed in the scope's map by field path.
+double readNumber(const Json& j, const std::string& path);
+class TypedExpressions {
+public:
+    explicit TypedExpressions(std::map<std::string, std::string>& into);
+    ~TypedExpressions();
+    TypedExpressions(const TypedExpressions&) = delete;
+    TypedExpressions& operator=(const TypedExpressions&) = delete;
+
+private:
+    std::map<std::string, std::string>* previous_;
+};
 std::vector<double> readNumbers(const Json& j, const std::string& path, std::size_t count);
 Vec3<double> readVec3(const Json& j, const std::string& path);
 std::string readString(const Json& j, const std::string& path);

@@ -3,6 +3,7 @@
 #include "file_paths.hpp"
 #include "json_fields.hpp"
 
+#include "viewpipe/exact.hpp"
 #include "viewpipe/format.hpp"
 #include "viewpipe/mesh_io.hpp"
 
@@ -66,10 +67,39 @@ void requireObject(const Json& j, const std::string& path, const std::set<std::s
             throw InputError(child(path, key), "is missing");
 }
 
+namespace {
+thread_local std::map<std::string, std::string>* typedExpressions = nullptr;
+} // namespace
+
+TypedExpressions::TypedExpressions(std::map<std::string, std::string>& into) : previous_(typedExpressions)
+{
+    typedExpressions = &into;
+}
+
+TypedExpressions::~TypedExpressions()
+{
+    typedExpressions = previous_;
+}
+
 double readNumber(const Json& j, const std::string& path)
 {
+    if (j.is_string() && typedExpressions) {
+        const std::string text = j.get<std::string>();
+        double x = 0;
+        try {
+            x = double(parseExact(text));
+        } catch (const std::exception& error) { // the parser's reason, or arithmetic refused
+            throw InputError(path, error.what());
+        }
+        if (!std::isfinite(x))
+            throw InputError(path, "must be a finite number (" + text + " is too large for a double)");
+        (*typedExpressions)[path] = text;
+        return x;
+    }
     if (!j.is_number())
-        throw InputError(path, "must be a number (got " + found(j) + ")");
+        throw InputError(path, std::string(typedExpressions ? "must be a number or an exact expression such as "
+                                                              "\"20*sqrt(2)\"" : "must be a number") +
+                                   " (got " + found(j) + ")");
     const double x = j.get<double>();
     if (!std::isfinite(x))
         throw InputError(path, "must be a finite number");
@@ -239,7 +269,7 @@ double readFar(const Json& j, const std::string& path)
 {
     if (j.is_string() && j.get<std::string>() == "infinity")
         return std::numeric_limits<double>::infinity();
-    if (!j.is_number())
+    if (!j.is_number() && !j.is_string())
         throw InputError(path, "must be a number or \"infinity\" (got " + found(j) + ")");
     return readNumber(j, path);
 }
@@ -552,10 +582,38 @@ void writeJson(std::string& out, const Written& j, int indent)
     }
 }
 
+// The value at a field path ("view.prp[2]", "camera.projection.near"), or nothing.
+Written* valueAt(Written& root, const std::string& path)
+{
+    Written* at = &root;
+    std::size_t i = 0;
+    while (i < path.size() && at) {
+        if (path[i] == '.') {
+            ++i;
+        } else if (path[i] == '[') {
+            const std::size_t close = path.find(']', i);
+            const std::size_t index = std::stoul(path.substr(i + 1, close - i - 1));
+            at = at->is_array() && index < at->size() ? &(*at)[index] : nullptr;
+            i = close + 1;
+        } else {
+            const std::size_t end = std::min(path.find_first_of(".[", i), path.size());
+            const std::string key = path.substr(i, end - i);
+            at = at->is_object() && at->contains(key) ? &(*at)[key] : nullptr;
+            i = end;
+        }
+    }
+    return at;
+}
+
 Written sceneTree(const Scene& scene)
 {
     Written root = {{"name", scene.name}};
     root.update(cameraJson(scene.camera));
+    // An expression as typed, where the field still holds its value (an edit since replaces it).
+    for (const auto& [path, text] : scene.typedExpressions)
+        if (Written* value = valueAt(root, path); value && value->is_number() &&
+                                                  value->get<double>() == double(parseExact(text)))
+            *value = text;
     Written objects = Written::array();
     for (const SceneObject& object : scene.objects) {
         switch (object.type) {
@@ -692,6 +750,7 @@ Scene parseScene(const std::string& text, const std::filesystem::path& baseDir)
         throw InputError("$", "needs exactly one of \"view\" (Foley) or \"camera\" (OpenGL)");
 
     Scene scene;
+    const TypedExpressions typed(scene.typedExpressions);
     scene.name = root.contains("name") ? readString(root["name"], "name") : std::string();
     if (root.contains("view"))
         scene.camera = readView(root["view"]);
@@ -712,6 +771,65 @@ Scene parseScene(const std::string& text, const std::filesystem::path& baseDir)
             readEffect(effects[i], element("effects", i), scene.effects);
     }
     return scene;
+}
+
+namespace {
+
+// Every number of a camera with its field path, as a scene file names it.
+template <class T, class F> void forEachCameraNumber(CameraSpec<T>& camera, F&& visit)
+{
+    auto vector = [&](const std::string& path, Vec3<T>& v) {
+        for (int i = 0; i < 3; ++i)
+            visit(fields::element(path, std::size_t(i)), v[i]);
+    };
+    if (auto* spec = std::get_if<foley::ViewSpec<T>>(&camera)) {
+        vector("view.vrp", spec->vrp);
+        vector("view.vpn", spec->vpn);
+        vector("view.vup", spec->vup);
+        vector("view.prp", spec->prp);
+        T* window[] = {&spec->window.umin, &spec->window.umax, &spec->window.vmin, &spec->window.vmax};
+        for (std::size_t i = 0; i < 4; ++i)
+            visit(fields::element("view.window", i), *window[i]);
+        visit("view.front", spec->front);
+        visit("view.back", spec->back);
+        return;
+    }
+    auto& gl = std::get<gl::Camera<T>>(camera);
+    vector("camera.look_at.eye", gl.lookAt.eye);
+    vector("camera.look_at.center", gl.lookAt.center);
+    vector("camera.look_at.up", gl.lookAt.up);
+    const std::string path = "camera.projection.";
+    if (auto* p = std::get_if<gl::Perspective<T>>(&gl.projection)) {
+        visit(path + "fovy_deg", p->fovyDegrees);
+        visit(path + "aspect", p->aspect);
+        visit(path + "near", p->zNear);
+        visit(path + "far", p->zFar);
+        return;
+    }
+    std::visit(
+        [&](auto& box) {
+            if constexpr (!std::is_same_v<std::decay_t<decltype(box)>, gl::Perspective<T>>) {
+                visit(path + "left", box.left);
+                visit(path + "right", box.right);
+                visit(path + "bottom", box.bottom);
+                visit(path + "top", box.top);
+                visit(path + "near", box.zNear);
+                visit(path + "far", box.zFar);
+            }
+        },
+        gl.projection);
+}
+
+} // namespace
+
+CameraSpec<Exact> exactCamera(const Scene& scene)
+{
+    CameraSpec<Exact> camera = convertCamera<Exact>(scene.camera, [](double x) { return fromDecimal<Exact>(x); });
+    forEachCameraNumber(camera, [&](const std::string& path, Exact& x) {
+        if (const auto typed = scene.typedExpressions.find(path); typed != scene.typedExpressions.end())
+            x = parseExact(typed->second);
+    });
+    return camera;
 }
 
 const gl::Camera<double>& lookAtCamera(const Scene& scene, const std::string& purpose)

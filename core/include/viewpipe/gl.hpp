@@ -222,13 +222,17 @@ template <class T> Mat4<T> perspectiveDepth(const T& zNear, const T& zFar)
 // cot(fovy / 2), accurate near 0 and near 180 degrees.
 template <class T> T cotHalfFovy(const T& fovyDegrees)
 {
-    using std::acos;
-    using std::tan;
-    const T radiansPerHalfDegree = acos(T(-1)) / T(360);
-    // cot(x) = tan(90 deg - x); 180 - fovy is exact near 180, so is fovy near 0.
-    if (fovyDegrees <= T(90))
-        return T(1) / tan(fovyDegrees * radiansPerHalfDegree);
-    return tan((T(180) - fovyDegrees) * radiansPerHalfDegree);
+    if constexpr (isExactScalar<T>) {
+        return cotOfHalfDegrees(fovyDegrees); // exact at the angles whose cotangent is a square-root expression
+    } else {
+        using std::acos;
+        using std::tan;
+        const T radiansPerHalfDegree = acos(T(-1)) / T(360);
+        // cot(x) = tan(90 deg - x); 180 - fovy is exact near 180, so is fovy near 0.
+        if (fovyDegrees <= T(90))
+            return T(1) / tan(fovyDegrees * radiansPerHalfDegree);
+        return tan((T(180) - fovyDegrees) * radiansPerHalfDegree);
+    }
 }
 
 } // namespace detail

@@ -11,6 +11,7 @@
 #include <limits>
 #include <sstream>
 #include <string>
+#include <type_traits>
 
 #include "viewpipe/error.hpp"
 
@@ -21,6 +22,10 @@ template <class T> using Vec3 = Eigen::Matrix<T, 3, 1>;
 template <class T> using Vec4 = Eigen::Matrix<T, 4, 1>;
 template <class T> using Mat3 = Eigen::Matrix<T, 3, 3>;
 template <class T> using Mat4 = Eigen::Matrix<T, 4, 4>;
+
+// The exact number type (exact.hpp): no rounding to scale against, no angles.
+class Exact;
+template <class T> inline constexpr bool isExactScalar = std::is_same_v<T, Exact>;
 
 template <class T> T epsilonOf() { return std::numeric_limits<T>::epsilon(); }
 
@@ -104,11 +109,15 @@ template <class T> void requireFinite(const Vec3<T>& v, const std::string& field
 // [0.5, 1): products of such vectors neither overflow nor underflow.
 template <class T> Vec3<T> powerOfTwoNormalized(const Vec3<T>& v)
 {
-    using std::frexp;
-    using std::ldexp;
-    int exponent = 0;
-    frexp(v.cwiseAbs().maxCoeff(), &exponent);
-    return v.unaryExpr([exponent](const T& x) { return T(ldexp(x, -exponent)); });
+    if constexpr (isExactScalar<T>) {
+        return v;
+    } else {
+        using std::frexp;
+        using std::ldexp;
+        int exponent = 0;
+        frexp(v.cwiseAbs().maxCoeff(), &exponent);
+        return v.unaryExpr([exponent](const T& x) { return T(ldexp(x, -exponent)); });
+    }
 }
 
 template <class T> Vec3<T> unitVector(const Vec3<T>& v, const std::string& field)
@@ -155,14 +164,19 @@ Basis<T> orthonormalBasis(const Vec3<T>& normal, const Vec3<T>& up, const std::s
 {
     const Vec3<T> n = unitVector(normal, normalField);
     unitVector(up, upField);
-    const T angle = angleBetweenLines(up, normal);
-    if (!(angle >= minUpAngle<T>())) {
-        using std::acos;
-        const T degreesPerRadian = T(180) / acos(T(-1));
-        throw InputError(upField, "is parallel to " + normalField + " (angle " + formatNumber(angle * degreesPerRadian) +
-                                      " degrees; it must be at least " +
-                                      formatNumber(minUpAngle<T>() * degreesPerRadian) +
-                                      " degrees from it to fix which way is up)");
+    if constexpr (isExactScalar<T>) {
+        if (up.cross(normal).isZero(T(0)))
+            throw InputError(upField, "is parallel to " + normalField + " (exactly): nothing fixes which way is up");
+    } else {
+        const T angle = angleBetweenLines(up, normal);
+        if (!(angle >= minUpAngle<T>())) {
+            using std::acos;
+            const T degreesPerRadian = T(180) / acos(T(-1));
+            throw InputError(upField, "is parallel to " + normalField + " (angle " +
+                                          formatNumber(angle * degreesPerRadian) + " degrees; it must be at least " +
+                                          formatNumber(minUpAngle<T>() * degreesPerRadian) +
+                                          " degrees from it to fix which way is up)");
+        }
     }
     const Vec3<T> side = accurateCross(powerOfTwoNormalized(up), powerOfTwoNormalized(normal));
     Basis<T> basis;

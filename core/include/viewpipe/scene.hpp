@@ -6,6 +6,7 @@
 // naming the field path ("view.vup[2]", "objects[1].min"); "$" is the root.
 
 #include <filesystem>
+#include <map>
 #include <string>
 #include <vector>
 
@@ -30,6 +31,9 @@ struct Scene {
     std::vector<SceneObject> objects;
     EffectList effects;
     std::filesystem::path file; // where it was loaded from; empty for a scene made in memory
+    // Numbers typed as exact expressions, by field path ("view.prp[2]": "20*sqrt(2)"); the
+    // camera holds their nearest doubles. Saved as typed while the field keeps that value.
+    std::map<std::string, std::string> typedExpressions;
 };
 
 inline bool operator==(const SceneObject& a, const SceneObject& b)
@@ -39,7 +43,8 @@ inline bool operator==(const SceneObject& a, const SceneObject& b)
 // The same scene wherever it was read from: its name, camera, objects (meshes by the file they name) and effects.
 inline bool operator==(const Scene& a, const Scene& b)
 {
-    return a.name == b.name && a.camera == b.camera && a.objects == b.objects && a.effects == b.effects;
+    return a.name == b.name && a.camera == b.camera && a.objects == b.objects && a.effects == b.effects &&
+           a.typedExpressions == b.typedExpressions;
 }
 inline bool operator!=(const Scene& a, const Scene& b)
 {
@@ -49,6 +54,10 @@ inline bool operator!=(const Scene& a, const Scene& b)
 // The scene's look-at camera; throws InputError("camera") naming `purpose`
 // ("the code dialects") when the scene has a Foley view instead.
 const gl::Camera<double>& lookAtCamera(const Scene& scene, const std::string& purpose);
+
+// The camera as typed, exactly: an expression as the expression, a JSON
+// number as the decimal written ("0.1" is one tenth). Include exact.hpp.
+CameraSpec<Exact> exactCamera(const Scene& scene);
 
 // Parses and validates a scene; mesh paths are resolved against baseDir and
 // must name a readable .obj, .ply or .stl file.

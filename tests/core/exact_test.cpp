@@ -1,0 +1,236 @@
+#include <gtest/gtest.h>
+
+#include <stdexcept>
+
+#include "build_paths.h"
+#include "viewpipe/exact.hpp"
+#include "viewpipe/scene.hpp"
+
+namespace viewpipe {
+namespace {
+
+Exact e(const char* text)
+{
+    return parseExact(text);
+}
+
+std::string refusal(const char* text)
+{
+    try {
+        parseExact(text);
+    } catch (const std::invalid_argument& error) {
+        return error.what();
+    }
+    return "";
+}
+
+TEST(Exact, TypedDecimalsAreTheRationalsWritten)
+{
+    EXPECT_EQ(e("0.1").text(), "1/10");
+    EXPECT_EQ(double(e("0.1")), 0.1); // rounded once, to the double a person means
+    EXPECT_EQ(double(e("1/3")), 1.0 / 3);
+    EXPECT_NE(e("0.1"), Exact(0.1)); // the double 0.1 is 3602879701896397/2^55
+    EXPECT_EQ(Exact(0.1).text(), "3602879701896397/36028797018963968");
+    EXPECT_EQ(e("-1.5e-3").text(), "-3/2000");
+    EXPECT_EQ(e("2.50").text(), "5/2");
+}
+
+TEST(Exact, SquareRootsAreReducedToSquareFreeRadicands)
+{
+    EXPECT_EQ(sqrt(Exact(8)).text(), "2*sqrt(2)");
+    EXPECT_EQ(sqrt(e("1/2")).text(), "sqrt(2)/2");
+    EXPECT_EQ((Exact(1) / sqrt(Exact(2))).text(), "sqrt(2)/2");
+    EXPECT_EQ(sqrt(Exact(2)) * sqrt(Exact(6)), 2 * sqrt(Exact(3)));
+    EXPECT_EQ(sqrt(Exact(12)).latex(), "2\\sqrt{3}");
+    EXPECT_EQ(e("-13/36").latex(), "-\\frac{13}{36}");
+    EXPECT_EQ(e("sqrt(2)/2").latex(), "\\frac{\\sqrt{2}}{2}");
+    // A large prime radicand (2^61 - 1) stays one root; its square is rational again.
+    const Exact big = sqrt(e("2305843009213693951"));
+    EXPECT_TRUE(big.isExact());
+    EXPECT_EQ(big * big, e("2305843009213693951"));
+}
+
+TEST(Exact, QuotientsOfSumsOfRootsAreExact)
+{
+    const Exact a = Exact(1) + sqrt(Exact(2)) + sqrt(Exact(3));
+    EXPECT_EQ(a * (Exact(1) / a), Exact(1));
+    EXPECT_EQ((Exact(1) + sqrt(Exact(2))) * (sqrt(Exact(2)) - Exact(1)), Exact(1));
+    EXPECT_EQ((Exact(1) / (Exact(1) + sqrt(Exact(2)))).text(), "-1 + sqrt(2)");
+}
+
+TEST(Exact, SignsAreDecidedExactly)
+{
+    // The double nearest sqrt(2) is 1.41421356237309514547..., above sqrt(2) = 1.41421356237309504880...
+    EXPECT_LT(sqrt(Exact(2)), Exact(1.4142135623730951));
+    EXPECT_GT(sqrt(Exact(2)), Exact(1.4142135623730949));
+    // sqrt(5 + 2 sqrt(6)) = sqrt(2) + sqrt(3): denested, so the difference is exactly zero.
+    EXPECT_EQ(sqrt(Exact(5) + 2 * sqrt(Exact(6))), sqrt(Exact(2)) + sqrt(Exact(3)));
+    EXPECT_EQ((sqrt(Exact(2)) + sqrt(Exact(3)) - sqrt(Exact(5) + 2 * sqrt(Exact(6)))).sign(), 0);
+    // 10^-30 apart: no double tells them apart.
+    EXPECT_GT(sqrt(Exact(2)) + e("1e-30"), sqrt(Exact(2)));
+}
+
+TEST(Exact, ExpressionsAsTyped)
+{
+    EXPECT_EQ(e("20*sqrt(2)"), 20 * sqrt(Exact(2)));
+    EXPECT_EQ(e("20\u221A2"), 20 * sqrt(Exact(2)));
+    EXPECT_EQ(e("\u221A2/2"), sqrt(Exact(2)) / 2);
+    EXPECT_EQ(e("1/\u221A2"), sqrt(Exact(2)) / 2);
+    EXPECT_EQ(e("\u22121/3"), e("-1/3"));
+    EXPECT_EQ(e(" ( 1 + 2 ) * -3 "), Exact(-9));
+    EXPECT_EQ(e("2 - 3 - 4"), Exact(-5));
+    EXPECT_EQ(e("12/2/3"), Exact(2));
+    // What text() writes reads back as the same value.
+    for (const char* text : {"-13/36", "sqrt(2)/2", "1 + 20*sqrt(2)", "-sqrt(3)/6 + 1/2", "7*sqrt(30)/11"})
+        EXPECT_EQ(e(e(text).text().c_str()), e(text)) << text;
+}
+
+TEST(Exact, BadExpressionsAreRefusedWithTheReason)
+{
+    EXPECT_NE(refusal("sqrt(-1)").find("the square root of -1, a negative number"), std::string::npos) << refusal("sqrt(-1)");
+    EXPECT_NE(refusal("1/0").find("division by zero at character 3"), std::string::npos) << refusal("1/0");
+    EXPECT_NE(refusal("2 +* 3").find("expected a number, sqrt(...) or ( at character 4"), std::string::npos)
+        << refusal("2 +* 3");
+    EXPECT_NE(refusal("").find("is empty"), std::string::npos);
+    EXPECT_NE(refusal("sqrt(2").find("expected )"), std::string::npos);
+    EXPECT_NE(refusal("2x").find("unexpected \"x\" at character 2"), std::string::npos);
+    EXPECT_NE(refusal("1e99999").find("exponent"), std::string::npos);
+}
+
+TEST(Exact, CotangentsOfTheSpecialAnglesAreExact)
+{
+    EXPECT_EQ(cotOfHalfDegrees(Exact(90)), Exact(1));
+    EXPECT_EQ(cotOfHalfDegrees(Exact(60)), sqrt(Exact(3)));
+    EXPECT_EQ(cotOfHalfDegrees(Exact(120)), sqrt(Exact(3)) / 3);
+    EXPECT_EQ(cotOfHalfDegrees(Exact(45)), Exact(1) + sqrt(Exact(2)));
+    EXPECT_EQ(cotOfHalfDegrees(Exact(30)), Exact(2) + sqrt(Exact(3)));
+    const Exact fifty = cotOfHalfDegrees(Exact(50));
+    EXPECT_FALSE(fifty.isExact());
+    EXPECT_NE(fifty.inexactReason().find("cot(50 degrees / 2)"), std::string::npos);
+    EXPECT_NEAR(double(fifty), 1 / std::tan(25 * 3.14159265358979323846 / 180), 1e-15);
+    // What an inexact value touches is inexact, and says why.
+    EXPECT_FALSE((fifty * 0 + 1).isExact());
+    EXPECT_EQ((Exact(2) * fifty).inexactReason(), fifty.inexactReason());
+}
+
+TEST(Exact, InfiniteFarPlanes)
+{
+    const Exact far(std::numeric_limits<double>::infinity());
+    EXPECT_EQ(Exact(2) / far, Exact(0));
+    EXPECT_TRUE(isinf(far));
+    EXPECT_GT(far, Exact(1000000));
+}
+
+TEST(Exact, EigenComputesWithIt)
+{
+    Mat3<Exact> r;
+    const Exact h = sqrt(Exact(2)) / 2;
+    r << h, 0, -h, 0, 1, 0, h, 0, h;
+    EXPECT_EQ(Mat3<Exact>(r * r.transpose()), Mat3<Exact>::Identity());
+    EXPECT_EQ(Mat3<Exact>(r.inverse()), Mat3<Exact>(r.transpose()));
+    EXPECT_EQ(Vec3<Exact>(1, 0, 1).normalized(), Vec3<Exact>(h, 0, h));
+}
+
+Mat4<Exact> rows(std::initializer_list<std::initializer_list<const char*>> values)
+{
+    Mat4<Exact> m;
+    int r = 0;
+    for (const auto& row : values) {
+        int c = 0;
+        for (const char* x : row)
+            m(r, c++) = parseExact(x);
+        ++r;
+    }
+    return m;
+}
+
+Scene dataScene(const std::string& name)
+{
+    return loadScene(std::filesystem::path(viewpipe::build::dataDir) / "scenes" / name);
+}
+
+// The default scene by hand (as in foley_test.cpp, after Foley's eqs. 6.31-6.48): n = (1, 0, 1)/sqrt2,
+// u = (1, 0, -1)/sqrt2, v = (0, 1, 0); shx = 1/4, shy = -13/36; S_per = S(6/187, 6/121, 1/66); z_min = -31/66.
+TEST(ExactPipeline, HouseCornerIsTheHandComputationExactly)
+{
+    const Pipeline<Exact> p = buildPipeline(exactCamera(dataScene("house-corner.json")));
+    ASSERT_EQ(p.stages.size(), 5u);
+    EXPECT_EQ(p.stages[0].matrix, rows({{"1", "0", "0", "-16"}, {"0", "1", "0", "0"}, {"0", "0", "1", "-54"}, {"0", "0", "0", "1"}}));
+    EXPECT_EQ(p.stages[1].matrix, rows({{"sqrt(2)/2", "0", "-sqrt(2)/2", "0"},
+                                        {"0", "1", "0", "0"},
+                                        {"sqrt(2)/2", "0", "sqrt(2)/2", "0"},
+                                        {"0", "0", "0", "1"}}));
+    EXPECT_EQ(p.stages[2].matrix, rows({{"1", "0", "0", "6"}, {"0", "1", "0", "-20"}, {"0", "0", "1", "-36"}, {"0", "0", "0", "1"}}));
+    EXPECT_EQ(p.stages[3].matrix, rows({{"1", "0", "1/4", "0"}, {"0", "1", "-13/36", "0"}, {"0", "0", "1", "0"}, {"0", "0", "0", "1"}}));
+    EXPECT_EQ(p.stages[4].matrix, rows({{"6/187", "0", "0", "0"}, {"0", "6/121", "0", "0"}, {"0", "0", "1/66", "0"}, {"0", "0", "0", "1"}}));
+    ASSERT_TRUE(p.zmin);
+    EXPECT_EQ(*p.zmin, parseExact("-31/66"));
+    EXPECT_EQ(p.stages[1].matrix(0, 0).latex(), "\\frac{\\sqrt{2}}{2}");
+    // N^-1 (N p) = p with no error at all, for points of the house and beyond it.
+    const Mat4<Exact> inverse = p.composite.inverse();
+    for (const Vec4<Exact>& point : {Vec4<Exact>(0, 0, 54, 1), Vec4<Exact>(16, 10, 30, 1), Vec4<Exact>(parseExact("1/3"), -7, 1000, 1)})
+        EXPECT_EQ(Vec4<Exact>(inverse * (p.composite * point)), point);
+}
+
+Scene frustumScene(const std::string& near)
+{
+    return parseScene(R"({"camera": {"look_at": {"eye": [0, 0, 0], "center": [0, 0, -1], "up": [0, 1, 0]},
+                                     "projection": {"type": "frustum", "left": -2, "right": 2, "bottom": -1.5,
+                                                    "top": 1.5, "near": )" + near + R"(, "far": 10}}})",
+                      ".");
+}
+
+// glFrustum(-2, 2, -1.5, 1.5, 2, 10) (the OpenGL reference page's matrix): the near plane's center goes to
+// NDC (0, 0, -1), its corner (2, 1.5, -2) to (1, 1, -1), the far plane's center to (0, 0, 1): all on the
+// volume's boundary, so inside. In double, -3/2 comes out -1.4999999999999998 and the near center "outside".
+TEST(ExactPipeline, TheFrustumsOwnCornersAreInside)
+{
+    const Pipeline<Exact> p = buildPipeline(exactCamera(frustumScene("2")));
+    struct Case { Vec3<Exact> world; Vec3<Exact> ndc; };
+    for (const Case& c : {Case{{0, 0, -2}, {0, 0, -1}}, Case{{2, parseExact("1.5"), -2}, {1, 1, -1}},
+                          Case{{0, 0, -10}, {0, 0, 1}}, Case{{-10, parseExact("-7.5"), -10}, {-1, -1, 1}}}) {
+        const PointTrace<Exact> trace = tracePoint(p, c.world);
+        ASSERT_TRUE(trace.divided);
+        EXPECT_EQ(*trace.divided, c.ndc) << c.world.transpose();
+        EXPECT_TRUE(trace.inside) << c.world.transpose();
+    }
+    EXPECT_EQ(p.projectionMatrix->row(2), rows({{"0", "0", "-3/2", "-5"}, {"0", "0", "0", "0"}, {"0", "0", "0", "0"}, {"0", "0", "0", "0"}}).row(0));
+}
+
+TEST(ExactScene, ExpressionsAreReadExactlyAndSavedAsTyped)
+{
+    const Scene scene = parseScene(R"js({"view": {"projection": "perspective", "vrp": [0, 0, 0], "vpn": [1, 0, 1],
+        "vup": [0, 1, 0], "prp": [0, 25, "20*sqrt(2)"], "window": ["-1/3", 1, -1, 1], "front": 5, "back": -5}})js", ".");
+    EXPECT_EQ(std::get<foley::ViewSpec<double>>(scene.camera).prp.z(), 20 * std::sqrt(2.0));
+    const auto spec = std::get<foley::ViewSpec<Exact>>(exactCamera(scene));
+    EXPECT_EQ(spec.prp.z(), 20 * sqrt(Exact(2)));
+    EXPECT_EQ(spec.window.umin, parseExact("-1/3"));
+    const std::string saved = sceneToJson(scene);
+    EXPECT_NE(saved.find("\"20*sqrt(2)\""), std::string::npos) << saved;
+    EXPECT_NE(saved.find("\"-1/3\""), std::string::npos) << saved;
+    EXPECT_EQ(parseScene(saved, "."), scene);
+    // An edit replaces what was typed.
+    Scene edited = scene;
+    std::get<foley::ViewSpec<double>>(edited.camera).prp.z() = 30;
+    EXPECT_EQ(sceneToJson(edited).find("sqrt"), std::string::npos) << sceneToJson(edited);
+}
+
+TEST(ExactScene, BadExpressionsNameTheField)
+{
+    auto refusal = [](const std::string& prp2) {
+        try {
+            parseScene(R"({"view": {"projection": "perspective", "vrp": [0, 0, 0], "vpn": [0, 0, 1], "vup": [0, 1, 0],
+                "prp": [0, 0, )" + prp2 + R"(], "window": [-1, 1, -1, 1], "front": 5, "back": -5}})", ".");
+        } catch (const InputError& error) {
+            return std::string(error.what());
+        }
+        return std::string();
+    };
+    EXPECT_EQ(refusal("\"sqrt(-1)\""), "view.prp[2]: the square root of -1, a negative number, at character 1 of \"sqrt(-1)\"");
+    EXPECT_EQ(refusal("\"1/0\""), "view.prp[2]: division by zero at character 3 of \"1/0\"");
+    EXPECT_EQ(refusal("\"2 +* 3\""), "view.prp[2]: expected a number, sqrt(...) or ( at character 4 of \"2 +* 3\"");
+    EXPECT_EQ(refusal("true"), "view.prp[2]: must be a number or an exact expression such as \"20*sqrt(2)\" (got true)");
+}
+
+} // namespace
+} // namespace viewpipe
