@@ -42,8 +42,8 @@ std::pair<int, int> parseSize(const std::string& text, const std::string& option
 
 void addPrecision(CLI::App* command, PrecisionOptions& options)
 {
-    command->add_option("--precision", options.precision, "float, double, long-double, float128 or mpfr")
-        ->check(CLI::IsMember({"float", "double", "long-double", "float128", "mpfr"}))
+    command->add_option("--precision", options.precision, "float, double, long-double, float128, mpfr or exact")
+        ->check(CLI::IsMember({"float", "double", "long-double", "float128", "mpfr", "exact"}))
         ->capture_default_str();
     command->add_option("--bits", options.bits, "Significand bits for --precision mpfr")->capture_default_str();
 }

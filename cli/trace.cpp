@@ -9,7 +9,7 @@ namespace {
 
 struct TraceOptions {
     std::string scene;
-    std::vector<double> point;
+    std::vector<std::string> point; // numbers or exact expressions, as typed
     bool json = false;
     PrecisionOptions precision;
     std::string api; // "all" or an API's name: the point under each API's conventions
@@ -22,7 +22,16 @@ int runTrace(const TraceOptions& options)
     return guarded(options.scene, "viewpipe: internal error", [&] {
         const Scene scene = loadScene(options.scene);
         const report::PrecisionChoice precision = report::parsePrecision(options.precision.precision, options.precision.bits);
-        const Vec3<double> point(options.point[0], options.point[1], options.point[2]);
+        Vec3<Exact> typed;
+        for (int i = 0; i < 3; ++i) {
+            try {
+                typed[i] = parseExact(options.point[std::size_t(i)]);
+            } catch (const std::exception& error) {
+                throw InputError("--point", "must be three finite numbers or exact expressions (coordinate " +
+                                                std::to_string(i + 1) + ": " + error.what() + ")");
+            }
+        }
+        const Vec3<double> point = typed.unaryExpr([](const Exact& x) { return double(x); });
         if (!point.allFinite())
             throw InputError("--point", "must be three finite numbers");
         if (options.apiGiven) {
@@ -36,9 +45,9 @@ int runTrace(const TraceOptions& options)
             return 0;
         }
         if (options.json)
-            std::cout << report::traceJson(scene, point, precision).dump() << "\n";
+            std::cout << report::traceJson(scene, typed, precision).dump() << "\n";
         else
-            report::printTrace(std::cout, scene, point, precision);
+            report::printTrace(std::cout, scene, typed, precision);
         return 0;
     });
 }
@@ -50,7 +59,7 @@ void addTraceCommand(CLI::App& app)
     auto options = std::make_shared<TraceOptions>();
     CLI::App* command = app.add_subcommand("trace", "Follow one point through every stage and the divide");
     command->add_option("SCENE", options->scene, "Scene file (JSON)")->required();
-    command->add_option("--point", options->point, "World coordinates X Y Z")->expected(3)->required();
+    command->add_option("--point", options->point, "World coordinates X Y Z: numbers or exact expressions (1/3, sqrt(2)/2)")->expected(3)->required();
     command->add_flag("--json", options->json, "One JSON object on stdout");
     CLI::Option* api = command->add_option(
         "--api", options->api,

@@ -17,17 +17,6 @@ const std::array<std::pair<EffectKind, const char*>, 5> kEffectNames = {{{Effect
                                                                          {EffectKind::Raster, "raster"},
                                                                          {EffectKind::Cull, "cull"}}};
 
-// The six boundary values of a homogeneous point, in the order left, right,
-// bottom, top, near, far: inside where all are >= 0.
-std::array<double, 6> boundaries(const Vec4<double>& p, ClipVolume volume)
-{
-    const double w = p.w();
-    const double nearZ = nearPlaneZ(volume), farZ = farPlaneZ(volume);
-    const double towardFar = farZ > nearZ ? 1 : -1;
-    return {w + p.x(), w - p.x(), w + p.y(), w - p.y(), (p.z() - nearZ * w) * towardFar,
-            (farZ * w - p.z()) * towardFar};
-}
-
 } // namespace
 
 std::string effectName(EffectKind effect)
@@ -76,12 +65,7 @@ std::string depthFormatName(const DepthOptions& options)
 
 unsigned outcode(const Vec4<double>& clip, ClipVolume volume)
 {
-    const std::array<double, 6> b = boundaries(clip, volume);
-    unsigned code = 0;
-    for (int k = 0; k < 6; ++k)
-        if (b[std::size_t(k)] < 0)
-            code |= 1u << k;
-    return code;
+    return clipVerdict(clip, volume).outside;
 }
 
 std::vector<std::string> planeNames(unsigned code, Convention convention)
@@ -98,7 +82,7 @@ std::vector<std::string> planeNames(unsigned code, Convention convention)
 
 std::optional<std::array<double, 2>> clipSegment(const Vec4<double>& a, const Vec4<double>& b, ClipVolume volume)
 {
-    const std::array<double, 6> ba = boundaries(a, volume), bb = boundaries(b, volume);
+    const std::array<double, 6> ba = clipBoundaries(a, volume), bb = clipBoundaries(b, volume);
     double t0 = 0, t1 = 1;
     for (std::size_t k = 0; k < 6; ++k) {
         if (ba[k] < 0 && bb[k] < 0)
@@ -121,14 +105,14 @@ std::vector<Vec4<double>> clipPolygon(const std::vector<Vec4<double>>& polygon, 
     std::vector<Vec4<double>> out = polygon;
     for (std::size_t k = 0; k < 6 && !out.empty(); ++k) {
         // Each vertex's boundary value against plane k, once: an edge's end is the next edge's start.
-        const double first = boundaries(out[0], volume)[k];
+        const double first = clipBoundaries(out[0], volume)[k];
         double bp = first;
         std::vector<Vec4<double>> next;
         for (std::size_t i = 0; i < out.size(); ++i) {
             const std::size_t j = (i + 1) % out.size();
             const Vec4<double>& p = out[i];
             const Vec4<double>& q = out[j];
-            const double bq = j == 0 ? first : boundaries(q, volume)[k];
+            const double bq = j == 0 ? first : clipBoundaries(q, volume)[k];
             if (bp >= 0)
                 next.push_back(p);
             if ((bp >= 0) != (bq >= 0))

@@ -23,7 +23,7 @@ using Json = nlohmann::json;
 // Values wider than double go out as strings with all their digits.
 template <class T> Json number(const T& x)
 {
-    if constexpr (std::is_same_v<T, float> || std::is_same_v<T, double>) {
+    if constexpr (std::is_same_v<T, float> || std::is_same_v<T, double> || isExactScalar<T>) {
         return static_cast<double>(x);
     } else if constexpr (std::is_same_v<T, long double>) {
         std::ostringstream out;
@@ -50,10 +50,50 @@ template <class T, int N> Json vectorJson(const Eigen::Matrix<T, N, 1>& v)
     return out;
 }
 
-// Six significant digits, in every precision.
+// Six significant digits, in every precision; exact values as they are, the
+// others of the exact precision marked ~.
 template <class T> std::string shortNumber(const T& x)
 {
-    return formatSignificant(static_cast<double>(x), 6);
+    if constexpr (isExactScalar<T>)
+        return x.isExact() ? x.text() : "~" + formatSignificant(static_cast<double>(x), 6);
+    else
+        return formatSignificant(static_cast<double>(x), 6);
+}
+
+template <class T, int N> Json exactJson(const Eigen::Matrix<T, N, 1>& v)
+{
+    Json out = Json::array();
+    for (int i = 0; i < N; ++i)
+        out.push_back(v[i].text());
+    return out;
+}
+
+// Rows of exact entries; an inexact one is listed in `inexact` under `path`.
+Json exactJson(const Mat4<Exact>& m, const std::string& path, Json& inexact)
+{
+    Json rows = Json::array();
+    for (int r = 0; r < 4; ++r) {
+        Json row = Json::array();
+        for (int c = 0; c < 4; ++c) {
+            row.push_back(m(r, c).text());
+            if (!m(r, c).isExact())
+                inexact.push_back({{"path", path + "[" + std::to_string(r) + "][" + std::to_string(c) + "]"},
+                                   {"reason", m(r, c).inexactReason()}});
+        }
+        rows.push_back(row);
+    }
+    return rows;
+}
+
+// The typed point in a precision: a float type rounds it once, a wider one takes its digits.
+template <class T> T scalarOf(const Exact& x)
+{
+    if constexpr (isExactScalar<T>)
+        return x;
+    else if constexpr (std::is_floating_point_v<T>)
+        return static_cast<T>(x);
+    else
+        return T(x.approximation().str(60));
 }
 
 template <class T> std::vector<std::string> matrixLines(const Mat4<T>& m)
@@ -95,7 +135,10 @@ std::string compositeName(const Pipeline<double>& p)
 
 template <class T> Pipeline<T> pipelineFor(const Scene& scene)
 {
-    return withEffectStages(buildPipeline(castCamera<T>(scene.camera)), scene.effects);
+    if constexpr (isExactScalar<T>)
+        return withEffectStages(buildPipeline(exactCamera(scene)), scene.effects); // the scene as typed
+    else
+        return withEffectStages(buildPipeline(castCamera<T>(scene.camera)), scene.effects);
 }
 
 Json countsJson(const ClipCounts& c)
@@ -160,6 +203,7 @@ template <class F> auto withPrecision(const PrecisionChoice& precision, F&& f)
     case Precision::Mpfr:
         throw InputError("--precision", precisionName(precision) + " is computed by the app and the CLI, not in the browser");
 #endif
+    case Precision::Exact: return f(Exact{});
     case Precision::Double: break;
     }
     return f(double{});
@@ -179,10 +223,11 @@ PrecisionChoice parsePrecision(const std::string& name, unsigned mpfrBits)
                                                            {"double", Precision::Double},
                                                            {"long-double", Precision::LongDouble},
                                                            {"float128", Precision::Float128},
-                                                           {"mpfr", Precision::Mpfr}};
+                                                           {"mpfr", Precision::Mpfr},
+                                                           {"exact", Precision::Exact}};
     const auto found = names.find(name);
     if (found == names.end())
-        throw InputError("--precision", "must be float, double, long-double, float128 or mpfr (got \"" + name + "\")");
+        throw InputError("--precision", "must be float, double, long-double, float128, mpfr or exact (got \"" + name + "\")");
     if (mpfrBits < 16 || mpfrBits > 4096)
         throw InputError("--bits", "must be 16 to 4096 (got " + std::to_string(mpfrBits) + ")");
     return {found->second, mpfrBits};
@@ -190,7 +235,7 @@ PrecisionChoice parsePrecision(const std::string& name, unsigned mpfrBits)
 
 std::string precisionName(const PrecisionChoice& precision)
 {
-    static const char* names[] = {"float", "double", "long-double", "float128", "mpfr"};
+    static const char* names[] = {"float", "double", "long-double", "float128", "mpfr", "exact"};
     const std::string name = names[static_cast<int>(precision.type)];
     return precision.type == Precision::Mpfr ? name + "-" + std::to_string(precision.mpfrBits) : name;
 }
@@ -235,6 +280,24 @@ Json pipelineJson(const Scene& scene, const PrecisionChoice& precision, const Ef
         }
         if (!scene.effects.empty())
             out["effects"] = effectsJson(scene, outcomes);
+        if constexpr (isExactScalar<T>) {
+            Json inexact = Json::array();
+            Json exactStages = Json::array();
+            for (std::size_t k = 0; k < p.stages.size(); ++k) {
+                exactStages.push_back({{"symbol", p.stages[k].symbol},
+                                       {"matrix", exactJson(p.stages[k].matrix,
+                                                            "exact.stages[" + std::to_string(k) + "].matrix", inexact)}});
+                if (p.stages[k].divides)
+                    exactStages.back()["divides"] = kDivideMapping;
+            }
+            out["exact"] = {{"stages", exactStages},
+                            {"composite", exactJson(p.composite, "exact.composite", inexact)},
+                            {"zmin", p.zmin ? Json(p.zmin->text()) : Json(nullptr)}};
+            if (p.zmin && !p.zmin->isExact())
+                inexact.push_back({{"path", "exact.zmin"}, {"reason", p.zmin->inexactReason()}});
+            if (!inexact.empty())
+                out["inexact"] = inexact;
+        }
         return out;
     });
 }
@@ -269,6 +332,15 @@ void printPipeline(std::ostream& out, const Scene& scene, const PrecisionChoice&
         if (p.zmin)
             out << "\nz_min = " << shortNumber(*p.zmin)
                 << "  (canonical perspective volume: x = +-z, y = +-z, z = z_min, z = -1)\n";
+        if constexpr (isExactScalar<T>) {
+            std::set<std::string> reasons;
+            for (const Stage<T>& stage : p.stages)
+                for (const T& x : stage.matrix.reshaped())
+                    if (!x.isExact())
+                        reasons.insert(x.inexactReason());
+            for (const std::string& reason : reasons)
+                out << "\n~ not exact: " << reason << "; given to 6 digits here, 40 in --json\n";
+        }
         if (p.view && p.projectionMatrix) {
             out << "\n";
             const auto& camera = std::get<gl::Camera<double>>(scene.camera);
@@ -296,12 +368,21 @@ void printPipeline(std::ostream& out, const Scene& scene, const PrecisionChoice&
     });
 }
 
-Json traceJson(const Scene& scene, const Vec3<double>& point, const PrecisionChoice& precision)
+Json traceJson(const Scene& scene, const Vec3<Exact>& typed, const PrecisionChoice& precision)
 {
+    // The verdict is the scene's and the point's as typed, whatever precision computes the numbers.
+    const Pipeline<Exact> exact = pipelineFor<Exact>(scene);
+    const PointTrace<Exact> exactTrace = tracePoint(exact, typed);
+    const ClipVerdict verdict = clipVerdict(exactTrace.clip, exact.clipVolume);
     return withPrecision(precision, [&](auto zero) {
         using T = decltype(zero);
         const Pipeline<T> p = pipelineFor<T>(scene);
-        const PointTrace<T> trace = tracePoint(p, Vec3<T>(point.cast<T>()));
+        const Vec3<T> point(scalarOf<T>(typed.x()), scalarOf<T>(typed.y()), scalarOf<T>(typed.z()));
+        PointTrace<T> trace;
+        if constexpr (isExactScalar<T>)
+            trace = exactTrace;
+        else
+            trace = tracePoint(p, point);
         Json stages = Json::array();
         for (std::size_t k = 0; k < p.stages.size(); ++k)
             stages.push_back({{"symbol", p.stages[k].symbol}, {"point", vectorJson(trace.afterStage[k])}});
@@ -312,15 +393,29 @@ Json traceJson(const Scene& scene, const Vec3<double>& point, const PrecisionCho
                  {"stages", stages},
                  {"clip", vectorJson(trace.clip)},
                  {"divided", trace.divided ? vectorJson(*trace.divided) : Json(nullptr)},
-                 {"inside", trace.inside}};
+                 {"inside", verdict.inside},
+                 {"on_planes", verdict.behindEye ? std::vector<std::string>{} : planeNames(verdict.on, p.convention)}};
+        if constexpr (std::is_same_v<T, float> || std::is_same_v<T, double>) {
+            // A coordinate the type cannot hold is computed rounded; the verdict is still the typed point's.
+            for (int i = 0; i < 3; ++i)
+                if (Exact(double(point[i])) != typed[i])
+                    out["rounded"] = true;
+        }
+        if constexpr (isExactScalar<T>) {
+            Json exactStages = Json::array();
+            for (std::size_t k = 0; k < p.stages.size(); ++k)
+                exactStages.push_back({{"symbol", p.stages[k].symbol}, {"point", exactJson(trace.afterStage[k])}});
+            out["exact"] = {{"point", exactJson(typed)},
+                            {"stages", exactStages},
+                            {"clip", exactJson(trace.clip)},
+                            {"divided", trace.divided ? exactJson(*trace.divided) : Json(nullptr)}};
+        }
         if (scene.effects.has(EffectKind::Clip)) {
             // Which clipping planes reject the point, decided before any divide.
-            const Vec4<double> h = trace.clip.template cast<double>();
-            const bool behind = !(h.w() > 0); // then every plane test fails: report that alone
-            out["clipping"] = {{"clipped", !trace.inside},
-                               {"behind_eye", behind},
-                               {"outside_planes", behind ? std::vector<std::string>{}
-                                                         : planeNames(outcode(h, p.clipVolume), p.convention)}};
+            out["clipping"] = {{"clipped", !verdict.inside},
+                               {"behind_eye", verdict.behindEye},
+                               {"outside_planes", verdict.behindEye ? std::vector<std::string>{}
+                                                                    : planeNames(verdict.outside, p.convention)}};
         }
         return out;
     });
@@ -411,33 +506,57 @@ void printApiTrace(std::ostream& out, const Scene& scene, const Vec3<double>& po
         << "\n";
 }
 
-void printTrace(std::ostream& out, const Scene& scene, const Vec3<double>& point, const PrecisionChoice& precision)
+// "inside the canonical view volume", or on which face, edge or corner of it.
+std::string verdictText(const Json& trace)
+{
+    const Json& on = trace["on_planes"];
+    if (!trace["inside"].get<bool>())
+        return "outside the canonical view volume";
+    if (on.empty())
+        return "inside the canonical view volume";
+    std::string faces;
+    for (std::size_t i = 0; i < on.size(); ++i)
+        faces += (i == 0 ? "" : i + 1 == on.size() ? " and " : ", ") + on[i].get<std::string>();
+    const char* where[] = {"", "on the ", "on the edge of the ", "on the corner of the "};
+    return where[std::min<std::size_t>(on.size(), 3)] + faces + (on.size() == 1 ? " face" : " faces") +
+           " of the canonical view volume (inside)";
+}
+
+void printTrace(std::ostream& out, const Scene& scene, const Vec3<Exact>& point, const PrecisionChoice& precision)
 {
     // A JSON number, or a wide one written as a string.
     auto negative = [](const Json& x) { return x.is_string() ? x.get<std::string>().front() == '-' : x.get<double>() < 0; };
     const Json t = traceJson(scene, point, precision);
+    const Json& numbers = t.contains("exact") ? t["exact"] : t; // exact values as they are
     auto show = [](const Json& v) {
         std::string s = "(";
         for (std::size_t i = 0; i < v.size(); ++i)
             s += (i ? ", " : "") + (v[i].is_string() ? v[i].get<std::string>() : shortNumber(v[i].get<double>()));
         return s + ")";
     };
-    out << "Point " << show(t["point"]) << " through " << scene.name << " (" << t["projection"].get<std::string>()
-        << ", " << precisionName(precision) << " precision), homogeneous (x, y, z, w):\n";
+    out << "Point " << show(numbers["point"]) << " through " << scene.name << " ("
+        << t["projection"].get<std::string>() << ", " << precisionName(precision) << " precision), homogeneous (x, y, z, w):\n";
+    if (t.contains("rounded")) {
+        std::string rounded;
+        for (const Json& x : t["point"])
+            rounded += (rounded.empty() ? "" : ", ") + formatSignificant(x.get<double>(), 20);
+        out << "  (computed from the nearest " << precisionName(precision) << " values, (" << rounded
+            << "); the verdict is the point's as typed)\n";
+    }
     std::size_t width = 0;
-    for (const Json& stage : t["stages"])
+    for (const Json& stage : numbers["stages"])
         width = std::max(width, stage["symbol"].get<std::string>().size());
-    for (const Json& stage : t["stages"])
+    for (const Json& stage : numbers["stages"])
         out << "  after " << std::left << std::setw(int(width)) << stage["symbol"].get<std::string>() << std::right
             << "  " << show(stage["point"]) << "\n";
     const bool foleyPerspective = t["convention"] == "foley" && t["projection"] == "perspective";
-    out << "  before the divide" << (foleyPerspective ? " (after Foley's M)" : "") << ": " << show(t["clip"]) << "\n";
-    if (t["divided"].is_null())
+    out << "  before the divide" << (foleyPerspective ? " (after Foley's M)" : "") << ": " << show(numbers["clip"]) << "\n";
+    if (numbers["divided"].is_null())
         out << "  divide: w = 0, the point lies on the eye plane and has no image\n";
     else
-        out << "  after the divide: " << show(t["divided"])
-            << (negative(t["clip"].back()) ? "  (w < 0: behind the eye, a false image)" : "") << "\n";
-    out << "  " << (t["inside"].get<bool>() ? "inside" : "outside") << " the canonical view volume\n";
+        out << "  after the divide: " << show(numbers["divided"])
+            << (negative(numbers["clip"].back()) ? "  (w < 0: behind the eye, a false image)" : "") << "\n";
+    out << "  " << verdictText(t) << "\n";
     if (t.contains("clipping")) {
         const Json& c = t["clipping"];
         out << "  clip: " << (c["clipped"].get<bool>() ? "clipped away" : "kept");

@@ -492,3 +492,69 @@ TEST(Cli, ALessonPacksIntoAFolderThatTravels)
 }
 
 } // namespace
+
+namespace {
+
+// Python's own arithmetic (math.sqrt) evaluates every exact entry to within 1e-9 of the double computed
+// independently by the double pipeline, for every built-in scene: the strings are what docs/cli.md says.
+TEST(Cli, ExactEntriesAreExpressionsPythonEvaluates)
+{
+    const std::string script = (std::filesystem::temp_directory_path() / "viewpipe-exact-check.py").string();
+    std::ofstream(script) << R"py(
+import json, sys
+from math import sqrt
+exact, double = json.load(open(sys.argv[1])), json.load(open(sys.argv[2]))
+assert exact["precision"] == "exact"
+for stage, numbers in zip(exact["exact"]["stages"], double["stages"]):
+    for row, values in zip(stage["matrix"], numbers["matrix"]):
+        for text, value in zip(row, values):
+            assert abs(eval(text) - value) <= 1e-9 * max(1, abs(value)), (stage["symbol"], text, value)
+for row, values in zip(exact["exact"]["composite"], double["composite"]):
+    for text, value in zip(row, values):
+        assert abs(eval(text) - value) <= 1e-9 * max(1, abs(value)), ("composite", text, value)
+print("checked")
+)py";
+    int scenes = 0;
+    for (const auto& entry : std::filesystem::recursive_directory_iterator(std::string(viewpipe::build::dataDir) + "/scenes")) {
+        if (entry.path().extension() != ".json")
+            continue;
+        const Result exact = run("pipeline " + entry.path().string() + " --precision exact --json");
+        const Result plain = run("pipeline " + entry.path().string() + " --json");
+        ASSERT_EQ(exact.exitCode, 0) << entry.path() << exact.err;
+        const std::string exactFile = writeScene("viewpipe-exact.json", exact.out);
+        const std::string plainFile = writeScene("viewpipe-double.json", plain.out);
+        const std::string command = "python3 " + script + " " + exactFile + " " + plainFile + " 2>&1";
+        FILE* pipe = ::popen(command.c_str(), "r");
+        std::array<char, 4096> buffer;
+        std::string out;
+        std::size_t n;
+        while ((n = std::fread(buffer.data(), 1, buffer.size(), pipe)) > 0)
+            out.append(buffer.data(), n);
+        EXPECT_EQ(::pclose(pipe), 0) << entry.path() << ": " << out;
+        ++scenes;
+    }
+    EXPECT_GE(scenes, 20);
+}
+
+TEST(Cli, TraceSaysWhichFaceExactly)
+{
+    const std::string frustum = writeScene("viewpipe-frustum.json", R"({"camera": {"look_at": {"eye": [0, 0, 0],
+        "center": [0, 0, -1], "up": [0, 1, 0]}, "projection": {"type": "frustum", "left": -2, "right": 2,
+        "bottom": -1.5, "top": 1.5, "near": 2, "far": 10}}})");
+    Result r = run("trace " + frustum + " --point 0 0 -2");
+    EXPECT_EQ(r.exitCode, 0) << r.err;
+    EXPECT_NE(r.out.find("on the near face of the canonical view volume (inside)"), std::string::npos) << r.out;
+    r = run("trace " + frustum + " --point 2 3/2 -2 --precision exact");
+    EXPECT_NE(r.out.find("after the divide: (1, 1, -1)"), std::string::npos) << r.out;
+    EXPECT_NE(r.out.find("on the corner of the right, top and near faces"), std::string::npos) << r.out;
+    r = run("trace " + frustum + " --point 0.1 0 -2");
+    EXPECT_NE(r.out.find("computed from the nearest double values, (0.10000000000000000555"), std::string::npos) << r.out;
+    r = run("trace " + frustum + " --point 'sqrt(-1)' 0 -2");
+    EXPECT_EQ(r.exitCode, 2);
+    EXPECT_NE(r.err.find("--point: must be three finite numbers or exact expressions (coordinate 1: the square root of -1"),
+              std::string::npos) << r.err;
+    r = run("pipeline " + kHouse + " --precision exact");
+    EXPECT_NE(r.out.find("z_min = -24/59"), std::string::npos) << r.out;
+}
+
+} // namespace

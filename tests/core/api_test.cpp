@@ -427,7 +427,7 @@ TEST(Api, ScenesNameTheApiHandednessAndDepth)
                                          "projection": )" + projection + "}}", ".");
     };
     expectRefused([&] { withProjection(R"({"type": "perspective", "fovy_deg": 60, "aspect": 1, "near": 1, "far": "inf"})"); },
-                  "camera.projection.far", "(got the text \"inf\")");
+                  "camera.projection.far", "expected a number, sqrt(...) or ( at character 1 of \"inf\"");
     expectRefused([&] { withProjection(R"({"type": "ortho", "left": -1, "right": 1, "bottom": -1, "top": 1, "near": 1, "far": "infinity"})"); },
                   "camera.projection.far", "cannot be \"infinity\" for an ortho projection");
 }

@@ -65,7 +65,7 @@ TEST(Scene, RefusesWithTheFieldPath)
             "view.projection", "\"perspective\" or \"parallel\"");
     refused(withView(R"({"projection": "perspective", "vrp": [0, 0, 0], "vpn": [0, 0, 1], "vup": [0, 1, "z"],
         "prp": [8, 6, 84], "window": [-50, 50, -50, 50], "front": 60, "back": 25})"),
-            "view.vup[2]", "must be a number (got the text \"z\")");
+            "view.vup[2]", "expected a number, sqrt(...) or ( at character 1 of \"z\"");
     refused(withView(R"({"projection": "perspective", "vrp": [0, 0], "vpn": [0, 0, 1], "vup": [0, 1, 0],
         "prp": [8, 6, 84], "window": [-50, 50, -50, 50], "front": 60, "back": 25})"),
             "view.vrp", "array of 3 numbers");

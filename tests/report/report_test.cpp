@@ -230,12 +230,63 @@ TEST(PipelineJson, WidePrecisionsAreStrings)
 TEST(TraceJson, HouseHasTheContractedKeys)
 {
     const Scene house = loadScene(kScenes / "house.json");
-    const Json j = report::traceJson(house, Vec3<double>(16, 10, 54), report::PrecisionChoice{});
-    EXPECT_EQ(keys(j), (std::vector<std::string>{"clip", "convention", "divided", "inside", "point", "precision",
-                                                 "projection", "stages"}));
+    const Json j = report::traceJson(house, Vec3<Exact>(16, 10, 54), report::PrecisionChoice{});
+    EXPECT_EQ(keys(j), (std::vector<std::string>{"clip", "convention", "divided", "inside", "on_planes", "point",
+                                                 "precision", "projection", "stages"}));
     EXPECT_EQ(j["point"], Json({16.0, 10.0, 54.0}));
     // After T(-PRP) the point is (16 - 8, 10 - 6, 54 - 84).
     EXPECT_EQ(j["stages"][2]["point"], Json({8.0, 4.0, -30.0, 1.0}));
+}
+
+// glFrustum(-2, 2, -1.5, 1.5, 2, 10): in double the near plane's center came out at z = -1 - 2^-52... and
+// "outside" (-3/2 is -1.4999999999999998 there); a verdict is the scene's as typed, in every precision.
+TEST(TraceJson, VerdictsAreExactInEveryPrecision)
+{
+    const Scene frustum = parseScene(R"({"camera": {"look_at": {"eye": [0, 0, 0], "center": [0, 0, -1], "up": [0, 1, 0]},
+        "projection": {"type": "frustum", "left": -2, "right": 2, "bottom": -1.5, "top": 1.5, "near": 2, "far": 10}}})",
+                                     ".");
+    struct Case { Vec3<Exact> point; std::vector<std::string> on; bool inside; };
+    const Case cases[] = {{{0, 0, -2}, {"near"}, true},
+                          {{2, parseExact("1.5"), -2}, {"right", "top", "near"}, true},
+                          {{0, 0, -10}, {"far"}, true},
+                          {{-10, parseExact("-7.5"), -10}, {"left", "bottom", "far"}, true},
+                          {{0, 0, -5}, {}, true},
+                          {{0, 0, parseExact("-1.999999999999999999999")}, {}, false},
+                          {{parseExact("0.1"), 0, -2}, {"near"}, true}};
+    for (const char* precision : {"float", "double", "long-double", "float128", "mpfr", "exact"})
+        for (const Case& c : cases) {
+            const Json j = report::traceJson(frustum, c.point, report::parsePrecision(precision));
+            EXPECT_EQ(j["inside"], c.inside) << precision << " " << c.point.transpose();
+            EXPECT_EQ(j["on_planes"], Json(c.on)) << precision << " " << c.point.transpose();
+        }
+    // 0.1 is no double: the trace says the point was rounded.
+    EXPECT_TRUE(report::traceJson(frustum, Vec3<Exact>(parseExact("0.1"), 0, -2), {}).contains("rounded"));
+    EXPECT_FALSE(report::traceJson(frustum, Vec3<Exact>(parseExact("0.5"), 0, -2), {}).contains("rounded"));
+    const Json exact = report::traceJson(frustum, Vec3<Exact>(2, parseExact("1.5"), -2), report::parsePrecision("exact"));
+    EXPECT_EQ(exact["exact"]["divided"], Json({"1", "1", "-1"}));
+    EXPECT_EQ(exact["exact"]["point"], Json({"2", "3/2", "-2"}));
+}
+
+TEST(PipelineJson, ExactPrecisionGivesEveryEntryExactly)
+{
+    const Json j = report::pipelineJson(loadScene(kScenes / "house-corner.json"), report::parsePrecision("exact"), {});
+    EXPECT_EQ(j["precision"], "exact");
+    EXPECT_EQ(j["exact"]["stages"][1]["matrix"][0], Json({"sqrt(2)/2", "0", "-sqrt(2)/2", "0"}));
+    EXPECT_EQ(j["exact"]["stages"][3]["matrix"][1][2], "-13/36");
+    EXPECT_EQ(j["exact"]["zmin"], "-31/66");
+    EXPECT_FALSE(j.contains("inexact"));
+    EXPECT_EQ(j["stages"][1]["matrix"][0][0], std::sqrt(0.5)); // the usual numbers, rounded to double
+    // gluPerspective at 50 degrees: cot(25 degrees) is no square-root expression.
+    const Scene fifty = parseScene(R"({"camera": {"look_at": {"eye": [0, 0, 5], "center": [0, 0, 0], "up": [0, 1, 0]},
+        "projection": {"type": "perspective", "fovy_deg": 50, "aspect": 1, "near": 1, "far": 10}}})", ".");
+    const Json inexact = report::pipelineJson(fifty, report::parsePrecision("exact"), {})["inexact"];
+    ASSERT_FALSE(inexact.empty());
+    EXPECT_NE(inexact[0]["reason"].get<std::string>().find("cot(50 degrees / 2)"), std::string::npos) << inexact;
+    const std::string sixtyText = R"({"camera": {"look_at": {"eye": [0, 0, 5], "center": [0, 0, 0], "up": [0, 1, 0]},
+        "projection": {"type": "perspective", "fovy_deg": 60, "aspect": 1, "near": 1, "far": 10}}})";
+    const Json sixty = report::pipelineJson(parseScene(sixtyText, "."), report::parsePrecision("exact"), {});
+    EXPECT_EQ(sixty["exact"]["composite"][1][1], "sqrt(3)"); // cot 30 degrees
+    EXPECT_FALSE(sixty.contains("inexact"));
 }
 
 TEST(ClassifyJson, HouseHasTheContractedKeys)

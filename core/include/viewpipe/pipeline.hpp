@@ -4,6 +4,7 @@
 // scene's camera uses: its stages, their composite, and the homogeneous space
 // in which the canonical volume is tested and the divide is taken.
 
+#include <array>
 #include <optional>
 #include <string>
 #include <variant>
@@ -161,6 +162,37 @@ template <class T> Mat4<T> screenClipMatrix(const Pipeline<T>& p)
         toOpenGl = gl::ndcConversion<T>(p.api, depth).inverse();
     }
     return toOpenGl * p.clipMatrix();
+}
+
+// The six boundary values of a homogeneous point, in the order left, right,
+// bottom, top, near, far: inside where all are >= 0, on a plane where its value is 0.
+template <class T> std::array<T, 6> clipBoundaries(const Vec4<T>& p, ClipVolume volume)
+{
+    const T& w = p.w();
+    const T nearZ(nearPlaneZ(volume)), farZ(farPlaneZ(volume));
+    const T towardFar(farPlaneZ(volume) > nearPlaneZ(volume) ? 1 : -1);
+    return {w + p.x(), w - p.x(), w + p.y(), w - p.y(), (p.z() - nearZ * w) * towardFar, (farZ * w - p.z()) * towardFar};
+}
+
+// Where a point lies against the canonical volume: bit k of `outside` set where
+// boundary k is violated, of `on` where the point lies on plane k.
+struct ClipVerdict {
+    bool inside = false;
+    bool behindEye = false; // w <= 0
+    unsigned outside = 0, on = 0;
+};
+
+template <class T> ClipVerdict clipVerdict(const Vec4<T>& clip, ClipVolume volume)
+{
+    ClipVerdict verdict;
+    const std::array<T, 6> b = clipBoundaries(clip, volume);
+    for (int k = 0; k < 6; ++k) {
+        verdict.outside |= b[std::size_t(k)] < T(0) ? 1u << k : 0u;
+        verdict.on |= b[std::size_t(k)] == T(0) ? 1u << k : 0u;
+    }
+    verdict.behindEye = !(clip.w() > T(0));
+    verdict.inside = !verdict.behindEye && verdict.outside == 0;
+    return verdict;
 }
 
 template <class T> bool insideClipVolume(const Vec4<T>& clip, ClipVolume volume)

@@ -9,13 +9,14 @@
 #include <ostream>
 #include <string>
 
+#include "viewpipe/exact.hpp"
 #include "viewpipe/scene.hpp"
 
 namespace viewpipe::report {
 
-enum class Precision { Float, Double, LongDouble, Float128, Mpfr };
+enum class Precision { Float, Double, LongDouble, Float128, Mpfr, Exact };
 
-// "float", "double", "long-double", "float128", "mpfr" (with mpfrBits).
+// "float", "double", "long-double", "float128", "mpfr" (with mpfrBits), "exact".
 struct PrecisionChoice {
     Precision type = Precision::Double;
     unsigned mpfrBits = 256;
@@ -29,8 +30,10 @@ nlohmann::json pipelineJson(const Scene& scene, const PrecisionChoice& precision
 void printPipeline(std::ostream& out, const Scene& scene, const PrecisionChoice& precision,
                    const EffectOutcomes& outcomes);
 
-nlohmann::json traceJson(const Scene& scene, const Vec3<double>& point, const PrecisionChoice& precision);
-void printTrace(std::ostream& out, const Scene& scene, const Vec3<double>& point, const PrecisionChoice& precision);
+// The point as typed (exact); its verdict (inside, on which planes) is decided
+// exactly for the scene as typed, in every precision.
+nlohmann::json traceJson(const Scene& scene, const Vec3<Exact>& point, const PrecisionChoice& precision);
+void printTrace(std::ostream& out, const Scene& scene, const Vec3<Exact>& point, const PrecisionChoice& precision);
 
 // `viewpipe trace --api all|NAME`: the point through the scene's camera
 // numbers under every API (or the one named), handedness and depth: clip
