@@ -303,13 +303,8 @@ std::string Exact::latex(int digits) const
 {
     if (infinity_)
         return infinity_ > 0 ? "\\infty" : "-\\infty";
-    if (approximation_) {
-        std::string s = approximation_->str(digits);
-        const std::size_t e = s.find('e');
-        if (e != std::string::npos) // 1.5e-07 -> 1.5 \times 10^{-7}
-            s = s.substr(0, e) + " \\times 10^{" + std::to_string(std::stoi(s.substr(e + 1))) + "}";
-        return s;
-    }
+    if (approximation_)
+        return approximation_->str(digits);
     if (terms_.empty())
         return "0";
     std::string out;
@@ -325,6 +320,18 @@ std::string Exact::latex(int digits) const
         out += q == 1 ? numerator : "\\frac{" + numerator + "}{" + integerText(q) + "}";
     }
     return out;
+}
+
+bool Exact::readsExactly() const
+{
+    if (!isExact() || infinity_ || terms_.size() > 1)
+        return false;
+    const BigInt limit = boost::multiprecision::pow(BigInt(10), isRational() ? 9u : 4u);
+    for (const auto& [radicand, coefficient] : terms_)
+        if (radicand >= limit || abs(boost::multiprecision::numerator(coefficient)) >= limit ||
+            boost::multiprecision::denominator(coefficient) >= limit)
+            return false;
+    return true;
 }
 
 Exact Exact::operator-() const

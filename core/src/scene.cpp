@@ -832,6 +832,11 @@ CameraSpec<Exact> exactCamera(const Scene& scene)
     return camera;
 }
 
+Pipeline<Exact> exactPipeline(const Scene& scene)
+{
+    return withEffectStages(buildPipeline(exactCamera(scene)), scene.effects);
+}
+
 const gl::Camera<double>& lookAtCamera(const Scene& scene, const std::string& purpose)
 {
     const auto* camera = std::get_if<gl::Camera<double>>(&scene.camera);

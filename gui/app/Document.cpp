@@ -37,6 +37,19 @@ Document::Document(QObject* parent) : QObject(parent), evaluated_(std::make_shar
     connect(&undo_, &QUndoStack::cleanChanged, this, &Document::fileChanged);
 }
 
+const Pipeline<Exact>* Document::exactPipeline() const
+{
+    if (exactOf_ != evaluated_) {
+        exactOf_ = evaluated_;
+        try {
+            exact_ = viewpipe::exactPipeline(evaluated_->scene);
+        } catch (const std::exception&) { // refused exactly (an up vector exactly parallel): the doubles stand
+            exact_.reset();
+        }
+    }
+    return exact_ ? &*exact_ : nullptr;
+}
+
 Document::~Document()
 {
     undo_.blockSignals(true);

@@ -14,8 +14,10 @@
 #include <mutex>
 
 #include <memory>
+#include <optional>
 
 #include "viewpipe/evaluated_scene.hpp"
+#include "viewpipe/exact.hpp"
 
 namespace viewpipe::gui {
 
@@ -28,6 +30,9 @@ public:
 
     const Scene& scene() const { return evaluated_->scene; }
     const Pipeline<double>& pipeline() const { return evaluated_->pipeline; }
+    // The same pipeline computed exactly, for the numbers people read; once per
+    // evaluation, when first asked. Null where exact arithmetic refuses the scene.
+    const Pipeline<Exact>* exactPipeline() const;
     // What every picture, panel and export of the scene reads.
     const std::shared_ptr<const EvaluatedScene>& evaluated() const { return evaluated_; }
     // Hears each evaluation and mesh file read of this document's scenes; null: nobody.
@@ -68,6 +73,8 @@ signals:
     void fileChanged();
 
 private:
+    mutable std::shared_ptr<const EvaluatedScene> exactOf_; // the evaluation exact_ was computed for
+    mutable std::optional<Pipeline<Exact>> exact_;
     void replace(Scene next, const QString& description, int gesture = -1);
 
     SceneEvaluator evaluator_;

@@ -402,7 +402,7 @@ void MainWindow::updateMatrices()
     if (waiting)
         return matrices_->showWaiting(tr("<i>The matrices follow the answer to the lesson's question.</i>"));
     const int stage = stepper_->shownStage();
-    matrices_->showStage(document_->pipeline(), stage, lessonFlow_->highlightedEntries(stage));
+    matrices_->showStage(document_->pipeline(), document_->exactPipeline(), stage, lessonFlow_->highlightedEntries(stage));
     updateTrace();
 }
 
@@ -411,7 +411,8 @@ void MainWindow::updateTrace()
     if (lessonFlow_->hidesAnswers()) // a question waits: the trace follows its answer
         return;
     const int stage = stepper_->shownStage();
-    matrices_->showTrace(document_->pipeline(), traced_, stage, lessonFlow_->lastTracedStage(stage));
+    matrices_->showTrace(document_->pipeline(), document_->exactPipeline(), traced_, stage,
+                         lessonFlow_->lastTracedStage(stage));
 }
 
 void MainWindow::updateCaptions()

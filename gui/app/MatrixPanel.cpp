@@ -5,8 +5,9 @@
 #include <QScrollArea>
 #include <QVBoxLayout>
 
-#include "viewpipe/report/stage_symbols.hpp"
+#include "viewpipe/exact.hpp"
 #include "viewpipe/format.hpp"
+#include "viewpipe/report/stage_symbols.hpp"
 
 namespace viewpipe::gui {
 namespace {
@@ -43,12 +44,18 @@ QString table(const QString& caption, const std::array<QString, 16>& cells, cons
     return html + "</table>";
 }
 
-std::array<QString, 16> numbers(const Mat4<double>& m)
+// x as the textbook writes it where its exact value reads so, else 5 digits.
+QString number(double x, const Exact* exact)
+{
+    return exact && exact->readsExactly() ? mathHtml("$" + exact->latex() + "$") : number(x);
+}
+
+std::array<QString, 16> numbers(const Mat4<double>& m, const Mat4<Exact>* exact = nullptr)
 {
     std::array<QString, 16> cells;
     for (int r = 0; r < 4; ++r)
         for (int c = 0; c < 4; ++c)
-            cells[std::size_t(r * 4 + c)] = number(m(r, c));
+            cells[std::size_t(r * 4 + c)] = number(m(r, c), exact ? &(*exact)(r, c) : nullptr);
     return cells;
 }
 
@@ -83,9 +90,13 @@ MatrixPanel::MatrixPanel(QWidget* parent) : QWidget(parent)
     layout->addStretch();
 }
 
-void MatrixPanel::showStage(const Pipeline<double>& pipeline, int stage, const std::vector<std::array<int, 2>>& highlighted)
+void MatrixPanel::showStage(const Pipeline<double>& pipeline, const Pipeline<Exact>* exact, int stage,
+                            const std::vector<std::array<int, 2>>& highlighted)
 {
     const std::vector<Mat4<double>> cumulative = cumulativeProducts(pipeline.stages);
+    const std::vector<Mat4<Exact>> exactCumulative = exact ? cumulativeProducts(exact->stages) : std::vector<Mat4<Exact>>{};
+    const auto exactStage = [&](std::size_t k) { return exact ? &exact->stages[k].matrix : nullptr; };
+    const auto exactProduct = [&](std::size_t k) { return exact ? &exactCumulative[k] : nullptr; };
     if (stage <= 0) {
         title_->setText(tr("<b>World</b>: the scene in world coordinates (WRC), before any transformation."));
         matrices_->setText(table(tr("Cumulative"), numbers(Mat4<double>::Identity())));
@@ -120,36 +131,50 @@ void MatrixPanel::showStage(const Pipeline<double>& pipeline, int stage, const s
         std::array<bool, 16> marked{};
         for (const auto& [row, column] : highlighted)
             marked[std::size_t((row - 1) * 4 + column - 1)] = true;
-        html += table(symbol, numbers(s.matrix), marked, kLessonMark);
+        html += table(symbol, numbers(s.matrix, exactStage(std::size_t(stage - 1))), marked, kLessonMark);
     }
-    html += table(tr("Cumulative (changed entries highlighted)"), numbers(now), changed);
+    html += table(tr("Cumulative (changed entries highlighted)"), numbers(now, exactProduct(std::size_t(stage - 1))),
+                  changed);
     matrices_->setText(html);
 }
 
-void MatrixPanel::showTrace(const Pipeline<double>& pipeline, const std::optional<Vec3<double>>& point, int stage, int lastRow)
+void MatrixPanel::showTrace(const Pipeline<double>& pipeline, const Pipeline<Exact>* exact,
+                            const std::optional<Vec3<double>>& point, int stage, int lastRow)
 {
     if (!point) {
         trace_->setText(tr("Click a vertex of an object to trace it through the stages."));
         return;
     }
     const PointTrace<double> t = tracePoint(pipeline, *point);
-    auto row = [](const QString& name, const Vec4<double>& p, bool current) {
+    // The vertex as its file writes it (0.1 is one tenth), traced exactly.
+    std::optional<PointTrace<Exact>> e;
+    if (exact)
+        e = tracePoint(*exact, Vec3<Exact>(fromDecimal<Exact>(point->x()), fromDecimal<Exact>(point->y()),
+                                           fromDecimal<Exact>(point->z())));
+    auto row = [](const QString& name, const Vec4<double>& p, const Vec4<Exact>* q, bool current) {
         QString cells = QString("<tr%1><td>%2</td>").arg(current ? " style='font-weight:bold'" : "", name);
         for (int k = 0; k < 4; ++k)
-            cells += "<td align='right'>" + kColumnGap + number(p[k]) + "</td>";
+            cells += "<td align='right'>" + kColumnGap + number(p[k], q ? &(*q)[k] : nullptr) + "</td>";
         return cells + "</tr>";
     };
     QString html = tr("<b>Traced vertex</b> (x, y, z, w):<table cellspacing='0' cellpadding='2'>");
-    html += row(tr("world"), point->homogeneous(), stage == 0);
+    const Vec4<Exact> world = e ? Vec4<Exact>(fromDecimal<Exact>(point->x()), fromDecimal<Exact>(point->y()),
+                                              fromDecimal<Exact>(point->z()), Exact(1))
+                                : Vec4<Exact>::Zero();
+    html += row(tr("world"), point->homogeneous(), e ? &world : nullptr, stage == 0);
     for (std::size_t k = 0; k < pipeline.stages.size() && int(k) < lastRow; ++k)
-        html += row(mathHtml("$" + symbolMath(pipeline.stages[k].symbol) + "$"), t.afterStage[k], int(k) + 1 == stage);
+        html += row(mathHtml("$" + symbolMath(pipeline.stages[k].symbol) + "$"), t.afterStage[k],
+                    e ? &e->afterStage[k] : nullptr, int(k) + 1 == stage);
     html += "</table>";
     if (lastRow < int(pipeline.stages.size()))
         return trace_->setText(html);
     if (t.divided)
-        html += tr("After the divide: (%1, %2, %3); ").arg(number(t.divided->x()), number(t.divided->y()),
-                                                         number(t.divided->z()));
-    html += t.inside ? tr("inside the canonical volume.") : tr("outside the canonical volume.");
+        html += tr("After the divide: (%1, %2, %3); ")
+                    .arg(number(t.divided->x(), e && e->divided ? &e->divided->x() : nullptr),
+                         number(t.divided->y(), e && e->divided ? &e->divided->y() : nullptr),
+                         number(t.divided->z(), e && e->divided ? &e->divided->z() : nullptr));
+    const bool inside = e ? e->inside : t.inside; // decided exactly where the exact pipeline is at hand
+    html += inside ? tr("inside the canonical volume.") : tr("outside the canonical volume.");
     trace_->setText(html);
 }
 

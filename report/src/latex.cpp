@@ -8,71 +8,21 @@
 #include "viewpipe/math_text.hpp"
 #include "viewpipe/report/stage_symbols.hpp"
 #include "viewpipe/report/tikz.hpp"
-#ifdef VIEWPIPE_WIDE_SCALARS
-#include "viewpipe/precision.hpp"
-#else // the browser's build (web/): Boost's own 100-digit float, where MPFR is not built
-#include <boost/multiprecision/cpp_bin_float.hpp>
-#include <boost/multiprecision/eigen.hpp>
-#endif
+#include "viewpipe/exact.hpp"
 
 namespace viewpipe::report {
 namespace {
 
-#ifdef VIEWPIPE_WIDE_SCALARS
-using Exact = Mpfr100;
-#else
-using Exact = boost::multiprecision::number<boost::multiprecision::cpp_bin_float<100>, boost::multiprecision::et_off>;
-#endif
-
-constexpr long long kMaxDenominator = 1000000000;
-
-// The fraction p/q (q <= 10^9) that x equals to 60 digits, if any: the
-// convergents of x's continued fraction are the candidates.
-bool asFraction(const Exact& x, std::string& out)
+// An exact value as the textbook writes it (-\frac{13}{36}, \frac{\sqrt{2}}{2}) where it reads so, else a decimal.
+std::string exactText(const Exact& x, int digits)
 {
-    const Exact tolerance = Exact("1e-60") * (abs(x) > 1 ? abs(x) : Exact(1));
-    Exact remainder = x;
-    // Convergents h/k from the recurrence h_n = a_n h_{n-1} + h_{n-2}.
-    Exact h0 = 1, h1 = 0, k0 = 0, k1 = 1;
-    for (int step = 0; step < 60; ++step) {
-        const Exact a = floor(remainder);
-        const Exact h = a * h0 + h1, k = a * k0 + k1;
-        h1 = h0, h0 = h, k1 = k0, k0 = k;
-        if (k0 > Exact(kMaxDenominator))
-            return false;
-        if (abs(x - h0 / k0) <= tolerance) {
-            const std::string p = h0.str(0, std::ios_base::fixed), q = k0.str(0, std::ios_base::fixed);
-            const std::string numerator = p.substr(0, p.find('.')), denominator = q.substr(0, q.find('.'));
-            if (denominator == "1")
-                out = numerator == "-0" ? "0" : numerator;
-            else if (numerator[0] == '-')
-                out = "-\\frac{" + numerator.substr(1) + "}{" + denominator + "}";
-            else
-                out = "\\frac{" + numerator + "}{" + denominator + "}";
-            return true;
-        }
-        const Exact fraction = remainder - a;
-        if (fraction == 0)
-            return false;
-        remainder = 1 / fraction;
-    }
-    return false;
-}
-
-std::string decimal(const Exact& x, int digits)
-{
+    if (x.readsExactly())
+        return x.latex();
     std::string s = formatSignificant(static_cast<double>(x), digits);
     const std::size_t e = s.find('e');
     if (e != std::string::npos) // 1.5e-07 -> 1.5 \times 10^{-7}
         s = s.substr(0, e) + " \\times 10^{" + std::to_string(std::stoi(s.substr(e + 1))) + "}";
     return s;
-}
-
-// An exact fraction where x is one, else a decimal.
-std::string exactText(const Exact& x, int digits)
-{
-    std::string out;
-    return asFraction(x, out) ? out : decimal(x, digits);
 }
 
 // `highlighted`: entries (row, column from 1) set on a colored box (xcolor).
@@ -91,12 +41,6 @@ std::string bmatrix(const Mat4<Exact>& m, int digits, const std::vector<std::arr
     return out + "\\end{bmatrix}";
 }
 
-Pipeline<Exact> exactPipeline(const Scene& scene)
-{
-    return withEffectStages(
-        buildPipeline(convertCamera<Exact>(scene.camera, [](double x) { return fromDecimal<Exact>(x); })),
-        scene.effects);
-}
 
 } // namespace
 
@@ -118,7 +62,7 @@ std::string matricesLatex(const Scene& scene, int digits)
     const std::vector<Mat4<Exact>> products = cumulativeProducts(p.stages);
     std::ostringstream out;
     out << "% " << scene.name << ": the stages of the normalizing transformation (column vectors, p' = M p).\n"
-        << "% Made by viewpipe; needs \\usepackage{amsmath}. Exact fractions where the entry is rational.\n"
+        << "% Made by viewpipe; needs \\usepackage{amsmath}. Exact values (fractions, square roots) where their numbers are short.\n"
         << "% Each stage in symbols and in numbers, and the product so far; each display fits a 12 cm column.\n"
         << "\\begingroup\n\\renewcommand{\\arraystretch}{1.2}\n\\setlength{\\parskip}{0pt}\n"
         << "\\setlength{\\abovedisplayskip}{4pt plus 2pt}\\setlength{\\belowdisplayskip}{4pt plus 2pt}\n"

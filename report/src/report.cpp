@@ -136,7 +136,7 @@ std::string compositeName(const Pipeline<double>& p)
 template <class T> Pipeline<T> pipelineFor(const Scene& scene)
 {
     if constexpr (isExactScalar<T>)
-        return withEffectStages(buildPipeline(exactCamera(scene)), scene.effects); // the scene as typed
+        return exactPipeline(scene);
     else
         return withEffectStages(buildPipeline(castCamera<T>(scene.camera)), scene.effects);
 }

@@ -171,12 +171,17 @@ TEST(Latex, OneEntryIsExactWhereItIsAFraction)
     EXPECT_EQ(report::entryLatex(house, 4, 1, 1, 6), "1");
 }
 
-TEST(Latex, IrrationalEntriesAreDecimals)
+// Foley's R for VPN (1, 0, 1): u = (sqrt2/2, 0, -sqrt2/2), n = (sqrt2/2, 0, sqrt2/2), as the book writes it.
+TEST(Latex, RootsAreWrittenAsTheTextbookDoes)
 {
     const Scene oblique = sceneFrom(R"({"view": {"projection": "parallel", "vrp": [0, 0, 0], "vpn": [1, 0, 1],
         "vup": [0, 1, 0], "prp": [0, 0, 10], "window": [-1, 1, -1, 1], "front": 1, "back": -1}})");
-    EXPECT_NE(report::stageLatex(oblique, 2, 4).find("0.7071 & 0 & -0.7071 & 0"), std::string::npos);
-    EXPECT_NE(report::stageLatex(oblique, 2, 6).find("0.707107 & 0 & -0.707107 & 0"), std::string::npos);
+    EXPECT_NE(report::stageLatex(oblique, 2, 4).find("\\frac{\\sqrt{2}}{2} & 0 & -\\frac{\\sqrt{2}}{2} & 0"),
+              std::string::npos) << report::stageLatex(oblique, 2, 4);
+    // Roots no one reads exactly (vup x n for an eye at (30, 25, 80)) are decimals to the digits asked.
+    const Scene gl = loadScene(kScenes / "opengl-ortho.json");
+    EXPECT_EQ(report::entryLatex(gl, 2, 2, 1, 4), "-0.1809");
+    EXPECT_EQ(report::entryLatex(gl, 2, 1, 1, 4), "\\frac{19\\sqrt{482}}{482}");
 }
 
 TEST(PipelineJson, HouseHasTheContractedKeys)

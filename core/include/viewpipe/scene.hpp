@@ -58,6 +58,8 @@ const gl::Camera<double>& lookAtCamera(const Scene& scene, const std::string& pu
 // The camera as typed, exactly: an expression as the expression, a JSON
 // number as the decimal written ("0.1" is one tenth). Include exact.hpp.
 CameraSpec<Exact> exactCamera(const Scene& scene);
+// The scene's pipeline, with its effects' stages, computed exactly from exactCamera.
+Pipeline<Exact> exactPipeline(const Scene& scene);
 
 // Parses and validates a scene; mesh paths are resolved against baseDir and
 // must name a readable .obj, .ply or .stl file.
