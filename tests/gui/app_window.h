@@ -10,6 +10,7 @@
 #include <QFileInfo>
 #include <QLineEdit>
 #include <QMessageBox>
+#include <QPointer>
 #include <QTimer>
 #include <QStandardPaths>
 #include <QSurfaceFormat>
@@ -162,23 +163,33 @@ inline void answerNextQuestion(const QString& text, QString* asked = nullptr, in
     answerNextQuestions({text}, asked, triesLeft);
 }
 
-// Answers the next file dialog with `path`.
-inline void answerNextFileDialog(const QString& path, int triesLeft = 100)
+// Answers the next file dialogs in turn, each with its path; a dialog is
+// answered once (the next answer waits for another dialog to show).
+inline void answerNextFileDialogs(const QStringList& paths, QPointer<QFileDialog> answered = nullptr, int triesLeft = 100)
 {
-    QTimer::singleShot(100, answerContext(), [path, triesLeft] {
+    if (paths.isEmpty())
+        return;
+    QTimer::singleShot(100, answerContext(), [paths, answered, triesLeft] {
         auto* dialog = shownDialog<QFileDialog>();
-        if (!dialog) {
+        if (!dialog || dialog == answered) {
             if (triesLeft > 0)
-                answerNextFileDialog(path, triesLeft - 1);
+                answerNextFileDialogs(paths, answered, triesLeft - 1);
             return;
         }
         // Typed into the file name, as a person types a whole path, then accepted.
         auto* name = dialog->findChild<QLineEdit*>("fileNameEdit");
         if (!name)
             qFatal("the file dialog has no file name field");
-        name->setText(path);
+        name->setText(paths.front());
         QMetaObject::invokeMethod(dialog, "accept", Qt::QueuedConnection);
+        answerNextFileDialogs(paths.mid(1), dialog);
     });
+}
+
+// Answers the next file dialog with `path`.
+inline void answerNextFileDialog(const QString& path)
+{
+    answerNextFileDialogs({path});
 }
 
 // The body of a GUI test's main(): VTK's OpenGL format, settings and data

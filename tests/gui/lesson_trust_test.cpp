@@ -10,6 +10,8 @@
 #include <QLabel>
 #include <QLineEdit>
 #include <QListWidget>
+#include <QMenu>
+#include <QMenuBar>
 #include <QPlainTextEdit>
 #include <QPushButton>
 #include <QSlider>
@@ -39,6 +41,7 @@ namespace {
 const QString kHouse = QString(viewpipe::build::dataDir) + "/scenes/house.json";
 const QString kFoley = QString(viewpipe::build::dataDir) + "/lessons/foley-nper.json";
 const QString kOpenGl = QString(viewpipe::build::dataDir) + "/lessons/opengl-perspective.json";
+const QString kLetterF = QString(viewpipe::build::dataDir) + "/scenes/letter-f.json";
 
 vtkRenderer* renderer(MainWindow& window, const char* view)
 {
@@ -179,6 +182,53 @@ void openEditor(MainWindow& w)
     if (!editor->isChecked())
         QTest::mouseClick(editor, Qt::LeftButton, {}, QPoint(10, 10));
     QVERIFY(editor->isChecked());
+}
+
+// A new title typed in the lesson's editor, ticked open first.
+void typeTitle(MainWindow& w, const QString& title)
+{
+    openEditor(w);
+    typeInto(lessonChild<QLineEdit>(w, "titleEdit"), title);
+}
+
+QString lessonTitle(MainWindow& w)
+{
+    return QString::fromStdString(w.lessonFlow()->lesson()->lesson().title);
+}
+
+QByteArray fileBytes(const QString& path)
+{
+    QFile file(path);
+    return file.open(QIODevice::ReadOnly) ? file.readAll() : QByteArray();
+}
+
+// A menu bar's menu clicked open, then its item clicked, as a person chooses it (names without the &).
+void chooseFromMenu(MainWindow& w, const QString& menuName, const QString& itemName)
+{
+    QMenuBar* bar = w.menuBar();
+    QAction* menuAction = nullptr;
+    for (QAction* action : bar->actions())
+        if (action->text().remove('&') == menuName)
+            menuAction = action;
+    QVERIFY2(menuAction && menuAction->menu(), qPrintable("no menu " + menuName));
+    QMenu* menu = menuAction->menu();
+    QTest::mouseClick(bar, Qt::LeftButton, {}, bar->actionGeometry(menuAction).center());
+    QVERIFY2(QTest::qWaitFor([menu] { return menu->isVisible(); }), qPrintable(menuName + " did not open"));
+    for (QAction* action : menu->actions())
+        if (action->text().remove('&') == itemName) {
+            QVERIFY(action->isEnabled());
+            return QTest::mouseClick(menu, Qt::LeftButton, {}, menu->actionGeometry(action).center());
+        }
+    QFAIL(qPrintable("no item " + itemName + " in " + menuName));
+}
+
+// The keys of File ▸ Quit, Open… and Lesson ▸ Open Lesson…, pressed in the window, active again
+// after a dialog (a shortcut acts in the active window only).
+void pressKeys(MainWindow& w, Qt::Key key)
+{
+    w.activateWindow();
+    QVERIFY(QTest::qWaitForWindowActive(&w));
+    QTest::keyClick(&w, key, Qt::ControlModifier);
 }
 
 } // namespace
@@ -419,6 +469,191 @@ private slots:
         close->trigger();
         QTRY_VERIFY(!lesson->isOpen());
         QCOMPARE(loadLesson(file.toStdString()).title, std::string("Kept"));
+    }
+
+    // File ▸ Quit (its keys) with the lesson edited: Cancel changes nothing; Save writes the edit where
+    // the user chooses (a built-in lesson is not overwritten), then the window closes.
+    void quittingWithLessonEditsAsksFirst()
+    {
+        MainWindow& w = *window_;
+        QVERIFY(w.lessonFlow()->openLesson(kFoley));
+        LessonDocument* lesson = w.lessonFlow()->lesson();
+        typeTitle(w, "Foley, before the bell");
+        QVERIFY(lesson->isModified());
+        const QByteArray builtIn = fileBytes(kFoley);
+        QString asked;
+        answerNextQuestion("Cancel", &asked);
+        pressKeys(w, Qt::Key_Q);
+        QVERIFY2(asked.contains("lesson has unsaved changes"), qPrintable(asked));
+        QVERIFY(w.isVisible());
+        QVERIFY(lesson->isOpen());
+        QVERIFY(lesson->isModified());
+        QCOMPARE(lesson->filePath(), kFoley);
+        QCOMPARE(lessonTitle(w), QString("Foley, before the bell"));
+        QCOMPARE(lessonChild<QLineEdit>(w, "titleEdit")->text(), QString("Foley, before the bell"));
+
+        QTemporaryDir folder;
+        const QString saved = folder.filePath("before-the-bell.json");
+        asked.clear();
+        answerNextQuestion("Save", &asked);
+        answerNextFileDialog(saved);
+        pressKeys(w, Qt::Key_Q);
+        QVERIFY2(asked.contains("lesson has unsaved changes"), qPrintable(asked));
+        QVERIFY(!w.isVisible());
+        QCOMPARE(QString::fromStdString(loadLesson(saved.toStdString()).title), QString("Foley, before the bell"));
+        QCOMPARE(fileBytes(kFoley), builtIn);
+    }
+
+    // File ▸ Quit with a lesson of the user's own edited, the edit discarded: the window closes, the file as it was.
+    void quittingAndDiscardingLeavesTheLessonFile()
+    {
+        MainWindow& w = *window_;
+        QTemporaryDir folder;
+        const QString file = folder.filePath("mine.json");
+        QVERIFY(w.lessonFlow()->openLesson(kFoley));
+        QVERIFY(w.lessonFlow()->saveLesson(file));
+        QCOMPARE(w.lessonFlow()->lesson()->filePath(), file);
+        const QByteArray before = fileBytes(file);
+        QVERIFY(!before.isEmpty());
+        typeTitle(w, "Not kept");
+        QVERIFY(w.lessonFlow()->lesson()->isModified());
+        QString asked;
+        answerNextQuestion("Discard", &asked);
+        pressKeys(w, Qt::Key_Q);
+        QVERIFY2(asked.contains("lesson has unsaved changes"), qPrintable(asked));
+        QVERIFY(!w.isVisible());
+        QCOMPARE(fileBytes(file), before);
+    }
+
+    // Lesson ▸ New Lesson From View (clicked) over an edited lesson: each choice.
+    void aNewLessonFromViewAsksAboutTheEditedOne()
+    {
+        MainWindow& w = *window_;
+        QVERIFY(w.lessonFlow()->openLesson(kFoley));
+        LessonDocument* lesson = w.lessonFlow()->lesson();
+        const std::size_t steps = lesson->lesson().steps.size();
+        QVERIFY(steps > 1);
+        typeTitle(w, "Foley, my notes");
+        // Cancel: the lesson stays, with its edit.
+        QString asked;
+        answerNextQuestion("Cancel", &asked);
+        chooseFromMenu(w, "Lesson", "New Lesson From View");
+        QVERIFY2(asked.contains("lesson has unsaved changes"), qPrintable(asked));
+        QCOMPARE(lesson->filePath(), kFoley);
+        QCOMPARE(lesson->lesson().steps.size(), steps);
+        QCOMPARE(lessonTitle(w), QString("Foley, my notes"));
+        QVERIFY(lesson->isModified());
+        // Save: the edit written where the user chooses, then a lesson of the view.
+        QTemporaryDir folder;
+        const QString saved = folder.filePath("my-notes.json");
+        asked.clear();
+        answerNextQuestion("Save", &asked);
+        answerNextFileDialog(saved);
+        chooseFromMenu(w, "Lesson", "New Lesson From View");
+        QVERIFY2(asked.contains("lesson has unsaved changes"), qPrintable(asked));
+        QTRY_COMPARE(lesson->lesson().steps.size(), std::size_t(1));
+        QCOMPARE(lesson->filePath(), QString());
+        QCOMPARE(QString::fromStdString(loadLesson(saved.toStdString()).title), QString("Foley, my notes"));
+        // Discard, over the lesson saved and edited again: a lesson of the view; the file as it was.
+        QVERIFY(w.lessonFlow()->openLesson(saved));
+        const QByteArray before = fileBytes(saved);
+        typeTitle(w, "Not kept");
+        asked.clear();
+        answerNextQuestion("Discard", &asked);
+        chooseFromMenu(w, "Lesson", "New Lesson From View");
+        QVERIFY2(asked.contains("lesson has unsaved changes"), qPrintable(asked));
+        QTRY_COMPARE(lesson->lesson().steps.size(), std::size_t(1));
+        QCOMPARE(lesson->filePath(), QString());
+        QCOMPARE(fileBytes(saved), before);
+    }
+
+    // File ▸ Open… (its keys), a scene, over an edited lesson and an edited scene: the prompt is the
+    // scene's, each choice keeps the lesson open with its edit (another scene replaces no lesson).
+    void openingASceneKeepsTheEditedLesson()
+    {
+        MainWindow& w = *window_;
+        QVERIFY(w.lessonFlow()->openLesson(kFoley));
+        LessonDocument* lesson = w.lessonFlow()->lesson();
+        typeTitle(w, "Foley, kept");
+        editVrpX(w, "3");
+        const QString stepScene = w.document()->filePath();
+        // Cancel: the scene and its edit stay, no file is asked for.
+        QString asked;
+        answerNextQuestion("Cancel", &asked);
+        pressKeys(w, Qt::Key_O);
+        QVERIFY2(asked.contains("scene has unsaved changes"), qPrintable(asked));
+        QVERIFY(!shownDialog<QFileDialog>());
+        QCOMPARE(w.document()->filePath(), stepScene);
+        QCOMPARE(vrpX(w), 3.0);
+        QVERIFY(w.document()->isModified());
+        QCOMPARE(lessonTitle(w), QString("Foley, kept"));
+        QVERIFY(lesson->isModified());
+        // Discard: the other scene opened; the lesson open with its edit.
+        answerNextQuestion("Discard");
+        answerNextFileDialog(kLetterF);
+        pressKeys(w, Qt::Key_O);
+        QCOMPARE(QFileInfo(w.document()->filePath()).fileName(), QString("letter-f.json"));
+        QVERIFY(!w.document()->isModified());
+        QVERIFY(lesson->isOpen());
+        QCOMPARE(lessonTitle(w), QString("Foley, kept"));
+        QVERIFY(lesson->isModified());
+        // Save: the edited scene written where the user chooses (a preset is not overwritten), then the other opened.
+        editVrpX(w, "4");
+        QTemporaryDir folder;
+        const QString saved = folder.filePath("edited-letter-f.json");
+        answerNextQuestion("Save");
+        answerNextFileDialogs({saved, kHouse});
+        pressKeys(w, Qt::Key_O);
+        QCOMPARE(QFileInfo(w.document()->filePath()).fileName(), QString("house.json"));
+        QCOMPARE(std::get<foley::ViewSpec<double>>(loadScene(saved.toStdString()).camera).vrp.x(), 4.0);
+        QCOMPARE(std::get<foley::ViewSpec<double>>(loadScene(kLetterF.toStdString()).camera).vrp.x(), 0.0);
+        QCOMPARE(lessonTitle(w), QString("Foley, kept"));
+        QVERIFY(lesson->isModified());
+        // The lesson's edit is still asked about as the window closes.
+        answerNextQuestion("Cancel", &asked);
+        pressKeys(w, Qt::Key_Q);
+        QVERIFY2(asked.contains("lesson has unsaved changes"), qPrintable(asked));
+        QVERIFY(w.isVisible());
+    }
+
+    // Lesson ▸ Open Lesson… (its keys) over an edited lesson: each choice.
+    void openingAnotherLessonAsksAboutTheEditedOne()
+    {
+        MainWindow& w = *window_;
+        QVERIFY(w.lessonFlow()->openLesson(kFoley));
+        LessonDocument* lesson = w.lessonFlow()->lesson();
+        typeTitle(w, "Foley, mine");
+        // Cancel: nothing changes, no file is asked for.
+        QString asked;
+        answerNextQuestion("Cancel", &asked);
+        pressKeys(w, Qt::Key_L);
+        QVERIFY2(asked.contains("lesson has unsaved changes"), qPrintable(asked));
+        QVERIFY(!shownDialog<QFileDialog>());
+        QCOMPARE(lesson->filePath(), kFoley);
+        QCOMPARE(lessonTitle(w), QString("Foley, mine"));
+        QVERIFY(lesson->isModified());
+        // Save: the edit written where the user chooses, then the lesson chosen opened.
+        QTemporaryDir folder;
+        const QString saved = folder.filePath("mine.json");
+        asked.clear();
+        answerNextQuestion("Save", &asked);
+        answerNextFileDialogs({saved, kOpenGl});
+        pressKeys(w, Qt::Key_L);
+        QVERIFY2(asked.contains("lesson has unsaved changes"), qPrintable(asked));
+        QCOMPARE(QFileInfo(lesson->filePath()).fileName(), QString("opengl-perspective.json"));
+        QVERIFY(!lesson->isModified());
+        QCOMPARE(QString::fromStdString(loadLesson(saved.toStdString()).title), QString("Foley, mine"));
+        // Discard, over the lesson saved and edited again: the lesson chosen opened; the file as it was.
+        QVERIFY(w.lessonFlow()->openLesson(saved));
+        const QByteArray before = fileBytes(saved);
+        typeTitle(w, "Not kept");
+        asked.clear();
+        answerNextQuestion("Discard", &asked);
+        answerNextFileDialog(kOpenGl);
+        pressKeys(w, Qt::Key_L);
+        QVERIFY2(asked.contains("lesson has unsaved changes"), qPrintable(asked));
+        QCOMPARE(QFileInfo(lesson->filePath()).fileName(), QString("opengl-perspective.json"));
+        QCOMPARE(fileBytes(saved), before);
     }
 
     // File ▸ Pack Lesson… gathers the lesson as edited, with its scenes and meshes, into the folder chosen.
