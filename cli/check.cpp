@@ -1,4 +1,5 @@
-// `viewpipe check`: a scene file and its meshes, read as every other command reads them.
+// `viewpipe check`: a scene file and its meshes, read and evaluated as every other command does
+// (what the pictures cannot draw is refused here too).
 
 #include "command.hpp"
 #include "text_commands.hpp"
@@ -14,7 +15,7 @@ void addCheckCommand(CLI::App& app)
     command->add_option("SCENE", *scene, "Scene file (JSON)")->required();
     setRun(command, [scene] {
         return guarded(*scene, "viewpipe: internal error", [&] {
-            objectMeshes(loadScene(*scene));
+            evaluateScene(loadScene(*scene));
             return 0;
         });
     });

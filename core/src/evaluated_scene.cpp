@@ -667,6 +667,93 @@ std::vector<std::string> stageClaims(const Pipeline<double>& pipeline, const Vie
     return claimsAtStages(pipeline, s, facts, scale);
 }
 
+// The camera's number largest in size, by its field: what a set-up reaching beyond the pictures is refused on.
+std::string largestCameraField(const CameraSpec<double>& camera)
+{
+    std::string field;
+    double largest = -1;
+    auto consider = [&](const std::string& name, double value) {
+        if (std::isfinite(value) && std::abs(value) > largest) {
+            field = name;
+            largest = std::abs(value);
+        }
+    };
+    auto considerPoint = [&](const std::string& name, const Vec3<double>& v) {
+        for (int k = 0; k < 3; ++k)
+            consider(name + "[" + std::to_string(k) + "]", v[k]);
+    };
+    if (const auto* view = std::get_if<foley::ViewSpec<double>>(&camera)) {
+        considerPoint("view.vrp", view->vrp);
+        considerPoint("view.prp", view->prp);
+        const foley::Window<double>& w = view->window;
+        const double window[] = {w.umin, w.umax, w.vmin, w.vmax};
+        for (int k = 0; k < 4; ++k)
+            consider("view.window[" + std::to_string(k) + "]", window[k]);
+        consider("view.front", view->front);
+        consider("view.back", view->back);
+        return field;
+    }
+    const auto& gl = std::get<gl::Camera<double>>(camera);
+    considerPoint("camera.look_at.eye", gl.lookAt.eye);
+    considerPoint("camera.look_at.center", gl.lookAt.center);
+    std::visit(
+        [&](const auto& p) {
+            if constexpr (std::is_same_v<std::decay_t<decltype(p)>, gl::Perspective<double>>) {
+                consider("camera.projection.aspect", p.aspect);
+            } else {
+                consider("camera.projection.left", p.left);
+                consider("camera.projection.right", p.right);
+                consider("camera.projection.bottom", p.bottom);
+                consider("camera.projection.top", p.top);
+            }
+            consider("camera.projection.near", p.zNear);
+            consider("camera.projection.far", p.zFar);
+        },
+        gl.projection);
+    return field;
+}
+
+// Refuses, by its field, a scene that reaches beyond kDrawnReach at a stage before the divide: the
+// pictures would frame and draw it without what lies there (a window 1e300 wide lost its volume, window,
+// DOP and projectors) while the captions and legend still spoke of it. An object out there in world
+// coordinates is its own field; otherwise the camera sets where things go, by its number largest in size.
+void requireDrawable(const EvaluatedScene& out)
+{
+    std::vector<Mat4<double>> undivided{Mat4<double>::Identity()}; // cumulative, each stage before the divide
+    for (const Stage<double>& stage : out.pipeline.stages) {
+        const Mat4<double> next = stage.matrix * undivided.back();
+        if (isProjective(next))
+            break;
+        undivided.push_back(next);
+    }
+    // Refused at the first stage where a point has no image, with the largest coordinate there.
+    auto requireWithin = [&](const std::vector<Vec3<double>>& points, std::size_t stages, const std::string& field) {
+        for (std::size_t stage = 0; stage < stages; ++stage) {
+            double farthest = 0;
+            for (const Vec3<double>& p : points)
+                if (!projectPoint(undivided[stage], p))
+                    farthest = std::max(farthest, (undivided[stage] * p.homogeneous()).head<3>().cwiseAbs().maxCoeff());
+            if (farthest > 0)
+                throw InputError(field, "reaches a coordinate of " + formatNumber(farthest) + " " +
+                                            (stage == 0 ? "in world coordinates" : "after " + out.pipeline.stages[stage - 1].symbol) +
+                                            ", beyond the " + formatNumber(kDrawnReach) + " the pictures can draw");
+        }
+    };
+    std::vector<Vec3<double>> corners;
+    for (std::size_t k = 0; k < out.meshes.size(); ++k) {
+        const Eigen::AlignedBox<double, 3> box = boundsOf({out.meshes[k]});
+        const std::size_t from = corners.size();
+        for (int c = 0; c < 8 && !box.isEmpty(); ++c)
+            corners.push_back(box.corner(Eigen::AlignedBox<double, 3>::CornerType(c)));
+        requireWithin({corners.begin() + std::ptrdiff_t(from), corners.end()}, 1, "objects[" + std::to_string(k) + "]");
+    }
+    const ViewSetup<double>& s = out.setup;
+    corners.insert(corners.end(), s.volume.begin(), s.volume.end());
+    corners.insert(corners.end(), s.window.begin(), s.window.end());
+    corners.insert(corners.end(), {s.windowCenter, s.origin, s.prp});
+    requireWithin(corners, undivided.size(), largestCameraField(out.scene.camera));
+}
+
 std::shared_ptr<const EvaluatedScene> evaluate(const Scene& scene, MeshCache* cache)
 {
     auto evaluated = std::make_shared<EvaluatedScene>();
@@ -678,6 +765,7 @@ std::shared_ptr<const EvaluatedScene> evaluate(const Scene& scene, MeshCache* ca
     bool farCut = false;
     const CameraSpec<double> drawn = drawnCamera(scene.camera, out.objectBounds(), farCut);
     out.setup = viewSetup(drawn, scene.effects);
+    requireDrawable(out);
 
     // The size of the set-up, for axis lengths and markers.
     Eigen::AlignedBox<double, 3> box = out.objectBounds();
@@ -800,9 +888,14 @@ std::string stageCaption(const EvaluatedScene& scene, std::size_t k, StageText t
 std::optional<Vec3<double>> projectPoint(const Mat4<double>& m, const Vec3<double>& p)
 {
     const Vec4<double> h = m * p.homogeneous();
-    if (!(h.w() > 1e-9 * h.head<3>().cwiseAbs().maxCoeff()) || !h.allFinite())
+    if (!(h.w() > h.head<3>().cwiseAbs().maxCoeff() / kDrawnReach) || !h.allFinite())
         return std::nullopt;
     return Vec3<double>(h.head<3>() / h.w());
+}
+
+bool isProjective(const Mat4<double>& m)
+{
+    return m(3, 0) != 0 || m(3, 1) != 0 || m(3, 2) != 0 || m(3, 3) != 1;
 }
 
 std::vector<Vec3<double>> pictureWindowOutline(const EvaluatedScene& scene)

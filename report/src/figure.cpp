@@ -549,11 +549,6 @@ LegendRow legendRow(const PictureLayout& layout, std::size_t k)
     return row;
 }
 
-bool isProjective(const Mat4<double>& m)
-{
-    return m(3, 0) != 0 || m(3, 1) != 0 || m(3, 2) != 0 || m(3, 3) != 1;
-}
-
 StageShown::StageShown(const EvaluatedScene& evaluated, const Mat4<double>& matrix, double opacity)
     : scene(&evaluated), cumulative(matrix), canonicalOpacity(opacity)
 {

@@ -254,6 +254,24 @@ TEST(Cli, ExportLeavesOutWhatItIsAsked)
     std::filesystem::remove_all(out);
 }
 
+// A window 1e300 wide: the PNG at stage 0 lost the volume, window, DOP and projectors while the SVG
+// drew them, under the same caption and legend. Refused by its field before any file is written.
+TEST(Cli, ExportRefusesWhatThePicturesCannotDraw)
+{
+    const std::string wide = writeScene("viewpipe-wide-window.json", R"({"view": {"projection": "perspective",
+        "vrp": [0, 0, 0], "vpn": [0, 0, 1], "vup": [0, 1, 0], "prp": [8, 6, 84], "window": [-50, 1e300, -50, 50],
+        "front": 60, "back": 25}, "objects": [{"type": "house"}]})");
+    const std::filesystem::path out = std::filesystem::temp_directory_path() / "viewpipe-wide-window";
+    std::filesystem::remove_all(out);
+    const Result r = run("export " + wide + " --out " + out.string() + " --stages 0 --format png,svg --quiet");
+    EXPECT_EQ(r.exitCode, 2);
+    EXPECT_NE(r.err.find(wide + ": view.window[1]: reaches a coordinate of 1e+300 in world coordinates"), std::string::npos) << r.err;
+    EXPECT_NE(r.err.find("beyond the 1e+09 the pictures can draw"), std::string::npos) << r.err;
+    EXPECT_FALSE(std::filesystem::exists(out / "00-world.png"));
+    EXPECT_EQ(run("check " + wide).exitCode, 2);
+    std::filesystem::remove_all(out);
+}
+
 // Found crashing `pipeline` and `open` (segmentation faults, double free inside
 // VTK's readers): each is refused with its field and reason, exit 2.
 TEST(Cli, HostileMeshesAreRefusedByEveryCommand)

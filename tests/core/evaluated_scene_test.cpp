@@ -166,6 +166,42 @@ TEST(EvaluatedScene, InfiniteFarPlaneIsDrawnCutShort)
     }
 }
 
+// What the pictures cannot draw is refused by its field: with a window 1e300 wide, stage 0 was drawn
+// without its volume, window, DOP and projectors (projectPoint gave them no image, so the framing and
+// the clipping range left them out) under captions and a legend that spoke of them.
+TEST(EvaluatedScene, WhatThePicturesCannotDrawIsRefusedByItsField)
+{
+    auto refusal = [](const Scene& scene) -> std::string {
+        try {
+            evaluateScene(scene);
+        } catch (const InputError& e) {
+            return e.what();
+        }
+        return "";
+    };
+    Scene wide = house();
+    auto& view = std::get<foley::ViewSpec<double>>(wide.camera);
+    view.window.umax = 1e300;
+    EXPECT_EQ(refusal(wide).rfind("view.window[1]: reaches a coordinate of 1e+300 in world coordinates, beyond the 1e+09 the pictures can draw", 0), 0u) << refusal(wide);
+    view.window.umin = -1e300; // from -1e300 to -50: refused on its other end
+    view.window.umax = -50;
+    EXPECT_EQ(refusal(wide).rfind("view.window[0]: ", 0), 0u) << refusal(wide);
+    // 1e8 wide is drawn: every corner of its volume has an image at stage 0.
+    view.window = {-50, 1e8, -50, 50};
+    const auto drawn = evaluateScene(wide);
+    for (const Vec3<double>& corner : drawn->setup.volume)
+        EXPECT_TRUE(projectPoint(Mat4<double>::Identity(), corner).has_value());
+    // An object far out, by its index; an OpenGL far plane, by its field.
+    Scene far = house();
+    far.objects.push_back({ObjectType::Box, Vec3<double>(0, 0, 0), Vec3<double>(1, 1, 2e9), "", ""});
+    EXPECT_EQ(refusal(far).rfind("objects[1]: reaches a coordinate of 2e+09 in world coordinates", 0), 0u) << refusal(far);
+    const Scene deep = parseScene(R"({"camera": {"look_at": {"eye": [40, 30, 100], "center": [8, 8, 42], "up": [0, 1, 0]},
+        "projection": {"type": "perspective", "fovy_deg": 40, "aspect": 1.5, "near": 30, "far": 1e12}},
+        "objects": [{"type": "house"}]})",
+                                  ".");
+    EXPECT_EQ(refusal(deep).rfind("camera.projection.far: ", 0), 0u) << refusal(deep);
+}
+
 class MeshCacheTest : public ::testing::Test {
 protected:
     void SetUp() override

@@ -241,6 +241,9 @@ private slots:
         QTest::newRow("VUP") << house << -1 << "view.vup" << "2=0.5" << QStringList{"2=0", "1=0"} << "view.vup";
         QTest::newRow("PRP") << house << -1 << "view.prp" << "2=90" << QStringList{"2=50"} << "view.prp";
         QTest::newRow("window") << house << -1 << "view.window" << "1=40" << QStringList{"0=45"} << "view.window";
+        // Beyond what the pictures draw (they drew the house 1e300 wide without its volume): refused.
+        QTest::newRow("window beyond the pictures") << house << -1 << "view.window" << "1=1e8" << QStringList{"1=1e300"}
+                                                    << "view.window";
         QTest::newRow("F") << house << -1 << "view.front" << "0=70" << QStringList{"0=25"} << "view.front";
         QTest::newRow("B") << house << -1 << "view.back" << "0=20" << QStringList{"0=65"} << "view.front";
 
@@ -259,6 +262,8 @@ private slots:
                                           << QStringList{"0=0"} << "camera.projection.near";
         QTest::newRow("perspective far") << perspective << -1 << "camera.projection.far" << "0=infinity"
                                          << QStringList{"0=30"} << "camera.projection.far";
+        QTest::newRow("far beyond the pictures") << perspective << -1 << "camera.projection.far" << "0=1e6"
+                                                 << QStringList{"0=1e12"} << "camera.projection.far";
 
         const QString ortho = "opengl-ortho.json"; // left -20, right 20, bottom -15, top 15, near 10, far 80
         QTest::newRow("ortho left") << ortho << -1 << "camera.projection.left" << "0=-25" << QStringList{"0=20"}

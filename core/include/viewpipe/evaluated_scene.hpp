@@ -184,8 +184,17 @@ std::vector<Vec3<double>> pictureWindowOutline(const EvaluatedScene& scene);
 // The picture's width over its height: the window's sides.
 double pictureAspect(const EvaluatedScene& scene);
 
+// How far from the origin the pictures draw, in units of w: a point farther
+// has no image (projectPoint), so the framing and the clipping range leave it
+// out. evaluateScene refuses a scene whose set-up or objects reach farther at
+// a stage before the divide.
+constexpr double kDrawnReach = 1e9;
+
 // A point through a cumulative matrix and the divide; nothing when it has no
-// image (behind the eye, on the eye plane, or not finite).
+// image (behind the eye, on the eye plane, beyond kDrawnReach, or not finite).
 std::optional<Vec3<double>> projectPoint(const Mat4<double>& m, const Vec3<double>& p);
+
+// A matrix divides when w is not 1 everywhere.
+bool isProjective(const Mat4<double>& m);
 
 } // namespace viewpipe

@@ -63,9 +63,6 @@ struct StageShown {
 Marker tracedMarker(const Vec3<double>& point);
 Label tracedLabel(const Vec3<double>& point);
 
-// A matrix divides when w is not 1 everywhere.
-bool isProjective(const Mat4<double>& m);
-
 // Where a picture's legend goes (export --legend): wherever it costs the
 // subject least; at the top right with the stage left of it; at the bottom
 // right with the stage above it; inside the stage's room in a corner the
