@@ -458,13 +458,13 @@ private slots:
         QVERIFY(projection.contains("0 & \\frac{1}{20} & 0 & -\\frac{3}{2} \\\\\n"));
         QVERIFY(projection.contains("0 & 0 & \\frac{1}{20} & -\\frac{1}{4} \\\\\n"));
 
-        // An irrational entry (cos 45 degrees in R) is a decimal.
+        // cos 45 degrees in R as Foley writes it: sqrt2/2.
         const QString oblique = writeScene(dir, "oblique.json", R"({"view": {"projection": "parallel",
             "vrp": [0, 0, 0], "vpn": [1, 0, 1], "vup": [0, 1, 0], "prp": [0, 0, 10], "window": [-1, 1, -1, 1],
             "front": 1, "back": -1}})");
         QVERIFY(runViewpipe({"export", oblique, "--out", dir.filePath("oblique"), "--stages", "0", "--quiet"}).exitCode == 0);
         const QString rotation = readAll(dir.filePath("oblique/matrices.tex"));
-        QVERIFY2(rotation.contains("0.7071 & 0 & -0.7071 & 0"), qPrintable(rotation));
+        QVERIFY2(rotation.contains("\\frac{\\sqrt{2}}{2} & 0 & -\\frac{\\sqrt{2}}{2} & 0"), qPrintable(rotation));
 
         // Each file compiles on its own, on one page, and within a document that loads the standalone package.
         for (const char* folder : {"out", "oblique"}) {
