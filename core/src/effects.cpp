@@ -1,5 +1,7 @@
 #include "viewpipe/effects.hpp"
 
+#include "viewpipe/exact.hpp"
+
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
@@ -438,27 +440,101 @@ RasterOutcome rasterize(const Pipeline<double>& pipeline, const std::vector<Poly
                      options, culled);
 }
 
+namespace {
+
+// Where each vertex lies against the volume, decided exactly: in double where
+// every boundary value is farther from 0 than the error of computing it (the
+// double clip matrix's own error against the exact one, plus the products'
+// rounding), else with the exact clip matrix and the vertex's own value.
+class VertexVerdicts {
+public:
+    VertexVerdicts(const Mat4<double>& clip, const Mat4<Exact>* exact, ClipVolume volume)
+        : clip_(clip), exact_(exact), volume_(volume)
+    {
+        if (!exact)
+            return;
+        constexpr double kRounding = 8 * std::numeric_limits<double>::epsilon();
+        for (int i = 0; i < 4; ++i)
+            for (int j = 0; j < 4; ++j) // the entry's error, rounded up, and its products' rounding
+                error_(i, j) = std::abs(double(Exact(clip(i, j)) - (*exact)(i, j))) * (1 + kRounding) +
+                               kRounding * std::abs(clip(i, j));
+    }
+
+    unsigned outcode(const Vec3<double>& vertex, const Vec4<double>& h) const
+    {
+        const std::array<double, 6> b = clipBoundaries(h, volume_);
+        unsigned code = 0;
+        for (int k = 0; k < 6; ++k)
+            code |= b[std::size_t(k)] < 0 ? 1u << k : 0u;
+        if (!exact_)
+            return code;
+        const Vec4<double> reach = error_ * vertex.homogeneous().cwiseAbs();
+        const double bound = 2 * (reach.maxCoeff() + 4 * std::numeric_limits<double>::epsilon() * h.cwiseAbs().maxCoeff());
+        if (std::all_of(b.begin(), b.end(), [bound](double x) { return std::abs(x) > bound; }))
+            return code;
+        return clipVerdict(exactClipPoint(vertex), volume_).outside;
+    }
+
+    Vec4<Exact> exactClipPoint(const Vec3<double>& vertex) const
+    {
+        return *exact_ * Vec4<Exact>(Exact(vertex.x()), Exact(vertex.y()), Exact(vertex.z()), Exact(1));
+    }
+    bool exact() const { return exact_ != nullptr; }
+
+private:
+    Mat4<double> clip_;
+    const Mat4<Exact>* exact_;
+    ClipVolume volume_;
+    Mat4<double> error_ = Mat4<double>::Zero();
+};
+
+// The signed area of a face in the picture (x, y after the divide), and
+// whether a vertex lies on or behind the eye plane.
+template <class T> std::pair<T, bool> pictureArea(const std::vector<Vec4<T>>& points)
+{
+    T area(0);
+    bool behind = false;
+    for (std::size_t k = 0; k < points.size(); ++k) {
+        const Vec4<T>& p = points[k];
+        const Vec4<T>& q = points[(k + 1) % points.size()];
+        behind = behind || p.w() <= T(0);
+        if (!behind)
+            area += (p.x() / p.w()) * (q.y() / q.w()) - (q.x() / q.w()) * (p.y() / p.w());
+    }
+    return {area, behind};
+}
+
+} // namespace
+
 EffectOutcomes runEffects(const Pipeline<double>& pipeline, const std::vector<PolygonMesh>& objects,
-                          const EffectList& effects)
+                          const EffectList& effects, const Mat4<Exact>* exactClip)
 {
     EffectOutcomes outcomes;
     if (!effects.has(EffectKind::Clip) && !effects.has(EffectKind::Cull) && !effects.depth && !effects.raster)
         return outcomes; // nothing that looks at the objects
     const ClipPoints points = clipPoints(pipeline.clipMatrix(), objects);
+    const VertexVerdicts verdicts(pipeline.clipMatrix(), exactClip, pipeline.clipVolume);
     if (effects.has(EffectKind::Clip)) {
         outcomes.computed.push_back(EffectKind::Clip);
         ClipOutcome c;
         for (std::size_t o = 0; o < objects.size(); ++o) {
             const PolygonMesh& mesh = objects[o];
             const std::vector<Vec4<double>>& h = points[o];
+            std::vector<unsigned> codes;
+            for (std::size_t i = 0; i < h.size(); ++i)
+                codes.push_back(verdicts.outcode(mesh.vertices[i], h[i]));
             std::vector<std::optional<std::array<double, 2>>> kept;
             for (const auto& e : meshEdgeIndices(mesh)) {
-                const auto interval =
-                    clipSegment(h[std::size_t(e[0])], h[std::size_t(e[1])], pipeline.clipVolume);
+                const unsigned a = codes[std::size_t(e[0])], b = codes[std::size_t(e[1])];
+                // The ends decide where they can: both inside, or both beyond one plane.
+                auto interval = a == 0 && b == 0 ? std::optional<std::array<double, 2>>({0.0, 1.0})
+                                : (a & b) != 0   ? std::nullopt
+                                                 : clipSegment(h[std::size_t(e[0])], h[std::size_t(e[1])],
+                                                               pipeline.clipVolume);
                 ClipCounts& n = c.segments;
                 if (!interval)
                     ++n.outside;
-                else if ((*interval)[0] == 0 && (*interval)[1] == 1)
+                else if (a == 0 && b == 0)
                     ++n.inside;
                 else
                     ++n.clipped;
@@ -467,14 +543,15 @@ EffectOutcomes runEffects(const Pipeline<double>& pipeline, const std::vector<Po
             c.keptEdges.push_back(kept);
             for (const auto& face : mesh.faces) {
                 std::vector<Vec4<double>> polygon;
-                unsigned all = 0;
+                unsigned all = 0, every = ~0u;
                 for (int i : face) {
                     polygon.push_back(h[std::size_t(i)]);
-                    all |= outcode(polygon.back(), pipeline.clipVolume);
+                    all |= codes[std::size_t(i)];
+                    every &= codes[std::size_t(i)];
                 }
                 if (all == 0)
                     ++c.polygons.inside;
-                else if (clipPolygon(polygon, pipeline.clipVolume).size() >= 3)
+                else if (every == 0 && clipPolygon(polygon, pipeline.clipVolume).size() >= 3)
                     ++c.polygons.clipped;
                 else
                     ++c.polygons.outside;
@@ -498,15 +575,27 @@ EffectOutcomes runEffects(const Pipeline<double>& pipeline, const std::vector<Po
                 // divide), faces wound counter-clockwise seen from outside:
                 // a front face keeps that winding seen from the viewer (+z),
                 // or turns clockwise where the picture is mirrored.
-                double area = 0;
-                bool behind = false;
-                for (std::size_t k = 0; k < face.size(); ++k) {
-                    const Vec4<double>& p = points[o][std::size_t(face[k])];
-                    const Vec4<double>& q = points[o][std::size_t(face[(k + 1) % face.size()])];
-                    behind = behind || p.w() <= 0;
-                    area += (p.x() / p.w()) * (q.y() / q.w()) - (q.x() / q.w()) * (p.y() / p.w());
+                std::vector<Vec4<double>> corners;
+                for (int i : face)
+                    corners.push_back(points[o][std::size_t(i)]);
+                auto [area, behind] = pictureArea(corners);
+                double size = 0; // the terms' size: an area within 1e-9 of it, or a w near 0, is decided exactly
+                for (const Vec4<double>& p : corners)
+                    size = std::max(size, std::abs(p.x() / p.w()) + std::abs(p.y() / p.w()));
+                const bool nearZero = std::abs(area) <= 1e-9 * size * size ||
+                                      std::any_of(corners.begin(), corners.end(), [](const Vec4<double>& p) {
+                                          return std::abs(p.w()) <= 1e-9 * p.head<3>().cwiseAbs().maxCoeff();
+                                      });
+                int sign = area > 0 ? 1 : area < 0 ? -1 : 0;
+                if (verdicts.exact() && nearZero) {
+                    std::vector<Vec4<Exact>> exact;
+                    for (int i : face)
+                        exact.push_back(verdicts.exactClipPoint(objects[o].vertices[std::size_t(i)]));
+                    const auto [exactArea, exactBehind] = pictureArea(exact);
+                    sign = exactArea.sign();
+                    behind = exactBehind;
                 }
-                const bool back = !behind && (pipeline.frontFacesClockwise ? area >= 0 : area <= 0);
+                const bool back = !behind && (pipeline.frontFacesClockwise ? sign >= 0 : sign <= 0);
                 culled.push_back(back);
                 ++c.faces;
                 c.culled += back;

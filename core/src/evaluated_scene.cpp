@@ -1,5 +1,7 @@
 #include "viewpipe/evaluated_scene.hpp"
 
+#include "viewpipe/exact.hpp"
+
 #include <algorithm>
 #include <cmath>
 #include <functional>
@@ -785,7 +787,15 @@ std::shared_ptr<const EvaluatedScene> evaluate(const Scene& scene, MeshCache* ca
     if (!scene.effects.empty())
         for (const auto& mesh : out.meshes)
             meshes.push_back(*mesh);
-    out.outcomes = runEffects(out.pipeline, meshes, scene.effects);
+    // The clip and cull verdicts are the scene's as typed: decided exactly near a boundary.
+    std::optional<Mat4<Exact>> exactClip;
+    if (scene.effects.has(EffectKind::Clip) || scene.effects.has(EffectKind::Cull)) {
+        try {
+            exactClip = exactPipeline(scene).clipMatrix();
+        } catch (const std::exception&) { // refused exactly where double accepted: double decides
+        }
+    }
+    out.outcomes = runEffects(out.pipeline, meshes, scene.effects, exactClip ? &*exactClip : nullptr);
     out.outcomes.computed.insert(out.outcomes.computed.begin(), staged.begin(), staged.end());
     out.objectFaces = sortFaces(out.meshes, out.outcomes);
     if (out.outcomes.depth) {

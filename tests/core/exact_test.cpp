@@ -4,7 +4,12 @@
 
 #include "build_paths.h"
 #include "viewpipe/exact.hpp"
+#include "viewpipe/evaluated_scene.hpp"
 #include "viewpipe/scene.hpp"
+
+#include <random>
+
+#include "viewpipe/format.hpp"
 
 namespace viewpipe {
 namespace {
@@ -230,6 +235,72 @@ TEST(ExactScene, BadExpressionsNameTheField)
     EXPECT_EQ(refusal("\"1/0\""), "view.prp[2]: division by zero at character 3 of \"1/0\"");
     EXPECT_EQ(refusal("\"2 +* 3\""), "view.prp[2]: expected a number, sqrt(...) or ( at character 4 of \"2 +* 3\"");
     EXPECT_EQ(refusal("true"), "view.prp[2]: must be a number or an exact expression such as \"20*sqrt(2)\" (got true)");
+}
+
+} // namespace
+} // namespace viewpipe
+
+namespace viewpipe {
+namespace {
+
+// A box whose near face is glFrustum(-2, 2, -1.5, 1.5, 2, 10)'s own near rectangle: every vertex lies
+// in the canonical volume, four of them on its corners. Double's clip matrix puts the near corners just
+// past z = -1 (its -3/2 is -1.4999999999999998), so double alone clipped the near face; decided exactly,
+// the box is inside.
+TEST(ExactVerdicts, AFrustumsOwnNearFaceIsKept)
+{
+    const Scene scene = parseScene(R"({"camera": {"look_at": {"eye": [0, 0, 0], "center": [0, 0, -1], "up": [0, 1, 0]},
+        "projection": {"type": "frustum", "left": -2, "right": 2, "bottom": -1.5, "top": 1.5, "near": 2, "far": 10}},
+        "objects": [{"type": "box", "min": [-2, -1.5, -3], "max": [2, 1.5, -2]}], "effects": ["clip"]})", ".");
+    const auto evaluated = evaluateScene(scene);
+    ASSERT_TRUE(evaluated->outcomes.clip);
+    EXPECT_EQ(evaluated->outcomes.clip->segments.inside, 12);
+    EXPECT_EQ(evaluated->outcomes.clip->segments.clipped, 0);
+    EXPECT_EQ(evaluated->outcomes.clip->polygons.inside, 6);
+    // The same in double alone: a rounding decided it.
+    const std::vector<PolygonMesh> box = {boxMesh({-2, -1.5, -3}, {2, 1.5, -2})};
+    const EffectOutcomes doubleOnly = runEffects(evaluated->pipeline, box, scene.effects);
+    EXPECT_LT(doubleOnly.clip->segments.inside, 12);
+}
+
+// Random rational frustums (glFrustum, every number in eighths) and a box whose front face is the near
+// rectangle: its four corners lie on the volume's corners. Wherever double's verdict for a vertex differs
+// from the exact one, the evaluated scene's counts follow the exact one (every edge is inside).
+TEST(ExactVerdicts, RandomRationalScenesFollowTheExactVerdict)
+{
+    std::mt19937 random(46);
+    std::uniform_int_distribution<int> eighths(1, 40);
+    auto q = [&] { return eighths(random) / 8.0; };
+    int differing = 0;
+    for (int trial = 0; trial < 200; ++trial) {
+        const double left = -q(), right = q(), bottom = -q(), top = q(), zNear = q(), depth = q();
+        auto number = [](double x) { return formatShortest(x); };
+        const std::string text = R"({"camera": {"look_at": {"eye": [0, 0, 0], "center": [0, 0, -1], "up": [0, 1, 0]},
+            "projection": {"type": "frustum", "left": )" + number(left) + ", \"right\": " + number(right) +
+                                 ", \"bottom\": " + number(bottom) + ", \"top\": " + number(top) +
+                                 ", \"near\": " + number(zNear) + ", \"far\": " + number(zNear + 2 * depth) +
+                                 R"(}}, "objects": [{"type": "box", "min": [)" + number(left) + "," + number(bottom) +
+                                 "," + number(-zNear - depth) + R"(], "max": [)" + number(right) + "," + number(top) +
+                                 "," + number(-zNear) + R"(]}], "effects": ["clip"]})";
+        const Scene scene = parseScene(text, ".");
+        const auto evaluated = evaluateScene(scene);
+        const Pipeline<Exact> exact = exactPipeline(scene);
+        const PolygonMesh& mesh = *evaluated->meshes[0];
+        int exactInside = 0;
+        for (const auto& e : meshEdgeIndices(mesh)) {
+            bool inside = true;
+            for (int i : e) {
+                const Vec3<double>& v = mesh.vertices[std::size_t(i)];
+                const Vec4<Exact> h = exact.clipMatrix() * Vec4<Exact>(Exact(v.x()), Exact(v.y()), Exact(v.z()), Exact(1));
+                const Vec4<double> d = evaluated->pipeline.clipMatrix() * v.homogeneous();
+                inside = inside && clipVerdict(h, exact.clipVolume).inside;
+                differing += clipVerdict(h, exact.clipVolume).outside != clipVerdict(d, exact.clipVolume).outside;
+            }
+            exactInside += inside;
+        }
+        EXPECT_EQ(evaluated->outcomes.clip->segments.inside, exactInside) << text;
+    }
+    EXPECT_GT(differing, 0) << "no scene where double and exact disagree: the test proves nothing";
 }
 
 } // namespace

@@ -210,8 +210,12 @@ struct EffectOutcomes {
 
 // The scene's built-in objects as polygon meshes (meshes from files are the
 // caller's: core reads no files).
+// `exactClip`, the clip matrix computed exactly (exactPipeline), decides the
+// clip and cull verdicts near a boundary (a filtered predicate: double where
+// its error bound cannot reach the boundary, exact arithmetic where it can);
+// without it, double decides everything.
 EffectOutcomes runEffects(const Pipeline<double>& pipeline, const std::vector<PolygonMesh>& objects,
-                          const EffectList& effects);
+                          const EffectList& effects, const Mat4<Exact>* exactClip = nullptr);
 
 // Every edge of a mesh once, as vertex index pairs in first-seen order.
 std::vector<std::array<int, 2>> meshEdgeIndices(const PolygonMesh& mesh);
