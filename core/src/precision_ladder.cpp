@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <chrono>
 
+#include "viewpipe/exact.hpp"
 #include "viewpipe/format.hpp"
 
 namespace viewpipe {
@@ -96,6 +97,55 @@ BenchRow timeDoubleDouble(const CameraSpec<double>& camera, const std::vector<do
     return row;
 }
 
+// The exact type computes the scene as typed (its decimals and expressions),
+// with no error: its cost is timed on fewer vertices, as it is per vertex.
+BenchRow timeExact(const Scene& scene, const std::vector<double>& points)
+{
+    BenchRow row = tierRow("exact", 0);
+    row.epsilon = 0;
+    constexpr int kBuilds = 20;
+    std::vector<double> times;
+    for (int r = 0; r < 3; ++r)
+        times.push_back(nanoseconds([&] {
+                            for (int b = 0; b < kBuilds; ++b) {
+                                const Pipeline<Exact> p = exactPipeline(scene);
+                                asm volatile("" : : "g"(&p) : "memory");
+                            }
+                        }) /
+                        kBuilds);
+    row.buildNs = median(times);
+    const Mat4<Exact> clip = exactPipeline(scene).clipMatrix();
+    const std::size_t count = std::min<std::size_t>(points.size() / 3, 2000);
+    times.clear();
+    for (int r = 0; r < 3; ++r)
+        times.push_back(nanoseconds([&] {
+                            for (std::size_t i = 0; i < count; ++i) {
+                                const Vec4<Exact> h = clip * Vec4<Exact>(Exact(points[3 * i]), Exact(points[3 * i + 1]),
+                                                                         Exact(points[3 * i + 2]), Exact(1));
+                                const Vec3<Exact> divided = h.head<3>() / h.w();
+                                asm volatile("" : : "g"(&divided) : "memory");
+                            }
+                        }) /
+                        double(count));
+    row.vertexNs = median(times);
+    return row;
+}
+
+// How far the reference's composite (from the scene's numbers as doubles) is
+// from the exact composite of the scene as typed, relative to its largest entry.
+double typedAgreement(const ReferenceSolution& ref, const Scene& scene)
+{
+    const Mat4<Exact> exact = exactPipeline(scene).composite;
+    setReferenceBits(ref.bits);
+    Reference worst = 0;
+    const Reference scale = ref.pipeline.composite.cwiseAbs().maxCoeff();
+    for (int r = 0; r < 4; ++r)
+        for (int c = 0; c < 4; ++c)
+            worst = std::max<Reference>(
+                worst, abs(Reference(exact(r, c).approximation().str(50)) - ref.pipeline.composite(r, c)) / scale);
+    return static_cast<double>(worst);
+}
+
 } // namespace
 
 BenchResult runBench(const Scene& scene, const std::vector<Vec3<double>>& sceneVertices, const BenchOptions& options,
@@ -110,12 +160,14 @@ BenchResult runBench(const Scene& scene, const std::vector<Vec3<double>>& sceneV
     result.viewport = options.viewport;
     const ReferenceSolution ref = makeReference(scene.camera, 256);
     const double agreement = referenceAgreement(ref, makeReference(scene.camera, 512));
-    result.reference = "mpfr-256 (agrees with mpfr-512 to " + formatSignificant(agreement, 2) + ")";
+    result.reference = "mpfr-256 (agrees with mpfr-512 to " + formatSignificant(agreement, 2) +
+                       ", with the exact composite of the scene as typed to " +
+                       formatSignificant(typedAgreement(ref, scene), 2) + ")";
     if (ref.farStandIn)
         result.volume = "the view volume up to far = " + formatSignificant(gl::kStandInFar, 4) +
                         " × near (its far plane is infinite)";
     const std::vector<double> points = volumePoints(ref, options.vertices);
-    const int total = 6;
+    const int total = 7;
     int done = 0;
     auto next = [&](const std::string& tier) { return !progress || progress(done++, total, tier); };
     const Viewport& vp = options.viewport;
@@ -147,6 +199,8 @@ BenchResult runBench(const Scene& scene, const std::vector<Vec3<double>>& sceneV
         result.rows.push_back(timeTier<Mpfr>("mpfr", int(options.mpfrBits), camera, points));
         result.rows.back().errors = measureAccuracy<Mpfr>(camera, sceneVertices, ref, vp);
     }
+    if (next("exact"))
+        result.rows.push_back(timeExact(scene, points)); // errors 0: it is the scene as typed
     if (progress)
         progress(total, total, "");
     return result;

@@ -168,7 +168,7 @@ void AccuracyPanel::drawResult()
         const BenchRow& r = result.rows[std::size_t(i)];
         auto withEps = [&r](double x) { return report::errorCell(x, r.epsilon); };
         const std::vector<std::string> cells = {r.precision,
-                                                std::to_string(r.bits),
+                                                r.bits ? std::to_string(r.bits) : "-",
                                                 formatSignificant(r.buildNs, 3),
                                                 formatSignificant(r.vertexNs, 3),
                                                 withEps(r.errors.maxRelativeError),

@@ -40,6 +40,8 @@ void addPanel(vtkChartXY* chart, const BenchResult& result, bool vertices, Theme
     chart->GetLegend()->SetVerticalAlignment(vtkChartLegend::TOP);
     for (std::size_t i = 0; i < result.rows.size(); ++i) {
         const BenchRow& row = result.rows[i];
+        if (row.epsilon == 0)
+            continue; // the exact type: its error, 0, has no place on a logarithmic axis (the table gives its time)
         vtkNew<vtkTable> table;
         vtkNew<vtkDoubleArray> x, y;
         x->SetName("time");
@@ -58,6 +60,8 @@ void addPanel(vtkChartXY* chart, const BenchResult& result, bool vertices, Theme
     }
     double xLow = 1e300, xHigh = 0, yLow = 1e300, yHigh = 0;
     for (const BenchRow& row : result.rows) {
+        if (row.epsilon == 0)
+            continue;
         const double x = vertices ? row.vertexNs : row.buildNs;
         const double y = std::max(vertices ? row.errors.ndcMaxError : row.errors.maxRelativeError, 1e-300);
         xLow = std::min(xLow, x), xHigh = std::max(xHigh, x), yLow = std::min(yLow, y), yHigh = std::max(yHigh, y);

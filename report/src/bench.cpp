@@ -36,6 +36,8 @@ nlohmann::json benchJson(const BenchResult& result)
 
 std::string errorCell(double error, double epsilon)
 {
+    if (epsilon == 0) // the exact type: no rounding, no unit
+        return formatSignificant(error, 2);
     return formatSignificant(error, 2) + " [" + formatSignificant(error / epsilon, 2) + "]";
 }
 
@@ -52,7 +54,7 @@ void printBench(std::ostream& out, const BenchResult& result)
     for (const BenchRow& r : result.rows) {
         auto cell = [&r](double x) { return errorCell(x, r.epsilon); };
         const AccuracyMetrics& e = r.errors;
-        table.push_back({r.precision, std::to_string(r.bits), formatSignificant(r.buildNs, 3),
+        table.push_back({r.precision, r.bits ? std::to_string(r.bits) : "-", formatSignificant(r.buildNs, 3),
                          formatSignificant(r.vertexNs, 3),
                          cell(e.maxRelativeError), cell(e.cornerError), cell(e.orthogonalityError),
                          cell(e.determinantError), cell(e.roundtripError), cell(e.ndcMaxError), cell(e.ndcRmsError),

@@ -343,9 +343,10 @@ TEST(Cli, BenchJsonHasEveryTier)
     ASSERT_EQ(r.exitCode, 0) << r.err;
     const Json j = Json::parse(r.out);
     EXPECT_EQ(j["reference"].get<std::string>().rfind("mpfr-256", 0), 0u);
-    ASSERT_EQ(j["rows"].size(), 6u);
-    const std::array<std::string, 6> tiers = {"float", "double", "long-double", "double-double", "float128", "mpfr"};
-    for (std::size_t i = 0; i < 6; ++i) {
+    ASSERT_EQ(j["rows"].size(), 7u);
+    const std::array<std::string, 7> tiers = {"float",    "double", "long-double", "double-double",
+                                              "float128", "mpfr",   "exact"};
+    for (std::size_t i = 0; i < 7; ++i) {
         const Json& row = j["rows"][i];
         EXPECT_EQ(row["precision"], tiers[i]);
         for (const char* key : {"bits", "build_ns", "vertex_ns", "max_rel_error", "corner_error",
@@ -358,6 +359,10 @@ TEST(Cli, BenchJsonHasEveryTier)
     EXPECT_LT(j["rows"][1]["max_rel_error"].get<double>(), j["rows"][0]["max_rel_error"].get<double>());
     EXPECT_LT(j["rows"][4]["max_rel_error"].get<double>(), 1e-30);
     EXPECT_EQ(j["volume"], "the view volume");
+    // The exact end: no error, a cost measured beside the others'; the house's numbers are doubles exactly.
+    EXPECT_EQ(j["rows"][6]["max_rel_error"].get<double>(), 0.0);
+    EXPECT_GT(j["rows"][6]["vertex_ns"].get<double>(), j["rows"][1]["vertex_ns"].get<double>());
+    EXPECT_NE(j["reference"].get<std::string>().find("with the exact composite of the scene as typed to"), std::string::npos);
 }
 
 // Found: the Vulkan preset with its far plane at infinity was refused
@@ -369,8 +374,10 @@ TEST(Cli, BenchMeasuresAViewVolumeWithoutAFarFace)
     ASSERT_EQ(r.exitCode, 0) << r.err;
     const Json j = Json::parse(r.out);
     EXPECT_EQ(j["volume"], "the view volume up to far = 1000 × near (its far plane is infinite)");
-    ASSERT_EQ(j["rows"].size(), 6u);
+    ASSERT_EQ(j["rows"].size(), 7u);
     for (const Json& row : j["rows"]) {
+        if (row["precision"] == "exact")
+            continue; // no error measured: it is the scene as typed
         EXPECT_LE(row["corner_error"].get<double>(), 8 * row["epsilon"].get<double>()) << row["precision"];
         EXPECT_GT(row["ndc_max_error"].get<double>(), 0.0) << row["precision"]; // the scene's vertices measured
     }

@@ -3,7 +3,10 @@
 // The precision ladder of `viewpipe bench` and the app's Accuracy panel: for
 // each tier, the time to build the normalizing matrices and to push vertices
 // through them, and the errors of the accuracy metrics (accuracy.hpp) against
-// an MPFR reference (256 bits, checked against 512). Its reports (JSON and
+// an MPFR reference (256 bits, checked against 512 and against the exact
+// composite of the scene as typed); last, the exact type's costs, whose errors
+// are 0. The tiers compute from the scene's numbers as doubles, the exact type
+// from the scene as typed (0.1 is one tenth). Its reports (JSON and
 // text) are the report library's (viewpipe/report/bench.hpp).
 
 #include <functional>
@@ -16,7 +19,8 @@
 namespace viewpipe {
 
 struct BenchRow {
-    std::string precision; // "float", ..., "mpfr"
+    std::string precision; // "float", ..., "mpfr", "exact"
+    // bits and epsilon 0 for "exact"
     int bits = 0;          // significand bits
     double epsilon = 0;    // 2^(1 - bits)
     double buildNs = 0;    // per matrix build, median
