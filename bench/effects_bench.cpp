@@ -8,6 +8,7 @@
 
 #include "build_paths.h"
 #include "viewpipe/effects.hpp"
+#include "viewpipe/exact.hpp"
 #include "viewpipe/scene.hpp"
 #include "viewpipe/transform.hpp"
 
@@ -72,16 +73,31 @@ void Effect(benchmark::State& state, const std::vector<PolygonMesh>* objects, st
         benchmark::DoNotOptimize(runEffects(housePipeline(), *objects, effects));
 }
 
+// The same with the exact clip matrix at hand, as a scene listing clip or cull
+// is evaluated: verdicts near a boundary are decided exactly.
+void ExactEffect(benchmark::State& state, const std::vector<PolygonMesh>* objects, std::string name)
+{
+    const EffectList effects = withEffect({}, name, true);
+    const Mat4<Exact> exactClip =
+        exactPipeline(loadScene(std::string(viewpipe::build::dataDir) + "/scenes/house.json")).clipMatrix();
+    for (auto _ : state)
+        benchmark::DoNotOptimize(runEffects(housePipeline(), *objects, effects, &exactClip));
+}
+
 } // namespace
 
 BENCHMARK_CAPTURE(Plain, house, &house());
 BENCHMARK_CAPTURE(Effect, house_clip, &house(), "clip");
 BENCHMARK_CAPTURE(Effect, house_cull, &house(), "cull");
+BENCHMARK_CAPTURE(ExactEffect, house_clip_exact, &house(), "clip");
+BENCHMARK_CAPTURE(ExactEffect, house_cull_exact, &house(), "cull");
 BENCHMARK_CAPTURE(Effect, house_depth, &house(), "depth");
 BENCHMARK_CAPTURE(Effect, house_raster, &house(), "raster");
 BENCHMARK_CAPTURE(Plain, mesh, &bigMesh())->Unit(benchmark::kMillisecond);
 BENCHMARK_CAPTURE(Effect, mesh_clip, &bigMesh(), "clip")->Unit(benchmark::kMillisecond)->Iterations(2);
 BENCHMARK_CAPTURE(Effect, mesh_cull, &bigMesh(), "cull")->Unit(benchmark::kMillisecond)->Iterations(2);
+BENCHMARK_CAPTURE(ExactEffect, mesh_clip_exact, &bigMesh(), "clip")->Unit(benchmark::kMillisecond)->Iterations(2);
+BENCHMARK_CAPTURE(ExactEffect, mesh_cull_exact, &bigMesh(), "cull")->Unit(benchmark::kMillisecond)->Iterations(2);
 BENCHMARK_CAPTURE(Effect, mesh_depth, &bigMesh(), "depth")->Unit(benchmark::kMillisecond)->Iterations(2);
 BENCHMARK_CAPTURE(Effect, mesh_raster, &bigMesh(), "raster")->Unit(benchmark::kMillisecond)->Iterations(2);
 BENCHMARK_MAIN();
