@@ -189,17 +189,17 @@ Question questionAbout(const std::string& sceneText, const std::string& question
 
 // A student's answer to `q` as the page gives it: the kind's field, {"where":
 // [x, y, z]} or {"entry": n} as typed text (kept as typed), {"choice": k},
-// {"inside": b}, {"signW": s} or {"order": [k, ...]}. Throws the error
-// "answer: unreadable" when the text typed is not a number.
+// {"inside": b}, {"signW": s} or {"order": [k, ...]}. A text typed that is no
+// number is refused as the app refuses it, naming its field: "x: is empty: ...",
+// "entry: unexpected "*" at character 4 of "2 +* 3"".
 Answer readAnswer(const Question& q, const nlohmann::json& given)
 {
     Answer answer;
-    auto number = [&answer](const nlohmann::json& text) {
-        const std::optional<double> x = text.is_string() ? parseTypedNumber(text.get<std::string>()) : std::nullopt;
-        if (!x)
-            throw InputError("answer", "unreadable");
+    auto number = [&answer](const nlohmann::json& text, const char* field) {
+        if (!text.is_string())
+            throw InputError(std::string("answer.") + field, "must be the text typed");
         answer.typed.push_back(text.get<std::string>());
-        return *x;
+        return typedNumber(answer.typed.back(), field);
     };
     // A whole number in [low, high], as the page's controls give it.
     auto index = [](const nlohmann::json& k, int low, int high, const char* what) {
@@ -212,11 +212,11 @@ Answer readAnswer(const Question& q, const nlohmann::json& given)
     if (given.contains("where")) {
         if (!given["where"].is_array() || given["where"].size() != 3)
             throw InputError("answer.where", "must be three typed numbers");
-        const double x = number(given["where"][0]), y = number(given["where"][1]), z = number(given["where"][2]);
+        const double x = number(given["where"][0], "x"), y = number(given["where"][1], "y"), z = number(given["where"][2], "z");
         answer.where = {x, y, z};
     }
     if (given.contains("entry"))
-        answer.entry = number(given["entry"]);
+        answer.entry = number(given["entry"], "entry");
     if (given.contains("choice"))
         answer.choice = index(given["choice"], 0, choices - 1, "choice");
     if (given.contains("inside")) {
@@ -243,7 +243,7 @@ Answer readAnswer(const Question& q, const nlohmann::json& given)
 
 // A student's answer (readAnswer's `typed`) to a lesson's question about
 // `sceneText`, checked as the app checks it: {"right": b, "answer": a} (a as
-// the results hold it), or the error "answer: unreadable".
+// the results hold it), or the error refusing it ("entry: ...", readAnswer).
 Outcome checkAnswer(const std::string& sceneText, const std::string& question, const std::string& typed)
 {
     return guarded([&] {

@@ -29,6 +29,9 @@ void requireObject(const Json& j, const std::string& path, const std::set<std::s
 // expression as a string ("20*sqrt(2)"), read as its nearest double and kept
 // as typed in the scope's map by field path.
 double readNumber(const Json& j, const std::string& path);
+// An exact expression as typed (parseExact), as its nearest double; InputError(path, the parser's reason)
+// where it is none, or too large for a double.
+double readExpression(const std::string& text, const std::string& path);
 class TypedExpressions {
 public:
     explicit TypedExpressions(std::map<std::string, std::string>& into);

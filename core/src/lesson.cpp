@@ -1,14 +1,13 @@
 #include "viewpipe/lesson.hpp"
 
 #include <algorithm>
-#include <cctype>
 #include <cmath>
 #include <map>
 #include <set>
 
 #include "file_paths.hpp"
 #include "json_fields.hpp"
-#include "parse_number.hpp"
+#include "viewpipe/exact.hpp"
 #include "viewpipe/format.hpp"
 #include "viewpipe/math_text.hpp"
 
@@ -81,13 +80,84 @@ Scene readStepScene(const Json& j, const std::string& path, const std::filesyste
     }
 }
 
-// The question's answer as the scene gives it; an answer the file writes must agree with it.
-void solveQuestion(Question& q, const Json& j, const std::string& path, const Pipeline<double>& pipeline)
+// Whether values given (typed by a student, or written in the lesson) pass `rule` against the question's
+// answer; `rule` is a generic lambda taking both as std::vector<Exact> or std::vector<double>. Exactly where
+// both are exact, so that no rounding decides a verdict; else in double (gluPerspective at 50 degrees, whose
+// cotangent is no root; a nested root typed).
+template <class Rule>
+bool judged(const std::optional<std::vector<Exact>>& given, const std::vector<double>& givenValues, const Question& q,
+            const std::vector<double>& answerValues, Rule rule)
+{
+    const auto exact = [](const std::vector<Exact>& values) {
+        return std::all_of(values.begin(), values.end(), [](const Exact& x) { return x.isExact(); });
+    };
+    if (given && q.exact && given->size() == q.exact->size() && exact(*given) && exact(*q.exact))
+        return rule(*given, *q.exact);
+    return rule(givenValues, answerValues);
+}
+
+template <class T> T squared(const T& x)
+{
+    return x * x;
+}
+
+// A tolerance the lesson writes, in the type compared: exactly, the decimal written.
+template <class T> T toleranceOf(double x)
+{
+    if constexpr (isExactScalar<T>)
+        return fromDecimal<Exact>(x);
+    else
+        return x;
+}
+
+// A point within `tolerance` times the answer's size (at least 1): compared squared, so that an exact
+// distance needs no square root (a root of a sum of roots is no exact number).
+template <class T> bool pointWithin(const std::vector<T>& given, const std::vector<T>& answer, double tolerance)
+{
+    T distance(0), size(0);
+    for (std::size_t i = 0; i < answer.size(); ++i) {
+        distance += squared(T(given[i] - answer[i]));
+        size += squared(answer[i]);
+    }
+    return distance <= squared(toleranceOf<T>(tolerance)) * (size < T(1) ? T(1) : size); // false for a NaN
+}
+
+// A number the lesson writes as an answer, exactly: a JSON number as the decimal written, or an exact
+// expression ("-13/36"). `values` gets each one's double.
+std::vector<Exact> readWritten(const Json& j, const std::string& path, std::size_t count, std::vector<double>& values)
+{
+    std::map<std::string, std::string> typed;
+    const TypedExpressions scope(typed);
+    values = count == 1 ? std::vector<double>{readNumber(j, path)} : readNumbers(j, path, count);
+    std::vector<Exact> exact;
+    for (std::size_t i = 0; i < values.size(); ++i) {
+        const auto expression = typed.find(count == 1 ? path : element(path, i));
+        exact.push_back(expression != typed.end() ? parseExact(expression->second) : fromDecimal<Exact>(values[i]));
+    }
+    return exact;
+}
+
+// The question's answer as the scene gives it; an answer the file writes must agree with it. The verdicts
+// (inside, the sign of w) and the exact answer a typed one is judged against come from the scene computed
+// exactly (exactPipeline, the point as the decimal written), as `viewpipe trace` decides them.
+void solveQuestion(Question& q, const Json& j, const std::string& path, const Scene& scene, const Pipeline<double>& pipeline)
 {
     const int n = int(pipeline.stages.size());
     const PointTrace<double> trace = tracePoint(pipeline, q.point);
     const std::string answerPath = child(path, "answer");
     const Json* answer = j.contains("answer") ? &j["answer"] : nullptr;
+    std::optional<Pipeline<Exact>> exact;
+    std::optional<PointTrace<Exact>> exactTrace;
+    if (q.kind == QuestionKind::Where || q.kind == QuestionKind::Inside || q.kind == QuestionKind::SignW ||
+        q.kind == QuestionKind::Entry) {
+        try {
+            exact = exactPipeline(scene);
+        } catch (const std::exception&) { // refused exactly: the doubles answer alone
+        }
+        const auto typed = [](double x) { return fromDecimal<Exact>(x); };
+        if (exact && q.kind != QuestionKind::Entry)
+            exactTrace = tracePoint(*exact, Vec3<Exact>(typed(q.point.x()), typed(q.point.y()), typed(q.point.z())));
+    }
     switch (q.kind) {
     case QuestionKind::Where: {
         const Vec4<double> p = trace.afterStage[std::size_t(q.stage - 1)];
@@ -97,17 +167,25 @@ void solveQuestion(Question& q, const Json& j, const std::string& path, const Pi
         q.where = p.head<3>() / p.w();
         if (!q.where.allFinite())
             throw InputError(child(path, "point"), "has no finite image after stage " + std::to_string(q.stage));
+        if (exactTrace) {
+            const Vec4<Exact>& e = exactTrace->afterStage[std::size_t(q.stage - 1)];
+            if (e.w().sign() != 0)
+                q.exact = std::make_shared<const std::vector<Exact>>(std::vector<Exact>{e.x() / e.w(), e.y() / e.w(), e.z() / e.w()});
+        }
         if (answer) {
-            const Vec3<double> written = readVec3(*answer, answerPath);
-            if ((written - q.where).norm() > q.tolerance * std::max(1.0, q.where.norm()))
-                throw InputError(answerPath, "is " + vecText(written) + " but the scene gives " + vecText(q.where));
+            std::vector<double> values;
+            const std::vector<Exact> written = readWritten(*answer, answerPath, 3, values);
+            const auto within = [&](const auto& given, const auto& answer) { return pointWithin(given, answer, q.tolerance); };
+            if (!judged(written, values, q, {q.where.x(), q.where.y(), q.where.z()}, within))
+                throw InputError(answerPath, "is " + vecText({values[0], values[1], values[2]}) + " but the scene gives " +
+                                                 vecText(q.where));
         }
         break;
     }
     case QuestionKind::Inside:
         if (!trace.clip.allFinite())
             throw InputError(child(path, "point"), "has no finite clip coordinates");
-        q.inside = trace.inside;
+        q.inside = exactTrace ? clipVerdict(exactTrace->clip, exact->clipVolume).inside : trace.inside;
         if (answer) {
             if (!answer->is_boolean())
                 throw InputError(answerPath, "must be true or false (got " + found(*answer) + ")");
@@ -120,14 +198,16 @@ void solveQuestion(Question& q, const Json& j, const std::string& path, const Pi
         const double w = trace.afterStage[std::size_t(q.stage - 1)].w();
         if (!std::isfinite(w))
             throw InputError(child(path, "point"), "has no finite w after stage " + std::to_string(q.stage));
-        q.signW = w > 0 ? 1 : w < 0 ? -1 : 0;
+        q.signW = exactTrace ? exactTrace->afterStage[std::size_t(q.stage - 1)].w().sign() : w > 0 ? 1 : w < 0 ? -1 : 0;
         if (answer) {
             const std::string written = readString(*answer, answerPath);
             const std::string sign = q.signW > 0 ? "positive" : q.signW < 0 ? "negative" : "zero";
             if (written != "positive" && written != "zero" && written != "negative")
                 throw InputError(answerPath, "must be \"positive\", \"zero\" or \"negative\" (got \"" + written + "\")");
             if (written != sign)
-                throw InputError(answerPath, "is " + written + " but w is " + formatShortest(w) + " (" + sign + ")");
+                throw InputError(answerPath, "is " + written + " but w is " +
+                                                 (exactTrace ? exactTrace->afterStage[std::size_t(q.stage - 1)].w().text()
+                                                             : formatShortest(w)) + " (" + sign + ")");
         }
         break;
     }
@@ -150,10 +230,22 @@ void solveQuestion(Question& q, const Json& j, const std::string& path, const Pi
         if (stage.divides)
             throw InputError(child(path, "stage"), "is the divide, which has no matrix");
         q.entry = stage.matrix(q.row - 1, q.column - 1);
+        if (exact)
+            q.exact = std::make_shared<const std::vector<Exact>>(
+                std::vector<Exact>{exact->stages[std::size_t(q.stage - 1)].matrix(q.row - 1, q.column - 1)});
         if (answer) {
-            const double written = readNumber(*answer, answerPath);
-            if (std::abs(written - q.entry) > 1e-9 * std::max(1.0, std::abs(q.entry)))
-                throw InputError(answerPath, "is " + formatShortest(written) + " but the entry is " + formatShortest(q.entry));
+            std::vector<double> values;
+            const std::vector<Exact> written = readWritten(*answer, answerPath, 1, values);
+            const auto agrees = [](const auto& given, const auto& answer) { // within 1e-9 times its size (at least 1)
+                using T = std::decay_t<decltype(answer[0])>;
+                using std::abs;
+                const T size = abs(answer[0]);
+                return abs(T(given[0] - answer[0])) <= T(1) / T(1000000000) * (size < T(1) ? T(1) : size);
+            };
+            if (!judged(written, values, q, {q.entry}, agrees))
+                throw InputError(answerPath, "is " + (answer->is_string() ? answer->get<std::string>() : formatShortest(values[0])) +
+                                                 " but the entry is " + formatShortest(q.entry) +
+                                                 (q.exact && q.exact->front().readsExactly() ? " (" + q.exact->front().text() + ")" : ""));
         }
         break;
     }
@@ -169,7 +261,7 @@ void solveQuestion(Question& q, const Json& j, const std::string& path, const Pi
     }
 }
 
-Question readQuestion(const Json& j, const std::string& path, const Pipeline<double>& pipeline)
+Question readQuestion(const Json& j, const std::string& path, const Scene& scene, const Pipeline<double>& pipeline)
 {
     if (!j.is_object())
         throw InputError(path, "must be an object (got " + found(j) + ")");
@@ -216,7 +308,7 @@ Question readQuestion(const Json& j, const std::string& path, const Pipeline<dou
         if (q.kind == QuestionKind::WhichStage || q.kind == QuestionKind::Order)
             q.choices.push_back(stage.symbol);
 
-    solveQuestion(q, j, path, pipeline);
+    solveQuestion(q, j, path, scene, pipeline);
     return q;
 }
 
@@ -304,7 +396,7 @@ LessonStep readStep(const Json& j, const std::string& path, const std::filesyste
     if (j.contains("trace"))
         step.trace = readVec3(j["trace"], child(path, "trace"));
     if (j.contains("question"))
-        step.question = readQuestion(j["question"], child(path, "question"), pipeline);
+        step.question = readQuestion(j["question"], child(path, "question"), step.scene, pipeline);
     readShown(j, path, step, pipeline); // after the question: entries are of the stage it reveals
     return step;
 }
@@ -545,9 +637,24 @@ std::vector<int> offeredChoices(const Question& q)
 
 bool isRight(const Question& q, const Answer& a)
 {
+    // What the student typed, read exactly (nothing for an answer made without its text).
+    const auto typed = [&a](std::size_t count) -> std::optional<std::vector<Exact>> {
+        if (a.typed.size() != count)
+            return std::nullopt;
+        std::vector<Exact> values;
+        try {
+            for (const std::string& text : a.typed)
+                values.push_back(parseExact(text));
+        } catch (const std::exception&) {
+            return std::nullopt;
+        }
+        return values;
+    };
     switch (q.kind) {
-    case QuestionKind::Where:
-        return a.where.allFinite() && (a.where - q.where).norm() <= q.tolerance * std::max(1.0, q.where.norm());
+    case QuestionKind::Where: {
+        const auto within = [&q](const auto& given, const auto& answer) { return pointWithin(given, answer, q.tolerance); };
+        return judged(typed(3), {a.where.x(), a.where.y(), a.where.z()}, q, {q.where.x(), q.where.y(), q.where.z()}, within);
+    }
     case QuestionKind::Inside: return a.inside == q.inside;
     case QuestionKind::SignW: return a.signW == q.signW;
     case QuestionKind::WhichStage:
@@ -558,31 +665,24 @@ bool isRight(const Question& q, const Answer& a)
             inOrder[k] = int(k);
         return a.order == inOrder;
     }
-    case QuestionKind::Entry: return std::isfinite(a.entry) && std::abs(a.entry - q.entry) <= 5e-3 * std::abs(q.entry) + 1e-9;
+    case QuestionKind::Entry: {
+        // Within 0.5 % (1e-9 of 0): -0.0952 and -0.095 count for -2/21, -0.0962 does not.
+        const auto within = [](const auto& given, const auto& answer) {
+            using T = std::decay_t<decltype(answer[0])>;
+            using std::abs;
+            return abs(T(given[0] - answer[0])) <= T(5) / T(1000) * abs(answer[0]) + T(1) / T(1000000000); // false for a NaN
+        };
+        return judged(typed(1), {a.entry}, q, {q.entry}, within);
+    }
     }
     return false;
 }
 
-std::optional<double> parseTypedNumber(const std::string& typed)
+double typedNumber(const std::string& text, const std::string& field)
 {
-    std::string text = typed;
-    for (std::size_t at; (at = text.find("\u2212")) != std::string::npos;) // the typeset minus
-        text.replace(at, 3, "-");
-    auto number = [](std::string_view part) -> std::optional<double> {
-        while (!part.empty() && std::isspace(static_cast<unsigned char>(part.front())))
-            part.remove_prefix(1);
-        while (!part.empty() && std::isspace(static_cast<unsigned char>(part.back())))
-            part.remove_suffix(1);
-        const std::optional<double> x = parseDouble(part);
-        return x && std::isfinite(*x) ? x : std::nullopt;
-    };
-    const std::size_t slash = text.find('/');
-    if (slash == std::string::npos)
-        return number(text);
-    const auto top = number(std::string_view(text).substr(0, slash)), bottom = number(std::string_view(text).substr(slash + 1));
-    if (!top || !bottom || *bottom == 0 || !std::isfinite(*top / *bottom))
-        return std::nullopt;
-    return *top / *bottom;
+    if (text.find_first_not_of(' ') == std::string::npos) // parseExact's reason gives examples, which could be the answer
+        throw InputError(field, "is empty: type a number (a decimal, a fraction p/q, a root with sqrt(…) or √)");
+    return readExpression(text, field);
 }
 
 std::string answerToJson(const Question& question, const Answer& answer)
@@ -683,7 +783,7 @@ LessonPack packLesson(const Lesson& lesson, const std::string& lessonFileName, c
 
 Question parseQuestion(const std::string& text, const Scene& scene)
 {
-    return readQuestion(parseJson(text), "question", buildPipeline(scene.camera, scene.effects));
+    return readQuestion(parseJson(text), "question", scene, buildPipeline(scene.camera, scene.effects));
 }
 
 std::string questionToJson(const Question& question)

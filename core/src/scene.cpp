@@ -81,18 +81,24 @@ TypedExpressions::~TypedExpressions()
     typedExpressions = previous_;
 }
 
+double readExpression(const std::string& text, const std::string& path)
+{
+    double x = 0;
+    try {
+        x = double(parseExact(text));
+    } catch (const std::exception& error) { // the parser's reason, or arithmetic refused
+        throw InputError(path, error.what());
+    }
+    if (!std::isfinite(x))
+        throw InputError(path, "must be a finite number (" + text + " is too large for a double)");
+    return x;
+}
+
 double readNumber(const Json& j, const std::string& path)
 {
     if (j.is_string() && typedExpressions) {
         const std::string text = j.get<std::string>();
-        double x = 0;
-        try {
-            x = double(parseExact(text));
-        } catch (const std::exception& error) { // the parser's reason, or arithmetic refused
-            throw InputError(path, error.what());
-        }
-        if (!std::isfinite(x))
-            throw InputError(path, "must be a finite number (" + text + " is too large for a double)");
+        const double x = readExpression(text, path);
         (*typedExpressions)[path] = text;
         return x;
     }

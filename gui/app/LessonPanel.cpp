@@ -449,7 +449,7 @@ void LessonPanel::buildInputs()
         break;
     }
     case QuestionKind::Entry:
-        layout->addWidget(line("answerEntry", tr("a fraction p/q or a decimal"))); // no number: one could be the answer
+        layout->addWidget(line("answerEntry", tr("a decimal, a fraction p/q or a root (sqrt, √)"))); // no number: one could be the answer
         break;
     case QuestionKind::Order: {
         auto* list = new FittedList;
@@ -495,10 +495,18 @@ bool LessonPanel::checkAnswer()
         return false;
     const Question& q = *lesson_->currentStep().question;
     Answer answer;
-    // A field's number, its text kept beside it for the results.
-    auto typed = [this, &answer](const char* name) {
+    // A field's number, its text kept beside it for the results. A text that is no number is refused with
+    // the core's reason ("z: is empty: ...", "entry: unexpected ..."), and no try is counted.
+    std::optional<QString> refused;
+    auto typed = [this, &answer, &refused](const char* name, const char* field) {
         answer.typed.push_back(inputs_->findChild<QLineEdit*>(name)->text().toStdString());
-        return parseTypedNumber(answer.typed.back());
+        try {
+            return typedNumber(answer.typed.back(), field);
+        } catch (const InputError& e) {
+            if (!refused)
+                refused = QString::fromStdString(e.what()) + ".";
+            return 0.0;
+        }
     };
     auto chosen = [this]() {
         for (QRadioButton* radio : inputs_->findChildren<QRadioButton*>())
@@ -508,23 +516,11 @@ bool LessonPanel::checkAnswer()
     };
     switch (q.kind) {
     case QuestionKind::Where: {
-        const auto x = typed("answerX"), y = typed("answerY"), z = typed("answerZ");
-        if (!x || !y || !z) {
-            feedback_->setText(tr("Type three numbers: x, y and z (fractions such as 1/3 are fine)."));
-            return false;
-        }
-        answer.where = {*x, *y, *z};
+        const double x = typed("answerX", "x"), y = typed("answerY", "y"), z = typed("answerZ", "z");
+        answer.where = {x, y, z};
         break;
     }
-    case QuestionKind::Entry: {
-        const auto x = typed("answerEntry");
-        if (!x) {
-            feedback_->setText(tr("Type a number: a decimal, or a fraction p/q.")); // no example: it could be the answer
-            return false;
-        }
-        answer.entry = *x;
-        break;
-    }
+    case QuestionKind::Entry: answer.entry = typed("answerEntry", "entry"); break;
     case QuestionKind::Order:
         for (int row = 0; row < inputs_->findChild<QListWidget*>("orderList")->count(); ++row)
             answer.order.push_back(inputs_->findChild<QListWidget*>("orderList")->item(row)->data(Qt::UserRole).toInt());
@@ -540,6 +536,10 @@ bool LessonPanel::checkAnswer()
         answer.choice = q.kind == QuestionKind::WhichStage ? offeredChoices(q)[std::size_t(picked)] : picked;
         break;
     }
+    }
+    if (refused) {
+        feedback_->setText(refused->toHtmlEscaped());
+        return false;
     }
     lesson_->check(answer);
     return true;

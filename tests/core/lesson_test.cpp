@@ -216,7 +216,7 @@ TEST(Lesson, ResultsKeepEachAnswerAsTyped)
     const Lesson three = lessonWith(entryStep + "," + houseStep(R"({"kind": "where", "prompt": "p", "point": [8, 6, 84], "after": 3})") +
                                     "," + houseStep(R"({"kind": "inside", "prompt": "p", "point": [0, 0, 0]})"));
     Answer entry;
-    entry.entry = *parseTypedNumber("-2/21");
+    entry.entry = typedNumber("-2/21", "entry");
     entry.typed = {"-2/21"};
     Answer where;
     where.where = {1.0 / 3, 0, -1};
@@ -316,15 +316,15 @@ TEST(Lesson, AnswersAreCheckedAsThePageChecksThem)
 
     const Lesson entry = lessonWith(houseStep(R"({"kind": "entry", "prompt": "p", "stage": 4, "row": 1, "column": 3})"));
     Answer typed;
-    typed.entry = *parseTypedNumber("\u22122/21"); // the typeset minus, as the page prints it
+    typed.entry = typedNumber("\u22122/21", "entry"); // the typeset minus, as the page prints it
     EXPECT_TRUE(isRight(*entry.steps[0].question, typed));
-    typed.entry = *parseTypedNumber("-0.095");
+    typed.entry = typedNumber("-0.095", "entry");
     EXPECT_TRUE(isRight(*entry.steps[0].question, typed));
-    typed.entry = *parseTypedNumber("-0.09");
+    typed.entry = typedNumber("-0.09", "entry");
     EXPECT_FALSE(isRight(*entry.steps[0].question, typed));
-    for (const char* bad : {"", "x", "1/0", "nan", "inf", "1e400", "2/", "/3", "1.5.2", "1/2/3", "1 2", "0,5"})
-        EXPECT_FALSE(parseTypedNumber(bad).has_value()) << bad;
-    EXPECT_DOUBLE_EQ(*parseTypedNumber(" 3 / 4 "), 0.75);
+    for (const char* bad : {"", " ", "x", "1/0", "nan", "inf", "1e400", "2/", "/3", "1.5.2", "1 2", "0,5", "sqrt(-2)"})
+        EXPECT_THROW(typedNumber(bad, "entry"), InputError) << bad;
+    EXPECT_DOUBLE_EQ(typedNumber(" 3 / 4 ", "entry"), 0.75);
 
     const Lesson order = lessonWith(houseStep(R"({"kind": "order", "prompt": "p"})"));
     Answer ordered;
@@ -332,6 +332,127 @@ TEST(Lesson, AnswersAreCheckedAsThePageChecksThem)
     EXPECT_TRUE(isRight(*order.steps[0].question, ordered));
     ordered.order = {1, 0, 2, 3, 4};
     EXPECT_FALSE(isRight(*order.steps[0].question, ordered));
+}
+
+// A small scene with VPN (1, 0, 1) and VRP at the origin: R's third row is n = (sqrt(2)/2, 0, sqrt(2)/2), so
+// R's entry (3, 1) is sqrt(2)/2 and R takes (1, 0, 0) to its first column, (sqrt(2)/2, 0, sqrt(2)/2).
+std::string diagonalStep(const std::string& question)
+{
+    return R"({"scene": {"view": {"projection": "perspective", "vrp": [0, 0, 0], "vpn": [1, 0, 1], "vup": [0, 1, 0],
+               "prp": [0, 0, 10], "window": [-1, 1, -1, 1], "front": 5, "back": -5}},
+               "caption": "c", "question": )" + question + "}";
+}
+
+// A student's answer as the app and the page read it: the typed texts, and their doubles.
+Answer typedAnswer(const std::vector<std::string>& texts)
+{
+    Answer answer;
+    answer.typed = texts;
+    const auto value = [&](std::size_t k) { return typedNumber(texts[k], "x"); };
+    if (texts.size() == 1)
+        answer.entry = value(0);
+    else
+        answer.where = {value(0), value(1), value(2)};
+    return answer;
+}
+
+TEST(Lesson, ExactAnswersAreDecidedExactly)
+{
+    const Lesson r = lessonWith(diagonalStep(R"({"kind": "entry", "prompt": "p", "stage": 2, "row": 3, "column": 1})"));
+    const Question& entry = *r.steps[0].question;
+    ASSERT_EQ(r.steps[0].scene.name, "inline scene");
+    EXPECT_DOUBLE_EQ(entry.entry, std::sqrt(0.5));
+    for (const char* right : {"sqrt(2)/2", "\u221a2/2", "1/\u221a2", "1/sqrt(2)", "sqrt(1/2)", "0.7071", "0.707"})
+        EXPECT_TRUE(isRight(entry, typedAnswer({right}))) << right; // 0.7071 and 0.707 within 0.5 %, as before
+    for (const char* wrong : {"sqrt(3)/2", "-sqrt(2)/2", "0.7", "\u221a2"})
+        EXPECT_FALSE(isRight(entry, typedAnswer({wrong}))) << wrong;
+
+    // Foley's house from its corner: SH_per's shy = -13/36 (entry (2, 3) of stage 4).
+    const Lesson corner = lessonWith(R"({"scene": "house-corner.json", "caption": "c", "question":
+        {"kind": "entry", "prompt": "p", "stage": 4, "row": 2, "column": 3}})");
+    const Question& shy = *corner.steps[0].question;
+    EXPECT_TRUE(isRight(shy, typedAnswer({"-13/36"})));
+    EXPECT_TRUE(isRight(shy, typedAnswer({"\u221213/36"})));
+    EXPECT_TRUE(isRight(shy, typedAnswer({"-0.3611"})));
+    EXPECT_FALSE(isRight(shy, typedAnswer({"-13/35"}))); // 2.8 % off
+    // Decided exactly at the tolerance's edge (0.5 % of 13/36 and 1e-9): on it is right, 1e-30 beyond it is
+    // not, a difference no double holds (the doubles of both are the same number).
+    const std::string edge = "-13/36 - 13/7200 - 1/1000000000";
+    EXPECT_TRUE(isRight(shy, typedAnswer({edge})));
+    EXPECT_FALSE(isRight(shy, typedAnswer({edge + " - 1e-30"})));
+    EXPECT_EQ(typedNumber(edge, "x"), typedNumber(edge + " - 1e-30", "x"));
+
+    // A point: (1, 0, 0) after R, within the 1 % tolerance as before.
+    const Lesson where = lessonWith(diagonalStep(R"({"kind": "where", "prompt": "p", "point": [1, 0, 0], "after": 2})"));
+    const Question& point = *where.steps[0].question;
+    EXPECT_TRUE(isRight(point, typedAnswer({"\u221a2/2", "0", "1/\u221a2"})));
+    EXPECT_TRUE(isRight(point, typedAnswer({"0.7071", "0", "0.7071"})));
+    EXPECT_FALSE(isRight(point, typedAnswer({"\u221a2/2", "0", "-1/\u221a2"})));
+
+    // The answers kept as typed, beside their values.
+    const auto results = nlohmann::json::parse(
+        resultsToJson(lessonWith(diagonalStep(R"({"kind": "entry", "prompt": "p", "stage": 2, "row": 3, "column": 1})")),
+                      {typedAnswer({"1/\u221a2"})}, {true}, {1}))["answers"][0];
+    EXPECT_EQ(results["typed"], "1/\u221a2");
+    EXPECT_EQ(results["answer"], std::sqrt(0.5));
+    EXPECT_EQ(results["correct"], true);
+    EXPECT_EQ(nlohmann::json::parse(answerToJson(entry, typedAnswer({"1/\u221a2"}))), std::sqrt(0.5));
+}
+
+TEST(Lesson, ATypedNumberThatIsNoneIsRefusedWithItsReason)
+{
+    const auto reason = [](const std::string& text) {
+        try {
+            typedNumber(text, "entry");
+        } catch (const InputError& e) {
+            return std::string(e.what());
+        }
+        return std::string("read");
+    };
+    EXPECT_EQ(reason("2 +* 3"), "entry: expected a number, sqrt(...) or ( at character 4 of \"2 +* 3\"");
+    EXPECT_EQ(reason("1/0"), "entry: division by zero at character 3 of \"1/0\"");
+    EXPECT_EQ(reason("\u221a(-2)"), "entry: the square root of -2, a negative number, at character 1 of \"\u221a(-2)\"");
+    EXPECT_EQ(reason("1e400"), "entry: must be a finite number (1e400 is too large for a double)");
+    EXPECT_EQ(reason(""), "entry: is empty: type a number (a decimal, a fraction p/q, a root with sqrt(\u2026) or \u221a)");
+}
+
+// The verdicts are the scene's as typed, decided exactly as `viewpipe trace` decides them: glFrustum(-2, 2,
+// -1.5, 1.5, 2, 10)'s near center (0, 0, -2) and corner (2, 1.5, -2) lie on the canonical volume's near face,
+// so inside (in double -3/2 comes out -1.4999999999999998 and the near center outside: exact_test.cpp).
+TEST(Lesson, InsideAndTheSignOfWAreDecidedExactly)
+{
+    const auto frustum = [](const std::string& question) {
+        return lessonWith(R"({"scene": {"camera": {"look_at": {"eye": [0, 0, 0], "center": [0, 0, -1], "up": [0, 1, 0]},
+            "projection": {"type": "frustum", "left": -2, "right": 2, "bottom": -1.5, "top": 1.5, "near": 2, "far": 10}}},
+            "caption": "c", "question": )" + question + "}");
+    };
+    for (const char* point : {"[0, 0, -2]", "[2, 1.5, -2]", "[0, 0, -10]"})
+        EXPECT_TRUE(frustum(std::string(R"({"kind": "inside", "prompt": "p", "point": )") + point + "}").steps[0].question->inside)
+            << point;
+    EXPECT_FALSE(frustum(R"({"kind": "inside", "prompt": "p", "point": [2.001, 0, -2]})").steps[0].question->inside);
+    EXPECT_NO_THROW(frustum(R"({"kind": "inside", "prompt": "p", "point": [0, 0, -2], "answer": true})"));
+    // Looking at (1, 2, 3), the point (5, -1, -1) lies in the eye's plane (5 - 2 - 3 = 0): w is 0 after the
+    // projection (double arithmetic gives -1.1e-16, "negative").
+    const Lesson onEyePlane = lessonWith(R"({"scene": {"camera": {"look_at": {"eye": [0, 0, 0], "center": [1, 2, 3], "up": [0, 1, 0]},
+        "projection": {"type": "frustum", "left": -2, "right": 2, "bottom": -1.5, "top": 1.5, "near": 2, "far": 10}}},
+        "caption": "c", "question": {"kind": "sign_w", "prompt": "p", "point": [5, -1, -1], "after": 5, "answer": "zero"}})");
+    EXPECT_EQ(onEyePlane.steps[0].question->signW, 0);
+}
+
+// A lesson's written answer may be an exact expression, checked exactly against the scene's.
+TEST(Lesson, AWrittenAnswerMayBeAnExactExpression)
+{
+    const auto entry = [](const std::string& answer) {
+        return lessonWith(R"({"scene": "house-corner.json", "caption": "c", "question": {"kind": "entry", "prompt": "p",
+            "stage": 4, "row": 2, "column": 3, "answer": )" + answer + "}}");
+    };
+    EXPECT_NO_THROW(entry("\"-13/36\""));
+    EXPECT_NO_THROW(entry("-0.3611111111111111")); // a number as before, within 1e-9
+    expectRefused([&] { entry("\"-13/35\""); }, "steps[0].question.answer",
+                  "is -13/35 but the entry is -0.3611111111111111 (-13/36)");
+    expectRefused([&] { entry("\"2 +* 3\""); }, "steps[0].question.answer", "expected a number, sqrt(...) or ( at character 4 of \"2 +* 3\"");
+    EXPECT_NO_THROW(lessonWith(diagonalStep(
+        R"({"kind": "where", "prompt": "p", "point": [1, 0, 0], "after": 2, "answer": ["sqrt(2)/2", 0, "1/√2"]})")));
 }
 
 // One question edited as JSON is read as the lesson reads it, with its field paths.

@@ -157,7 +157,7 @@ private slots:
         QTest::keyClicks(lessonChild<QLineEdit>(w, "answerX"), "1");
         QTest::keyClicks(lessonChild<QLineEdit>(w, "answerY"), "2");
         QTest::keyClick(lessonChild<QLineEdit>(w, "answerY"), Qt::Key_Return);
-        QVERIFY2(feedback(w).contains("Type three numbers"), qPrintable(feedback(w))); // nothing recorded yet
+        QVERIFY2(feedback(w).startsWith("z: is empty: type a number"), qPrintable(feedback(w))); // nothing recorded yet
         QVERIFY(w.lessonFlow()->lesson()->isAsking());
         QTest::keyClicks(lessonChild<QLineEdit>(w, "answerZ"), "3");
         QTest::keyClick(lessonChild<QLineEdit>(w, "answerZ"), Qt::Key_Return);
@@ -174,8 +174,14 @@ private slots:
         QTRY_VERIFY(settled(w) && w.stepper()->stage() == 3);
         QVERIFY(w.matrices()->traceText().contains("84")); // the PRP is followed through the stages
 
-        // Step 6: an entry as a fraction with the typeset minus sign.
+        // Step 6: an entry as a fraction with the typeset minus sign, after a text that is no number, which
+        // is refused with the core's reason and costs no try.
         QTest::keyClick(&w, Qt::Key_PageDown);
+        QTest::keyClicks(lessonChild<QLineEdit>(w, "answerEntry"), "2 +* 3");
+        QTest::keyClick(lessonChild<QLineEdit>(w, "answerEntry"), Qt::Key_Return);
+        QVERIFY2(feedback(w).startsWith("entry: expected a number, sqrt(...) or ( at character 4"), qPrintable(feedback(w)));
+        QCOMPARE(w.lessonFlow()->lesson()->tries(w.lessonFlow()->lesson()->step()), 0);
+        lessonChild<QLineEdit>(w, "answerEntry")->clear();
         // The minus as a keyboard layout with it sends it (keyClicks takes ASCII only).
         QTest::sendKeyEvent(QTest::Click, lessonChild<QLineEdit>(w, "answerEntry"), Qt::Key_unknown, QString::fromUtf8("\u2212"), {});
         QTest::keyClicks(lessonChild<QLineEdit>(w, "answerEntry"), "2/21");

@@ -147,7 +147,7 @@ require(path.resolve(modulePath))().then((core) => {
     });
   }
 
-  // Answers checked as the app checks them (lesson.cpp's isRight and parseTypedNumber): entry (1, 3) of the
+  // Answers checked as the app checks them (lesson.cpp's isRight and typedNumber): entry (1, 3) of the
   // house's SH_per is -2/21 (Foley's shear, -dop_x / dop_z, with the house's PRP (8, 6, 84) and window centre (0, 0):
   // -dop_x / dop_z = -8/84), right within 0.5 %.
   const entry = JSON.stringify({ kind: 'entry', prompt: 'p', stage: 4, row: 1, column: 3 });
@@ -159,9 +159,25 @@ require(path.resolve(modulePath))().then((core) => {
       assert.deepStrictEqual(JSON.parse(outcome.text).right, right);
     });
   }
-  check('text that is not a number is unreadable, not wrong', () => {
-    assert.strictEqual(checked('about -0.1').error, 'answer: unreadable');
+  check('text that is not a number is refused with its reason, not wrong', () => {
+    assert.strictEqual(checked('about -0.1').error, 'entry: expected a number, sqrt(...) or ( at character 1 of "about -0.1"');
+    assert.strictEqual(checked('2 +* 3').error, 'entry: expected a number, sqrt(...) or ( at character 4 of "2 +* 3"');
+    assert.strictEqual(checked(' ').error, 'entry: is empty: type a number (a decimal, a fraction p/q, a root with sqrt(\u2026) or \u221a)');
   });
+  // The house from its corner (VPN (1, 0, 1)): R's entry (1, 1) is sqrt(2)/2 and SH_per's (2, 3) is -13/36,
+  // decided exactly; a decimal typed still counts within 0.5 %.
+  const corner = fs.readFileSync(path.join(dataDir, 'scenes', 'house-corner.json'), 'utf8');
+  const checkedAt = (stage, row, column, typed) => core.checkAnswer(corner,
+    JSON.stringify({ kind: 'entry', prompt: 'p', stage, row, column }), JSON.stringify({ entry: typed }));
+  for (const [stage, row, column, typed, right] of [[2, 1, 1, 'sqrt(2)/2', true], [2, 1, 1, '\u221a2/2', true],
+    [2, 1, 1, '1/\u221a2', true], [2, 1, 1, '0.7071', true], [2, 1, 1, 'sqrt(3)/2', false],
+    [4, 2, 3, '-13/36', true], [4, 2, 3, '-13/35', false]]) {
+    check(`house-corner's entry (${row}, ${column}) of stage ${stage}: ${typed} is ${right ? 'right' : 'wrong'}`, () => {
+      const outcome = checkedAt(stage, row, column, typed);
+      assert.strictEqual(outcome.error, '');
+      assert.strictEqual(JSON.parse(outcome.text).right, right);
+    });
+  }
   check('answers of the wrong type or out of range are refused by name', () => {
     const order = JSON.stringify({ kind: 'order', prompt: 'p' });
     const choice = JSON.stringify({ kind: 'choice', prompt: 'p', choices: ['a', 'b'], answer: 1 });

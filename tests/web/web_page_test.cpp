@@ -1012,6 +1012,11 @@ TEST(LessonPage, QuestionsAreAnsweredCheckedAndRevealed)
         browser.evaluate("document.activeElement.blur()");
         browser.press("PageDown", 34);
         ASSERT_TRUE(browser.waitFor("document.getElementById('step-title').textContent === 'Step 2 of 3'"));
+        // A text that is no number is refused with the core's reason, and costs no try (the results say 1).
+        answer({"2 +* 3"});
+        ASSERT_TRUE(browser.waitFor("document.querySelector('#question .feedback').textContent.startsWith('entry: ')"));
+        EXPECT_EQ(browser.evaluate("document.querySelector('#question .feedback').textContent"),
+                  "entry: expected a number, sqrt(...) or ( at character 4 of \"2 +* 3\".");
         answer({"-2/21"});
         ASSERT_TRUE(browser.waitFor("document.querySelector('#question .feedback').textContent === 'Right.'"));
         ASSERT_TRUE(browser.waitFor("document.body.dataset.stage === '4' && !document.body.dataset.moving"));

@@ -38,6 +38,9 @@ struct Question {
     int signW = 0;       // -1, 0 or 1
     int correct = 0;     // choice, which_stage: the index into `choices`
     double entry = 0;
+    // where (x, y, z) and entry: the answer computed exactly (exactPipeline, the point as typed), which
+    // decides a typed answer with no rounding; null where exact arithmetic refuses the scene. Include exact.hpp.
+    std::shared_ptr<const std::vector<Exact>> exact;
 };
 
 struct LessonStep {
@@ -117,11 +120,16 @@ struct Answer {
 };
 // Whether an answer is right, with the web page's tolerances: a point within
 // the question's tolerance relative to its size (at least 1), an entry within
-// 0.5 % (a fraction typed as a decimal to three places counts).
+// 0.5 % (a fraction typed as a decimal to three places counts). Where the
+// answer's `typed` texts and the question's `exact` answer are both exact, the
+// comparison is decided exactly (sqrt(2)/2 is right for sqrt(2)/2, however
+// near a boundary); otherwise in double, from `where` and `entry`.
 bool isRight(const Question& question, const Answer& answer);
-// A typed number: a decimal or a fraction ("-2/21"), with an ASCII or a
-// typeset minus sign; nothing when the text is not one finite number.
-std::optional<double> parseTypedNumber(const std::string& text);
+// A number a student types: any exact expression parseExact reads ("-2/21",
+// "0.7071", "sqrt(2)/2", "√2/2", "1/√2", a typeset minus), as its nearest
+// double. Throws InputError(field, reason) where the text is not one finite
+// number (for 2 +* 3: unexpected "*" at character 4 of "2 +* 3").
+double typedNumber(const std::string& text, const std::string& field);
 // An answer as the results hold it: a point [x, y, z], true or false,
 // "positive"/"zero"/"negative", a stage's symbol, the symbols in order, a
 // number, a choice's index.

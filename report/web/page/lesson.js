@@ -67,7 +67,6 @@
     const input = (label) => {
       const field = document.createElement('input');
       field.type = 'text';
-      field.inputMode = 'decimal';
       field.setAttribute('aria-label', label);
       field.placeholder = label;
       form.appendChild(field);
@@ -230,9 +229,8 @@
       if (!core) return say(coreFailed || 'The page is still loading: check again in a moment.');
       // Checked by the core, as the app checks it.
       const outcome = core.checkAnswer(data.scene, question.source, JSON.stringify(typed));
-      if (outcome.error === 'answer: unreadable')
-        return say('Answer first: every field needs a number (a fraction such as p/q is fine).');
-      if (outcome.error) return say(outcome.error);
+      // A text that is no number, refused with the core's reason ("z: is empty: ..."): no try counted.
+      if (outcome.error) return say(outcome.error + '.');
       const right = JSON.parse(outcome.text).right;
       tries[index] = (tries[index] || 0) + 1;
       checked[index] = { typed, right }; // the last answer checked counts
