@@ -11,10 +11,8 @@
 #include "viewpipe/exact.hpp"
 
 namespace viewpipe::report {
-namespace {
 
-// An exact value as the textbook writes it (-\frac{13}{36}, \frac{\sqrt{2}}{2}) where it reads so, else a decimal.
-std::string exactText(const Exact& x, int digits)
+std::string exactLatex(const Exact& x, int digits)
 {
     if (x.readsExactly())
         return x.latex();
@@ -25,6 +23,8 @@ std::string exactText(const Exact& x, int digits)
     return s;
 }
 
+namespace {
+
 // `highlighted`: entries (row, column from 1) set on a colored box (xcolor).
 std::string bmatrix(const Mat4<Exact>& m, int digits, const std::vector<std::array<int, 2>>& highlighted = {})
 {
@@ -32,7 +32,7 @@ std::string bmatrix(const Mat4<Exact>& m, int digits, const std::vector<std::arr
     for (int r = 0; r < 4; ++r) {
         out += "  ";
         for (int c = 0; c < 4; ++c) {
-            std::string cell = exactText(m(r, c), digits);
+            std::string cell = exactLatex(m(r, c), digits);
             if (std::find(highlighted.begin(), highlighted.end(), std::array<int, 2>{r + 1, c + 1}) != highlighted.end())
                 cell = "\\colorbox{yellow}{$" + cell + "$}"; // a color KaTeX and xcolor both name
             out += cell + (c < 3 ? " & " : (r < 3 ? " \\\\\n" : "\n"));
@@ -116,7 +116,7 @@ std::string matricesLatex(const Scene& scene, int digits)
         out << "% The front plane in the canonical perspective volume\n"
                "\\noindent The front plane in the canonical perspective volume, with $\\mathit{vrp}'_z = -\\mathit{PRP}_n$:\n"
                "\\[\nz_{\\min} = -\\frac{\\mathit{vrp}'_z + F}{\\mathit{vrp}'_z + B} = "
-            << exactText(*p.zmin, digits) << "\n\\]\n";
+            << exactLatex(*p.zmin, digits) << "\n\\]\n";
     if (p.view && p.projectionMatrix)
         out << "\n% The view (gluLookAt) and projection matrices\n\\[\nV =\n" << bmatrix(*p.view, digits)
             << "\n\\]\n\\[\nP =\n" << bmatrix(*p.projectionMatrix, digits) << "\n\\]\n";
@@ -154,7 +154,7 @@ std::string stageMatrixLatex(const Scene& scene, int stage, int digits)
 std::string entryLatex(const Scene& scene, int stage, int row, int column, int digits)
 {
     const Pipeline<Exact> p = exactPipeline(scene);
-    return exactText(p.stages.at(std::size_t(stage - 1)).matrix(row - 1, column - 1), digits);
+    return exactLatex(p.stages.at(std::size_t(stage - 1)).matrix(row - 1, column - 1), digits);
 }
 
 namespace {
@@ -167,20 +167,13 @@ PointTrace<Exact> exactTrace(const Scene& scene, const Vec3<double>& point)
 
 } // namespace
 
-std::string pointAfterLatex(const Scene& scene, const Vec3<double>& point, int stage, int digits)
-{
-    const Vec4<Exact> q = exactTrace(scene, point).afterStage.at(std::size_t(stage - 1));
-    const Exact w = q.w() != 0 ? q.w() : Exact(1); // a where question's point has w != 0 (lesson.cpp)
-    return "(" + exactText(q.x() / w, digits) + ", " + exactText(q.y() / w, digits) + ", " + exactText(q.z() / w, digits) + ")";
-}
-
 std::vector<std::string> tracedLatex(const Scene& scene, const Vec3<double>& point, int stages, int digits)
 {
     const auto exact = [](double x) { return fromDecimal<Exact>(x); };
     const PointTrace<Exact> trace = exactTrace(scene, point);
     const auto text = [digits](const Vec4<Exact>& q) {
-        return "(" + exactText(q.x(), digits) + ", " + exactText(q.y(), digits) + ", " + exactText(q.z(), digits) + ", " +
-               exactText(q.w(), digits) + ")";
+        return "(" + exactLatex(q.x(), digits) + ", " + exactLatex(q.y(), digits) + ", " + exactLatex(q.z(), digits) + ", " +
+               exactLatex(q.w(), digits) + ")";
     };
     std::vector<std::string> out = {text(Vec4<Exact>(exact(point.x()), exact(point.y()), exact(point.z()), Exact(1)))};
     for (int k = 0; k < stages && k < int(trace.afterStage.size()); ++k)

@@ -7,6 +7,7 @@
 #include <type_traits>
 #include <variant>
 
+#include "viewpipe/exact.hpp"
 #include "viewpipe/format.hpp"
 #include "viewpipe/math_text.hpp"
 #include "viewpipe/pipeline.hpp"
@@ -227,10 +228,14 @@ std::string answerText(const LessonStep& step)
 {
     const Question& q = *step.question;
     switch (q.kind) {
-    case QuestionKind::Where: { // exactly, and as a decimal where that is another text
-        const std::string exact = report::pointAfterLatex(step.scene, q.point, q.stage, 6);
+    case QuestionKind::Where: { // exactly (the answer a typed one is judged against), and as a decimal where that is another text
         const std::string decimal = point(q.where);
-        return "$" + exact + "$" + ("$" + exact + "$" == decimal ? "" : " ($\\approx " + decimal.substr(1, decimal.size() - 2) + "$)");
+        if (!q.exact)
+            return decimal;
+        const std::vector<Exact>& e = *q.exact;
+        const std::string exact = "$(" + report::exactLatex(e[0], 6) + ", " + report::exactLatex(e[1], 6) + ", " +
+                                  report::exactLatex(e[2], 6) + ")$";
+        return exact + (exact == decimal ? "" : " ($\\approx " + decimal.substr(1, decimal.size() - 2) + "$)");
     }
     case QuestionKind::Inside: return q.inside ? "inside the view volume" : "clipped away";
     case QuestionKind::SignW: return std::string("$w$ is ") + (q.signW > 0 ? "positive" : q.signW < 0 ? "negative" : "zero");
@@ -242,8 +247,8 @@ std::string answerText(const LessonStep& step)
         return out;
     }
     case QuestionKind::Entry: {
-        const std::string exact = report::entryLatex(step.scene, q.stage, q.row, q.column, 6);
         const std::string decimal = number(q.entry);
+        const std::string exact = q.exact ? report::exactLatex(q.exact->front(), 6) : decimal;
         return "$" + exact + "$" + (exact == decimal ? "" : " ($" + decimal + "$)");
     }
     case QuestionKind::Choice: return choiceLetter(std::size_t(q.correct)) + " " + q.choices[std::size_t(q.correct)];

@@ -184,6 +184,27 @@ TEST(Latex, RootsAreWrittenAsTheTextbookDoes)
     EXPECT_EQ(report::entryLatex(gl, 2, 1, 1, 4), "\\frac{19\\sqrt{482}}{482}");
 }
 
+// A lesson's answer as the app, the page and the handout state it: exactly where that reads well, the decimal
+// beside. The house from its corner (VPN (1, 0, 1)): R's entry (1, 1) is sqrt(2)/2, SH_per's (2, 3) -13/36;
+// R takes (1, 0, 0) to its first column, (sqrt(2)/2, 0, sqrt(2)/2), with the VRP at the origin.
+TEST(Latex, LessonAnswersAreStatedExactly)
+{
+    const auto answer = [](const std::string& scene, const std::string& question) {
+        const Lesson lesson = parseLesson(R"({"title": "t", "steps": [{"scene": )" + scene +
+                                              R"(, "caption": "c", "question": )" + question + "}]}", kScenes);
+        return answerText(lesson.steps[0]);
+    };
+    const std::string corner = "\"house-corner.json\"";
+    EXPECT_EQ(answer(corner, R"({"kind": "entry", "prompt": "p", "stage": 2, "row": 1, "column": 1})"),
+              "$\\frac{\\sqrt{2}}{2}$ ($0.707107$)");
+    EXPECT_EQ(answer(corner, R"({"kind": "entry", "prompt": "p", "stage": 4, "row": 2, "column": 3})"),
+              "$-\\frac{13}{36}$ ($-0.361111$)");
+    EXPECT_EQ(answer(R"({"view": {"projection": "perspective", "vrp": [0, 0, 0], "vpn": [1, 0, 1], "vup": [0, 1, 0],
+                         "prp": [0, 0, 10], "window": [-1, 1, -1, 1], "front": 5, "back": -5}})",
+                     R"({"kind": "where", "prompt": "p", "point": [1, 0, 0], "after": 2})"),
+              "$(\\frac{\\sqrt{2}}{2}, 0, \\frac{\\sqrt{2}}{2})$ ($\\approx (0.707107, 0, 0.707107)$)");
+}
+
 TEST(PipelineJson, HouseHasTheContractedKeys)
 {
     const Scene house = loadScene(kScenes / "house.json");

@@ -33,13 +33,12 @@ struct StageLatex {
 };
 std::vector<StageLatex> stagesLatex(const Scene& scene, int digits);
 
+// An exact value as the textbook writes it (-\frac{13}{36}, \frac{\sqrt{2}}{2}) where it reads so
+// (Exact::readsExactly), else a decimal to `digits` significant digits (1.5 \times 10^{-7}).
+std::string exactLatex(const Exact& x, int digits);
+
 // Entry (row, column), from 1, of stage `stage`'s matrix: an exact fraction where it is one, else a decimal.
 std::string entryLatex(const Scene& scene, int stage, int row, int column, int digits);
-
-// A point (world coordinates) after stage `stage`, divided by its w, as
-// "(x, y, z)" math with exact fractions where they are ones: a where
-// question's answer.
-std::string pointAfterLatex(const Scene& scene, const Vec3<double>& point, int stage, int digits);
 
 // A point (world coordinates) after each of the first `stages` stages, as
 // "(x, y, z, w)" math with exact fractions where they are ones (after the
