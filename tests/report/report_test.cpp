@@ -293,6 +293,58 @@ TEST(TraceJson, VerdictsAreExactInEveryPrecision)
     EXPECT_EQ(exact["exact"]["point"], Json({"2", "3/2", "-2"}));
 }
 
+// Every canonical volume's corners, edges' midpoints, faces' centers and center, taken exactly from the
+// view volume as typed (Foley's perspective and parallel volumes, OpenGL's, Direct3D's, Vulkan's, Metal's,
+// WebGPU's, reversed depth): inside, on 3, 2, 1 and 0 of its planes, in every precision.
+TEST(TraceJson, EveryCanonicalVolumesBoundaryIsClassifiedExactly)
+{
+    std::vector<Scene> scenes;
+    for (const auto& entry : std::filesystem::recursive_directory_iterator(kScenes))
+        if (entry.path().extension() == ".json")
+            scenes.push_back(loadScene(entry.path()));
+    for (const char* api : {"opengl", "direct3d", "vulkan"}) // reversed depth
+        scenes.push_back(sceneFrom(std::string(R"({"camera": {"api": ")") + api + R"(", "depth": "reversed",
+            "look_at": {"eye": [1, 2, 9], "center": [0, 0, 0], "up": [0, 1, 0]},
+            "projection": {"type": "frustum", "left": -2, "right": 2, "bottom": -1.5, "top": 1.5, "near": 2, "far": 10}}})"));
+    int checked = 0;
+    for (const Scene& scene : scenes) {
+        const CameraSpec<Exact> camera = exactCamera(scene);
+        if (const auto* gl = std::get_if<gl::Camera<Exact>>(&camera); gl && !gl::hasFarFace(*gl))
+            continue; // no far face: no corners
+        const std::array<Vec3<Exact>, 8> corners =
+            std::visit([](const auto& c) { return viewVolumeCorners(c); }, camera);
+        if (!std::all_of(corners.begin(), corners.end(), [](const Vec3<Exact>& p) {
+                return p.x().isExact() && p.y().isExact() && p.z().isExact();
+            }))
+            continue; // gluPerspective at an angle whose cotangent is no root: no exact boundary to stand on
+        std::vector<std::pair<Vec3<Exact>, std::size_t>> points; // a point and how many planes it lies on
+        for (const Vec3<Exact>& corner : corners)
+            points.push_back({corner, 3});
+        const int faces[6][4] = {{0, 1, 2, 3}, {4, 5, 6, 7}, {0, 1, 5, 4}, {1, 2, 6, 5}, {2, 3, 7, 6}, {3, 0, 4, 7}};
+        for (const auto& face : faces) {
+            Vec3<Exact> center = Vec3<Exact>::Zero();
+            for (int k = 0; k < 4; ++k) {
+                center += corners[std::size_t(face[k])];
+                points.push_back({Vec3<Exact>((corners[std::size_t(face[k])] + corners[std::size_t(face[(k + 1) % 4])]) / Exact(2)), 2});
+            }
+            points.push_back({Vec3<Exact>(center / Exact(4)), 1});
+        }
+        Vec3<Exact> middle = Vec3<Exact>::Zero();
+        for (const Vec3<Exact>& corner : corners)
+            middle += corner;
+        points.push_back({Vec3<Exact>(middle / Exact(8)), 0});
+        for (const char* precision : {"float", "double", "long-double", "float128", "mpfr", "exact"})
+            for (const auto& [point, planes] : points) {
+                const Json j = report::traceJson(scene, point, report::parsePrecision(precision));
+                EXPECT_TRUE(j["inside"].get<bool>()) << scene.name << " " << precision << " " << point.transpose();
+                EXPECT_EQ(j["on_planes"].size(), planes) << scene.name << " " << precision << " " << point.transpose()
+                                                         << " " << j["on_planes"];
+            }
+        ++checked;
+    }
+    EXPECT_GE(checked, 20);
+}
+
 TEST(PipelineJson, ExactPrecisionGivesEveryEntryExactly)
 {
     const Json j = report::pipelineJson(loadScene(kScenes / "house-corner.json"), report::parsePrecision("exact"), {});
