@@ -561,7 +561,8 @@ std::vector<std::string> claimsAtStages(const Pipeline<double>& pipeline, const 
     return claims;
 }
 
-std::vector<std::string> stageClaims(const Pipeline<double>& pipeline, const ViewSetup<double>& s, bool farCut)
+std::vector<std::string> stageClaims(const Pipeline<double>& pipeline, const ViewSetup<double>& s, bool farCut,
+                                     const std::optional<Exact>& exactZmin)
 {
     using Image = std::function<std::optional<Vec3<double>>(const Vec3<double>&)>;
     using V = Vec3<double>;
@@ -612,7 +613,10 @@ std::vector<std::string> stageClaims(const Pipeline<double>& pipeline, const Vie
                              });
                          }});
     if (s.perspective && foley && pipeline.zmin)
-        facts.push_back({"back at $z = -1$, front at $z_{\\min} = " + formatSignificant(*pipeline.zmin, 3) + "$",
+        facts.push_back({"back at $z = -1$, front at $z_{\\min} = " +
+                             (exactZmin && exactZmin->readsExactly() ? exactZmin->latex()
+                                                                     : formatSignificant(*pipeline.zmin, 3)) +
+                             "$",
                          [&](const Image& image) {
                              return corners(image, [&](const V& c, std::size_t k) {
                                  return same(c.z(), k < 4 ? *pipeline.zmin : -1.0);
@@ -787,15 +791,17 @@ std::shared_ptr<const EvaluatedScene> evaluate(const Scene& scene, MeshCache* ca
     if (!scene.effects.empty())
         for (const auto& mesh : out.meshes)
             meshes.push_back(*mesh);
-    // The clip and cull verdicts are the scene's as typed: decided exactly near a boundary.
-    std::optional<Mat4<Exact>> exactClip;
-    if (scene.effects.has(EffectKind::Clip) || scene.effects.has(EffectKind::Cull)) {
+    // The scene as typed, exactly: the clip and cull verdicts near a boundary, and z_min as Foley writes it.
+    const bool verdicts = scene.effects.has(EffectKind::Clip) || scene.effects.has(EffectKind::Cull);
+    std::optional<Pipeline<Exact>> exact;
+    if (verdicts || out.pipeline.zmin) {
         try {
-            exactClip = exactPipeline(scene).clipMatrix();
+            exact = exactPipeline(scene);
         } catch (const std::exception&) { // refused exactly where double accepted: double decides
         }
     }
-    out.outcomes = runEffects(out.pipeline, meshes, scene.effects, exactClip ? &*exactClip : nullptr);
+    const Mat4<Exact> exactClip = exact && verdicts ? exact->clipMatrix() : Mat4<Exact>();
+    out.outcomes = runEffects(out.pipeline, meshes, scene.effects, exact && verdicts ? &exactClip : nullptr);
     out.outcomes.computed.insert(out.outcomes.computed.begin(), staged.begin(), staged.end());
     out.objectFaces = sortFaces(out.meshes, out.outcomes);
     if (out.outcomes.depth) {
@@ -812,7 +818,7 @@ std::shared_ptr<const EvaluatedScene> evaluate(const Scene& scene, MeshCache* ca
     out.zFightingRing = ringAround(shown.fighting, screenClipMatrix(out.pipeline));
     out.effectsNote = describeEffects(scene.effects, out.outcomes, out.pipeline, out.bands);
     fillLegends(out, shown, farCut);
-    out.stageClaims = stageClaims(out.pipeline, out.setup, farCut);
+    out.stageClaims = stageClaims(out.pipeline, out.setup, farCut, exact ? exact->zmin : std::nullopt);
     return evaluated;
 }
 

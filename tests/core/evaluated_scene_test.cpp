@@ -261,7 +261,7 @@ TEST(EvaluatedScene, StagesClaimWhatTheyAchieve)
                                                             "the identity here: nothing moves", "PRP at the origin",
                                                             "DOP along the $z$ axis",
                                                             "sides on $x = \\pm z$, $y = \\pm z$; back at $z = -1$, "
-                                                            "front at $z_{\\min} = -0.407$"}));
+                                                            "front at $z_{\\min} = -\\frac{24}{59}$"}));
     const auto gl = evaluateScene(loadScene(std::string(viewpipe::build::dataDir) + "/scenes/opengl-perspective.json"));
     EXPECT_EQ(gl->stageClaims,
               (std::vector<std::string>{"", "eye at the origin",
