@@ -889,6 +889,16 @@ std::string sceneToJson(const Scene& scene)
     return written(sceneTree(scene));
 }
 
+std::map<std::string, std::string> heldExpressions(const Scene& scene)
+{
+    Written tree = sceneTree(scene);
+    std::map<std::string, std::string> held;
+    for (const auto& [path, text] : scene.typedExpressions)
+        if (const Written* value = valueAt(tree, path); value && value->is_string())
+            held.emplace(path, text);
+    return held;
+}
+
 void writeFileAtomically(const std::filesystem::path& file, const std::string& contents)
 {
     // Unique per process and per call: two runs, or two threads, never share a temporary file.

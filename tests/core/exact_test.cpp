@@ -218,6 +218,9 @@ TEST(ExactScene, ExpressionsAreReadExactlyAndSavedAsTyped)
     Scene edited = scene;
     std::get<foley::ViewSpec<double>>(edited.camera).prp.z() = 30;
     EXPECT_EQ(sceneToJson(edited).find("sqrt"), std::string::npos) << sceneToJson(edited);
+    // What a save writes as typed: every expression before the edit, the other field's after it.
+    EXPECT_EQ(heldExpressions(scene), scene.typedExpressions);
+    EXPECT_EQ(heldExpressions(edited), (std::map<std::string, std::string>{{"view.window[0]", "-1/3"}}));
 }
 
 TEST(ExactScene, BadExpressionsNameTheField)

@@ -76,6 +76,9 @@ struct Preset {
 std::vector<Preset> presetScenes(const std::filesystem::path& scenes);
 
 std::string sceneToJson(const Scene& scene);
+// The scene's typed expressions whose field still holds the value typed, as
+// sceneToJson writes them; an edit since has replaced the others.
+std::map<std::string, std::string> heldExpressions(const Scene& scene);
 // The same, to be read from `folder`: a mesh path relative to it where the two
 // share a folder below the root, else absolute.
 std::string sceneToJson(const Scene& scene, const std::filesystem::path& folder);
