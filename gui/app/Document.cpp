@@ -79,6 +79,15 @@ void Document::setCamera(const CameraSpec<double>& camera, const QString& descri
     replace(std::move(next), description, gesture);
 }
 
+void Document::setCamera(const CameraSpec<double>& camera, const std::map<std::string, std::string>& typed,
+                         const QString& description)
+{
+    Scene next = scene();
+    next.camera = camera;
+    next.typedExpressions = typed;
+    replace(std::move(next), description);
+}
+
 void Document::setEffects(const EffectList& effects, const QString& description)
 {
     Scene next = scene();
@@ -104,6 +113,7 @@ void Document::markRecovered(const Scene& saved)
 
 void Document::replace(Scene next, const QString& description, int gesture)
 {
+    next.typedExpressions = heldExpressions(next); // an expression whose field was edited since is gone
     std::shared_ptr<const EvaluatedScene> after = evaluate(next); // throws InputError: nothing changes
     undo_.push(new SceneEdit(this, evaluated_, std::move(after), description, gesture));
 }

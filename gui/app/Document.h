@@ -56,6 +56,9 @@ public:
     // throws InputError and changes nothing. Consecutive edits with the same
     // `gesture` (>= 0: one drag of a number) make one undoable edit.
     void setCamera(const CameraSpec<double>& camera, const QString& description, int gesture = -1);
+    // The same, with the scene's expressions typed (Scene::typedExpressions) replaced by `typed`.
+    void setCamera(const CameraSpec<double>& camera, const std::map<std::string, std::string>& typed,
+                   const QString& description);
     void setEffects(const EffectList& effects, const QString& description);
     // A scene already evaluated (by evaluate(), off the GUI thread: an object
     // added) becomes the current state, as one undoable edit.
@@ -75,6 +78,7 @@ signals:
 private:
     mutable std::shared_ptr<const EvaluatedScene> exactOf_; // the evaluation exact_ was computed for
     mutable std::optional<Pipeline<Exact>> exact_;
+    // Keeps the expressions typed whose field still holds their value (heldExpressions).
     void replace(Scene next, const QString& description, int gesture = -1);
 
     SceneEvaluator evaluator_;

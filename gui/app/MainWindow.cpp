@@ -367,7 +367,7 @@ void MainWindow::onDocumentChanged()
 
 void MainWindow::refreshWidgets()
 {
-    parameters_->setCamera(document_->scene().camera);
+    parameters_->setCamera(document_->scene().camera, document_->scene().typedExpressions);
     code_->setCamera(document_->scene().camera);
     effectsMenu_->follow();
     depth_->showDepth(document_->pipeline(), document_->evaluated()->outcomes.depth, painter_->theme());
@@ -376,10 +376,11 @@ void MainWindow::refreshWidgets()
     updateTitle();
 }
 
-void MainWindow::onCameraEdited(const CameraSpec<double>& camera, const QString& field)
+void MainWindow::onCameraEdited(const CameraSpec<double>& camera, const std::map<std::string, std::string>& typed,
+                                const QString& field)
 {
     try {
-        document_->setCamera(camera, tr("Edit %1").arg(field));
+        document_->setCamera(camera, typed, tr("Edit %1").arg(field));
         parameters_->clearErrors();
     } catch (const InputError& e) {
         // The last valid picture stays; the reason goes next to the field.

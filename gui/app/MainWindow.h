@@ -130,7 +130,8 @@ private:
     void onDocumentChanged();
     // The stepper, panels, menus and title from the document, the picture being drawn.
     void refreshWidgets();
-    void onCameraEdited(const CameraSpec<double>& camera, const QString& field);
+    void onCameraEdited(const CameraSpec<double>& camera, const std::map<std::string, std::string>& typed,
+                        const QString& field);
     void updateCaptions();
     // The stage panel and the matrices: the stage's, or a note while a lesson's question waits.
     void updateMatrices();

@@ -17,6 +17,7 @@
 
 #include "NumberText.h"
 #include "viewpipe/camera_choices.hpp"
+#include "viewpipe/exact.hpp"
 #include "viewpipe/format.hpp"
 
 namespace viewpipe::gui {
@@ -280,7 +281,9 @@ void ParameterPanel::addRow(const QString& field, const QString& label, const QS
 {
     const QString entry = "<p>" +
                           tr("Type a number with a '.' decimal point (C locale, whatever the system's), e.g. "
-                             "0.25, -45 or 1.5e-3; Return applies it, Escape restores the value.")
+                             "0.25, -45 or 1.5e-3, or an exact expression such as 20*sqrt(2), √2/2 or 1/3 "
+                             "(+ - * /, sqrt() or √, parentheses), kept as typed; Return applies it, Escape "
+                             "restores the value.")
                               .toHtmlEscaped() +
                           "</p>";
     auto* row = new QHBoxLayout;
@@ -362,9 +365,10 @@ void ParameterPanel::addChoice(const CameraSpec<double>& camera, const std::stri
     choices_[combo->objectName()] = combo;
 }
 
-void ParameterPanel::setCamera(const CameraSpec<double>& camera)
+void ParameterPanel::setCamera(const CameraSpec<double>& camera, const std::map<std::string, std::string>& typed)
 {
     camera_ = camera;
+    typed_ = typed;
     if (layoutKeyOf(camera) != layoutKey_) {
         filling_ = true; // hiding the old form moves the focus: no edit from its fields
         rebuild(camera);
@@ -381,7 +385,7 @@ void ParameterPanel::fill(const QWidget* except)
         const QList<double*> numbers = numbersOf(camera_, it.key());
         for (int i = 0; i < it.value().size() && i < numbers.size(); ++i) {
             QLineEdit* box = it.value()[i];
-            const QString text = numberText(*numbers[i]);
+            const QString text = shownText(box, *numbers[i]);
             if (box == except || box->text() == text)
                 continue;
             box->setText(text);
@@ -419,20 +423,35 @@ void ParameterPanel::commit(QLineEdit* box)
     const auto* glCamera = std::get_if<gl::Camera<double>>(&camera_);
     const bool infinityAllowed = field == kProjectionPrefix + "far" && glCamera &&
                                  !std::holds_alternative<gl::Ortho<double>>(glCamera->projection);
-    const QString reason = readNumber(box->text(), infinityAllowed, value);
-    if (!reason.isEmpty()) {
-        refuse(field, field, reason);
-        return;
+    const std::string path = pathOf(box);
+    std::map<std::string, std::string> typed = typed_;
+    typed.erase(path); // a number typed replaces an expression
+    if (!readNumber(box->text(), infinityAllowed, value).isEmpty()) {
+        // Not a number: an exact expression, as a scene file may hold it, read by the core.
+        const std::string text = box->text().trimmed().toStdString();
+        try {
+            value = double(parseExact(text));
+        } catch (const std::exception& e) {
+            refuse(field, field, QString::fromStdString(path + ": " + e.what()), true);
+            return;
+        }
+        if (!std::isfinite(value)) {
+            refuse(field, field, QString::fromStdString(path) + ": " + tr("\"%1\" is out of the range of a double")
+                                                                           .arg(QString::fromStdString(text)),
+                   true);
+            return;
+        }
+        typed[path] = text;
     }
-    if (sameBits(value, *number)) {
-        if (box->text() != numberText(value))
-            box->setText(numberText(value));
+    if (sameBits(value, *number) && typed == typed_) {
+        if (box->text() != valueText(box))
+            box->setText(valueText(box));
         if (refused_ == field)
             clearErrors();
         return;
     }
     *number = value;
-    emitEdit(candidate, field);
+    emitEdit(candidate, typed, field);
 }
 
 void ParameterPanel::choose(const QString& field, int index)
@@ -447,13 +466,14 @@ void ParameterPanel::choose(const QString& field, int index)
         return;
     }
     fill(choices_.value(field));
-    emitEdit(candidate, field);
+    emitEdit(candidate, typed_, field);
 }
 
-void ParameterPanel::emitEdit(const CameraSpec<double>& candidate, const QString& field)
+void ParameterPanel::emitEdit(const CameraSpec<double>& candidate, const std::map<std::string, std::string>& typed,
+                              const QString& field)
 {
     editing_ = field;
-    emit cameraEdited(candidate, field);
+    emit cameraEdited(candidate, typed, field);
     editing_.clear();
 }
 
@@ -462,12 +482,12 @@ void ParameterPanel::showError(const QString& field, const QString& reason)
     refuse(editing_, field, reason);
 }
 
-void ParameterPanel::refuse(const QString& edited, const QString& field, const QString& reason)
+void ParameterPanel::refuse(const QString& edited, const QString& field, const QString& reason, bool asWritten)
 {
     clearErrors();
     QString key = field;
     key.remove(QRegularExpression("\\[\\d+\\]$"));
-    const QString text = reasonText(key, reason);
+    const QString text = asWritten ? reason : reasonText(key, reason);
     // Away from its field the reason says which it is about.
     const QString name = labels_.value(key, field);
     const QString named = text.startsWith(name) ? text : name + ": " + text;
@@ -506,11 +526,24 @@ void ParameterPanel::clearErrors()
     refused_.clear();
 }
 
+std::string ParameterPanel::pathOf(QLineEdit* box) const
+{
+    const QList<QLineEdit*> boxes = boxes_.value(box->objectName());
+    const std::string field = box->objectName().toStdString();
+    return boxes.size() > 1 ? field + "[" + std::to_string(boxes.indexOf(box)) + "]" : field;
+}
+
+QString ParameterPanel::shownText(QLineEdit* box, double value) const
+{
+    const auto typed = typed_.find(pathOf(box));
+    return typed != typed_.end() ? QString::fromStdString(typed->second) : numberText(value);
+}
+
 QString ParameterPanel::valueText(QLineEdit* box)
 {
     const QString field = box->objectName();
     const double* number = numbersOf(camera_, field).value(boxes_.value(field).indexOf(box));
-    return number ? numberText(*number) : box->text();
+    return number ? shownText(box, *number) : box->text();
 }
 
 bool ParameterPanel::isRestorable(QLineEdit* box)
