@@ -367,6 +367,18 @@ Outcome withCameraChoice(const std::string& sceneText, const std::string& field,
     });
 }
 
+// The scene camera's numbers typed as exact expressions, {"view.prp[2]": "20*sqrt(2)"}
+// (Scene::typedExpressions): the fields whose JSON holds text for a number.
+// Read without the objects: their meshes may not be in the module's files.
+Outcome typedExpressionsOf(const std::string& sceneText)
+{
+    return guarded([&] {
+        nlohmann::json scene = nlohmann::json::parse(sceneText);
+        scene.erase("objects");
+        return Outcome{nlohmann::json(parseScene(scene.dump(), kSceneFolder).typedExpressions).dump(), ""};
+    });
+}
+
 } // namespace
 } // namespace viewpipe::web
 
@@ -392,4 +404,5 @@ EMSCRIPTEN_BINDINGS(viewpipe)
     emscripten::function("steppedValue", &viewpipe::code::steppedValue);
     emscripten::function("cameraChoices", &cameraChoicesOf);
     emscripten::function("withCameraChoice", &withCameraChoice);
+    emscripten::function("typedExpressions", &typedExpressionsOf);
 }

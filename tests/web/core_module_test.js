@@ -126,6 +126,8 @@ require(path.resolve(modulePath))().then((core) => {
     'malformed JSON': writeScene('malformed', '{"camera": '),
     'a wrong type': writeScene('type', { ...house, objects: 3 }),
     'a degenerate view': writeScene('vup', { ...house, view: { ...house.view, vup: house.view.vpn } }),
+    'exact expressions (issue 46)': writeScene('exact', { ...house, view: { ...house.view, prp: ['20*sqrt(2)', '\u221A2', 84] } }),
+    'a bad expression': writeScene('bad-exact', { ...house, view: { ...house.view, prp: [8, 6, '1/0'] } }),
     'a truncated PLY': writeScene('ply', { ...house, objects: [{ type: 'mesh', path: 'bad.ply' }] },
                                   { 'bad.ply': Buffer.from(truncatedPly, 'binary') }),
   };
@@ -204,6 +206,16 @@ require(path.resolve(modulePath))().then((core) => {
       { step: 1, kind: 'entry', answer: -2 / 21, typed: '-2/21', correct: true, tries: 1 },
       { step: 3, kind: 'where', answer: [1 / 3, 0, -1], typed: ['1/3', '0', '-1'], correct: false, tries: 1 },
       { step: 4, kind: 'where', answer: null, correct: false, revealed: true }] });
+  });
+
+  // The page's fields that hold an exact expression, by the core's field path; none for a scene of numbers.
+  check('the expressions typed, by field path', () => {
+    const typed = (view) => core.typedExpressions(JSON.stringify({ ...house, view: { ...house.view, ...view } }));
+    assert.deepStrictEqual(JSON.parse(typed({ prp: ['20*sqrt(2)', '\u221A2', 84], front: '60' }).text),
+                           { 'view.front': '60', 'view.prp[0]': '20*sqrt(2)', 'view.prp[1]': '\u221A2' });
+    assert.deepStrictEqual(JSON.parse(typed({}).text), {});
+    assert.strictEqual(typed({ prp: [8, 6, 'sqrt(-1)'] }).error,
+                       'view.prp[2]: the square root of -1, a negative number, at character 1 of "sqrt(-1)"');
   });
 
   fs.rmSync(work, { recursive: true, force: true });

@@ -612,6 +612,67 @@ TEST_F(WebPage, EditsTheSceneWithTheCoreRefusesBesideTheFieldUndoesAndLinksIt)
         ADD_FAILURE() << problem;
 }
 
+// Exact expressions in the Scene panel's fields (issue 46): the core reads them, the page's scene keeps them as
+// typed (text in the field, as a scene file holds it) and computes as the CLI does for that file; a bad one is
+// refused beside its field with the core's path and reason.
+TEST_F(WebPage, TakesExactExpressionsInTheFieldsAndKeepsThemAsTyped)
+{
+    std::ifstream in(kData + "/scenes/house.json");
+    std::stringstream house;
+    house << in.rdbuf();
+    json exact = json::parse(house.str());
+    exact["view"]["prp"][0] = "20*sqrt(2)";
+    exact["view"]["prp"][1] = "\u221A2";
+    const fs::path exactFile = *dir_ / "house-prp-exact.json";
+    std::ofstream(exactFile) << exact.dump(2);
+    const Finished expected = viewpipe({"pipeline", QString::fromStdString(exactFile.string()), "--json"});
+    ASSERT_EQ(expected.exitCode, 0) << expected.output;
+
+    const fs::path page = *dir_ / "house" / "scene.html";
+    Browser browser(*dir_ / "profile-exact");
+    browser.page("Page.navigate", {{"url", "file://" + page.string()}});
+    ASSERT_TRUE(browser.waitFor("document.body.dataset.core === '1'"));
+    const std::string pipelineJson = "document.getElementById('pipeline-json').textContent";
+    // PRP as the scene held by the link (its JSON in base64url, as the page writes it) has it.
+    const std::string prp = "(() => { const m = /scene=([^&]*)/.exec(location.hash); if (!m) return ''; "
+                            "const bytes = Uint8Array.from(atob(m[1].replace(/-/g, '+').replace(/_/g, '/')), (c) => c.charCodeAt(0)); "
+                            "return JSON.stringify(JSON.parse(new TextDecoder().decode(bytes)).view.prp); })()";
+    const auto field = [](const std::string& path) { return "document.querySelector(`input[aria-label='" + path + "']`)"; };
+
+    typeInto(browser, "view.prp[0]", "20*sqrt(2)");
+    ASSERT_TRUE(browser.waitFor(prp + " === '[\"20*sqrt(2)\",6,84]'")) << browser.evaluate(prp);
+    typeInto(browser, "view.prp[1]", "\u221A2");
+    ASSERT_TRUE(browser.waitFor(prp + " === '[\"20*sqrt(2)\",\"\u221A2\",84]'")) << browser.evaluate(prp);
+    EXPECT_EQ(browser.evaluate(pipelineJson).get<std::string>() + "\n", expected.output);
+    // The fields show the text typed, PRP's three still one row, and the expressions are numbers' fields.
+    EXPECT_EQ(browser.evaluate(field("view.prp[0]") + ".value"), "20*sqrt(2)");
+    EXPECT_EQ(browser.evaluate(field("view.prp[1]") + ".value"), "\u221A2");
+    EXPECT_EQ(browser.evaluate("document.querySelectorAll(`.field[data-path='view.prp'] input`).length"), 3);
+    EXPECT_EQ(browser.evaluate(field("view.prp[0]") + ".dataset.kind"), "number");
+
+    // A bad one: refused beside PRP with its path and reason; the scene keeps the expressions.
+    typeInto(browser, "view.prp[1]", "1/0");
+    ASSERT_TRUE(browser.waitFor("!document.getElementById('scene-error').hidden"));
+    EXPECT_EQ(browser.evaluate("document.querySelector(`.field[data-path='view.prp'] .field-error`).textContent"),
+              "view.prp[1]: division by zero at character 3 of \"1/0\"");
+    EXPECT_EQ(browser.evaluate(prp), "[\"20*sqrt(2)\",\"\u221A2\",84]");
+    EXPECT_EQ(browser.evaluate(pipelineJson).get<std::string>() + "\n", expected.output);
+
+    // Save scene writes them as typed.
+    browser.call("Browser.setDownloadBehavior", {{"behavior", "allow"}, {"downloadPath", (*dir_ / "exact-saved").string()}});
+    browser.evaluate("document.getElementById('save-scene').click()");
+    const fs::path saved = *dir_ / "exact-saved" / "foley-s-house.json";
+    ASSERT_TRUE(waitForFile(saved)) << "the scene is downloaded";
+    std::ifstream savedIn(saved);
+    EXPECT_EQ(json::parse(savedIn)["view"]["prp"], json::parse("[\"20*sqrt(2)\", \"\u221A2\", 84]"));
+
+    // A number typed over an expression is a number in the scene again.
+    typeInto(browser, "view.prp[0]", "8");
+    ASSERT_TRUE(browser.waitFor(prp + " === '[8,\"\u221A2\",84]'")) << browser.evaluate(prp);
+    for (const std::string& problem : browser.problems())
+        ADD_FAILURE() << problem;
+}
+
 TEST_F(WebPage, OpensAndDropsScenesAndMeshesReadByTheCore)
 {
     // A scene of one tetrahedron, and the same scene with a truncated PLY added: as files, for the CLI.

@@ -60,10 +60,13 @@
       fields.appendChild(row);
     }
     const chosen = new Set(choices.map((choice) => choice.field));
+    // The numbers typed as exact expressions ("20*sqrt(2)"), text in the scene's JSON, as the core read them.
+    const typed = core ? JSON.parse(core.typedExpressions(data.scene).text || '{}') : {};
+    const isNumber = (value, path) => typeof value === 'number' || pathText(path) in typed;
     // One row per number, list of numbers or text; objects as groups.
     const add = (parent, value, path) => {
       if (chosen.has(pathText(path))) return;
-      const numbers = Array.isArray(value) && value.every((v) => typeof v === 'number');
+      const numbers = Array.isArray(value) && value.every((v, k) => isNumber(v, [...path, k]));
       if (value !== null && typeof value === 'object' && !numbers) {
         const group = document.createElement('fieldset');
         const title = document.createElement('legend');
@@ -85,7 +88,7 @@
         if (typeof item === 'number') input.inputMode = 'decimal';
         input.value = input.defaultValue = typeof item === 'string' ? item : JSON.stringify(item);
         input.dataset.path = JSON.stringify(itemPath);
-        input.dataset.kind = typeof item;
+        input.dataset.kind = isNumber(item, itemPath) ? 'number' : typeof item;
         input.setAttribute('aria-label', pathText(itemPath));
         input.addEventListener('change', () => editField(input));
         if (!label.htmlFor) {
@@ -100,7 +103,8 @@
   }
 
   // A field's edit: its typed text put into the scene as written (a JSON number stays that number, digit for
-  // digit; other text goes as text, for the core to say what it needs), the scene evaluated.
+  // digit; other text goes as text, for the core to say what it needs: in a number's field an exact expression
+  // such as 20*sqrt(2) or √2/2, which the core reads and the scene keeps as typed), the scene evaluated.
   // A number as people type it (+5, .5, 5., 007), as JSON writes it, its digits kept; else null.
   function jsonNumberOf(typed) {
     const parts = /^([+-]?)([0-9]*)(?:\.([0-9]*))?([eE][+-]?[0-9]+)?$/.exec(typed);
