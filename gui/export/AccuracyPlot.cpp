@@ -40,15 +40,15 @@ void addPanel(vtkChartXY* chart, const BenchResult& result, bool vertices, Theme
     chart->GetLegend()->SetVerticalAlignment(vtkChartLegend::TOP);
     for (std::size_t i = 0; i < result.rows.size(); ++i) {
         const BenchRow& row = result.rows[i];
-        if (row.epsilon == 0)
-            continue; // the exact type: its error, 0, has no place on a logarithmic axis (the table gives its time)
+        const double error = vertices ? row.errors.ndcMaxError : row.errors.maxRelativeError;
+        if (!(error > 0))
+            continue; // the exact type: 0 has no place on a logarithmic axis (the table gives its time)
         vtkNew<vtkTable> table;
         vtkNew<vtkDoubleArray> x, y;
         x->SetName("time");
         y->SetName((narrow ? row.precision : row.precision + " (" + std::to_string(row.bits) + " bits)").c_str());
-        const double error = vertices ? row.errors.ndcMaxError : row.errors.maxRelativeError;
         x->InsertNextValue(std::log10(vertices ? row.vertexNs : row.buildNs));
-        y->InsertNextValue(std::log10(std::max(error, 1e-300))); // an exact result has no logarithm
+        y->InsertNextValue(std::log10(error));
         table->AddColumn(x);
         table->AddColumn(y);
         auto* plot = vtkPlotPoints::SafeDownCast(chart->AddPlot(vtkChart::POINTS));
@@ -60,10 +60,10 @@ void addPanel(vtkChartXY* chart, const BenchResult& result, bool vertices, Theme
     }
     double xLow = 1e300, xHigh = 0, yLow = 1e300, yHigh = 0;
     for (const BenchRow& row : result.rows) {
-        if (row.epsilon == 0)
+        const double y = vertices ? row.errors.ndcMaxError : row.errors.maxRelativeError;
+        if (!(y > 0))
             continue;
         const double x = vertices ? row.vertexNs : row.buildNs;
-        const double y = std::max(vertices ? row.errors.ndcMaxError : row.errors.maxRelativeError, 1e-300);
         xLow = std::min(xLow, x), xHigh = std::max(xHigh, x), yLow = std::min(yLow, y), yHigh = std::max(yHigh, y);
     }
     styleLogAxis(chart->GetAxis(vtkAxis::BOTTOM), vertices ? "ns per vertex (transform, divide)" : "ns per build",
