@@ -127,6 +127,19 @@ std::string integerText(const BigInt& n)
     return n.str();
 }
 
+// The terms in order, the rational part first, each written by
+// term(p, radicand, q) for its coefficient's size p/q, with the signs between.
+template <class F> std::string joinTerms(const Terms& terms, F&& term)
+{
+    std::string out;
+    for (const auto& [radicand, coefficient] : terms) {
+        out += out.empty() ? (coefficient < 0 ? "-" : "") : (coefficient < 0 ? " - " : " + ");
+        out += term(BigInt(abs(boost::multiprecision::numerator(coefficient))), radicand,
+                    BigInt(boost::multiprecision::denominator(coefficient)));
+    }
+    return out;
+}
+
 // The roots a value's roots generate: every product of some of them, reduced.
 std::vector<BigInt> generatedRadicands(const Terms& terms)
 {
@@ -284,19 +297,11 @@ std::string Exact::text() const
         return approximation_->str(40);
     if (terms_.empty())
         return "0";
-    std::string out;
-    for (const auto& [radicand, coefficient] : terms_) {
-        const BigInt p = abs(boost::multiprecision::numerator(coefficient));
-        const BigInt q = boost::multiprecision::denominator(coefficient);
-        out += out.empty() ? (coefficient < 0 ? "-" : "") : (coefficient < 0 ? " - " : " + ");
-        std::string term;
-        if (radicand == 1)
-            term = integerText(p);
-        else
-            term = (p == 1 ? "" : integerText(p) + "*") + "sqrt(" + integerText(radicand) + ")";
-        out += term + (q == 1 ? "" : "/" + integerText(q));
-    }
-    return out;
+    return joinTerms(terms_, [](const BigInt& p, const BigInt& radicand, const BigInt& q) {
+        const std::string term =
+            radicand == 1 ? integerText(p) : (p == 1 ? "" : integerText(p) + "*") + "sqrt(" + integerText(radicand) + ")";
+        return term + (q == 1 ? "" : "/" + integerText(q));
+    });
 }
 
 std::string Exact::latex(int digits) const
@@ -307,19 +312,11 @@ std::string Exact::latex(int digits) const
         return approximation_->str(digits);
     if (terms_.empty())
         return "0";
-    std::string out;
-    for (const auto& [radicand, coefficient] : terms_) {
-        const BigInt p = abs(boost::multiprecision::numerator(coefficient));
-        const BigInt q = boost::multiprecision::denominator(coefficient);
-        out += out.empty() ? (coefficient < 0 ? "-" : "") : (coefficient < 0 ? " - " : " + ");
-        std::string numerator;
-        if (radicand == 1)
-            numerator = integerText(p);
-        else
-            numerator = (p == 1 ? "" : integerText(p)) + "\\sqrt{" + integerText(radicand) + "}";
-        out += q == 1 ? numerator : "\\frac{" + numerator + "}{" + integerText(q) + "}";
-    }
-    return out;
+    return joinTerms(terms_, [](const BigInt& p, const BigInt& radicand, const BigInt& q) {
+        const std::string numerator =
+            radicand == 1 ? integerText(p) : (p == 1 ? "" : integerText(p)) + "\\sqrt{" + integerText(radicand) + "}";
+        return q == 1 ? numerator : "\\frac{" + numerator + "}{" + integerText(q) + "}";
+    });
 }
 
 bool Exact::readsExactly() const
