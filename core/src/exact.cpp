@@ -140,7 +140,10 @@ template <class F> std::string joinTerms(const Terms& terms, F&& term)
     return out;
 }
 
-// The roots a value's roots generate: every product of some of them, reduced.
+constexpr std::size_t kMaxRoots = 64;
+
+// The roots a value's roots generate: every product of some of them, reduced;
+// stops past kMaxRoots (they double with each independent root).
 std::vector<BigInt> generatedRadicands(const Terms& terms)
 {
     std::set<BigInt> all{BigInt(1)};
@@ -150,11 +153,11 @@ std::vector<BigInt> generatedRadicands(const Terms& terms)
             BigInt factor;
             all.insert(productRadicand(r, term.first, factor));
         }
+        if (all.size() > kMaxRoots)
+            break;
     }
     return {all.begin(), all.end()};
 }
-
-constexpr std::size_t kMaxRoots = 64;
 
 // 1 / x in the field x's roots generate, by solving x y = 1 over the basis of
 // their products; false when the basis is too large.
@@ -387,6 +390,11 @@ Exact& Exact::operator*=(const Exact& b)
         *this = inexact(approximation() * b.approximation(), *reason);
         return *this;
     }
+    if (terms_.size() * b.terms_.size() > kMaxRoots * kMaxRoots) { // a product of sums of many roots
+        *this = inexact(approximation() * b.approximation(), "a product of more than " +
+                                                                 std::to_string(kMaxRoots * kMaxRoots) + " terms");
+        return *this;
+    }
     terms_ = multiply(terms_, b.terms_);
     return *this;
 }
@@ -553,11 +561,12 @@ private:
 
     Exact unary()
     {
-        if (take("+"))
-            return unary();
-        if (takeMinus())
-            return -unary();
-        return primary();
+        // Every nesting (parentheses, roots, signs) passes here: a bound keeps the stack.
+        if (++depth_ > kMaxDepth)
+            fail("nested deeper than " + std::to_string(kMaxDepth) + " levels");
+        Exact value = take("+") ? unary() : takeMinus() ? -unary() : primary();
+        --depth_;
+        return value;
     }
 
     Exact root(std::size_t start, const Exact& argument)
@@ -635,8 +644,10 @@ private:
         return scale >= 0 ? Exact(Rational(digits * power)) : Exact(Rational(digits, power));
     }
 
+    static constexpr int kMaxDepth = 100;
     std::string_view text_;
     std::size_t at_ = 0;
+    int depth_ = 0;
 };
 
 } // namespace

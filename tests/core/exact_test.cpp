@@ -100,6 +100,19 @@ TEST(Exact, BadExpressionsAreRefusedWithTheReason)
     EXPECT_NE(refusal("sqrt(2").find("expected )"), std::string::npos);
     EXPECT_NE(refusal("2x").find("unexpected \"x\" at character 2"), std::string::npos);
     EXPECT_NE(refusal("1e99999").find("exponent"), std::string::npos);
+    // Hostile input: nesting past 100 levels is refused, not a deep recursion.
+    EXPECT_NE(refusal((std::string(5000, '(') + "1" + std::string(5000, ')')).c_str()).find("nested deeper than 100"),
+              std::string::npos);
+    EXPECT_NE(refusal(std::string(5000, '-').append("1").c_str()).find("nested deeper than 100"), std::string::npos);
+    // A product of sums of many roots becomes inexact, with its reason, instead of 2^k terms.
+    std::string many = "(1";
+    for (int p : {2, 3, 5, 7, 11, 13, 17, 19, 23, 29, 31, 37, 41, 43, 47, 53, 59, 61, 67, 71})
+        many += " + sqrt(" + std::to_string(p) + ")";
+    many += ")";
+    const Exact big = e((many + "*" + many + "*" + many + "*" + many).c_str());
+    EXPECT_FALSE(big.isExact());
+    EXPECT_GT(double(big), 1e6);
+    EXPECT_FALSE((Exact(1) / e(many.c_str())).isExact()); // 2^20 products of roots: not solved for
 }
 
 TEST(Exact, CotangentsOfTheSpecialAnglesAreExact)
