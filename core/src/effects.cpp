@@ -449,7 +449,7 @@ namespace {
 class VertexVerdicts {
 public:
     VertexVerdicts(const Mat4<double>& clip, const Mat4<Exact>* exact, ClipVolume volume)
-        : clip_(clip), exact_(exact), volume_(volume)
+        : exact_(exact), volume_(volume)
     {
         if (!exact)
             return;
@@ -482,7 +482,6 @@ public:
     bool exact() const { return exact_ != nullptr; }
 
 private:
-    Mat4<double> clip_;
     const Mat4<Exact>* exact_;
     ClipVolume volume_;
     Mat4<double> error_ = Mat4<double>::Zero();

@@ -147,10 +147,11 @@ void MatrixPanel::showTrace(const Pipeline<double>& pipeline, const Pipeline<Exa
     }
     const PointTrace<double> t = tracePoint(pipeline, *point);
     // The vertex as its file writes it (0.1 is one tenth), traced exactly.
+    const Vec4<Exact> world(fromDecimal<Exact>(point->x()), fromDecimal<Exact>(point->y()),
+                            fromDecimal<Exact>(point->z()), Exact(1));
     std::optional<PointTrace<Exact>> e;
     if (exact)
-        e = tracePoint(*exact, Vec3<Exact>(fromDecimal<Exact>(point->x()), fromDecimal<Exact>(point->y()),
-                                           fromDecimal<Exact>(point->z())));
+        e = tracePoint(*exact, Vec3<Exact>(world.head<3>()));
     auto row = [](const QString& name, const Vec4<double>& p, const Vec4<Exact>* q, bool current) {
         QString cells = QString("<tr%1><td>%2</td>").arg(current ? " style='font-weight:bold'" : "", name);
         for (int k = 0; k < 4; ++k)
@@ -158,9 +159,6 @@ void MatrixPanel::showTrace(const Pipeline<double>& pipeline, const Pipeline<Exa
         return cells + "</tr>";
     };
     QString html = tr("<b>Traced vertex</b> (x, y, z, w):<table cellspacing='0' cellpadding='2'>");
-    const Vec4<Exact> world = e ? Vec4<Exact>(fromDecimal<Exact>(point->x()), fromDecimal<Exact>(point->y()),
-                                              fromDecimal<Exact>(point->z()), Exact(1))
-                                : Vec4<Exact>::Zero();
     html += row(tr("world"), point->homogeneous(), e ? &world : nullptr, stage == 0);
     for (std::size_t k = 0; k < pipeline.stages.size() && int(k) < lastRow; ++k)
         html += row(mathHtml("$" + symbolMath(pipeline.stages[k].symbol) + "$"), t.afterStage[k],

@@ -376,13 +376,16 @@ Json traceJson(const Scene& scene, const Vec3<Exact>& typed, const PrecisionChoi
     const ClipVerdict verdict = clipVerdict(exactTrace.clip, exact.clipVolume);
     return withPrecision(precision, [&](auto zero) {
         using T = decltype(zero);
-        const Pipeline<T> p = pipelineFor<T>(scene);
         const Vec3<T> point(scalarOf<T>(typed.x()), scalarOf<T>(typed.y()), scalarOf<T>(typed.z()));
+        Pipeline<T> p;
         PointTrace<T> trace;
-        if constexpr (isExactScalar<T>)
+        if constexpr (isExactScalar<T>) { // computed above for the verdict
+            p = exact;
             trace = exactTrace;
-        else
+        } else {
+            p = pipelineFor<T>(scene);
             trace = tracePoint(p, point);
+        }
         Json stages = Json::array();
         for (std::size_t k = 0; k < p.stages.size(); ++k)
             stages.push_back({{"symbol", p.stages[k].symbol}, {"point", vectorJson(trace.afterStage[k])}});
