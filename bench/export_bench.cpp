@@ -72,7 +72,7 @@ void BareVtk(benchmark::State& state)
     const std::vector<Stage<double>> stages = buildPipeline(house().camera).stages;
     for (auto _ : state) {
         for (std::size_t k = 0; k <= stages.size(); ++k) {
-            const auto matrix = gui::toVtk(drawnAt(stages, double(k)));
+            const auto matrix = gui::toVtk(cumulativeAt(stages, double(k)));
             vtkPropCollection* props = renderer->GetViewProps();
             props->InitTraversal();
             while (vtkProp* prop = props->GetNextProp())

@@ -543,7 +543,7 @@ std::vector<std::string> claimsAtStages(const Pipeline<double>& pipeline, const 
     std::vector<std::string> claims(pipeline.stages.size() + 1);
     std::vector<bool> before(facts.size());
     for (std::size_t k = 0; k <= pipeline.stages.size(); ++k) {
-        const Mat4<double> m = drawnAt(pipeline.stages, double(k));
+        const Mat4<double> m = cumulativeAt(pipeline.stages, double(k));
         const Image image = [&](const V& p) { return projectPoint(m, p); };
         scale = 1;
         for (const V& c : s.volume)
@@ -555,7 +555,9 @@ std::vector<std::string> claimsAtStages(const Pipeline<double>& pipeline, const 
                 claims[k] += (claims[k].empty() ? "" : "; ") + facts[f].text;
             before[f] = now;
         }
-        if (k > 0 && claims[k].empty() && !pipeline.stages[k - 1].divides && pipeline.stages[k - 1].matrix.isIdentity(0))
+        if (k > 0 && pipeline.stages[k - 1].divides)
+            claims[k] = "the picture stays: every stage is drawn divided by w";
+        else if (k > 0 && claims[k].empty() && pipeline.stages[k - 1].matrix.isIdentity(0))
             claims[k] = "the identity here: nothing moves";
     }
     return claims;

@@ -193,11 +193,11 @@ Framing stageFraming(const EvaluatedScene& scene, int stage, FramingMode mode)
     const int first = mode == FramingMode::Together && framedWithTheOneBefore(stages, stage) ? stage - 1 : stage, last = stage;
     std::vector<Mat4<double>> positions;
     for (int k = first; k <= last; ++k)
-        positions.push_back(drawnAt(stages, double(k)));
-    const bool canonical = canonicalOpacityAt(stage, stages.size()) > 0;
+        positions.push_back(cumulativeAt(stages, double(k)));
+    const bool canonical = canonicalOpacityAt(stage, stages) > 0;
     Framing framing = framingOf(scene, positions, canonical);
     if (first < last)
-        framing.shown = framingOf(scene, {drawnAt(stages, stage)}, canonical).points;
+        framing.shown = framingOf(scene, {cumulativeAt(stages, stage)}, canonical).points;
     return framing;
 }
 
@@ -208,13 +208,14 @@ StageFramings stageFramings(const EvaluatedScene& scene, FramingMode mode)
     const std::vector<Stage<double>>& stages = scene.pipeline.stages;
     std::vector<Mat4<double>> all;
     for (std::size_t k = 0; k <= stages.size(); ++k)
-        all.push_back(drawnAt(stages, double(k)));
+        all.push_back(cumulativeAt(stages, double(k)));
     return {mode, framingOf(scene, all, true)};
 }
 
-double canonicalOpacityAt(double position, std::size_t stageCount)
+double canonicalOpacityAt(double position, const std::vector<Stage<double>>& stages)
 {
-    return std::clamp(position - (double(stageCount) - 1), 0.0, 1.0);
+    const auto lastMatrix = std::find_if(stages.rbegin(), stages.rend(), [](const Stage<double>& s) { return !s.divides; });
+    return std::clamp(position - double(stages.rend() - lastMatrix - 1), 0.0, 1.0);
 }
 
 double smoothStep(double u)
@@ -226,7 +227,7 @@ double smoothStep(double u)
 WorldMoment stageAtRest(const EvaluatedScene& scene, int stage, const StageFramings& framings)
 {
     const std::vector<Stage<double>>& stages = scene.pipeline.stages;
-    return {drawnAt(stages, stage), canonicalOpacityAt(stage, stages.size()), ghostAt(stages, stage),
+    return {cumulativeAt(stages, stage), canonicalOpacityAt(stage, stages), ghostAt(stages, stage),
             framings.fixed ? *framings.fixed : stageFraming(scene, stage, framings.mode)};
 }
 
@@ -255,13 +256,13 @@ StageMotion::StageMotion(const EvaluatedScene& scene, int from, int to, const St
         return;
     }
     // The camera takes in the whole motion (a rotation's arc leaves the stages' own framing).
-    const bool canonical = canonicalOpacityAt(from, stages.size()) > 0 || canonicalOpacityAt(to, stages.size()) > 0;
+    const bool canonical = canonicalOpacityAt(from, stages) > 0 || canonicalOpacityAt(to, stages) > 0;
     std::vector<Mat4<double>> sweep;
     for (int k = 0; k <= kSweepSamples; ++k)
-        sweep.push_back(drawnAt(stages, from + (to - from) * double(k) / kSweepSamples));
+        sweep.push_back(cumulativeAt(stages, from + (to - from) * double(k) / kSweepSamples));
     if (together) // and both ends whole
         for (const int k : {later - 1, later})
-            sweep.push_back(drawnAt(stages, double(k)));
+            sweep.push_back(cumulativeAt(stages, double(k)));
     sweep_ = framingOf(scene, sweep, canonical);
 }
 
@@ -270,7 +271,7 @@ WorldMoment StageMotion::at(double s) const
     const std::vector<Stage<double>>& stages = stages_;
     const double motion = smoothStep((s - kWiden) / (1 - kWiden - kSettle));
     const double position = from_ + (to_ - from_) * motion;
-    WorldMoment moment{drawnAt(stages, position), canonicalOpacityAt(position, stages.size()), ghost_, sweep_};
+    WorldMoment moment{cumulativeAt(stages, position), canonicalOpacityAt(position, stages), ghost_, sweep_};
     if (s < kWiden)
         moment.framing = blend(start_, sweep_, smoothStep(s / kWiden));
     else if (s > 1 - kSettle)

@@ -101,8 +101,9 @@ TEST(Effects, DivideAppendsFoleysM)
 }
 
 // OpenGL's divide is a stage of its own but no matrix: the trace divides
-// there, and pictures draw the stages before it undivided (clip coordinates
-// x, y, z), bringing w in only while the divide runs.
+// there. Pictures draw every stage divided by w, so P_depth is pictured the
+// same with the divide effect or without it, and the divide leaves the
+// picture as it was.
 TEST(Effects, OpenGlDivideIsAStageThatDivides)
 {
     const gl::Camera<double> camera{{{0, 0, 0}, {0, 0, -1}, {0, 1, 0}}, gl::Perspective<double>{60, 1, 1, 10}};
@@ -117,14 +118,13 @@ TEST(Effects, OpenGlDivideIsAStageThatDivides)
     EXPECT_TRUE(t.afterStage[p.stages.size() - 2].isApprox(Vec4<double>(0, 0, 35.0 / 9, 5)));
     EXPECT_TRUE(t.afterStage.back().isApprox(Vec4<double>(0, 0, 7.0 / 9, 1))); // divided
     EXPECT_TRUE(t.clip.isApprox(Vec4<double>(0, 0, 35.0 / 9, 5)));           // clip coordinates stay undivided
-    const double last = double(p.stages.size());
-    const Mat4<double> before = drawnAt(p.stages, last - 1), halfway = drawnAt(p.stages, last - 0.5);
-    EXPECT_EQ(before.row(3), (Eigen::RowVector4d(0, 0, 0, 1)));
-    EXPECT_TRUE(before.topRows<3>().isApprox(plain.composite.topRows<3>()));
-    EXPECT_TRUE(halfway.row(3).isApprox(0.5 * (Eigen::RowVector4d(0, 0, 0, 1) + plain.composite.row(3))));
-    EXPECT_TRUE(drawnAt(p.stages, last).isApprox(plain.composite));
-    // Without a divide stage pictures draw the cumulative matrix itself.
-    EXPECT_TRUE(drawnAt(plain.stages, last - 1).isApprox(plain.composite));
+    const double pDepth = double(plain.stages.size());
+    for (const double position : {pDepth - 0.5, pDepth})
+        EXPECT_EQ(cumulativeAt(p.stages, position), cumulativeAt(plain.stages, position)) << position;
+    EXPECT_EQ(cumulativeAt(p.stages, pDepth + 0.5), cumulativeAt(p.stages, pDepth));
+    EXPECT_EQ(cumulativeAt(p.stages, pDepth + 1), plain.composite);
+    EXPECT_TRUE(keepsShape(divide)); // framed with P_depth, no ghost
+    EXPECT_FALSE(ghostAt(p.stages, int(pDepth) + 1));
 }
 
 // The outcomes record the effects whose code ran: only the listed ones.

@@ -358,7 +358,7 @@ SceneLabels crowdedHouseLabels(int width, int height, const std::vector<Box2>& r
 {
     const auto scene = evaluateScene(loadScene(fs::path(viewpipe::build::dataDir) / "scenes/house.json"));
     const auto& stages = scene->pipeline.stages;
-    const StageShown stage(*scene, drawnAt(stages, double(stages.size())), 1);
+    const StageShown stage(*scene, cumulativeAt(stages, double(stages.size())), 1);
     FigureView view = viewOf(stage);
     view.width = width;
     view.height = height;
@@ -477,7 +477,7 @@ TEST(Figure, EveryBuiltInSceneAtEveryStageHasNoOverlappingLabels)
         const auto& stages = scene->pipeline.stages;
         for (std::size_t k = 0; k <= stages.size(); ++k) {
             SCOPED_TRACE(entry.path().filename().string() + " stage " + std::to_string(k));
-            const StageShown stage(*scene, drawnAt(stages, double(k)), k == stages.size() ? 1 : 0);
+            const StageShown stage(*scene, cumulativeAt(stages, double(k)), k == stages.size() ? 1 : 0);
             const Figure figure = drawFigure(stage, viewOf(stage), measure, {title});
             EXPECT_EQ(labelOverlaps(figure.labels), 0);
             for (const PlacedLabel& label : figure.labels) {
@@ -514,7 +514,7 @@ TEST(Figure, TickNumbersKeepOffTheirAxis)
             for (const Vec2<int>& size : {Vec2<int>(1280, 720), Vec2<int>(490, 905)}) {
                 SCOPED_TRACE(entry.path().filename().string() + " stage " + std::to_string(k) + " at " +
                              std::to_string(size.x()) + "x" + std::to_string(size.y()));
-                const StageShown stage(*scene, drawnAt(stages, double(k)), k == stages.size() ? 1 : 0);
+                const StageShown stage(*scene, cumulativeAt(stages, double(k)), k == stages.size() ? 1 : 0);
                 FigureView view = viewOf(stage);
                 view.width = size.x();
                 view.height = size.y();
@@ -572,10 +572,10 @@ TEST(Figure, TranslationsShowWhereThingsWere)
     EXPECT_FALSE(ghostAt(stages, 1)); // T(-VRP) is the identity here: VRP is the origin
     EXPECT_FALSE(ghostAt(stages, 4)); // SH_per changes shapes
     ASSERT_TRUE(ghostAt(stages, 3));  // T(-PRP)
-    EXPECT_TRUE(ghostAt(stages, 3)->isApprox(drawnAt(stages, 2)));
+    EXPECT_TRUE(ghostAt(stages, 3)->isApprox(cumulativeAt(stages, 2)));
     EXPECT_NE(stageCaption(*scene, 3, StageText::Caption).find("faint: where it was before"), std::string::npos);
 
-    StageShown after(*scene, drawnAt(stages, 3), 0), before(*scene, drawnAt(stages, 2), 0);
+    StageShown after(*scene, cumulativeAt(stages, 3), 0), before(*scene, cumulativeAt(stages, 2), 0);
     after.ghost = ghostAt(stages, 3);
     const FigureView view = viewOf(after);
     const Figure now = drawFigure(after, view, measure, {}), then = drawFigure(before, view, measure, {});
@@ -602,7 +602,7 @@ TEST(Figure, DepthBandsColorTheFacesAsThePainterDoes)
     const auto scene = evaluateScene(loadScene(fs::path(viewpipe::build::dataDir) / "scenes/depth-corridor.json"));
     ASSERT_TRUE(scene->bands);
     const auto& stages = scene->pipeline.stages;
-    const StageShown stage(*scene, drawnAt(stages, int(stages.size())), 0);
+    const StageShown stage(*scene, cumulativeAt(stages, int(stages.size())), 0);
     const Figure figure = drawFigure(stage, viewOf(stage), measure, {});
     std::set<int> bands;
     std::size_t colored = 0, fighting = 0;

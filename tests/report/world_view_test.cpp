@@ -98,6 +98,33 @@ TEST(WorldView, AFramedStageFillsTheAreaTheTextLeaves)
     }
 }
 
+// P_depth is pictured one way: clipping-eye-plane lists the divide, and its P_depth is the
+// picture and caption it has without the divide effect (the canonical cube, as in depth-corridor),
+// while the divide that follows leaves the picture as it was and says so.
+TEST(WorldView, PDepthIsPicturedTheSameWithOrWithoutTheDivide)
+{
+    const auto divided = builtIn("clipping-eye-plane.json");
+    Scene plainScene = divided->scene;
+    plainScene.effects = withEffect(plainScene.effects, EffectKind::Divide, false);
+    const auto plain = evaluateScene(plainScene);
+    const int pDepth = int(plain->pipeline.stages.size());
+    ASSERT_EQ(divided->pipeline.stages[std::size_t(pDepth - 1)].symbol, "P_depth");
+    ASSERT_EQ(int(divided->pipeline.stages.size()), pDepth + 1);
+    for (const FramingMode mode : {FramingMode::Together, FramingMode::PerStage}) {
+        const WorldMoment a = stageAtRest(*divided, pDepth, {mode, std::nullopt}), b = stageAtRest(*plain, pDepth, {mode, std::nullopt});
+        EXPECT_EQ(a.drawn, b.drawn);
+        EXPECT_EQ(a.canonicalOpacity, 1);
+        EXPECT_EQ(b.canonicalOpacity, 1);
+        EXPECT_TRUE(a.framing.box.isApprox(b.framing.box));
+        const WorldMoment after = stageAtRest(*divided, pDepth + 1, {mode, std::nullopt});
+        EXPECT_EQ(after.drawn, a.drawn);
+        EXPECT_TRUE(after.framing.box.isApprox(a.framing.box));
+    }
+    EXPECT_EQ(divided->stageClaims[std::size_t(pDepth)], plain->stageClaims[std::size_t(pDepth)]);
+    EXPECT_NE(plain->stageClaims[std::size_t(pDepth)].find("cube"), std::string::npos);
+    EXPECT_EQ(divided->stageClaims[std::size_t(pDepth + 1)], "the picture stays: every stage is drawn divided by w");
+}
+
 TEST(WorldView, AFramingHoldsEveryFramedElementOfItsStage)
 {
     const auto scene = builtIn("house.json");

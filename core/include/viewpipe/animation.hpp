@@ -36,6 +36,10 @@ template <class T> Mat4<T> interpolateStage(const Mat4<T>& stage, T t)
 
 // The cumulative matrix at a continuous position along the stages: 0 is the
 // world (identity), k is after stage k, and k + t is stage k+1 in progress.
+// Pictures draw each point it gives divided by its w, whether or not the
+// pipeline has a divide stage: a stage that makes w differ from 1 is pictured
+// by what it means (P_depth as the canonical cube), and a divide stage, no
+// matrix, leaves the picture as it was.
 template <class T> Mat4<T> cumulativeAt(const std::vector<Stage<T>>& stages, double position)
 {
     const double clamped = std::clamp(position, 0.0, double(stages.size()));
@@ -50,13 +54,13 @@ template <class T> Mat4<T> cumulativeAt(const std::vector<Stage<T>>& stages, dou
 }
 
 // Whether a stage keeps lengths and angles (translations, rotations, their
-// products): pictures of the stages it joins share one framing, so that they
+// products, and the divide, which pictures already show): pictures of the stages it joins share one framing, so that they
 // show what it moved instead of following it.
 template <class T> bool keepsShape(const Stage<T>& stage)
 {
     const Mat4<T>& m = stage.matrix;
     const Mat3<T> r = m.template topLeftCorner<3, 3>();
-    return !stage.divides && m.template bottomLeftCorner<1, 3>().isZero(T(0)) && m(3, 3) == T(1) &&
+    return m.template bottomLeftCorner<1, 3>().isZero(T(0)) && m(3, 3) == T(1) &&
            (r * r.transpose()).isIdentity(T(64) * epsilonOf<T>());
 }
 
@@ -72,24 +76,6 @@ template <class T> std::pair<int, int> framedTogether(const std::vector<Stage<T>
     return {first, last};
 }
 
-// The matrix a picture draws stage `position` with. Where the pipeline has a
-// divide stage, the stages before it are drawn undivided (clip coordinates
-// x, y, z: w left out), and the divide brings w in: the picture changes where
-// the divide happens, not before. Elsewhere the cumulative matrix (drawn
-// divided, as homogeneous coordinates are).
-template <class T> Mat4<T> drawnAt(const std::vector<Stage<T>>& stages, double position)
-{
-    Mat4<T> m = cumulativeAt(stages, position);
-    const auto divide = std::find_if(stages.begin(), stages.end(), [](const Stage<T>& s) { return s.divides; });
-    if (divide == stages.end())
-        return m;
-    const double at = double(divide - stages.begin()); // the divide runs from `at` to `at + 1`
-    const T share = T(std::clamp(position - at, 0.0, 1.0));
-    const Eigen::Matrix<T, 1, 4> affine(T(0), T(0), T(0), T(1));
-    m.row(3) = affine + share * (m.row(3) - affine);
-    return m;
-}
-
 // The matrix of a faint ghost that pictures of stage k show: the stage
 // before, after a translation or rotation that moves something, so that a
 // student sees where things came from. None after other stages.
@@ -100,7 +86,7 @@ template <class T> std::optional<Mat4<T>> ghostAt(const std::vector<Stage<T>>& s
     const Stage<T>& stage = stages[std::size_t(k - 1)];
     if (!keepsShape(stage) || stage.matrix.isIdentity(T(0)))
         return std::nullopt;
-    return drawnAt(stages, double(k - 1));
+    return cumulativeAt(stages, double(k - 1));
 }
 
 } // namespace viewpipe

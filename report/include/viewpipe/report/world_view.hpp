@@ -67,8 +67,9 @@ struct StageFramings {
 };
 StageFramings stageFramings(const EvaluatedScene& scene, FramingMode mode);
 
-// The canonical outline fades in while the last stage is reached.
-double canonicalOpacityAt(double position, std::size_t stageCount);
+// The canonical outline fades in while the last matrix is reached (a divide
+// stage after it changes no picture).
+double canonicalOpacityAt(double position, const std::vector<Stage<double>>& stages);
 // Ease in and out: 0 at 0, 1 at 1, flat at both ends (u clamped to [0, 1]).
 double smoothStep(double u);
 
