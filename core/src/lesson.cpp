@@ -781,6 +781,27 @@ LessonPack packLesson(const Lesson& lesson, const std::string& lessonFileName, c
     return pack;
 }
 
+std::vector<std::filesystem::path> filesOutside(const Lesson& lesson, const std::filesystem::path& folder)
+{
+    namespace fs = std::filesystem;
+    const fs::path inside = fs::weakly_canonical(fs::absolute(folder));
+    std::set<fs::path> outside;
+    const auto check = [&](const fs::path& file) {
+        const fs::path canonical = fs::weakly_canonical(fs::absolute(file));
+        const fs::path up = canonical.lexically_relative(inside);
+        if (up.empty() || *up.begin() == "..")
+            outside.insert(canonical);
+    };
+    for (const LessonStep& step : lesson.steps) {
+        if (!step.scene.file.empty())
+            check(step.scene.file);
+        for (const SceneObject& object : step.scene.objects)
+            if (object.type == ObjectType::Mesh)
+                check(object.resolvedPath);
+    }
+    return {outside.begin(), outside.end()};
+}
+
 Question parseQuestion(const std::string& text, const Scene& scene)
 {
     return readQuestion(parseJson(text), "question", scene, buildPipeline(scene.camera, scene.effects));

@@ -264,7 +264,16 @@ bool LessonFlow::saveLesson(const QString& path)
 {
     try {
         lesson_->save(path);
-        window_->statusBar()->showMessage(tr("Saved %1").arg(path), 5000);
+        const auto outside = filesOutside(lesson_->lesson(), QFileInfo(path).absolutePath().toStdString());
+        if (outside.empty())
+            window_->statusBar()->showMessage(tr("Saved %1").arg(path), 5000);
+        else // the lesson works here; elsewhere only with these files
+            window_->statusBar()->showMessage(
+                tr("Saved %1. It uses %2 from outside its folder, such as %3: to take it to another machine, "
+                   "File ▸ Pack Lesson… gathers them with it")
+                    .arg(path, outside.size() == 1 ? tr("1 file") : tr("%1 files").arg(outside.size()),
+                         QString::fromStdString(outside.front().string())),
+                15000);
         return true;
     } catch (const InputError& e) {
         window_->showMessage(tr("Cannot save the lesson: %1").arg(QString::fromStdString(e.what())));

@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include <filesystem>
+#include <fstream>
 #include <unistd.h>
 
 #include <nlohmann/json.hpp>
@@ -187,6 +188,26 @@ TEST(Lesson, APackKeepsEachStepsOwnScene)
     const nlohmann::json written = nlohmann::json::parse(pack.texts[0].second);
     EXPECT_EQ(written["steps"][0]["scene"], "scenes/house.json");
     EXPECT_EQ(written["steps"][1]["scene"], "scenes/house-2.json");
+}
+
+// A lesson saved names the files it uses from outside its folder (it breaks where they do not go with
+// it): foley-nper uses two scenes of data/scenes from outside data/lessons; packed, nothing.
+TEST(Lesson, ItNamesTheFilesItUsesFromOutsideItsFolder)
+{
+    namespace fs = std::filesystem;
+    const fs::path data = viewpipe::build::dataDir;
+    const Lesson lesson = loadLesson(data / "lessons/foley-nper.json");
+    const std::vector<fs::path> used{fs::weakly_canonical(data / "scenes/house-oblique-view.json"),
+                                     fs::weakly_canonical(data / "scenes/house.json")};
+    EXPECT_EQ(filesOutside(lesson, data / "lessons"), used);
+    EXPECT_TRUE(filesOutside(lesson, data).empty());
+    const fs::path folder = fs::temp_directory_path() / ("viewpipe-outside-" + std::to_string(::getpid()));
+    const LessonPack pack = packLesson(lesson, "l.json", folder);
+    fs::create_directories(folder / "scenes");
+    for (const auto& [name, text] : pack.texts)
+        std::ofstream(folder / name) << text;
+    EXPECT_TRUE(filesOutside(loadLesson(folder / "l.json"), folder).empty());
+    fs::remove_all(folder);
 }
 
 // Tries: two unless the lesson says; written back only when it says; the

@@ -20,6 +20,7 @@
 #include <QScreen>
 #include <QScrollArea>
 #include <QScrollBar>
+#include <QStatusBar>
 #include <QTemporaryDir>
 #include <QWindow>
 #include <QtTest>
@@ -361,6 +362,11 @@ private slots:
         // Saved atomically, and it reads back as the lesson it was.
         const QString path = dir.filePath("made.json");
         QVERIFY(w.lessonFlow()->saveLesson(path));
+        // Saved away from its scene: the status bar names the file it uses from outside and the way to pack it.
+        const QString saved = w.statusBar()->currentMessage();
+        QVERIFY2(saved.contains("1 file from outside its folder") && saved.contains("house.json") &&
+                     saved.contains("Pack Lesson"),
+                 qPrintable(saved));
         QVERIFY(!w.lessonFlow()->lesson()->isModified());
         QVERIFY(w.windowTitle().contains("lesson made.json —"));
         QCOMPARE(QDir(dir.path()).entryList(QDir::Files | QDir::Hidden), QStringList({"made.json"}));

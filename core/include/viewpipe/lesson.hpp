@@ -178,6 +178,9 @@ struct LessonPack {
     std::vector<std::pair<std::filesystem::path, std::filesystem::path>> copies; // relative path, the file to copy there
 };
 LessonPack packLesson(const Lesson& lesson, const std::string& lessonFileName, const std::filesystem::path& folder);
+// The scene and mesh files a lesson saved in `folder` uses from outside that
+// folder: the lesson breaks where they do not travel with it (packLesson).
+std::vector<std::filesystem::path> filesOutside(const Lesson& lesson, const std::filesystem::path& folder);
 // Reads the question of a step from JSON, as a lesson file holds it (for
 // editing one question), checked against the step's scene.
 Question parseQuestion(const std::string& text, const Scene& scene);
