@@ -528,7 +528,6 @@ std::string verdictText(const Json& trace)
 void printTrace(std::ostream& out, const Scene& scene, const Vec3<Exact>& point, const PrecisionChoice& precision)
 {
     // A JSON number, or a wide one written as a string.
-    auto negative = [](const Json& x) { return x.is_string() ? x.get<std::string>().front() == '-' : x.get<double>() < 0; };
     const Json t = traceJson(scene, point, precision);
     const Json& numbers = t.contains("exact") ? t["exact"] : t; // exact values as they are
     auto show = [](const Json& v) {
@@ -558,7 +557,8 @@ void printTrace(std::ostream& out, const Scene& scene, const Vec3<Exact>& point,
         out << "  divide: w = 0, the point lies on the eye plane and has no image\n";
     else
         out << "  after the divide: " << show(numbers["divided"])
-            << (negative(numbers["clip"].back()) ? "  (w < 0: behind the eye, a false image)" : "") << "\n";
+            // The sign of w as the nearest double keeps it (an exact w reads "-64/5 + 48*sqrt(2)/5", and is positive).
+            << (t["clip"].back().get<double>() < 0 ? "  (w < 0: behind the eye, a false image)" : "") << "\n";
     out << "  " << verdictText(t) << "\n";
     if (t.contains("clipping")) {
         const Json& c = t["clipping"];

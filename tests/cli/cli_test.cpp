@@ -582,4 +582,20 @@ TEST(Cli, TraceSaysWhichFaceExactly)
     EXPECT_NE(r.out.find("z_min = -24/59"), std::string::npos) << r.out;
 }
 
+// Behind the eye or not is w's sign, not its first term's: Foley's view D (VPN (1, 0, 1), PRP n = 20 sqrt 2)
+// takes the house corner (16, 10, 30) to w = -64/5 + 48 sqrt(2)/5 > 0 after M, and (40, 0, 80) to
+// w = 2 - 3 sqrt(2)/2 < 0: the first is in front of the eye, the second behind it.
+TEST(Cli, ExactTraceReadsTheSignOfW)
+{
+    const std::string viewD = writeScene("viewpipe-view-d.json", R"json({"view": {"projection": "perspective",
+        "vrp": [16, 0, 54], "vpn": [1, 0, 1], "vup": [0, 1, 0], "prp": [0, 25, "20*sqrt(2)"],
+        "window": [-20, 20, -5, 35], "front": 10, "back": -30}})json");
+    Result r = run("trace " + viewD + " --point 16 10 30 --precision exact");
+    EXPECT_EQ(r.exitCode, 0) << r.err;
+    EXPECT_NE(r.out.find("-64/5 + 48*sqrt(2)/5)"), std::string::npos) << r.out;
+    EXPECT_EQ(r.out.find("behind the eye"), std::string::npos) << r.out;
+    r = run("trace " + viewD + " --point 40 0 80 --precision exact");
+    EXPECT_NE(r.out.find("(w < 0: behind the eye, a false image)"), std::string::npos) << r.out;
+}
+
 } // namespace
