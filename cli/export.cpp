@@ -16,7 +16,7 @@ struct ExportCommandOptions {
     std::string scene, out, size = "1280x720", stages = "all", theme = "light", formats = "png";
     int scale = 1, textScale = 100, fps = 30, digits = 4;
     bool transparent = false, animate = false, quiet = false;
-    std::string framing = "together", legend = "best";
+    std::string framing = "together", legend = "best", layout = "stages";
     std::vector<std::string> hide;
     double zoom = 1;
 };
@@ -49,6 +49,7 @@ int runExport(const ExportCommandOptions& options)
         o.legend = *legendPlaceNamed(options.legend);
         o.hidden.insert(options.hide.begin(), options.hide.end());
         o.zoom = options.zoom;
+        o.storyboard = options.layout == "storyboard";
         o.presets = scenesDirectory();
 
         std::signal(SIGINT, onInterrupt);
@@ -127,6 +128,12 @@ void addExportCommand(CLI::App& app)
         ->check(CLI::IsMember({"best", "beside", "below", "inside", "none"}))
         ->capture_default_str();
     command->add_option("--zoom", options->zoom, "The subject this many times larger than framed, 0.1 to 10")
+        ->capture_default_str();
+    command->add_option("--layout", options->layout,
+                        "stages: a file of each stage per format;\n"
+                        "storyboard: every stage at once, one file per format (storyboard.png, .svg, .pdf, "
+                        "storyboard-tikz.tex)")
+        ->check(CLI::IsMember({"stages", "storyboard"}))
         ->capture_default_str();
     setRun(command, [options] { return runExport(*options); });
 }

@@ -24,6 +24,7 @@
 #include "Process.h"
 #include "StagingFolder.h"
 #include "VectorFigure.h"
+#include "viewpipe/report/storyboard.hpp"
 #include "viewpipe/report/tikz.hpp"
 #include "viewpipe/report/latex.hpp"
 #include "viewpipe/report/report.hpp"
@@ -115,14 +116,23 @@ struct SceneOutput {
     Steps& step;
 };
 
+// A storyboard's files are drawn from: its figures and the painter's picture of each cell.
+struct StoryboardPictures {
+    Storyboard storyboard;
+    std::vector<std::string> cellPngs;
+    Theme theme;
+};
+
 // An export format: a file for each stage (its name the stage's and `suffix`),
-// files for the whole scene, or both.
+// files for the whole scene, or both; with --layout storyboard, one file of
+// every stage at once ("storyboard" and `suffix`) instead of the stages'.
 struct Format {
     ExportFormat about;
     std::string suffix;
     std::function<void(const StagePicture&, const fs::path&)> writeStage;
     std::function<void(SceneOutput&)> writeScene;
     std::function<int(const EvaluatedScene&)> sceneSteps; // progress steps of writeScene
+    std::function<void(const StoryboardPictures&, const fs::path&)> writeStoryboard = {};
 };
 
 // The web page's steps: every stage recorded, then the page.
@@ -144,11 +154,16 @@ const std::vector<Format>& formatTable()
 {
     static const std::vector<Format> table = {
         {{"png", "a picture of each stage, as the app draws it"}, ".png",
-         [](const StagePicture& p, const fs::path& file) { writeWindowPng(p.window, p.transparent, file); }, {}, {}},
+         [](const StagePicture& p, const fs::path& file) { writeWindowPng(p.window, p.transparent, file); }, {}, {},
+         [](const StoryboardPictures& p, const fs::path& file) {
+             writeStoryboard(p.storyboard, p.theme, "png", file, p.cellPngs);
+         }},
         {{"svg", "a vector figure of each stage"}, ".svg",
-         [](const StagePicture& p, const fs::path& file) { writeVectorFigure(p.vector, "svg", file); }, {}, {}},
+         [](const StagePicture& p, const fs::path& file) { writeVectorFigure(p.vector, "svg", file); }, {}, {},
+         [](const StoryboardPictures& p, const fs::path& file) { writeStoryboard(p.storyboard, p.theme, "svg", file); }},
         {{"pdf", "a vector figure of each stage"}, ".pdf",
-         [](const StagePicture& p, const fs::path& file) { writeVectorFigure(p.vector, "pdf", file); }, {}, {}},
+         [](const StagePicture& p, const fs::path& file) { writeVectorFigure(p.vector, "pdf", file); }, {}, {},
+         [](const StoryboardPictures& p, const fs::path& file) { writeStoryboard(p.storyboard, p.theme, "pdf", file); }},
         // "-tikz.tex": pdflatex makes "-tikz.pdf" of it, not the PDF format's file.
         {{"tikz", "a TikZ figure of each stage, and figures.tex showing them all"}, "-tikz.tex",
          [](const StagePicture& p, const fs::path& file) {
@@ -161,7 +176,10 @@ const std::vector<Format>& formatTable()
                  figures.emplace_back(base + "-tikz", stageCaption(*out.evaluated, std::size_t(k), StageText::Figure));
              writeFileAtomically(out.folder / "figures.tex", tikzFiguresDocument(figures));
          },
-         [](const EvaluatedScene&) { return 1; }},
+         [](const EvaluatedScene&) { return 1; },
+         [](const StoryboardPictures& p, const fs::path& file) {
+             writeFileAtomically(file, tikzStoryboard(p.storyboard, p.theme));
+         }},
         {{"html", "one self-contained web page of the scene, scene.html"}, "", {},
          [](SceneOutput& out) { writeFileAtomically(out.folder / "scene.html", scenePage(out.evaluated, out.options, out.step)); },
          pageSteps},
@@ -272,6 +290,8 @@ void validate(const ExportOptions& o)
         throw InputError("--format", "names no format");
     if (!(o.zoom >= 0.1 && o.zoom <= 10))
         throw InputError("--zoom", "must be 0.1 to 10");
+    if (o.storyboard && o.animate)
+        throw InputError("--animate", "a storyboard shows every stage at once: it has no animation");
     const std::vector<std::string> names = hideNames();
     for (const std::string& name : o.hidden)
         if (std::find(names.begin(), names.end(), name) == names.end()) {
@@ -300,6 +320,49 @@ std::shared_ptr<const EvaluatedScene> withoutHidden(const std::shared_ptr<const 
     auto noteless = std::make_shared<EvaluatedScene>(*without);
     noteless->effectsNote.clear();
     return noteless;
+}
+
+// Every chosen stage at once, one file per format: each cell drawn by a painter of the cell's size with the
+// storyboard's text size, no legend or notes of its own, the traced point marked.
+void writeStoryboardFiles(const std::shared_ptr<const EvaluatedScene>& evaluated, const ExportOptions& options,
+                          const std::vector<int>& chosen, const std::vector<const Format*>& formats,
+                          const fs::path& folder, Steps& step)
+{
+    const int width = options.width * options.scale, height = options.height * options.scale;
+    const double labelSize = storyboardLabelSize(width, options.textScale / 100.0);
+    const StoryboardLayout layout = layoutStoryboard(chosen, width, height, labelSize);
+    if (layout.cells.empty())
+        throw InputError("--size", "leaves no room for a storyboard of " + std::to_string(chosen.size()) + " pictures");
+    const Box2& cell = layout.cells.front().picture;
+    const auto cellScene = withoutHidden(evaluated, {"notes"});
+    OffscreenPainter offscreen(cellScene, int(cell.max.x() - cell.min.x()), int(cell.max.y() - cell.min.y()), 1,
+                               options.theme, false);
+    ScenePainter& painter = *offscreen.painter;
+    painter.setFontSize(int(labelSize), int(labelSize));
+    painter.setLineScale(options.scale);
+    painter.setLegendPlace(LegendPlace::None);
+    painter.setTicksAndNotesShown(!options.hidden.count("ticks"), false);
+    painter.orbit(0, 0, options.zoom);
+    const Vec3<double> traced = storyboardTracedPoint(*evaluated);
+    painter.markTraced(traced);
+    const StageFramings framing = stageFramings(*cellScene, options.framing);
+    StoryboardPictures pictures{{layout, {}, storyboardOverlay(*evaluated, layout, traced, figureFontMeasure(), options.scale),
+                                 evaluated->scene.name.empty() ? "Storyboard" : evaluated->scene.name + ": every stage"},
+                                {}, options.theme};
+    for (const int k : chosen) {
+        step("storyboard: stage " + std::to_string(k));
+        StageShown shown = showStageAtRest(offscreen, *cellScene, k, "", framing);
+        shown.traced = traced;
+        pictures.storyboard.cells.push_back(
+            flatFigure(VectorFigure{&shown, painter.figureView(), "", painter.placedLabels(), options.theme}));
+        pictures.cellPngs.push_back(windowPng(offscreen.window, false));
+    }
+    for (const Format* format : formats)
+        if (format->writeStoryboard) {
+            const std::string file = "storyboard" + format->suffix;
+            step(file);
+            format->writeStoryboard(pictures, folder / file);
+        }
 }
 
 } // namespace
@@ -475,12 +538,24 @@ std::vector<fs::path> exportStages(const std::shared_ptr<const EvaluatedScene>& 
             formats.push_back(&format);
 
     int total = 2 + (evaluated->outcomes.depth ? 1 : 0) + (options.animate ? animationFrames(n, options.fps) : 0);
+    if (options.storyboard)
+        total += int(chosen.size());
     for (const Format* format : formats)
-        total += (format->writeStage ? int(chosen.size()) : 0) + (format->writeScene ? format->sceneSteps(*evaluated) : 0);
+        total += options.storyboard ? (format->writeStoryboard ? 1 : 0) + (format->writeScene && !format->writeStage ? format->sceneSteps(*evaluated) : 0)
+                                    : (format->writeStage ? int(chosen.size()) : 0) + (format->writeScene ? format->sceneSteps(*evaluated) : 0);
     Steps step(progress, cancel, total);
 
     StagingFolder staging(options.out);
     try {
+        if (options.storyboard) {
+            writeStoryboardFiles(evaluated, options, chosen, formats, staging.path(), step);
+            SceneOutput output{scene, options, {}, staging.path(), step};
+            for (const Format* format : formats)
+                if (format->writeScene && !format->writeStage) // the web page; figures.tex lists stage files
+                    format->writeScene(output);
+            writeReports(*evaluated, options, staging.path(), step);
+            return staging.commit();
+        }
         // One offscreen window, one painter, one camera framing every stage.
         OffscreenPainter offscreen(evaluated, options.width, options.height, options.scale, options.theme,
                                    options.transparent, options.textScale / 100.0);

@@ -50,6 +50,8 @@ struct ExportOptions {
     std::set<std::string> hidden;
     LegendPlace legend = LegendPlace::Best;
     double zoom = 1; // the subject this many times larger than framed, about its center
+    // Every stage at once (--layout storyboard): one storyboard file per format instead of a file per stage.
+    bool storyboard = false;
     // The scenes folder whose presets (presetScenes) the web page offers; empty: none.
     std::filesystem::path presets;
 };

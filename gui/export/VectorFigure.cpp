@@ -7,6 +7,7 @@
 #include <QBuffer>
 #include <QFont>
 #include <QFontMetricsF>
+#include <QImage>
 #include <QGuiApplication>
 #include <QPainter>
 #include <QPainterPath>
@@ -15,6 +16,7 @@
 #include <QSvgGenerator>
 
 #include <algorithm>
+#include <functional>
 #include <cmath>
 #include <memory>
 
@@ -91,14 +93,14 @@ Layout layoutOf(const VectorFigure& f)
     return layout;
 }
 
-void drawLegend(QPainter& painter, const Figure& figure, const VectorFigure& f)
+void drawLegend(QPainter& painter, const Figure& figure, Theme theme)
 {
     if (figure.legend.empty())
         return;
     const Box2& box = figure.layout.legend;
     const LegendLayout& rows = figure.layout.legendRows;
     const QRectF frame = rectOf(box);
-    painter.setPen(QPen(qtColor(elementColor(Element::Frame, f.theme)), 1));
+    painter.setPen(QPen(qtColor(elementColor(Element::Frame, theme)), 1));
     painter.setBrush(Qt::NoBrush); // on its backdrop
     painter.drawRect(frame);
     painter.setFont(font(rows.textSize, false));
@@ -110,7 +112,7 @@ void drawLegend(QPainter& painter, const Figure& figure, const VectorFigure& f)
         const QPointF middle(at.swatchCenter.x(), at.swatchCenter.y());
         const QRectF swatch(middle.x() - 0.75 * text, middle.y() - 0.2 * text, 1.5 * text, 0.4 * text);
         const bool face = entry.swatch == LegendEntry::Swatch::Face;
-        const QColor c = qtColor(styledColor(entry.element, face, f.theme), entry.opacity);
+        const QColor c = qtColor(styledColor(entry.element, face, theme), entry.opacity);
         painter.setPen(Qt::NoPen);
         auto stripes = [&](const auto& colors) {
             const double w = swatch.width() / double(colors.size());
@@ -129,24 +131,21 @@ void drawLegend(QPainter& painter, const Figure& figure, const VectorFigure& f)
         case LegendEntry::Swatch::Bands: stripes(kBandRamp); break;
         case LegendEntry::Swatch::Pixels: stripes(kRasterPalette); break;
         }
-        painter.setPen(qtColor(elementColor(Element::Objects, f.theme)));
+        painter.setPen(qtColor(elementColor(Element::Objects, theme)));
         const QFontMetricsF metrics(painter.font());
         drawMathText(painter, QPointF(slotRight, top + h / 2 + (metrics.ascent() - metrics.descent()) / 2), entry.text,
                      painter.font());
     }
 }
 
-void paint(QPainter& painter, const Figure& figure, const VectorFigure& f)
+// A figure's shapes, labels and text in its own pixels, over what is drawn already.
+void paintFigure(QPainter& painter, const Figure& figure, Theme theme)
 {
-    painter.setRenderHint(QPainter::Antialiasing);
-    const QRectF page(0, 0, figure.width, figure.height);
-    painter.fillRect(page, qtColor(backgroundColor(f.theme, false)));
-    painter.setClipRect(page);
     for (const FigureShape& s : figure.shapes) {
         QPolygonF polygon;
         for (const Vec2<double>& p : s.points)
             polygon << QPointF(p.x(), p.y());
-        const QColor c = qtColor(s.color.value_or(styledColor(s.element, s.surface, f.theme)), s.opacity);
+        const QColor c = qtColor(s.color.value_or(styledColor(s.element, s.surface, theme)), s.opacity);
         if (s.surface) {
             painter.setPen(Qt::NoPen);
             painter.setBrush(c);
@@ -159,24 +158,23 @@ void paint(QPainter& painter, const Figure& figure, const VectorFigure& f)
     }
     const PictureLayout& p = figure.layout;
     for (const Box2& box : textBackdrops(p, figure.height))
-        painter.fillRect(rectOf(box),
-                         qtColor(backgroundColor(f.theme, false)));
-    const QFont labelFont = font(f.view.fontSize, true), minorFont = font(smallTextSize(f.view.fontSize), false);
+        painter.fillRect(rectOf(box), qtColor(backgroundColor(theme, false)));
+    const QFont labelFont = font(figure.fontSize, true), minorFont = font(smallTextSize(figure.fontSize), false);
     for (const PlacedLabel& l : figure.labels) {
         painter.setFont(l.minor ? minorFont : labelFont);
         const QFontMetricsF metrics(painter.font());
-        const QColor c = qtColor(elementColor(l.element, f.theme));
+        const QColor c = qtColor(elementColor(l.element, theme));
         if (l.leader) {
             const Vec2<double> end = l.box.nearest(l.anchor);
-            painter.setPen(QPen(c, 1.5 * f.view.lineScale));
+            painter.setPen(QPen(c, 1.5 * figure.lineScale));
             painter.drawLine(QPointF(l.anchor.x(), l.anchor.y()), QPointF(end.x(), end.y()));
         }
-        painter.fillRect(rectOf(l.box), qtColor(backgroundColor(f.theme, false), kLabelBackdropOpacity));
+        painter.fillRect(rectOf(l.box), qtColor(backgroundColor(theme, false), kLabelBackdropOpacity));
         painter.setPen(c);
         // The box is the text's from the lowest descender up, as VTK measures it.
         drawMathText(painter, QPointF(l.box.min.x(), l.box.max.y() - metrics.descent()), l.text, painter.font());
     }
-    painter.setPen(qtColor(elementColor(Element::Objects, f.theme)));
+    painter.setPen(qtColor(elementColor(Element::Objects, theme)));
     auto drawLines = [&](const std::vector<std::string>& lines, const QFont& qfont, const Box2& box, double line) {
         if (lines.empty())
             return;
@@ -189,7 +187,58 @@ void paint(QPainter& painter, const Figure& figure, const VectorFigure& f)
     };
     drawLines(p.captionLines, font(p.captionSize, true), p.caption, p.captionLine);
     drawLines(p.noteLines, font(p.noteSize, false), p.note, p.noteLine);
-    drawLegend(painter, figure, f);
+    drawLegend(painter, figure, theme);
+}
+
+// A page of `width` by `height` on the theme's background, drawn by `draw`, as SVG, PDF or PNG bytes.
+QByteArray pageBytes(int width, int height, Theme theme, const std::string& format, const std::string& title,
+                     const std::function<void(QPainter&)>& draw)
+{
+    QBuffer buffer;
+    buffer.open(QIODevice::WriteOnly);
+    std::unique_ptr<QPaintDevice> device;
+    QImage image;
+    if (format == "svg") {
+        auto svg = std::make_unique<QSvgGenerator>();
+        svg->setOutputDevice(&buffer);
+        svg->setSize(QSize(width, height));
+        svg->setViewBox(QRectF(0, 0, width, height));
+        svg->setResolution(72);
+        // A title is plain text, the figure's accessible name: scripts as spoken ("S sub per"), not "S_per".
+        svg->setTitle(QString::fromStdString(mathSpokenText(title)));
+        device = std::move(svg);
+    } else if (format == "pdf") {
+        auto pdf = std::make_unique<QPdfWriter>(&buffer);
+        pdf->setResolution(72); // one pixel of the figure is one point of the page
+        pdf->setPageSize(QPageSize(QSizeF(width, height), QPageSize::Point));
+        pdf->setPageMargins(QMarginsF(0, 0, 0, 0));
+        pdf->setTitle(QString::fromStdString(mathSpokenText(title)));
+        pdf->setCreator("ViewPipe");
+        device = std::move(pdf);
+    } else {
+        image = QImage(width, height, QImage::Format_RGB32);
+    }
+    QPainter painter;
+    if (!painter.begin(device ? device.get() : &image))
+        throw std::runtime_error("cannot draw the " + format + " figure");
+    painter.setRenderHint(QPainter::Antialiasing);
+    const QRectF page(0, 0, width, height);
+    painter.fillRect(page, qtColor(backgroundColor(theme, false)));
+    painter.setClipRect(page);
+    draw(painter);
+    painter.end();
+    if (!device) {
+        image.save(&buffer, "PNG");
+        return buffer.data();
+    }
+    QByteArray bytes = buffer.data();
+    if (format == "svg") {
+        // QSvgGenerator states the size in millimetres at its resolution, and a
+        // browser opened a 1280-pixel figure 1707 pixels wide: in pixels.
+        const QString size = QString(R"(width="%1px" height="%2px")").arg(width).arg(height);
+        bytes = QString::fromUtf8(bytes).replace(QRegularExpression(R"re(width="[0-9.]+mm" height="[0-9.]+mm")re"), size).toUtf8();
+    }
+    return bytes;
 }
 
 } // namespace
@@ -208,39 +257,30 @@ void writeVectorFigure(const VectorFigure& f, const std::string& format, const s
 {
     ensureGuiApplication();
     const Figure figure = flatFigure(f);
-    QBuffer buffer;
-    buffer.open(QIODevice::WriteOnly);
-    std::unique_ptr<QPaintDevice> device;
-    if (format == "svg") {
-        auto svg = std::make_unique<QSvgGenerator>();
-        svg->setOutputDevice(&buffer);
-        svg->setSize(QSize(figure.width, figure.height));
-        svg->setViewBox(QRectF(0, 0, figure.width, figure.height));
-        svg->setResolution(72);
-        // A title is plain text, the figure's accessible name: scripts as spoken ("S sub per"), not "S_per".
-        svg->setTitle(QString::fromStdString(mathSpokenText(f.caption)));
-        device = std::move(svg);
-    } else {
-        auto pdf = std::make_unique<QPdfWriter>(&buffer);
-        pdf->setResolution(72); // one pixel of the figure is one point of the page
-        pdf->setPageSize(QPageSize(QSizeF(figure.width, figure.height), QPageSize::Point));
-        pdf->setPageMargins(QMarginsF(0, 0, 0, 0));
-        pdf->setTitle(QString::fromStdString(mathSpokenText(f.caption)));
-        pdf->setCreator("ViewPipe");
-        device = std::move(pdf);
-    }
-    QPainter painter;
-    if (!painter.begin(device.get()))
-        throw std::runtime_error("cannot draw " + file.string());
-    paint(painter, figure, f);
-    painter.end();
-    QByteArray bytes = buffer.data();
-    if (format == "svg") {
-        // QSvgGenerator states the size in millimetres at its resolution, and a
-        // browser opened a 1280-pixel figure 1707 pixels wide: in pixels.
-        const QString size = QString(R"(width="%1px" height="%2px")").arg(figure.width).arg(figure.height);
-        bytes = QString::fromUtf8(bytes).replace(QRegularExpression(R"re(width="[0-9.]+mm" height="[0-9.]+mm")re"), size).toUtf8();
-    }
+    writeFileAtomically(file, pageBytes(figure.width, figure.height, f.theme, format, f.caption, [&](QPainter& painter) {
+                                  paintFigure(painter, figure, f.theme);
+                              }).toStdString());
+}
+
+void writeStoryboard(const Storyboard& storyboard, Theme theme, const std::string& format, const std::filesystem::path& file,
+                     const std::vector<std::string>& cellPngs)
+{
+    ensureGuiApplication();
+    const StoryboardLayout& layout = storyboard.layout;
+    const QByteArray bytes = pageBytes(layout.width, layout.height, theme, format, storyboard.title, [&](QPainter& painter) {
+        for (std::size_t k = 0; k < layout.cells.size(); ++k) {
+            const Box2& box = layout.cells[k].picture;
+            painter.save();
+            painter.translate(box.min.x(), box.min.y());
+            painter.setClipRect(QRectF(0, 0, box.max.x() - box.min.x(), box.max.y() - box.min.y()));
+            if (k < cellPngs.size()) // the painter's own picture of the cell
+                painter.drawImage(QPointF(0, 0), QImage::fromData(QByteArray::fromStdString(cellPngs[k]), "PNG"));
+            else
+                paintFigure(painter, storyboard.cells[k], theme);
+            painter.restore();
+        }
+        paintFigure(painter, storyboard.overlay, theme);
+    });
     writeFileAtomically(file, bytes.toStdString());
 }
 

@@ -7,8 +7,10 @@
 
 #include <filesystem>
 #include <string>
+#include <vector>
 
 #include "viewpipe/report/figure.hpp"
+#include "viewpipe/report/storyboard.hpp"
 #include "viewpipe/report/style.hpp"
 
 namespace viewpipe::gui {
@@ -27,5 +29,11 @@ Figure flatFigure(const VectorFigure& figure);
 
 // Writes `file` atomically as SVG or PDF (by `format`); throws std::runtime_error when it cannot.
 void writeVectorFigure(const VectorFigure& figure, const std::string& format, const std::filesystem::path& file);
+
+// Writes a storyboard atomically as SVG, PDF or PNG (by `format`): each cell's
+// figure in its box, or for a PNG the painter's picture of it (`cellPngs`,
+// PNG bytes in the cells' order), then the overlay.
+void writeStoryboard(const Storyboard& storyboard, Theme theme, const std::string& format,
+                     const std::filesystem::path& file, const std::vector<std::string>& cellPngs = {});
 
 } // namespace viewpipe::gui

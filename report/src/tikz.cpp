@@ -177,9 +177,10 @@ std::string texRichText(const std::string& text)
     return out;
 }
 
-std::string tikzFigure(const Figure& figure, Theme theme)
+namespace {
+
+std::set<Element> usedElements(const Figure& figure)
 {
-    const double unit = kWidthCm / figure.width; // cm per pixel
     std::set<Element> used = {Element::Objects, Element::Frame}; // the note's ink, the legend's border
     for (const FigureShape& s : figure.shapes)
         used.insert(s.element);
@@ -187,16 +188,13 @@ std::string tikzFigure(const Figure& figure, Theme theme)
         used.insert(l.element);
     for (const LegendEntry* entry : figure.legend)
         used.insert(entry->element);
-    // The document sets the caption: the picture begins below its band (and above any label or the legend).
-    const PictureLayout& layout = figure.layout;
-    double top = layout.caption.isEmpty() ? 0 : layout.caption.max.y() + 0.25 * figure.fontSize;
-    if (!layout.legend.isEmpty())
-        top = std::min(top, layout.legend.min.y() - 1);
-    for (const PlacedLabel& l : figure.labels)
-        top = std::min(top, l.box.min.y() - 1);
-    top = std::max(0.0, std::floor(top));
+    return used;
+}
 
-    std::ostringstream tex;
+// The document's start: its class, the colors and the styles of the elements `used`, for text and lines
+// sized as `sizes` has them, one pixel `unit` cm.
+void writePreamble(std::ostream& tex, const std::set<Element>& used, const Figure& sizes, double unit, Theme theme)
+{
     tex << "% A ViewPipe figure. Compile with pdflatex, or \\input it in a document that loads\n"
            "% tikz and the standalone package (see figures.tex); it needs no other package and no\n"
            "% font set-up: its text is set at 10 pt and scaled, in Helvetica (psnfss).\n"
@@ -212,7 +210,7 @@ std::string tikzFigure(const Figure& figure, Theme theme)
     // 10 pt and scaled, so that the math fonts of its signs and scripts are asked for at 10, 7 and 5 pt, sizes
     // Computer Modern has: no document needs more fonts for it. Helvetica (psnfss), as the pictures' DejaVu
     // Sans, has a bold oblique for a bold label's math, and is scalable.
-    const double labelScale = figure.fontSize * pt / kTextPt, smallScale = smallTextSize(figure.fontSize) * pt / kTextPt;
+    const double labelScale = sizes.fontSize * pt / kTextPt, smallScale = smallTextSize(sizes.fontSize) * pt / kTextPt;
     const std::string font = "\\fontfamily{phv}\\fontsize{" + number(kTextPt) + "}{" + number(1.2 * kTextPt) + "}";
     tex << "\\tikzset{\n  vp text/.style={inner sep=0pt, transform shape},\n"
         << "  vp label/.style={vp text, anchor=base, scale=" << formatShortest(labelScale) << ", font=" << font
@@ -220,20 +218,22 @@ std::string tikzFigure(const Figure& figure, Theme theme)
     tex << "  vp tick label/.style={vp text, anchor=base, scale=" << formatShortest(smallScale)
         << ", text=vpFrame, font=" << font << "\\selectfont},\n";
     tex << "  vp backdrop/.style={fill=vpBackground, fill opacity=" << formatShortest(kLabelBackdropOpacity) << "},\n";
-    tex << "  vp leader/.style={line width=" << number(figure.lineScale * pt) << "pt},\n";
+    tex << "  vp leader/.style={line width=" << number(sizes.lineScale * pt) << "pt},\n";
     tex << "  vp small text/.style={vp text, anchor=west, scale=" << formatShortest(smallScale)
         << ", text=vpObjects, font=" << font << "\\selectfont},\n";
     for (const Element e : used) {
         const std::string key = elementKey(e);
-        tex << "  vp " << key << "/.style={draw=vp" << key << ", line width=" << number(figure.lineScale * lineWidthOf(e, false) * pt) << "pt, line cap=round},\n";
+        tex << "  vp " << key << "/.style={draw=vp" << key << ", line width=" << number(sizes.lineScale * lineWidthOf(e, false) * pt) << "pt, line cap=round},\n";
         tex << "  vp " << key << " face/.style={fill=vp" << (e == Element::Objects ? "ObjectsFace" : key) << ", draw=none},\n";
         tex << "  vp " << key << " label/.style={vp label, text=vp" << key << "},\n";
     }
     tex << "}\n";
-    tex << "\\begin{tikzpicture}[x=" << unit << "cm, y=-" << unit << "cm]\n";
-    const std::string corner = point(Vec2<double>(0, top)), far = point(Vec2<double>(figure.width, figure.height));
-    tex << "\\fill[vpBackground] " << corner << " rectangle " << far << ";\n";
-    tex << "\\clip " << corner << " rectangle " << far << ";\n";
+}
+
+// What a figure draws, in its own pixels: its shapes, its text's backdrops, labels, note and legend.
+void writeDrawing(std::ostream& tex, const Figure& figure)
+{
+    const PictureLayout& layout = figure.layout;
     for (const FigureShape& s : figure.shapes) {
         const std::string key = elementKey(s.element);
         tex << (s.surface ? "\\fill[vp " + key + " face" : "\\draw[vp " + key);
@@ -261,7 +261,9 @@ std::string tikzFigure(const Figure& figure, Theme theme)
         tex << "\\fill[vp backdrop] " << point(l.box.min) << " rectangle " << point(l.box.max) << ";\n";
         const double size = l.minor ? smallTextSize(figure.fontSize) : figure.fontSize;
         const Vec2<double> base((l.box.min.x() + l.box.max.x()) / 2, l.box.max.y() - kDescent * size);
-        tex << "\\node[vp " << (l.minor ? std::string("tick") : key) << " label] at " << point(base) << " {"
+        // A minor label takes its element's ink where that is not the tick numbers' (a storyboard's footer).
+        const std::string ink = l.minor && l.element != Element::Frame ? ", text=vp" + key : "";
+        tex << "\\node[vp " << (l.minor ? std::string("tick") : key) << " label" << ink << "] at " << point(base) << " {"
             << figureText(l.text) << "};\n";
     }
     // The effects' note, line by line, and the legend, where the picture has them.
@@ -305,6 +307,54 @@ std::string tikzFigure(const Figure& figure, Theme theme)
                 << " {" << figureText(entry.text) << "};\n";
         }
     }
+}
+
+} // namespace
+
+std::string tikzFigure(const Figure& figure, Theme theme)
+{
+    const double unit = kWidthCm / figure.width; // cm per pixel
+    // The document sets the caption: the picture begins below its band (and above any label or the legend).
+    const PictureLayout& layout = figure.layout;
+    double top = layout.caption.isEmpty() ? 0 : layout.caption.max.y() + 0.25 * figure.fontSize;
+    if (!layout.legend.isEmpty())
+        top = std::min(top, layout.legend.min.y() - 1);
+    for (const PlacedLabel& l : figure.labels)
+        top = std::min(top, l.box.min.y() - 1);
+    top = std::max(0.0, std::floor(top));
+
+    std::ostringstream tex;
+    writePreamble(tex, usedElements(figure), figure, unit, theme);
+    tex << "\\begin{tikzpicture}[x=" << unit << "cm, y=-" << unit << "cm]\n";
+    const std::string corner = point(Vec2<double>(0, top)), far = point(Vec2<double>(figure.width, figure.height));
+    tex << "\\fill[vpBackground] " << corner << " rectangle " << far << ";\n";
+    tex << "\\clip " << corner << " rectangle " << far << ";\n";
+    writeDrawing(tex, figure);
+    tex << "\\end{tikzpicture}\n\\end{document}\n";
+    return tex.str();
+}
+
+std::string tikzStoryboard(const Storyboard& storyboard, Theme theme)
+{
+    const StoryboardLayout& layout = storyboard.layout;
+    const double unit = kWidthCm / layout.width;
+    std::set<Element> used = usedElements(storyboard.overlay);
+    for (const Figure& cell : storyboard.cells)
+        used.merge(usedElements(cell));
+    std::ostringstream tex;
+    writePreamble(tex, used, storyboard.overlay, unit, theme);
+    tex << "\\begin{tikzpicture}[x=" << unit << "cm, y=-" << unit << "cm]\n";
+    tex << "\\fill[vpBackground] (0,0) rectangle " << point(Vec2<double>(layout.width, layout.height)) << ";\n";
+    for (std::size_t k = 0; k < storyboard.cells.size(); ++k) {
+        const Box2& box = layout.cells[k].picture;
+        const Figure& cell = storyboard.cells[k];
+        tex << "% " << (layout.cells[k].stage == 0 ? std::string("the world") : "stage " + std::to_string(layout.cells[k].stage)) << "\n";
+        tex << "\\begin{scope}[shift={" << point(box.min) << "}]\n";
+        tex << "\\clip (0,0) rectangle " << point(Vec2<double>(cell.width, cell.height)) << ";\n";
+        writeDrawing(tex, cell);
+        tex << "\\end{scope}\n";
+    }
+    writeDrawing(tex, storyboard.overlay);
     tex << "\\end{tikzpicture}\n\\end{document}\n";
     return tex.str();
 }

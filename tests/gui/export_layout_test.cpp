@@ -13,11 +13,13 @@
 #include <QFile>
 #include <QFont>
 #include <QFontMetricsF>
+#include <QImage>
 #include <QXmlStreamReader>
 
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
+#include <fstream>
 #include <map>
 #include <optional>
 #include <set>
@@ -58,6 +60,7 @@
 #include "export/Offscreen.h"
 #include "painter/EigenVtk.h"
 #include "export/VectorFigure.h"
+#include "viewpipe/report/storyboard.hpp"
 
 namespace viewpipe::gui {
 namespace {
@@ -675,6 +678,73 @@ TEST(ExportLayout, TheSubjectFillsThePicture)
     EXPECT_GE(least(together), 0.028);
     EXPECT_GE(median(alone), 0.22);
     EXPECT_GE(least(alone), 0.07);
+}
+
+// Every stage at once: one file a format, each stage's picture in its cell (drawn, and not the same
+// picture twice where the stages move things), its header and traced coordinates in the SVG, and the
+// PDF's words naming the world; an animation refused.
+TEST(ExportLayout, TheStoryboardShowsEveryStageAtOnce)
+{
+    for (const std::string name : {"house", "opengl-perspective", "clipping-eye-plane", "depth-corridor"}) {
+        SCOPED_TRACE(name);
+        const auto scene = evaluateScene(loadScene(fs::path(viewpipe::build::dataDir) / "scenes" / (name + ".json")));
+        const fs::path out = fs::temp_directory_path() / ("viewpipe-storyboard-" + std::to_string(::getpid()));
+        fs::remove_all(out);
+        ExportOptions options;
+        options.out = out;
+        options.formats = {"png", "svg", "pdf", "tikz"};
+        options.storyboard = true;
+        const std::atomic<bool> cancel{false};
+        exportStages(scene, options, {}, cancel);
+        std::set<std::string> files;
+        for (const auto& entry : fs::directory_iterator(out))
+            files.insert(entry.path().filename().string());
+        std::set<std::string> expected = {"storyboard.png", "storyboard.svg", "storyboard.pdf", "storyboard-tikz.tex",
+                                          "matrices.tex", "matrices.json"};
+        if (scene->outcomes.depth)
+            expected.insert("depth-resolution.png");
+        EXPECT_EQ(files, expected);
+
+        std::vector<int> stages;
+        for (int k = 0; k <= int(scene->pipeline.stages.size()); ++k)
+            stages.push_back(k);
+        const StoryboardLayout layout = layoutStoryboard(stages, 1280, 720, storyboardLabelSize(1280, 1));
+        const QImage png(QString::fromStdString((out / "storyboard.png").string()));
+        ASSERT_EQ(png.size(), QSize(1280, 720));
+        const QRgb background = png.pixel(0, 0);
+        std::vector<std::vector<QRgb>> cells;
+        for (const StoryboardCell& cell : layout.cells) {
+            std::vector<QRgb> pixels;
+            int drawn = 0;
+            for (int y = int(cell.picture.min.y()); y < int(cell.picture.max.y()); ++y)
+                for (int x = int(cell.picture.min.x()); x < int(cell.picture.max.x()); ++x) {
+                    pixels.push_back(png.pixel(x, y));
+                    drawn += pixels.back() != background;
+                }
+            EXPECT_GT(drawn, int(pixels.size()) / 20) << "stage " << cell.stage << " is nearly blank";
+            cells.push_back(pixels);
+        }
+        std::size_t differ = 0;
+        for (std::size_t i = 0; i < cells.front().size(); ++i)
+            differ += cells.front()[i] != cells.back()[i];
+        EXPECT_GT(differ, cells.front().size() / 20) << "the world and the last stage look alike";
+
+        std::ifstream svgFile(out / "storyboard.svg");
+        const std::string svg((std::istreambuf_iterator<char>(svgFile)), std::istreambuf_iterator<char>());
+        std::size_t footers = 0;
+        for (std::size_t at = svg.find("traced ("); at != std::string::npos; at = svg.find("traced (", at + 1))
+            ++footers;
+        EXPECT_EQ(footers, layout.cells.size());
+        EXPECT_NE(svg.find(">0. World<"), std::string::npos);
+        std::array<double, 2> page{};
+        const auto words = pdfWords(out / "storyboard.pdf", page);
+        EXPECT_TRUE(std::any_of(words.begin(), words.end(), [](const auto& w) { return w.first == "World"; }));
+        EXPECT_EQ(page[0], 1280);
+        fs::remove_all(out);
+
+        options.animate = true;
+        EXPECT_THROW(exportStages(scene, options, {}, cancel), InputError);
+    }
 }
 
 // A step on the page ends where the stage it reaches rests: no snap when its

@@ -13,12 +13,15 @@
 #include <vector>
 
 #include "viewpipe/report/figure.hpp"
+#include "viewpipe/report/storyboard.hpp"
 #include "viewpipe/report/style.hpp"
 
 namespace viewpipe {
 
 // A figure as a standalone document; 16 cm wide.
 std::string tikzFigure(const Figure& figure, Theme theme);
+// A storyboard as one standalone document, 16 cm wide: each cell's figure in its box, then the overlay.
+std::string tikzStoryboard(const Storyboard& storyboard, Theme theme);
 
 // An article showing each figure (file name in the same folder, caption) as a
 // figure with its caption, through the standalone package.

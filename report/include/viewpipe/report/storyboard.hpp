@@ -1,0 +1,59 @@
+#pragma once
+
+// Every stage at once: the storyboard. Small multiples in reading order, a
+// row or a grid, each cell a stage's own picture (the same display list as
+// its picture alone, labels placed for the cell's size), under a header whose
+// arrow comes from the view before and names the stage's matrix, over a
+// footer giving one traced point's coordinates in that stage's space. Its
+// text is as large as a single picture's set 16 cm wide: labels 8 pt, the
+// rest 6 pt. The writers (SVG, PDF, PNG, TikZ) draw each cell's figure moved
+// into its cell, then the overlay. No VTK, no Qt.
+
+#include <string>
+#include <vector>
+
+#include "viewpipe/report/figure.hpp"
+
+namespace viewpipe {
+
+// Labels and headers take this share of the storyboard's width (8 pt of 16 cm),
+// tick numbers, legends and footers smallTextSize of it (6 pt).
+constexpr double kStoryboardLabelShare = 0.018;
+double storyboardLabelSize(int widthPixels, double textScale);
+
+struct StoryboardCell {
+    int stage = 0;
+    Box2 header, picture, footer; // pixels of the whole storyboard
+};
+
+// Where the pictures of `stages` go: the columns that give the pictures the
+// most area near the single pictures' shape (16:9), each row's cells left to
+// right. No cells where the size holds none.
+struct StoryboardLayout {
+    int width = 0, height = 0, columns = 0;
+    double labelSize = 0; // pixels
+    std::vector<StoryboardCell> cells;
+};
+StoryboardLayout layoutStoryboard(const std::vector<int>& stages, int width, int height, double labelSize);
+
+// The point a storyboard traces unless asked: the objects' first vertex, else the VRP (or eye).
+Vec3<double> storyboardTracedPoint(const EvaluatedScene& scene);
+// The traced point after stage k in that stage's coordinates, four significant digits:
+// "(8, 16, 30)", with w where the stage leaves it other than 1 ("(1, 2, 3, w = 4)").
+std::string tracedCoordinates(const EvaluatedScene& scene, const Vec3<double>& world, int k);
+
+// The headers (an arrow from the view before, the stage's number and matrix)
+// and footers (the traced point's coordinates) as a flat figure over the whole storyboard,
+// its lines `lineScale` as wide as a picture's at scale 1.
+Figure storyboardOverlay(const EvaluatedScene& scene, const StoryboardLayout& layout, const Vec3<double>& traced,
+                         const FontMeasure& measure, double lineScale);
+
+// A storyboard to write: each cell's figure drawn in its picture box, then the overlay.
+struct Storyboard {
+    StoryboardLayout layout;
+    std::vector<Figure> cells; // in layout.cells' order, each its picture box's size
+    Figure overlay;
+    std::string title; // the document's (accessible) name
+};
+
+} // namespace viewpipe

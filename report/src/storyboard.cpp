@@ -1,0 +1,139 @@
+#include "viewpipe/report/storyboard.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include "viewpipe/format.hpp"
+#include "viewpipe/report/style.hpp"
+
+namespace viewpipe {
+
+double storyboardLabelSize(int widthPixels, double textScale)
+{
+    return std::max(10.0, std::ceil(kStoryboardLabelShare * widthPixels * textScale));
+}
+
+namespace {
+
+// The room around and between the cells, in label sizes: the grid's margin, the gap an arrow
+// crosses, the header's and the footer's height.
+constexpr double kMargin = 0.5, kArrowGap = 1.2, kHeader = 1.6, kFooterLines = 1.5;
+
+double footerHeight(double labelSize)
+{
+    return kFooterLines * smallTextSize(labelSize);
+}
+
+} // namespace
+
+StoryboardLayout layoutStoryboard(const std::vector<int>& stages, int width, int height, double labelSize)
+{
+    const int pictures = int(stages.size());
+    StoryboardLayout layout{width, height, 0, labelSize, {}};
+    const double margin = kMargin * labelSize, gap = kArrowGap * labelSize, header = kHeader * labelSize,
+                 footer = footerHeight(labelSize);
+    double best = 0;
+    int cellWidth = 0, pictureHeight = 0;
+    for (int columns = 1; columns <= pictures; ++columns) {
+        const int rows = (pictures + columns - 1) / columns;
+        const int w = int((width - 2 * margin - gap * (columns - 1)) / columns);
+        const int h = int((height - 2 * margin - margin * (rows - 1)) / rows - header - footer);
+        if (w <= 0 || h <= 0)
+            continue;
+        // The largest 16:9 picture the cell holds: what a stage gets to show itself in.
+        const double across = std::min(double(w), h * 16.0 / 9);
+        if (across > best) {
+            best = across;
+            layout.columns = columns;
+            cellWidth = w;
+            pictureHeight = h;
+        }
+    }
+    if (layout.columns == 0)
+        return layout;
+    for (int k = 0; k < pictures; ++k) {
+        const int row = k / layout.columns, column = k % layout.columns;
+        const double x = std::round(margin + column * (cellWidth + gap)),
+                     y = std::round(margin + row * (header + pictureHeight + footer + margin));
+        StoryboardCell cell;
+        cell.stage = stages[std::size_t(k)];
+        cell.header = {{x, y}, {x + cellWidth, std::round(y + header)}};
+        cell.picture = {{x, cell.header.max.y()}, {x + cellWidth, cell.header.max.y() + pictureHeight}};
+        cell.footer = {{x, cell.picture.max.y()}, {x + cellWidth, cell.picture.max.y() + footer}};
+        layout.cells.push_back(cell);
+    }
+    return layout;
+}
+
+Vec3<double> storyboardTracedPoint(const EvaluatedScene& scene)
+{
+    const std::vector<Vec3<double>> vertices = scene.objectVertices();
+    if (!vertices.empty())
+        return vertices.front();
+    Vec3<double> center = Vec3<double>::Zero();
+    for (const Vec3<double>& corner : scene.setup.volume)
+        center += corner / double(scene.setup.volume.size());
+    return center;
+}
+
+std::string tracedCoordinates(const EvaluatedScene& scene, const Vec3<double>& world, int k)
+{
+    const Vec4<double> p = k == 0 ? Vec4<double>(world.homogeneous())
+                                  : tracePoint(scene.pipeline, world).afterStage[std::size_t(k - 1)];
+    // What is zero but for the rounding of the stage's products reads 0.
+    const double zero = 1e-12 * std::max(1.0, p.cwiseAbs().maxCoeff());
+    const auto number = [&](double x) {
+        const std::string text = formatSignificant(std::abs(x) <= zero ? 0 : x, 4);
+        return text.front() == '-' ? "\u2212" + text.substr(1) : text;
+    };
+    std::string text = "(" + number(p.x()) + ", " + number(p.y()) + ", " + number(p.z());
+    if (p.w() != 1)
+        text += ", w = " + number(p.w());
+    return text + ")";
+}
+
+Figure storyboardOverlay(const EvaluatedScene& scene, const StoryboardLayout& layout, const Vec3<double>& traced,
+                         const FontMeasure& measure, double lineScale)
+{
+    Figure overlay;
+    overlay.width = layout.width;
+    overlay.height = layout.height;
+    overlay.fontSize = layout.labelSize;
+    overlay.lineScale = lineScale;
+    const double size = layout.labelSize, small = smallTextSize(size), gap = kArrowGap * size;
+    const auto label = [&](Element element, const std::string& text, const Vec2<double>& left, bool minor) {
+        const Vec2<double> extent = measure(text, minor ? small : size, !minor);
+        const Vec2<double> min(left.x(), left.y() - extent.y() / 2);
+        overlay.labels.push_back({element, text, min, {min, min + extent}, false, minor});
+    };
+    for (std::size_t i = 0; i < layout.cells.size(); ++i) {
+        const StoryboardCell& cell = layout.cells[i];
+        const double middle = (cell.header.min.y() + cell.header.max.y()) / 2;
+        double textLeft = cell.header.min.x();
+        if (cell.stage > 0) {
+            // From the view before, across the gap where it is in the same row.
+            const bool rowStart = i % std::size_t(layout.columns) == 0;
+            const double from = rowStart ? cell.header.min.x() : cell.header.min.x() - 0.8 * gap,
+                         tip = from + 1.6 * size, head = 0.45 * size;
+            const double width = lineWidthOf(Element::Frame, false) * overlay.lineScale * 1.5;
+            overlay.shapes.push_back({Element::Frame, false, 1, width, {{from, middle}, {tip - head, middle}}, 0});
+            overlay.shapes.push_back({Element::Frame, true, 1, 0,
+                                      {{tip, middle}, {tip - head, middle - 0.45 * head}, {tip - head, middle + 0.45 * head}},
+                                      0});
+            textLeft = tip + 0.3 * size;
+        }
+        const std::string stage =
+            cell.stage == 0 ? "0. World"
+                            : std::to_string(cell.stage) + ". $" +
+                                  symbolMath(scene.pipeline.stages[std::size_t(cell.stage - 1)].symbol) + "$";
+        label(Element::Objects, stage, {textLeft, middle}, false);
+        // Named where the footer has room for the name, the coordinates alone where it has not.
+        const std::string coordinates = tracedCoordinates(scene, traced, cell.stage), named = "traced " + coordinates;
+        const bool roomForName = measure(named, small, false).x() <= cell.footer.max.x() - cell.footer.min.x();
+        label(Element::Traced, roomForName ? named : coordinates,
+              {cell.footer.min.x(), (cell.footer.min.y() + cell.footer.max.y()) / 2}, true);
+    }
+    return overlay;
+}
+
+} // namespace viewpipe

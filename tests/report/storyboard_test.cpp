@@ -1,0 +1,170 @@
+// The storyboard (storyboard.hpp): every stage at once in reading order, its
+// text as large as asked when set 16 cm wide, arrows from each view to the
+// next naming the stage's matrix, the traced point's coordinates in each
+// stage's space (Foley's house: PRP (8, 6, 84), so T(-PRP) takes the corner
+// (0, 0, 54) to (-8, -6, -30)).
+
+#include <gtest/gtest.h>
+
+#include <filesystem>
+
+#include "build_paths.h"
+#include "viewpipe/math_text.hpp"
+#include "viewpipe/report/storyboard.hpp"
+#include "viewpipe/report/style.hpp"
+#include "viewpipe/report/tikz.hpp"
+
+namespace viewpipe {
+namespace {
+
+namespace fs = std::filesystem;
+
+std::shared_ptr<const EvaluatedScene> builtIn(const std::string& name)
+{
+    return evaluateScene(loadScene(fs::path(viewpipe::build::dataDir) / "scenes" / name));
+}
+
+std::vector<int> allStages(const EvaluatedScene& scene)
+{
+    std::vector<int> stages;
+    for (int k = 0; k <= int(scene.pipeline.stages.size()); ++k)
+        stages.push_back(k);
+    return stages;
+}
+
+// Text as wide as the characters it shows at 0.6 of its size, as high as its size: enough to lay out by.
+FontMeasure roughMeasure()
+{
+    return [](const std::string& text, double pixels, bool) {
+        return Vec2<double>(0.6 * pixels * double(mathPlainText(text).size()), pixels);
+    };
+}
+
+// 16 cm in points: what a pixel of the storyboard becomes when it is set that wide.
+constexpr double kPointsAcross = 16 / 2.54 * 72.27;
+
+TEST(Storyboard, ItsTextIsAtLeast8And6PointsSet16CmWide)
+{
+    for (const int width : {640, 800, 1280, 1920, 3840})
+        for (const double textScale : {0.5, 1.0, 2.0}) {
+            const double label = storyboardLabelSize(width, textScale), small = smallTextSize(label);
+            const double pt = kPointsAcross / width;
+            EXPECT_GE(label * pt, 8 * std::min(1.0, textScale)) << width << " at " << textScale;
+            EXPECT_GE(small * pt, 6 * std::min(1.0, textScale)) << width << " at " << textScale;
+        }
+}
+
+TEST(Storyboard, CellsFollowInReadingOrderAndApart)
+{
+    for (const auto& [width, height] : {std::pair(1280, 720), std::pair(800, 450), std::pair(1920, 400), std::pair(600, 1200)})
+        for (const int pictures : {1, 5, 6, 7, 12}) {
+            SCOPED_TRACE(std::to_string(width) + "x" + std::to_string(height) + ", " + std::to_string(pictures));
+            std::vector<int> stages(static_cast<std::size_t>(pictures));
+            for (int k = 0; k < pictures; ++k)
+                stages[std::size_t(k)] = k;
+            const StoryboardLayout layout = layoutStoryboard(stages, width, height, storyboardLabelSize(width, 1));
+            ASSERT_EQ(int(layout.cells.size()), pictures);
+            const Box2 page{{0, 0}, {double(width), double(height)}};
+            std::vector<Box2> boxes;
+            for (std::size_t k = 0; k < layout.cells.size(); ++k) {
+                const StoryboardCell& cell = layout.cells[k];
+                EXPECT_EQ(cell.stage, int(k));
+                for (const Box2& box : {cell.header, cell.picture, cell.footer}) {
+                    EXPECT_TRUE(page.contains(box));
+                    EXPECT_FALSE(box.isEmpty());
+                    boxes.push_back(box);
+                }
+                // The picture under its header, over its footer; all pictures one size.
+                EXPECT_EQ(cell.header.max.y(), cell.picture.min.y());
+                EXPECT_EQ(cell.picture.max.y(), cell.footer.min.y());
+                EXPECT_TRUE((cell.picture.max - cell.picture.min).isApprox(layout.cells[0].picture.max - layout.cells[0].picture.min));
+                if (k == 0)
+                    continue;
+                // Reading order: right of the one before in its row, else below it at the left.
+                const StoryboardCell& before = layout.cells[k - 1];
+                if (k % std::size_t(layout.columns) != 0) {
+                    EXPECT_GT(cell.picture.min.x(), before.picture.max.x());
+                    EXPECT_EQ(cell.picture.min.y(), before.picture.min.y());
+                } else {
+                    EXPECT_GT(cell.header.min.y(), before.footer.max.y() - 1e-9);
+                    EXPECT_EQ(cell.picture.min.x(), layout.cells[0].picture.min.x());
+                }
+            }
+            for (std::size_t a = 0; a < boxes.size(); ++a)
+                for (std::size_t b = a + 1; b < boxes.size(); ++b)
+                    EXPECT_FALSE(boxes[a].overlaps(boxes[b])) << a << " and " << b;
+        }
+    // The house's six pictures at 16:9: two rows of three.
+    EXPECT_EQ(layoutStoryboard({0, 1, 2, 3, 4, 5}, 1280, 720, storyboardLabelSize(1280, 1)).columns, 3);
+}
+
+TEST(Storyboard, TheTracedPointIsGivenInEachStagesCoordinates)
+{
+    const auto house = builtIn("house.json");
+    const Vec3<double> corner = storyboardTracedPoint(*house);
+    EXPECT_EQ(corner, Vec3<double>(0, 0, 54));
+    EXPECT_EQ(tracedCoordinates(*house, corner, 0), "(0, 0, 54)");
+    EXPECT_EQ(tracedCoordinates(*house, corner, 3), "(\u22128, \u22126, \u221230)"); // T(-PRP): minus PRP (8, 6, 84)
+    // gluPerspective leaves w = -z: the stage's coordinates are homogeneous.
+    const auto opengl = builtIn("opengl-perspective.json");
+    const int last = int(opengl->pipeline.stages.size());
+    EXPECT_NE(tracedCoordinates(*opengl, storyboardTracedPoint(*opengl), last).find(", w = "), std::string::npos);
+}
+
+TEST(Storyboard, EachViewAfterTheFirstHasAnArrowNamingItsMatrix)
+{
+    const auto house = builtIn("house.json");
+    const std::vector<int> stages = allStages(*house);
+    const StoryboardLayout layout = layoutStoryboard(stages, 1280, 720, storyboardLabelSize(1280, 1));
+    const Figure overlay = storyboardOverlay(*house, layout, storyboardTracedPoint(*house), roughMeasure(), 1);
+    // A shaft and a head for each view after the world; a header and a footer for each.
+    ASSERT_EQ(overlay.shapes.size(), 2 * (stages.size() - 1));
+    ASSERT_EQ(overlay.labels.size(), 2 * stages.size());
+    const char* headers[] = {"0. World", "1. $T(-\\mathit{VRP})$", "2. $R$", "3. $T(-\\mathit{PRP})$",
+                             "4. $\\mathit{SH}_{\\mathrm{per}}$", "5. $S_{\\mathrm{per}}$"};
+    for (std::size_t k = 0; k < stages.size(); ++k) {
+        EXPECT_EQ(overlay.labels[2 * k].text, headers[k]);
+        EXPECT_TRUE(layout.cells[k].header.contains(overlay.labels[2 * k].box)) << k;
+        EXPECT_TRUE(layout.cells[k].footer.contains(overlay.labels[2 * k + 1].box)) << k;
+        if (k == 0)
+            continue;
+        // The arrow's head ends in the view's header, before its text; in a row it starts in the gap from the one before.
+        const FigureShape& head = overlay.shapes[2 * (k - 1) + 1];
+        const FigureShape& shaft = overlay.shapes[2 * (k - 1)];
+        EXPECT_TRUE(head.surface);
+        EXPECT_LT(head.points[0].x(), overlay.labels[2 * k].box.min.x());
+        EXPECT_GT(head.points[0].x(), layout.cells[k].header.min.x());
+        if (k % std::size_t(layout.columns) != 0) {
+            EXPECT_GT(shaft.points[0].x(), layout.cells[k - 1].picture.max.x());
+            EXPECT_LT(shaft.points[0].x(), layout.cells[k].picture.min.x());
+        }
+    }
+    EXPECT_EQ(labelOverlaps(overlay.labels), 0);
+}
+
+// One document, each stage's figure in its box: pdflatex reads it as the single figures (tested there).
+TEST(Storyboard, TikzDrawsEveryCellInItsBoxThenTheOverlay)
+{
+    const auto house = builtIn("house.json");
+    Storyboard storyboard;
+    storyboard.layout = layoutStoryboard(allStages(*house), 1280, 720, storyboardLabelSize(1280, 1));
+    storyboard.overlay = storyboardOverlay(*house, storyboard.layout, {0, 0, 54}, roughMeasure(), 1);
+    for (const StoryboardCell& cell : storyboard.layout.cells) {
+        Figure figure;
+        figure.width = int(cell.picture.max.x() - cell.picture.min.x());
+        figure.height = int(cell.picture.max.y() - cell.picture.min.y());
+        storyboard.cells.push_back(figure);
+    }
+    const std::string tex = tikzStoryboard(storyboard, Theme::Light);
+    std::size_t at = 0;
+    for (std::size_t k = 0; k < storyboard.cells.size(); ++k) {
+        const std::string mark = k == 0 ? "% the world\n" : "% stage " + std::to_string(k) + "\n";
+        at = tex.find(mark, at);
+        ASSERT_NE(at, std::string::npos) << mark;
+    }
+    EXPECT_EQ(tex.find("\\begin{document}"), tex.rfind("\\begin{document}"));
+    EXPECT_NE(tex.find("traced (\\textminus{}8, \\textminus{}6, \\textminus{}30)", at), std::string::npos);
+}
+
+} // namespace
+} // namespace viewpipe
