@@ -361,6 +361,10 @@ Exact& Exact::operator+=(const Exact& b)
         terms_.clear();
         return *this;
     }
+    if (b.isExactZero())
+        return *this;
+    if (isExactZero())
+        return *this = b;
     if (approximation_ || b.approximation_) {
         const std::shared_ptr<const std::string> reason = reason_ ? reason_ : b.reason_;
         *this = inexact(approximation() + b.approximation(), *reason);
@@ -385,6 +389,8 @@ Exact& Exact::operator*=(const Exact& b)
         infinity_ = product;
         return *this;
     }
+    if (isExactZero() || b.isExactZero())
+        return *this = Exact();
     if (approximation_ || b.approximation_) {
         const std::shared_ptr<const std::string> reason = reason_ ? reason_ : b.reason_;
         *this = inexact(approximation() * b.approximation(), *reason);
@@ -412,6 +418,8 @@ Exact& Exact::operator/=(const Exact& b)
         infinity_ *= b.sign();
         return *this;
     }
+    if (isExactZero())
+        return *this;
     if (approximation_ || b.approximation_) {
         const std::shared_ptr<const std::string> reason = reason_ ? reason_ : b.reason_;
         *this = inexact(approximation() / b.approximation(), *reason);

@@ -126,8 +126,9 @@ TEST(Exact, CotangentsOfTheSpecialAnglesAreExact)
     EXPECT_FALSE(fifty.isExact());
     EXPECT_NE(fifty.inexactReason().find("cot(50 degrees / 2)"), std::string::npos);
     EXPECT_NEAR(double(fifty), 1 / std::tan(25 * 3.14159265358979323846 / 180), 1e-15);
-    // What an inexact value touches is inexact, and says why.
-    EXPECT_FALSE((fifty * 0 + 1).isExact());
+    // What an inexact value touches is inexact, and says why; but times an exact zero it is zero.
+    EXPECT_FALSE((fifty * 2 + 1).isExact());
+    EXPECT_EQ(fifty * 0 + 1, Exact(1));
     EXPECT_EQ((Exact(2) * fifty).inexactReason(), fifty.inexactReason());
 }
 
@@ -213,6 +214,30 @@ TEST(ExactPipeline, TheFrustumsOwnCornersAreInside)
         EXPECT_TRUE(trace.inside) << c.world.transpose();
     }
     EXPECT_EQ(p.projectionMatrix->row(2), rows({{"0", "0", "-3/2", "-5"}, {"0", "0", "0", "0"}, {"0", "0", "0", "0"}, {"0", "0", "0", "0"}}).row(0));
+}
+
+// gluPerspective at 70 degrees: cot(35) is no root, and only the entries it reaches are inexact.
+// The eye's translation, the zeros beside the scale and P_depth's -(f + n)/(f - n) = -31/29 and
+// -2fn/(f - n) = -120/29 (near 2, far 60; the glFrustum reference page) stay exact through the product
+// (found: every entry of the composite marked inexact, 0 as "~0").
+TEST(ExactPipeline, AnInexactCotangentTouchesOnlyTheEntriesItReaches)
+{
+    const Scene scene = parseScene(R"({"camera": {"look_at": {"eye": [8, 6, 40], "center": [8, 6, 0], "up": [0, 1, 0]},
+        "projection": {"type": "perspective", "fovy_deg": 70, "aspect": 1.5, "near": 2, "far": 60}}})", ".");
+    const Pipeline<Exact> p = exactPipeline(scene);
+    const Mat4<Exact>& m = p.composite;
+    for (const auto& [row, column] : {std::pair(0, 0), std::pair(0, 3), std::pair(1, 1), std::pair(1, 3)})
+        EXPECT_FALSE(m(row, column).isExact()) << row << ", " << column;
+    for (const auto& [row, column] : {std::pair(0, 1), std::pair(0, 2), std::pair(1, 0), std::pair(1, 2), std::pair(2, 0),
+                                      std::pair(2, 1), std::pair(3, 0), std::pair(3, 1)})
+        EXPECT_TRUE(m(row, column).isExactZero()) << row << ", " << column;
+    EXPECT_EQ(m(2, 2), parseExact("-31/29"));
+    EXPECT_EQ(m(2, 3), parseExact("-31/29*(-40) - 120/29"));
+    EXPECT_EQ(m(3, 2), Exact(-1));
+    EXPECT_EQ(m(3, 3), Exact(40));
+    EXPECT_TRUE((Exact(0) * m(0, 0)).isExactZero());
+    EXPECT_TRUE((m(0, 0) * Exact(0) + Exact(0)).isExactZero());
+    EXPECT_EQ(Exact(0) + m(0, 0), m(0, 0));
 }
 
 TEST(ExactScene, ExpressionsAreReadExactlyAndSavedAsTyped)

@@ -45,6 +45,9 @@ public:
     Rational rational() const; // the value, when isRational()
     int sign() const;          // -1, 0 or 1, decided exactly when exact
     bool isInfinite() const { return infinity_ != 0; }
+    // Zero exactly: what an inexact value times it, or plus it, is exactly (a rotation's 0 entries stay 0
+    // beside gluPerspective's inexact cot).
+    bool isExactZero() const { return isExact() && infinity_ == 0 && terms_.empty(); }
 
     Approximation approximation() const;
     explicit operator double() const;
