@@ -5,6 +5,8 @@
 #include "viewpipe/math_text.hpp"
 
 #include <QBuffer>
+#include <QDir>
+#include <QFile>
 #include <QFont>
 #include <QFontMetricsF>
 #include <QImage>
@@ -20,6 +22,8 @@
 #include <cmath>
 #include <memory>
 
+#include <unistd.h>
+
 namespace viewpipe::gui {
 namespace {
 
@@ -28,6 +32,14 @@ void ensureGuiApplication()
 {
     if (QCoreApplication::instance())
         return;
+    // Without a session (a console, xvfb-run) Qt warns on stderr that XDG_RUNTIME_DIR is not set and
+    // takes /tmp/runtime-USER: the same folder, named before it looks, keeps the command's output clean.
+    if (!qEnvironmentVariableIsSet("XDG_RUNTIME_DIR")) {
+        const QString runtime = QDir::tempPath() + "/runtime-" + QString::number(::getuid());
+        if (QDir().mkpath(runtime) && QFile::setPermissions(runtime, QFileDevice::ReadOwner | QFileDevice::WriteOwner |
+                                                                         QFileDevice::ExeOwner))
+            qputenv("XDG_RUNTIME_DIR", runtime.toLocal8Bit());
+    }
     static int argc = 3;
     static char name[] = "viewpipe", option[] = "-platform", platform[] = "offscreen";
     static char* argv[] = {name, option, platform, nullptr};
