@@ -20,7 +20,7 @@ Stepper::Stepper(const Document* document, ScenePainter* painter, QObject* paren
     : QObject(parent), document_(document), painter_(painter), animation_(new QVariantAnimation(this)),
       stepMilliseconds_(kStepMilliseconds)
 {
-    clock_.start();
+    steady_.start();
     animation_->setStartValue(0.0);
     animation_->setEndValue(1.0);
     connect(animation_, &QVariantAnimation::valueChanged, this, [this](const QVariant& v) {
@@ -127,7 +127,7 @@ void Stepper::startStep(bool follows)
     // end, so the time the stage at rest took on the way (its matrices, both views
     // drawn) is made up by dropping frames, not added to Play. However late, the
     // step still shows its last frame moving.
-    const qint64 now = clock_.elapsed();
+    const qint64 now = clock_ ? clock_() : steady_.elapsed();
     const qint64 late = follows ? std::clamp<qint64>(now - stepEnds_, 0, stepMilliseconds_ - 1) : 0;
     stepEnds_ = now - late + stepMilliseconds_;
     if (late == 0) {

@@ -7,6 +7,7 @@
 #include <QElapsedTimer>
 #include <QObject>
 
+#include <functional>
 #include <optional>
 
 #include "viewpipe/report/world_view.hpp"
@@ -44,6 +45,9 @@ public:
     bool isPlaying() const { return playing_; }
     // After the document's scene changed: the picture at rest at the same stage, or the last one.
     void restart();
+    // The clock steps keep to, in milliseconds: a steady clock (none given) unless a test drives its own
+    // (with the animations' driver, QAnimationDriver, on the same time).
+    void setClock(std::function<qint64()> clock) { clock_ = std::move(clock); }
 
 signals:
     // A transition's frame is on the painter: the world view needs drawing.
@@ -69,7 +73,8 @@ private:
     int stepMilliseconds_;
     bool playing_ = false;
     std::optional<StageMotion> transition_;
-    QElapsedTimer clock_;
+    QElapsedTimer steady_;
+    std::function<qint64()> clock_; // none: steady_
     qint64 stepEnds_ = 0; // on clock_: when the running step is due to end
 };
 

@@ -4,7 +4,7 @@
 #include <QApplication>
 #include <QClipboard>
 #include <QDockWidget>
-#include <QElapsedTimer>
+#include <QAnimationDriver>
 #include <QFileDialog>
 #include <QMenuBar>
 #include <QProgressDialog>
@@ -24,6 +24,7 @@
 #include <QtTest>
 
 #include <atomic>
+#include <functional>
 
 #include <vtkActor.h>
 #include <vtkCamera.h>
@@ -130,6 +131,40 @@ void clickWhereDrawn(MainWindow& window, const Vec3<double>& world)
     const QPoint at(int(std::lround(display[0] / ratio)), int(std::lround(view->height() - display[1] / ratio)));
     QTest::mouseClick(view, Qt::LeftButton, Qt::NoModifier, at);
 }
+
+// A clock the test owns: Qt's animations (through their driver) and the stepper read it, and it
+// moves only when the test ticks it, so that no test waits on the machine's speed.
+class TestClock : public QAnimationDriver {
+public:
+    static constexpr qint64 kTick = 16; // ms: a 60 Hz screen's frame
+    explicit TestClock(viewpipe::gui::Stepper& stepper) : stepper_(stepper)
+    {
+        install();
+        stepper_.setClock([this] { return now; });
+    }
+    ~TestClock() override
+    {
+        uninstall();
+        stepper_.setClock({});
+    }
+    qint64 elapsed() const override { return now; }
+    // Ticks until `running` is false, handling events between ticks; false if it never stops (a minute).
+    bool runWhile(const std::function<bool()>& running)
+    {
+        for (int ticks = 0; running(); ++ticks) {
+            if (ticks > 60000 / kTick)
+                return false;
+            now += kTick;
+            advance();
+            QCoreApplication::processEvents();
+        }
+        return true;
+    }
+    qint64 now = 0;
+
+private:
+    viewpipe::gui::Stepper& stepper_;
+};
 
 } // namespace
 
@@ -326,42 +361,44 @@ private slots:
         QCOMPARE(w.stepper()->stage(), 0);
     }
 
-    // Behaviour only: how fast the frames come is measured in bench/, not asserted here.
+    // Behaviour only: how fast the frames come is measured in bench/, not asserted here. On the test's
+    // clock (a tick every 16 ms, as a 60 Hz screen's), a step of a second shows a frame each tick.
     void transitionsProduceFramesAndEndOnTheTarget()
     {
         MainWindow& w = *window_;
+        TestClock clock(*w.stepper());
         int frames = 0;
         QVariantAnimation* animation = w.stepper()->findChild<QVariantAnimation*>();
         QVERIFY(animation);
         connect(animation, &QVariantAnimation::valueChanged, this, [&frames] { ++frames; });
         w.stepper()->goToStage(1);
         QVERIFY(w.stepper()->isAnimating());
-        waitForRest(w);
-        QVERIFY2(frames >= 2, qPrintable(QString::number(frames)));
+        QVERIFY(clock.runWhile([&] { return w.stepper()->isAnimating(); }));
+        QVERIFY2(std::abs(frames - 1000 / TestClock::kTick) <= 2, qPrintable(QString::number(frames)));
         QCOMPARE(w.stepper()->stage(), 1);
         QCOMPARE(w.stagePanel()->stageList()->currentRow(), 1);
+        w.stepper()->goToStage(0, false);
     }
 
     // Found: on a busy machine a step of Play took about 2 s, not the promised
     // second, as each stage at rest on the way (matrices, both views drawn) came
-    // on top. Here each rest takes 400 ms more; each following step must start
-    // at least as far along its second as the rest before it lasted (both read
-    // from the same clock), making the time up by dropping frames. The last rest
-    // takes longer than a step: that step still starts at its last moving frame.
-    // No speed is asserted: a busier machine only rests longer and starts later.
+    // on top. Here each rest takes 400 ms of the test's clock; each following step
+    // starts as far along its second as the rest before it lasted (to the tick),
+    // making the time up by dropping frames. The last rest takes longer than a
+    // step: that step still starts at its last moving frame.
     void playKeepsToTheClockWhenRestingIsSlow()
     {
         MainWindow& w = *window_;
+        TestClock clock(*w.stepper());
         w.stepper()->goToStage(0, false);
         QVariantAnimation* animation = w.stepper()->findChild<QVariantAnimation*>();
         QVERIFY(animation);
         QList<qint64> rested; // how long each rest before a following step lasted, in ms
         const auto busy = connect(w.stepper(), &Stepper::rested, this, [&] {
-            QElapsedTimer resting;
-            resting.start();
-            QThread::msleep(w.stepper()->stage() == 4 ? 1200 : 400);
+            const qint64 resting = w.stepper()->stage() == 4 ? 1200 : 400;
+            clock.now += resting;
             if (w.stepper()->stage() >= 1 && w.stepper()->stage() <= 4)
-                rested << resting.elapsed();
+                rested << resting;
         });
         QList<int> startedAt; // each following step's time, in ms, as it starts
         const auto started = connect(w.stepper(), &Stepper::moved, this, [&] {
@@ -369,15 +406,15 @@ private slots:
                 startedAt << animation->currentTime();
         });
         w.stepper()->play();
-        QTRY_VERIFY_WITH_TIMEOUT(!w.stepper()->isPlaying(), 30000);
+        QVERIFY(clock.runWhile([&] { return w.stepper()->isPlaying(); }));
         disconnect(busy);
         disconnect(started);
         QCOMPARE(w.stepper()->stage(), 5);
         QCOMPARE(startedAt.size(), 4); // steps 2 to 5 each follow a rest
         QCOMPARE(rested.size(), 4);
-        for (int k = 0; k < 3; ++k)
-            QVERIFY2(startedAt[k] >= rested[k], qPrintable(QString("step %1 started %2 ms along after a rest of %3 ms")
-                                                                .arg(k + 2).arg(startedAt[k]).arg(rested[k])));
+        for (int k = 0; k < 3; ++k) // late by the rest, and by at most the tick in which the step before ended
+            QVERIFY2(startedAt[k] >= rested[k] && startedAt[k] <= rested[k] + TestClock::kTick,
+                     qPrintable(QString("step %1 started %2 ms along after a rest of %3 ms").arg(k + 2).arg(startedAt[k]).arg(rested[k])));
         QCOMPARE(startedAt.last(), animation->duration() - 1); // later than the step lasts: its last frame
         w.stepper()->goToStage(0, false);
     }
