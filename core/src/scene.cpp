@@ -189,6 +189,11 @@ public:
         constexpr int kNumberOverflow = 406;
         if (error.id == kNumberOverflow)
             throw InputError(pendingPath(), "not a finite number");
+        // NaN and Infinity as JavaScript writes them are no JSON: say so at the field, not as a stray "N".
+        const std::string word = token.substr(std::min(token.size(), token.find_last_of(" \t\n\r,:[") + 1));
+        for (const char* start : {"N", "n", "I", "-I", "i", "-i"})
+            if (!word.empty() && word.rfind(start, 0) == 0)
+                throw InputError(pendingPath(), "NaN and Infinity are not JSON numbers: write a finite number");
         return dom_.parse_error(position, token, error);
     }
 

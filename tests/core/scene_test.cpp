@@ -129,6 +129,20 @@ TEST(Scene, NumberOverflowNamesTheField)
     refused("1e999", "$", "not a finite number");
 }
 
+// NaN and Infinity, as JavaScript writes them, are named at their field (found: "8:19: invalid literal;
+// last read: '6, N'"); a word that is no literal elsewhere keeps the syntax error.
+TEST(Scene, NanAndInfinityAreNamedAtTheirField)
+{
+    const std::string reason = "NaN and Infinity are not JSON numbers: write a finite number";
+    refused(withView(R"({"projection": "perspective", "vrp": [0, 0, 0], "vpn": [0, 0, 1], "vup": [0, 1, 0],
+        "prp": [8, 6, NaN], "window": [-50, 50, -50, 50], "front": 60, "back": 25})"),
+            "view.prp[2]", reason);
+    refused(withView(R"({"projection": "perspective", "vrp": [0, 0, 0], "vpn": [0, 0, 1], "vup": [0, 1, 0],
+        "prp": [8, 6, 84], "window": [-50, 50, -50, 50], "front": -Infinity, "back": 25})"),
+            "view.front", reason);
+    refused("{\"name\": tru}", "1:13", "invalid literal");
+}
+
 TEST(Scene, SaveLoadRoundTripIsAtomic)
 {
     const std::filesystem::path dir = std::filesystem::temp_directory_path() / "viewpipe-scene-test";
