@@ -784,10 +784,11 @@ LessonPack packLesson(const Lesson& lesson, const std::string& lessonFileName, c
 std::vector<std::filesystem::path> filesOutside(const Lesson& lesson, const std::filesystem::path& folder)
 {
     namespace fs = std::filesystem;
-    const fs::path inside = fs::weakly_canonical(fs::absolute(folder));
+    std::error_code ignored; // a folder that cannot be read is compared as named
+    const fs::path inside = fs::weakly_canonical(fs::absolute(folder), ignored);
     std::set<fs::path> outside;
     const auto check = [&](const fs::path& file) {
-        const fs::path canonical = fs::weakly_canonical(fs::absolute(file));
+        const fs::path canonical = fs::weakly_canonical(fs::absolute(file), ignored);
         const fs::path up = canonical.lexically_relative(inside);
         if (up.empty() || *up.begin() == "..")
             outside.insert(canonical);

@@ -116,6 +116,17 @@ void Stepper::restart()
     emit moved();
 }
 
+void Stepper::setClock(std::function<qint64()> clock)
+{
+    clock_ = std::move(clock);
+    stepEnds_ = now(); // a step following one timed on the old clock starts at once
+}
+
+qint64 Stepper::now() const
+{
+    return clock_ ? clock_() : steady_.elapsed();
+}
+
 void Stepper::startStep(bool follows)
 {
     const int next = stage_ + (target_ > stage_ ? 1 : -1);
@@ -127,9 +138,9 @@ void Stepper::startStep(bool follows)
     // end, so the time the stage at rest took on the way (its matrices, both views
     // drawn) is made up by dropping frames, not added to Play. However late, the
     // step still shows its last frame moving.
-    const qint64 now = clock_ ? clock_() : steady_.elapsed();
-    const qint64 late = follows ? std::clamp<qint64>(now - stepEnds_, 0, stepMilliseconds_ - 1) : 0;
-    stepEnds_ = now - late + stepMilliseconds_;
+    const qint64 started = now();
+    const qint64 late = follows ? std::clamp<qint64>(started - stepEnds_, 0, stepMilliseconds_ - 1) : 0;
+    stepEnds_ = started - late + stepMilliseconds_;
     if (late == 0) {
         animation_->start();
         return;

@@ -47,7 +47,7 @@ public:
     void restart();
     // The clock steps keep to, in milliseconds: a steady clock (none given) unless a test drives its own
     // (with the animations' driver, QAnimationDriver, on the same time).
-    void setClock(std::function<qint64()> clock) { clock_ = std::move(clock); }
+    void setClock(std::function<qint64()> clock);
 
 signals:
     // A transition's frame is on the painter: the world view needs drawing.
@@ -63,6 +63,7 @@ private:
     // `follows`: the step follows one that just ended, and keeps to its time.
     void startStep(bool follows);
     void rest();
+    qint64 now() const; // on the clock steps keep to
 
     const Document* document_;
     ScenePainter* painter_;

@@ -132,7 +132,7 @@ struct Format {
     std::function<void(const StagePicture&, const fs::path&)> writeStage;
     std::function<void(SceneOutput&)> writeScene;
     std::function<int(const EvaluatedScene&)> sceneSteps; // progress steps of writeScene
-    std::function<void(const StoryboardPictures&, const fs::path&)> writeStoryboard = {};
+    std::function<void(const StoryboardPictures&, const fs::path&)> writeStoryboardFile = {};
 };
 
 // The web page's steps: every stage recorded, then the page.
@@ -292,6 +292,12 @@ void validate(const ExportOptions& o)
         throw InputError("--zoom", "must be 0.1 to 10");
     if (o.storyboard && o.animate)
         throw InputError("--animate", "a storyboard shows every stage at once: it has no animation");
+    if (o.storyboard && o.transparent)
+        throw InputError("--transparent", "a storyboard is drawn on its theme's background");
+    if (o.storyboard && std::none_of(o.formats.begin(), o.formats.end(), [](const std::string& name) {
+            return bool(formatNamed(name).writeStoryboardFile);
+        }))
+        throw InputError("--format", "a storyboard is drawn as png, svg, pdf or tikz: name one of them");
     const std::vector<std::string> names = hideNames();
     for (const std::string& name : o.hidden)
         if (std::find(names.begin(), names.end(), name) == names.end()) {
@@ -353,15 +359,16 @@ void writeStoryboardFiles(const std::shared_ptr<const EvaluatedScene>& evaluated
         step("storyboard: stage " + std::to_string(k));
         StageShown shown = showStageAtRest(offscreen, *cellScene, k, "", framing);
         shown.traced = traced;
-        pictures.storyboard.cells.push_back(
-            flatFigure(VectorFigure{&shown, painter.figureView(), "", painter.placedLabels(), options.theme}));
+        Figure figure = flatFigure(VectorFigure{&shown, painter.figureView(), "", painter.placedLabels(), options.theme});
+        cutShapesTo(figure, {{0, 0}, {double(figure.width), double(figure.height)}});
+        pictures.storyboard.cells.push_back(std::move(figure));
         pictures.cellPngs.push_back(windowPng(offscreen.window, false));
     }
     for (const Format* format : formats)
-        if (format->writeStoryboard) {
+        if (format->writeStoryboardFile) {
             const std::string file = "storyboard" + format->suffix;
             step(file);
-            format->writeStoryboard(pictures, folder / file);
+            format->writeStoryboardFile(pictures, folder / file);
         }
 }
 
@@ -541,7 +548,7 @@ std::vector<fs::path> exportStages(const std::shared_ptr<const EvaluatedScene>& 
     if (options.storyboard)
         total += int(chosen.size());
     for (const Format* format : formats)
-        total += options.storyboard ? (format->writeStoryboard ? 1 : 0) + (format->writeScene && !format->writeStage ? format->sceneSteps(*evaluated) : 0)
+        total += options.storyboard ? (format->writeStoryboardFile ? 1 : 0) + (format->writeScene && !format->writeStage ? format->sceneSteps(*evaluated) : 0)
                                     : (format->writeStage ? int(chosen.size()) : 0) + (format->writeScene ? format->sceneSteps(*evaluated) : 0);
     Steps step(progress, cancel, total);
 

@@ -7,6 +7,7 @@
 #include <QBuffer>
 #include <QDir>
 #include <QFile>
+#include <QFileInfo>
 #include <QFont>
 #include <QFontMetricsF>
 #include <QImage>
@@ -22,6 +23,7 @@
 #include <cmath>
 #include <memory>
 
+#include <pwd.h>
 #include <unistd.h>
 
 namespace viewpipe::gui {
@@ -34,10 +36,14 @@ void ensureGuiApplication()
         return;
     // Without a session (a console, xvfb-run) Qt warns on stderr that XDG_RUNTIME_DIR is not set and
     // takes /tmp/runtime-USER: the same folder, named before it looks, keeps the command's output clean.
-    if (!qEnvironmentVariableIsSet("XDG_RUNTIME_DIR")) {
-        const QString runtime = QDir::tempPath() + "/runtime-" + QString::number(::getuid());
-        if (QDir().mkpath(runtime) && QFile::setPermissions(runtime, QFileDevice::ReadOwner | QFileDevice::WriteOwner |
-                                                                         QFileDevice::ExeOwner))
+    // Only a folder of our own (not a link someone left in /tmp); else Qt's own checks and warning.
+    const passwd* user = ::getpwuid(::geteuid());
+    if (!qEnvironmentVariableIsSet("XDG_RUNTIME_DIR") && user) {
+        const QString runtime = QDir::tempPath() + "/runtime-" + QString::fromLocal8Bit(user->pw_name);
+        QDir().mkdir(runtime);
+        const QFileInfo folder(runtime);
+        if (folder.isDir() && !folder.isSymLink() && folder.ownerId() == ::geteuid() &&
+            QFile::setPermissions(runtime, QFileDevice::ReadOwner | QFileDevice::WriteOwner | QFileDevice::ExeOwner))
             qputenv("XDG_RUNTIME_DIR", runtime.toLocal8Bit());
     }
     static int argc = 3;
@@ -202,14 +208,14 @@ void paintFigure(QPainter& painter, const Figure& figure, Theme theme)
     drawLegend(painter, figure, theme);
 }
 
-// A page of `width` by `height` on the theme's background, drawn by `draw`, as SVG, PDF or PNG bytes.
-QByteArray pageBytes(int width, int height, Theme theme, const std::string& format, const std::string& title,
-                     const std::function<void(QPainter&)>& draw)
+// Writes `file` atomically: a page of `width` by `height` on the theme's background, drawn by `draw`, as
+// SVG, PDF or PNG (by `format`); throws std::runtime_error when it cannot.
+void writePage(const std::filesystem::path& file, int width, int height, Theme theme, const std::string& format,
+               const std::string& title, const std::function<void(QPainter&)>& draw)
 {
     QBuffer buffer;
     buffer.open(QIODevice::WriteOnly);
     std::unique_ptr<QPaintDevice> device;
-    QImage image;
     if (format == "svg") {
         auto svg = std::make_unique<QSvgGenerator>();
         svg->setOutputDevice(&buffer);
@@ -227,22 +233,22 @@ QByteArray pageBytes(int width, int height, Theme theme, const std::string& form
         pdf->setTitle(QString::fromStdString(mathSpokenText(title)));
         pdf->setCreator("ViewPipe");
         device = std::move(pdf);
+    } else if (format == "png") {
+        device = std::make_unique<QImage>(width, height, QImage::Format_RGB32);
     } else {
-        image = QImage(width, height, QImage::Format_RGB32);
+        throw std::logic_error("no page format \"" + format + "\"");
     }
     QPainter painter;
-    if (!painter.begin(device ? device.get() : &image))
-        throw std::runtime_error("cannot draw the " + format + " figure");
+    if (!painter.begin(device.get()))
+        throw std::runtime_error("cannot draw " + file.string());
     painter.setRenderHint(QPainter::Antialiasing);
     const QRectF page(0, 0, width, height);
     painter.fillRect(page, qtColor(backgroundColor(theme, false)));
     painter.setClipRect(page);
     draw(painter);
     painter.end();
-    if (!device) {
-        image.save(&buffer, "PNG");
-        return buffer.data();
-    }
+    if (format == "png" && !static_cast<QImage*>(device.get())->save(&buffer, "PNG"))
+        throw std::runtime_error("cannot encode " + file.string() + " as PNG");
     QByteArray bytes = buffer.data();
     if (format == "svg") {
         // QSvgGenerator states the size in millimetres at its resolution, and a
@@ -250,7 +256,7 @@ QByteArray pageBytes(int width, int height, Theme theme, const std::string& form
         const QString size = QString(R"(width="%1px" height="%2px")").arg(width).arg(height);
         bytes = QString::fromUtf8(bytes).replace(QRegularExpression(R"re(width="[0-9.]+mm" height="[0-9.]+mm")re"), size).toUtf8();
     }
-    return bytes;
+    writeFileAtomically(file, bytes.toStdString());
 }
 
 } // namespace
@@ -269,9 +275,8 @@ void writeVectorFigure(const VectorFigure& f, const std::string& format, const s
 {
     ensureGuiApplication();
     const Figure figure = flatFigure(f);
-    writeFileAtomically(file, pageBytes(figure.width, figure.height, f.theme, format, f.caption, [&](QPainter& painter) {
-                                  paintFigure(painter, figure, f.theme);
-                              }).toStdString());
+    writePage(file, figure.width, figure.height, f.theme, format, f.caption,
+              [&](QPainter& painter) { paintFigure(painter, figure, f.theme); });
 }
 
 void writeStoryboard(const Storyboard& storyboard, Theme theme, const std::string& format, const std::filesystem::path& file,
@@ -279,7 +284,7 @@ void writeStoryboard(const Storyboard& storyboard, Theme theme, const std::strin
 {
     ensureGuiApplication();
     const StoryboardLayout& layout = storyboard.layout;
-    const QByteArray bytes = pageBytes(layout.width, layout.height, theme, format, storyboard.title, [&](QPainter& painter) {
+    writePage(file, layout.width, layout.height, theme, format, storyboard.title, [&](QPainter& painter) {
         for (std::size_t k = 0; k < layout.cells.size(); ++k) {
             const Box2& box = layout.cells[k].picture;
             painter.save();
@@ -293,7 +298,6 @@ void writeStoryboard(const Storyboard& storyboard, Theme theme, const std::strin
         }
         paintFigure(painter, storyboard.overlay, theme);
     });
-    writeFileAtomically(file, bytes.toStdString());
 }
 
 } // namespace viewpipe::gui

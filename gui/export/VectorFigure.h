@@ -3,7 +3,8 @@
 // A stage's flat figure as true vector graphics through Qt's QSvgGenerator
 // and QPdfWriter: lines as paths, faces as filled polygons back to front,
 // labels, caption and legend as text (the PDF embeds its font). The same
-// palette, framing and labels as the PNG of the stage.
+// palette, framing and labels as the PNG of the stage. A storyboard's cells
+// and overlay the same way, or as one PNG of the painter's cell pictures.
 
 #include <filesystem>
 #include <string>

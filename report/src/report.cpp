@@ -527,7 +527,9 @@ std::string verdictText(const Json& trace)
 
 void printTrace(std::ostream& out, const Scene& scene, const Vec3<Exact>& point, const PrecisionChoice& precision)
 {
-    // A JSON number, or a wide one written as a string.
+    // w's sign from its number, or from the decimal a wide precision writes; never from an exact
+    // expression's first term ("-64/5 + 48*sqrt(2)/5" is positive): traceJson gives it as a number too.
+    const auto behindTheEye = [](const Json& w) { return w.is_string() ? w.get<std::string>().front() == '-' : w.get<double>() < 0; };
     const Json t = traceJson(scene, point, precision);
     const Json& numbers = t.contains("exact") ? t["exact"] : t; // exact values as they are
     auto show = [](const Json& v) {
@@ -557,8 +559,7 @@ void printTrace(std::ostream& out, const Scene& scene, const Vec3<Exact>& point,
         out << "  divide: w = 0, the point lies on the eye plane and has no image\n";
     else
         out << "  after the divide: " << show(numbers["divided"])
-            // The sign of w as the nearest double keeps it (an exact w reads "-64/5 + 48*sqrt(2)/5", and is positive).
-            << (t["clip"].back().get<double>() < 0 ? "  (w < 0: behind the eye, a false image)" : "") << "\n";
+            << (behindTheEye(t["clip"].back()) ? "  (w < 0: behind the eye, a false image)" : "") << "\n";
     out << "  " << verdictText(t) << "\n";
     if (t.contains("clipping")) {
         const Json& c = t["clipping"];

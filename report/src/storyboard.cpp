@@ -2,6 +2,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <optional>
+#include <utility>
 
 #include "viewpipe/format.hpp"
 #include "viewpipe/report/style.hpp"
@@ -65,6 +67,84 @@ StoryboardLayout layoutStoryboard(const std::vector<int>& stages, int width, int
     return layout;
 }
 
+namespace {
+
+// Sutherland–Hodgman: the part of a convex or concave polygon on the inner side of one edge of a box.
+std::vector<Vec2<double>> clipPolygon(const std::vector<Vec2<double>>& polygon, int axis, double bound, bool below)
+{
+    std::vector<Vec2<double>> kept;
+    const auto inside = [&](const Vec2<double>& p) { return below ? p[axis] <= bound : p[axis] >= bound; };
+    for (std::size_t k = 0; k < polygon.size(); ++k) {
+        const Vec2<double>& a = polygon[k];
+        const Vec2<double>& b = polygon[(k + 1) % polygon.size()];
+        if (inside(a))
+            kept.push_back(a);
+        if (inside(a) != inside(b))
+            kept.push_back(a + (b - a) * ((bound - a[axis]) / (b[axis] - a[axis])));
+    }
+    return kept;
+}
+
+// Liang–Barsky: the part of segment ab inside the box, if any.
+std::optional<std::pair<Vec2<double>, Vec2<double>>> clipSegment(const Vec2<double>& a, const Vec2<double>& b, const Box2& box)
+{
+    double enter = 0, leave = 1;
+    const Vec2<double> d = b - a;
+    for (int axis = 0; axis < 2; ++axis)
+        for (const auto& [p, q] : {std::pair(-d[axis], a[axis] - box.min[axis]), std::pair(d[axis], box.max[axis] - a[axis])}) {
+            if (p == 0) {
+                if (q < 0)
+                    return std::nullopt;
+                continue;
+            }
+            const double t = q / p;
+            if (p < 0)
+                enter = std::max(enter, t);
+            else
+                leave = std::min(leave, t);
+        }
+    if (enter > leave)
+        return std::nullopt;
+    // The ends themselves where they are inside: a polyline's pieces join where its points are equal.
+    return std::make_pair(enter == 0 ? a : Vec2<double>(a + enter * d), leave == 1 ? b : Vec2<double>(a + leave * d));
+}
+
+} // namespace
+
+void cutShapesTo(Figure& figure, const Box2& box)
+{
+    std::vector<FigureShape> cut;
+    for (FigureShape& shape : figure.shapes) {
+        if (shape.surface) {
+            for (int axis = 0; axis < 2 && !shape.points.empty(); ++axis) {
+                shape.points = clipPolygon(shape.points, axis, box.min[axis], false);
+                shape.points = clipPolygon(shape.points, axis, box.max[axis], true);
+            }
+            if (shape.points.size() >= 3)
+                cut.push_back(std::move(shape));
+            continue;
+        }
+        // A polyline in the pieces that stay inside, each a polyline of its own.
+        FigureShape piece = shape;
+        piece.points.clear();
+        for (std::size_t k = 0; k + 1 < shape.points.size(); ++k) {
+            const auto kept = clipSegment(shape.points[k], shape.points[k + 1], box);
+            if (kept && !piece.points.empty() && piece.points.back() == kept->first) {
+                piece.points.push_back(kept->second);
+                continue;
+            }
+            if (piece.points.size() >= 2)
+                cut.push_back(piece);
+            piece.points.clear();
+            if (kept)
+                piece.points = {kept->first, kept->second};
+        }
+        if (piece.points.size() >= 2)
+            cut.push_back(piece);
+    }
+    figure.shapes = std::move(cut);
+}
+
 Vec3<double> storyboardTracedPoint(const EvaluatedScene& scene)
 {
     const std::vector<Vec3<double>> vertices = scene.objectVertices();
@@ -110,12 +190,13 @@ Figure storyboardOverlay(const EvaluatedScene& scene, const StoryboardLayout& la
         const StoryboardCell& cell = layout.cells[i];
         const double middle = (cell.header.min.y() + cell.header.max.y()) / 2;
         double textLeft = cell.header.min.x();
-        if (cell.stage > 0) {
-            // From the view before, across the gap where it is in the same row.
+        // An arrow from the picture before where that is the stage before: its matrix leads here.
+        if (i > 0 && layout.cells[i - 1].stage == cell.stage - 1) {
+            // Across the gap where the picture before is in the same row.
             const bool rowStart = i % std::size_t(layout.columns) == 0;
             const double from = rowStart ? cell.header.min.x() : cell.header.min.x() - 0.8 * gap,
                          tip = from + 1.6 * size, head = 0.45 * size;
-            const double width = lineWidthOf(Element::Frame, false) * overlay.lineScale * 1.5;
+            const double width = lineWidthOf(Element::Frame, false) * overlay.lineScale; // as TikZ's style draws it
             overlay.shapes.push_back({Element::Frame, false, 1, width, {{from, middle}, {tip - head, middle}}, 0});
             overlay.shapes.push_back({Element::Frame, true, 1, 0,
                                       {{tip, middle}, {tip - head, middle - 0.45 * head}, {tip - head, middle + 0.45 * head}},

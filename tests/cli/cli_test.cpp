@@ -594,8 +594,14 @@ TEST(Cli, ExactTraceReadsTheSignOfW)
     EXPECT_EQ(r.exitCode, 0) << r.err;
     EXPECT_NE(r.out.find("-64/5 + 48*sqrt(2)/5)"), std::string::npos) << r.out;
     EXPECT_EQ(r.out.find("behind the eye"), std::string::npos) << r.out;
-    r = run("trace " + viewD + " --point 40 0 80 --precision exact");
-    EXPECT_NE(r.out.find("(w < 0: behind the eye, a false image)"), std::string::npos) << r.out;
+    // Every precision: the wide ones write their numbers as decimal strings.
+    for (const std::string precision : {"exact", "float", "double", "long-double", "float128", "mpfr"}) {
+        r = run("trace " + viewD + " --point 40 0 80 --precision " + precision);
+        EXPECT_EQ(r.exitCode, 0) << precision << ": " << r.err;
+        EXPECT_NE(r.out.find("(w < 0: behind the eye, a false image)"), std::string::npos) << precision << ": " << r.out;
+        r = run("trace " + viewD + " --point 16 10 30 --precision " + precision);
+        EXPECT_EQ(r.out.find("behind the eye"), std::string::npos) << precision << ": " << r.out;
+    }
 }
 
 } // namespace

@@ -20,6 +20,7 @@
 #include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <functional>
 #include <map>
 #include <optional>
 #include <set>
@@ -682,7 +683,7 @@ TEST(ExportLayout, TheSubjectFillsThePicture)
 
 // Every stage at once: one file a format, each stage's picture in its cell (drawn, and not the same
 // picture twice where the stages move things), its header and traced coordinates in the SVG, and the
-// PDF's words naming the world; an animation refused.
+// PDF's words naming the world; an animation, a transparent background and no storyboard format refused.
 TEST(ExportLayout, TheStoryboardShowsEveryStageAtOnce)
 {
     for (const std::string name : {"house", "opengl-perspective", "clipping-eye-plane", "depth-corridor"}) {
@@ -742,8 +743,14 @@ TEST(ExportLayout, TheStoryboardShowsEveryStageAtOnce)
         EXPECT_EQ(page[0], 1280);
         fs::remove_all(out);
 
-        options.animate = true;
-        EXPECT_THROW(exportStages(scene, options, {}, cancel), InputError);
+        for (const auto& refused : std::vector<std::function<void(ExportOptions&)>>{
+                 [](ExportOptions& o) { o.animate = true; }, [](ExportOptions& o) { o.transparent = true; },
+                 [](ExportOptions& o) { o.formats = {"html"}; }}) {
+            ExportOptions asked = options;
+            refused(asked);
+            EXPECT_THROW(exportStages(scene, asked, {}, cancel), InputError);
+        }
+        EXPECT_FALSE(fs::exists(out));
     }
 }
 

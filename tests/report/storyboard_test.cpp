@@ -6,6 +6,8 @@
 
 #include <gtest/gtest.h>
 
+#include <cstdio>
+#include <cstring>
 #include <filesystem>
 
 #include "build_paths.h"
@@ -142,6 +144,36 @@ TEST(Storyboard, EachViewAfterTheFirstHasAnArrowNamingItsMatrix)
     EXPECT_EQ(labelOverlaps(overlay.labels), 0);
 }
 
+// A cell draws nothing outside its picture, in any format: lines and faces cut at its edges (a polyline
+// leaving and coming back is two pieces), what lies wholly outside dropped.
+TEST(Storyboard, ShapesAreCutToTheCell)
+{
+    using Points = std::vector<Vec2<double>>;
+    Figure figure;
+    figure.shapes.push_back({Element::Window, false, 1, 2, {{-50, 50}, {50, 50}, {150, 50}, {150, 80}, {50, 80}}, 0});
+    figure.shapes.push_back({Element::Volume, true, 0.5, 0, {{-50, -50}, {50, -50}, {50, 50}, {-50, 50}}, 0});
+    figure.shapes.push_back({Element::Dop, false, 1, 2, {{200, 200}, {300, 300}}, 0});
+    cutShapesTo(figure, {{0, 0}, {100, 100}});
+    ASSERT_EQ(figure.shapes.size(), 3u);
+    EXPECT_EQ(figure.shapes[0].points, (Points{{0, 50}, {50, 50}, {100, 50}}));
+    EXPECT_EQ(figure.shapes[1].points, (Points{{100, 80}, {50, 80}}));
+    EXPECT_EQ(figure.shapes[1].element, Element::Window);
+    EXPECT_EQ(figure.shapes[2].element, Element::Volume);
+    ASSERT_EQ(figure.shapes[2].points.size(), 4u);
+    for (const Vec2<double>& p : figure.shapes[2].points)
+        EXPECT_TRUE(p.x() >= 0 && p.x() <= 50 && p.y() >= 0 && p.y() <= 50) << p.transpose();
+}
+
+// Where pictures are left out between two cells no arrow joins them: T(-PRP) does not lead from the world.
+TEST(Storyboard, NoArrowJoinsPicturesOfStagesApart)
+{
+    const auto house = builtIn("house.json");
+    const StoryboardLayout layout = layoutStoryboard({0, 3, 4}, 1280, 720, storyboardLabelSize(1280, 1));
+    const Figure overlay = storyboardOverlay(*house, layout, {0, 0, 54}, roughMeasure(), 1);
+    EXPECT_EQ(overlay.shapes.size(), 2u); // the one arrow, into stage 4: its shaft and head
+    EXPECT_GT(overlay.shapes[1].points[0].x(), layout.cells[2].header.min.x());
+}
+
 // One document, each stage's figure in its box: pdflatex reads it as the single figures (tested there).
 TEST(Storyboard, TikzDrawsEveryCellInItsBoxThenTheOverlay)
 {
@@ -161,6 +193,11 @@ TEST(Storyboard, TikzDrawsEveryCellInItsBoxThenTheOverlay)
         const std::string mark = k == 0 ? "% the world\n" : "% stage " + std::to_string(k) + "\n";
         at = tex.find(mark, at);
         ASSERT_NE(at, std::string::npos) << mark;
+        // Moved to its picture's corner, in the picture's pixels (y down).
+        const Vec2<double>& corner = storyboard.layout.cells[k].picture.min;
+        char shift[64];
+        std::snprintf(shift, sizeof shift, "\\begin{scope}[shift={(%.1f,%.1f)}]", corner.x(), corner.y());
+        EXPECT_EQ(tex.compare(at + mark.size(), std::strlen(shift), shift), 0) << tex.substr(at, 120);
     }
     EXPECT_EQ(tex.find("\\begin{document}"), tex.rfind("\\begin{document}"));
     EXPECT_NE(tex.find("traced (\\textminus{}8, \\textminus{}6, \\textminus{}30)", at), std::string::npos);

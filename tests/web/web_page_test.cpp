@@ -933,7 +933,7 @@ TEST_F(WebPage, OnHalfALaptopScreenFoldsItsPanelsNamesItsViewsAndSavesTheView)
 
     // The vanishing lines (the overlay's pixels) inside the window, the blue rectangle the camera's view draws.
     const json marks = json::parse(browser.evaluate(R"(JSON.stringify((() => {
-        const bounds = (canvas, cumulativeAt) => {
+        const bounds = (canvas, isMarked) => {
           const copy = document.createElement('canvas');
           copy.width = canvas.width; copy.height = canvas.height;
           const context = copy.getContext('2d');
@@ -942,7 +942,7 @@ TEST_F(WebPage, OnHalfALaptopScreenFoldsItsPanelsNamesItsViewsAndSavesTheView)
           const b = { left: Infinity, top: Infinity, right: -Infinity, bottom: -Infinity, count: 0 };
           for (let y = 0; y < copy.height; ++y)
             for (let x = 0; x < copy.width; ++x) {
-              if (!cumulativeAt(pixels, 4 * (y * copy.width + x))) continue;
+              if (!isMarked(pixels, 4 * (y * copy.width + x))) continue;
               b.left = Math.min(b.left, x); b.right = Math.max(b.right, x);
               b.top = Math.min(b.top, y); b.bottom = Math.max(b.bottom, y); ++b.count;
             }

@@ -54,8 +54,9 @@ template <class T> Mat4<T> cumulativeAt(const std::vector<Stage<T>>& stages, dou
 }
 
 // Whether a stage keeps lengths and angles (translations, rotations, their
-// products, and the divide, which pictures already show): pictures of the stages it joins share one framing, so that they
-// show what it moved instead of following it.
+// products, and the divide, which pictures already show): pictures of the
+// stages it joins share one framing, so that they show what it moved instead
+// of following it.
 template <class T> bool keepsShape(const Stage<T>& stage)
 {
     const Mat4<T>& m = stage.matrix;

@@ -4,9 +4,8 @@
 // row or a grid, each cell a stage's own picture (the same display list as
 // its picture alone, labels placed for the cell's size), under a header whose
 // arrow comes from the view before and names the stage's matrix, over a
-// footer giving one traced point's coordinates in that stage's space. Its
-// text is as large as a single picture's set 16 cm wide: labels 8 pt, the
-// rest 6 pt. The writers (SVG, PDF, PNG, TikZ) draw each cell's figure moved
+// footer giving one traced point's coordinates in that stage's space. Set
+// 16 cm wide, its labels and headers are 8 pt, the rest 6 pt. The writers (SVG, PDF, PNG, TikZ) draw each cell's figure moved
 // into its cell, then the overlay. No VTK, no Qt.
 
 #include <string>
@@ -36,13 +35,18 @@ struct StoryboardLayout {
 };
 StoryboardLayout layoutStoryboard(const std::vector<int>& stages, int width, int height, double labelSize);
 
-// The point a storyboard traces unless asked: the objects' first vertex, else the VRP (or eye).
+// A figure's lines and faces cut to a box (its picture): a storyboard's cell draws nothing on its
+// neighbours in any format, SVG too, where Qt writes no clip region.
+void cutShapesTo(Figure& figure, const Box2& box);
+
+// The point a storyboard traces: the objects' first vertex, else the view volume's center.
 Vec3<double> storyboardTracedPoint(const EvaluatedScene& scene);
 // The traced point after stage k in that stage's coordinates, four significant digits:
 // "(8, 16, 30)", with w where the stage leaves it other than 1 ("(1, 2, 3, w = 4)").
 std::string tracedCoordinates(const EvaluatedScene& scene, const Vec3<double>& world, int k);
 
-// The headers (an arrow from the view before, the stage's number and matrix)
+// The headers (the stage's number and matrix, after an arrow from the picture before where that
+// is the stage before)
 // and footers (the traced point's coordinates) as a flat figure over the whole storyboard,
 // its lines `lineScale` as wide as a picture's at scale 1.
 Figure storyboardOverlay(const EvaluatedScene& scene, const StoryboardLayout& layout, const Vec3<double>& traced,
