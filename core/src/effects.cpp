@@ -140,10 +140,19 @@ std::vector<std::array<int, 2>> meshEdgeIndices(const PolygonMesh& mesh)
     return edges;
 }
 
+namespace {
+
+template <class T> T windowDepthOf(const Vec4<T>& clip, ClipVolume volume)
+{
+    const T z = clip.z() / clip.w();
+    return (z - T(nearPlaneZ(volume))) / T(farPlaneZ(volume) - nearPlaneZ(volume));
+}
+
+} // namespace
+
 double windowDepth(const Vec4<double>& clip, ClipVolume volume)
 {
-    const double z = clip.z() / clip.w();
-    return (z - nearPlaneZ(volume)) / (farPlaneZ(volume) - nearPlaneZ(volume));
+    return windowDepthOf(clip, volume);
 }
 
 double storedDepth(double depth, const DepthOptions& options)
@@ -266,8 +275,239 @@ ClipPoints clipPoints(const Mat4<double>& clip, const std::vector<PolygonMesh>& 
     return points;
 }
 
+// Where each vertex lies against the volume, decided exactly: in double where
+// every boundary value is farther from 0 than the error of computing it (the
+// double clip matrix's own error against the exact one, plus the products'
+// rounding), else with the exact clip matrix and the vertex's own value.
+class VertexVerdicts {
+public:
+    VertexVerdicts(const Mat4<double>& clip, const Mat4<Exact>* exact, ClipVolume volume)
+        : exact_(exact), volume_(volume)
+    {
+        if (!exact)
+            return;
+        constexpr double kRounding = 8 * std::numeric_limits<double>::epsilon();
+        for (int i = 0; i < 4; ++i)
+            for (int j = 0; j < 4; ++j) // the entry's error, rounded up, and its products' rounding
+                error_(i, j) = std::abs(double(Exact(clip(i, j)) - (*exact)(i, j))) * (1 + kRounding) +
+                               kRounding * std::abs(clip(i, j));
+    }
+
+    unsigned outcode(const Vec3<double>& vertex, const Vec4<double>& h) const
+    {
+        const std::array<double, 6> b = clipBoundaries(h, volume_);
+        unsigned code = 0;
+        for (int k = 0; k < 6; ++k)
+            code |= b[std::size_t(k)] < 0 ? 1u << k : 0u;
+        if (!exact_)
+            return code;
+        const double bound = 2 * clipError(vertex, h);
+        if (std::all_of(b.begin(), b.end(), [bound](double x) { return std::abs(x) > bound; }))
+            return code;
+        return clipVerdict(exactClipPoint(vertex), volume_).outside;
+    }
+
+    Vec4<Exact> exactClipPoint(const Vec3<double>& vertex) const
+    {
+        return *exact_ * Vec4<Exact>(Exact(vertex.x()), Exact(vertex.y()), Exact(vertex.z()), Exact(1));
+    }
+    bool exact() const { return exact_ != nullptr; }
+
+    // How far each of h's coordinates (the vertex through the double clip matrix) may lie from the exact one.
+    double clipError(const Vec3<double>& vertex, const Vec4<double>& h) const
+    {
+        const Vec4<double> reach = error_ * vertex.homogeneous().cwiseAbs();
+        return reach.maxCoeff() + 4 * std::numeric_limits<double>::epsilon() * h.cwiseAbs().maxCoeff();
+    }
+
+private:
+    const Mat4<Exact>* exact_;
+    ClipVolume volume_;
+    Mat4<double> error_ = Mat4<double>::Zero();
+};
+
+// A face as the depth buffer sees it: its corners' x, y and window depth, its
+// plane's normal in those coordinates, and the points the z-fighting check
+// samples (its centroid and 4/5 of the way from it to each corner).
+template <class T> struct FacePicture {
+    std::vector<Vec3<T>> corners;
+    Vec3<T> normal;
+    std::vector<Vec3<T>> samples;
+};
+
+template <class T> FacePicture<T> facePicture(const std::vector<Vec4<T>>& clip, ClipVolume volume)
+{
+    FacePicture<T> face;
+    for (const Vec4<T>& h : clip)
+        face.corners.emplace_back(h.x() / h.w(), h.y() / h.w(), windowDepthOf(h, volume));
+    const auto& v = face.corners;
+    face.normal = (v[1] - v[0]).cross(v[2] - v[0]);
+    Vec3<T> centroid = Vec3<T>::Zero();
+    for (const Vec3<T>& q : v)
+        centroid += q / T(int(v.size()));
+    face.samples = {centroid};
+    for (const Vec3<T>& q : v)
+        face.samples.push_back(centroid + T(4) / T(5) * (q - centroid));
+    return face;
+}
+
+// Which side of the edge from a to b the point q lies on (twice the signed area).
+template <class T> T edgeSide(const Vec2<T>& a, const Vec2<T>& b, const Vec2<T>& q)
+{
+    return (b - a).x() * (q - a).y() - (b - a).y() * (q - a).x();
+}
+
+// The depth of the face's plane at q, where q lies in the (convex) projected face, its edges included.
+template <class T> std::optional<T> depthAt(const FacePicture<T>& face, const Vec2<T>& q)
+{
+    using std::abs;
+    const auto& v = face.corners;
+    T sign(0);
+    for (std::size_t k = 0; k < v.size(); ++k) {
+        const T side = edgeSide<T>(v[k].template head<2>(), v[(k + 1) % v.size()].template head<2>(), q);
+        if (side * sign < T(0))
+            return std::nullopt;
+        if (side != T(0))
+            sign = side;
+    }
+    const Vec3<T>& n = face.normal;
+    if (abs(n.z()) < T(1e-300))
+        return std::nullopt; // seen edge-on
+    return v[0].z() - (n.x() * (q.x() - v[0].x()) + n.y() * (q.y() - v[0].y())) / n.z();
+}
+
+// The value a depth buffer stores for an exact depth: storedDepth's rounding
+// (to the nearest level or float, ties to even) decided exactly.
+double exactStored(const Exact& depth, const DepthOptions& options)
+{
+    const Exact d = options.reversed ? Exact(1) - depth : depth;
+    double stored = storedDepth(double(depth), options); // within a level of the exact one
+    if (options.floating) {
+        float f = float(stored);
+        // Step to the float whose rounding interval holds d: the midpoints of floats are doubles.
+        auto midpoint = [](float a, float b) { return Exact((double(a) + double(b)) / 2); };
+        auto even = [](float x) { std::uint32_t bits; std::memcpy(&bits, &x, sizeof bits); return (bits & 1) == 0; };
+        for (;;) {
+            const float up = std::nextafter(f, 2.0f), down = std::nextafter(f, -2.0f);
+            const Exact above = midpoint(f, up), below = midpoint(down, f);
+            if (d > above || (d == above && !even(f)))
+                f = up;
+            else if (d < below || (d == below && !even(f)))
+                f = down;
+            else
+                return double(f);
+        }
+    }
+    const Exact scaled = (d < Exact(0) ? Exact(0) : d > Exact(1) ? Exact(1) : d) * Exact(std::ldexp(1.0, options.bits) - 1);
+    const Exact half = Exact(1) / Exact(2);
+    for (;;) {
+        const Exact above = Exact(stored) + half, below = Exact(stored) - half;
+        const bool odd = std::fmod(stored, 2.0) != 0;
+        if (scaled > above || (scaled == above && odd))
+            stored += 1;
+        else if (scaled < below || (scaled == below && odd))
+            stored -= 1;
+        else
+            return stored;
+    }
+}
+
+// A fight at a sample: the other face covers it at a different depth that is stored alike.
+bool fightsExactly(const Vec3<Exact>& sample, const FacePicture<Exact>& other, const DepthOptions& options)
+{
+    const std::optional<Exact> depth = depthAt(other, Vec2<Exact>(sample.head<2>()));
+    return depth && *depth != sample.z() && exactStored(*depth, options) == exactStored(sample.z(), options);
+}
+
+// A face's picture in double with what bounds its error against the exact one: `error` for every
+// coordinate of its corners (from the clip coordinates' error and the divide's), `samples` its samples'.
+struct Face {
+    int object, index;
+    FacePicture<double> picture;
+    double error = 0, sampleError = 0;
+    double slope = 0;  // |d depth / dx| + |d depth / dy| of its plane
+    double spread = 1; // the largest sum of |barycentric weights| (first three corners) over the face
+};
+
+// A sample of face a against face b in double, with whether a rounding could have decided it: the
+// error bounds (first order, doubled) of b's edge tests, of both depths and of their stored values.
+struct DoubleFight {
+    bool fights = false, unsure = false;
+};
+
+DoubleFight fightInDouble(const Face& a, const Vec3<double>& sample, const Face& b, const DepthOptions& options,
+                          bool bounded)
+{
+    constexpr double eps = std::numeric_limits<double>::epsilon();
+    const Vec2<double> q = sample.head<2>();
+    const std::optional<double> other = depthAt(b.picture, q);
+    const bool fights = other && *other != sample.z() && storedDepth(*other, options) == storedDepth(sample.z(), options);
+    if (!bounded)
+        return {fights, false};
+    const std::vector<Vec3<double>>& v = b.picture.corners;
+    const double e = b.error + a.sampleError;
+    bool left = false, right = false, near = false; // q certainly left or right of an edge, or near its line
+    for (std::size_t k = 0; k < v.size(); ++k) {
+        const Vec2<double> from = v[k].head<2>(), to = v[(k + 1) % v.size()].head<2>();
+        const double size = (to - from).cwiseAbs().sum() + (q - from).cwiseAbs().sum();
+        const double side = edgeSide(from, to, q);
+        if (std::abs(side) <= 2 * (2 * e * size + 4 * e * e + 4 * eps * size * size))
+            near = true;
+        else
+            (side > 0 ? left : right) = true;
+    }
+    if (left && right)
+        return {fights, false}; // outside the face whatever the rounding
+    if (near)
+        return {fights, true};
+    const Vec3<double>& n = b.picture.normal;
+    const double e1 = (v[1] - v[0]).head<2>().cwiseAbs().sum(), e2 = (v[2] - v[0]).head<2>().cwiseAbs().sum();
+    if (std::abs(n.z()) <= 2 * (2 * b.error * (e1 + e2) + 4 * b.error * b.error + 4 * eps * e1 * e2))
+        return {fights, true}; // edge-on, or nearly
+    if (!other)
+        return {};
+    const double rounding = 16 * eps * (std::abs(v[0].z()) + b.slope * ((q - v[0].head<2>()).cwiseAbs().sum() + 1));
+    const double otherError = 2 * (b.spread * (1 + b.slope) * b.error + b.slope * a.sampleError + rounding);
+    const double sampleError = 2 * a.sampleError;
+    // The levels each depth may be stored at (storedDepth is monotonic).
+    const auto levels = [&options](double depth, double error) {
+        const double low = storedDepth(depth - error, options), high = storedDepth(depth + error, options);
+        return std::pair{std::min(low, high), std::max(low, high)};
+    };
+    const auto [otherLow, otherHigh] = levels(*other, otherError);
+    const auto [sampleLow, sampleHigh] = levels(sample.z(), sampleError);
+    if (otherHigh < sampleLow || sampleHigh < otherLow)
+        return {fights, false}; // stored apart whatever the rounding
+    const bool storedAlike = otherLow == otherHigh && sampleLow == sampleHigh && otherLow == sampleLow;
+    return {fights, !storedAlike || std::abs(*other - sample.z()) <= otherError + sampleError};
+}
+
+// The error bounds of a face's picture: each corner's clip coordinates may be off by `clipError`
+// (VertexVerdicts), which the divide by w enlarges; its samples are averages of its corners.
+void boundFace(Face& face, const std::vector<double>& clipErrors, const std::vector<Vec4<double>>& clip)
+{
+    constexpr double eps = std::numeric_limits<double>::epsilon();
+    const std::vector<Vec3<double>>& v = face.picture.corners;
+    double largest = 0;
+    for (std::size_t k = 0; k < v.size(); ++k) {
+        const double w = std::abs(clip[k].w()), m = v[k].cwiseAbs().maxCoeff() + 1;
+        largest = std::max(largest, m);
+        face.error = std::max(face.error, w > 2 * clipErrors[k] ? clipErrors[k] * m / (w - clipErrors[k]) + 4 * eps * m
+                                                                : std::numeric_limits<double>::infinity());
+    }
+    face.sampleError = face.error + 8 * eps * largest;
+    const Vec3<double>& n = face.picture.normal;
+    face.slope = (std::abs(n.x()) + std::abs(n.y())) / std::abs(n.z());
+    const Vec2<double> v0 = v[0].head<2>(), e1 = v[1].head<2>() - v0, e2 = v[2].head<2>() - v0;
+    for (const Vec3<double>& corner : v) { // the sum of |weights| is convex: largest at a corner
+        const Vec2<double> d = corner.head<2>() - v0;
+        const double l1 = edgeSide<double>(Vec2<double>::Zero(), d, e2) / n.z(), l2 = edgeSide<double>(Vec2<double>::Zero(), e1, d) / n.z();
+        face.spread = std::max(face.spread, std::abs(1 - l1 - l2) + std::abs(l1) + std::abs(l2));
+    }
+}
+
 DepthOutcome depthOutcome(const Pipeline<double>& p, const std::vector<PolygonMesh>& objects, const ClipPoints& points,
-                          const DepthOptions& options)
+                          const DepthOptions& options, const VertexVerdicts& verdicts)
 {
     DepthOutcome out;
     out.options = options;
@@ -286,69 +526,59 @@ DepthOutcome depthOutcome(const Pipeline<double>& p, const std::vector<PolygonMe
 
     // Z-fighting: sample each face (its centroid and points between it and the
     // corners); where another face covers the same picture point, compare the
-    // two depths: different, but stored alike, is a fight.
-    struct Face {
-        int object, index;
-        std::vector<Vec3<double>> picture; // x, y, window depth
-        Vec3<double> normal;               // of the face's plane in those coordinates
-    };
+    // two depths: different, but stored alike, is a fight. Decided for the scene
+    // as typed: in double where the error bounds cannot reach a boundary (an
+    // edge, equal depths, a level's end), else exactly (the exact clip matrix).
     std::vector<Face> faces;
     for (std::size_t o = 0; o < objects.size() && faces.size() <= kMaxFightFaces; ++o)
         for (std::size_t f = 0; f < objects[o].faces.size() && faces.size() <= kMaxFightFaces; ++f) {
-            Face face{int(o), int(f), {}, Vec3<double>::Zero()};
-            bool visible = true;
-            for (int i : objects[o].faces[f]) {
-                const Vec4<double>& h = points[o][std::size_t(i)];
-                visible = visible && insideClipVolume(h, p.clipVolume);
-                face.picture.emplace_back(h.x() / h.w(), h.y() / h.w(), windowDepth(h, p.clipVolume));
+            const FaceList::Face corners = objects[o].faces[f];
+            std::vector<Vec4<double>> clip;
+            std::vector<double> clipErrors;
+            bool visible = corners.size() >= 3;
+            for (int i : corners) {
+                const Vec3<double>& vertex = objects[o].vertices[std::size_t(i)];
+                clip.push_back(points[o][std::size_t(i)]);
+                visible = visible && verdicts.outcode(vertex, clip.back()) == 0;
+                if (verdicts.exact())
+                    clipErrors.push_back(verdicts.clipError(vertex, clip.back()));
             }
-            if (!visible || face.picture.size() < 3)
+            if (!visible)
                 continue;
-            const auto& v = face.picture;
-            face.normal = (v[1] - v[0]).cross(v[2] - v[0]);
+            Face face{int(o), int(f), facePicture(clip, p.clipVolume)};
+            if (verdicts.exact())
+                boundFace(face, clipErrors, clip);
             faces.push_back(std::move(face));
         }
-    auto depthAt = [](const Face& face, const Vec2<double>& q) -> std::optional<double> {
-        // Inside the (convex) projected face, and the depth of its plane there.
-        const auto& v = face.picture;
-        double sign = 0;
-        for (std::size_t k = 0; k < v.size(); ++k) {
-            const Vec2<double> a = v[k].head<2>(), b = v[(k + 1) % v.size()].head<2>();
-            const double cross = (b - a).x() * (q - a).y() - (b - a).y() * (q - a).x();
-            if (cross * sign < 0)
-                return std::nullopt;
-            if (cross != 0)
-                sign = cross;
+    std::vector<std::optional<FacePicture<Exact>>> exactFaces(faces.size());
+    auto exactFace = [&](std::size_t k) -> const FacePicture<Exact>& {
+        if (!exactFaces[k]) {
+            std::vector<Vec4<Exact>> clip;
+            for (int i : objects[std::size_t(faces[k].object)].faces[std::size_t(faces[k].index)])
+                clip.push_back(verdicts.exactClipPoint(objects[std::size_t(faces[k].object)].vertices[std::size_t(i)]));
+            exactFaces[k] = facePicture(clip, p.clipVolume);
         }
-        const Vec3<double>& n = face.normal;
-        if (std::abs(n.z()) < 1e-300)
-            return std::nullopt; // seen edge-on
-        return v[0].z() - (n.x() * (q.x() - v[0].x()) + n.y() * (q.y() - v[0].y())) / n.z();
+        return *exactFaces[k];
     };
     // Every pair is compared: beyond kMaxFightFaces faces that would take too
     // long, and the check is skipped (zFightingChecked says so).
     out.zFightingChecked = faces.size() <= kMaxFightFaces;
-    for (std::size_t a = 0; a < faces.size() && out.zFightingChecked; ++a) {
-        Vec3<double> centroid = Vec3<double>::Zero();
-        for (const Vec3<double>& q : faces[a].picture)
-            centroid += q / double(faces[a].picture.size());
-        std::vector<Vec3<double>> samples = {centroid};
-        for (const Vec3<double>& q : faces[a].picture)
-            samples.push_back(centroid + 0.8 * (q - centroid));
+    for (std::size_t a = 0; a < faces.size() && out.zFightingChecked; ++a)
         for (std::size_t b = a + 1; b < faces.size(); ++b) {
             if (faces[a].object == faces[b].object)
                 continue; // an object's own faces meet only at edges
-            for (const Vec3<double>& sample : samples) {
-                const std::optional<double> other = depthAt(faces[b], sample.head<2>());
-                if (!other || *other == sample.z())
-                    continue;
-                if (storedDepth(*other, options) == storedDepth(sample.z(), options)) {
+            for (std::size_t k = 0; k < faces[a].picture.samples.size(); ++k) {
+                DoubleFight fight = fightInDouble(faces[a], faces[a].picture.samples[k], faces[b], options, verdicts.exact());
+                if (fight.unsure) {
+                    ++out.decidedExactly;
+                    fight.fights = fightsExactly(exactFace(a).samples[k], exactFace(b), options);
+                }
+                if (fight.fights) {
                     out.zFighting.push_back({faces[a].object, faces[a].index, faces[b].object, faces[b].index});
                     break;
                 }
             }
         }
-    }
     return out;
 }
 
@@ -442,51 +672,6 @@ RasterOutcome rasterize(const Pipeline<double>& pipeline, const std::vector<Poly
 
 namespace {
 
-// Where each vertex lies against the volume, decided exactly: in double where
-// every boundary value is farther from 0 than the error of computing it (the
-// double clip matrix's own error against the exact one, plus the products'
-// rounding), else with the exact clip matrix and the vertex's own value.
-class VertexVerdicts {
-public:
-    VertexVerdicts(const Mat4<double>& clip, const Mat4<Exact>* exact, ClipVolume volume)
-        : exact_(exact), volume_(volume)
-    {
-        if (!exact)
-            return;
-        constexpr double kRounding = 8 * std::numeric_limits<double>::epsilon();
-        for (int i = 0; i < 4; ++i)
-            for (int j = 0; j < 4; ++j) // the entry's error, rounded up, and its products' rounding
-                error_(i, j) = std::abs(double(Exact(clip(i, j)) - (*exact)(i, j))) * (1 + kRounding) +
-                               kRounding * std::abs(clip(i, j));
-    }
-
-    unsigned outcode(const Vec3<double>& vertex, const Vec4<double>& h) const
-    {
-        const std::array<double, 6> b = clipBoundaries(h, volume_);
-        unsigned code = 0;
-        for (int k = 0; k < 6; ++k)
-            code |= b[std::size_t(k)] < 0 ? 1u << k : 0u;
-        if (!exact_)
-            return code;
-        const Vec4<double> reach = error_ * vertex.homogeneous().cwiseAbs();
-        const double bound = 2 * (reach.maxCoeff() + 4 * std::numeric_limits<double>::epsilon() * h.cwiseAbs().maxCoeff());
-        if (std::all_of(b.begin(), b.end(), [bound](double x) { return std::abs(x) > bound; }))
-            return code;
-        return clipVerdict(exactClipPoint(vertex), volume_).outside;
-    }
-
-    Vec4<Exact> exactClipPoint(const Vec3<double>& vertex) const
-    {
-        return *exact_ * Vec4<Exact>(Exact(vertex.x()), Exact(vertex.y()), Exact(vertex.z()), Exact(1));
-    }
-    bool exact() const { return exact_ != nullptr; }
-
-private:
-    const Mat4<Exact>* exact_;
-    ClipVolume volume_;
-    Mat4<double> error_ = Mat4<double>::Zero();
-};
-
 // The signed area of a face in the picture (x, y after the divide), and
 // whether a vertex lies on or behind the eye plane.
 template <class T> std::pair<T, bool> pictureArea(const std::vector<Vec4<T>>& points)
@@ -562,7 +747,7 @@ EffectOutcomes runEffects(const Pipeline<double>& pipeline, const std::vector<Po
         outcomes.computed.push_back(EffectKind::Depth);
         DepthOptions options = *effects.depth;
         options.reversed = options.reversed || reversedDepth(pipeline.clipVolume); // the matrix reverses it
-        outcomes.depth = depthOutcome(pipeline, objects, points, options);
+        outcomes.depth = depthOutcome(pipeline, objects, points, options, verdicts);
     }
     if (effects.has(EffectKind::Cull)) {
         outcomes.computed.push_back(EffectKind::Cull);

@@ -793,8 +793,8 @@ std::shared_ptr<const EvaluatedScene> evaluate(const Scene& scene, MeshCache* ca
     if (!scene.effects.empty())
         for (const auto& mesh : out.meshes)
             meshes.push_back(*mesh);
-    // The scene as typed, exactly: the clip and cull verdicts near a boundary, and z_min as Foley writes it.
-    const bool verdicts = scene.effects.has(EffectKind::Clip) || scene.effects.has(EffectKind::Cull);
+    // The scene as typed, exactly: the clip, cull and z-fighting verdicts near a boundary, and z_min as Foley writes it.
+    const bool verdicts = scene.effects.has(EffectKind::Clip) || scene.effects.has(EffectKind::Cull) || scene.effects.depth;
     std::optional<Pipeline<Exact>> exact;
     if (verdicts || out.pipeline.zmin) {
         try {

@@ -344,5 +344,96 @@ TEST(ExactVerdicts, RandomRationalScenesFollowTheExactVerdict)
     EXPECT_GT(differing, 0) << "no scene where double and exact disagree: the test proves nothing";
 }
 
+
+// Two boxes stacked: the top of the lower and the bottom of the upper are one square, at exactly the same
+// depth everywhere, so they never fight (a fight is two depths that differ but are stored alike). Seen
+// obliquely, double computes the two planes' depths a rounding apart at some samples and calls them a
+// fight; decided exactly, no pair fights, wherever the eye is.
+TEST(ExactVerdicts, FacesAtTheSameDepthDoNotFight)
+{
+    std::mt19937 random(46);
+    std::uniform_int_distribution<int> coordinate(-9, 9);
+    int doubleFights = 0;
+    for (int trial = 0; trial < 40; ++trial) {
+        const std::string eye = std::to_string(coordinate(random)) + ", " + std::to_string(coordinate(random)) + ", " +
+                                std::to_string(20 + coordinate(random));
+        const std::string text = R"({"camera": {"look_at": {"eye": [)" + eye + R"(], "center": [0.5, 0.5, 1], "up": [0, 1, 0]},
+            "projection": {"type": "perspective", "fovy_deg": 60, "aspect": 1, "near": 1, "far": 100}},
+            "objects": [{"type": "box", "min": [0, 0, 0], "max": [1, 1, 1]}, {"type": "box", "min": [0, 0, 1], "max": [1, 1, 2]}],
+            "effects": [{"depth": {"bits": 16}}]})";
+        const Scene scene = parseScene(text, ".");
+        const auto evaluated = evaluateScene(scene);
+        ASSERT_TRUE(evaluated->outcomes.depth);
+        EXPECT_TRUE(evaluated->outcomes.depth->zFighting.empty()) << text;
+        std::vector<PolygonMesh> boxes;
+        for (const auto& mesh : evaluated->meshes)
+            boxes.push_back(*mesh);
+        doubleFights += int(runEffects(evaluated->pipeline, boxes, scene.effects).depth->zFighting.size());
+    }
+    EXPECT_GT(doubleFights, 0) << "double never called them a fight: the test proves nothing";
+}
+
+
+// Two walls of 900 squares each, 1 mm apart 300 units away, seen through a camera whose matrix has roots
+// (so double's matrix is not the exact one): a 16-bit buffer cannot order them. Every sample's verdict is
+// far from a boundary, so double decides them all, as fast as before, and finds the fights double finds.
+TEST(ExactVerdicts, LargeMeshesAreDecidedInDouble)
+{
+    const Scene scene = parseScene(R"({"camera": {"look_at": {"eye": [3, 2, 10], "center": [0, 0, -300], "up": [0, 1, 0]},
+        "projection": {"type": "perspective", "fovy_deg": 60, "aspect": 1, "near": 0.1, "far": 1000}},
+        "effects": [{"depth": {"bits": 16}}]})", ".");
+    auto wall = [](double z, double shift) {
+        PolygonMesh mesh;
+        const int n = 30;
+        for (int i = 0; i <= n; ++i)
+            for (int j = 0; j <= n; ++j)
+                mesh.vertices.emplace_back(-20 + shift + 40.0 * i / n, -20 + shift + 40.0 * j / n, z);
+        for (int i = 0; i < n; ++i)
+            for (int j = 0; j < n; ++j) {
+                const int k = i * (n + 1) + j;
+                mesh.faces.push_back(std::vector<int>{k, k + n + 1, k + n + 2, k + 1});
+            }
+        return mesh;
+    };
+    const std::vector<PolygonMesh> walls = {wall(-300, 0), wall(-300.001, 0.37)};
+    const Pipeline<double> pipeline = buildPipeline(scene.camera, scene.effects);
+    const Mat4<Exact> exactClip = exactPipeline(scene).clipMatrix();
+    ASSERT_NE(exactClip, pipeline.clipMatrix().cast<Exact>().eval()) << "the double matrix is exact: the test proves nothing";
+    const DepthOutcome filtered = *runEffects(pipeline, walls, scene.effects, &exactClip).depth;
+    const DepthOutcome inDouble = *runEffects(pipeline, walls, scene.effects).depth;
+    EXPECT_GT(filtered.zFighting.size(), 100u);
+    EXPECT_EQ(filtered.zFighting, inDouble.zFighting);
+    EXPECT_EQ(filtered.decidedExactly, 0);
+}
+
+
+// glOrtho(-1, 1, -1, 1, 0, 131070) and a 16-bit buffer: a square at z = -(2k + 1) has window depth exactly
+// (k + 1/2) / 65535, half-way between two levels, and is stored at the even one (round half to even); a
+// second square half a unit behind (k odd) or in front (k even) is stored there too, at another depth: a
+// fight. The clip matrix's -1/65535 is no double, so double puts the first square on either side of the
+// half-way point and misses some fights; decided exactly, every pair fights.
+TEST(ExactVerdicts, DepthsHalfwayBetweenLevelsAreStoredAtTheEvenOne)
+{
+    const Scene scene = parseScene(R"({"camera": {"look_at": {"eye": [0, 0, 0], "center": [0, 0, -1], "up": [0, 1, 0]},
+        "projection": {"type": "ortho", "left": -1, "right": 1, "bottom": -1, "top": 1, "near": 0, "far": 131070}},
+        "effects": [{"depth": {"bits": 16}}]})", ".");
+    const Pipeline<double> pipeline = buildPipeline(scene.camera, scene.effects);
+    const Mat4<Exact> exactClip = exactPipeline(scene).clipMatrix();
+    auto square = [](double z, double size) {
+        PolygonMesh mesh;
+        mesh.vertices = {{-size, -size, z}, {size, -size, z}, {size, size, z}, {-size, size, z}};
+        mesh.faces.push_back(std::vector<int>{0, 1, 2, 3});
+        return mesh;
+    };
+    int missed = 0;
+    for (int k = 1; k <= 400; ++k) {
+        const double halfway = -(2 * k + 1), other = halfway + (k % 2 ? -0.5 : 0.5);
+        const std::vector<PolygonMesh> squares = {square(halfway, 0.5), square(other, 0.7)};
+        EXPECT_EQ(runEffects(pipeline, squares, scene.effects, &exactClip).depth->zFighting.size(), 1u) << k;
+        missed += runEffects(pipeline, squares, scene.effects).depth->zFighting.empty();
+    }
+    EXPECT_GT(missed, 0) << "double found every fight: the test proves nothing";
+}
+
 } // namespace
 } // namespace viewpipe

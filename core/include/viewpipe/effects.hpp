@@ -185,6 +185,9 @@ struct DepthOutcome {
     // (object, face) pairs, found by sampling.
     std::vector<std::array<int, 4>> zFighting;
     bool zFightingChecked = true; // false for scenes with too many faces to compare pairwise
+    // Samples whose verdict a rounding could have decided (near a face's edge, equal depths or a level's
+    // end), decided exactly; the others are decided in double (runEffects' exactClip).
+    int decidedExactly = 0;
 };
 
 // The final image through a z-buffer: for each pixel (row 0 at the bottom),
@@ -211,7 +214,7 @@ struct EffectOutcomes {
 // The scene's built-in objects as polygon meshes (meshes from files are the
 // caller's: core reads no files).
 // `exactClip`, the clip matrix computed exactly (exactPipeline), decides the
-// clip and cull verdicts near a boundary (a filtered predicate: double where
+// clip, cull and z-fighting verdicts near a boundary (a filtered predicate: double where
 // its error bound cannot reach the boundary, exact arithmetic where it can);
 // without it, double decides everything.
 EffectOutcomes runEffects(const Pipeline<double>& pipeline, const std::vector<PolygonMesh>& objects,
