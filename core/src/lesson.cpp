@@ -122,24 +122,40 @@ template <class T> bool pointWithin(const std::vector<T>& given, const std::vect
     return distance <= squared(toleranceOf<T>(tolerance)) * (size < T(1) ? T(1) : size); // false for a NaN
 }
 
-// A number the lesson writes as an answer, exactly: a JSON number as the decimal written, or an exact
-// expression ("-13/36"). `values` gets each one's double.
-std::vector<Exact> readWritten(const Json& j, const std::string& path, std::size_t count, std::vector<double>& values)
+// Numbers the lesson writes, each a JSON number or an exact expression ("-13/36"), read as scene fields
+// are: `values` gets each one's double; returned, each one's expression as written, empty for a number.
+std::vector<std::string> readTyped(const Json& j, const std::string& path, std::size_t count, std::vector<double>& values)
 {
     std::map<std::string, std::string> typed;
     const TypedExpressions scope(typed);
     values = count == 1 ? std::vector<double>{readNumber(j, path)} : readNumbers(j, path, count);
-    std::vector<Exact> exact;
+    std::vector<std::string> texts;
     for (std::size_t i = 0; i < values.size(); ++i) {
         const auto expression = typed.find(count == 1 ? path : element(path, i));
-        exact.push_back(expression != typed.end() ? parseExact(expression->second) : fromDecimal<Exact>(values[i]));
+        texts.push_back(expression != typed.end() ? expression->second : "");
     }
+    return texts;
+}
+
+// A number exactly: its expression as written, else the decimal written.
+Exact exactly(const std::string& typed, double value)
+{
+    return typed.empty() ? fromDecimal<Exact>(value) : parseExact(typed);
+}
+
+// A number the lesson writes as an answer, exactly. `values` gets each one's double.
+std::vector<Exact> readWritten(const Json& j, const std::string& path, std::size_t count, std::vector<double>& values)
+{
+    const std::vector<std::string> typed = readTyped(j, path, count, values);
+    std::vector<Exact> exact;
+    for (std::size_t i = 0; i < values.size(); ++i)
+        exact.push_back(exactly(typed[i], values[i]));
     return exact;
 }
 
 // The question's answer as the scene gives it; an answer the file writes must agree with it. The verdicts
 // (inside, the sign of w) and the exact answer a typed one is judged against come from the scene computed
-// exactly (exactPipeline, the point as the decimal written), as `viewpipe trace` decides them.
+// exactly (exactPipeline, the point as typed: exactPoint), as `viewpipe trace` decides them.
 void solveQuestion(Question& q, const Json& j, const std::string& path, const Scene& scene, const Pipeline<double>& pipeline)
 {
     const int n = int(pipeline.stages.size());
@@ -154,9 +170,8 @@ void solveQuestion(Question& q, const Json& j, const std::string& path, const Sc
             exact = exactPipeline(scene);
         } catch (const std::exception&) { // refused exactly: the doubles answer alone
         }
-        const auto typed = [](double x) { return fromDecimal<Exact>(x); };
         if (exact && q.kind != QuestionKind::Entry)
-            exactTrace = tracePoint(*exact, Vec3<Exact>(typed(q.point.x()), typed(q.point.y()), typed(q.point.z())));
+            exactTrace = tracePoint(*exact, exactPoint(q));
     }
     switch (q.kind) {
     case QuestionKind::Where: {
@@ -294,8 +309,12 @@ Question readQuestion(const Json& j, const std::string& path, const Scene& scene
     q.prompt = readCaption(j["prompt"], child(path, "prompt"), true);
     if (j.contains("explanation"))
         q.explanation = readCaption(j["explanation"], child(path, "explanation"), false);
-    if (j.contains("point"))
-        q.point = readVec3(j["point"], child(path, "point"));
+    if (j.contains("point")) {
+        std::vector<double> point;
+        const std::vector<std::string> typed = readTyped(j["point"], child(path, "point"), 3, point);
+        q.point = {point[0], point[1], point[2]};
+        std::copy(typed.begin(), typed.end(), q.pointTyped.begin());
+    }
     if (j.contains("after"))
         q.stage = readIndex(j["after"], child(path, "after"), 1, n);
     if (j.contains("stage"))
@@ -486,6 +505,12 @@ StepShows stepShows(const LessonStep& step, bool answered, int stageCount)
     return {askingStage(step), false};
 }
 
+Vec3<Exact> exactPoint(const Question& q)
+{
+    return {exactly(q.pointTyped[0], q.point.x()), exactly(q.pointTyped[1], q.point.y()),
+            exactly(q.pointTyped[2], q.point.z())};
+}
+
 std::optional<Vec3<double>> tracedAt(const LessonStep& step, bool answered)
 {
     const std::optional<Question>& q = step.question;
@@ -553,15 +578,25 @@ Json vecJson(const Vec3<double>& v)
     return Json::array({v.x(), v.y(), v.z()});
 }
 
+// A question's point as the file wrote it: an expression kept as typed.
+Json pointJson(const Question& q)
+{
+    Json j = vecJson(q.point);
+    for (std::size_t i = 0; i < 3; ++i)
+        if (!q.pointTyped[i].empty())
+            j[i] = q.pointTyped[i];
+    return j;
+}
+
 Json questionJson(const Question& q)
 {
     Json j = {{"kind", questionKindName(q.kind)}, {"prompt", q.prompt}};
     switch (q.kind) {
     case QuestionKind::Where:
-        j.update({{"point", vecJson(q.point)}, {"after", q.stage}, {"tolerance", q.tolerance}});
+        j.update({{"point", pointJson(q)}, {"after", q.stage}, {"tolerance", q.tolerance}});
         break;
-    case QuestionKind::Inside: j["point"] = vecJson(q.point); break;
-    case QuestionKind::SignW: j.update({{"point", vecJson(q.point)}, {"after", q.stage}}); break;
+    case QuestionKind::Inside: j["point"] = pointJson(q); break;
+    case QuestionKind::SignW: j.update({{"point", pointJson(q)}, {"after", q.stage}}); break;
     case QuestionKind::WhichStage: j["stage"] = q.stage; break;
     case QuestionKind::Order: break;
     case QuestionKind::Entry: j.update({{"stage", q.stage}, {"row", q.row}, {"column", q.column}}); break;

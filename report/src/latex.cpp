@@ -157,25 +157,14 @@ std::string entryLatex(const Scene& scene, int stage, int row, int column, int d
     return exactLatex(p.stages.at(std::size_t(stage - 1)).matrix(row - 1, column - 1), digits);
 }
 
-namespace {
-
-PointTrace<Exact> exactTrace(const Scene& scene, const Vec3<double>& point)
+std::vector<std::string> tracedLatex(const Scene& scene, const Vec3<Exact>& point, int stages, int digits)
 {
-    const auto exact = [](double x) { return fromDecimal<Exact>(x); };
-    return tracePoint(exactPipeline(scene), Vec3<Exact>(exact(point.x()), exact(point.y()), exact(point.z())));
-}
-
-} // namespace
-
-std::vector<std::string> tracedLatex(const Scene& scene, const Vec3<double>& point, int stages, int digits)
-{
-    const auto exact = [](double x) { return fromDecimal<Exact>(x); };
-    const PointTrace<Exact> trace = exactTrace(scene, point);
+    const PointTrace<Exact> trace = tracePoint(exactPipeline(scene), point);
     const auto text = [digits](const Vec4<Exact>& q) {
         return "(" + exactLatex(q.x(), digits) + ", " + exactLatex(q.y(), digits) + ", " + exactLatex(q.z(), digits) + ", " +
                exactLatex(q.w(), digits) + ")";
     };
-    std::vector<std::string> out = {text(Vec4<Exact>(exact(point.x()), exact(point.y()), exact(point.z()), Exact(1)))};
+    std::vector<std::string> out = {text(Vec4<Exact>(point.x(), point.y(), point.z(), Exact(1)))};
     for (int k = 0; k < stages && k < int(trace.afterStage.size()); ++k)
         out.push_back(text(trace.afterStage[std::size_t(k)]));
     return out;

@@ -30,6 +30,16 @@ std::string point(const Vec3<double>& p)
     return "$(" + number(p.x()) + ", " + number(p.y()) + ", " + number(p.z()) + ")$";
 }
 
+// A question's point as the lesson writes it: an expression exactly (\frac{1}{3}), a number as above.
+std::string questionPoint(const Question& q)
+{
+    const Vec3<Exact> exact = exactPoint(q);
+    std::string out;
+    for (int i = 0; i < 3; ++i)
+        out += (i ? ", " : "") + (q.pointTyped[std::size_t(i)].empty() ? number(q.point[i]) : report::exactLatex(exact[i], 6));
+    return "$(" + out + ")$";
+}
+
 std::string symbol(const std::string& stageSymbol)
 {
     return "$" + symbolMath(stageSymbol) + "$";
@@ -220,7 +230,7 @@ std::string questionContext(const LessonStep& step)
     if (q.kind == QuestionKind::Entry)
         out = "The matrix of stage " + std::to_string(q.stage) + ", " + symbol(stageSymbol(step, q.stage)) + ".";
     if (q.kind == QuestionKind::Where || q.kind == QuestionKind::Inside || q.kind == QuestionKind::SignW)
-        out += (out.empty() ? "" : " ") + std::string("The point ") + point(q.point) + ".";
+        out += (out.empty() ? "" : " ") + std::string("The point ") + questionPoint(q) + ".";
     return out;
 }
 
@@ -335,7 +345,7 @@ std::string lessonSheetLatex(const Lesson& lesson, const std::vector<LessonFigur
                     line.clear();
                 }
             }
-            const std::vector<std::string> points = report::tracedLatex(step.scene, q.point, last, kDigits);
+            const std::vector<std::string> points = report::tracedLatex(step.scene, exactPoint(q), last, kDigits);
             const std::vector<Stage<double>> named = buildPipeline(step.scene.camera, step.scene.effects).stages;
             std::string rows;
             for (std::size_t s = 0; s < points.size(); ++s)

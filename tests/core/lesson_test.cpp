@@ -14,6 +14,7 @@
 #include "evaluation_count.h"
 #include "plain_math.h"
 #include "support.hpp"
+#include "viewpipe/exact.hpp"
 #include "viewpipe/lesson.hpp"
 
 namespace viewpipe {
@@ -474,6 +475,37 @@ TEST(Lesson, AWrittenAnswerMayBeAnExactExpression)
     expectRefused([&] { entry("\"2 +* 3\""); }, "steps[0].question.answer", "expected a number, sqrt(...) or ( at character 4 of \"2 +* 3\"");
     EXPECT_NO_THROW(lessonWith(diagonalStep(
         R"({"kind": "where", "prompt": "p", "point": [1, 0, 0], "after": 2, "answer": ["sqrt(2)/2", 0, "1/√2"]})")));
+}
+
+// A question's point takes exact expressions as a scene's fields do (parseExact, the field's path in a
+// refusal), is saved as typed and traced exactly. gluPerspective(60, 1, 1, 10)'s right face is x = -z/sqrt(3),
+// so (3 sqrt(3), 0, -9) lies on it: inside, and x/w = 1 after the projection. Its nearest double,
+// 5.196152422706632, is a decimal just past the face: outside.
+TEST(Lesson, AQuestionsPointMayBeExactExpressions)
+{
+    const auto ask = [](const std::string& question) {
+        return lessonWith(R"({"scene": {"camera": {"look_at": {"eye": [0, 0, 0], "center": [0, 0, -1], "up": [0, 1, 0]},
+            "projection": {"type": "perspective", "fovy_deg": 60, "aspect": 1, "near": 1, "far": 10}}},
+            "caption": "c", "question": )" + question + "}");
+    };
+    const Lesson inside = ask(R"j({"kind": "inside", "prompt": "p", "point": ["3*sqrt(3)", 0, "-9"]})j");
+    const Question& q = *inside.steps[0].question;
+    EXPECT_TRUE(q.inside);
+    EXPECT_EQ(q.point, Vec3<double>(5.196152422706632, 0, -9));
+    EXPECT_FALSE(ask(R"({"kind": "inside", "prompt": "p", "point": [5.196152422706632, 0, -9]})").steps[0].question->inside);
+    EXPECT_EQ(nlohmann::json::parse(questionToJson(q))["point"], nlohmann::json::parse(R"j(["3*sqrt(3)", 0.0, "-9"])j"));
+    EXPECT_TRUE(parseQuestion(questionToJson(q), inside.steps[0].scene).inside); // read back as typed
+
+    const Question where = *ask(R"j({"kind": "where", "prompt": "p", "point": ["3*sqrt(3)", "√3", -9], "after": 4,
+        "answer": [1, "1/3", "79/81"]})j").steps[0].question;
+    ASSERT_TRUE(where.exact);
+    EXPECT_EQ((*where.exact)[0], Exact(1));
+    EXPECT_EQ((*where.exact)[1], Exact(1) / Exact(3));
+
+    expectRefused([&] { ask(R"({"kind": "inside", "prompt": "p", "point": [0, 0, "1/0"]})"); }, "steps[0].question.point[2]",
+                  "division by zero at character 3 of \"1/0\"");
+    expectRefused([&] { ask(R"({"kind": "inside", "prompt": "p", "point": [0, true, -2]})"); }, "steps[0].question.point[1]",
+                  "must be a number or an exact expression such as \"20*sqrt(2)\" (got true)");
 }
 
 // One question edited as JSON is read as the lesson reads it, with its field paths.

@@ -205,6 +205,24 @@ TEST(Latex, LessonAnswersAreStatedExactly)
               "$(\\frac{\\sqrt{2}}{2}, 0, \\frac{\\sqrt{2}}{2})$ ($\\approx (0.707107, 0, 0.707107)$)");
 }
 
+// A question's point typed as expressions is stated and traced exactly: gluPerspective(60, 1, 1, 10) takes
+// (3 sqrt(3), sqrt(3), -9) to (9, 3, 79/9, 9) in clip coordinates, (1, 1/3, 79/81) after the divide.
+TEST(Latex, AQuestionsPointIsStatedAndTracedExactly)
+{
+    const Lesson lesson = parseLesson(R"j({"title": "t", "steps": [{"scene": {"camera": {
+        "look_at": {"eye": [0, 0, 0], "center": [0, 0, -1], "up": [0, 1, 0]},
+        "projection": {"type": "perspective", "fovy_deg": 60, "aspect": 1, "near": 1, "far": 10}}}, "caption": "c",
+        "question": {"kind": "where", "prompt": "p", "point": ["3*sqrt(3)", "√3", -9], "after": 4}}]})j", kScenes);
+    const LessonStep& step = lesson.steps[0];
+    EXPECT_NE(questionContext(step).find("The point $(3\\sqrt{3}, \\sqrt{3}, -9)$."), std::string::npos)
+        << questionContext(step);
+    EXPECT_EQ(answerText(step), "$(1, \\frac{1}{3}, \\frac{79}{81})$ ($\\approx (1, 0.333333, 0.975309)$)");
+    const std::vector<std::string> traced = report::tracedLatex(step.scene, exactPoint(*step.question), 4, 4);
+    ASSERT_EQ(traced.size(), 5u);
+    EXPECT_EQ(traced[0], "(3\\sqrt{3}, \\sqrt{3}, -9, 1)");
+    EXPECT_EQ(traced[4], "(9, 3, \\frac{79}{9}, 9)");
+}
+
 TEST(PipelineJson, HouseHasTheContractedKeys)
 {
     const Scene house = loadScene(kScenes / "house.json");

@@ -27,6 +27,7 @@ struct Question {
     QuestionKind kind = QuestionKind::Choice;
     std::string prompt, explanation;
     Vec3<double> point = Vec3<double>::Zero(); // where, inside, sign_w
+    std::array<std::string, 3> pointTyped;     // x, y, z as the file writes an exact expression ("1/3"), else empty
     int stage = 0;                             // where and sign_w: after it; which_stage, entry: its matrix
     int row = 0, column = 0;                   // entry, from 1
     double tolerance = 0.01;                   // where: relative to the answer's size
@@ -42,6 +43,10 @@ struct Question {
     // decides a typed answer with no rounding; null where exact arithmetic refuses the scene. Include exact.hpp.
     std::shared_ptr<const std::vector<Exact>> exact;
 };
+
+// A question's point exactly: each coordinate's expression as typed, else the decimal written (0.1 is one
+// tenth). Include exact.hpp.
+Vec3<Exact> exactPoint(const Question& q);
 
 struct LessonStep {
     Scene scene;

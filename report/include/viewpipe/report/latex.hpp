@@ -43,6 +43,6 @@ std::string entryLatex(const Scene& scene, int stage, int row, int column, int d
 // A point (world coordinates) after each of the first `stages` stages, as
 // "(x, y, z, w)" math with exact fractions where they are ones (after the
 // divide, divided by w); the first is the point itself, w = 1.
-std::vector<std::string> tracedLatex(const Scene& scene, const Vec3<double>& point, int stages, int digits);
+std::vector<std::string> tracedLatex(const Scene& scene, const Vec3<Exact>& point, int stages, int digits);
 
 } // namespace viewpipe::report
