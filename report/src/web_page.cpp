@@ -181,6 +181,8 @@ std::string lessonPage(const Lesson& lesson, const std::vector<int>& stepScenes,
             entry["question"]["answerText"] = answerText(step);
             entry["question"]["answerPlain"] = mathSpokenText(answerText(step));
             entry["question"]["offered"] = offeredChoices(*step.question);
+            if (step.question->kind == QuestionKind::WhichStage) // its matrix without its name, as the handout shows it
+                entry["question"]["matrixLatex"] = report::stageMatrixLatex(step.scene, step.question->stage, 4);
         }
         steps.push_back(entry);
     }

@@ -1001,6 +1001,19 @@ TEST_F(WebPage, OnHalfALaptopScreenFoldsItsPanelsNamesItsViewsAndSavesTheView)
         ADD_FAILURE() << problem;
 }
 
+// `lesson export` of dir/lesson.json into dir/out, and its page opened in `browser`, ready.
+::testing::AssertionResult openExportedLesson(const fs::path& dir, Browser& browser)
+{
+    const Finished run = viewpipe({"lesson", "export", QString::fromStdString((dir / "lesson.json").string()), "--out",
+                                   QString::fromStdString((dir / "out").string()), "--quiet"});
+    if (run.exitCode != 0)
+        return ::testing::AssertionFailure() << run.output;
+    browser.page("Page.navigate", {{"url", "file://" + (dir / "out" / "lesson.html").string()}});
+    if (!browser.waitFor("document.body.dataset.ready === '1'"))
+        return ::testing::AssertionFailure() << "the lesson page is not ready";
+    return ::testing::AssertionSuccess();
+}
+
 TEST(LessonPage, QuestionsAreAnsweredCheckedAndRevealed)
 {
     const fs::path dir = fs::temp_directory_path() / ("viewpipe-web-lesson-" + std::to_string(::getpid()));
@@ -1019,13 +1032,9 @@ TEST(LessonPage, QuestionsAreAnsweredCheckedAndRevealed)
             {"scene": ")" << kData << R"(/scenes/house.json", "stage": 4, "caption": "The last scale.",
              "question": {"kind": "where", "prompt": "Where does $S_{per}$ take the PRP?", "point": [8, 6, 84], "after": 5}}]})";
     }
-    const Finished run = viewpipe({"lesson", "export", QString::fromStdString((dir / "lesson.json").string()), "--out",
-                                   QString::fromStdString((dir / "out").string()), "--quiet"});
-    ASSERT_EQ(run.exitCode, 0) << run.output;
     {
         Browser browser(dir / "profile");
-        browser.page("Page.navigate", {{"url", "file://" + (dir / "out" / "lesson.html").string()}});
-        ASSERT_TRUE(browser.waitFor("document.body.dataset.ready === '1'"));
+        ASSERT_TRUE(openExportedLesson(dir, browser));
         EXPECT_EQ(browser.evaluate("document.getElementById('step-title').textContent"), "Step 1 of 3");
         // Asking: the caption and the matrices that would give the answer away are not there at all.
         EXPECT_EQ(browser.evaluate("getComputedStyle(document.getElementById('matrices')).visibility"), "hidden");
@@ -1225,6 +1234,35 @@ bool holds(const std::vector<std::string>& texts, const std::vector<std::string>
 
 // Every built-in lesson, step by step in its page: before a step's question is answered nothing on the page
 // (but its scripts) shows that answer or a later question's; once it is shown (Show Answer), no later one's.
+// A which_stage question shows its matrix as the core writes it, exactly where it reads so: the house from its
+// corner (VPN (1, 0, 1), VUP the y axis) has R's rows u = (1, 0, -1)/sqrt(2), v = (0, 1, 0), n = (1, 0, 1)/sqrt(2).
+TEST(LessonPage, AWhichStageMatrixIsTheCoresExactOne)
+{
+    const fs::path dir = fs::temp_directory_path() / ("viewpipe-web-which-stage-" + std::to_string(::getpid()));
+    fs::remove_all(dir);
+    fs::create_directories(dir);
+    {
+        std::ofstream lesson(dir / "lesson.json");
+        lesson << R"({"title": "Which stage", "steps": [{"scene": ")" << kData << R"(/scenes/house-corner.json",
+            "stage": 1, "caption": "c", "question": {"kind": "which_stage", "prompt": "Which stage is this?", "stage": 2}}]})";
+    }
+    {
+        Browser browser(dir / "profile");
+        ASSERT_TRUE(openExportedLesson(dir, browser));
+        EXPECT_EQ(browser.evaluate("document.querySelector('#question form .katex annotation').textContent"),
+                  "\\begin{bmatrix}\n"
+                  "  \\frac{\\sqrt{2}}{2} & 0 & -\\frac{\\sqrt{2}}{2} & 0 \\\\\n"
+                  "  0 & 1 & 0 & 0 \\\\\n"
+                  "  \\frac{\\sqrt{2}}{2} & 0 & \\frac{\\sqrt{2}}{2} & 0 \\\\\n"
+                  "  0 & 0 & 0 & 1\n"
+                  "\\end{bmatrix}");
+        for (const std::string& problem : browser.problems())
+            ADD_FAILURE() << problem;
+    }
+    std::error_code ignored;
+    fs::remove_all(dir, ignored);
+}
+
 TEST(LessonPage, NoAnswerIsOnThePageBeforeItsQuestionIsClosed)
 {
     const fs::path dir = fs::temp_directory_path() / ("viewpipe-web-lessons-" + std::to_string(::getpid()));

@@ -32,13 +32,6 @@
     download(outcome.text, 'lesson-results.json');
   }
 
-  function matrixLatex(rows) {
-    let latex = '\\begin{bmatrix}';
-    for (let r = 0; r < 4; ++r)
-      latex += rows.slice(4 * r, 4 * r + 4).map(format).join(' & ') + (r < 3 ? ' \\\\ ' : '');
-    return latex + '\\end{bmatrix}';
-  }
-
   // The question of a step: the student answers, the answer is checked, then shown.
   function showQuestion(step, index) {
     const box = document.getElementById('question');
@@ -110,7 +103,7 @@
       }
       case 'which_stage': {
         const shownMatrix = document.createElement('div');
-        typeset(shownMatrix, matrixLatex(data.stages[question.stage].matrix));
+        typeset(shownMatrix, question.matrixLatex); // the core's, exact where it reads so
         form.appendChild(shownMatrix);
         // Offered as the app and the handout offer them: the pipeline's order would give the answer's place away.
         const shownOrder = question.offered;
