@@ -419,6 +419,21 @@ TEST(Cli, ClassifyNamesThePresets)
     EXPECT_NEAR(iso["foreshortening"][1].get<double>(), std::sqrt(2.0 / 3), 1e-12);
 }
 
+// The presets hold their roots as typed expressions: the isometric cube's view has VPN (1, 1, 1)/sqrt(3),
+// front and back at +-6 sqrt(3) and a window of half-width 23 sqrt(6)/6, so `pipeline --precision exact`
+// prints N_par in roots: S_par scales x and y by sqrt(6)/23 and z by 1/(12 sqrt(3)) = sqrt(3)/36, which
+// takes R's rows (1, 0, -1)/sqrt(2), (-1, 2, -1)/sqrt(6) and (1, 1, 1)/sqrt(3) to these.
+TEST(Cli, ClassicalPresetsAreExact)
+{
+    const std::string file = std::string(viewpipe::build::dataDir) + "/scenes/classical/cube-isometric.json";
+    const Result r = run("pipeline " + file + " --precision exact --json");
+    ASSERT_EQ(r.exitCode, 0) << r.err;
+    const Json j = Json::parse(r.out);
+    EXPECT_FALSE(j.contains("inexact"));
+    EXPECT_EQ(j["exact"]["composite"], Json::parse(R"j([["sqrt(3)/23", "0", "-sqrt(3)/23", "0"],
+        ["-1/23", "2/23", "-1/23", "0"], ["1/36", "1/36", "1/36", "-1/2"], ["0", "0", "0", "1"]])j"));
+}
+
 TEST(Cli, ClassicalPrintsAViewThatClassifiesBack)
 {
     const std::string file = (std::filesystem::temp_directory_path() / "viewpipe-classical.json").string();

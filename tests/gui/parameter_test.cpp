@@ -162,9 +162,9 @@ private slots:
         MainWindow& w = *window_;
         const std::filesystem::path original = scenePath("classical/house-dimetric.json").toStdString();
         const FieldValues before = fieldValues(loadScene(original).camera);
-        // The fields show the file's doubles in full.
+        // The fields show the file's doubles in full, and its exact expressions as typed.
         QCOMPARE(fieldOf(w, "view.vpn", 0)->text(), QString("0.6644630243886747"));
-        QCOMPARE(fieldOf(w, "view.prp", 2)->text(), QString("65.96969000988257"));
+        QCOMPARE(fieldOf(w, "view.prp", 2)->text(), QString("16*sqrt(17)"));
         QTRY_VERIFY(everyTextShowsWhole(w, before));
 
         type(fieldOf(w, "view.back"), "-25");
@@ -239,7 +239,18 @@ private slots:
         auto typed = [&w] { return w.document()->scene().typedExpressions; };
         using Typed = std::map<std::string, std::string>;
         const double before = prpN();
-        QVERIFY(typed().empty());
+        const Typed preset = typed(); // the preset's roots: PRP n = 16 sqrt(17), front, back and window
+        QCOMPARE(preset.at("view.prp[2]"), std::string("16*sqrt(17)"));
+        // The file's expressions with some changed, or dropped (an empty text).
+        auto presetWith = [&preset](const Typed& changes) {
+            Typed expected = preset;
+            for (const auto& [path, text] : changes)
+                if (text.empty())
+                    expected.erase(path);
+                else
+                    expected[path] = text;
+            return expected;
+        };
         // 20√2 = 28.28427124746190097603377448419396157...; strtod rounds it to the nearest double.
         const double nearest = std::strtod("28.28427124746190097603377448419396157", nullptr);
 
@@ -247,7 +258,7 @@ private slots:
         QVERIFY2(panel->errorText("view.prp").isEmpty(), qPrintable(panel->errorText("view.prp")));
         QVERIFY(sameBits(prpN(), nearest));
         QCOMPARE(fieldOf(w, "view.prp", 2)->text(), QString("20*sqrt(2)"));
-        QCOMPARE(typed(), (Typed{{"view.prp[2]", "20*sqrt(2)"}}));
+        QCOMPARE(typed(), presetWith({{"view.prp[2]", "20*sqrt(2)"}}));
         QCOMPARE(w.document()->undoStack()->count(), 1);
 
         QTemporaryDir dir;
@@ -265,17 +276,17 @@ private slots:
         // Undo and redo from the field: the number and the text together.
         QTest::keyClick(fieldOf(w, "view.prp", 2), Qt::Key_Z, Qt::ControlModifier);
         QVERIFY(sameBits(prpN(), before));
-        QVERIFY(typed().empty());
-        QCOMPARE(fieldOf(w, "view.prp", 2)->text(), QString("65.96969000988257"));
+        QCOMPARE(typed(), preset);
+        QCOMPARE(fieldOf(w, "view.prp", 2)->text(), QString("16*sqrt(17)"));
         QTest::keyClick(fieldOf(w, "view.prp", 2), Qt::Key_Z, Qt::ControlModifier | Qt::ShiftModifier);
         QVERIFY(sameBits(prpN(), nearest));
-        QCOMPARE(typed(), (Typed{{"view.prp[2]", "20*sqrt(2)"}}));
+        QCOMPARE(typed(), presetWith({{"view.prp[2]", "20*sqrt(2)"}}));
         QCOMPARE(fieldOf(w, "view.prp", 2)->text(), QString("20*sqrt(2)"));
 
         // The same double typed as a number: the text goes, the number stays; one undoable edit.
         type(fieldOf(w, "view.prp", 2), "28.284271247461902");
         QVERIFY(sameBits(prpN(), nearest));
-        QVERIFY(typed().empty());
+        QCOMPARE(typed(), presetWith({{"view.prp[2]", ""}}));
         QCOMPARE(fieldOf(w, "view.prp", 2)->text(), QString("28.284271247461902"));
         QCOMPARE(w.document()->undoStack()->count(), 2);
 
@@ -287,16 +298,16 @@ private slots:
         QTest::keyClick(u, Qt::Key_Return);
         QCOMPARE(u->text(), QString::fromUtf8("\u221A2/2"));
         QVERIFY(sameBits(std::get<foley::ViewSpec<double>>(w.document()->scene().camera).prp.x(), std::sqrt(0.5)));
-        QCOMPARE(typed(), (Typed{{"view.prp[0]", "\u221A2/2"}}));
+        QCOMPARE(typed(), presetWith({{"view.prp[2]", ""}, {"view.prp[0]", "\u221A2/2"}}));
 
         // Another field's edit keeps it; an edit of its number from elsewhere (a dialog, the camera as code)
         // drops it, and the field shows the number.
         type(fieldOf(w, "view.back"), "-25");
-        QCOMPARE(typed(), (Typed{{"view.prp[0]", "\u221A2/2"}}));
+        QCOMPARE(typed(), presetWith({{"view.prp[2]", ""}, {"view.prp[0]", "\u221A2/2"}, {"view.back", ""}}));
         auto view = std::get<foley::ViewSpec<double>>(w.document()->scene().camera);
         view.prp.x() = 0.75;
         w.document()->setCamera(view, "elsewhere");
-        QVERIFY(typed().empty());
+        QCOMPARE(typed(), presetWith({{"view.prp[2]", ""}, {"view.back", ""}}));
         QCOMPARE(fieldOf(w, "view.prp", 0)->text(), QString("0.75"));
     }
 
@@ -466,7 +477,7 @@ private slots:
         type(front, "-30");
         QVERIFY(!panel->errorText("view.front").isEmpty());
         QTest::keyClick(front, Qt::Key_Escape);
-        QCOMPARE(front->text(), QString("19.79090700296477"));
+        QCOMPARE(front->text(), QString("24*sqrt(17)/5"));
         QVERIFY(panel->errorText("view.front").isEmpty());
         QVERIFY(!w.document()->undoStack()->canUndo());
     }
