@@ -324,7 +324,7 @@ std::string Exact::latex(int digits) const
 
 bool Exact::readsExactly() const
 {
-    if (!isExact() || infinity_ || terms_.size() > 1)
+    if (!isExact() || infinity_ || terms_.size() > 2 || (terms_.size() == 2 && terms_.begin()->first != 1))
         return false;
     const BigInt limit = boost::multiprecision::pow(BigInt(10), isRational() ? 9u : 4u);
     for (const auto& [radicand, coefficient] : terms_)

@@ -90,6 +90,22 @@ TEST(Exact, ExpressionsAsTyped)
         EXPECT_EQ(e(e(text).text().c_str()), e(text)) << text;
 }
 
+// What reads exactly is what a textbook writes: short fractions, a short root term, and one after a short
+// fraction (Foley's view D: z_min = 11 - 8 sqrt(2)); sums of roots and long numbers read as decimals.
+TEST(Exact, ShortFormsReadExactly)
+{
+    for (const char* shown : {"-13/36", "42/1475", "19*sqrt(482)/482", "11 - 8*sqrt(2)", "1 + sqrt(2)", "-1/4 - 3*sqrt(2)/10"})
+        EXPECT_TRUE(parseExact(shown).readsExactly()) << shown;
+    for (const char* decimal : {"sqrt(2) + sqrt(3)", "1 + 12345*sqrt(2)", "187*sqrt(1068594)/1068594", "1234567891/3",
+                                "1/3 + sqrt(2) + sqrt(5)"})
+        EXPECT_FALSE(parseExact(decimal).readsExactly()) << decimal;
+    // In the caption of S_per, as the CLI prints it.
+    const auto viewD = evaluateScene(parseScene(R"json({"view": {"projection": "perspective", "vrp": [16, 0, 54],
+        "vpn": [1, 0, 1], "vup": [0, 1, 0], "prp": [0, 25, "20*sqrt(2)"], "window": [-20, 20, -5, 35], "front": 10,
+        "back": -30}})json", "."));
+    EXPECT_NE(viewD->stageClaims.back().find("11 - 8\\sqrt{2}"), std::string::npos) << viewD->stageClaims.back();
+}
+
 TEST(Exact, BadExpressionsAreRefusedWithTheReason)
 {
     EXPECT_NE(refusal("sqrt(-1)").find("the square root of -1, a negative number"), std::string::npos) << refusal("sqrt(-1)");

@@ -60,7 +60,8 @@ public:
     // "-\frac{13}{36}", "\frac{\sqrt{2}}{2}"; inexact: `digits` significant digits.
     std::string latex(int digits = 6) const;
     // Short enough to read exactly, as a textbook writes it: a fraction of up
-    // to 9 digits, or one root term with up to 4 (-13/36, 42/1475, 19*sqrt(482)/482).
+    // to 9 digits, or one root term with up to 4 after at most a fraction as
+    // short (-13/36, 42/1475, 19*sqrt(482)/482, Foley's z_min 11 - 8*sqrt(2)).
     // A decimal reads better than 187*sqrt(1068594)/1068594, a sum of roots, or
     // a scene's 0.5773502691896258 taken exactly.
     bool readsExactly() const;
