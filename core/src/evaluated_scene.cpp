@@ -555,8 +555,9 @@ std::vector<std::string> claimsAtStages(const Pipeline<double>& pipeline, const 
                 claims[k] += (claims[k].empty() ? "" : "; ") + facts[f].text;
             before[f] = now;
         }
-        if (k > 0 && pipeline.stages[k - 1].divides)
-            claims[k] = "the picture stays: every stage is drawn divided by w";
+        if (k > 0 && pipeline.stages[k - 1].divides) // what the last matrix made true still holds, and shows
+            claims[k] = claims[k - 1] + (claims[k - 1].empty() ? "" : "; ") +
+                        "the picture stays: every stage is drawn divided by w";
         else if (k > 0 && claims[k].empty() && pipeline.stages[k - 1].matrix.isIdentity(0))
             claims[k] = "the identity here: nothing moves";
     }
@@ -896,7 +897,7 @@ std::string stageCaption(const EvaluatedScene& scene, std::size_t k, StageText t
 {
     const auto& stages = scene.pipeline.stages;
     std::string note = k < scene.stageClaims.size() ? scene.stageClaims[k] : "";
-    if (k > 0 && framedTogether(stages, int(k)).first == int(k))
+    if (k > 0 && framedTogether(stages, int(k)).first == int(k) && !stages[k - 1].divides) // the divide changes none
         note += std::string(note.empty() ? "" : " ") + "(framed anew: this stage changes sizes)";
     if (ghostAt(stages, int(k)))
         note += std::string(note.empty() ? "" : " ") + "(faint: where it was before)";

@@ -2,6 +2,7 @@
 
 #include <boost/multiprecision/miller_rabin.hpp>
 
+#include <algorithm>
 #include <cmath>
 #include <ostream>
 #include <set>
@@ -324,8 +325,13 @@ std::string Exact::latex(int digits) const
 
 bool Exact::readsExactly() const
 {
-    if (!isExact() || infinity_ || terms_.size() > 2 || (terms_.size() == 2 && terms_.begin()->first != 1))
+    if (!isExact() || infinity_ || terms_.size() > 2)
         return false;
+    if (terms_.size() == 2) // an integer and an integer times a root, each of up to 3 digits: 11 - 8*sqrt(2)
+        return terms_.begin()->first == 1 && std::all_of(terms_.begin(), terms_.end(), [](const auto& term) {
+                   return boost::multiprecision::denominator(term.second) == 1 &&
+                          abs(boost::multiprecision::numerator(term.second)) < 1000 && term.first < 10000;
+               });
     const BigInt limit = boost::multiprecision::pow(BigInt(10), isRational() ? 9u : 4u);
     for (const auto& [radicand, coefficient] : terms_)
         if (radicand >= limit || abs(boost::multiprecision::numerator(coefficient)) >= limit ||

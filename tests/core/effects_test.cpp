@@ -123,7 +123,7 @@ TEST(Effects, OpenGlDivideIsAStageThatDivides)
         EXPECT_EQ(cumulativeAt(p.stages, position), cumulativeAt(plain.stages, position)) << position;
     EXPECT_EQ(cumulativeAt(p.stages, pDepth + 0.5), cumulativeAt(p.stages, pDepth));
     EXPECT_EQ(cumulativeAt(p.stages, pDepth + 1), plain.composite);
-    EXPECT_TRUE(keepsShape(divide)); // framed with P_depth, no ghost
+    EXPECT_FALSE(keepsShape(divide)); // framed on its own (as P_depth is), no ghost
     EXPECT_FALSE(ghostAt(p.stages, int(pDepth) + 1));
 }
 

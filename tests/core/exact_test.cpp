@@ -94,10 +94,10 @@ TEST(Exact, ExpressionsAsTyped)
 // fraction (Foley's view D: z_min = 11 - 8 sqrt(2)); sums of roots and long numbers read as decimals.
 TEST(Exact, ShortFormsReadExactly)
 {
-    for (const char* shown : {"-13/36", "42/1475", "19*sqrt(482)/482", "11 - 8*sqrt(2)", "1 + sqrt(2)", "-1/4 - 3*sqrt(2)/10"})
+    for (const char* shown : {"-13/36", "42/1475", "19*sqrt(482)/482", "11 - 8*sqrt(2)", "1 + sqrt(2)", "-2 - 3*sqrt(5)"})
         EXPECT_TRUE(parseExact(shown).readsExactly()) << shown;
     for (const char* decimal : {"sqrt(2) + sqrt(3)", "1 + 12345*sqrt(2)", "187*sqrt(1068594)/1068594", "1234567891/3",
-                                "1/3 + sqrt(2) + sqrt(5)"})
+                                "1/3 + sqrt(2) + sqrt(5)", "23/4 + 23*sqrt(2)/16", "1000 + sqrt(2)"})
         EXPECT_FALSE(parseExact(decimal).readsExactly()) << decimal;
     // In the caption of S_per, as the CLI prints it.
     const auto viewD = evaluateScene(parseScene(R"json({"view": {"projection": "perspective", "vrp": [16, 0, 54],

@@ -122,7 +122,8 @@ TEST(WorldView, PDepthIsPicturedTheSameWithOrWithoutTheDivide)
     }
     EXPECT_EQ(divided->stageClaims[std::size_t(pDepth)], plain->stageClaims[std::size_t(pDepth)]);
     EXPECT_NE(plain->stageClaims[std::size_t(pDepth)].find("cube"), std::string::npos);
-    EXPECT_EQ(divided->stageClaims[std::size_t(pDepth + 1)], "the picture stays: every stage is drawn divided by w");
+    EXPECT_EQ(divided->stageClaims[std::size_t(pDepth + 1)],
+              plain->stageClaims[std::size_t(pDepth)] + "; the picture stays: every stage is drawn divided by w");
 }
 
 TEST(WorldView, AFramingHoldsEveryFramedElementOfItsStage)

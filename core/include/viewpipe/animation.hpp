@@ -54,14 +54,15 @@ template <class T> Mat4<T> cumulativeAt(const std::vector<Stage<T>>& stages, dou
 }
 
 // Whether a stage keeps lengths and angles (translations, rotations, their
-// products, and the divide, which pictures already show): pictures of the
-// stages it joins share one framing, so that they show what it moved instead
-// of following it.
+// products): pictures of the stages it joins share one framing, so that they
+// show what it moved instead of following it. Not the divide: it changes no
+// picture, but framed with P_depth the app kept P_depth's camera under the
+// divide's shorter caption, and its legend covered the cube.
 template <class T> bool keepsShape(const Stage<T>& stage)
 {
     const Mat4<T>& m = stage.matrix;
     const Mat3<T> r = m.template topLeftCorner<3, 3>();
-    return m.template bottomLeftCorner<1, 3>().isZero(T(0)) && m(3, 3) == T(1) &&
+    return !stage.divides && m.template bottomLeftCorner<1, 3>().isZero(T(0)) && m(3, 3) == T(1) &&
            (r * r.transpose()).isIdentity(T(64) * epsilonOf<T>());
 }
 

@@ -60,8 +60,9 @@ public:
     // "-\frac{13}{36}", "\frac{\sqrt{2}}{2}"; inexact: `digits` significant digits.
     std::string latex(int digits = 6) const;
     // Short enough to read exactly, as a textbook writes it: a fraction of up
-    // to 9 digits, or one root term with up to 4 after at most a fraction as
-    // short (-13/36, 42/1475, 19*sqrt(482)/482, Foley's z_min 11 - 8*sqrt(2)).
+    // to 9 digits, one root term with up to 4, or an integer and an integer
+    // times a root, of up to 3 (-13/36, 42/1475, 19*sqrt(482)/482, Foley's
+    // z_min 11 - 8*sqrt(2)); 23/4 + 23*sqrt(2)/16 is too wide for a matrix cell.
     // A decimal reads better than 187*sqrt(1068594)/1068594, a sum of roots, or
     // a scene's 0.5773502691896258 taken exactly.
     bool readsExactly() const;
