@@ -12,7 +12,7 @@ namespace viewpipe {
 
 double storyboardLabelSize(int widthPixels, double textScale)
 {
-    return std::max(10.0, std::ceil(kStoryboardLabelShare * widthPixels * textScale));
+    return exportLabelSize(widthPixels, textScale, kStoryboardLabelShare);
 }
 
 namespace {

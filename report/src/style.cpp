@@ -70,9 +70,9 @@ std::array<unsigned char, 3> toBytes(const Rgb& color)
     return {byte(color.r), byte(color.g), byte(color.b)};
 }
 
-double exportLabelSize(int widthPixels, double textScale)
+double exportLabelSize(int widthPixels, double textScale, double widthShare)
 {
-    return std::max(10.0, std::ceil(kLabelWidthShare * widthPixels * textScale)); // readable however small the picture
+    return std::max(10.0, std::ceil(widthShare * widthPixels * textScale)); // readable however small the picture
 }
 
 void checkTextScale(int percent, const std::string& field)

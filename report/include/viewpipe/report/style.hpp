@@ -34,7 +34,8 @@ constexpr double kLabelBackdropOpacity = 0.75;
 // wide, a column of lecture notes or a 16:9 Beamer slide. `textScale` enlarges
 // both (1 is 100 %), as the app's Larger Text does. Labels are never under 10 px.
 constexpr double kLabelWidthShare = 0.024, kSmallWidthShare = 0.018;
-double exportLabelSize(int widthPixels, double textScale);
+// `widthShare`: the labels' share of the width, another picture's than a single stage's (a storyboard's).
+double exportLabelSize(int widthPixels, double textScale, double widthShare = kLabelWidthShare);
 // Text scales in whole percent, 100 the default size: `export --text-scale`,
 // `open --text-scale` and the app's Larger and Smaller Text share this range.
 constexpr int kMinTextScale = 50, kMaxTextScale = 400;
