@@ -57,6 +57,11 @@ void addOpenCommand(CLI::App& app, int argc, char** argv)
     command->add_option("--step", open.step, "The lesson's step to show, from 1")->needs("--lesson");
     command->add_flag("--reveal", open.reveal, "Show the step's answer, as Show Answer does")->needs("--lesson");
     command->add_flag("--present", open.present, "Full screen, as View > Present (F5)");
+    command->add_option("--layout", open.layout,
+                        "stages: the world view beside what the camera sees;\n"
+                        "storyboard: every stage at once, as View > Storyboard (B)")
+        ->check(CLI::IsMember({"stages", "storyboard"}))
+        ->capture_default_str();
     setRun(command, [options, argc, argv] { return runOpen(argc, argv, *options); });
 }
 

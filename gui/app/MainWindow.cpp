@@ -14,6 +14,7 @@
 #include <QScrollBar>
 #include <QSettings>
 #include <QSplitter>
+#include <QStackedWidget>
 #include <QStatusBar>
 #include <QStyle>
 #include <QTabBar>
@@ -46,6 +47,7 @@
 #include "SceneFiles.h"
 #include "StagePanel.h"
 #include "Stepper.h"
+#include "StoryboardView.h"
 #include "Theme.h"
 
 namespace viewpipe::gui {
@@ -78,6 +80,7 @@ MainWindow::MainWindow(QWidget* parent)
         updateMatrices();
     });
     connect(stepper_, &Stepper::rested, this, &MainWindow::showStageDetails);
+    connect(stepper_, &Stepper::rested, this, [this] { storyboard_->setCurrentStage(stepper_->shownStage()); });
     connect(presentMode_, &PresentMode::stepRequested, lessonFlow_, &LessonFlow::advance);
     connect(effectsMenu_, &EffectsMenu::message, this, &MainWindow::showMessage);
     connect(document_, &Document::changed, this, &MainWindow::onDocumentChanged);
@@ -139,8 +142,10 @@ void MainWindow::buildViews()
     // The projected view is a fixed picture: no camera interaction.
     projectedWindow_->GetInteractor()->SetInteractorStyle(nullptr);
 
+    // Every view draws a mesh from one copy of its poly data.
+    const auto meshes = std::make_shared<MeshDetails>();
     painter_ = std::make_unique<ScenePainter>(worldWindow_->GetRenderers()->GetFirstRenderer(),
-                                              projectedWindow_->GetRenderers()->GetFirstRenderer());
+                                              projectedWindow_->GetRenderers()->GetFirstRenderer(), meshes);
 
     auto* splitter = new QSplitter(Qt::Horizontal);
     splitter->addWidget(worldWidget_);
@@ -148,7 +153,12 @@ void MainWindow::buildViews()
     splitter->setStretchFactor(0, 5);
     splitter->setStretchFactor(1, 3);
     splitter->setSizes({500, 300});
-    setCentralWidget(splitter);
+    storyboard_ = new StoryboardView(meshes);
+    connect(storyboard_, &StoryboardView::vertexPicked, this, &MainWindow::traceVertex);
+    views_ = new QStackedWidget;
+    views_->addWidget(splitter);
+    views_->addWidget(storyboard_);
+    setCentralWidget(views_);
     // From the start: a bar appearing with the first message (or after presenting) would shrink the views.
     statusBar();
 }
@@ -254,8 +264,12 @@ void MainWindow::addActions()
     QAction* projected = actions_->addToggle("view.projected", tr("&Projected View"),
                                              [this](bool on) { setProjectedViewVisible(on); }, QKeySequence(Qt::Key_P));
     projected->setChecked(true);
+    actions_->addToggle("view.storyboard", tr("&Storyboard"), [this](bool on) { setStoryboardShown(on); },
+                        QKeySequence(Qt::Key_S));
     actions_->add("view.reset", tr("&Reset View"), [this] {
         painter_->resetView();
+        if (storyboardShown())
+            storyboard_->resetView();
         renderNow();
     }, QKeySequence(Qt::Key_R));
     actions_->add("view.classical", tr("&Classical Projection…"), [this] { chooseClassicalProjection(); },
@@ -324,7 +338,7 @@ void MainWindow::buildMenus()
     actions_->fill(edit, {"edit.copyLatex", "edit.copyImage"});
 
     QMenu* view = menuBar()->addMenu(tr("&View"));
-    actions_->fill(view, {"view.projected", "view.reset", "view.classical", "-", "view.darkTheme", "view.lightTheme", "-",
+    actions_->fill(view, {"view.projected", "view.storyboard", "view.reset", "view.classical", "-", "view.darkTheme", "view.lightTheme", "-",
                           "view.present"});
     QMenu* presentOn = view->addMenu(tr("Present &On"));
     connect(presentOn, &QMenu::aboutToShow, this, [this, presentOn] {
@@ -362,6 +376,8 @@ void MainWindow::onDocumentChanged()
 {
     painter_->setScene(document_->evaluated());
     painter_->markTraced(traced_);
+    if (storyboardShown()) // an edit redraws every stage; hidden, it waits until shown
+        storyboard_->setScene(document_->evaluated());
     refreshWidgets();
 }
 
@@ -400,6 +416,8 @@ void MainWindow::updateMatrices()
     // A question waits: the stages' names and matrices would answer it.
     const bool waiting = lessonFlow_->hidesAnswers();
     stagePanel_->setAnswersHidden(waiting);
+    if (waiting && storyboardShown())
+        setStoryboardShown(false);
     if (waiting)
         return matrices_->showWaiting(tr("<i>The matrices follow the answer to the lesson's question.</i>"));
     const int stage = stepper_->shownStage();
@@ -429,6 +447,8 @@ void MainWindow::renderNow()
     renderWanted_ = renderHolds_ > 0;
     if (renderWanted_)
         return;
+    if (storyboardShown())
+        storyboard_->renderNow();
     worldWindow_->Render();
     if (projectedWidget_->isVisible())
         projectedWindow_->Render();
@@ -455,6 +475,7 @@ QImage MainWindow::worldViewImage()
 void MainWindow::setTheme(Theme theme)
 {
     painter_->setTheme(theme);
+    storyboard_->setTheme(theme);
     accuracy_->setTheme(theme);
     depth_->showDepth(document_->pipeline(), document_->evaluated()->outcomes.depth, theme);
     applyTheme(theme);
@@ -473,6 +494,7 @@ void MainWindow::setFontSize(int points, bool remember)
     QApplication::setFont(font);
     // Where the text leaves too little room, the caption and legend may shrink back to the default size.
     painter_->setFontSize(int(std::lround(fontSize_ * 1.6)), int(std::lround(kDefaultFontSize * 1.6)));
+    storyboard_->setTextScale(double(fontSize_) / kDefaultFontSize);
     if (remember && !presentMode_->isPresenting())
         QSettings().setValue("fontSize", fontSize_);
     // Once the widgets have taken the new font: the tabs' size hints follow it.
@@ -497,6 +519,29 @@ void MainWindow::setProjectedViewVisible(bool visible)
     projectedWidget_->setVisible(visible);
     actions_->action("view.projected")->setChecked(visible);
     renderNow();
+}
+
+void MainWindow::setStoryboardShown(bool shown)
+{
+    if (shown && lessonFlow_->hidesAnswers()) {
+        shown = false;
+        showMessage(tr("The storyboard follows the answer to the lesson's question: it names every stage"));
+    }
+    actions_->action("view.storyboard")->setChecked(shown);
+    if (shown == storyboardShown())
+        return;
+    if (shown) {
+        storyboard_->setScene(document_->evaluated());
+        storyboard_->setTraced(traced_);
+        storyboard_->setCurrentStage(stepper_->shownStage());
+    }
+    views_->setCurrentWidget(shown ? static_cast<QWidget*>(storyboard_) : views_->widget(0));
+    renderNow();
+}
+
+bool MainWindow::storyboardShown() const
+{
+    return views_->currentWidget() == storyboard_;
 }
 
 void MainWindow::updateTitle()
@@ -579,6 +624,8 @@ void MainWindow::traceVertex(const std::optional<Vec3<double>>& point)
 {
     traced_ = point;
     painter_->markTraced(traced_);
+    if (storyboardShown())
+        storyboard_->setTraced(traced_);
     updateTrace();
     renderNow();
 }

@@ -15,6 +15,7 @@
 #include "Document.h"
 #include "painter/ScenePainter.h"
 
+class QStackedWidget;
 class QVTKOpenGLNativeWidget;
 class vtkGenericOpenGLRenderWindow;
 
@@ -34,6 +35,7 @@ class PresentMode;
 class SceneFiles;
 class StagePanel;
 class Stepper;
+class StoryboardView;
 
 class MainWindow : public QMainWindow {
     Q_OBJECT
@@ -97,6 +99,11 @@ public:
     void setFontSize(int points, bool remember = true);
     int fontSize() const { return fontSize_; }
     void setProjectedViewVisible(bool visible);
+    // View > Storyboard: every stage at once in place of the world and projected views, or those again.
+    // Not while a lesson's question waits: the storyboard names every stage and traces the point.
+    void setStoryboardShown(bool shown);
+    bool storyboardShown() const;
+    StoryboardView* storyboard() { return storyboard_; }
     // Brings a dock to the front: "stages", "matrices", "parameters", "accuracy", "depth" or "code".
     void showPanel(const QString& name);
     // 1600x950, or less where the screen is smaller: every control stays on screen.
@@ -147,6 +154,8 @@ private:
     QVTKOpenGLNativeWidget* projectedWidget_ = nullptr;
     vtkGenericOpenGLRenderWindow* worldWindow_ = nullptr;
     vtkGenericOpenGLRenderWindow* projectedWindow_ = nullptr;
+    QStackedWidget* views_ = nullptr; // the two views, or the storyboard
+    StoryboardView* storyboard_ = nullptr;
     Stepper* stepper_ = nullptr;
     SceneFiles* sceneFiles_ = nullptr;
     LessonFlow* lessonFlow_ = nullptr;

@@ -106,6 +106,8 @@ int runOpen(int argc, char** argv, const OpenOptions& options)
         if (options.reveal)
             window.lessonFlow()->lesson()->reveal();
     }
+    if (options.layout == "storyboard")
+        window.setStoryboardShown(true);
     if (options.present)
         window.presentMode()->setPresenting(true);
     if (!options.panel.empty())

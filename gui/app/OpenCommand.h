@@ -19,6 +19,7 @@ struct OpenOptions {
     int step = 1;
     bool reveal = false;
     bool present = false;             // full screen, as View > Present
+    std::string layout = "stages";    // or "storyboard": every stage at once, as View > Storyboard
     int textScale = 0;                // percent of the default text size; 0: the user's setting (100 for a screenshot)
 };
 

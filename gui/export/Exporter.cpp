@@ -321,11 +321,7 @@ std::shared_ptr<const EvaluatedScene> withoutHidden(const std::shared_ptr<const 
     shown.labelsHidden = hidden.count("labels") > 0;
     shown.legendHidden = hidden.count("legend") > 0;
     std::shared_ptr<const EvaluatedScene> without = shownAtStep(scene, shown);
-    if (!hidden.count("notes") || without->effectsNote.empty())
-        return without;
-    auto noteless = std::make_shared<EvaluatedScene>(*without);
-    noteless->effectsNote.clear();
-    return noteless;
+    return hidden.count("notes") ? withoutEffectsNote(without) : without;
 }
 
 // Every chosen stage at once, one file per format: each cell drawn by a painter of the cell's size with the
@@ -340,17 +336,14 @@ void writeStoryboardFiles(const std::shared_ptr<const EvaluatedScene>& evaluated
     if (layout.cells.empty())
         throw InputError("--size", "leaves no room for a storyboard of " + std::to_string(chosen.size()) + " pictures");
     const Box2& cell = layout.cells.front().picture;
-    const auto cellScene = withoutHidden(evaluated, {"notes"});
+    const auto cellScene = withoutEffectsNote(evaluated);
     OffscreenPainter offscreen(cellScene, int(cell.max.x() - cell.min.x()), int(cell.max.y() - cell.min.y()), 1,
                                options.theme, false);
     ScenePainter& painter = *offscreen.painter;
-    painter.setFontSize(int(labelSize), int(labelSize));
-    painter.setLineScale(options.scale);
-    painter.setLegendPlace(LegendPlace::None);
-    painter.setTicksAndNotesShown(!options.hidden.count("ticks"), false);
-    painter.orbit(0, 0, options.zoom);
     const Vec3<double> traced = storyboardTracedPoint(*evaluated);
-    painter.markTraced(traced);
+    styleStoryboardCell(painter, labelSize, !options.hidden.count("ticks"), traced);
+    painter.setLineScale(options.scale);
+    painter.orbit(0, 0, options.zoom);
     const StageFramings framing = stageFramings(*cellScene, options.framing);
     StoryboardPictures pictures{{layout, {}, storyboardOverlay(*evaluated, layout, traced, figureFontMeasure(), options.scale),
                                  evaluated->scene.name.empty() ? "Storyboard" : evaluated->scene.name + ": every stage"},

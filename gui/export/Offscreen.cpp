@@ -34,4 +34,22 @@ StageShown showStageAtRest(const OffscreenPainter& offscreen, const EvaluatedSce
     return stageShown(scene, moment);
 }
 
+void styleStoryboardCell(ScenePainter& painter, double labelSize, bool ticks, const Vec3<double>& traced)
+{
+    painter.setFontSize(int(labelSize), int(labelSize));
+    painter.setLegendPlace(LegendPlace::None);
+    painter.setTicksAndNotesShown(ticks, false);
+    painter.setCaptions("", "");
+    painter.markTraced(traced);
+}
+
+std::shared_ptr<const EvaluatedScene> withoutEffectsNote(const std::shared_ptr<const EvaluatedScene>& scene)
+{
+    if (scene->effectsNote.empty())
+        return scene;
+    auto noteless = std::make_shared<EvaluatedScene>(*scene);
+    noteless->effectsNote.clear();
+    return noteless;
+}
+
 } // namespace viewpipe::gui

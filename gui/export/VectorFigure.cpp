@@ -156,7 +156,8 @@ void drawLegend(QPainter& painter, const Figure& figure, Theme theme)
     }
 }
 
-// A figure's shapes, labels and text in its own pixels, over what is drawn already.
+} // namespace
+
 void paintFigure(QPainter& painter, const Figure& figure, Theme theme)
 {
     for (const FigureShape& s : figure.shapes) {
@@ -207,6 +208,8 @@ void paintFigure(QPainter& painter, const Figure& figure, Theme theme)
     drawLines(p.noteLines, font(p.noteSize, false), p.note, p.noteLine);
     drawLegend(painter, figure, theme);
 }
+
+namespace {
 
 // Writes `file` atomically: a page of `width` by `height` on the theme's background, drawn by `draw`, as
 // SVG, PDF or PNG (by `format`); throws std::runtime_error when it cannot.

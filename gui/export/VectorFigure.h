@@ -14,6 +14,8 @@
 #include "viewpipe/report/storyboard.hpp"
 #include "viewpipe/report/style.hpp"
 
+class QPainter;
+
 namespace viewpipe::gui {
 
 struct VectorFigure {
@@ -27,6 +29,10 @@ struct VectorFigure {
 // The figure, with its caption, legend and note laid out as the PNG has them
 // (their boxes kept clear of labels).
 Figure flatFigure(const VectorFigure& figure);
+
+// A figure's shapes, labels and text in its own pixels, over what `painter` has drawn already
+// (the app's storyboard paints its overlay so, as the files do).
+void paintFigure(QPainter& painter, const Figure& figure, Theme theme);
 
 // Writes `file` atomically as SVG or PDF (by `format`); throws std::runtime_error when it cannot.
 void writeVectorFigure(const VectorFigure& figure, const std::string& format, const std::filesystem::path& file);

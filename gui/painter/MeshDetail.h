@@ -12,6 +12,7 @@
 #include <vtkSmartPointer.h>
 
 #include <future>
+#include <map>
 #include <memory>
 #include <vector>
 
@@ -58,5 +59,8 @@ private:
     vtkSmartPointer<vtkActor> actor_;
     vtkSmartPointer<vtkPolyDataMapper> full_, coarse_;
 };
+
+// Each mesh's poly data by mesh: one copy, however many views draw the mesh.
+using MeshDetails = std::map<const PolygonMesh*, std::shared_ptr<MeshDetail>>;
 
 } // namespace viewpipe::gui

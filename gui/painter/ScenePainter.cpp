@@ -111,8 +111,8 @@ void addObjectActors(const std::vector<vtkRenderer*>& renderers, const Evaluated
     }
 }
 
-ScenePainter::ScenePainter(vtkRenderer* world, vtkRenderer* projected)
-    : world_(world), worldCaption_(vtkSmartPointer<vtkTextActor>::New()),
+ScenePainter::ScenePainter(vtkRenderer* world, vtkRenderer* projected, std::shared_ptr<MeshDetails> meshes)
+    : world_(world), meshDetails_(std::move(meshes)), worldCaption_(vtkSmartPointer<vtkTextActor>::New()),
       effectsCaption_(vtkSmartPointer<vtkTextActor>::New()), frameAxes_(unlitActor(linesData(std::vector<Segment2>{}))),
       leaders_(overlayActor(1.5)), markers_(overlayActor(1)), backdrops_(overlayActor(1)), legend_(newLegend(true)), clippingRange_(vtkSmartPointer<vtkCallbackCommand>::New()),
       nearCut_(vtkSmartPointer<vtkPlane>::New())
@@ -174,9 +174,9 @@ void ScenePainter::clear()
 
 const std::shared_ptr<MeshDetail>& ScenePainter::meshDetail(const std::shared_ptr<const PolygonMesh>& mesh)
 {
-    auto found = meshDetails_.find(mesh.get());
-    if (found == meshDetails_.end())
-        found = meshDetails_.emplace(mesh.get(), std::make_shared<MeshDetail>(mesh)).first;
+    auto found = meshDetails_->find(mesh.get());
+    if (found == meshDetails_->end())
+        found = meshDetails_->emplace(mesh.get(), std::make_shared<MeshDetail>(mesh)).first;
     return found->second;
 }
 
@@ -240,12 +240,13 @@ void ScenePainter::setScene(std::shared_ptr<const EvaluatedScene> scene)
     tracedMarker_.reset();
     tracedLabel_.reset();
     cutting_ = false; // the new props are not cut yet
-    // Keep the poly data of the meshes the new scene shares with the last one.
-    std::map<const PolygonMesh*, std::shared_ptr<MeshDetail>> kept;
+    // Keep the poly data of the meshes the new scene shares with the last one (the layers of views
+    // sharing the store keep what they still draw).
+    MeshDetails kept;
     for (const Primitive& p : scene->primitives)
-        if (p.faces && meshDetails_.count(p.faces.get()))
-            kept.emplace(p.faces.get(), meshDetails_.at(p.faces.get()));
-    meshDetails_ = std::move(kept);
+        if (p.faces && meshDetails_->count(p.faces.get()))
+            kept.emplace(p.faces.get(), meshDetails_->at(p.faces.get()));
+    *meshDetails_ = std::move(kept);
     scene_ = std::move(scene);
     const EvaluatedScene& s = *scene_;
 

@@ -46,8 +46,10 @@ void setVtkCamera(vtkCamera* vtk, const WorldCamera& camera);
 
 class ScenePainter {
 public:
-    // `projected` may be null: then no projected view is drawn.
-    ScenePainter(vtkRenderer* world, vtkRenderer* projected);
+    // `projected` may be null: then no projected view is drawn. Painters given
+    // the same `meshes` draw a mesh from one copy of its poly data.
+    ScenePainter(vtkRenderer* world, vtkRenderer* projected,
+                 std::shared_ptr<MeshDetails> meshes = std::make_shared<MeshDetails>());
     ~ScenePainter();
     ScenePainter(const ScenePainter&) = delete;
     ScenePainter& operator=(const ScenePainter&) = delete;
@@ -166,7 +168,7 @@ private:
     std::unique_ptr<ProjectedView> projected_;
     std::shared_ptr<const EvaluatedScene> scene_;
     // The poly data of each mesh shown, so that a scene sharing a mesh with the last one does not rebuild it.
-    std::map<const PolygonMesh*, std::shared_ptr<MeshDetail>> meshDetails_;
+    std::shared_ptr<MeshDetails> meshDetails_;
     vtkSmartPointer<vtkTextActor> worldCaption_;
     vtkSmartPointer<vtkTextActor> effectsCaption_;
     vtkSmartPointer<vtkActor> frameAxes_;

@@ -249,6 +249,24 @@ private slots:
         QCOMPARE(QImage(byDefault), QImage(given));
     }
 
+    // `open --layout storyboard` opens on every stage at once (View > Storyboard): not the two
+    // views' picture; a layout it does not know is refused by name, exit 2.
+    void openShowsTheStoryboard()
+    {
+        QTemporaryDir dir;
+        const QString views = dir.filePath("views.png"), board = dir.filePath("board.png");
+        const QStringList shot = {"--size", "1280x800"};
+        const Run plain = runViewpipe(QStringList{"open", kHouse, "--screenshot", views} + shot);
+        QVERIFY2(plain.exitCode == 0, qPrintable(plain.err));
+        const Run r = runViewpipe(QStringList{"open", kHouse, "--layout", "storyboard", "--screenshot", board} + shot);
+        QVERIFY2(r.exitCode == 0, qPrintable(r.err));
+        QVERIFY2(contentShare(QImage(board)) > 0.2, "the screenshot is nearly blank");
+        QVERIFY(QImage(board) != QImage(views));
+        const Run refused = runViewpipe({"open", kHouse, "--layout", "grid", "--screenshot", board});
+        QCOMPARE(refused.exitCode, 2);
+        QVERIFY2(refused.err.contains("--layout"), qPrintable(refused.err));
+    }
+
     // Foley's house's export (PNG, 1280x720, light theme) against reviewed images.
     void exportMatchesBaselines()
     {

@@ -1,0 +1,81 @@
+#pragma once
+
+// Every stage at once in the window: the storyboard as `export --layout
+// storyboard` lays it out (layoutStoryboard), each cell a view of its own
+// (a painter at its stage at rest, styled as the export styles a cell), the
+// headers and footers (storyboardOverlay) painted around them. The cells
+// draw the scene's meshes from one copy of their poly data; turning one turns
+// them all; a click on a vertex traces it in every cell.
+
+#include <QWidget>
+
+#include <memory>
+#include <optional>
+#include <vector>
+
+#include "painter/MeshDetail.h"
+#include "painter/ScenePainter.h"
+#include "viewpipe/report/storyboard.hpp"
+
+class QVTKOpenGLNativeWidget;
+
+namespace viewpipe::gui {
+
+class StoryboardView : public QWidget {
+    Q_OBJECT
+public:
+    // The cells draw meshes from `meshes`, shared with the window's other views.
+    explicit StoryboardView(std::shared_ptr<MeshDetails> meshes, QWidget* parent = nullptr);
+    ~StoryboardView() override;
+
+    // Every stage of `scene`, each cell drawn anew.
+    void setScene(std::shared_ptr<const EvaluatedScene> scene);
+    // The point every cell traces: the user's, or the storyboard's own (storyboardTracedPoint).
+    void setTraced(const std::optional<Vec3<double>>& point);
+    // The stage the stepper shows, outlined.
+    void setCurrentStage(int stage);
+    void setTheme(Theme theme);
+    // The text's size as the window's Larger and Smaller Text set it: 1 is 100 %.
+    void setTextScale(double scale);
+    // Every cell framed as at first, turned as at first.
+    void resetView();
+    void renderNow();
+
+    int cellCount() const { return int(cells_.size()); }
+    int cellStage(int k) const;
+    QVTKOpenGLNativeWidget* cellWidget(int k) const;
+    const ScenePainter& cellPainter(int k) const;
+    const StoryboardLayout& layout() const { return layout_; }
+    // The point the cells trace.
+    Vec3<double> traced() const;
+
+signals:
+    // A vertex clicked in a cell (world coordinates), or none where a click found none.
+    void vertexPicked(const std::optional<Vec3<double>>& point);
+
+protected:
+    void paintEvent(QPaintEvent* event) override;
+    void resizeEvent(QResizeEvent* event) override;
+
+private:
+    struct Cell;
+    // The layout for the widget's size, the cells placed in it, the overlay made.
+    void layOut();
+    void buildCells();
+    // Every other cell turned and zoomed as cell k is.
+    void turnAllAs(int k);
+    double labelSize() const;
+
+    std::vector<std::unique_ptr<Cell>> cells_;
+    std::shared_ptr<MeshDetails> meshes_;
+    std::shared_ptr<const EvaluatedScene> scene_, cellScene_;
+    StageFramings framings_;
+    StoryboardLayout layout_;
+    Figure overlay_;
+    std::optional<Vec3<double>> traced_;
+    Theme theme_ = Theme::Dark;
+    double textScale_ = 1;
+    int currentStage_ = -1;
+};
+
+} // namespace viewpipe::gui

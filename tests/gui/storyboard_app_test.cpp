@@ -1,0 +1,250 @@
+// The storyboard in the app (View > Storyboard): every stage at once, driven
+// by keys and the mouse as a person drives it; one copy of a mesh however
+// many views draw it.
+
+#include <QLineEdit>
+#include <QStackedWidget>
+#include <QVTKOpenGLNativeWidget.h>
+#include <QtTest>
+
+#include <set>
+
+#include <vtkActor.h>
+#include <vtkActorCollection.h>
+#include <vtkGenericOpenGLRenderWindow.h>
+#include <vtkMapper.h>
+#include <vtkPolyData.h>
+#include <vtkRenderer.h>
+#include <vtkRendererCollection.h>
+
+#include "app_window.h"
+#include "app/ParameterPanel.h"
+#include "app/StoryboardView.h"
+#include "viewpipe/report/world_view.hpp"
+
+using namespace viewpipe;
+using namespace viewpipe::gui;
+
+namespace {
+
+const QString kHouse = QString(viewpipe::build::dataDir) + "/scenes/house.json";
+const QString kLetterF = QString(viewpipe::build::dataDir) + "/scenes/letter-f.json";
+const QString kFoley = QString(viewpipe::build::dataDir) + "/lessons/foley-nper.json";
+
+QImage cellPicture(MainWindow& window, int k)
+{
+    window.renderNow();
+    return window.storyboard()->cellWidget(k)->grabFramebuffer();
+}
+
+// The share of a picture's pixels that are not its background (its corner's color).
+double drawnShare(const QImage& image)
+{
+    const QRgb background = image.pixel(0, 0);
+    long drawn = 0;
+    for (int y = 0; y < image.height(); ++y)
+        for (int x = 0; x < image.width(); ++x)
+            drawn += image.pixel(x, y) != background;
+    return double(drawn) / (double(image.width()) * image.height());
+}
+
+// Where cell k draws a world point, in the cell widget's pixels (y down).
+QPoint drawnAt(MainWindow& window, int k, const Vec3<double>& world)
+{
+    const EvaluatedScene& scene = *window.document()->evaluated();
+    const FigureView view = window.storyboard()->cellPainter(k).figureView();
+    const Mat4<double> drawn = stageAtRest(scene, k, stageFramings(scene, FramingMode::Together)).drawn;
+    const Vec4<double> clip = view.camera * drawn * world.homogeneous();
+    const Vec3<double> ndc = clip.head<3>() / clip.w();
+    return QPoint(int(std::lround((ndc.x() + 1) / 2 * view.width)), int(std::lround((1 - ndc.y()) / 2 * view.height)));
+}
+
+// A left-button drag across a widget, as the mouse sends it (QTest's moves carry no button).
+void drag(QWidget* widget, QPoint from, QPoint to)
+{
+    QTest::mousePress(widget, Qt::LeftButton, {}, from);
+    for (int step = 1; step <= 10; ++step) {
+        const QPoint at = from + (to - from) * step / 10;
+        QMouseEvent move(QEvent::MouseMove, at, widget->mapToGlobal(at), Qt::NoButton, Qt::LeftButton, Qt::NoModifier);
+        QApplication::sendEvent(widget, &move);
+    }
+    QTest::mouseRelease(widget, Qt::LeftButton, {}, to);
+}
+
+} // namespace
+
+class StoryboardAppTest : public QObject {
+    Q_OBJECT
+    std::unique_ptr<MainWindow> window_;
+
+private slots:
+    void init()
+    {
+        window_ = openWindow(kHouse);
+        QVERIFY(window_);
+    }
+
+    void cleanup()
+    {
+        if (window_ && window_->lessonFlow()->lesson()->isOpen())
+            window_->lessonFlow()->lesson()->undoStack()->setClean();
+        closeWindow(window_);
+    }
+
+    // S shows every stage at once in place of the two views, each cell its stage's picture
+    // side by side in reading order; S again brings the two views back.
+    void theKeyShowsEveryStage()
+    {
+        MainWindow& w = *window_;
+        QTest::keyClick(&w, Qt::Key_S);
+        QVERIFY(w.storyboardShown());
+        QVERIFY(w.actions()->action("view.storyboard")->isChecked());
+        StoryboardView& board = *w.storyboard();
+        QTRY_VERIFY(board.isVisible());
+        QVERIFY(!w.findChild<QVTKOpenGLNativeWidget*>("worldView")->isVisible());
+        const int stages = int(w.document()->pipeline().stages.size());
+        QCOMPARE(board.cellCount(), stages + 1);
+        QRect before;
+        std::vector<QImage> pictures;
+        for (int k = 0; k < board.cellCount(); ++k) {
+            QCOMPARE(board.cellStage(k), k);
+            QWidget* cell = board.cellWidget(k);
+            QVERIFY2(cell->isVisible(), qPrintable(QString("stage %1 is not shown").arg(k)));
+            const QRect box = cell->geometry();
+            QVERIFY(board.rect().contains(box));
+            QVERIFY(box.width() >= 160 && box.height() >= 90);
+            // Reading order: each cell right of the one before in its row, or in a row below.
+            if (k > 0)
+                QVERIFY2(box.left() > before.right() || box.top() > before.bottom(), qPrintable(QString("stage %1").arg(k)));
+            before = box;
+            pictures.push_back(cellPicture(w, k));
+            QVERIFY2(drawnShare(pictures.back()) > 0.1, qPrintable(QString("stage %1 is nearly blank").arg(k)));
+        }
+        QVERIFY(pictures.front() != pictures.back()); // the world is not the canonical volume
+        // The shown stage is the stepper's: stepping outlines another cell, the pictures stay.
+        QTest::keyClick(&w, Qt::Key_Right);
+        QTRY_COMPARE(w.stepper()->shownStage(), 1);
+        QTest::keyClick(&w, Qt::Key_S);
+        QVERIFY(!w.storyboardShown());
+        QTRY_VERIFY(w.findChild<QVTKOpenGLNativeWidget*>("worldView")->isVisible());
+    }
+
+    // A click on a vertex in any cell traces it in every cell, and in the Matrices panel.
+    void aClickTracesAVertexInEveryCell()
+    {
+        MainWindow& w = *window_;
+        w.setStoryboardShown(true);
+        StoryboardView& board = *w.storyboard();
+        QTRY_VERIFY(board.cellWidget(3)->isVisible());
+        w.renderNow();
+        const Vec3<double> vertex(16, 10, 30);
+        QVERIFY(board.traced() != vertex);
+        QTest::mouseClick(board.cellWidget(3), Qt::LeftButton, {}, drawnAt(w, 3, vertex));
+        QVERIFY(w.traced());
+        QCOMPARE(*w.traced(), vertex);
+        QCOMPARE(board.traced(), vertex);
+    }
+
+    // Turning one cell turns them all, and each keeps its own stage's framing.
+    void turningOneCellTurnsAll()
+    {
+        MainWindow& w = *window_;
+        w.setStoryboardShown(true);
+        StoryboardView& board = *w.storyboard();
+        QTRY_VERIFY(board.cellWidget(1)->isVisible());
+        w.renderNow();
+        const QImage before = cellPicture(w, 4);
+        QWidget* cell = board.cellWidget(1);
+        drag(cell, cell->rect().center(), cell->rect().center() + QPoint(cell->width() / 4, 0));
+        const ScenePainter::Orbit turned = board.cellPainter(1).orbitAngles();
+        QVERIFY2(std::abs(turned.yaw) > 5, qPrintable(QString("yaw %1").arg(turned.yaw)));
+        for (int k = 0; k < board.cellCount(); ++k) {
+            const ScenePainter::Orbit orbit = board.cellPainter(k).orbitAngles();
+            QVERIFY2(std::abs(orbit.yaw - turned.yaw) < 1e-6 && std::abs(orbit.pitch - turned.pitch) < 1e-6,
+                     qPrintable(QString("stage %1: yaw %2, pitch %3").arg(k).arg(orbit.yaw).arg(orbit.pitch)));
+        }
+        QVERIFY(cellPicture(w, 4) != before);
+        // View > Reset View turns them all back.
+        QTest::keyClick(&w, Qt::Key_R);
+        for (int k = 0; k < board.cellCount(); ++k) {
+            const ScenePainter::Orbit orbit = board.cellPainter(k).orbitAngles();
+            QVERIFY2(std::abs(orbit.yaw) < 1e-6 && std::abs(orbit.pitch) < 1e-6,
+                     qPrintable(QString("stage %1: yaw %2, pitch %3").arg(k).arg(orbit.yaw).arg(orbit.pitch)));
+        }
+    }
+
+    // An edit redraws every cell.
+    void anEditRedrawsEveryCell()
+    {
+        MainWindow& w = *window_;
+        w.setStoryboardShown(true);
+        StoryboardView& board = *w.storyboard();
+        QTRY_VERIFY(board.cellWidget(0)->isVisible());
+        std::vector<QImage> before;
+        for (int k = 0; k < board.cellCount(); ++k)
+            before.push_back(cellPicture(w, k));
+        QLineEdit* prpN = w.parameters()->fields("view.prp").last();
+        prpN->setText("120");
+        emit prpN->editingFinished();
+        QCOMPARE(std::get<foley::ViewSpec<double>>(w.document()->scene().camera).prp.z(), 120.0);
+        for (int k = 0; k < board.cellCount(); ++k)
+            QVERIFY2(cellPicture(w, k) != before[std::size_t(k)], qPrintable(QString("stage %1 stayed").arg(k)));
+    }
+
+    // While a lesson's question waits, the storyboard (which names every stage and traces the
+    // point) is not shown: asked for, it says why; shown, it gives way to the two views.
+    void aWaitingQuestionKeepsTheStoryboardAway()
+    {
+        MainWindow& w = *window_;
+        w.setStoryboardShown(true);
+        QVERIFY(w.storyboardShown());
+        QVERIFY(w.lessonFlow()->openLesson(kFoley));
+        QVERIFY(w.lessonFlow()->hidesAnswers());
+        QVERIFY(!w.storyboardShown());
+        QTest::keyClick(&w, Qt::Key_S);
+        QVERIFY(!w.storyboardShown());
+        QVERIFY(!w.actions()->action("view.storyboard")->isChecked());
+        QVERIFY2(w.lastMessage().contains("storyboard"), qPrintable(w.lastMessage()));
+    }
+
+    // A mesh is one copy of poly data however many views draw it: the world view, the
+    // projected view and every cell of the storyboard draw the letter F from the same data.
+    void everyViewDrawsAMeshFromOneCopy()
+    {
+        MainWindow& w = *window_;
+        QVERIFY(w.sceneFiles()->openScene(kLetterF));
+        w.setStoryboardShown(true);
+        StoryboardView& board = *w.storyboard();
+        QVERIFY(board.cellCount() > 3);
+        const PolygonMesh& mesh = *w.document()->evaluated()->meshes.front();
+        std::vector<vtkRenderer*> renderers;
+        for (const char* view : {"worldView", "projectedView"})
+            renderers.push_back(w.findChild<QVTKOpenGLNativeWidget*>(view)->renderWindow()->GetRenderers()->GetFirstRenderer());
+        for (int k = 0; k < board.cellCount(); ++k)
+            renderers.push_back(board.cellWidget(k)->renderWindow()->GetRenderers()->GetFirstRenderer());
+        std::set<vtkDataObject*> copies;
+        int drawing = 0;
+        for (vtkRenderer* renderer : renderers) {
+            bool draws = false;
+            vtkActorCollection* actors = renderer->GetActors();
+            actors->InitTraversal();
+            while (vtkActor* actor = actors->GetNextActor()) {
+                auto* data = vtkPolyData::SafeDownCast(actor->GetMapper() ? actor->GetMapper()->GetInput() : nullptr);
+                if (data && data->GetNumberOfPolys() > 0 && data->GetNumberOfPoints() == vtkIdType(mesh.vertices.size())) {
+                    copies.insert(data);
+                    draws = true;
+                }
+            }
+            drawing += draws;
+        }
+        QCOMPARE(drawing, int(renderers.size()));
+        QCOMPARE(int(copies.size()), 1);
+    }
+};
+
+int main(int argc, char** argv)
+{
+    return runAppTests<StoryboardAppTest>(argc, argv);
+}
+
+#include "storyboard_app_test.moc"
