@@ -386,6 +386,12 @@ void readShown(const Json& j, const std::string& path, LessonStep& step, const P
             }
         }
     }
+    if (j.contains("layout")) {
+        const std::string layout = readString(j["layout"], child(path, "layout"));
+        if (layout != "stages" && layout != "storyboard")
+            throw InputError(child(path, "layout"), "must be stages or storyboard (got \"" + layout + "\")");
+        step.storyboard = layout == "storyboard";
+    }
     if (j.contains("panel")) {
         step.panel = readString(j["panel"], child(path, "panel"));
         if (std::find(panels.begin(), panels.end(), step.panel) == panels.end())
@@ -396,7 +402,7 @@ void readShown(const Json& j, const std::string& path, LessonStep& step, const P
 
 LessonStep readStep(const Json& j, const std::string& path, const std::filesystem::path& baseDir)
 {
-    requireObject(j, path, {"scene", "stage", "camera", "caption", "trace", "question", "hide", "highlight", "panel"},
+    requireObject(j, path, {"scene", "stage", "camera", "caption", "trace", "question", "hide", "highlight", "panel", "layout"},
                   {"scene", "caption"});
     LessonStep step;
     step.scene = readStepScene(j["scene"], child(path, "scene"), baseDir);
@@ -768,6 +774,8 @@ std::string lessonToJson(const Lesson& lesson, const std::filesystem::path& base
         writeShown(step, entry);
         if (!step.panel.empty())
             entry["panel"] = step.panel;
+        if (step.storyboard)
+            entry["layout"] = "storyboard";
         steps.push_back(entry);
     }
     return Json{{"title", lesson.title}, {"steps", steps}}.dump(2) + "\n";

@@ -18,6 +18,7 @@
 #include "LessonDocument.h"
 #include "LessonPanel.h"
 #include "MainWindow.h"
+#include "StoryboardView.h"
 #include "PresentMode.h"
 #include "Stepper.h"
 #include "Waiting.h"
@@ -204,6 +205,12 @@ void LessonFlow::showLessonStep()
         stepper->goToStage(stepper->stage(), false);
     }
     const bool revealed = !step.question || lesson_->isRevealed(k);
+    // A storyboard step shows every stage once its question is answered (the storyboard would answer it).
+    if (step.storyboard ? revealed : newStep) {
+        window_->setStoryboardShown(step.storyboard && revealed);
+        if (window_->storyboardShown())
+            window_->storyboard()->setScene(shownAtStep(document->evaluated(), step));
+    }
     window_->traceVertex(tracedAt(step, revealed)); // the point asked about, followed through the stages once answered
     const int stage = revealed ? revealedStage(step) : askingStage(step);
     // The answer comes with the transition to the stage asked about; a step to the next stage plays it too.
@@ -232,6 +239,7 @@ LessonStep LessonFlow::stepFromView() const
     // The stage's name, for the author to go on from; not the picture's notes on framing and ghosts.
     step.caption = stageText(document->pipeline().stages, std::size_t(stage), StageText::Caption);
     step.trace = window_->traced();
+    step.storyboard = window_->storyboardShown();
     return step;
 }
 

@@ -46,6 +46,8 @@ public:
     QVTKOpenGLNativeWidget* cellWidget(int k) const;
     const ScenePainter& cellPainter(int k) const;
     const StoryboardLayout& layout() const { return layout_; }
+    // The scene the cells draw (a lesson step's, without what it hides).
+    const std::shared_ptr<const EvaluatedScene>& scene() const { return scene_; }
     // The point the cells trace.
     Vec3<double> traced() const;
 

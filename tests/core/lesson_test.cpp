@@ -294,8 +294,8 @@ TEST(Lesson, ALessonSavedReadsBackTheSame)
                 EXPECT_EQ(fs::weakly_canonical(a.scene.file), fs::weakly_canonical(b.scene.file));
                 EXPECT_EQ(std::tie(a.stage, a.yaw, a.pitch, a.zoom, a.caption), std::tie(b.stage, b.yaw, b.pitch, b.zoom, b.caption));
                 EXPECT_EQ(a.trace.has_value(), b.trace.has_value());
-                EXPECT_EQ(std::tie(a.hidden, a.labelsHidden, a.legendHidden, a.highlighted, a.entries, a.panel),
-                          std::tie(b.hidden, b.labelsHidden, b.legendHidden, b.highlighted, b.entries, b.panel));
+                EXPECT_EQ(std::tie(a.hidden, a.labelsHidden, a.legendHidden, a.highlighted, a.entries, a.panel, a.storyboard),
+                          std::tie(b.hidden, b.labelsHidden, b.legendHidden, b.highlighted, b.entries, b.panel, b.storyboard));
                 ASSERT_EQ(a.question.has_value(), b.question.has_value());
                 if (!a.question)
                     continue;
@@ -561,6 +561,21 @@ TEST(Lesson, AStepHidesAndHighlightsElementsAndEntries)
                   "steps[0].highlight.elements[0]", "must be one of");
     expectRefused([] { lessonWith(R"({"scene": "house.json", "caption": "c", "panel": "tikz"})"); }, "steps[0].panel",
                   "must be one of stages, matrices");
+}
+
+// A step may show every stage at once; the file keeps it, and only the layouts there are.
+TEST(Lesson, AStepMayShowTheStoryboard)
+{
+    const Lesson lesson = lessonWith(R"({"scene": "house.json", "caption": "c", "layout": "storyboard"})");
+    EXPECT_TRUE(lesson.steps[0].storyboard);
+    EXPECT_FALSE(lessonWith(R"({"scene": "house.json", "caption": "c", "layout": "stages"})").steps[0].storyboard);
+    EXPECT_FALSE(lessonWith(R"({"scene": "house.json", "caption": "c"})").steps[0].storyboard);
+    const std::string written = lessonToJson(lesson, kScenes);
+    EXPECT_NE(written.find(R"("layout": "storyboard")"), std::string::npos) << written;
+    EXPECT_TRUE(parseLesson(written, kScenes).steps[0].storyboard);
+    expectRefused([] { lessonWith(R"({"scene": "house.json", "caption": "c", "layout": "grid"})"); }, "steps[0].layout",
+                  "must be stages or storyboard (got \"grid\")");
+    expectRefused([] { lessonWith(R"({"scene": "house.json", "caption": "c", "layout": 2})"); }, "steps[0].layout", "");
 }
 
 // One evaluation a scene, however many steps show it; one shown scene for the steps that show it alike; a scene the

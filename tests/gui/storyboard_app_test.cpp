@@ -2,7 +2,9 @@
 // by keys and the mouse as a person drives it; one copy of a mesh however
 // many views draw it.
 
+#include <QFile>
 #include <QLineEdit>
+#include <QTemporaryDir>
 #include <QStackedWidget>
 #include <QVTKOpenGLNativeWidget.h>
 #include <QtTest>
@@ -205,6 +207,34 @@ private slots:
         QVERIFY(!w.storyboardShown());
         QVERIFY(!w.actions()->action("view.storyboard")->isChecked());
         QVERIFY2(w.lastMessage().contains("storyboard"), qPrintable(w.lastMessage()));
+    }
+
+    // A lesson step with "layout": "storyboard" shows every stage once its question is answered
+    // (before, the two views: the storyboard would answer it); the next step, without it, the two views.
+    void aLessonStepShowsTheStoryboardOnceAnswered()
+    {
+        MainWindow& w = *window_;
+        QTemporaryDir dir;
+        const QString lesson = dir.filePath("board.json");
+        const QString step = QString(R"({"scene": "%1", "stage": 5, "caption": "c", "layout": "storyboard", "hide": ["projectors"],
+            "question": {"kind": "choice", "prompt": "p", "choices": ["a", "b"], "answer": 0}})").arg(kHouse);
+        QFile file(lesson);
+        QVERIFY(file.open(QIODevice::WriteOnly));
+        file.write(QString(R"({"title": "t", "steps": [%1, {"scene": "%2", "caption": "d"}]})").arg(step, kHouse).toUtf8());
+        file.close();
+        QVERIFY(w.lessonFlow()->openLesson(lesson));
+        QVERIFY(!w.storyboardShown());
+        w.lessonFlow()->lesson()->reveal();
+        QTRY_VERIFY(w.storyboardShown());
+        // The step's hide holds in every cell: the projectors the scene has are not drawn.
+        auto projectors = [](const EvaluatedScene& scene) {
+            return std::count_if(scene.primitives.begin(), scene.primitives.end(),
+                                 [](const Primitive& p) { return p.element == Element::Projectors; });
+        };
+        QVERIFY(projectors(*w.document()->evaluated()) > 0);
+        QCOMPARE(projectors(*w.storyboard()->scene()), 0);
+        QTest::keyClick(&w, Qt::Key_PageDown);
+        QTRY_VERIFY(!w.storyboardShown());
     }
 
     // A mesh is one copy of poly data however many views draw it: the world view, the

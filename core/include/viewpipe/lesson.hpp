@@ -61,6 +61,7 @@ struct LessonStep {
     std::set<Element> highlighted;      // drawn with wider lines
     std::vector<std::array<int, 2>> entries; // the shown stage's matrix entries highlighted (row, column from 1)
     std::string panel;                  // the app's panel in front: stages, matrices, parameters, code, accuracy, depth
+    bool storyboard = false;            // "layout": "storyboard": the app shows every stage at once (once answered)
 };
 
 // The elements a step can hide or highlight, by their names in the file
