@@ -5,6 +5,7 @@
 #include "viewpipe/report/latex.hpp"
 #include "viewpipe/report/lesson_latex.hpp"
 #include "viewpipe/report/stage_symbols.hpp"
+#include "viewpipe/report/storyboard.hpp"
 #include "viewpipe/report/world_view.hpp"
 
 namespace viewpipe {
@@ -433,6 +434,71 @@ std::string webStageFigure(const EvaluatedScene& scene, int stage, const Mat4<do
     }
     return json{{"width", figure.width}, {"height", figure.height}, {"shapes", shapes},
                 {"labels", placedLabelsJson(figure.labels, o.theme)}}
+        .dump();
+}
+
+std::string webStoryboard(const EvaluatedScene& scene, int width, int height, const std::optional<Vec3<double>>& traced,
+                          const std::vector<Mat4<double>>& cameras, const WebViewOptions& o, const FontMeasure& measure)
+{
+    std::vector<int> stages;
+    for (int k = 0; k <= int(scene.pipeline.stages.size()); ++k)
+        stages.push_back(k);
+    const double textScale = o.fontSize / exportLabelSize(o.width, 1);
+    const StoryboardLayout layout = layoutStoryboard(stages, width, height, storyboardLabelSize(width, textScale));
+    const Vec3<double> point = traced ? *traced : storyboardTracedPoint(scene);
+    const StageFramings framings = stageFramings(scene, o.framing);
+    json cells = json::array();
+    for (const StoryboardCell& cell : layout.cells) {
+        const Vec2<double> size = cell.picture.max - cell.picture.min;
+        const int w = int(size.x()), h = int(size.y());
+        // Framed in the whole picture, as the native storyboard's cells: no caption or legend in it.
+        WorldCamera camera;
+        const WorldMoment moment = stageAtRest(scene, cell.stage, framings);
+        frameOn(camera, moment.framing, ViewFit{w, h, Box2{{0, 0}, {double(w), double(h)}}, 1, Vec3<double>::Zero()});
+        WebFrame rest;
+        rest.view = camera.view();
+        rest.projection = camera.projection(double(w) / h);
+        rest.focalPoint = camera.focalPoint;
+        rest.shown = moment.drawn;
+        rest.canonicalOpacity = moment.canonicalOpacity;
+        StageShown shown = stageShown(scene, moment);
+        rest.cut = shown.cut;
+        shown.traced = point;
+        FigureView view;
+        view.camera = std::size_t(cell.stage) < cameras.size() ? cameras[std::size_t(cell.stage)] : rest.projection * rest.view;
+        view.width = w;
+        view.height = h;
+        view.frameExtent = frameExtent(moment.framing);
+        view.fontSize = view.textSize = view.minFontSize = layout.labelSize;
+        view.lineScale = o.lineScale;
+        const Figure figure = drawFigure(shown, view, labelMeasure(measure, layout.labelSize), {});
+        json entry = {{"stage", cell.stage},         {"header", boxJson(cell.header)},
+                      {"picture", boxJson(cell.picture)}, {"footer", boxJson(cell.footer)},
+                      {"rest", frameJson(rest)},     {"labels", placedLabelsJson(figure.labels, o.theme)}};
+        if (moment.ghost)
+            entry["ghost"] = matrix(*moment.ghost);
+        cells.push_back(entry);
+    }
+    const Figure overlay = storyboardOverlay(scene, layout, point, measure, o.lineScale);
+    json arrows = json::array();
+    for (const FigureShape& s : overlay.shapes) {
+        json points = json::array();
+        for (const Vec2<double>& p : s.points)
+            points.push_back({p.x(), p.y()});
+        arrows.push_back({{"surface", s.surface}, {"color", color(styledColor(s.element, s.surface, o.theme))},
+                          {"lineWidth", s.lineWidth}, {"points", points}});
+    }
+    json texts = json::array(); // each cell's header, then its footer
+    for (const PlacedLabel& l : overlay.labels)
+        texts.push_back({{"text", l.text}, {"spoken", mathSpokenText(l.text)}, {"box", boxJson(l.box)}, {"minor", l.minor},
+                         {"color", color(elementColor(l.element, o.theme))}});
+    return json{{"columns", layout.columns},
+                {"labelSize", layout.labelSize},
+                {"smallSize", smallTextSize(layout.labelSize)},
+                {"traced", vec(point)},
+                {"cells", cells},
+                {"arrows", arrows},
+                {"texts", texts}}
         .dump();
 }
 

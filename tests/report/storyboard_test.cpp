@@ -15,6 +15,9 @@
 #include "viewpipe/report/storyboard.hpp"
 #include "viewpipe/report/style.hpp"
 #include "viewpipe/report/tikz.hpp"
+#include "viewpipe/report/web_page.hpp"
+
+#include <nlohmann/json.hpp>
 
 namespace viewpipe {
 namespace {
@@ -162,6 +165,51 @@ TEST(Storyboard, ShapesAreCutToTheCell)
     ASSERT_EQ(figure.shapes[2].points.size(), 4u);
     for (const Vec2<double>& p : figure.shapes[2].points)
         EXPECT_TRUE(p.x() >= 0 && p.x() <= 50 && p.y() >= 0 && p.y() <= 50) << p.transpose();
+}
+
+// The page's storyboard (webStoryboard, which the page's core hands it) is this one: the same cells, headers and
+// footers; each cell's labels placed inside its own picture, none over another; the point traced the page's.
+TEST(Storyboard, ThePagesIsTheSameLayoutWithEachCellsLabelsPlacedInIt)
+{
+    const auto house = builtIn("house.json");
+    WebViewOptions options;
+    options.fontSize = options.minFontSize = exportLabelSize(options.width, 1); // text at 100 %
+    const nlohmann::json page =
+        nlohmann::json::parse(webStoryboard(*house, 1280, 720, std::nullopt, {}, options, roughMeasure()));
+    const StoryboardLayout layout = layoutStoryboard(allStages(*house), 1280, 720, storyboardLabelSize(1280, 1));
+    const Figure overlay = storyboardOverlay(*house, layout, storyboardTracedPoint(*house), roughMeasure(), 1);
+    EXPECT_EQ(page["columns"], 3);
+    EXPECT_EQ(page["labelSize"], layout.labelSize);
+    EXPECT_EQ(page["traced"], nlohmann::json({0, 0, 54}));
+    ASSERT_EQ(page["cells"].size(), layout.cells.size());
+    ASSERT_EQ(page["texts"].size(), overlay.labels.size());
+    EXPECT_EQ(page["arrows"].size(), overlay.shapes.size());
+    const auto box = [](const Box2& b) { return nlohmann::json({b.min.x(), b.min.y(), b.max.x(), b.max.y()}); };
+    for (std::size_t k = 0; k < layout.cells.size(); ++k) {
+        const nlohmann::json& cell = page["cells"][k];
+        EXPECT_EQ(cell["stage"], int(k));
+        EXPECT_EQ(cell["picture"], box(layout.cells[k].picture));
+        EXPECT_EQ(page["texts"][2 * k]["text"], overlay.labels[2 * k].text);
+        EXPECT_EQ(page["texts"][2 * k + 1]["text"], overlay.labels[2 * k + 1].text);
+        const double width = layout.cells[k].picture.max.x() - layout.cells[k].picture.min.x(),
+                     height = layout.cells[k].picture.max.y() - layout.cells[k].picture.min.y();
+        const nlohmann::json& labels = cell["labels"];
+        EXPECT_FALSE(labels.empty()) << k;
+        for (std::size_t a = 0; a < labels.size(); ++a) {
+            const nlohmann::json& l = labels[a]["box"];
+            EXPECT_TRUE(l[0] >= 0 && l[1] >= 0 && l[2] <= width && l[3] <= height) << k << ": " << labels[a]["text"];
+            for (std::size_t b = a + 1; b < labels.size(); ++b) {
+                const nlohmann::json& o = labels[b]["box"];
+                EXPECT_FALSE(l[0] < o[2] && o[0] < l[2] && l[1] < o[3] && o[1] < l[3])
+                    << k << ": " << labels[a]["text"] << " over " << labels[b]["text"];
+            }
+        }
+    }
+    EXPECT_EQ(page["texts"][7]["text"], "traced (\u22128, \u22126, \u221230)"); // T(-PRP), the footer of stage 3
+    // A point the page traces instead: (8, 6, 84), the PRP, is the origin after T(-PRP).
+    const nlohmann::json traced = nlohmann::json::parse(
+        webStoryboard(*house, 1280, 720, Vec3<double>(8, 6, 84), {}, options, roughMeasure()));
+    EXPECT_EQ(traced["texts"][7]["text"], "traced (0, 0, 0)");
 }
 
 // Where pictures are left out between two cells no arrow joins them: T(-PRP) does not lead from the world.

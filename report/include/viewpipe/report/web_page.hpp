@@ -93,6 +93,15 @@ std::string webStageLabels(const EvaluatedScene& scene, int stage, const Mat4<do
 std::string webStageFigure(const EvaluatedScene& scene, int stage, const Mat4<double>& camera,
                            const WebViewOptions& options, const FontMeasure& measure);
 
+// Every stage at once (the storyboard, storyboard.hpp) in the page's room, `width` by `height` pixels, as
+// JSON: the layout's cells, each with its stage's camera at rest framed in its picture and its labels placed
+// there (seen through `cameras[k]`, stage -> clip coordinates, where the page turned the view), the traced
+// point (`traced`, else storyboardTracedPoint) and the overlay: the arrows, headers and footers. The text
+// is the storyboard's size for `options`' text scale (its fontSize beside exportLabelSize at its width).
+std::string webStoryboard(const EvaluatedScene& scene, int width, int height, const std::optional<Vec3<double>>& traced,
+                          const std::vector<Mat4<double>>& cameras, const WebViewOptions& options,
+                          const FontMeasure& measure);
+
 // A scene as the page draws it, as JSON: what the page's core makes anew on every edit.
 std::string webPageData(const EvaluatedScene& scene, const WebPageViews& views);
 // The whole page.
