@@ -8,6 +8,7 @@
 
 #include <exception>
 #include <filesystem>
+#include <optional>
 #include <fstream>
 #include <stdexcept>
 #include <string>
@@ -177,6 +178,32 @@ Outcome stageFigure(const std::string& sceneText, const std::string& options, in
                     const emscripten::val& measure, const std::string& shown)
 {
     return stageThrough("stageFigure", sceneText, options, stage, camera, measure, shown, webStageFigure);
+}
+
+// Every stage at once in the page's room (webStoryboard): `room` is {"width", "height"}, `traced` [x, y, z]
+// or null, `cameras` null (each cell at rest) or one camera a stage (16 numbers, row by row, as stageThrough's).
+Outcome storyboard(const std::string& sceneText, const std::string& options, const std::string& room,
+                   const std::string& traced, const std::string& cameras, const emscripten::val& measure)
+{
+    return guarded([&] {
+        const auto evaluated = evaluatedOnce(sceneText, false);
+        const nlohmann::json size = nlohmann::json::parse(room), point = nlohmann::json::parse(traced),
+                             turned = nlohmann::json::parse(cameras);
+        std::optional<Vec3<double>> tracedPoint;
+        if (!point.is_null())
+            tracedPoint = Vec3<double>(point.at(0), point.at(1), point.at(2));
+        std::vector<Mat4<double>> clips;
+        for (const nlohmann::json& rows : turned.is_null() ? nlohmann::json::array() : turned) {
+            if (rows.size() != 16)
+                throw std::invalid_argument("storyboard: 16 numbers a camera");
+            Mat4<double>& clip = clips.emplace_back();
+            for (int k = 0; k < 16; ++k)
+                clip(k / 4, k % 4) = rows[std::size_t(k)];
+        }
+        return Outcome{webStoryboard(*evaluated, size.at("width"), size.at("height"), tracedPoint, clips,
+                                     viewOptions(options), pageMeasure(measure)),
+                       ""};
+    });
 }
 
 // A lesson's question (`question` as the lesson file holds it) about `sceneText`.
@@ -395,6 +422,7 @@ EMSCRIPTEN_BINDINGS(viewpipe)
     emscripten::function("evaluate", &evaluate);
     emscripten::function("placeLabels", &placeLabels);
     emscripten::function("stageFigure", &stageFigure);
+    emscripten::function("storyboard", &storyboard);
     emscripten::function("checkAnswer", &checkAnswer);
     emscripten::function("lessonResults", &lessonResults);
     emscripten::function("codeDialects", &codeDialects);
