@@ -1,11 +1,22 @@
-  // page/drawing.js: drawWorld (objects, markers, the traced vertex, labels) and drawProjected, each time a view is drawn.
+  // page/drawing.js: drawWorld and drawView (objects, markers, the traced vertex, labels) and drawProjected, each time a view is drawn.
   function drawWorld() {
     if (!shown) return;
-    const { frame, atRest, ghost } = shown;
     const size = sizeOf(worldCanvas);
-    world.setSize(size.width, size.height, false);
     placePictureText(size);
-    const { view, projection } = cameraMatrices(frame, size);
+    // The canonical volume's line of the legend while it is drawn, as in the app.
+    document.querySelectorAll('#legend [data-canonical]').forEach((row) => { row.hidden = !(shown.frame.canonical > 0); });
+    const { frame, atRest, ghost } = shown;
+    drawView({ renderer: world, overlay: worldOverlay, size, picture: data, fonts: data, frame, atRest, ghost,
+               stage: state.stage, traced: state.traced,
+               labels: !atRest ? null : userMoved() ? labelsTurned() : stages[state.stage].labels });
+  }
+
+  // One picture of the world: `frame` drawn by `renderer` at `size` (the picture `picture` was framed for,
+  // fitted), with markers, the `traced` point and the `labels` placed (in picture pixels; null: each at a free
+  // corner of its anchor) drawn on `overlay`; `copied`: the renderer's picture copied under them there.
+  function drawView({ renderer, overlay, size, picture, fonts, frame, atRest, ghost, stage, traced, labels, copied }) {
+    renderer.setSize(size.width, size.height, false);
+    const { view, projection } = cameraMatrices(frame, size, picture);
     camera.matrix.getInverse(view);
     camera.matrixWorldNeedsUpdate = true;
     camera.projectionMatrix.copy(projection);
@@ -14,7 +25,7 @@
     const ghostMatrix = ghost ? matrixOf(ghost) : null;
     const cut = frame.cut ? new THREE.Vector4(...frame.cut) : noCut;
     const ratio = window.devicePixelRatio || 1;
-    const widthScale = Math.max(1, fitScale(size) * state.zoom) * ratio;
+    const widthScale = Math.max(1, fitScale(size, picture) * state.zoom) * ratio;
     for (const { object: thin, wide, primitive, ghost: isGhost } of items) {
       for (const object of [thin, wide]) {
         if (!object) continue;
@@ -43,15 +54,14 @@
         object.matrixWorldNeedsUpdate = true;
       }
     }
-    if (frameAxes) frameAxes.visible = atRest;
-    // The canonical volume's line of the legend while it is drawn, as in the app.
-    document.querySelectorAll('#legend [data-canonical]').forEach((row) => { row.hidden = !(frame.canonical > 0); });
-    render(world, worldScene, camera);
+    frameAxes.forEach((axes, k) => { axes.visible = atRest && k === stage; });
+    render(renderer, worldScene, camera);
 
-    const context = fitOverlay(worldOverlay, size);
+    const context = fitOverlay(overlay, size);
+    if (copied) context.drawImage(renderer.domElement, 0, 0, size.width, size.height);
     const clipFromStage = projection.clone().multiply(view);
     const clipFromWorld = clipFromStage.clone().multiply(stageMatrix);
-    const s = fitScale(size);
+    const s = fitScale(size, picture);
     const markerScale = Math.max(0.5, s);
     for (const marker of data.markers) {
       if (!kept(frame.cut, marker.point)) continue;
@@ -72,9 +82,9 @@
       }
       context.fill();
     }
-    if (state.traced) {
-      const at = project(clipFromWorld, state.traced, size);
-      if (at && kept(frame.cut, state.traced)) {
+    if (traced) {
+      const at = project(clipFromWorld, traced, size);
+      if (at && kept(frame.cut, traced)) {
         context.strokeStyle = cssColor(data.ink);
         context.lineWidth = 2;
         context.beginPath();
@@ -94,15 +104,14 @@
       context.fillStyle = cssColor(data.background, data.labelBackdropOpacity);
       context.fillRect(x, y, width, height);
     };
-    const placed = !atRest ? null : userMoved() ? labelsTurned() : stages[state.stage].labels;
-    if (placed) {
-      // Where the core placed them, as in the app's pictures: export pixels, fitted.
-      const toView = pictureToView(size);
+    if (labels) {
+      // Where the core placed them, as in the app's pictures: picture pixels, fitted.
+      const toView = pictureToView(size, picture);
       const place = (x, y) => ({ x: toView.x(x), y: toView.y(y) });
-      for (const label of placed) {
+      for (const label of labels) {
         const [x0, y0, x1, y1] = label.box;
         const corner = place(x0, y0);
-        const { px, weight } = labelFont(context, label, s);
+        const { px, weight } = labelFont(context, label, s, fonts);
         backdrop(corner.x, corner.y, (x1 - x0) * s, (y1 - y0) * s);
         context.fillStyle = cssColor(label.color);
         drawRuns(label.runs, corner.x, corner.y + ((y1 - y0) * s - px) / 2, px, weight);
@@ -120,7 +129,7 @@
     } else {
       // Moving between stages (or turned where the core cannot place them): each label at a corner of its
       // anchor that no label drawn before covers, or left out.
-      const px = data.fontSize * Math.max(0.6, s);
+      const px = fonts.fontSize * Math.max(0.6, s);
       const taken = [];
       const overlaps = (a) => taken.some((b) => a.x0 < b.x1 && b.x0 < a.x1 && a.y0 < b.y1 && b.y0 < a.y1);
       for (const label of data.labels) {

@@ -13,28 +13,28 @@
     context.clearRect(0, 0, size.width, size.height);
     return context;
   }
-  // The export's picture fitted into the view, whole: pixels per export pixel.
-  function fitScale(size) {
-    return Math.min(size.width / data.width, size.height / data.height);
+  // The picture (the export's, or a storyboard cell's) fitted into the view, whole: pixels per picture pixel.
+  function fitScale(size, picture = data) {
+    return Math.min(size.width / picture.width, size.height / picture.height);
   }
   // The picture's pixels to the view's, x and y apart: the picture fitted, centred.
-  function pictureToView(size) {
-    const s = fitScale(size);
-    return { x: (v) => (v - data.width / 2) * s + size.width / 2, y: (v) => (v - data.height / 2) * s + size.height / 2 };
+  function pictureToView(size, picture = data) {
+    const s = fitScale(size, picture);
+    return { x: (v) => (v - picture.width / 2) * s + size.width / 2, y: (v) => (v - picture.height / 2) * s + size.height / 2 };
   }
 
   // The frame's camera with the user's orbit (about the focal point, in eye axes) and zoom.
-  function cameraMatrices(frame, size) {
+  function cameraMatrices(frame, size, picture = data) {
     const view = matrixOf(frame.view);
     const focal = new THREE.Vector3(...frame.focal).applyMatrix4(view);
     const turn = new THREE.Matrix4().makeRotationX(state.pitch * Math.PI / 180)
       .multiply(new THREE.Matrix4().makeRotationY(state.yaw * Math.PI / 180));
     const orbit = new THREE.Matrix4().makeTranslation(focal.x, focal.y, focal.z).multiply(turn)
       .multiply(new THREE.Matrix4().makeTranslation(-focal.x, -focal.y, -focal.z));
-    const s = fitScale(size);
+    const s = fitScale(size, picture);
     // z scaled down: nothing in front of the eye is clipped by near and far planes while orbiting.
-    const fit = new THREE.Matrix4().makeScale(data.width * s / size.width * state.zoom,
-                                              data.height * s / size.height * state.zoom, 0.02);
+    const fit = new THREE.Matrix4().makeScale(picture.width * s / size.width * state.zoom,
+                                              picture.height * s / size.height * state.zoom, 0.02);
     return { view: orbit.multiply(view), projection: fit.multiply(matrixOf(frame.projection)) };
   }
 
@@ -43,9 +43,12 @@
   function turnedView() {
     const exportSize = { width: data.width, height: data.height };
     const { view, projection } = cameraMatrices(stages[state.stage].rest, exportSize);
-    const clip = projection.multiply(view).elements; // column by column
-    return { rows: [0, 1, 2, 3].flatMap((r) => [0, 1, 2, 3].map((c) => clip[4 * c + r])),
-             shown: JSON.stringify(lesson ? lesson.steps[state.step].shown : null) };
+    return { rows: rowsOf(projection.multiply(view)), shown: JSON.stringify(lesson ? lesson.steps[state.step].shown : null) };
+  }
+  // A matrix row by row, as the core takes a camera (three.js keeps it column by column).
+  function rowsOf(matrix) {
+    const m = matrix.elements;
+    return [0, 1, 2, 3].flatMap((r) => [0, 1, 2, 3].map((c) => m[4 * c + r]));
   }
   // Whether the core can draw the scene shown: loaded, and with the scene's meshes.
   const coreDraws = () => !!core && !data.filesLeftOut;

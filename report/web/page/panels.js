@@ -122,11 +122,7 @@
   }
 
   function showRest(k) {
-    if (frameAxes) retire(worldScene, frameAxes);
     const stage = stages[k];
-    const axes = { surface: false, positions: stage.frame, color: data.frameColor };
-    frameAxes = drawable(geometryOf(axes), axes, 1, 2 * data.primitives.length + 1);
-    worldScene.add(frameAxes);
     shown = { frame: stage.rest, atRest: true, ghost: stage.ghost };
     drawWorld();
   }

@@ -73,10 +73,11 @@
       return place;
     });
   }
-  // A placed label's size (its kind's, smaller where its box is narrower) and weight, at `s` pixels per export pixel.
-  function labelFont(context, label, s) {
+  // A placed label's size (its kind's, smaller where its box is narrower) and weight, at `s` pixels per picture
+  // pixel; `fonts`: the picture's text sizes (a storyboard cell's are the storyboard's).
+  function labelFont(context, label, s, fonts = data) {
     const weight = label.minor ? '' : 'bold ';
-    const px = (label.minor ? data.smallFontSize : data.fontSize) * s, room = (label.box[2] - label.box[0]) * s;
+    const px = (label.minor ? fonts.smallFontSize : fonts.fontSize) * s, room = (label.box[2] - label.box[0]) * s;
     const width = runsWidth(context, label.runs, px, weight);
     return { px: width > room ? px * room / width : px, weight };
   }

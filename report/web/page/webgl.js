@@ -112,7 +112,7 @@
   const camera = new THREE.Camera();
   camera.matrixAutoUpdate = false;
   let items = []; // {object, wide, primitive, ghost}: each drawable, its wide lines
-  let frameAxes = null; // the fixed axes of the stage shown at rest
+  let frameAxes = []; // each stage's fixed axes, drawn at rest where their stage is
 
   // ---- What the camera sees ---------------------------------------------------
   const projectedCanvas = document.getElementById('projected-canvas');
@@ -142,7 +142,6 @@
   function buildViews() {
     clear(worldScene);
     clear(projectedScene);
-    frameAxes = null;
     items = [];
     worldScene.background = new THREE.Color(...data.background);
     projectedScene.background = new THREE.Color(...data.projectedBackground);
@@ -161,6 +160,12 @@
       // What the camera sees: the objects.
       if (primitive.object >= 0 && (primitive.surface || primitive.opacity >= 1))
         projectedScene.add(drawable(geometryOf(primitive), primitive, primitive.surface ? 0.35 : 1, k));
+    });
+    frameAxes = stages.map((stage) => {
+      const axes = { surface: false, positions: stage.frame, color: data.frameColor };
+      const object = drawable(geometryOf(axes), axes, 1, 2 * data.primitives.length + 1);
+      worldScene.add(object);
+      return object;
     });
     const windowOutline = { surface: false, positions: data.projected.window, color: data.projected.windowColor };
     projectedScene.add(drawable(geometryOf(windowOutline), windowOutline, 1, data.primitives.length));
