@@ -1001,6 +1001,103 @@ TEST_F(WebPage, OnHalfALaptopScreenFoldsItsPanelsNamesItsViewsAndSavesTheView)
         ADD_FAILURE() << problem;
 }
 
+// Every stage at once (#layout=storyboard): a cell a stage, each drawn, under its header (the arrow from the one
+// before and its matrix's name) and over its footer (the traced point in its stage's coordinates: Foley's house,
+// PRP (8, 6, 84), T(-PRP) takes the corner (0, 0, 54) to (-8, -6, -30), as tests/report/storyboard_test.cpp);
+// turned together, drawn anew on an edit, and the page as it was once switched back.
+TEST_F(WebPage, ShowsEveryStageAtOnceAsTheCoreLaysThemOut)
+{
+    const fs::path page = *dir_ / "house" / "scene.html";
+    Browser browser(*dir_ / "profile-storyboard", 1280, 720);
+    browser.page("Page.navigate", {{"url", "file://" + page.string() + "#layout=storyboard"}});
+    ASSERT_TRUE(browser.waitFor("document.body.dataset.core === '1' && document.querySelectorAll('#storyboard .cell').length === 6"));
+    EXPECT_EQ(browser.evaluate("getComputedStyle(document.getElementById('world')).display"), "none");
+    EXPECT_EQ(browser.evaluate("document.getElementById('layout').getAttribute('aria-pressed')"), "true");
+    const auto rect = [&](const std::string& selector) {
+        return json::parse(browser.evaluate("JSON.stringify((r => [Math.round(r.left), Math.round(r.top), Math.round(r.width), "
+                                            "Math.round(r.height)])(document.querySelector(`" + selector + "`).getBoundingClientRect()))")
+                               .get<std::string>());
+    };
+    // Each stage's picture on screen, all at once, drawn, and no two alike.
+    const auto pictures = [&] {
+        const QImage shot = browser.screenshot();
+        std::vector<QImage> cells;
+        for (int k = 0; k < 6; ++k) {
+            const json r = rect(".cell[data-stage='" + std::to_string(k) + "'] canvas");
+            EXPECT_TRUE(r[0] >= 0 && r[1] >= 0 && r[0].get<int>() + r[2].get<int>() <= 1280 && r[1].get<int>() + r[3].get<int>() <= 720 &&
+                        r[2] > 100 && r[3] > 50) << k << ": " << r;
+            cells.push_back(shot.copy(r[0], r[1], r[2], r[3]));
+        }
+        return cells;
+    };
+    // The house's VRP is the origin and its VPN z: T(-VRP) and R move nothing, and stages 0 to 2 look alike, as in
+    // the native storyboard; each later matrix moves the scene.
+    const std::vector<QImage> before = pictures();
+    for (int k = 0; k < 6; ++k) {
+        const std::vector<bool> ink = drawn(before[std::size_t(k)]);
+        EXPECT_GT(std::count(ink.begin(), ink.end(), true), 500) << "stage " << k << " is drawn";
+        for (int j = 2; j < k; ++j)
+            EXPECT_NE(before[std::size_t(k)], before[std::size_t(j)]) << "stages " << j << " and " << k;
+    }
+    // The headers name each stage's matrix (typeset from the core's math), each after an arrow but the world's.
+    EXPECT_EQ(browser.evaluate("document.querySelector(`.cell[data-stage='0'] .header`).textContent"), "0. World");
+    const char* symbols[] = {"T(-\\mathit{VRP})", "R", "T(-\\mathit{PRP})", "\\mathit{SH}_{\\mathrm{per}}", "S_{\\mathrm{per}}"};
+    for (int k = 1; k <= 5; ++k)
+        EXPECT_EQ(browser.evaluate("document.querySelector(`.cell[data-stage='" + std::to_string(k) + "'] .header annotation`).textContent"),
+                  symbols[k - 1]);
+    EXPECT_EQ(browser.evaluate("document.querySelectorAll('#storyboard-arrows polygon').length"), 5);
+    // The traced point's coordinates in each stage's space, and in each canvas's name.
+    const auto footer = [&](int k) {
+        return browser.evaluate("document.querySelector(`.cell[data-stage='" + std::to_string(k) + "'] .footer`).textContent")
+            .get<std::string>();
+    };
+    EXPECT_EQ(footer(0), "traced (0, 0, 54)");
+    EXPECT_EQ(footer(3), "traced (\u22128, \u22126, \u221230)");
+    EXPECT_NE(browser.evaluate("document.querySelector(`.cell[data-stage='3'] canvas`).getAttribute('aria-label')").get<std::string>()
+                  .find("(\u22128, \u22126, \u221230)"),
+              std::string::npos);
+
+    // Dragging one cell turns every one.
+    const json from = rect(".cell[data-stage='1'] canvas");
+    const double x = from[0].get<double>() + from[2].get<double>() / 2, y = from[1].get<double>() + from[3].get<double>() / 2;
+    browser.page("Input.dispatchMouseEvent", {{"type", "mousePressed"}, {"x", x}, {"y", y}, {"button", "left"}, {"clickCount", 1}});
+    for (int step = 1; step <= 4; ++step)
+        browser.page("Input.dispatchMouseEvent", {{"type", "mouseMoved"}, {"x", x + 15 * step}, {"y", y}, {"button", "left"}, {"buttons", 1}});
+    browser.page("Input.dispatchMouseEvent", {{"type", "mouseReleased"}, {"x", x + 60}, {"y", y}, {"button", "left"}, {"clickCount", 1}});
+    ASSERT_TRUE(browser.waitFor("location.hash.includes('yaw=')"));
+    const std::vector<QImage> turned = pictures();
+    for (const int k : {0, 4, 5})
+        EXPECT_NE(turned[std::size_t(k)], before[std::size_t(k)]) << "stage " << k << " turns with stage 1";
+    browser.press("0", 48); // the view back
+
+    // An edit redraws every cell: the PRP at x = 20 takes the corner to (-20, -6, -30) after T(-PRP).
+    const std::vector<QImage> rest = pictures();
+    typeInto(browser, "view.prp[0]", "20");
+    ASSERT_TRUE(browser.waitFor("document.querySelector(`.cell[data-stage='3'] .footer`).textContent.includes('20')"));
+    EXPECT_EQ(footer(3), "traced (\u221220, \u22126, \u221230)");
+    EXPECT_EQ(footer(0), "traced (0, 0, 54)");
+    const std::vector<QImage> edited = pictures();
+    for (int k = 1; k <= 5; ++k) // the world's own picture does not change with the camera's PRP; every later one does
+        EXPECT_NE(edited[std::size_t(k)], rest[std::size_t(k)]) << "stage " << k << " drawn anew";
+
+    // Switched back from the page (its button, keyboard-focusable) and by the link: the page as it was.
+    browser.evaluate("document.getElementById('layout').focus()");
+    browser.press("Enter", 13);
+    ASSERT_TRUE(browser.waitFor("document.getElementById('storyboard').hidden"));
+    EXPECT_EQ(browser.evaluate("location.hash.includes('layout')"), false);
+    EXPECT_GT(rect("#world-canvas")[2].get<int>(), 300);
+    EXPECT_GT(rect("#projected-canvas")[2].get<int>(), 200);
+    EXPECT_EQ(browser.evaluate("document.querySelectorAll('#storyboard .cell').length > 0 && "
+                               "document.querySelector('#storyboard .cell').getClientRects().length"), 0);
+    browser.evaluate("location.hash = 'layout=storyboard'");
+    ASSERT_TRUE(browser.waitFor("!document.getElementById('storyboard').hidden"));
+    browser.evaluate("location.hash = 'layout=stages'");
+    ASSERT_TRUE(browser.waitFor("document.getElementById('storyboard').hidden && "
+                                "getComputedStyle(document.getElementById('world')).display !== 'none'"));
+    for (const std::string& problem : browser.problems())
+        ADD_FAILURE() << problem;
+}
+
 // `lesson export` of dir/lesson.json into dir/out, and its page opened in `browser`, ready.
 ::testing::AssertionResult openExportedLesson(const fs::path& dir, Browser& browser)
 {

@@ -29,5 +29,6 @@
       if (filesBeforeCore) openFiles(filesBeforeCore);
     }
     body.dataset.core = '1';
+    if (storyboardShown()) drawStoryboard(); // the core draws it
   });
 

@@ -124,6 +124,6 @@
   function showRest(k) {
     const stage = stages[k];
     shown = { frame: stage.rest, atRest: true, ghost: stage.ghost };
-    drawWorld();
+    drawShown();
   }
 

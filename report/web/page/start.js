@@ -22,6 +22,7 @@
     goToStep(first.step, true);
   } else {
     useScene(0);
+    showLayout();
     goTo(first.stage);
   }
   body.dataset.ready = '1';

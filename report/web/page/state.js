@@ -1,6 +1,6 @@
   // page/state.js: what is shown (stage, step, orbit, traced vertex), read from and written to the link's fragment.
   // ---- State ------------------------------------------------------------------
-  const state = { stage: 0, step: 0, yaw: 0, pitch: 0, zoom: 1, figure: false, traced: null };
+  const state = { stage: 0, step: 0, yaw: 0, pitch: 0, zoom: 1, figure: false, traced: null, layout: 'stages' };
   let shown = null; // the frame drawn: {frame, atRest, ghost}
   let animation = null;
   let playing = null;
@@ -19,6 +19,8 @@
     state.pitch = Math.max(-89, Math.min(89, number('pitch', 0)));
     state.zoom = Math.max(0.1, Math.min(20, number('zoom', 1)));
     state.figure = values.has('figure');
+    // Every stage at once shows every stage's name and numbers: not in a lesson, whose questions ask for them.
+    state.layout = !lesson && values.get('layout') === 'storyboard' ? 'storyboard' : 'stages';
     body.classList.toggle('figure', state.figure);
     pendingLink = values.get('scene'); // for the core, once it is loaded
   }
@@ -31,6 +33,7 @@
     if (state.pitch) values.set('pitch', state.pitch.toFixed(1));
     if (state.zoom !== 1) values.set('zoom', state.zoom.toFixed(3));
     if (state.figure) values.set('figure', '');
+    if (state.layout === 'storyboard') values.set('layout', 'storyboard');
     const linked = linkedSceneText();
     if (linked) values.set('scene', linked);
     history.replaceState(null, '', '#' + values.toString().replace(/=$|=(?=&)/g, ''));

@@ -12,7 +12,7 @@
     state.stage = k;
     showPanels();
     writeFragment();
-    if (!animate || Math.abs(k - from) !== 1) {
+    if (!animate || Math.abs(k - from) !== 1 || storyboardShown()) { // the storyboard has no world view to move
       showRest(k);
       body.dataset.moving = '';
       return;
@@ -66,7 +66,7 @@
     state.pitch = Math.max(-89, Math.min(89, state.pitch));
     state.zoom = Math.max(0.1, Math.min(20, state.zoom));
     writeFragment();
-    drawWorld();
+    drawShown();
   }
   // A lesson steps through its steps; a scene through its stages.
   function forward() { if (lesson) goToStep(state.step + 1); else goTo(state.stage + 1, true); }
@@ -91,6 +91,7 @@
       case '-': changeView({ zoom: state.zoom / 1.25 }); break;
       case '0': changeView({ yaw: 0, pitch: 0, zoom: 1 }); break;
       case 't': case 'T': traceNext(event.shiftKey ? -1 : 1); break;
+      case 's': case 'S': if (lesson) return; toggleLayout(); break;
       default: return;
     }
     event.preventDefault();

@@ -33,7 +33,7 @@
   function setTraced(point) {
     state.traced = point;
     showTrace();
-    drawWorld();
+    drawShown();
     if (point) document.getElementById('live').textContent =
       `Traced the vertex (${point.map(format).join(', ')}): its coordinates after each stage are in the table.`;
   }

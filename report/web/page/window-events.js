@@ -3,10 +3,11 @@
   window.addEventListener('hashchange', () => {
     const before = { stage: state.stage, step: state.step };
     readFragment();
+    showLayout();
     const wanted = { stage: state.stage, step: state.step };
     Object.assign(state, before);
     if (lesson) goToStep(wanted.step, true);
     else if (!(core && openLink())) goTo(wanted.stage);
   });
-  window.addEventListener('resize', () => { drawWorld(); drawProjected(); });
+  window.addEventListener('resize', () => { drawShown(); drawProjected(); });
 
