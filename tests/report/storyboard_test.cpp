@@ -210,6 +210,16 @@ TEST(Storyboard, ThePagesIsTheSameLayoutWithEachCellsLabelsPlacedInIt)
     const nlohmann::json traced = nlohmann::json::parse(
         webStoryboard(*house, 1280, 720, Vec3<double>(8, 6, 84), {}, options, roughMeasure()));
     EXPECT_EQ(traced["texts"][7]["text"], "traced (0, 0, 0)");
+    // gluPerspective leaves w = -z: the page's last footer gives w, as the native one (without "traced" where
+    // the footer has no room for it).
+    const auto opengl = builtIn("opengl-perspective.json");
+    const nlohmann::json perspective =
+        nlohmann::json::parse(webStoryboard(*opengl, 1280, 720, std::nullopt, {}, options, roughMeasure()));
+    const std::string last = perspective["texts"].back()["text"];
+    const std::string coordinates =
+        tracedCoordinates(*opengl, storyboardTracedPoint(*opengl), int(opengl->pipeline.stages.size()));
+    EXPECT_EQ(last.substr(last.size() - std::min(last.size(), coordinates.size())), coordinates);
+    EXPECT_NE(last.find(", w = "), std::string::npos) << last;
 }
 
 // Where pictures are left out between two cells no arrow joins them: T(-PRP) does not lead from the world.
