@@ -27,20 +27,44 @@ const FontMeasure fixedWidth = lineByLine([](const std::vector<MathRun>& runs, d
     return Vec2<double>(0.6 * pixels * double(bytes), pixels);
 });
 
-void nativeEvaluate(benchmark::State& state)
+std::string houseText()
 {
     std::ifstream in(std::string(viewpipe::build::dataDir) + "/scenes/house.json");
     std::stringstream text;
     text << in.rdbuf();
+    return text.str();
+}
+
+void nativeEvaluate(benchmark::State& state)
+{
+    const std::string text = houseText();
     const WebViewOptions options; // the page's: 1280 x 720, 20-pixel labels
     for (auto _ : state) {
-        const auto evaluated = evaluateScene(parseScene(text.str(), std::string(viewpipe::build::dataDir) + "/scenes"));
+        const auto evaluated = evaluateScene(parseScene(text, std::string(viewpipe::build::dataDir) + "/scenes"));
         const std::string pipeline = report::pipelineJson(evaluated->scene, report::PrecisionChoice{}, evaluated->outcomes).dump();
         const std::string page = webPageData(*evaluated, webPageViews(*evaluated, options, fixedWidth));
         benchmark::DoNotOptimize(pipeline.size() + page.size());
     }
 }
 BENCHMARK(nativeEvaluate)->Name("PageEvaluate/native/house")->Unit(benchmark::kMillisecond);
+
+// Its parts: the scene read and evaluated alone (what every view needs), and the page's views of every stage.
+void nativeSceneOnly(benchmark::State& state)
+{
+    const std::string text = houseText();
+    for (auto _ : state)
+        benchmark::DoNotOptimize(evaluateScene(parseScene(text, std::string(viewpipe::build::dataDir) + "/scenes")));
+}
+BENCHMARK(nativeSceneOnly)->Name("PageEvaluate/native/house_scene")->Unit(benchmark::kMillisecond);
+
+void nativeViewsOnly(benchmark::State& state)
+{
+    const auto evaluated = evaluateScene(parseScene(houseText(), std::string(viewpipe::build::dataDir) + "/scenes"));
+    const WebViewOptions options;
+    for (auto _ : state)
+        benchmark::DoNotOptimize(webPageViews(*evaluated, options, fixedWidth));
+}
+BENCHMARK(nativeViewsOnly)->Name("PageEvaluate/native/house_views")->Unit(benchmark::kMillisecond);
 
 } // namespace
 } // namespace viewpipe
