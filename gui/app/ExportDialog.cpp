@@ -82,6 +82,13 @@ ExportDialog::ExportDialog(int stageCount, Theme theme, QWidget* parent) : QDial
                             "from; on its own, each stage as large as it goes; one framing for all keeps sizes "
                             "comparable from stage to stage"));
     form->addRow(tr("Framing"), framing_);
+    layout_ = new QComboBox;
+    layout_->setObjectName("layout");
+    layout_->addItem(tr("a file of each stage"), false);
+    layout_->addItem(tr("every stage at once (storyboard)"), true);
+    layout_->setToolTip(tr("A picture of each stage per format, or one storyboard per format "
+                           "(storyboard.png, .svg, .pdf, storyboard-tikz.tex)"));
+    form->addRow(tr("Layout"), layout_);
     transparent_ = new QCheckBox(tr("Transparent background"));
     transparent_->setToolTip(tr("PNG pictures without a background, to lay over a slide"));
     form->addRow(QString(), transparent_);
@@ -162,6 +169,7 @@ ExportOptions ExportDialog::options() const
     o.stages = parseStages(stages_->text().trimmed().toStdString(), stageCount_);
     o.theme = theme_->currentIndex() == 1 ? Theme::Dark : Theme::Light;
     o.framing = FramingMode(framing_->currentData().toInt());
+    o.storyboard = layout_->currentData().toBool();
     o.transparent = transparent_->isChecked();
     o.textScale = textScale_->value();
     o.legend = LegendPlace(legend_->currentData().toInt());

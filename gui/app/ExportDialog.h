@@ -37,6 +37,7 @@ private:
     QLineEdit* stages_;
     QComboBox* theme_;
     QComboBox* framing_;
+    QComboBox* layout_;
     QCheckBox* transparent_;
     QSpinBox* textScale_;
     QComboBox* legend_;

@@ -466,6 +466,11 @@ private slots:
         QCOMPARE(o.zoom, 1.0);
         QVERIFY(o.legend == LegendPlace::Best);
         QVERIFY(o.framing == FramingMode::Together);
+        QVERIFY(!o.storyboard);
+        auto* layout = dialog.findChild<QComboBox*>("layout");
+        QVERIFY(layout);
+        layout->setCurrentIndex(1);
+        QVERIFY(dialog.options().storyboard);
     }
 
     void everyControlSaysWhatItIs()
