@@ -115,8 +115,7 @@ ExportDialog::ExportDialog(int stageCount, Theme theme, QWidget* parent) : QDial
     auto* hidden = new QGridLayout;
     const std::vector<std::string> names = hideNames();
     for (std::size_t k = 0; k < names.size(); ++k) {
-        const QString name = QString::fromStdString(names[k]).replace('_', ' ');
-        auto* box = new QCheckBox(name.size() == 3 ? name.toUpper() : name); // PRP, DOP
+        auto* box = new QCheckBox(hideText(names[k]));
         box->setObjectName(QString::fromStdString("hide-" + names[k]));
         box->setToolTip(tr("Leave %1 out of the pictures").arg(box->text()));
         hidden->addWidget(box, int(k / 4), int(k % 4));
@@ -156,6 +155,12 @@ ExportDialog::ExportDialog(int stageCount, Theme theme, QWidget* parent) : QDial
     connect(this, &QDialog::accepted, this, [this] { QSettings().setValue("exportFolder", folder_->text()); });
     connect(buttons, &QDialogButtonBox::rejected, this, &QDialog::reject);
     form->addRow(buttons);
+}
+
+QString hideText(const std::string& name)
+{
+    const QString text = QString::fromStdString(name).replace('_', ' ');
+    return text.size() == 3 ? text.toUpper() : text; // PRP, DOP
 }
 
 ExportOptions ExportDialog::options() const

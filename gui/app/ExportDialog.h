@@ -48,4 +48,7 @@ private:
     QSpinBox* fps_;
 };
 
+// How a name export --hide takes reads in the app ("world axes", "PRP").
+QString hideText(const std::string& name);
+
 } // namespace viewpipe::gui

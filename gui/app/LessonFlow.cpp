@@ -18,7 +18,6 @@
 #include "LessonDocument.h"
 #include "LessonPanel.h"
 #include "MainWindow.h"
-#include "StoryboardView.h"
 #include "PresentMode.h"
 #include "Stepper.h"
 #include "Waiting.h"
@@ -197,7 +196,7 @@ void LessonFlow::showLessonStep()
             stepper->goToStage(stepper->target(), false);
         // What the step hides is not drawn, what it highlights is drawn wider; the picture stays at its stage.
         ScenePainter* painter = window_->painter();
-        painter->setScene(shownAtStep(document->evaluated(), step));
+        window_->drawScene(shownAtStep(document->evaluated(), step));
         if (!step.panel.empty())
             window_->showPanel(QString::fromStdString(step.panel));
         painter->resetView();
@@ -206,11 +205,8 @@ void LessonFlow::showLessonStep()
     }
     const bool revealed = !step.question || lesson_->isRevealed(k);
     // A storyboard step shows every stage once its question is answered (the storyboard would answer it).
-    if (step.storyboard ? revealed : newStep) {
+    if (step.storyboard ? revealed : newStep)
         window_->setStoryboardShown(step.storyboard && revealed);
-        if (window_->storyboardShown())
-            window_->storyboard()->setScene(shownAtStep(document->evaluated(), step));
-    }
     window_->traceVertex(tracedAt(step, revealed)); // the point asked about, followed through the stages once answered
     const int stage = revealed ? revealedStage(step) : askingStage(step);
     // The answer comes with the transition to the stage asked about; a step to the next stage plays it too.

@@ -36,6 +36,7 @@
 #include "CodePanel.h"
 #include "DepthPanel.h"
 #include "EffectsMenu.h"
+#include "ExportDialog.h"
 #include "Exports.h"
 #include "GuideDialog.h"
 #include "LessonDocument.h"
@@ -305,6 +306,13 @@ void MainWindow::addActions()
             }
         }
     }
+    // View > Leave Out: what export --hide names, left out of every view.
+    for (const std::string& name : hideNames())
+        actions_->addToggle("view.hide." + name, hideText(name), [this, name](bool on) {
+            std::set<std::string> hidden = hidden_;
+            on ? void(hidden.insert(name)) : void(hidden.erase(name));
+            setHidden(hidden);
+        });
     actions_->add("view.largerText", tr("&Larger Text"), [this] { setFontSize(fontSize_ + 2); }, QKeySequence::ZoomIn);
     actions_->add("view.smallerText", tr("&Smaller Text"), [this] { setFontSize(fontSize_ - 2); }, QKeySequence::ZoomOut);
     actions_->add("effects.depthPanel", tr("Show the &Depth Panel"), [this] { showPanel("depth"); });
@@ -348,6 +356,9 @@ void MainWindow::buildMenus()
                                  this, [this, screen] { presentMode_->setPresenting(true, screen); });
     });
     actions_->fill(view, {"-", "view.largerText", "view.smallerText"});
+    QMenu* leaveOut = view->addMenu(tr("Leave &Out"));
+    for (const std::string& name : hideNames())
+        leaveOut->addAction(actions_->action("view.hide." + name));
     for (const char* which : {"world", "projected"}) {
         QMenu* legend = view->addMenu(std::string(which) == "world" ? tr("&World View Legend") : tr("&Camera View Legend"));
         for (const LegendPlace place : {LegendPlace::Best, LegendPlace::Beside, LegendPlace::Below, LegendPlace::Inside, LegendPlace::None})
@@ -363,7 +374,7 @@ void MainWindow::buildMenus()
 void MainWindow::showOpenedScene()
 {
     const RenderHold once(*this);
-    painter_->setScene(document_->evaluated());
+    drawScene(document_->evaluated());
     sceneFiles_->autosave()->saveNow(); // the previous scene's unsaved edits are not this one's to recover
     traceVertex(std::nullopt);
     accuracy_->clear();
@@ -374,11 +385,31 @@ void MainWindow::showOpenedScene()
 
 void MainWindow::onDocumentChanged()
 {
-    painter_->setScene(document_->evaluated());
+    drawScene(document_->evaluated());
+    refreshWidgets();
+}
+
+void MainWindow::drawScene(const std::shared_ptr<const EvaluatedScene>& scene)
+{
+    drawn_ = scene;
+    const std::shared_ptr<const EvaluatedScene> shown = withoutHidden(scene, hidden_);
+    painter_->setScene(shown);
     painter_->markTraced(traced_);
     if (storyboardShown()) // an edit redraws every stage; hidden, it waits until shown
-        storyboard_->setScene(document_->evaluated());
-    refreshWidgets();
+        storyboard_->setScene(shown);
+}
+
+void MainWindow::setHidden(const std::set<std::string>& hidden)
+{
+    hidden_ = hidden;
+    for (const std::string& name : hideNames())
+        actions_->action("view.hide." + name)->setChecked(hidden_.count(name) > 0);
+    painter_->setTicksAndNotesShown(!hidden_.count("ticks"), !hidden_.count("notes"));
+    if (drawn_)
+        drawScene(drawn_);
+    stepper_->restart(); // the stage shown again, at rest, on the new props
+    updateCaptions();
+    renderNow();
 }
 
 void MainWindow::refreshWidgets()
@@ -436,6 +467,8 @@ void MainWindow::updateTrace()
 
 void MainWindow::updateCaptions()
 {
+    if (hidden_.count("caption"))
+        return painter_->setCaptions("", "");
     painter_->setCaptions(lessonFlow_->hidesAnswers()
                               ? std::string()
                               : stageCaption(*document_->evaluated(), std::size_t(stepper_->shownStage()), StageText::Caption),
@@ -531,7 +564,7 @@ void MainWindow::setStoryboardShown(bool shown)
     if (shown == storyboardShown())
         return;
     if (shown) {
-        storyboard_->setScene(document_->evaluated());
+        storyboard_->setScene(withoutHidden(drawn_, hidden_));
         storyboard_->setTraced(traced_);
         storyboard_->setCurrentStage(stepper_->shownStage());
     }

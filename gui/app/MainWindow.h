@@ -11,6 +11,7 @@
 
 #include <memory>
 #include <optional>
+#include <set>
 
 #include "Document.h"
 #include "painter/ScenePainter.h"
@@ -86,6 +87,11 @@ public:
     // The world view as it is on screen.
     QImage worldViewImage();
 
+    // Draws a scene in every view, without what View > Leave Out names (a lesson step's scene, or the document's).
+    void drawScene(const std::shared_ptr<const EvaluatedScene>& scene);
+    // View > Leave Out: what every view leaves out, by the names export --hide takes (for this session).
+    void setHidden(const std::set<std::string>& hidden);
+    const std::set<std::string>& hidden() const { return hidden_; }
     // Follows a world point through the stages in the Matrices panel (a click on a vertex does this).
     void traceVertex(const std::optional<Vec3<double>>& point);
     const std::optional<Vec3<double>>& traced() const { return traced_; }
@@ -171,6 +177,8 @@ private:
     CodePanel* code_ = nullptr;
 
     std::optional<Vec3<double>> traced_;
+    std::shared_ptr<const EvaluatedScene> drawn_; // as drawScene was given it
+    std::set<std::string> hidden_;
     int fontSize_ = kDefaultFontSize;
     bool popups_ = true;
     QString lastMessage_;

@@ -310,19 +310,6 @@ void validate(const ExportOptions& o)
         formatNamed(name);
 }
 
-// The scene as the pictures show it, without the elements, labels, legend and effects' note `hidden` names.
-std::shared_ptr<const EvaluatedScene> withoutHidden(const std::shared_ptr<const EvaluatedScene>& scene,
-                                                    const std::set<std::string>& hidden)
-{
-    LessonStep shown;
-    for (const auto& [element, name] : lessonElementNames())
-        if (hidden.count(name))
-            shown.hidden.insert(element);
-    shown.labelsHidden = hidden.count("labels") > 0;
-    shown.legendHidden = hidden.count("legend") > 0;
-    std::shared_ptr<const EvaluatedScene> without = shownAtStep(scene, shown);
-    return hidden.count("notes") ? withoutEffectsNote(without) : without;
-}
 
 // Every chosen stage at once, one file per format: each cell drawn by a painter of the cell's size with the
 // storyboard's text size, no legend or notes of its own, the traced point marked.
@@ -366,6 +353,19 @@ void writeStoryboardFiles(const std::shared_ptr<const EvaluatedScene>& evaluated
 }
 
 } // namespace
+
+std::shared_ptr<const EvaluatedScene> withoutHidden(const std::shared_ptr<const EvaluatedScene>& scene,
+                                                    const std::set<std::string>& hidden)
+{
+    LessonStep shown;
+    for (const auto& [element, name] : lessonElementNames())
+        if (hidden.count(name))
+            shown.hidden.insert(element);
+    shown.labelsHidden = hidden.count("labels") > 0;
+    shown.legendHidden = hidden.count("legend") > 0;
+    std::shared_ptr<const EvaluatedScene> without = shownAtStep(scene, shown);
+    return hidden.count("notes") ? withoutEffectsNote(without) : without;
+}
 
 std::vector<std::string> hideNames()
 {

@@ -49,6 +49,7 @@
 #include "files.h"
 #include "app/AppPaths.h"
 #include "app/ExportDialog.h"
+#include "app/StoryboardView.h"
 #include "app/GuideDialog.h"
 #include "app/MainWindow.h"
 #include "app/MatrixPanel.h"
@@ -411,6 +412,60 @@ private slots:
         for (const char* words : {"Matrices", "Parameters", "Accuracy", "Depth", "Ctrl+Z", "Ctrl+Y", "Ctrl+E", "Ctrl+K",
                                   "Left", "Play"})
             QVERIFY2(text.contains(words), words);
+    }
+
+    // View ▸ Leave Out offers what export --hide names and leaves it out of every view: the labels go
+    // (no label text drawn), the world axes' lines go, the caption goes; checked again, they come back
+    // as they were (the stage at rest: a first version drew the props made anew at the world's matrix).
+    void theViewMenuLeavesOutWhatExportHides()
+    {
+        auto window = openWindow(kScenes + "/house.json", {1600, 1000});
+        QVERIFY(window);
+        window->stepper()->goToStage(3, false);
+        QMenu* leaveOut = nullptr;
+        for (QMenu* menu : window->findChildren<QMenu*>())
+            if (menu->title() == "Leave &Out")
+                leaveOut = menu;
+        QVERIFY(leaveOut);
+        QStringList offered;
+        for (const QAction* action : leaveOut->actions())
+            offered << action->objectName();
+        QStringList names;
+        for (const std::string& name : hideNames())
+            names << QString::fromStdString("view.hide." + name);
+        QCOMPARE(offered, names);
+        auto texts = [&] {
+            window->renderNow();
+            QStringList shown;
+            for (const DrawnText& text : drawnTexts(renderer(*window, "worldView")).texts)
+                shown << QString::fromStdString(text.text);
+            shown.sort(); // the props are made anew: in another order
+            return shown;
+        };
+        const QStringList before = texts();
+        QVERIFY2(before.contains("PRP") && before.contains("VRP"), qPrintable(before.join(" | ")));
+        window->actions()->action("view.hide.labels")->trigger();
+        QVERIFY(window->hidden().count("labels"));
+        const QStringList without = texts();
+        QVERIFY2(!without.contains("PRP") && !without.contains("VRP"), qPrintable(without.join(" | ")));
+        const auto primitives = [&](Element element) {
+            const EvaluatedScene& drawn = *window->storyboard()->scene();
+            return std::count_if(drawn.primitives.begin(), drawn.primitives.end(), [&](const Primitive& p) { return p.element == element; });
+        };
+        window->actions()->action("view.hide.world_axes")->trigger();
+        window->setStoryboardShown(true); // the storyboard draws what the views draw
+        QCOMPARE(primitives(Element::WorldAxes), 0L);
+        QVERIFY(primitives(Element::Objects) > 0);
+        window->setStoryboardShown(false);
+        window->actions()->action("view.hide.caption")->trigger();
+        QCOMPARE(window->painter()->worldCaption(), std::string());
+        for (const char* name : {"labels", "world_axes", "caption"})
+            window->actions()->action(std::string("view.hide.") + name)->trigger();
+        QVERIFY(window->hidden().empty());
+        const QStringList after = texts();
+        QVERIFY2(after == before, qPrintable(before.join(" | ") + "\n" + after.join(" | ")));
+        QVERIFY(!window->painter()->worldCaption().empty());
+        closeWindow(window);
     }
 
     // View ▸ World View Legend puts the legend where it is asked, hides it, and the choice is kept.
