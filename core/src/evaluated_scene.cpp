@@ -676,16 +676,16 @@ std::vector<std::string> stageClaims(const Pipeline<double>& pipeline, const Vie
     return claimsAtStages(pipeline, s, facts, scale);
 }
 
-// The camera's number largest in size, by its field: what a set-up reaching beyond the pictures is refused on.
-std::string largestCameraField(const CameraSpec<double>& camera)
+// The camera's number farthest in size from the rest, by its field: what a set-up reaching beyond the
+// pictures is refused on. Far larger (a window 1e300 wide), or far smaller: a window 2e-300 wide is
+// scaled up by S_per beyond the pictures (blaming the largest number named the PRP's 84). A window's
+// width and height count as its upper ends'.
+std::string outlyingCameraField(const CameraSpec<double>& camera)
 {
-    std::string field;
-    double largest = -1;
+    std::vector<std::pair<std::string, double>> sizes; // finite, nonzero
     auto consider = [&](const std::string& name, double value) {
-        if (std::isfinite(value) && std::abs(value) > largest) {
-            field = name;
-            largest = std::abs(value);
-        }
+        if (std::isfinite(value) && value != 0)
+            sizes.emplace_back(name, std::abs(value));
     };
     auto considerPoint = [&](const std::string& name, const Vec3<double>& v) {
         for (int k = 0; k < 3; ++k)
@@ -698,34 +698,50 @@ std::string largestCameraField(const CameraSpec<double>& camera)
         const double window[] = {w.umin, w.umax, w.vmin, w.vmax};
         for (int k = 0; k < 4; ++k)
             consider("view.window[" + std::to_string(k) + "]", window[k]);
+        consider("view.window[1]", w.umax - w.umin);
+        consider("view.window[3]", w.vmax - w.vmin);
         consider("view.front", view->front);
         consider("view.back", view->back);
-        return field;
+    } else {
+        const auto& gl = std::get<gl::Camera<double>>(camera);
+        considerPoint("camera.look_at.eye", gl.lookAt.eye);
+        considerPoint("camera.look_at.center", gl.lookAt.center);
+        std::visit(
+            [&](const auto& p) {
+                if constexpr (std::is_same_v<std::decay_t<decltype(p)>, gl::Perspective<double>>) {
+                    consider("camera.projection.aspect", p.aspect);
+                } else {
+                    consider("camera.projection.left", p.left);
+                    consider("camera.projection.right", p.right);
+                    consider("camera.projection.bottom", p.bottom);
+                    consider("camera.projection.top", p.top);
+                    consider("camera.projection.right", p.right - p.left);
+                    consider("camera.projection.top", p.top - p.bottom);
+                }
+                consider("camera.projection.near", p.zNear);
+                consider("camera.projection.far", p.zFar);
+            },
+            gl.projection);
     }
-    const auto& gl = std::get<gl::Camera<double>>(camera);
-    considerPoint("camera.look_at.eye", gl.lookAt.eye);
-    considerPoint("camera.look_at.center", gl.lookAt.center);
-    std::visit(
-        [&](const auto& p) {
-            if constexpr (std::is_same_v<std::decay_t<decltype(p)>, gl::Perspective<double>>) {
-                consider("camera.projection.aspect", p.aspect);
-            } else {
-                consider("camera.projection.left", p.left);
-                consider("camera.projection.right", p.right);
-                consider("camera.projection.bottom", p.bottom);
-                consider("camera.projection.top", p.top);
-            }
-            consider("camera.projection.near", p.zNear);
-            consider("camera.projection.far", p.zFar);
-        },
-        gl.projection);
-    return field;
+    if (sizes.empty())
+        return "camera";
+    std::vector<double> logs;
+    for (const auto& size : sizes)
+        logs.push_back(std::log(size.second));
+    std::vector<double> sorted = logs;
+    std::nth_element(sorted.begin(), sorted.begin() + std::ptrdiff_t(sorted.size() / 2), sorted.end());
+    const double typical = sorted[sorted.size() / 2];
+    std::size_t outlier = 0;
+    for (std::size_t k = 1; k < sizes.size(); ++k)
+        if (std::abs(logs[k] - typical) > std::abs(logs[outlier] - typical))
+            outlier = k;
+    return sizes[outlier].first;
 }
 
 // Refuses, by its field, a scene that reaches beyond kDrawnReach at a stage before the divide: the
 // pictures would frame and draw it without what lies there (a window 1e300 wide lost its volume, window,
 // DOP and projectors) while the captions and legend still spoke of it. An object out there in world
-// coordinates is its own field; otherwise the camera sets where things go, by its number largest in size.
+// coordinates is its own field; otherwise the camera sets where things go, by its number farthest in size from the rest.
 void requireDrawable(const EvaluatedScene& out)
 {
     std::vector<Mat4<double>> undivided{Mat4<double>::Identity()}; // cumulative, each stage before the divide
@@ -760,7 +776,7 @@ void requireDrawable(const EvaluatedScene& out)
     corners.insert(corners.end(), s.volume.begin(), s.volume.end());
     corners.insert(corners.end(), s.window.begin(), s.window.end());
     corners.insert(corners.end(), {s.windowCenter, s.origin, s.prp});
-    requireWithin(corners, undivided.size(), largestCameraField(out.scene.camera));
+    requireWithin(corners, undivided.size(), outlyingCameraField(out.scene.camera));
 }
 
 std::shared_ptr<const EvaluatedScene> evaluate(const Scene& scene, MeshCache* cache)

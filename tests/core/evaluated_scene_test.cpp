@@ -200,6 +200,17 @@ TEST(EvaluatedScene, WhatThePicturesCannotDrawIsRefusedByItsField)
         "objects": [{"type": "house"}]})",
                                   ".");
     EXPECT_EQ(refusal(deep).rfind("camera.projection.far: ", 0), 0u) << refusal(deep);
+    // A window far too small is scaled beyond the pictures by S_per: the window is to blame, not
+    // the PRP's 84, the largest number (as the message said before).
+    Scene tiny = house();
+    std::get<foley::ViewSpec<double>>(tiny.camera).window = {0, 2e-300, 0, 2e-300};
+    EXPECT_EQ(refusal(tiny).rfind("view.window[1]: reaches a coordinate of ", 0), 0u) << refusal(tiny);
+    std::get<foley::ViewSpec<double>>(tiny.camera).window = {50, 50 + 1e-9, -50, 50}; // narrow, its ends not small
+    EXPECT_EQ(refusal(tiny).rfind("view.window[1]: ", 0), 0u) << refusal(tiny);
+    const Scene nearZero = parseScene(R"({"camera": {"look_at": {"eye": [40, 30, 100], "center": [8, 8, 42], "up": [0, 1, 0]},
+        "projection": {"type": "ortho", "left": -1e-300, "right": 1e-300, "bottom": -20, "top": 20, "near": 30, "far": 200}},
+        "objects": [{"type": "house"}]})", ".");
+    EXPECT_EQ(refusal(nearZero).rfind("camera.projection.", 0), 0u) << refusal(nearZero);
 }
 
 class MeshCacheTest : public ::testing::Test {
