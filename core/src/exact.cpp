@@ -130,10 +130,16 @@ std::string integerText(const BigInt& n)
 
 // The terms in order, the rational part first, each written by
 // term(p, radicand, q) for its coefficient's size p/q, with the signs between.
+// The terms as a sum, a positive one first where there is one, as a textbook writes it: sqrt(2) - 1,
+// 48*sqrt(2)/5 - 64/5 (a positive value read as -64/5 + ... looked negative at a glance).
 template <class F> std::string joinTerms(const Terms& terms, F&& term)
 {
+    std::vector<std::pair<BigInt, Rational>> ordered(terms.begin(), terms.end());
+    const auto positive = std::find_if(ordered.begin(), ordered.end(), [](const auto& t) { return t.second > 0; });
+    if (positive != ordered.end())
+        std::rotate(ordered.begin(), positive, positive + 1);
     std::string out;
-    for (const auto& [radicand, coefficient] : terms) {
+    for (const auto& [radicand, coefficient] : ordered) {
         out += out.empty() ? (coefficient < 0 ? "-" : "") : (coefficient < 0 ? " - " : " + ");
         out += term(BigInt(abs(boost::multiprecision::numerator(coefficient))), radicand,
                     BigInt(boost::multiprecision::denominator(coefficient)));
