@@ -915,9 +915,34 @@ std::string stageCaption(const EvaluatedScene& scene, std::size_t k, StageText t
     std::string note = k < scene.stageClaims.size() ? scene.stageClaims[k] : "";
     if (k > 0 && framedTogether(stages, int(k)).first == int(k) && !stages[k - 1].divides) // the divide changes none
         note += std::string(note.empty() ? "" : " ") + "(framed anew: this stage changes sizes)";
-    if (ghostAt(stages, int(k)))
+    if (shownGhost(scene, int(k)))
         note += std::string(note.empty() ? "" : " ") + "(faint: where it was before)";
     return stageText(stages, k, text) + (note.empty() ? "" : "\n" + note);
+}
+
+std::optional<Mat4<double>> shownGhost(const EvaluatedScene& scene, int k)
+{
+    constexpr double kFarther = 1.2; // the box about both ends at most this much larger than the stage's own
+    const std::optional<Mat4<double>> ghost = ghostAt(scene.pipeline.stages, k);
+    if (!ghost)
+        return std::nullopt;
+    std::vector<Vec3<double>> points = {scene.setup.origin, scene.setup.windowCenter};
+    if (scene.setup.perspective)
+        points.push_back(scene.setup.prp);
+    for (const Primitive& p : scene.primitives)
+        if (!p.canonical && (p.element == Element::Objects || p.element == Element::Volume) && !p.bounds.isEmpty())
+            for (int c = 0; c < 8; ++c)
+                points.push_back(p.bounds.corner(Eigen::AlignedBox<double, 3>::CornerType(c)));
+    Eigen::AlignedBox<double, 3> own, both;
+    const Mat4<double> at = cumulativeAt(scene.pipeline.stages, double(k));
+    for (const Vec3<double>& p : points) {
+        if (const std::optional<Vec3<double>> q = projectPoint(at, p))
+            own.extend(*q);
+        if (const std::optional<Vec3<double>> q = projectPoint(*ghost, p))
+            both.extend(*q);
+    }
+    both.extend(own);
+    return both.diagonal().norm() <= kFarther * own.diagonal().norm() ? ghost : std::nullopt;
 }
 
 std::optional<Vec3<double>> projectPoint(const Mat4<double>& m, const Vec3<double>& p)

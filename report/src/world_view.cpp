@@ -116,13 +116,6 @@ CameraAim aimAt(const CameraAxes& axes, const Vec2<double>& half, const Vec3<dou
     return {focal, distanceFrom(focal)};
 }
 
-// Framed together, a stage whose step kept sizes (a translation or rotation) is framed with the stage
-// before it: its picture shows where the step moved it from (its ghost).
-bool framedWithTheOneBefore(const std::vector<Stage<double>>& stages, int stage)
-{
-    return stage > 0 && keepsShape(stages[std::size_t(stage - 1)]);
-}
-
 } // namespace
 
 bool framedElement(Element element)
@@ -190,15 +183,15 @@ std::optional<FramingMode> framingModeNamed(const std::string& name)
 Framing stageFraming(const EvaluatedScene& scene, int stage, FramingMode mode)
 {
     const std::vector<Stage<double>>& stages = scene.pipeline.stages;
-    const int first = mode == FramingMode::Together && framedWithTheOneBefore(stages, stage) ? stage - 1 : stage, last = stage;
-    std::vector<Mat4<double>> positions;
-    for (int k = first; k <= last; ++k)
-        positions.push_back(cumulativeAt(stages, double(k)));
     const bool canonical = canonicalOpacityAt(stage, stages) > 0;
-    Framing framing = framingOf(scene, positions, canonical);
-    if (first < last)
-        framing.shown = framingOf(scene, {cumulativeAt(stages, stage)}, canonical).points;
-    return framing;
+    Framing own = framingOf(scene, {cumulativeAt(stages, stage)}, canonical);
+    // Framed together, a stage that shows its ghost is framed with it: where the step moved it from.
+    const std::optional<Mat4<double>> ghost = shownGhost(scene, stage);
+    if (mode != FramingMode::Together || !ghost)
+        return own;
+    Framing both = framingOf(scene, {*ghost, cumulativeAt(stages, stage)}, canonical);
+    both.shown = std::move(own.points);
+    return both;
 }
 
 StageFramings stageFramings(const EvaluatedScene& scene, FramingMode mode)
@@ -227,7 +220,7 @@ double smoothStep(double u)
 WorldMoment stageAtRest(const EvaluatedScene& scene, int stage, const StageFramings& framings)
 {
     const std::vector<Stage<double>>& stages = scene.pipeline.stages;
-    return {cumulativeAt(stages, stage), canonicalOpacityAt(stage, stages), ghostAt(stages, stage),
+    return {cumulativeAt(stages, stage), canonicalOpacityAt(stage, stages), shownGhost(scene, stage),
             framings.fixed ? *framings.fixed : stageFraming(scene, stage, framings.mode)};
 }
 
@@ -242,7 +235,7 @@ StageMotion::StageMotion(const EvaluatedScene& scene, int from, int to, const St
     : stages_(scene.pipeline.stages), from_(from), to_(to)
 {
     const std::vector<Stage<double>>& stages = stages_;
-    ghost_ = to == from + 1 ? ghostAt(stages, to) : std::nullopt; // where it starts, while it moves
+    ghost_ = to == from + 1 ? shownGhost(scene, to) : std::nullopt; // where it starts, while it moves
     if (framings.fixed) {
         start_ = sweep_ = end_ = *framings.fixed;
         return;
@@ -250,7 +243,7 @@ StageMotion::StageMotion(const EvaluatedScene& scene, int from, int to, const St
     start_ = stageFraming(scene, from, framings.mode);
     end_ = stageFraming(scene, to, framings.mode);
     const int later = std::max(from, to);
-    const bool together = framings.mode == FramingMode::Together && std::abs(to - from) == 1 && framedWithTheOneBefore(stages, later);
+    const bool together = std::abs(to - from) == 1 && !(later == to ? end_ : start_).shown.empty(); // framed with the one before
     if (together && stages[std::size_t(later - 1)].matrix.topLeftCorner<3, 3>().isIdentity(0)) {
         sweep_ = stageFraming(scene, later, framings.mode); // a translation: seen against the framing of both ends
         return;

@@ -564,7 +564,8 @@ TEST(Figure, LabelsAnchorWhereTheirPointsAreSeen)
 }
 
 // After a translation the objects' edges and the view volume are drawn again,
-// faint, where they were a stage before; not after the identity or a shear.
+// faint, where they were a stage before; not after the identity or a shear,
+// nor where the step carries them farther than about their size.
 TEST(Figure, TranslationsShowWhereThingsWere)
 {
     const auto scene = evaluateScene(loadScene(fs::path(viewpipe::build::dataDir) / "scenes/house.json"));
@@ -573,7 +574,13 @@ TEST(Figure, TranslationsShowWhereThingsWere)
     EXPECT_FALSE(ghostAt(stages, 4)); // SH_per changes shapes
     ASSERT_TRUE(ghostAt(stages, 3));  // T(-PRP)
     EXPECT_TRUE(ghostAt(stages, 3)->isApprox(cumulativeAt(stages, 2)));
-    EXPECT_NE(stageCaption(*scene, 3, StageText::Caption).find("faint: where it was before"), std::string::npos);
+    // T(-PRP) carries the house about its size: its picture neither shows nor mentions the ghost.
+    EXPECT_FALSE(shownGhost(*scene, 3));
+    EXPECT_EQ(stageCaption(*scene, 3, StageText::Caption).find("faint"), std::string::npos);
+    // The eye moved to the origin from inside the scene: a short step, its ghost shown.
+    const auto inside = evaluateScene(loadScene(fs::path(viewpipe::build::dataDir) / "scenes/clipping-eye-plane.json"));
+    ASSERT_TRUE(shownGhost(*inside, 1));
+    EXPECT_NE(stageCaption(*inside, 1, StageText::Caption).find("faint: where it was before"), std::string::npos);
 
     StageShown after(*scene, cumulativeAt(stages, 3), 0), before(*scene, cumulativeAt(stages, 2), 0);
     after.ghost = ghostAt(stages, 3);

@@ -178,6 +178,13 @@ std::shared_ptr<const EvaluatedScene> evaluateScene(const Scene& scene);
 // because the stage changed sizes.
 std::string stageCaption(const EvaluatedScene& scene, std::size_t k, StageText text);
 
+// Where stage k's picture shows the stage before it faintly (its ghost,
+// ghostAt), and pictures framed together frame both: after a translation or
+// rotation that moves the set-up (the objects, the view volume, VRP, PRP,
+// CW) less than about its size. Moved farther, a picture of both would draw
+// each small.
+std::optional<Mat4<double>> shownGhost(const EvaluatedScene& scene, int k);
+
 // The window as the projected view outlines it: the mid-section of the view
 // volume's side edges (end points by pairs, world coordinates).
 std::vector<Vec3<double>> pictureWindowOutline(const EvaluatedScene& scene);

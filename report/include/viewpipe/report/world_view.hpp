@@ -50,7 +50,8 @@ Framing framingOf(const EvaluatedScene& scene, const std::vector<Mat4<double>>& 
 // How the pictures of a scene's stages are framed (export --framing): a stage
 // reached by a step that keeps sizes (a translation or rotation) framed
 // together with the stage before it, so that the step's motion shows, the
-// default; every stage on its own; or one framing that holds every stage, for
+// default (not where the step moves the set-up about its size or farther:
+// both would draw small, shownGhost); every stage on its own; or one framing that holds every stage, for
 // comparing sizes.
 enum class FramingMode { Together, PerStage, Fixed };
 // The names --framing takes: "together", "per-stage", "fixed".
@@ -58,7 +59,8 @@ const char* framingModeName(FramingMode mode);
 std::optional<FramingMode> framingModeNamed(const std::string& name);
 
 // The framing of stage k at rest: Together, with the stage before it where
-// the step between keeps sizes; otherwise its own.
+// the picture shows its ghost (shownGhost; the framing then has `shown`);
+// otherwise its own.
 Framing stageFraming(const EvaluatedScene& scene, int stage, FramingMode mode = FramingMode::Together);
 // A scene's stages framed as a mode asks, Fixed's one framing made once.
 struct StageFramings {
