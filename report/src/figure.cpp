@@ -428,13 +428,27 @@ PictureLayout layoutPicture(int width, int height, const PictureText& text, cons
         subjectKnown ? std::vector<LegendPlace>{LegendPlace::Beside, LegendPlace::Below, LegendPlace::Inside}
                      : std::vector<LegendPlace>{LegendPlace::Beside, LegendPlace::Below};
     std::vector<LegendPlace> places = text.legendPlace == LegendPlace::Best ? anywhere : std::vector<LegendPlace>{text.legendPlace};
-    // At one size, the legend put at `where`: the layout, or none where it does not fit.
-    auto arrange = [&](double size, LegendPlace where, const LegendLayout& rows, double bottom) -> std::optional<PictureLayout> {
+    // At one size, the legend put at `where` (beside: in a column with the caption, where `column`): the
+    // layout, or none where it does not fit.
+    auto arrange = [&](double size, LegendPlace where, bool column, const LegendLayout& rows, double bottom) -> std::optional<PictureLayout> {
         PictureLayout l = layout;
         l.legendRows = rows;
         l.legend = {};
         const Vec2d legendSize = rows.size;
         const double legendLeft = width - margin - legendSize.x();
+        if (where == LegendPlace::Beside && column) {
+            // The caption, the legend under it and the note at their foot in a column at the left as wide
+            // as the legend, the stage right of them at the picture's whole height: where the subject is
+            // tall, it draws larger there.
+            const double room = std::max(legendSize.x(), 0.3 * width);
+            std::tie(l.captionLines, l.caption) = place(text.caption, size, true, room, l.captionLine, false);
+            std::tie(l.noteLines, l.note) = place(text.note, l.noteSize, false, room, l.noteLine, true);
+            const Vec2d top(left, l.caption.max.y() + 0.6 * size);
+            l.legend = {top, top + legendSize};
+            l.scene = {Vec2d(left + room + margin, margin), Vec2d(width, height - margin)};
+            const double foot = (l.noteLines.empty() ? height : l.note.min.y()) - margin;
+            return l.legend.max.y() <= foot && roomy(l.scene) ? std::optional<PictureLayout>(l) : std::nullopt;
+        }
         // The caption beside a legend at the top right where that leaves it half the width and two lines at most.
         bool captionBeside = where == LegendPlace::Beside && legendLeft - margin - left >= 0.5 * width;
         std::tie(l.captionLines, l.caption) =
@@ -495,11 +509,15 @@ PictureLayout layoutPicture(int width, int height, const PictureText& text, cons
             const LegendLayout rows = legendLayout(withLegend ? text.legend : std::vector<const LegendEntry*>{}, size, measure);
             std::optional<PictureLayout> best;
             for (const LegendPlace where : withLegend ? places : std::vector<LegendPlace>{LegendPlace::None})
-                if (std::optional<PictureLayout> l = arrange(size, where, rows, bottom); l && (!best || scaleIn(l->scene) > scaleIn(best->scene)))
-                    best = std::move(l);
+                for (const bool column : {false, true})
+                    if (!column || (subjectKnown && where == LegendPlace::Beside))
+                        if (std::optional<PictureLayout> l = arrange(size, where, column, rows, bottom);
+                            l && (!best || scaleIn(l->scene) > scaleIn(best->scene)))
+                            best = std::move(l);
             if (!best)
                 continue;
-            const bool captionFits = best->caption.max.y() - best->caption.min.y() <= 0.3 * height;
+            // Beside the stage, the caption takes none of its height.
+            const bool captionFits = best->caption.max.y() - best->caption.min.y() <= 0.3 * height || best->scene.min.x() > best->caption.max.x();
             if (captionFits || k + 1 == sizes.size()) {
                 layout = std::move(*best);
                 return true;

