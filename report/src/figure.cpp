@@ -716,13 +716,17 @@ std::vector<std::optional<PlacedLabel>> placeLabels(const std::vector<LabelReque
         std::optional<Box2> best;
         double bestCost = 0;
         bool bestLeader = false;
+        // A place nearer the anchor often costs the same as one further out, a crossing as much as two rings
+        // (the direction's turn the same): the first found keeps it, whatever the last bits of the pixels, so
+        // that two pictures through cameras a rounding apart (the PNG's and the page's) place alike.
+        constexpr double kTie = 1e-9;
         auto consider = [&](const Box2& box, double penalty, bool leader) {
-            if (best && penalty >= bestCost)
+            if (best && penalty >= bestCost - kTie)
                 return; // its cost is never below its penalty: it cannot do better
             if (!free(box, leader ? std::optional<Vec2d>(r.anchor) : std::nullopt, r.minor, r.axis))
                 return;
             const double c = cost(box) + penalty;
-            if (!best || c < bestCost) {
+            if (!best || c < bestCost - kTie) {
                 best = box;
                 bestCost = c;
                 bestLeader = leader;
