@@ -47,6 +47,19 @@ Api apiNamed(const std::string& name, const std::string& field)
     throw InputError(field, "must be one of " + known + " (got \"" + name + "\")");
 }
 
+StageKind ndcStageKind(Api api, DepthMode depth)
+{
+    const bool reversed = depth == DepthMode::Reversed;
+    switch (api) {
+    case Api::OpenGL: return StageKind::NdcReversed;
+    case Api::Direct3D: return reversed ? StageKind::NdcDirect3dReversed : StageKind::NdcDirect3d;
+    case Api::Vulkan: return reversed ? StageKind::NdcVulkanReversed : StageKind::NdcVulkan;
+    case Api::Metal: return reversed ? StageKind::NdcMetalReversed : StageKind::NdcMetal;
+    case Api::WebGPU: return reversed ? StageKind::NdcWebgpuReversed : StageKind::NdcWebgpu;
+    }
+    return StageKind::NdcReversed;
+}
+
 std::string handednessName(Handedness handedness)
 {
     return handedness == Handedness::Left ? "left" : "right";

@@ -156,8 +156,9 @@ std::string describeEffects(const EffectList& effects, const EffectOutcomes& out
             note << "clip: " << s.inside << " edges inside, " << s.clipped << " cut, " << s.outside
                  << " outside (ghosted)\n";
         } else if (effect == EffectKind::Divide) {
-            note << (divideAddsStage(pipeline) ? "divide: stage $" + symbolMath(pipeline.stages.back().symbol) + "$ appended\n"
-                                               : std::string("divide: none needed (parallel)\n"));
+            note << (divideAddsStage(pipeline)
+                         ? "divide: stage $" + stageSymbolMath(pipeline.stages.back().kind) + "$ appended\n"
+                         : std::string("divide: none needed (parallel)\n"));
         } else if (effect == EffectKind::Cull && outcomes.cull) {
             note << "cull: " << outcomes.cull->culled << " of " << outcomes.cull->faces << " faces (ghosted)\n";
         } else if (effect == EffectKind::Depth && outcomes.depth) {
@@ -555,7 +556,7 @@ std::vector<std::string> claimsAtStages(const Pipeline<double>& pipeline, const 
                 claims[k] += (claims[k].empty() ? "" : "; ") + facts[f].text;
             before[f] = now;
         }
-        if (k > 0 && pipeline.stages[k - 1].divides) // what the last matrix made true still holds, and shows
+        if (k > 0 && pipeline.stages[k - 1].divides()) // what the last matrix made true still holds, and shows
             claims[k] = claims[k - 1] + (claims[k - 1].empty() ? "" : "; ") +
                         "the picture stays: every stage is drawn divided by w";
         else if (k > 0 && claims[k].empty() && pipeline.stages[k - 1].matrix.isIdentity(0))
@@ -760,7 +761,7 @@ void requireDrawable(const EvaluatedScene& out)
                     farthest = std::max(farthest, (undivided[stage] * p.homogeneous()).head<3>().cwiseAbs().maxCoeff());
             if (farthest > 0)
                 throw InputError(field, "reaches a coordinate of " + formatNumber(farthest) + " " +
-                                            (stage == 0 ? "in world coordinates" : "after " + out.pipeline.stages[stage - 1].symbol) +
+                                            (stage == 0 ? "in world coordinates" : "after " + out.pipeline.stages[stage - 1].symbol()) +
                                             ", beyond the " + formatNumber(kDrawnReach) + " the pictures can draw");
         }
     };
@@ -913,7 +914,7 @@ std::string stageCaption(const EvaluatedScene& scene, std::size_t k, StageText t
 {
     const auto& stages = scene.pipeline.stages;
     std::string note = k < scene.stageClaims.size() ? scene.stageClaims[k] : "";
-    if (k > 0 && framedTogether(stages, int(k)).first == int(k) && !stages[k - 1].divides) // the divide changes none
+    if (k > 0 && framedTogether(stages, int(k)).first == int(k) && !stages[k - 1].divides()) // the divide changes none
         note += std::string(note.empty() ? "" : " ") + "(framed anew: this stage changes sizes)";
     if (shownGhost(scene, int(k)))
         note += std::string(note.empty() ? "" : " ") + "(faint: where it was before)";

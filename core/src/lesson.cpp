@@ -228,7 +228,7 @@ void solveQuestion(Question& q, const Json& j, const std::string& path, const Sc
     }
     case QuestionKind::WhichStage:
         q.correct = q.stage - 1;
-        if (answer && readString(*answer, answerPath) != q.choices[std::size_t(q.correct)])
+        if (answer && stageKindNamed(readString(*answer, answerPath)) != pipeline.stages[std::size_t(q.correct)].kind)
             throw InputError(answerPath, "is \"" + answer->get<std::string>() + "\" but stage " +
                                              std::to_string(q.stage) + " is " + q.choices[std::size_t(q.correct)]);
         break;
@@ -242,7 +242,7 @@ void solveQuestion(Question& q, const Json& j, const std::string& path, const Sc
         q.row = readIndex(j["row"], child(path, "row"), 1, 4);
         q.column = readIndex(j["column"], child(path, "column"), 1, 4);
         const Stage<double>& stage = pipeline.stages[std::size_t(q.stage - 1)];
-        if (stage.divides)
+        if (stage.divides())
             throw InputError(child(path, "stage"), "is the divide, which has no matrix");
         q.entry = stage.matrix(q.row - 1, q.column - 1);
         if (exact)
@@ -325,7 +325,7 @@ Question readQuestion(const Json& j, const std::string& path, const Scene& scene
         q.tries = readIndex(j["tries"], child(path, "tries"), 1, 10);
     for (const Stage<double>& stage : pipeline.stages)
         if (q.kind == QuestionKind::WhichStage || q.kind == QuestionKind::Order)
-            q.choices.push_back(stage.symbol);
+            q.choices.push_back(stage.symbol());
 
     solveQuestion(q, j, path, scene, pipeline);
     return q;
@@ -373,7 +373,7 @@ void readShown(const Json& j, const std::string& path, LessonStep& step, const P
             const int stage = revealedStage(step);
             if (stage == 0)
                 throw InputError(list, "the world (stage 0) has no matrix to highlight");
-            if (pipeline.stages[std::size_t(stage - 1)].divides)
+            if (pipeline.stages[std::size_t(stage - 1)].divides())
                 throw InputError(list, "stage " + std::to_string(stage) + " is the divide, which has no matrix");
             if (!h["entries"].is_array())
                 throw InputError(list, "must be an array of [row, column] pairs (got " + found(h["entries"]) + ")");

@@ -8,7 +8,7 @@
 #include <utility>
 
 #include "viewpipe/error.hpp"
-#include "viewpipe/gl.hpp"
+#include "viewpipe/stage_kind.hpp"
 
 namespace viewpipe {
 namespace {
@@ -453,31 +453,8 @@ std::vector<std::string> mathSubsetCommands()
 
 std::string symbolMath(const std::string& symbol)
 {
-    const std::size_t open = symbol.find("(-");
-    if (open != std::string::npos) // T(-VRP) -> T(-\mathit{VRP})
-        return symbol.substr(0, open) + "(-\\mathit{" + symbol.substr(open + 2, symbol.size() - open - 3) + "})";
-    const std::size_t underscore = symbol.find('_');
-    const std::string base = symbol.substr(0, underscore);
-    const std::string math = base.size() > 1 ? "\\mathit{" + base + "}" : base;
-    if (underscore == std::string::npos)
-        return math;
-    // The subscript's words, an API's as people name it: NDC_vulkan_reversed -> NDC sub "Vulkan, reversed".
-    std::vector<std::string> words;
-    for (std::size_t at = underscore; at != std::string::npos;) {
-        const std::size_t next = symbol.find('_', at + 1);
-        std::string word = symbol.substr(at + 1, next == std::string::npos ? std::string::npos : next - at - 1);
-        for (const gl::Api api : gl::kApis)
-            if (word == gl::apiName(api))
-                word = gl::apiTitle(api);
-        words.push_back(word);
-        at = next;
-    }
-    if (words.size() == 1)
-        return math + "_{\\mathrm{" + words.front() + "}}";
-    std::string text;
-    for (const std::string& word : words)
-        text += (text.empty() ? "" : ", ") + word;
-    return math + "_{\\text{" + text + "}}"; // words apart, as prose sets them
+    const std::optional<StageKind> kind = stageKindNamed(symbol);
+    return kind ? stageSymbolMath(*kind) : symbol;
 }
 
 } // namespace viewpipe

@@ -103,7 +103,7 @@ void MatrixPanel::showStage(const Pipeline<double>& pipeline, const Pipeline<Exa
         return;
     }
     const Stage<double>& s = pipeline.stages[std::size_t(stage - 1)];
-    title_->setText(QString("<b>%1. %2</b> — %3").arg(stage).arg(mathHtml("$" + symbolMath(s.symbol) + "$"),
+    title_->setText(QString("<b>%1. %2</b> — %3").arg(stage).arg(mathHtml("$" + stageSymbolMath(s.kind) + "$"),
                                                                    mathHtml(s.explanation)));
     const Mat4<double>& now = cumulative[std::size_t(stage - 1)];
     const Mat4<double> before = stage >= 2 ? cumulative[std::size_t(stage - 2)] : Mat4<double>::Identity();
@@ -112,9 +112,9 @@ void MatrixPanel::showStage(const Pipeline<double>& pipeline, const Pipeline<Exa
         for (int c = 0; c < 4; ++c)
             changed[std::size_t(r * 4 + c)] =
                 std::abs(now(r, c) - before(r, c)) > 1e-12 * std::max(1.0, std::abs(before(r, c)));
-    const QString symbol = mathHtml("$" + symbolMath(s.symbol) + "$");
+    const QString symbol = mathHtml("$" + stageSymbolMath(s.kind) + "$");
     QString html;
-    const SymbolicForm symbolic = symbolicMatrix(s.symbol);
+    const SymbolicForm symbolic = symbolicMatrix(s.kind);
     if (!symbolic.cells[0].empty()) {
         std::array<QString, 16> cells;
         for (std::size_t k = 0; k < cells.size(); ++k)
@@ -123,7 +123,7 @@ void MatrixPanel::showStage(const Pipeline<double>& pipeline, const Pipeline<Exa
         for (const std::string& note : symbolic.notes)
             html += "<div style='margin-bottom:4px'>" + mathHtml(note) + "</div>";
     }
-    if (s.divides) // no matrix does this: each point is divided by its own w
+    if (s.divides()) // no matrix does this: each point is divided by its own w
         html += "<p><b>" + symbol + "</b>: " + QString(kDivideMapping).toHtmlEscaped() + "<br><i>" +
                 tr("Not a matrix: each point is divided by its own w. The cumulative matrix is unchanged; the "
                    "points it gives are divided.") + "</i></p>";
@@ -161,7 +161,7 @@ void MatrixPanel::showTrace(const Pipeline<double>& pipeline, const Pipeline<Exa
     QString html = tr("<b>Traced vertex</b> (x, y, z, w):<table cellspacing='0' cellpadding='2'>");
     html += row(tr("world"), point->homogeneous(), e ? &world : nullptr, stage == 0);
     for (std::size_t k = 0; k < pipeline.stages.size() && int(k) < lastRow; ++k)
-        html += row(mathHtml("$" + symbolMath(pipeline.stages[k].symbol) + "$"), t.afterStage[k],
+        html += row(mathHtml("$" + stageSymbolMath(pipeline.stages[k].kind) + "$"), t.afterStage[k],
                     e ? &e->afterStage[k] : nullptr, int(k) + 1 == stage);
     html += "</table>";
     if (lastRow < int(pipeline.stages.size()))

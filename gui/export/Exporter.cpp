@@ -12,7 +12,6 @@
 #include <vtkWindowToImageFilter.h>
 
 #include <algorithm>
-#include <cctype>
 #include <sstream>
 #include <cmath>
 #include <cstdio>
@@ -199,7 +198,7 @@ const Format& formatNamed(const std::string& name)
 std::string stageFileBase(const Pipeline<double>& pipeline, int k)
 {
     return (k < 10 ? "0" : "") + std::to_string(k) + "-" +
-           (k == 0 ? std::string("world") : slug(pipeline.stages[std::size_t(k - 1)].symbol));
+           (k == 0 ? std::string("world") : stageSlug(pipeline.stages[std::size_t(k - 1)].kind));
 }
 
 // matrices.tex, matrices.json and, with a depth buffer, depth-resolution.png.
@@ -456,20 +455,6 @@ void exportSheet(const EvaluatedScene& scene, const fs::path& file, int width, i
     } catch (const std::exception& e) {
         throw InputError("--out", std::string("cannot write the sheet: ") + e.what());
     }
-}
-
-std::string slug(const std::string& symbol)
-{
-    std::string out;
-    for (char c : symbol) {
-        if (std::isalnum(static_cast<unsigned char>(c)))
-            out += char(std::tolower(static_cast<unsigned char>(c)));
-        else if (!out.empty() && out.back() != '-')
-            out += '-';
-    }
-    while (!out.empty() && out.back() == '-')
-        out.pop_back();
-    return out;
 }
 
 std::vector<int> parseStages(const std::string& text, int stageCount)

@@ -107,9 +107,6 @@ void exportSheet(const EvaluatedScene& scene, const std::filesystem::path& file,
 // throws std::runtime_error when it cannot be written.
 void writeWindowPng(vtkRenderWindow* window, bool transparent, const std::filesystem::path& file);
 
-// "T(-VRP)" -> "t-vrp": the stage's part of its file names.
-std::string slug(const std::string& symbol);
-
 // Parses "all" or a list such as "0,2,4-5"; throws InputError naming --stages.
 std::vector<int> parseStages(const std::string& text, int stageCount);
 

@@ -49,9 +49,9 @@ namespace {
 // A stage's matrix, or the divide's mapping, which is no matrix.
 std::string stageEquation(const Stage<Exact>& stage, int digits, const std::vector<std::array<int, 2>>& highlighted = {})
 {
-    if (stage.divides)
+    if (stage.divides())
         return "\\text{divide:}\\quad (x, y, z, w) \\mapsto \\left(\\frac{x}{w}, \\frac{y}{w}, \\frac{z}{w}, 1\\right)";
-    return symbolMath(stage.symbol) + " =\n" + bmatrix(stage.matrix, digits, highlighted);
+    return stageSymbolMath(stage.kind) + " =\n" + bmatrix(stage.matrix, digits, highlighted);
 }
 
 } // namespace
@@ -72,24 +72,24 @@ std::string matricesLatex(const Scene& scene, int digits)
     const std::string composite = bmatrix(p.composite, digits);
     std::size_t last = 0; // the last stage that is a matrix: its product, where it is the composite, is shown once
     for (std::size_t k = 0; k < p.stages.size(); ++k)
-        last = p.stages[k].divides ? last : k;
+        last = p.stages[k].divides() ? last : k;
     const bool lastIsComposite = bmatrix(products[last], digits) == composite;
     std::string product;
     int factor = 0; // the stages so far that are matrices
     for (std::size_t k = 0; k < p.stages.size(); ++k) {
         const Stage<Exact>& stage = p.stages[k];
-        const std::string symbol = symbolMath(stage.symbol);
+        const std::string symbol = stageSymbolMath(stage.kind);
         out << "% " << k + 1 << ". " << mathPlainText("$" + symbol + "$") << ": " << mathPlainText(stage.explanation) << "\n"
             << "\\par\\smallskip\\noindent\\textbf{" << k + 1 << ".}~$" << symbol << "$: " << texRichText(stage.explanation)
             << "\n";
-        if (stage.divides) {
+        if (stage.divides()) {
             out << "\\[\n" << stageEquation(stage, digits) << "\n\\]\n\n";
             continue; // no factor of the product
         }
         // As the Matrices panel shows it: in symbols (where it has them), defined by its notes, then in numbers.
-        const std::string symbolic = symbolicLatex(stage.symbol);
+        const std::string symbolic = symbolicLatex(stage.kind);
         out << "\\[\n" << (symbolic.empty() ? symbol : symbolic) << "\n=\n" << bmatrix(stage.matrix, digits) << "\n\\]\n";
-        const SymbolicForm form = symbolicMatrix(stage.symbol);
+        const SymbolicForm form = symbolicMatrix(stage.kind);
         std::string notes;
         for (const std::string& note : form.notes)
             notes += (notes.empty() ? "" : "; ") + texRichText(note);
@@ -103,8 +103,8 @@ std::string matricesLatex(const Scene& scene, int digits)
     }
     std::string stages;
     for (const Stage<Exact>& stage : p.stages)
-        if (!stage.divides)
-            stages = symbolMath(stage.symbol) + (stages.empty() ? "" : " \\, " + stages);
+        if (!stage.divides())
+            stages = stageSymbolMath(stage.kind) + (stages.empty() ? "" : " \\, " + stages);
     const std::string name = p.convention == Convention::OpenGL            ? "P \\, V"
                              : p.projection == ProjectionKind::Perspective ? "N_{\\mathrm{per}}"
                                                                            : "N_{\\mathrm{par}}";
@@ -148,7 +148,7 @@ std::string stageMatrixLatex(const Scene& scene, int stage, int digits)
 {
     const Pipeline<Exact> p = exactPipeline(scene);
     const Stage<Exact>& s = p.stages.at(std::size_t(stage - 1));
-    return s.divides ? stageEquation(s, digits) : bmatrix(s.matrix, digits);
+    return s.divides() ? stageEquation(s, digits) : bmatrix(s.matrix, digits);
 }
 
 std::string entryLatex(const Scene& scene, int stage, int row, int column, int digits)

@@ -60,7 +60,7 @@ std::string fitted(const std::string& math)
 
 std::string stageSymbol(const LessonStep& step, int stage)
 {
-    return buildPipeline(step.scene.camera, step.scene.effects).stages.at(std::size_t(stage - 1)).symbol;
+    return buildPipeline(step.scene.camera, step.scene.effects).stages.at(std::size_t(stage - 1)).symbol();
 }
 
 std::string boxes(const std::vector<std::string>& options)
@@ -349,7 +349,7 @@ std::string lessonSheetLatex(const Lesson& lesson, const std::vector<LessonFigur
             const std::vector<Stage<double>> named = buildPipeline(step.scene.camera, step.scene.effects).stages;
             std::string rows;
             for (std::size_t s = 0; s < points.size(); ++s)
-                rows += (s == 0 ? std::string("world") : symbol(named[s - 1].symbol)) + " & $" + points[s] + "$ \\\\\n";
+                rows += (s == 0 ? std::string("world") : symbol(named[s - 1].symbol())) + " & $" + points[s] + "$ \\\\\n";
             body += "The point $(x, y, z, w)$ after each stage:\\par\n{\\renewcommand{\\arraystretch}{" + rowsApart(rows) +
                     "}\\let\\frac\\dfrac\\begin{tabular}{@{}l@{\\quad}l@{}}\n" + rows;
             body += "\\end{tabular}}\\par\n";

@@ -156,7 +156,7 @@ Json effectsJson(const Scene& scene, const EffectOutcomes& outcomes)
                        {"polygons", countsJson(outcomes.clip->polygons)}};
     if (scene.effects.has(EffectKind::Divide)) {
         const bool added = divideAddsStage(p);
-        out["divide"] = {{"stage", added ? Json(p.stages.back().symbol) : Json(nullptr)},
+        out["divide"] = {{"stage", added ? Json(p.stages.back().symbol()) : Json(nullptr)},
                          {"note", added ? "appended after the last stage"
                                         : "a parallel view needs no divide: its canonical volume is already parallel"}};
     }
@@ -252,11 +252,11 @@ Json pipelineJson(const Scene& scene, const PrecisionChoice& precision, const Ef
         Json stages = Json::array();
         for (std::size_t k = 0; k < p.stages.size(); ++k)
         {
-            stages.push_back({{"symbol", p.stages[k].symbol},
+            stages.push_back({{"symbol", p.stages[k].symbol()},
                               {"explanation", mathPlainText(p.stages[k].explanation)},
                               {"matrix", matrixJson(p.stages[k].matrix)},
                               {"cumulative", matrixJson(cumulative[k])}});
-            if (p.stages[k].divides) // no matrix: "matrix" is the identity, which leaves products unchanged
+            if (p.stages[k].divides()) // no matrix: "matrix" is the identity, which leaves products unchanged
                 stages.back()["divides"] = kDivideMapping;
         }
         out["stages"] = stages;
@@ -284,10 +284,10 @@ Json pipelineJson(const Scene& scene, const PrecisionChoice& precision, const Ef
             Json inexact = Json::array();
             Json exactStages = Json::array();
             for (std::size_t k = 0; k < p.stages.size(); ++k) {
-                exactStages.push_back({{"symbol", p.stages[k].symbol},
+                exactStages.push_back({{"symbol", p.stages[k].symbol()},
                                        {"matrix", exactJson(p.stages[k].matrix,
                                                             "exact.stages[" + std::to_string(k) + "].matrix", inexact)}});
-                if (p.stages[k].divides)
+                if (p.stages[k].divides())
                     exactStages.back()["divides"] = kDivideMapping;
             }
             out["exact"] = {{"stages", exactStages},
@@ -316,15 +316,15 @@ void printPipeline(std::ostream& out, const Scene& scene, const PrecisionChoice&
         std::string product;
         for (std::size_t k = 0; k < p.stages.size(); ++k) {
             const Stage<T>& stage = p.stages[k];
-            out << k + 1 << ". " << stage.symbol << " - " << mathPlainText(stage.explanation) << "\n"; // the symbols as scripts use them
-            if (stage.divides) { // not a matrix, and no factor of the product
+            out << k + 1 << ". " << stage.symbol() << " - " << mathPlainText(stage.explanation) << "\n"; // the symbols as scripts use them
+            if (stage.divides()) { // not a matrix, and no factor of the product
                 out << "    " << kDivideMapping << ", not a matrix\n\n";
                 continue;
             }
-            printSideBySide(out, matrixLines(stage.matrix), matrixLines(cumulative[k]), stage.symbol,
+            printSideBySide(out, matrixLines(stage.matrix), matrixLines(cumulative[k]), stage.symbol(),
                             "cumulative");
             out << "\n";
-            product = stage.symbol + (product.empty() ? "" : " * " + product);
+            product = stage.symbol() + (product.empty() ? "" : " * " + product);
         }
         out << compositeName(names) << " = " << product << "\n";
         for (const std::string& line : matrixLines(p.composite))
@@ -388,7 +388,7 @@ Json traceJson(const Scene& scene, const Vec3<Exact>& typed, const PrecisionChoi
         }
         Json stages = Json::array();
         for (std::size_t k = 0; k < p.stages.size(); ++k)
-            stages.push_back({{"symbol", p.stages[k].symbol}, {"point", vectorJson(trace.afterStage[k])}});
+            stages.push_back({{"symbol", p.stages[k].symbol()}, {"point", vectorJson(trace.afterStage[k])}});
         Json out{{"convention", conventionName(p)},
                  {"projection", projectionName(p.projection)},
                  {"precision", precisionName(precision)},
@@ -407,7 +407,7 @@ Json traceJson(const Scene& scene, const Vec3<Exact>& typed, const PrecisionChoi
         if constexpr (isExactScalar<T>) {
             Json exactStages = Json::array();
             for (std::size_t k = 0; k < p.stages.size(); ++k)
-                exactStages.push_back({{"symbol", p.stages[k].symbol}, {"point", exactJson(trace.afterStage[k])}});
+                exactStages.push_back({{"symbol", p.stages[k].symbol()}, {"point", exactJson(trace.afterStage[k])}});
             out["exact"] = {{"point", exactJson(typed)},
                             {"stages", exactStages},
                             {"clip", exactJson(trace.clip)},

@@ -206,7 +206,7 @@ Figure storyboardOverlay(const EvaluatedScene& scene, const StoryboardLayout& la
         const std::string stage =
             cell.stage == 0 ? "0. World"
                             : std::to_string(cell.stage) + ". $" +
-                                  symbolMath(scene.pipeline.stages[std::size_t(cell.stage - 1)].symbol) + "$";
+                                  stageSymbolMath(scene.pipeline.stages[std::size_t(cell.stage - 1)].kind) + "$";
         label(Element::Objects, stage, {textLeft, middle}, false);
         // Named where the footer has room for the name, the coordinates alone where it has not.
         const std::string coordinates = tracedCoordinates(scene, traced, cell.stage), named = "traced " + coordinates;

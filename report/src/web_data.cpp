@@ -232,15 +232,15 @@ json sceneData(const EvaluatedScene& scene, const WebPageViews& views)
         entry["layout"] = layoutJson(s.layout, views.options.height);
         if (k > 0) {
             const Stage<double>& stage = stages[k - 1];
-            entry["symbol"] = stage.symbol;
-            entry["symbolMath"] = symbolMath(stage.symbol);
+            entry["symbol"] = stage.symbol();
+            entry["symbolMath"] = stageSymbolMath(stage.kind);
             entry["matrix"] = matrix(stage.matrix);
-            entry["divides"] = stage.divides;
+            entry["divides"] = stage.divides();
             entry["latex"] = latex.at(k - 1).equation;
             entry["cumulativeLatex"] = latex.at(k - 1).cumulative;
-            const SymbolicForm symbolic = symbolicMatrix(stage.symbol);
+            const SymbolicForm symbolic = symbolicMatrix(stage.kind);
             if (!symbolic.cells[0].empty())
-                entry["symbolic"] = {{"latex", symbolicLatex(stage.symbol)}, {"notes", symbolic.notes}};
+                entry["symbolic"] = {{"latex", symbolicLatex(stage.kind)}, {"notes", symbolic.notes}};
         }
         stageList.push_back(entry);
     }

@@ -207,7 +207,7 @@ StageFramings stageFramings(const EvaluatedScene& scene, FramingMode mode)
 
 double canonicalOpacityAt(double position, const std::vector<Stage<double>>& stages)
 {
-    const auto lastMatrix = std::find_if(stages.rbegin(), stages.rend(), [](const Stage<double>& s) { return !s.divides; });
+    const auto lastMatrix = std::find_if(stages.rbegin(), stages.rend(), [](const Stage<double>& s) { return !s.divides(); });
     return std::clamp(position - double(stages.rend() - lastMatrix - 1), 0.0, 1.0);
 }
 

@@ -439,10 +439,10 @@ TEST(Api, StagesShowTheStepToEachApisVolume)
         const auto c = camera(gl::Perspective<double>{50, 1.6, 0.5, 40}, api, Handedness::Right, DepthMode::Standard);
         const std::vector<Stage<double>> stages = gl::stages(c);
         if (api == Api::OpenGL) {
-            EXPECT_EQ(stages.back().symbol, "P_depth");
+            EXPECT_EQ(stages.back().symbol(), "P_depth");
             continue;
         }
-        EXPECT_EQ(stages.back().symbol, "NDC_" + gl::apiName(api));
+        EXPECT_EQ(stages.back().symbol(), "NDC_" + gl::apiName(api));
         EXPECT_NE(stages.back().explanation.find("$z' = (z + w)/2$, near 0, far 1"), std::string::npos);
         EXPECT_EQ(stages.back().explanation.find("$y' = -y$") != std::string::npos, api == Api::Vulkan);
     }
@@ -450,7 +450,7 @@ TEST(Api, StagesShowTheStepToEachApisVolume)
                              DepthMode::Reversed);
     std::vector<std::string> symbols;
     for (const Stage<double>& s : gl::stages(left))
-        symbols.push_back(s.symbol);
+        symbols.push_back(s.symbol());
     EXPECT_EQ(symbols, (std::vector<std::string>{"T(-eye)", "R_eye", "Z_flip", "T_ortho", "S_ortho", "NDC_direct3d_reversed"}));
 }
 

@@ -91,8 +91,8 @@ TEST(Effects, DivideAppendsFoleysM)
     const Pipeline<double> plain = house();
     const Pipeline<double> p = withEffectStages(plain, effects);
     ASSERT_EQ(p.stages.size(), 6u);
-    EXPECT_EQ(p.stages[4].symbol, "S_per");
-    EXPECT_EQ(p.stages[5].symbol, "M");
+    EXPECT_EQ(p.stages[4].symbol(), "S_per");
+    EXPECT_EQ(p.stages[5].symbol(), "M");
     EXPECT_TRUE(p.stages[5].matrix.isApprox(plain.toClip));
     EXPECT_TRUE(p.composite.isApprox(plain.clipMatrix()));
     EXPECT_TRUE(p.toClip.isIdentity());
@@ -111,7 +111,7 @@ TEST(Effects, OpenGlDivideIsAStageThatDivides)
     const Pipeline<double> p = withEffectStages(plain, withEffect({}, EffectKind::Divide, true));
     ASSERT_EQ(p.stages.size(), plain.stages.size() + 1);
     const Stage<double>& divide = p.stages.back();
-    EXPECT_TRUE(divide.divides);
+    EXPECT_TRUE(divide.divides());
     EXPECT_TRUE(divide.matrix.isIdentity()); // products unchanged
     // gluPerspective(60, 1, 1, 10) takes (0, 0, -5) to clip (0, 0, 35/9, 5): z = -(11/9)(-5) - 20/9.
     const PointTrace<double> t = tracePoint(p, {0, 0, -5});
@@ -146,10 +146,10 @@ TEST(Effects, OnlyListedEffectsRun)
     EXPECT_EQ(listed->outcomes.computed,
               (std::vector<EffectKind>{EffectKind::Divide, EffectKind::Clip, EffectKind::Cull}));
     EXPECT_FALSE(listed->outcomes.depth || listed->outcomes.raster);
-    EXPECT_EQ(listed->pipeline.stages.back().symbol, "M");
+    EXPECT_EQ(listed->pipeline.stages.back().symbol(), "M");
     const auto undivided = evaluateScene(parseScene("{" + view + R"(, "effects": ["raster"]})", "."));
     EXPECT_EQ(undivided->outcomes.computed, std::vector<EffectKind>{EffectKind::Raster});
-    EXPECT_EQ(undivided->pipeline.stages.back().symbol, "S_per");
+    EXPECT_EQ(undivided->pipeline.stages.back().symbol(), "S_per");
 }
 
 // The house lies inside the default view volume: nothing is clipped. Moving

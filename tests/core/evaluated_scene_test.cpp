@@ -309,7 +309,7 @@ TEST(EvaluatedScene, TheVolumeAfterMIsNamedAsTheParallelOne)
     Scene divided = house();
     divided.effects = withEffect(divided.effects, EffectKind::Divide, true);
     const auto scene = evaluateScene(divided);
-    ASSERT_EQ(scene->pipeline.stages.back().symbol, "M");
+    ASSERT_EQ(scene->pipeline.stages.back().symbol(), "M");
     std::map<std::string, Vec3<double>> at;
     for (const Label& label : scene->labels)
         if (label.element == Element::Canonical)

@@ -45,11 +45,11 @@ TEST(FoleyHouse, StagesMatchHandComputation)
 {
     const std::vector<Stage<double>> stages = foley::perspectiveStages(houseView());
     ASSERT_EQ(stages.size(), 5u);
-    EXPECT_EQ(stages[0].symbol, "T(-VRP)");
-    EXPECT_EQ(stages[1].symbol, "R");
-    EXPECT_EQ(stages[2].symbol, "T(-PRP)");
-    EXPECT_EQ(stages[3].symbol, "SH_per");
-    EXPECT_EQ(stages[4].symbol, "S_per");
+    EXPECT_EQ(stages[0].symbol(), "T(-VRP)");
+    EXPECT_EQ(stages[1].symbol(), "R");
+    EXPECT_EQ(stages[2].symbol(), "T(-PRP)");
+    EXPECT_EQ(stages[3].symbol(), "SH_per");
+    EXPECT_EQ(stages[4].symbol(), "S_per");
     const double tol = 4 * eps<double>();
     EXPECT_TRUE(stages[0].matrix.isApprox(Mat4<double>::Identity(), tol));
     EXPECT_TRUE(stages[1].matrix.isApprox(Mat4<double>::Identity(), tol));
@@ -116,8 +116,8 @@ TEST(FoleyHouseCorner, DefaultSceneMovesAtEveryStageAsComputedByHand)
         rows({{1, 0, 0.25, 0}, {0, 1, -13.0 / 36, 0}, {0, 0, 1, 0}, {0, 0, 0, 1}}),
         rows({{6.0 / 187, 0, 0, 0}, {0, 6.0 / 121, 0, 0}, {0, 0, 1.0 / 66, 0}, {0, 0, 0, 1}})};
     for (std::size_t k = 0; k < 5; ++k) {
-        EXPECT_TRUE(p.stages[k].matrix.isApprox(expected[k], 4 * eps<double>())) << p.stages[k].symbol;
-        EXPECT_FALSE(p.stages[k].matrix.isApprox(Mat4<double>::Identity(), 1e-3)) << p.stages[k].symbol << " does not move";
+        EXPECT_TRUE(p.stages[k].matrix.isApprox(expected[k], 4 * eps<double>())) << p.stages[k].symbol();
+        EXPECT_FALSE(p.stages[k].matrix.isApprox(Mat4<double>::Identity(), 1e-3)) << p.stages[k].symbol() << " does not move";
     }
     ASSERT_TRUE(p.zmin.has_value());
     EXPECT_NEAR(*p.zmin, -31.0 / 66, 4 * eps<double>());
@@ -152,9 +152,9 @@ TEST(FoleyParallel, ObliqueShearMatchesHandComputation)
     // CW = (10, 5, 0); DOP = (2, -1, -84): shx = 2/84, shy = -1/84.
     const std::vector<Stage<double>> stages = foley::parallelStages(spec);
     ASSERT_EQ(stages.size(), 5u);
-    EXPECT_EQ(stages[2].symbol, "SH_par");
-    EXPECT_EQ(stages[3].symbol, "T_par");
-    EXPECT_EQ(stages[4].symbol, "S_par");
+    EXPECT_EQ(stages[2].symbol(), "SH_par");
+    EXPECT_EQ(stages[3].symbol(), "T_par");
+    EXPECT_EQ(stages[4].symbol(), "S_par");
     EXPECT_NEAR(stages[2].matrix(0, 2), 2.0 / 84, 2 * eps<double>());
     EXPECT_NEAR(stages[2].matrix(1, 2), -1.0 / 84, 2 * eps<double>());
     EXPECT_TRUE(stages[3].matrix.col(3).isApprox(Vec4<double>(-10, -5, -60, 1)));

@@ -728,7 +728,7 @@ private slots:
         const auto& spec = std::get<foley::ViewSpec<double>>(w.document()->scene().camera);
         QCOMPARE(classify(CameraSpec<double>(spec)).kind, std::string("cabinet"));
         QCOMPARE(w.stepper()->stageCount(), 5);
-        QCOMPARE(w.document()->pipeline().stages[2].symbol, std::string("SH_par"));
+        QCOMPARE(w.document()->pipeline().stages[2].symbol(), std::string("SH_par"));
         w.document()->undoStack()->undo();
         QCOMPARE(std::get<foley::ViewSpec<double>>(w.document()->scene().camera).prp, Vec3<double>(8, 6, 84));
     }
@@ -813,7 +813,7 @@ private slots:
         QAction* divide = menuAction(w, "effectsMenu", "Divide (stage M)");
         divide->trigger();
         QCOMPARE(w.stepper()->stageCount(), stages + 1);
-        QCOMPARE(w.document()->pipeline().stages.back().symbol, std::string("M"));
+        QCOMPARE(w.document()->pipeline().stages.back().symbol(), std::string("M"));
         QCOMPARE(w.stagePanel()->stageList()->count(), stages + 2);
         QVERIFY(divide->isChecked());
         undo->undo();

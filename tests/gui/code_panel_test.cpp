@@ -221,7 +221,7 @@ private slots:
         api->setCurrentIndex(int(gl::Api::Vulkan));
         QCOMPARE(cameraOf(w).api, gl::Api::Vulkan);
         QCOMPARE(w.document()->pipeline().stages.size(), stages + 1);
-        QCOMPARE(QString::fromStdString(w.document()->pipeline().stages.back().symbol), QString("NDC_vulkan"));
+        QCOMPARE(QString::fromStdString(w.document()->pipeline().stages.back().symbol()), QString("NDC_vulkan"));
         // Its projection is no longer named by OpenGL's call.
         auto* projection = w.parameters()->findChild<QComboBox*>("camera.projection.type");
         QVERIFY(projection);

@@ -392,7 +392,7 @@ private slots:
             for (const bool divide : {false, true})
                 for (const auto& stage :
                      buildPipeline(scene.camera, withEffect(scene.effects, EffectKind::Divide, divide)).stages)
-                    symbols.insert(stage.symbol);
+                    symbols.insert(stage.symbol());
         QVERIFY(symbols.count("SH_frustum") && symbols.count("S_par") && symbols.count("M"));
 
         QWidget parent;

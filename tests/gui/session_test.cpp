@@ -70,7 +70,7 @@ QString expectedCaption(MainWindow& window, int stage)
 {
     if (stage == 0)
         return "World coordinates";
-    return "After $" + QString::fromStdString(symbolMath(window.document()->pipeline().stages[std::size_t(stage - 1)].symbol)) + "$";
+    return "After $" + QString::fromStdString(symbolMath(window.document()->pipeline().stages[std::size_t(stage - 1)].symbol())) + "$";
 }
 
 QImage worldPicture(MainWindow& window)
@@ -196,7 +196,7 @@ private slots:
         QCOMPARE(w.stagePanel()->stageList()->currentRow(), w.stepper()->stage());
         QCOMPARE(shownTitle(w), expectedCaption(w, w.stepper()->stage()));
         QVERIFY(w.matrices()->stageText().contains(
-            mathHtml("$" + symbolMath(w.document()->pipeline().stages[std::size_t(w.stepper()->stage() - 1)].symbol) + "$")));
+            mathHtml("$" + symbolMath(w.document()->pipeline().stages[std::size_t(w.stepper()->stage() - 1)].symbol()) + "$")));
     }
 
     // Found: a traced vertex and the Accuracy results carried into the next scene.

@@ -108,7 +108,7 @@ TEST(WorldView, PDepthIsPicturedTheSameWithOrWithoutTheDivide)
     plainScene.effects = withEffect(plainScene.effects, EffectKind::Divide, false);
     const auto plain = evaluateScene(plainScene);
     const int pDepth = int(plain->pipeline.stages.size());
-    ASSERT_EQ(divided->pipeline.stages[std::size_t(pDepth - 1)].symbol, "P_depth");
+    ASSERT_EQ(divided->pipeline.stages[std::size_t(pDepth - 1)].symbol(), "P_depth");
     ASSERT_EQ(int(divided->pipeline.stages.size()), pDepth + 1);
     for (const FramingMode mode : {FramingMode::Together, FramingMode::PerStage}) {
         const WorldMoment a = stageAtRest(*divided, pDepth, {mode, std::nullopt}), b = stageAtRest(*plain, pDepth, {mode, std::nullopt});

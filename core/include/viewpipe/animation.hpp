@@ -62,7 +62,7 @@ template <class T> bool keepsShape(const Stage<T>& stage)
 {
     const Mat4<T>& m = stage.matrix;
     const Mat3<T> r = m.template topLeftCorner<3, 3>();
-    return !stage.divides && m.template bottomLeftCorner<1, 3>().isZero(T(0)) && m(3, 3) == T(1) &&
+    return !stage.divides() && m.template bottomLeftCorner<1, 3>().isZero(T(0)) && m(3, 3) == T(1) &&
            (r * r.transpose()).isIdentity(T(64) * epsilonOf<T>());
 }
 

@@ -81,8 +81,8 @@ template <class T> bool divideAddsStage(const Pipeline<T>& p)
 }
 
 // The pipeline with the effects' stages: with Divide, Foley's M is appended
-// to a perspective view (symbol "M"), and an OpenGL camera gains "divide"
-// (the identity: the picture is divided by w at every stage already).
+// to a perspective view, and an OpenGL camera gains the divide (the identity:
+// the picture is divided by w at every stage already).
 // `computed`, when given, gains Divide when the divide's code ran.
 template <class T>
 Pipeline<T> withEffectStages(Pipeline<T> p, const EffectList& effects, std::vector<EffectKind>* computed = nullptr)
@@ -94,15 +94,15 @@ Pipeline<T> withEffectStages(Pipeline<T> p, const EffectList& effects, std::vect
     if (!divideAddsStage(p))
         return p;
     if (p.convention == Convention::Foley) {
-        p.stages.push_back({"M",
+        p.stages.push_back({StageKind::PerspectiveToParallel,
                             "map the canonical perspective volume onto the canonical parallel volume (the divide "
                             "by $w = -z$ follows)",
                             p.toClip});
         p.composite = p.clipMatrix();
         p.toClip = Mat4<T>::Identity();
     } else {
-        p.stages.push_back(
-            {"divide", "divide by w: clip coordinates become normalized device coordinates", Mat4<T>::Identity(), true});
+        p.stages.push_back({StageKind::Divide, "divide by w: clip coordinates become normalized device coordinates",
+                            Mat4<T>::Identity()});
     }
     return p;
 }

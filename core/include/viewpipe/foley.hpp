@@ -150,11 +150,13 @@ template <class T> std::vector<Stage<T>> perspectiveStages(const ViewSpec<T>& sp
     const T sx = T(2) / (spec.window.umax - spec.window.umin) * perspective;
     const T sy = T(2) / (spec.window.vmax - spec.window.vmin) * perspective;
     return {
-        {"T(-VRP)", "translate the view reference point to the origin", translation<T>(-spec.vrp)},
-        {"R", "rotate VRC onto the world axes: $u$ to $x$, $v$ to $y$, $n$ to $z$", embedLinear(basis.rotation())},
-        {"T(-PRP)", "translate the center of projection (PRP) to the origin", translation<T>(-spec.prp)},
-        {"SH_per", "shear so that the center line of the view volume becomes the $z$ axis", shearDopToAxis(spec)},
-        {"S_per", "scale so that the view volume becomes the canonical perspective volume",
+        {StageKind::TranslateVrp, "translate the view reference point to the origin", translation<T>(-spec.vrp)},
+        {StageKind::Rotate, "rotate VRC onto the world axes: $u$ to $x$, $v$ to $y$, $n$ to $z$",
+         embedLinear(basis.rotation())},
+        {StageKind::TranslatePrp, "translate the center of projection (PRP) to the origin", translation<T>(-spec.prp)},
+        {StageKind::ShearPerspective, "shear so that the center line of the view volume becomes the $z$ axis",
+         shearDopToAxis(spec)},
+        {StageKind::ScalePerspective, "scale so that the view volume becomes the canonical perspective volume",
          scaling<T>(sx, sy, T(1) / depth)},
     };
 }
@@ -165,13 +167,14 @@ template <class T> std::vector<Stage<T>> parallelStages(const ViewSpec<T>& spec)
     const Basis<T> basis = vrcBasis(spec);
     const Vec3<T> toFrontCenter(-spec.window.centerU(), -spec.window.centerV(), -spec.front);
     return {
-        {"T(-VRP)", "translate the view reference point to the origin", translation<T>(-spec.vrp)},
-        {"R", "rotate VRC onto the world axes: $u$ to $x$, $v$ to $y$, $n$ to $z$", embedLinear(basis.rotation())},
-        {"SH_par", "shear so that the direction of projection becomes parallel to the $z$ axis",
+        {StageKind::TranslateVrp, "translate the view reference point to the origin", translation<T>(-spec.vrp)},
+        {StageKind::Rotate, "rotate VRC onto the world axes: $u$ to $x$, $v$ to $y$, $n$ to $z$",
+         embedLinear(basis.rotation())},
+        {StageKind::ShearParallel, "shear so that the direction of projection becomes parallel to the $z$ axis",
          shearDopToAxis(spec)},
-        {"T_par", "translate the center of the front face of the view volume to the origin",
+        {StageKind::TranslateParallel, "translate the center of the front face of the view volume to the origin",
          translation<T>(toFrontCenter)},
-        {"S_par", "scale so that the view volume becomes the canonical parallel volume",
+        {StageKind::ScaleParallel, "scale so that the view volume becomes the canonical parallel volume",
          scaling<T>(T(2) / (spec.window.umax - spec.window.umin), T(2) / (spec.window.vmax - spec.window.vmin),
                     T(1) / (spec.front - spec.back))},
     };

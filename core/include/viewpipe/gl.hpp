@@ -360,8 +360,8 @@ template <class T> Mat4<T> viewMatrix(const Camera<T>& camera)
 template <class T> std::vector<Stage<T>> lookAtStages(const LookAt<T>& look, Handedness handedness = Handedness::Right)
 {
     return {
-        {"T(-eye)", "translate the eye to the origin", translation<T>(-look.eye)},
-        {"R_eye",
+        {StageKind::TranslateEye, "translate the eye to the origin", translation<T>(-look.eye)},
+        {StageKind::RotateEye,
          handedness == Handedness::Left
              ? "rotate so that the view direction becomes $+z$ and up lies in the $yz$ plane (left-handed)"
              : "rotate so that the view direction becomes $-z$ and up lies in the $yz$ plane",
@@ -370,8 +370,10 @@ template <class T> std::vector<Stage<T>> lookAtStages(const LookAt<T>& look, Han
 }
 
 // The stage after the projection that takes OpenGL's clip coordinates to the
-// API's: "NDC_direct3d", ..., "NDC_vulkan_reversed" with reversed depth, and
-// "NDC_reversed" for OpenGL's reversed depth.
+// API's: NDC_direct3d, ..., NDC_vulkan_reversed with reversed depth, and
+// NDC_reversed for OpenGL's (whose standard depth needs no such stage).
+StageKind ndcStageKind(Api api, DepthMode depth);
+
 template <class T> Stage<T> ndcStage(Api api, DepthMode depth)
 {
     const bool reversed = depth == DepthMode::Reversed;
@@ -382,7 +384,7 @@ template <class T> Stage<T> ndcStage(Api api, DepthMode depth)
         what = "$z' = -z$, near 1, far $-1$";
     if (yDown(api))
         what += "; $y' = -y$ (or: a negative viewport height)";
-    return {"NDC_" + (api == Api::OpenGL ? std::string("reversed") : apiName(api) + (reversed ? "_reversed" : "")),
+    return {ndcStageKind(api, depth),
             "to " + apiTitle(api) + "'s clip coordinates" + (reversed ? ", reversed" : "") + ": " + what,
             ndcConversion<T>(api, depth)};
 }
@@ -398,27 +400,32 @@ template <class T> std::vector<Stage<T>> projectionStages(const ProjectionSpec<T
                 const Vec3<T> toCenter(-(p.left + p.right) / T(2), -(p.bottom + p.top) / T(2),
                                        (p.zNear + p.zFar) / T(2));
                 return {
-                    {"T_ortho", "translate the center of the view box to the origin", translation<T>(toCenter)},
-                    {"S_ortho", "scale the box to the cube $[-1, 1]^3$, flipping $z$ so that near maps to $-1$",
+                    {StageKind::TranslateOrtho, "translate the center of the view box to the origin",
+                     translation<T>(toCenter)},
+                    {StageKind::ScaleOrtho,
+                     "scale the box to the cube $[-1, 1]^3$, flipping $z$ so that near maps to $-1$",
                      scaling<T>(T(2) / (p.right - p.left), T(2) / (p.top - p.bottom), T(-2) / (p.zFar - p.zNear))},
                 };
             } else if constexpr (std::is_same_v<P, Frustum<T>>) {
                 const T shx = (p.right + p.left) / (T(2) * p.zNear);
                 const T shy = (p.top + p.bottom) / (T(2) * p.zNear);
                 return {
-                    {"SH_frustum", "shear so that the center line of the frustum becomes the $-z$ axis",
+                    {StageKind::ShearFrustum, "shear so that the center line of the frustum becomes the $-z$ axis",
                      shearXYbyZ<T>(shx, shy)},
-                    {"S_frustum", "scale $x$ and $y$ so that the sides become $x = \\pm z$, $y = \\pm z$",
+                    {StageKind::ScaleFrustum, "scale $x$ and $y$ so that the sides become $x = \\pm z$, $y = \\pm z$",
                      scaling<T>(T(2) * p.zNear / (p.right - p.left), T(2) * p.zNear / (p.top - p.bottom), T(1))},
-                    {"P_depth", "perspective matrix: $w = -z$, and near to far mapped to $-1$ to 1 after the divide",
+                    {StageKind::PerspectiveDepth,
+                     "perspective matrix: $w = -z$, and near to far mapped to $-1$ to 1 after the divide",
                      detail::perspectiveDepth(p.zNear, p.zFar)},
                 };
             } else {
                 const T f = detail::cotHalfFovy(p.fovyDegrees);
                 return {
-                    {"S_fovy", "scale $x$ and $y$ so that the field of view becomes $90^\\circ$: $x = \\pm z$, $y = \\pm z$",
+                    {StageKind::ScaleFovy,
+                     "scale $x$ and $y$ so that the field of view becomes $90^\\circ$: $x = \\pm z$, $y = \\pm z$",
                      scaling<T>(f / p.aspect, f, T(1))},
-                    {"P_depth", "perspective matrix: $w = -z$, and near to far mapped to $-1$ to 1 after the divide",
+                    {StageKind::PerspectiveDepth,
+                     "perspective matrix: $w = -z$, and near to far mapped to $-1$ to 1 after the divide",
                      detail::perspectiveDepth(p.zNear, p.zFar)},
                 };
             }
@@ -432,7 +439,7 @@ template <class T> std::vector<Stage<T>> stages(const Camera<T>& camera)
 {
     std::vector<Stage<T>> all = lookAtStages(camera.lookAt, camera.handedness);
     if (camera.handedness == Handedness::Left)
-        all.push_back({"Z_flip",
+        all.push_back({StageKind::FlipZ,
                        "mirror $z$: the left-handed eye space, looking down $+z$, becomes the right-handed one the "
                        "projection is written for",
                        handednessFlip<T>()});

@@ -76,8 +76,8 @@ std::vector<std::string> mathTextWords(const std::string& line);
 // (docs/lesson-format.md lists them; a test keeps the two alike).
 std::vector<std::string> mathSubsetCommands();
 
-// A stage symbol as math: "SH_per" -> "\mathit{SH}_{\mathrm{per}}", "T(-VRP)" -> "T(-\mathit{VRP})",
-// "NDC_direct3d" -> "\mathit{NDC}_{\mathrm{Direct3D}}", "NDC_vulkan_reversed" -> "\mathit{NDC}_{\text{Vulkan, reversed}}".
+// A stage symbol as math (stageSymbolMath of its kind): "SH_per" -> "\mathit{SH}_{\mathrm{per}}"; a symbol
+// no stage has is left as it is.
 std::string symbolMath(const std::string& symbol);
 
 } // namespace viewpipe

@@ -220,7 +220,7 @@ template <class T> PointTrace<T> tracePoint(const Pipeline<T>& pipeline, const V
     for (const Stage<T>& stage : pipeline.stages) {
         p = stage.matrix * p;
         // After a divide the trace shows the divided point; the clip coordinates stay undivided.
-        trace.afterStage.push_back(stage.divides && p.w() != T(0) ? Vec4<T>(p / p.w()) : p);
+        trace.afterStage.push_back(stage.divides() && p.w() != T(0) ? Vec4<T>(p / p.w()) : p);
     }
     trace.clip = pipeline.toClip * p;
     if (trace.clip.w() != T(0))

@@ -5,19 +5,22 @@
 
 #include "viewpipe/linalg.hpp"
 #include "viewpipe/math_text.hpp"
+#include "viewpipe/stage_kind.hpp"
 
 namespace viewpipe {
 
-// One step of a normalizing transformation: its symbol (a stable interface:
-// "T(-VRP)", "SH_per", ...), a one-line explanation for people, its matrix.
-// The divide, (x, y, z, w) -> (x/w, y/w, z/w, 1), is no matrix: such a stage
-// `divides`, and its `matrix` is the identity (the point it gives is the same
-// point of projective space: products of matrices are unchanged by it).
+// One step of a normalizing transformation: its kind (which names it), a
+// one-line explanation for people, its matrix. The divide, (x, y, z, w) ->
+// (x/w, y/w, z/w, 1), is no matrix: such a stage `divides`, and its `matrix`
+// is the identity (the point it gives is the same point of projective space:
+// products of matrices are unchanged by it).
 template <class T> struct Stage {
-    std::string symbol;
+    StageKind kind;
     std::string explanation;
     Mat4<T> matrix;
-    bool divides = false;
+
+    std::string symbol() const { return stageSymbol(kind); }
+    bool divides() const { return stageDivides(kind); }
 };
 
 // How a dividing stage is written where a matrix would be.
@@ -57,7 +60,7 @@ template <class T> std::string stageText(const std::vector<Stage<T>>& stages, st
     }
     const Stage<T>& stage = stages[k - 1];
     const std::string number = std::to_string(k) + ". ";
-    const std::string symbol = "$" + symbolMath(stage.symbol) + "$";
+    const std::string symbol = "$" + stageSymbolMath(stage.kind) + "$";
     switch (text) {
     case StageText::ListEntry: return number + symbol + " — " + stage.explanation;
     case StageText::Caption: return "After " + symbol;

@@ -8,6 +8,8 @@
 #include <string>
 #include <vector>
 
+#include "viewpipe/stage_kind.hpp"
+
 namespace viewpipe {
 
 struct SymbolicForm {
@@ -15,11 +17,11 @@ struct SymbolicForm {
     std::vector<std::string> notes;
 };
 
-// Unknown symbols give empty cells.
-SymbolicForm symbolicMatrix(const std::string& symbol);
+// Empty cells for a kind with no matrix of its own (M, the divide).
+SymbolicForm symbolicMatrix(StageKind kind);
 
 // The symbolic form as a LaTeX display: "\mathit{SH}_{\mathrm{per}} = \begin{bmatrix}...\end{bmatrix}";
-// empty for an unknown symbol.
-std::string symbolicLatex(const std::string& symbol);
+// empty where the form is.
+std::string symbolicLatex(StageKind kind);
 
 } // namespace viewpipe
