@@ -3,6 +3,7 @@
 #include "viewpipe/exact.hpp"
 
 #include <algorithm>
+#include <atomic>
 #include <cmath>
 #include <functional>
 #include <limits>
@@ -13,6 +14,7 @@
 #include "viewpipe/classical.hpp"
 #include "viewpipe/format.hpp"
 #include "viewpipe/mesh_io.hpp"
+#include "seams/evaluation_listener.hpp"
 
 namespace viewpipe {
 namespace {
@@ -842,6 +844,9 @@ std::shared_ptr<const EvaluatedScene> evaluate(const Scene& scene, MeshCache* ca
     return evaluated;
 }
 
+// The test seam's listener (seams/evaluation_listener.hpp); null: nobody listens.
+std::atomic<EvaluationListener*> listening{nullptr};
+
 } // namespace
 
 std::vector<Vec3<double>> EvaluatedScene::objectVertices() const
@@ -884,8 +889,8 @@ std::shared_ptr<const PolygonMesh> MeshCache::read(const std::filesystem::path& 
         if (found != entries_.end() && found->second.modified == modified && found->second.bytes == bytes)
             return found->second.mesh;
     }
-    if (listener_)
-        listener_->readingMesh(file);
+    if (EvaluationListener* listener = listening.load())
+        listener->readingMesh(file);
     auto mesh = std::make_shared<const PolygonMesh>(readMeshFile(file, field)); // reports a missing file
     if (!error)
         entries_[file] = {modified, bytes, mesh};
@@ -894,15 +899,19 @@ std::shared_ptr<const PolygonMesh> MeshCache::read(const std::filesystem::path& 
 
 std::shared_ptr<const EvaluatedScene> SceneEvaluator::evaluate(const Scene& scene)
 {
-    if (listener_)
-        listener_->evaluating(scene);
+    if (EvaluationListener* listener = listening.load())
+        listener->evaluating(scene);
     return viewpipe::evaluate(scene, &cache_);
 }
 
-void SceneEvaluator::setListener(EvaluationListener* listener)
+ListeningToEvaluations::ListeningToEvaluations(EvaluationListener& listener)
 {
-    listener_ = listener;
-    cache_.setListener(listener);
+    listening = &listener;
+}
+
+ListeningToEvaluations::~ListeningToEvaluations()
+{
+    listening = nullptr;
 }
 
 std::shared_ptr<const EvaluatedScene> evaluateScene(const Scene& scene)

@@ -35,8 +35,6 @@ public:
     const Pipeline<Exact>* exactPipeline() const;
     // What every picture, panel and export of the scene reads.
     const std::shared_ptr<const EvaluatedScene>& evaluated() const { return evaluated_; }
-    // Hears each evaluation and mesh file read of this document's scenes; null: nobody.
-    void setEvaluationListener(EvaluationListener* listener) { evaluator_.setListener(listener); }
     QUndoStack* undoStack() { return &undo_; }
     QString filePath() const { return filePath_; }
     bool isModified() const { return !undo_.isClean(); }

@@ -41,8 +41,6 @@ public:
     // off the GUI thread (waitShowingProgress), saying `what` is under way; by default it runs here.
     using WorkRunner = std::function<void(const QString& what, const std::function<void()>& work)>;
     void setWorkRunner(WorkRunner runner) { runWork_ = std::move(runner); }
-    // Hears of every mesh the steps' scenes read (the tests slow them down).
-    void setEvaluationListener(EvaluationListener* listener) { evaluator_.setListener(listener); }
     // A new lesson with one step.
     void create(const std::string& title, const LessonStep& first);
     void close();

@@ -238,7 +238,7 @@ TEST_F(MeshCacheTest, EachMeshFileIsReadOnceWhileItIsUnchanged)
 {
     SceneEvaluator evaluator;
     test::EvaluationCount count;
-    evaluator.setListener(&count);
+    const ListeningToEvaluations listening(count);
     const auto first = evaluator.evaluate(scene_);
     auto edited = scene_;
     std::get<foley::ViewSpec<double>>(edited.camera).back = 20;

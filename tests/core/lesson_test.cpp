@@ -590,7 +590,7 @@ TEST(Lesson, ItsStepsAreEvaluatedOnceAndRefusedByStep)
         {"scene": "house.json", "caption": "e", "hide": ["projectors"]}]})", kScenes);
     SceneEvaluator evaluator;
     test::EvaluationCount count;
-    evaluator.setListener(&count);
+    const ListeningToEvaluations listening(count);
     const EvaluatedLesson evaluated = evaluateLesson(lesson, &evaluator);
     EXPECT_EQ(count.evaluations, 2) << "the house once, the OpenGL scene once";
     EXPECT_EQ(evaluated.stepShown, (std::vector<int>{0, 0, 1, 2, 1}));

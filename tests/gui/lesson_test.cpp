@@ -295,8 +295,7 @@ private slots:
         QVERIFY(w.lessonFlow()->openLesson(file.fileName()));
         QTRY_VERIFY(settled(w));
         viewpipe::test::EvaluationCount count;
-        w.document()->setEvaluationListener(&count);
-        const auto stopCounting = qScopeGuard([&w] { w.document()->setEvaluationListener(nullptr); });
+        const viewpipe::ListeningToEvaluations listening(count);
         QTest::keyClick(&w, Qt::Key_PageDown);
         QTRY_VERIFY(settled(w));
         QVERIFY(std::holds_alternative<gl::Camera<double>>(w.document()->scene().camera));

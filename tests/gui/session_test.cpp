@@ -237,8 +237,7 @@ private slots:
         const QString scene = writeMeshScene();
         QVERIFY(!scene.isEmpty());
         viewpipe::test::EvaluationCount count;
-        w.document()->setEvaluationListener(&count);
-        const auto stopCounting = qScopeGuard([&w] { w.document()->setEvaluationListener(nullptr); });
+        const ListeningToEvaluations listening(count);
         QVERIFY(w.sceneFiles()->openScene(scene));
         QCOMPARE(w.document()->scene().objects.size(), std::size_t(2));
         const long evaluations = count.evaluations, reads = count.meshReads;
@@ -308,8 +307,7 @@ private slots:
         const std::size_t objects = w.document()->scene().objects.size();
         const int edits = w.document()->undoStack()->count();
         SlowReads slow;
-        w.document()->setEvaluationListener(&slow);
-        const auto stopListening = qScopeGuard([&w] { w.document()->setEvaluationListener(nullptr); });
+        const ListeningToEvaluations listening(slow);
         for (const bool byKey : {false, true}) {
             bool cancelled = false;
             QTimer press; // as soon as the dialog shows
@@ -546,12 +544,7 @@ private:
     // Runs `read` with `slow` listening (to the scene's reads and the lesson's), noting what the waiting dialog says meanwhile.
     static bool readSlowly(MainWindow& w, SlowReads& slow, QString& announced, const std::function<bool()>& read)
     {
-        w.document()->setEvaluationListener(&slow);
-        w.lessonFlow()->lesson()->setEvaluationListener(&slow);
-        const auto stopListening = qScopeGuard([&w] {
-            w.document()->setEvaluationListener(nullptr);
-            w.lessonFlow()->lesson()->setEvaluationListener(nullptr);
-        });
+        const ListeningToEvaluations listening(slow);
         QTimer look;
         QObject::connect(&look, &QTimer::timeout, [&] {
             if (auto* dialog = w.findChild<QProgressDialog*>("waitingProgress"); dialog && dialog->isVisible())

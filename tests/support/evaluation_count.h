@@ -1,9 +1,10 @@
 #pragma once
 
-// Counts what an evaluator does, through its listener (evaluated_scene.hpp):
-// how many scenes it evaluated and mesh files it read.
+// Counts what the evaluators do, through the test seam (evaluation_listener.hpp,
+// heard while a ListeningToEvaluations lives): how many scenes they evaluated
+// and mesh files they read.
 
-#include "viewpipe/evaluated_scene.hpp"
+#include "evaluation_listener.hpp"
 
 namespace viewpipe::test {
 

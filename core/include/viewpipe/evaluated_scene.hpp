@@ -124,23 +124,12 @@ struct EvaluatedScene {
     Eigen::AlignedBox<double, 3> objectBounds() const;
 };
 
-// Hears what an evaluator does, as it does it: the work a scene costs (a
-// mesh file read, not found in the cache) for whoever shows or counts it.
-class EvaluationListener {
-public:
-    virtual ~EvaluationListener() = default;
-    virtual void evaluating(const Scene& /*scene*/) {}
-    virtual void readingMesh(const std::filesystem::path& /*file*/) {}
-};
-
 // Mesh files read once and kept while their path, size and modification time
 // are unchanged.
 class MeshCache {
 public:
     // Throws InputError(field, reason) for a file that cannot be read.
     std::shared_ptr<const PolygonMesh> read(const std::filesystem::path& file, const std::string& field);
-    // Null: nobody listens. The listener outlives its use here.
-    void setListener(EvaluationListener* listener) { listener_ = listener; }
 
 private:
     struct Entry {
@@ -149,7 +138,6 @@ private:
         std::shared_ptr<const PolygonMesh> mesh;
     };
     std::map<std::filesystem::path, Entry> entries_;
-    EvaluationListener* listener_ = nullptr;
 };
 
 // Builds evaluated scenes, reading meshes through its cache.
@@ -157,12 +145,9 @@ class SceneEvaluator {
 public:
     // Throws InputError for a camera the core refuses or a mesh that cannot be read.
     std::shared_ptr<const EvaluatedScene> evaluate(const Scene& scene);
-    // Hears each evaluation and each mesh file read; null: nobody listens.
-    void setListener(EvaluationListener* listener);
 
 private:
     MeshCache cache_;
-    EvaluationListener* listener_ = nullptr;
 };
 
 // Each object's mesh: the built-in objects made, mesh files read (through
