@@ -419,19 +419,28 @@ std::string webStageLabels(const EvaluatedScene& scene, int stage, const Mat4<do
         .dump();
 }
 
+namespace {
+
+// A figure's line or face as the page draws it: its points in pixels, its style.
+json shapeJson(const FigureShape& s, Theme theme)
+{
+    json points = json::array();
+    for (const Vec2<double>& p : s.points)
+        points.push_back({p.x(), p.y()});
+    return {{"surface", s.surface}, {"color", color(styledColor(s.element, s.surface, theme))},
+            {"opacity", s.opacity}, {"lineWidth", s.lineWidth}, {"points", points}};
+}
+
+} // namespace
+
 std::string webStageFigure(const EvaluatedScene& scene, int stage, const Mat4<double>& camera, const WebViewOptions& o,
                            const FontMeasure& measure)
 {
     const WorldMoment moment = stageAtRest(scene, stage, stageFramings(scene, o.framing));
     const Figure figure = stageFigure(scene, moment, camera, stageLayout(scene, stage, moment, o, measure), o, measure);
     json shapes = json::array();
-    for (const FigureShape& s : figure.shapes) {
-        json points = json::array();
-        for (const Vec2<double>& p : s.points)
-            points.push_back({p.x(), p.y()});
-        shapes.push_back({{"surface", s.surface}, {"color", color(styledColor(s.element, s.surface, o.theme))},
-                          {"opacity", s.opacity}, {"lineWidth", s.lineWidth}, {"points", points}});
-    }
+    for (const FigureShape& s : figure.shapes)
+        shapes.push_back(shapeJson(s, o.theme));
     return json{{"width", figure.width}, {"height", figure.height}, {"shapes", shapes},
                 {"labels", placedLabelsJson(figure.labels, o.theme)}}
         .dump();
@@ -481,13 +490,8 @@ std::string webStoryboard(const EvaluatedScene& scene, int width, int height, co
     }
     const Figure overlay = storyboardOverlay(scene, layout, point, measure, o.lineScale);
     json arrows = json::array();
-    for (const FigureShape& s : overlay.shapes) {
-        json points = json::array();
-        for (const Vec2<double>& p : s.points)
-            points.push_back({p.x(), p.y()});
-        arrows.push_back({{"surface", s.surface}, {"color", color(styledColor(s.element, s.surface, o.theme))},
-                          {"lineWidth", s.lineWidth}, {"points", points}});
-    }
+    for (const FigureShape& s : overlay.shapes)
+        arrows.push_back(shapeJson(s, o.theme));
     json texts = json::array(); // each cell's header, then its footer
     for (const PlacedLabel& l : overlay.labels)
         texts.push_back({{"text", l.text}, {"spoken", mathSpokenText(l.text)}, {"box", boxJson(l.box)}, {"minor", l.minor},
