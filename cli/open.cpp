@@ -59,7 +59,7 @@ void addOpenCommand(CLI::App& app, int argc, char** argv)
     command->add_flag("--present", open.present, "Full screen, as View > Present (F5)");
     command->add_option("--layout", open.layout,
                         "stages: the world view beside what the camera sees;\n"
-                        "storyboard: every stage at once, as View > Storyboard (B)")
+                        "storyboard: every stage at once, as View > Storyboard (S)")
         ->check(CLI::IsMember({"stages", "storyboard"}))
         ->capture_default_str();
     setRun(command, [options, argc, argv] { return runOpen(argc, argv, *options); });

@@ -128,10 +128,9 @@ std::string integerText(const BigInt& n)
     return n.str();
 }
 
-// The terms in order, the rational part first, each written by
-// term(p, radicand, q) for its coefficient's size p/q, with the signs between.
-// The terms as a sum, a positive one first where there is one, as a textbook writes it: sqrt(2) - 1,
-// 48*sqrt(2)/5 - 64/5 (a positive value read as -64/5 + ... looked negative at a glance).
+// The terms as a sum, each written by term(p, radicand, q) for its coefficient's size p/q, with the
+// signs between: in order, the rational part first, except that a positive term leads where there is
+// one, as a textbook writes it: sqrt(2) - 1, 48*sqrt(2)/5 - 64/5 (-64/5 + ... looked negative).
 template <class F> std::string joinTerms(const Terms& terms, F&& term)
 {
     std::vector<std::pair<BigInt, Rational>> ordered(terms.begin(), terms.end());

@@ -18,6 +18,7 @@
 #include "LessonDocument.h"
 #include "LessonPanel.h"
 #include "MainWindow.h"
+#include "StoryboardView.h"
 #include "PresentMode.h"
 #include "Stepper.h"
 #include "Waiting.h"
@@ -201,12 +202,15 @@ void LessonFlow::showLessonStep()
             window_->showPanel(QString::fromStdString(step.panel));
         painter->resetView();
         painter->orbit(step.yaw, step.pitch, step.zoom);
+        window_->storyboard()->orbit(step.yaw, step.pitch, step.zoom);
         stepper->goToStage(stepper->stage(), false);
     }
     const bool revealed = !step.question || lesson_->isRevealed(k);
     // A storyboard step shows every stage once its question is answered (the storyboard would answer it).
-    if (step.storyboard ? revealed : newStep)
+    // On the step's arrival and its answer's, not on each edit of it (the user's S stays).
+    if (newStep || (revealed && !shownRevealed_))
         window_->setStoryboardShown(step.storyboard && revealed);
+    shownRevealed_ = revealed;
     window_->traceVertex(tracedAt(step, revealed)); // the point asked about, followed through the stages once answered
     const int stage = revealed ? revealedStage(step) : askingStage(step);
     // The answer comes with the transition to the stage asked about; a step to the next stage plays it too.
@@ -227,7 +231,8 @@ LessonStep LessonFlow::stepFromView() const
                           : std::filesystem::path(QFileInfo(document->filePath()).absoluteFilePath().toStdString());
     const int stage = window_->stepper()->target();
     step.stage = stage;
-    const ScenePainter::Orbit orbit = window_->painter()->orbitAngles();
+    const ScenePainter::Orbit orbit =
+        window_->storyboardShown() ? window_->storyboard()->orbitAngles() : window_->painter()->orbitAngles();
     // Readable numbers in the file: a tenth of a degree, a thousandth of the zoom.
     step.yaw = std::clamp(std::round(orbit.yaw * 10) / 10, -180.0, 180.0);
     step.pitch = std::clamp(std::round(orbit.pitch * 10) / 10, -89.0, 89.0);

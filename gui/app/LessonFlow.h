@@ -73,6 +73,7 @@ private:
     LessonDocument* lesson_;
     LessonPanel* panel_;
     int shownStep_ = -1;       // the step whose view is set up
+    bool shownRevealed_ = false; // whether its answer was shown when it was last shown
     int shownGeneration_ = -1; // of the lesson it was in
     int shownOpening_ = -1;    // the lesson it was in (LessonDocument::openings)
     Scene shownStepScene_;     // its scene as the lesson had it

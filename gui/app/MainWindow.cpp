@@ -405,6 +405,7 @@ void MainWindow::setHidden(const std::set<std::string>& hidden)
     for (const std::string& name : hideNames())
         actions_->action("view.hide." + name)->setChecked(hidden_.count(name) > 0);
     painter_->setTicksAndNotesShown(!hidden_.count("ticks"), !hidden_.count("notes"));
+    storyboard_->setTicksShown(!hidden_.count("ticks"));
     if (drawn_)
         drawScene(drawn_);
     stepper_->restart(); // the stage shown again, at rest, on the new props
@@ -563,6 +564,8 @@ void MainWindow::setStoryboardShown(bool shown)
     actions_->action("view.storyboard")->setChecked(shown);
     if (shown == storyboardShown())
         return;
+    if (shown && !drawn_)
+        shown = false; // no scene yet
     if (shown) {
         storyboard_->setScene(withoutHidden(drawn_, hidden_));
         storyboard_->setTraced(traced_);

@@ -81,7 +81,10 @@ void StoryboardView::buildCells()
         cell->painter->setTheme(theme_);
         auto style = vtkSmartPointer<ClickStyle>::New();
         style->onClick = [this, painter = cell->painter.get()](int x, int y) { emit vertexPicked(painter->pickVertex(x, y)); };
-        style->onCameraMoved = [this, k] { turnAllAs(k); };
+        style->onCameraMoved = [this, k] {
+            cells_[std::size_t(k)]->painter->rememberUserCamera(); // its zoom and pan too, before the others follow
+            turnAllAs(k);
+        };
         cell->window->GetInteractor()->SetInteractorStyle(style);
         cell->widget->show();
         cells_.push_back(std::move(cell));
@@ -107,7 +110,7 @@ void StoryboardView::layOut()
         cell.widget->setGeometry(int(box.min.x()), int(box.min.y()), int(box.max.x() - box.min.x()),
                                  int(box.max.y() - box.min.y()));
         cell.widget->show();
-        styleStoryboardCell(*cell.painter, labelSize(), true, traced());
+        styleStoryboardCell(*cell.painter, labelSize(), ticksShown_, traced());
         cell.painter->showMoment(stageAtRest(*cellScene_, cell.stage, framings_));
     }
     renderNow();
@@ -127,11 +130,11 @@ void StoryboardView::renderNow()
 void StoryboardView::turnAllAs(int k)
 {
     const ScenePainter& moved = *cells_[std::size_t(k)]->painter;
-    const ScenePainter::Orbit orbit = moved.orbitAngles();
+    const ScenePainter::Orbit turned = moved.orbitAngles();
     for (auto& cell : cells_)
         if (cell->painter.get() != &moved) {
             cell->painter->resetView();
-            cell->painter->orbit(orbit.yaw, orbit.pitch, orbit.zoom);
+            cell->painter->orbit(turned.yaw, turned.pitch, turned.zoom);
         }
     renderNow();
 }
@@ -141,6 +144,26 @@ void StoryboardView::resetView()
     for (auto& cell : cells_)
         cell->painter->resetView();
     renderNow();
+}
+
+void StoryboardView::orbit(double yaw, double pitch, double zoom)
+{
+    for (auto& cell : cells_) {
+        cell->painter->resetView();
+        cell->painter->orbit(yaw, pitch, zoom);
+    }
+    renderNow();
+}
+
+ScenePainter::Orbit StoryboardView::orbitAngles() const
+{
+    return cells_.empty() ? ScenePainter::Orbit{} : cells_.front()->painter->orbitAngles();
+}
+
+void StoryboardView::setTicksShown(bool shown)
+{
+    ticksShown_ = shown;
+    layOut();
 }
 
 void StoryboardView::setTraced(const std::optional<Vec3<double>>& point)

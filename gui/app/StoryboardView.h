@@ -39,6 +39,12 @@ public:
     void setTextScale(double scale);
     // Every cell framed as at first, turned as at first.
     void resetView();
+    // Every cell turned and zoomed as ScenePainter::orbit turns a view from its first viewpoint.
+    void orbit(double yaw, double pitch, double zoom);
+    // The cells' turn (each cell's is the same).
+    ScenePainter::Orbit orbitAngles() const;
+    // Whether the cells draw the fixed axes' ticks and numbers (View > Leave Out > ticks).
+    void setTicksShown(bool shown);
     void renderNow();
 
     int cellCount() const { return int(cells_.size()); }
@@ -77,6 +83,7 @@ private:
     std::optional<Vec3<double>> traced_;
     Theme theme_ = Theme::Dark;
     double textScale_ = 1;
+    bool ticksShown_ = true;
     int currentStage_ = -1;
 };
 

@@ -4,6 +4,8 @@
 
 #include <QFile>
 #include <QLineEdit>
+#include <QRegularExpression>
+#include <QWheelEvent>
 #include <QTemporaryDir>
 #include <QStackedWidget>
 #include <QVTKOpenGLNativeWidget.h>
@@ -20,6 +22,7 @@
 #include <vtkRendererCollection.h>
 
 #include "app_window.h"
+#include "drawn_texts.h"
 #include "app/ParameterPanel.h"
 #include "app/StoryboardView.h"
 #include "viewpipe/report/world_view.hpp"
@@ -173,6 +176,52 @@ private slots:
             QVERIFY2(std::abs(orbit.yaw) < 1e-6 && std::abs(orbit.pitch) < 1e-6,
                      qPrintable(QString("stage %1: yaw %2, pitch %3").arg(k).arg(orbit.yaw).arg(orbit.pitch)));
         }
+    }
+
+    // A wheel zoom in one cell zooms them all, and the zoomed cell keeps it when the cells are laid
+    // out again (a click tracing a vertex): a first version forgot it there.
+    void zoomingOneCellZoomsAll()
+    {
+        MainWindow& w = *window_;
+        w.setStoryboardShown(true);
+        StoryboardView& board = *w.storyboard();
+        QTRY_VERIFY(board.cellWidget(2)->isVisible());
+        w.renderNow();
+        QWidget* cell = board.cellWidget(2);
+        const QPoint at = cell->rect().center();
+        for (int notch = 0; notch < 3; ++notch) {
+            QWheelEvent wheel(at, cell->mapToGlobal(at), QPoint(), QPoint(0, 120), Qt::NoButton, Qt::NoModifier,
+                              Qt::NoScrollPhase, false);
+            QApplication::sendEvent(cell, &wheel);
+        }
+        const double zoom = board.cellPainter(2).orbitAngles().zoom;
+        QVERIFY2(std::abs(zoom - 1) > 0.05, qPrintable(QString("zoom %1").arg(zoom)));
+        for (int k = 0; k < board.cellCount(); ++k)
+            QVERIFY2(std::abs(board.cellPainter(k).orbitAngles().zoom - zoom) < 1e-9, qPrintable(QString("stage %1").arg(k)));
+        board.setTraced(Vec3<double>(16, 10, 30));
+        QVERIFY2(std::abs(board.cellPainter(2).orbitAngles().zoom - zoom) < 1e-9,
+                 qPrintable(QString("zoom %1 after laying out").arg(board.cellPainter(2).orbitAngles().zoom)));
+    }
+
+    // View > Leave Out > ticks leaves the fixed axes' numbers out of every cell, as export --hide ticks does.
+    void theCellsLeaveOutTicksAsTheViewsDo()
+    {
+        MainWindow& w = *window_;
+        w.setStoryboardShown(true);
+        StoryboardView& board = *w.storyboard();
+        QTRY_VERIFY(board.cellWidget(3)->isVisible());
+        auto tickNumbers = [&] {
+            w.renderNow();
+            int numbers = 0;
+            for (const DrawnText& text : drawnTexts(board.cellWidget(3)->renderWindow()->GetRenderers()->GetFirstRenderer()).texts)
+                numbers += QRegularExpression(R"(^\$-?[0-9.]+\$$)").match(QString::fromStdString(text.text)).hasMatch();
+            return numbers;
+        };
+        QVERIFY(tickNumbers() > 2);
+        w.actions()->action("view.hide.ticks")->trigger();
+        QCOMPARE(tickNumbers(), 0);
+        w.actions()->action("view.hide.ticks")->trigger();
+        QVERIFY(tickNumbers() > 2);
     }
 
     // An edit redraws every cell.
