@@ -25,7 +25,7 @@ const nativeMs = JSON.parse(native.stdout).benchmarks.find((b) => b.aggregate_na
 const ViewPipeCore = createRequire(import.meta.url)(join(build, 'web/viewpipe-core.js'));
 const core = await ViewPipeCore();
 const sceneText = readFileSync(house, 'utf8');
-const options = JSON.stringify({ width: 1280, height: 720, fontSize: 20, minFontSize: 20, lineScale: 1, fixedFraming: false, dark: false });
+const options = JSON.stringify({ width: 1280, height: 720, fontSize: 20, minFontSize: 20, lineScale: 1, framing: 'together', dark: false });
 const fixedWidth = (runs, px) => [0.6 * px * runs.reduce((n, run) => n + new TextEncoder().encode(run[0]).length, 0), px];
 const wasm = [];
 for (let k = 0; k < 23; ++k) {
