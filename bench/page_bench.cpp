@@ -1,6 +1,6 @@
 // What the web page asks of the core on every edit, natively: the house read,
-// evaluated, its JSON view (pipeline --json) and its page data (each stage's
-// framing, transitions and placed labels) made. bench/page_bench.mjs runs the
+// evaluated, its JSON view (pipeline --json) and its page data made (each
+// stage's framing and text, the labels of the stage shown: the first). bench/page_bench.mjs runs the
 // same in WebAssembly and in Chromium and prints the ratios; run it rather
 // than this alone:
 //   xvfb-run -a node --experimental-websocket bench/page_bench.mjs build
@@ -42,13 +42,14 @@ void nativeEvaluate(benchmark::State& state)
     for (auto _ : state) {
         const auto evaluated = evaluateScene(parseScene(text, std::string(viewpipe::build::dataDir) + "/scenes"));
         const std::string pipeline = report::pipelineJson(evaluated->scene, report::PrecisionChoice{}, evaluated->outcomes).dump();
-        const std::string page = webPageData(*evaluated, webPageViews(*evaluated, options, fixedWidth));
+        const std::string page = webPageData(*evaluated, webPageViews(*evaluated, options, fixedWidth, {}, 0));
         benchmark::DoNotOptimize(pipeline.size() + page.size());
     }
 }
 BENCHMARK(nativeEvaluate)->Name("PageEvaluate/native/house")->Unit(benchmark::kMillisecond);
 
-// Its parts: the scene read and evaluated alone (what every view needs), and the page's views of every stage.
+// Its parts: the scene read and evaluated alone (what every view needs), and the page's views of every stage
+// with their labels and steps (what the export writes).
 void nativeSceneOnly(benchmark::State& state)
 {
     const std::string text = houseText();

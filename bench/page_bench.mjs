@@ -30,7 +30,7 @@ const fixedWidth = (runs, px) => [0.6 * px * runs.reduce((n, run) => n + new Tex
 const wasm = [];
 for (let k = 0; k < 23; ++k) {
   const start = performance.now();
-  const outcome = core.evaluate(sceneText, options, fixedWidth);
+  const outcome = core.evaluate(sceneText, options, fixedWidth, 0);
   if (outcome.error) throw new Error(outcome.error);
   if (k >= 3) wasm.push(performance.now() - start);
 }

@@ -130,13 +130,36 @@ std::shared_ptr<const EvaluatedScene> evaluatedOnce(const std::string& sceneText
     return evaluated;
 }
 
-// A scene's JSON as the page shows it, with the page's `options` (viewOptions).
-Evaluation evaluate(const std::string& sceneText, const std::string& options, const emscripten::val& measure)
+// A scene's JSON as the page shows it, with the page's `options` (viewOptions): the labels of `stage` only
+// and no step's frames, which the page asks for when it shows them (restLabels, transition).
+Evaluation evaluate(const std::string& sceneText, const std::string& options, const emscripten::val& measure, int stage)
 {
     return guarded<Evaluation>([&] {
         const auto evaluated = evaluatedOnce(sceneText, true);
-        const WebPageViews views = webPageViews(*evaluated, viewOptions(options), pageMeasure(measure));
+        const WebPageViews views = webPageViews(*evaluated, viewOptions(options), pageMeasure(measure), {}, stage);
         return Evaluation{webPageData(*evaluated, views), pipelineText(*evaluated), ""};
+    });
+}
+
+// Stage k's labels at rest, as evaluate would have placed them.
+Outcome restLabels(const std::string& sceneText, const std::string& options, int stage, const emscripten::val& measure)
+{
+    return guarded([&] {
+        const auto evaluated = evaluatedOnce(sceneText, false);
+        if (stage < 0 || stage > int(evaluated->pipeline.stages.size()))
+            throw std::invalid_argument("restLabels: no stage " + std::to_string(stage));
+        return Outcome{webRestLabels(*evaluated, stage, viewOptions(options), pageMeasure(measure)), ""};
+    });
+}
+
+// The step from stage `from` to the next, frame by frame, as evaluate would have made it.
+Outcome transition(const std::string& sceneText, const std::string& options, int from, const emscripten::val& measure)
+{
+    return guarded([&] {
+        const auto evaluated = evaluatedOnce(sceneText, false);
+        if (from < 0 || from >= int(evaluated->pipeline.stages.size()))
+            throw std::invalid_argument("transition: no step from stage " + std::to_string(from));
+        return Outcome{webTransition(*evaluated, from, viewOptions(options), pageMeasure(measure)), ""};
     });
 }
 
@@ -420,6 +443,8 @@ EMSCRIPTEN_BINDINGS(viewpipe)
     emscripten::function("putFile", &putFile);
     emscripten::function("pipelineJson", &pipelineJson);
     emscripten::function("evaluate", &evaluate);
+    emscripten::function("restLabels", &restLabels);
+    emscripten::function("transition", &transition);
     emscripten::function("placeLabels", &placeLabels);
     emscripten::function("stageFigure", &stageFigure);
     emscripten::function("storyboard", &storyboard);

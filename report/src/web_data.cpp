@@ -215,7 +215,6 @@ json sceneData(const EvaluatedScene& scene, const WebPageViews& views)
     json stageList = json::array();
     for (std::size_t k = 0; k < views.stages.size(); ++k) {
         const WebStage& s = views.stages[k];
-        const json labels = placedLabelsJson(s.labels, theme);
         const FrameMarks marks = frameMarks(s.frameExtent);
         const std::string list = stageText(stages, k, StageText::ListEntry);
         const std::string claim = k < scene.stageClaims.size() ? scene.stageClaims[k] : "";
@@ -225,8 +224,9 @@ json sceneData(const EvaluatedScene& scene, const WebPageViews& views)
                       {"claim", claim},
                       {"claimText", mathSpokenText(claim)},
                       {"rest", frameJson(s.rest)},
-                      {"labels", labels},
                       {"frame", floats(marks.lines)}};
+        if (s.placed) // else the page asks for them when it shows the stage (webRestLabels)
+            entry["labels"] = placedLabelsJson(s.labels, theme);
         if (s.ghost)
             entry["ghost"] = matrix(*s.ghost);
         entry["layout"] = layoutJson(s.layout, views.options.height);
@@ -246,6 +246,10 @@ json sceneData(const EvaluatedScene& scene, const WebPageViews& views)
     }
     json transitions = json::array();
     for (const std::vector<WebFrame>& frames : views.transitions) {
+        if (frames.empty()) { // asked for when stepped (webTransition)
+            transitions.push_back(nullptr);
+            continue;
+        }
         json list = json::array();
         for (const WebFrame& f : frames)
             list.push_back(frameJson(f));
@@ -352,61 +356,113 @@ json questionData(const Question& q)
     return out;
 }
 
-WebPageViews webPageViews(const EvaluatedScene& scene, const WebViewOptions& o, const FontMeasure& measure,
-                          const std::function<void(int)>& onStage)
-{
-    const std::vector<Stage<double>>& stages = scene.pipeline.stages;
-    const int n = int(stages.size());
-    WebPageViews views;
-    views.options = o;
-    const StageFramings framings = stageFramings(scene, o.framing);
-    WorldCamera camera; // from the default viewpoint, as every export is seen
-    ViewFit fit{o.width, o.height, {}, 1, Vec3<double>::Zero()};
-    auto frameOf = [&](const WorldMoment& moment) {
-        frameOn(camera, moment.framing, fit);
+namespace {
+
+// The page's views of one scene, each part made when first asked: each
+// stage's moment at rest and text laid out (a step's camera moves from the
+// scene area the last stage's text leaves to the one the next stage's
+// leaves, so that its last frame is the stage at rest).
+class PageViewMaker {
+public:
+    PageViewMaker(const EvaluatedScene& scene, const WebViewOptions& o, const FontMeasure& measure)
+        : scene_(scene), o_(o), measure_(measure), framings_(stageFramings(scene, o.framing)),
+          moments_(scene.pipeline.stages.size() + 1), layouts_(moments_.size())
+    {
+    }
+
+    const WorldMoment& moment(int k)
+    {
+        std::optional<WorldMoment>& m = moments_.at(std::size_t(k));
+        if (!m)
+            m = stageAtRest(scene_, k, framings_);
+        return *m;
+    }
+    const PictureLayout& layout(int k)
+    {
+        std::optional<PictureLayout>& l = layouts_.at(std::size_t(k));
+        if (!l)
+            l = stageLayout(scene_, k, moment(k), o_, measure_);
+        return *l;
+    }
+
+    // Stage k at rest; its labels placed where `labels` (else left for the page to ask: webRestLabels).
+    WebStage stage(int k, bool labels)
+    {
+        const WorldMoment& m = moment(k);
+        const WebFrame rest = frameOf(m, layout(k).scene);
+        WebStage out{rest, m.ghost, frameExtent(m.framing), {}, layout(k), labels};
+        if (labels)
+            out.labels = stageFigure(scene_, m, rest.projection * rest.view, out.layout, o_, measure_).labels;
+        return out;
+    }
+
+    // The app's transition from stage k to k + 1, frame by frame.
+    std::vector<WebFrame> transition(int k)
+    {
+        const StageMotion motion(scene_, k, k + 1, framings_);
+        const Box2 before = layout(k).scene, after = layout(k + 1).scene;
+        std::vector<WebFrame> frames;
+        for (int f = 1; f <= kWebFramesPerStep; ++f) {
+            const double s = double(f) / kWebFramesPerStep, u = smoothStep(s);
+            frames.push_back(frameOf(motion.at(s), {before.min + u * (after.min - before.min), before.max + u * (after.max - before.max)}));
+        }
+        return frames;
+    }
+
+private:
+    // A moment framed in `sceneArea` from the default viewpoint, as every export is seen.
+    WebFrame frameOf(const WorldMoment& moment, const Box2& sceneArea) const
+    {
+        WorldCamera camera;
+        frameOn(camera, moment.framing, ViewFit{o_.width, o_.height, sceneArea, 1, Vec3<double>::Zero()});
         WebFrame frame;
         frame.view = camera.view();
-        frame.projection = camera.projection(double(o.width) / o.height);
+        frame.projection = camera.projection(double(o_.width) / o_.height);
         frame.focalPoint = camera.focalPoint;
         frame.shown = moment.drawn;
         frame.canonicalOpacity = moment.canonicalOpacity;
-        frame.cut = stageShown(scene, moment).cut;
+        frame.cut = stageShown(scene_, moment).cut;
         return frame;
-    };
-    // Each stage's text first: a step's camera moves from the scene area the
-    // last stage's text leaves to the one the next stage's leaves, so that its
-    // last frame is the stage at rest.
-    std::vector<WorldMoment> moments;
-    std::vector<PictureLayout> layouts;
-    std::vector<Box2> sceneAreas; // kept apart: each layout is moved into its stage
-    for (int k = 0; k <= n; ++k) {
-        moments.push_back(stageAtRest(scene, k, framings));
-        layouts.push_back(stageLayout(scene, k, moments.back(), o, measure));
-        sceneAreas.push_back(layouts.back().scene);
     }
+
+    const EvaluatedScene& scene_;
+    const WebViewOptions& o_;
+    const FontMeasure& measure_;
+    const StageFramings framings_;
+    std::vector<std::optional<WorldMoment>> moments_;
+    std::vector<std::optional<PictureLayout>> layouts_;
+};
+
+} // namespace
+
+WebPageViews webPageViews(const EvaluatedScene& scene, const WebViewOptions& o, const FontMeasure& measure,
+                          const std::function<void(int)>& onStage, std::optional<int> labelled)
+{
+    const int n = int(scene.pipeline.stages.size());
+    PageViewMaker maker(scene, o, measure);
+    WebPageViews views;
+    views.options = o;
     for (int k = 0; k <= n; ++k) {
         if (onStage)
             onStage(k);
-        if (k > 0) { // the app's transition, frame by frame
-            const StageMotion motion(scene, k - 1, k, framings);
-            const Box2 before = sceneAreas[std::size_t(k - 1)], after = sceneAreas[std::size_t(k)];
-            std::vector<WebFrame> frames;
-            for (int f = 1; f <= kWebFramesPerStep; ++f) {
-                const double s = double(f) / kWebFramesPerStep, u = smoothStep(s);
-                fit.sceneArea = {before.min + u * (after.min - before.min), before.max + u * (after.max - before.max)};
-                frames.push_back(frameOf(motion.at(s)));
-            }
-            views.transitions.push_back(std::move(frames));
-        }
-        const WorldMoment& moment = moments[std::size_t(k)];
-        PictureLayout& layout = layouts[std::size_t(k)];
-        fit.sceneArea = layout.scene;
-        const WebFrame rest = frameOf(moment);
-        std::vector<PlacedLabel> labels =
-            stageFigure(scene, moment, rest.projection * rest.view, layout, o, measure).labels;
-        views.stages.push_back({rest, moment.ghost, frameExtent(moment.framing), std::move(labels), std::move(layout)});
+        if (k > 0)
+            views.transitions.push_back(labelled ? std::vector<WebFrame>{} : maker.transition(k - 1));
+        views.stages.push_back(maker.stage(k, !labelled || *labelled == k));
     }
     return views;
+}
+
+std::string webRestLabels(const EvaluatedScene& scene, int stage, const WebViewOptions& o, const FontMeasure& measure)
+{
+    return placedLabelsJson(PageViewMaker(scene, o, measure).stage(stage, true).labels, o.theme).dump();
+}
+
+std::string webTransition(const EvaluatedScene& scene, int from, const WebViewOptions& o, const FontMeasure& measure)
+{
+    json frames = json::array();
+    for (const WebFrame& f : PageViewMaker(scene, o, measure).transition(from))
+        frames.push_back(frameJson(f));
+    return frames.dump();
 }
 
 std::string webStageLabels(const EvaluatedScene& scene, int stage, const Mat4<double>& camera, const WebViewOptions& o,

@@ -8,7 +8,7 @@
     const { frame, atRest, ghost } = shown;
     drawView({ renderer: world, overlay: worldOverlay, size, picture: data, fonts: data, frame, atRest, ghost,
                stage: state.stage, traced: state.traced,
-               labels: !atRest ? null : userMoved() ? labelsTurned() : stages[state.stage].labels });
+               labels: !atRest ? null : userMoved() ? labelsTurned() : restLabels(state.stage) });
   }
 
   // One picture of the world: `frame` drawn by `renderer` at `size` (the picture `picture` was framed for,

@@ -12,13 +12,13 @@
     state.stage = k;
     showPanels();
     writeFragment();
-    if (!animate || Math.abs(k - from) !== 1 || storyboardShown()) { // the storyboard has no world view to move
+    // The app's transition, frame by frame; stepping back plays it backwards.
+    const frames = animate && Math.abs(k - from) === 1 && !storyboardShown() ? transitionFrames(Math.min(from, k)) : null;
+    if (!frames) { // no step, or the storyboard (no world view to move)
       showRest(k);
       body.dataset.moving = '';
       return;
     }
-    // The app's transition, frame by frame; stepping back plays it backwards.
-    const frames = data.transitions[Math.min(from, k)];
     const backwards = k < from;
     const start = performance.now();
     body.dataset.moving = '1';

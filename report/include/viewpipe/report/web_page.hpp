@@ -40,6 +40,7 @@ struct WebStage {
     Eigen::AlignedBox<double, 3> frameExtent;
     std::vector<PlacedLabel> labels;
     PictureLayout layout; // where the caption, legend and note go, as in the PNG
+    bool placed = true;   // labels placed; else left for the page to ask for (webRestLabels)
 };
 
 // What the page's views are made for: the picture's size in pixels, its
@@ -55,7 +56,8 @@ struct WebViewOptions {
 struct WebPageViews {
     WebViewOptions options;
     std::vector<WebStage> stages;                   // 0 (the world) to the number of stages
-    std::vector<std::vector<WebFrame>> transitions; // k: from stage k to k + 1, evenly in time, the last at rest
+    std::vector<std::vector<WebFrame>> transitions; // k: from stage k to k + 1, evenly in time, the last at rest;
+                                                    // empty: left for the page to ask for (webTransition)
 };
 
 // The libraries, read from Debian's packages, KaTeX's fonts inlined into its
@@ -78,9 +80,15 @@ WebAssets loadWebAssets(const std::filesystem::path& javascript = "/usr/share/ja
 // framed as the app frames them (world_view.hpp), from the default viewpoint;
 // labels placed by the figures' placement, text measured by `measure` (in
 // the font the page sets it in). `onStage(k)` is called before stage k is
-// made, for progress and cancelling.
+// made, for progress and cancelling. With `labelled`, what the page asks
+// for on an edit: only that stage's labels placed and no step's frames, the
+// rest asked for when shown (webRestLabels, webTransition), the same.
 WebPageViews webPageViews(const EvaluatedScene& scene, const WebViewOptions& options, const FontMeasure& measure,
-                          const std::function<void(int)>& onStage = {});
+                          const std::function<void(int)>& onStage = {}, std::optional<int> labelled = {});
+// Stage k's labels at rest as webPageViews places them, as JSON (as webPageData writes a stage's labels).
+std::string webRestLabels(const EvaluatedScene& scene, int stage, const WebViewOptions& options, const FontMeasure& measure);
+// The step from stage `from` to the next as webPageViews makes it, as JSON (as webPageData writes a transition).
+std::string webTransition(const EvaluatedScene& scene, int from, const WebViewOptions& options, const FontMeasure& measure);
 
 // Stage k's labels as webPageViews places them (the figures' placement,
 // around the stage's caption and legend), but seen through `camera` (stage
