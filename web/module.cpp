@@ -130,8 +130,8 @@ std::shared_ptr<const EvaluatedScene> evaluatedOnce(const std::string& sceneText
     return evaluated;
 }
 
-// A scene's JSON as the page shows it, with the page's `options` (viewOptions): the labels of `stage` only
-// and no step's frames, which the page asks for when it shows them (restLabels, transition).
+// A scene's JSON as the page shows it, with the page's `options` (viewOptions): `stage` made at rest, the
+// others and the steps' frames left for the page to ask for when it shows them (stageView, transition).
 Evaluation evaluate(const std::string& sceneText, const std::string& options, const emscripten::val& measure, int stage)
 {
     return guarded<Evaluation>([&] {
@@ -141,14 +141,14 @@ Evaluation evaluate(const std::string& sceneText, const std::string& options, co
     });
 }
 
-// Stage k's labels at rest, as evaluate would have placed them.
-Outcome restLabels(const std::string& sceneText, const std::string& options, int stage, const emscripten::val& measure)
+// Stage k at rest (its frame, ghost, layout and labels), as evaluate would have made it.
+Outcome stageView(const std::string& sceneText, const std::string& options, int stage, const emscripten::val& measure)
 {
     return guarded([&] {
         const auto evaluated = evaluatedOnce(sceneText, false);
         if (stage < 0 || stage > int(evaluated->pipeline.stages.size()))
-            throw std::invalid_argument("restLabels: no stage " + std::to_string(stage));
-        return Outcome{webRestLabels(*evaluated, stage, viewOptions(options), pageMeasure(measure)), ""};
+            throw std::invalid_argument("stageView: no stage " + std::to_string(stage));
+        return Outcome{webStageView(*evaluated, stage, viewOptions(options), pageMeasure(measure)), ""};
     });
 }
 
@@ -443,7 +443,7 @@ EMSCRIPTEN_BINDINGS(viewpipe)
     emscripten::function("putFile", &putFile);
     emscripten::function("pipelineJson", &pipelineJson);
     emscripten::function("evaluate", &evaluate);
-    emscripten::function("restLabels", &restLabels);
+    emscripten::function("stageView", &stageView);
     emscripten::function("transition", &transition);
     emscripten::function("placeLabels", &placeLabels);
     emscripten::function("stageFigure", &stageFigure);

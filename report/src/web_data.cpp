@@ -176,6 +176,15 @@ json layoutJson(const PictureLayout& layout, int height)
     return out;
 }
 
+// A stage at rest as the page draws it: its frame, ghost, text and labels.
+json stageViewJson(const WebStage& s, const WebViewOptions& o)
+{
+    json out = {{"rest", frameJson(s.rest)}, {"labels", placedLabelsJson(s.labels, o.theme)}, {"layout", layoutJson(s.layout, o.height)}};
+    if (s.ghost)
+        out["ghost"] = matrix(*s.ghost);
+    return out;
+}
+
 } // namespace
 
 std::string base64(const void* data, std::size_t size)
@@ -223,13 +232,9 @@ json sceneData(const EvaluatedScene& scene, const WebPageViews& views)
                       {"caption", stageCaption(scene, k, StageText::Caption)},
                       {"claim", claim},
                       {"claimText", mathSpokenText(claim)},
-                      {"rest", frameJson(s.rest)},
                       {"frame", floats(marks.lines)}};
-        if (s.placed) // else the page asks for them when it shows the stage (webRestLabels)
-            entry["labels"] = placedLabelsJson(s.labels, theme);
-        if (s.ghost)
-            entry["ghost"] = matrix(*s.ghost);
-        entry["layout"] = layoutJson(s.layout, views.options.height);
+        if (s.made) // else the page asks for it when it shows the stage (webStageView)
+            entry.update(stageViewJson(s, options));
         if (k > 0) {
             const Stage<double>& stage = stages[k - 1];
             entry["symbol"] = stage.symbol();
@@ -385,14 +390,15 @@ public:
         return *l;
     }
 
-    // Stage k at rest; its labels placed where `labels` (else left for the page to ask: webRestLabels).
-    WebStage stage(int k, bool labels)
+    // Stage k at rest; where not `made`, its frame extent only (the page asks for the rest: webStageView).
+    WebStage stage(int k, bool made)
     {
         const WorldMoment& m = moment(k);
+        if (!made)
+            return {{}, {}, frameExtent(m.framing), {}, {}, false};
         const WebFrame rest = frameOf(m, layout(k).scene);
-        WebStage out{rest, m.ghost, frameExtent(m.framing), {}, layout(k), labels};
-        if (labels)
-            out.labels = stageFigure(scene_, m, rest.projection * rest.view, out.layout, o_, measure_).labels;
+        WebStage out{rest, m.ghost, frameExtent(m.framing), {}, layout(k), true};
+        out.labels = stageFigure(scene_, m, rest.projection * rest.view, out.layout, o_, measure_).labels;
         return out;
     }
 
@@ -436,7 +442,7 @@ private:
 } // namespace
 
 WebPageViews webPageViews(const EvaluatedScene& scene, const WebViewOptions& o, const FontMeasure& measure,
-                          const std::function<void(int)>& onStage, std::optional<int> labelled)
+                          const std::function<void(int)>& onStage, std::optional<int> shown)
 {
     const int n = int(scene.pipeline.stages.size());
     PageViewMaker maker(scene, o, measure);
@@ -446,15 +452,15 @@ WebPageViews webPageViews(const EvaluatedScene& scene, const WebViewOptions& o, 
         if (onStage)
             onStage(k);
         if (k > 0)
-            views.transitions.push_back(labelled ? std::vector<WebFrame>{} : maker.transition(k - 1));
-        views.stages.push_back(maker.stage(k, !labelled || *labelled == k));
+            views.transitions.push_back(shown ? std::vector<WebFrame>{} : maker.transition(k - 1));
+        views.stages.push_back(maker.stage(k, !shown || *shown == k));
     }
     return views;
 }
 
-std::string webRestLabels(const EvaluatedScene& scene, int stage, const WebViewOptions& o, const FontMeasure& measure)
+std::string webStageView(const EvaluatedScene& scene, int stage, const WebViewOptions& o, const FontMeasure& measure)
 {
-    return placedLabelsJson(PageViewMaker(scene, o, measure).stage(stage, true).labels, o.theme).dump();
+    return stageViewJson(PageViewMaker(scene, o, measure).stage(stage, true), o).dump();
 }
 
 std::string webTransition(const EvaluatedScene& scene, int from, const WebViewOptions& o, const FontMeasure& measure)

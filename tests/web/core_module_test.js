@@ -218,30 +218,32 @@ require(path.resolve(modulePath))().then((core) => {
                        'view.prp[2]: the square root of -1, a negative number, at character 1 of "sqrt(-1)"');
   });
 
-  // An edit's page places the labels of the stage shown only and leaves the steps out; asked for when shown,
-  // they are what an evaluation at that stage gives, and (natively) what the export writes.
-  check("an edit's page leaves the other stages' labels and the steps to be asked for, the same", () => {
+  // An edit's page makes the stage shown only and leaves the steps out; asked for when shown, the others and
+  // the steps are what an evaluation at that stage gives (natively, what the export writes: export_layout_tests).
+  check("an edit's page leaves the other stages and the steps to be asked for, the same", () => {
     const text = JSON.stringify(house);
     const options = JSON.stringify({ width: 1280, height: 720, fontSize: 20, minFontSize: 20, lineScale: 1,
                                      framing: 'together', dark: false });
     const measure = (runs, px) => [0.6 * px * runs.reduce((n, run) => n + Buffer.byteLength(run[0]), 0), px];
     const atStage = (k) => JSON.parse(core.evaluate(text, options, measure, k).page);
+    const atRest = ({ rest, ghost, layout, labels }) => ({ rest, ghost, layout, labels });
     const first = atStage(0);
     assert.ok(first.stages.length > 3);
     assert.ok(first.stages[0].labels.length > 0);
     for (let k = 1; k < first.stages.length; ++k) {
-      assert.strictEqual(first.stages[k].labels, undefined, `stage ${k}'s labels`);
+      assert.deepStrictEqual(atRest(first.stages[k]), atRest({}), `stage ${k} left out`);
+      assert.ok(first.stages[k].frame && first.stages[k].latex, `stage ${k}'s frame and matrix kept`);
       assert.strictEqual(first.transitions[k - 1], null, `step ${k}`);
-      const labels = JSON.parse(core.restLabels(text, options, k, measure).text);
-      assert.ok(labels.length > 0);
-      assert.deepStrictEqual(labels, atStage(k).stages[k].labels, `stage ${k}'s labels`);
+      const view = JSON.parse(core.stageView(text, options, k, measure).text);
+      assert.ok(view.labels.length > 0);
+      assert.deepStrictEqual(atRest(view), atRest(atStage(k).stages[k]), `stage ${k}`);
       const frames = JSON.parse(core.transition(text, options, k - 1, measure).text);
       assert.strictEqual(frames.length, 30);
-      const end = frames[frames.length - 1].view, rest = first.stages[k].rest.view;
+      const end = frames[frames.length - 1].view, rest = view.rest.view;
       const size = Math.max(...rest.map(Math.abs));
       rest.forEach((v, c) => assert.ok(Math.abs(end[c] - v) <= 1e-12 * size, `step ${k} ends at rest: ${end} against ${rest}`));
     }
-    assert.match(core.restLabels(text, options, first.stages.length, measure).error, /no stage/);
+    assert.match(core.stageView(text, options, first.stages.length, measure).error, /no stage/);
     assert.match(core.transition(text, options, first.stages.length - 1, measure).error, /no step/);
   });
 

@@ -46,22 +46,19 @@
   // The page's picture as the core lays it out.
   const viewOptions = () => ({ width: data.width, height: data.height, fontSize: data.fontSize, minFontSize: data.minFontSize,
                                lineScale: data.lineScale, framing: data.framing, dark: data.dark });
-  // Only the stage shown has its labels placed; the others' and each step's frames are asked for when shown.
+  // Only the stage shown is made at rest; the others and each step's frames are asked for when shown.
   function evaluateText(text, files, filesLeftOut) {
     const outcome = core.evaluate(text, JSON.stringify(viewOptions()), measureRuns, Math.max(0, state.stage));
     if (outcome.error) return { error: outcome.error };
     const page = Object.assign(JSON.parse(outcome.page), { scene: text, files, filesLeftOut });
     return { page, pipeline: outcome.pipeline, error: '' };
   }
-  // Stage k's labels at rest and the step from stage k to the next, as the core made them, asked for when
-  // first shown after an edit (null where the core cannot answer: labels are then placed at the anchors).
-  function restLabels(k) {
+  // Stage k at rest ({rest, ghost, layout, labels} besides its names and matrices) and the step from stage k to
+  // the next, as the core made them, asked for when first shown after an edit and kept until the next.
+  function stageAt(k) {
     const stage = stages[k];
-    if (!stage.labels && coreDraws()) {
-      const outcome = core.restLabels(data.scene, JSON.stringify(viewOptions()), k, measureRuns);
-      stage.labels = outcome.error ? null : JSON.parse(outcome.text);
-    }
-    return stage.labels || null;
+    if (!stage.rest) Object.assign(stage, JSON.parse(core.stageView(data.scene, JSON.stringify(viewOptions()), k, measureRuns).text));
+    return stage;
   }
   function transitionFrames(k) {
     if (!data.transitions[k] && coreDraws()) {

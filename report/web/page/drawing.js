@@ -8,7 +8,7 @@
     const { frame, atRest, ghost } = shown;
     drawView({ renderer: world, overlay: worldOverlay, size, picture: data, fonts: data, frame, atRest, ghost,
                stage: state.stage, traced: state.traced,
-               labels: !atRest ? null : userMoved() ? labelsTurned() : restLabels(state.stage) });
+               labels: !atRest ? null : userMoved() ? labelsTurned() : stageAt(state.stage).labels });
   }
 
   // One picture of the world: `frame` drawn by `renderer` at `size` (the picture `picture` was framed for,

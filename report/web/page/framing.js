@@ -42,7 +42,7 @@
   // clip coordinates, row by row) and what a lesson's step shows of the scene.
   function turnedView() {
     const exportSize = { width: data.width, height: data.height };
-    const { view, projection } = cameraMatrices(stages[state.stage].rest, exportSize);
+    const { view, projection } = cameraMatrices(stageAt(state.stage).rest, exportSize);
     return { rows: rowsOf(projection.multiply(view)), shown: JSON.stringify(lesson ? lesson.steps[state.step].shown : null) };
   }
   // A matrix row by row, as the core takes a camera (three.js keeps it column by column).

@@ -122,7 +122,7 @@
   }
 
   function showRest(k) {
-    const stage = stages[k];
+    const stage = stageAt(k);
     shown = { frame: stage.rest, atRest: true, ghost: stage.ghost };
     drawShown();
   }

@@ -2,7 +2,7 @@
   // The caption, legend and note where the stage's picture has them (its layout, in export pixels), fitted as it is.
   let placedText = '';
   function placePictureText(size) {
-    const layout = stages[state.stage].layout;
+    const layout = stageAt(state.stage).layout;
     const key = `${state.stage} ${asking()} ${size.width} ${size.height}`;
     if (!layout || key === placedText) return;
     placedText = key;

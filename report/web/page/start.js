@@ -10,7 +10,7 @@
     },
     // The labels the core places for the view as the user has turned it (export pixels), and the stage's at rest.
     turnedLabels: () => labelsTurned(),
-    restLabels: () => restLabels(state.stage),
+    restLabels: () => stageAt(state.stage).labels,
   };
 
   readFragment();

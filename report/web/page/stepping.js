@@ -36,7 +36,7 @@
       if (t >= 1) return finish();
       const progress = backwards ? 1 - t : t;
       const index = Math.round(progress * frames.length) - 1;
-      shown = { frame: index < 0 ? stages[Math.min(from, k)].rest : frames[index], atRest: false, ghost: null };
+      shown = { frame: index < 0 ? stageAt(Math.min(from, k)).rest : frames[index], atRest: false, ghost: null };
       drawWorld();
       animation.request = requestAnimationFrame(tick);
     };

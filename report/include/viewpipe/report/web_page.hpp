@@ -40,7 +40,7 @@ struct WebStage {
     Eigen::AlignedBox<double, 3> frameExtent;
     std::vector<PlacedLabel> labels;
     PictureLayout layout; // where the caption, legend and note go, as in the PNG
-    bool placed = true;   // labels placed; else left for the page to ask for (webRestLabels)
+    bool made = true;     // else only its frame extent: the page asks for the rest when shown (webStageView)
 };
 
 // What the page's views are made for: the picture's size in pixels, its
@@ -80,13 +80,14 @@ WebAssets loadWebAssets(const std::filesystem::path& javascript = "/usr/share/ja
 // framed as the app frames them (world_view.hpp), from the default viewpoint;
 // labels placed by the figures' placement, text measured by `measure` (in
 // the font the page sets it in). `onStage(k)` is called before stage k is
-// made, for progress and cancelling. With `labelled`, what the page asks
-// for on an edit: only that stage's labels placed and no step's frames, the
-// rest asked for when shown (webRestLabels, webTransition), the same.
+// made, for progress and cancelling. With `shown`, what the page asks for
+// on an edit: only that stage made (framed, its text laid out, its labels
+// placed) and no step's frames, the others asked for when shown
+// (webStageView, webTransition), the same.
 WebPageViews webPageViews(const EvaluatedScene& scene, const WebViewOptions& options, const FontMeasure& measure,
-                          const std::function<void(int)>& onStage = {}, std::optional<int> labelled = {});
-// Stage k's labels at rest as webPageViews places them, as JSON (as webPageData writes a stage's labels).
-std::string webRestLabels(const EvaluatedScene& scene, int stage, const WebViewOptions& options, const FontMeasure& measure);
+                          const std::function<void(int)>& onStage = {}, std::optional<int> shown = {});
+// Stage k at rest as webPageViews makes it (its frame, ghost, layout and labels), as JSON (as webPageData writes them).
+std::string webStageView(const EvaluatedScene& scene, int stage, const WebViewOptions& options, const FontMeasure& measure);
 // The step from stage `from` to the next as webPageViews makes it, as JSON (as webPageData writes a transition).
 std::string webTransition(const EvaluatedScene& scene, int from, const WebViewOptions& options, const FontMeasure& measure);
 
