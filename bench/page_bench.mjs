@@ -1,6 +1,8 @@
 // The page's speed: what an edit asks of the core, natively against
 // WebAssembly (Node), and in headless Chromium (SwiftShader) the first picture
-// after loading and an edit of one field evaluated and redrawn. Side by side
+// after loading, an edit of one field evaluated and redrawn, the view moved and
+// a number of the camera's code dragged (opengl-perspective: the house's Foley
+// view has no code). Side by side
 // in one run; results in docs/performance.md. Run from the source folder,
 // after building, under Xvfb (the export draws the page's stages):
 //   xvfb-run -a node --experimental-websocket bench/page_bench.mjs build
@@ -38,8 +40,10 @@ const wasmMs = median(wasm);
 
 // Chromium: the exported page, loaded and edited.
 const folder = mkdtempSync(join(tmpdir(), 'viewpipe-page-bench-'));
-const exported = spawnSync(join(build, 'bin/viewpipe'), ['export', house, '--format', 'html', '--out', folder, '--quiet']);
-if (exported.status !== 0) throw new Error('export failed: ' + exported.stderr);
+for (const [scene, out] of [[house, folder], [resolve('data/scenes/opengl-perspective.json'), join(folder, 'code')]]) {
+  const exported = spawnSync(join(build, 'bin/viewpipe'), ['export', scene, '--format', 'html', '--out', out, '--quiet']);
+  if (exported.status !== 0) throw new Error('export failed: ' + exported.stderr);
+}
 const port = 9300 + Math.floor(Math.random() * 500);
 const chrome = spawn('chromium', ['--headless', '--no-sandbox', '--use-angle=swiftshader', '--enable-unsafe-swiftshader',
                                   '--window-size=1280,720', `--remote-debugging-port=${port}`,
@@ -60,7 +64,7 @@ const send = (method, params = {}) => new Promise((done) => { pending.set(++id, 
 const evaluate = async (expression) =>
   (await send('Runtime.evaluate', { expression, returnByValue: true, awaitPromise: true })).result.value;
 
-const loads = [], edits = [], turns = [];
+const loads = [], edits = [], turns = [], drags = [];
 for (let run = 0; run < 5; ++run) {
   await send('Page.navigate', { url: 'file://' + join(folder, 'scene.html') });
   let ready = 0; // milliseconds from the navigation's start to the first picture (polled every 10 ms)
@@ -103,6 +107,39 @@ for (let run = 0; run < 5; ++run) {
     return times.slice(2);
   })()`));
 }
+// A number of the camera's code dragged (a real mouse, as CDP gives it), 4 pixels a move: from the move to the
+// frame after the scene's edit drew it (the page evaluates one move a frame, in the frame after the move).
+for (let run = 0; run < 5; ++run) {
+  await send('Page.navigate', { url: 'file://' + join(folder, 'code', 'scene.html') });
+  while (!(await evaluate("document.body && document.body.dataset.core === '1'"))) await sleep(10);
+  const [x, y] = await evaluate(`(() => {
+    document.getElementById('code-editor').open = true;
+    const fovy = document.querySelector("#camera-code [aria-label^='fovy']");
+    fovy.scrollIntoView({ block: 'center' });
+    const r = fovy.getBoundingClientRect();
+    return [r.x + r.width / 2, r.y + r.height / 2];
+  })()`);
+  await send('Input.dispatchMouseEvent', { type: 'mousePressed', x, y, button: 'left', clickCount: 1 });
+  for (let k = 1; k <= 12; ++k) {
+    await evaluate(`(() => {
+      window.benchJson = document.getElementById('pipeline-json').textContent;
+      window.benchMoved = null;
+      document.getElementById('camera-code').addEventListener('pointermove', () => { window.benchMoved ??= performance.now(); },
+                                                              { capture: true, once: true });
+    })()`);
+    await send('Input.dispatchMouseEvent', { type: 'mouseMoved', x: x + 4 * k, y, button: 'left', buttons: 1 });
+    const ms = await evaluate(`new Promise((done) => {
+      const json = () => document.getElementById('pipeline-json').textContent;
+      const poll = (changed) => requestAnimationFrame(() => {
+        if (changed) return done(performance.now() - window.benchMoved);
+        poll(json() !== window.benchJson);
+      });
+      poll(false);
+    })`);
+    if (k > 2) drags.push(ms);
+  }
+  await send('Input.dispatchMouseEvent', { type: 'mouseReleased', x: x + 48, y, button: 'left', clickCount: 1 });
+}
 socket.close();
 const exited = new Promise((done) => chrome.once('exit', done));
 chrome.kill();
@@ -115,5 +152,7 @@ console.log('|---|---|---|');
 row('PageEvaluate/native/house', nativeMs, '1');
 row('PageEvaluate/wasm/house (Node)', wasmMs, `**${(wasmMs / nativeMs).toFixed(1)}×** native`);
 row('Page/chromium/first_picture', median(loads), `${(median(loads) / 2000).toFixed(2)} of the 2 s allowed`);
-row('Page/chromium/edit_one_field', median(edits), `${(median(edits) / 100).toFixed(2)} of the 100 ms allowed`);
+row('Page/chromium/edit_one_field', median(edits),
+    `${(median(edits) / 100).toFixed(2)} of the 100 ms allowed; **${(median(edits) / median(turns)).toFixed(2)}×** move_view`);
 row('Page/chromium/move_view', median(turns), `${(median(turns) / (1000 / 60)).toFixed(1)} frames at 60 Hz`);
+row('Page/chromium/drag_code_number', median(drags), `**${(median(drags) / median(turns)).toFixed(2)}×** move_view`);
