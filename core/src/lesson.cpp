@@ -413,9 +413,10 @@ LessonStep readStep(const Json& j, const std::string& path, const std::filesyste
         const std::string at = child(path, "camera");
         requireObject(j["camera"], at, {"yaw", "pitch", "zoom"}, {});
         const Json& c = j["camera"];
-        step.yaw = c.contains("yaw") ? readIn(c["yaw"], child(at, "yaw"), -180, 180) : 0;
-        step.pitch = c.contains("pitch") ? readIn(c["pitch"], child(at, "pitch"), -89, 89) : 0;
-        step.zoom = c.contains("zoom") ? readIn(c["zoom"], child(at, "zoom"), 0.1, 20) : 1;
+        using L = ViewLimits;
+        step.yaw = c.contains("yaw") ? readIn(c["yaw"], child(at, "yaw"), -L::kYawDegrees, L::kYawDegrees) : 0;
+        step.pitch = c.contains("pitch") ? readIn(c["pitch"], child(at, "pitch"), -L::kPitchDegrees, L::kPitchDegrees) : 0;
+        step.zoom = c.contains("zoom") ? readIn(c["zoom"], child(at, "zoom"), L::kMinZoom, L::kMaxZoom) : 1;
     }
     step.caption = readCaption(j["caption"], child(path, "caption"), true);
     if (j.contains("trace"))

@@ -234,9 +234,10 @@ LessonStep LessonFlow::stepFromView() const
     const ScenePainter::Orbit orbit =
         window_->storyboardShown() ? window_->storyboard()->orbitAngles() : window_->painter()->orbitAngles();
     // Readable numbers in the file: a tenth of a degree, a thousandth of the zoom.
-    step.yaw = std::clamp(std::round(orbit.yaw * 10) / 10, -180.0, 180.0);
-    step.pitch = std::clamp(std::round(orbit.pitch * 10) / 10, -89.0, 89.0);
-    step.zoom = std::clamp(std::round(orbit.zoom * 1000) / 1000, 0.1, 20.0);
+    using L = ViewLimits;
+    step.yaw = std::clamp(std::round(orbit.yaw * 10) / 10, -L::kYawDegrees, L::kYawDegrees);
+    step.pitch = std::clamp(std::round(orbit.pitch * 10) / 10, -L::kPitchDegrees, L::kPitchDegrees);
+    step.zoom = std::clamp(std::round(orbit.zoom * 1000) / 1000, L::kMinZoom, L::kMaxZoom);
     // The stage's name, for the author to go on from; not the picture's notes on framing and ghosts.
     step.caption = stageText(document->pipeline().stages, std::size_t(stage), StageText::Caption);
     step.trace = window_->traced();

@@ -7,14 +7,9 @@
 
 #include "Document.h"
 #include "painter/ScenePainter.h"
+#include "viewpipe/report/world_view.hpp"
 
 namespace viewpipe::gui {
-namespace {
-
-constexpr int kStepMilliseconds = 1000;
-constexpr int kSkipMilliseconds = 600; // a step toward a stage further than the next
-
-} // namespace
 
 Stepper::Stepper(const Document* document, ScenePainter* painter, QObject* parent)
     : QObject(parent), document_(document), painter_(painter), animation_(new QVariantAnimation(this)),

@@ -298,6 +298,8 @@ json sceneData(const EvaluatedScene& scene, const WebPageViews& views)
                        {"minFontSize", options.minFontSize},
                        {"lineScale", options.lineScale},
                        {"framing", framingModeName(options.framing)},
+                       {"stepMilliseconds", kStepMilliseconds},
+                       {"viewLimits", {{"pitch", ViewLimits::kPitchDegrees}, {"zoom", {ViewLimits::kMinZoom, ViewLimits::kMaxZoom}}}},
                        {"smallFontSize", smallTextSize(options.fontSize)},
                        {"scripts", {{"scale", kScriptScale}, {"drop", kSubscriptDrop}, {"rise", kSuperscriptRise}}},
                        {"background", color(backgroundColor(theme, false))},

@@ -474,6 +474,20 @@ TEST_F(WebPage, LinksToAMomentTracesAVertexAndTypesetsTheMatrices)
               "T(-\\mathit{PRP})");
     EXPECT_EQ(browser.evaluate("[...document.querySelectorAll('#trace tr')[4].cells].slice(1).map(c => c.textContent).join(' ')"),
               "-8 -6 -30 1");
+
+    // A link turned past the view's limits is held to them, as a lesson file and the app hold it: pitch to
+    // ±89 degrees, zoom to 0.1–20; and the keys stop there.
+    browser.page("Page.navigate", {{"url", "about:blank"}}); // a page loaded anew, not a fragment changed
+    browser.page("Page.navigate", {{"url", "file://" + page.string() + "#stage=2&pitch=120&zoom=50"}});
+    ASSERT_TRUE(browser.waitFor("document.body.dataset.ready === '1'"));
+    EXPECT_EQ(browser.evaluate("location.hash"), "#stage=2&pitch=89.0&zoom=20.000");
+    browser.press("+", 187);
+    browser.press("ArrowDown", 40, 8); // Shift: orbit 10 degrees down
+    EXPECT_EQ(browser.evaluate("location.hash"), "#stage=2&pitch=89.0&zoom=20.000");
+    browser.page("Page.navigate", {{"url", "about:blank"}});
+    browser.page("Page.navigate", {{"url", "file://" + page.string() + "#stage=2&pitch=-120&zoom=0.01"}});
+    ASSERT_TRUE(browser.waitFor("document.body.dataset.ready === '1'"));
+    EXPECT_EQ(browser.evaluate("location.hash"), "#stage=2&pitch=-89.0&zoom=0.100");
     for (const std::string& problem : browser.problems())
         ADD_FAILURE() << problem;
 }

@@ -48,6 +48,13 @@ struct Question {
 // tenth). Include exact.hpp.
 Vec3<Exact> exactPoint(const Question& q);
 
+// The world view as a user turns it (an orbit about the focal point, a zoom), within these: the pole is
+// never crossed (the picture's up would flip) and the picture neither vanishes nor swallows the view.
+// The lesson files, the app and the page hold to them.
+struct ViewLimits {
+    static constexpr double kYawDegrees = 180, kPitchDegrees = 89, kMinZoom = 0.1, kMaxZoom = 20;
+};
+
 struct LessonStep {
     Scene scene;
     int stage = 0;

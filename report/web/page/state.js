@@ -16,8 +16,9 @@
     state.stage = Math.min(last, linkedStage);
     state.step = lesson ? Math.min(lesson.steps.length - 1, Math.max(0, Math.round(number('step', 1) - 1))) : 0;
     state.yaw = number('yaw', 0);
-    state.pitch = Math.max(-89, Math.min(89, number('pitch', 0)));
-    state.zoom = Math.max(0.1, Math.min(20, number('zoom', 1)));
+    state.pitch = number('pitch', 0);
+    state.zoom = number('zoom', 1);
+    keepViewInLimits();
     state.figure = values.has('figure');
     // Every stage at once shows every stage's name and numbers: not in a lesson, whose questions ask for them.
     state.layout = !lesson && values.get('layout') === 'storyboard' ? 'storyboard' : 'stages';
@@ -37,6 +38,12 @@
     const linked = linkedSceneText();
     if (linked) values.set('scene', linked);
     history.replaceState(null, '', '#' + values.toString().replace(/=$|=(?=&)/g, ''));
+  }
+  // The view turned within the core's limits (the app's and the lesson files').
+  function keepViewInLimits() {
+    const { pitch, zoom } = data.viewLimits;
+    state.pitch = Math.max(-pitch, Math.min(pitch, state.pitch));
+    state.zoom = Math.max(zoom[0], Math.min(zoom[1], state.zoom));
   }
   const userMoved = () => state.yaw !== 0 || state.pitch !== 0 || state.zoom !== 1;
 

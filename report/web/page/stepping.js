@@ -1,6 +1,6 @@
   // page/stepping.js: moving between stages or steps (goTo, play, forward, back), turning the view: buttons, keys, drag, wheel.
   // ---- Moving between stages ------------------------------------------------------
-  const kStepMilliseconds = 600;
+  const kStepMilliseconds = data.stepMilliseconds; // the app's
   function goTo(k, animate) {
     k = Math.max(0, Math.min(last, k));
     if (animation) {
@@ -63,8 +63,7 @@
 
   function changeView(change) {
     Object.assign(state, change);
-    state.pitch = Math.max(-89, Math.min(89, state.pitch));
-    state.zoom = Math.max(0.1, Math.min(20, state.zoom));
+    keepViewInLimits();
     writeFragment();
     drawShown();
   }

@@ -94,6 +94,9 @@ StageShown stageShown(const EvaluatedScene& scene, const WorldMoment& moment);
 // reads against the screen), and the camera finally closes in on the result.
 // Nothing jumps: every phase starts where the last one ended. With one fixed
 // framing the camera holds it throughout.
+// A step to the next stage takes kStepMilliseconds in the app and the page;
+// one toward a stage further off, kSkipMilliseconds a stage (the app's).
+constexpr int kStepMilliseconds = 1000, kSkipMilliseconds = 600;
 class StageMotion {
 public:
     StageMotion(const EvaluatedScene& scene, int from, int to, const StageFramings& framings = {});
