@@ -21,6 +21,7 @@
 #include "viewpipe/report/code.hpp"
 #include "viewpipe/report/report.hpp"
 #include "viewpipe/report/web_page.hpp"
+#include "viewpipe/report/world_view.hpp"
 #include "viewpipe/scene.hpp"
 
 namespace viewpipe::web {
@@ -226,6 +227,35 @@ Outcome storyboard(const std::string& sceneText, const std::string& options, con
         return Outcome{webStoryboard(*evaluated, size.at("width"), size.at("height"), tracedPoint, clips,
                                      viewOptions(options), pageMeasure(measure)),
                        ""};
+    });
+}
+
+// The vertex a click at `at` picks (pickVertex, as the app picks): `vertices` the page's (x, y, z each, a
+// typed array), `drawn` 16 numbers row by row (world -> clip coordinates), `size` and `window` [width,
+// height] and `at` [x, y] in pixels, `cut` 4 numbers or null. [x, y, z] or null.
+Outcome pickVertexAt(const emscripten::val& vertices, const std::string& drawn, const std::string& size,
+                     const std::string& at, const std::string& window, const std::string& cut)
+{
+    return guarded([&] {
+        const std::vector<double> flat = emscripten::convertJSArrayToNumberVector<double>(vertices);
+        std::vector<Vec3<double>> points;
+        for (std::size_t k = 0; k + 2 < flat.size(); k += 3)
+            points.emplace_back(flat[k], flat[k + 1], flat[k + 2]);
+        const std::vector<double> rows = nlohmann::json::parse(drawn);
+        const nlohmann::json view = nlohmann::json::parse(size), click = nlohmann::json::parse(at),
+                             whole = nlohmann::json::parse(window), plane = nlohmann::json::parse(cut);
+        if (rows.size() != 16)
+            throw std::invalid_argument("pickVertex: 16 numbers");
+        Mat4<double> clip;
+        for (int k = 0; k < 16; ++k)
+            clip(k / 4, k % 4) = rows[std::size_t(k)];
+        std::optional<Vec4<double>> kept;
+        if (!plane.is_null())
+            kept = Vec4<double>(plane.at(0), plane.at(1), plane.at(2), plane.at(3));
+        const std::optional<Vec3<double>> picked =
+            pickVertex(points, clip, Vec2<double>(view.at(0), view.at(1)), Vec2<double>(click.at(0), click.at(1)),
+                       Vec2<double>(whole.at(0), whole.at(1)), kept);
+        return Outcome{picked ? nlohmann::json{picked->x(), picked->y(), picked->z()}.dump() : "null", ""};
     });
 }
 
@@ -447,6 +477,7 @@ EMSCRIPTEN_BINDINGS(viewpipe)
     emscripten::function("transition", &transition);
     emscripten::function("placeLabels", &placeLabels);
     emscripten::function("stageFigure", &stageFigure);
+    emscripten::function("pickVertex", &pickVertexAt);
     emscripten::function("storyboard", &storyboard);
     emscripten::function("checkAnswer", &checkAnswer);
     emscripten::function("lessonResults", &lessonResults);

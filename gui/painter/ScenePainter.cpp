@@ -686,29 +686,10 @@ std::optional<Vec3<double>> ScenePainter::pickVertex(int displayX, int displayY)
     const int* size = world_->GetSize();
     const int* origin = world_->GetOrigin();
     const int* window = world_->GetRenderWindow()->GetSize();
-    const double tolerance = 0.01 * std::hypot(window[0], window[1]);
-    std::optional<Vec3<double>> best;
-    double bestDistance = tolerance, bestDepth = 2;
-    for (const auto& mesh : scene_->meshes)
-        for (const Vec3<double>& p : mesh->vertices) {
-            if (cutting_ && scene_->nearCut->dot(p.homogeneous()) < 0)
-                continue; // cut away: not drawn
-            const Vec4<double> h = drawn * p.homogeneous();
-            if (!(h.w() > 0))
-                continue;
-            const Vec3<double> ndc = h.head<3>() / h.w();
-            if (std::abs(ndc.z()) > 1)
-                continue;
-            const double x = origin[0] + (ndc.x() + 1) / 2 * size[0] - displayX;
-            const double y = origin[1] + (ndc.y() + 1) / 2 * size[1] - displayY;
-            const double distance = std::hypot(x, y);
-            if (distance < bestDistance - 1e-9 || (distance <= bestDistance + 1e-9 && ndc.z() < bestDepth)) {
-                best = p;
-                bestDistance = distance;
-                bestDepth = ndc.z();
-            }
-        }
-    return best;
+    // VTK's display pixels run up from the window's bottom; the view's, down from its top.
+    const Vec2<double> at(displayX - origin[0], size[1] - (displayY - origin[1]));
+    return viewpipe::pickVertex(scene_->objectVertices(), drawn, Vec2<double>(size[0], size[1]), at,
+                                Vec2<double>(window[0], window[1]), cutting_ ? scene_->nearCut : std::nullopt);
 }
 
 void ScenePainter::setTextVisible(bool visible)

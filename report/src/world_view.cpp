@@ -371,6 +371,31 @@ Eigen::AlignedBox<double, 3> frameExtent(const Framing& framing)
     return {extent.min() - Vec3<double>::Constant(beyond), extent.max() + Vec3<double>::Constant(beyond)};
 }
 
+std::optional<Vec3<double>> pickVertex(const std::vector<Vec3<double>>& vertices, const Mat4<double>& drawn,
+                                       const Vec2<double>& size, const Vec2<double>& at, const Vec2<double>& window,
+                                       const std::optional<Vec4<double>>& cut)
+{
+    std::optional<Vec3<double>> best;
+    double bestDistance = kPickShare * window.norm(), bestDepth = 2;
+    for (const Vec3<double>& p : vertices) {
+        if (cut && cut->dot(p.homogeneous()) < 0)
+            continue; // cut away: not drawn
+        const Vec4<double> h = drawn * p.homogeneous();
+        if (!(h.w() > 0))
+            continue;
+        const Vec3<double> ndc = h.head<3>() / h.w();
+        if (std::abs(ndc.z()) > 1)
+            continue;
+        const double distance = std::hypot((ndc.x() + 1) / 2 * size.x() - at.x(), (1 - ndc.y()) / 2 * size.y() - at.y());
+        if (distance < bestDistance - 1e-9 || (distance <= bestDistance + 1e-9 && ndc.z() < bestDepth)) {
+            best = p;
+            bestDistance = distance;
+            bestDepth = ndc.z();
+        }
+    }
+    return best;
+}
+
 void fitClippingRange(WorldCamera& camera, const Framing& framing)
 {
     // Everything drawn and the fixed axes lie within the sphere about their box.

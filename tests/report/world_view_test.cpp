@@ -263,5 +263,25 @@ TEST(WorldView, AStepWithFixedFramingHoldsItsCamera)
     }
 }
 
+// A click picks as the app and the page pick: with the identity as the camera, a vertex at (x, y, z) is drawn at
+// pixel ((x + 1) / 2 * 200, (1 - y) / 2 * 100) of a 200 x 100 view; the window's diagonal is 1000 pixels, so a
+// vertex counts within 10 of the click.
+TEST(PickVertex, NearestWithinAHundredthOfTheWindowThenNearestInDepth)
+{
+    const Mat4<double> drawn = Mat4<double>::Identity();
+    const Vec2<double> size(200, 100), window(600, 800);
+    const Vec3<double> behind(0, 0, 0.5), front(0, 0, -0.5), aside(0.05, 0, 0); // aside: 5 pixels right of the others
+    const std::vector<Vec3<double>> vertices = {behind, front, aside};
+    auto pick = [&](Vec2<double> at, std::optional<Vec4<double>> cut = std::nullopt) {
+        return pickVertex(vertices, drawn, size, at, window, cut);
+    };
+    EXPECT_EQ(pick({100, 50}), front) << "two at the click: the one nearer the eye";
+    EXPECT_EQ(pick({106, 50}), aside) << "1 pixel from aside, 6 from the others";
+    EXPECT_EQ(pick({100, 59}), front) << "9 pixels off";
+    EXPECT_FALSE(pick({100, 61})) << "11 pixels off: beyond a hundredth of the diagonal";
+    EXPECT_EQ(pick({100, 50}, Vec4<double>(0, 0, 1, 0)), behind) << "z < 0 cut away";
+    EXPECT_FALSE(pickVertex({Vec3<double>(0, 0, 1.5)}, drawn, size, {100, 50}, window, std::nullopt)) << "beyond the far plane";
+}
+
 } // namespace
 } // namespace viewpipe

@@ -1,20 +1,15 @@
-  // page/tracing.js: a vertex traced through the stages: the one nearest a click, or the next one with T.
+  // page/tracing.js: a vertex traced through the stages: the one a click picks (the core's, as the app picks), or the next one with T.
   let vertices = new Float32Array(0);
   function trace(event) {
-    if (!shown) return;
+    if (!shown || !core) return; // the core picks: it loads a moment after the first picture
     const rect = worldCanvas.getBoundingClientRect();
     const size = sizeOf(worldCanvas);
     const { view, projection } = cameraMatrices(shown.frame, size);
     const clipFromWorld = projection.multiply(view).multiply(matrixOf(shown.frame.shown));
-    let best = null, bestDistance = 12;
-    for (let k = 0; k < vertices.length; k += 3) {
-      const point = [vertices[k], vertices[k + 1], vertices[k + 2]];
-      const at = project(clipFromWorld, point, size);
-      if (!at || !kept(shown.frame.cut, point)) continue;
-      const distance = Math.hypot(at.x - (event.clientX - rect.left), at.y - (event.clientY - rect.top));
-      if (distance < bestDistance) best = point, bestDistance = distance;
-    }
-    setTraced(best);
+    const outcome = core.pickVertex(vertices, JSON.stringify(rowsOf(clipFromWorld)), JSON.stringify([size.width, size.height]),
+                                    JSON.stringify([event.clientX - rect.left, event.clientY - rect.top]),
+                                    JSON.stringify([innerWidth, innerHeight]), JSON.stringify(shown.frame.cut || null));
+    setTraced(outcome.error ? null : JSON.parse(outcome.text));
   }
 
   // T traces the next vertex drawn (Shift+T the one before): tracing without a mouse.

@@ -151,6 +151,15 @@ CameraAim fitAim(const WorldCamera& camera, const Framing& framing, const ViewFi
 void frameOn(WorldCamera& camera, const Framing& framing, const ViewFit& fit);
 // The near and far planes around everything framed and the fixed axes.
 void fitClippingRange(WorldCamera& camera, const Framing& framing);
+
+// The vertex a click picks: of `vertices` drawn through `drawn` (world -> clip coordinates) in a view of
+// `size` pixels, the nearest to `at` (the view's pixels, y down) within kPickShare of the window's diagonal
+// (`window`, pixels), and of those as near the nearest in depth; none cut away (kept where
+// cut . (x, y, z, 1) >= 0), behind the eye or outside the depth range. The app's and the page's.
+constexpr double kPickShare = 0.01;
+std::optional<Vec3<double>> pickVertex(const std::vector<Vec3<double>>& vertices, const Mat4<double>& drawn,
+                                       const Vec2<double>& size, const Vec2<double>& at, const Vec2<double>& window,
+                                       const std::optional<Vec4<double>>& cut);
 // The outline of what a framing frames through a camera looking along its direction, seen from afar
 // (picture coordinates, y down, any scale), or of what its stage at rest shows (`shownOnly`, in the
 // same coordinates): the picture's layout puts its legend where it costs the subject least.
