@@ -163,6 +163,13 @@ QString hideText(const std::string& name)
     return text.size() == 3 ? text.toUpper() : text; // PRP, DOP
 }
 
+void ExportDialog::startFrom(const std::set<std::string>& hidden, bool storyboard)
+{
+    for (const auto& [name, box] : hide_)
+        box->setChecked(hidden.count(name) > 0);
+    layout_->setCurrentIndex(storyboard ? 1 : 0);
+}
+
 ExportOptions ExportDialog::options() const
 {
     ExportOptions o;

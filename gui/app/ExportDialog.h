@@ -24,6 +24,8 @@ public:
 
     // The options as entered; throws InputError for a bad stage list.
     ExportOptions options() const;
+    // Starts from what the window shows: what it leaves out (View > Leave Out) and its layout.
+    void startFrom(const std::set<std::string>& hidden, bool storyboard);
 
     // The pictures folder (else documents, else home) + "/ViewPipe".
     static QString defaultFolder();

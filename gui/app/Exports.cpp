@@ -53,6 +53,7 @@ void Exports::addActions(ActionRegistry& actions)
 void Exports::chooseAndExportStages()
 {
     ExportDialog dialog(window_->stepper()->stageCount(), window_->painter()->theme(), window_);
+    dialog.startFrom(window_->hidden(), window_->storyboardShown());
     if (dialog.exec() != QDialog::Accepted)
         return;
     try {

@@ -528,6 +528,29 @@ private slots:
         QVERIFY(dialog.options().storyboard);
     }
 
+    // File > Export Stages starts from what the window shows: what View > Leave Out leaves out, and the
+    // storyboard where it is shown.
+    void theExportDialogStartsFromTheView()
+    {
+        auto window = openWindow(kScenes + "/house.json", {1600, 1000});
+        QVERIFY(window);
+        window->actions()->action("view.hide.projectors")->trigger();
+        window->setStoryboardShown(true);
+        std::optional<ExportOptions> offered;
+        QTimer::singleShot(200, [&] {
+            if (auto* dialog = qobject_cast<ExportDialog*>(QApplication::activeModalWidget())) {
+                offered = dialog->options();
+                dialog->reject();
+            }
+        });
+        window->actions()->action("file.exportStages")->trigger();
+        QVERIFY(offered);
+        QCOMPARE(offered->hidden, std::set<std::string>{"projectors"});
+        QVERIFY(offered->storyboard);
+        window->actions()->action("view.hide.projectors")->trigger();
+        closeWindow(window);
+    }
+
     void everyControlSaysWhatItIs()
     {
         ExportDialog dialog(5, Theme::Dark);
