@@ -481,8 +481,8 @@ void MainWindow::renderNow()
     renderWanted_ = renderHolds_ > 0;
     if (renderWanted_)
         return;
-    if (storyboardShown())
-        storyboard_->renderNow();
+    if (storyboardShown()) // in place of the two views: they are not drawn while hidden
+        return storyboard_->renderNow();
     worldWindow_->Render();
     if (projectedWidget_->isVisible())
         projectedWindow_->Render();

@@ -112,8 +112,8 @@ void StoryboardView::layOut()
         cell.widget->show();
         styleStoryboardCell(*cell.painter, labelSize(), ticksShown_, traced());
         cell.painter->showMoment(stageAtRest(*cellScene_, cell.stage, framings_));
+        cell.widget->update(); // drawn in its next paint, or by the window's renderNow: once
     }
-    renderNow();
     update();
 }
 
