@@ -48,6 +48,12 @@ int LessonFlow::lastTracedStage(int stage) const
     return lesson_->isOpen() ? std::min(stage, shows().lastStage) : window_->stepper()->stageCount();
 }
 
+std::shared_ptr<const EvaluatedScene> LessonFlow::asShown(const std::shared_ptr<const EvaluatedScene>& scene) const
+{
+    const bool stepShown = lesson_->isOpen() && shownStep_ == lesson_->step() && shownOpening_ == lesson_->openings();
+    return stepShown ? shownAtStep(scene, lesson_->currentStep()) : scene;
+}
+
 StepShows LessonFlow::shows() const
 {
     const int k = lesson_->step();
@@ -197,7 +203,7 @@ void LessonFlow::showLessonStep()
             stepper->goToStage(stepper->target(), false);
         // What the step hides is not drawn, what it highlights is drawn wider; the picture stays at its stage.
         ScenePainter* painter = window_->painter();
-        window_->drawScene(shownAtStep(document->evaluated(), step));
+        window_->drawScene();
         if (!step.panel.empty())
             window_->showPanel(QString::fromStdString(step.panel));
         painter->resetView();

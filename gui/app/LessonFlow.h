@@ -54,6 +54,9 @@ public:
     std::vector<std::array<int, 2>> highlightedEntries(int stage) const;
     // The last stage a traced point's rows show with the picture at `stage`: in a lesson, that stage (stepShows).
     int lastTracedStage(int stage) const;
+    // A scene as the step shown draws it, without what the step hides (shownAtStep); the scene itself with no
+    // step shown. Every drawing of the window goes through it: an edit during a step keeps the step's hide.
+    std::shared_ptr<const EvaluatedScene> asShown(const std::shared_ptr<const EvaluatedScene>& scene) const;
 
     // The Lesson menu's actions ("lesson.open", …) and the menu.
     void addActions(ActionRegistry& actions);

@@ -374,7 +374,7 @@ void MainWindow::buildMenus()
 void MainWindow::showOpenedScene()
 {
     const RenderHold once(*this);
-    drawScene(document_->evaluated());
+    drawScene();
     sceneFiles_->autosave()->saveNow(); // the previous scene's unsaved edits are not this one's to recover
     traceVertex(std::nullopt);
     accuracy_->clear();
@@ -385,18 +385,17 @@ void MainWindow::showOpenedScene()
 
 void MainWindow::onDocumentChanged()
 {
-    drawScene(document_->evaluated());
+    drawScene();
     refreshWidgets();
 }
 
-void MainWindow::drawScene(const std::shared_ptr<const EvaluatedScene>& scene)
+void MainWindow::drawScene()
 {
-    drawn_ = scene;
-    const std::shared_ptr<const EvaluatedScene> shown = withoutHidden(scene, hidden_);
-    painter_->setScene(shown);
+    shown_ = withoutHidden(lessonFlow_->asShown(document_->evaluated()), hidden_);
+    painter_->setScene(shown_);
     painter_->markTraced(traced_);
     if (storyboardShown()) // an edit redraws every stage; hidden, it waits until shown
-        storyboard_->setScene(shown);
+        storyboard_->setScene(shown_);
 }
 
 void MainWindow::setHidden(const std::set<std::string>& hidden)
@@ -406,8 +405,8 @@ void MainWindow::setHidden(const std::set<std::string>& hidden)
         actions_->action("view.hide." + name)->setChecked(hidden_.count(name) > 0);
     painter_->setTicksAndNotesShown(!hidden_.count("ticks"), !hidden_.count("notes"));
     storyboard_->setTicksShown(!hidden_.count("ticks"));
-    if (drawn_)
-        drawScene(drawn_);
+    if (shown_)
+        drawScene();
     stepper_->restart(); // the stage shown again, at rest, on the new props
     updateCaptions();
     renderNow();
@@ -564,10 +563,10 @@ void MainWindow::setStoryboardShown(bool shown)
     actions_->action("view.storyboard")->setChecked(shown);
     if (shown == storyboardShown())
         return;
-    if (shown && !drawn_)
+    if (shown && !shown_)
         shown = false; // no scene yet
     if (shown) {
-        storyboard_->setScene(withoutHidden(drawn_, hidden_));
+        storyboard_->setScene(shown_);
         storyboard_->setTraced(traced_);
         storyboard_->setCurrentStage(stepper_->shownStage());
     }

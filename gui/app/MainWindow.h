@@ -87,8 +87,10 @@ public:
     // The world view as it is on screen.
     QImage worldViewImage();
 
-    // Draws a scene in every view, without what View > Leave Out names (a lesson step's scene, or the document's).
-    void drawScene(const std::shared_ptr<const EvaluatedScene>& scene);
+    // Draws the document's scene in every view, without what the lesson step shown hides and View > Leave Out names.
+    void drawScene();
+    // The scene every view draws, as drawScene left it.
+    const std::shared_ptr<const EvaluatedScene>& shownScene() const { return shown_; }
     // View > Leave Out: what every view leaves out, by the names export --hide takes (for this session).
     void setHidden(const std::set<std::string>& hidden);
     const std::set<std::string>& hidden() const { return hidden_; }
@@ -177,7 +179,7 @@ private:
     CodePanel* code_ = nullptr;
 
     std::optional<Vec3<double>> traced_;
-    std::shared_ptr<const EvaluatedScene> drawn_; // as drawScene was given it
+    std::shared_ptr<const EvaluatedScene> shown_; // as the views draw it
     std::set<std::string> hidden_;
     int fontSize_ = kDefaultFontSize;
     bool popups_ = true;

@@ -308,6 +308,40 @@ private slots:
         w.lessonFlow()->lesson()->close();
     }
 
+    // What a step hides stays hidden through an edit of the camera (an edit drew the whole scene again,
+    // the projectors a step left out among it), and comes back once the lesson is closed.
+    void aStepsHideHoldsThroughAnEdit()
+    {
+        MainWindow& w = *window_;
+        QTemporaryDir folder;
+        QFile file(folder.filePath("hidden.json"));
+        QVERIFY(file.open(QIODevice::WriteOnly));
+        file.write(QString(R"({"title": "Hidden", "steps": [{"scene": "%1", "stage": 2, "caption": "c", "hide": ["projectors", "labels"]}]})")
+                       .arg(kHouse)
+                       .toUtf8());
+        file.close();
+        QVERIFY(w.lessonFlow()->openLesson(file.fileName()));
+        QTRY_VERIFY(settled(w));
+        auto projectors = [](const EvaluatedScene& scene) {
+            return std::count_if(scene.primitives.begin(), scene.primitives.end(),
+                                 [](const Primitive& p) { return p.element == Element::Projectors; });
+        };
+        QVERIFY(projectors(*w.document()->evaluated()) > 0);
+        QCOMPARE(projectors(*w.shownScene()), 0);
+        QVERIFY(w.shownScene()->labels.empty());
+        auto view = std::get<foley::ViewSpec<double>>(w.document()->scene().camera);
+        view.back = 20;
+        w.document()->setCamera(view, "Edit view.back");
+        QCOMPARE(std::get<foley::ViewSpec<double>>(w.document()->scene().camera).back, 20.0);
+        QCOMPARE(projectors(*w.shownScene()), 0);
+        QVERIFY(w.shownScene()->labels.empty());
+        w.lessonFlow()->lesson()->close();
+        view.back = 15;
+        w.document()->setCamera(view, "Edit view.back");
+        QVERIFY(projectors(*w.shownScene()) > 0);
+        QVERIFY(!w.shownScene()->labels.empty());
+    }
+
     void aLessonIsMadeFromTheViewsOnScreen()
     {
         MainWindow& w = *window_;
