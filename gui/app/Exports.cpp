@@ -16,6 +16,7 @@
 #include "ExportDialog.h"
 #include "LessonFlow.h"
 #include "MainWindow.h"
+#include "StageViews.h"
 #include "Stepper.h"
 #include "viewpipe/report/latex.hpp"
 
@@ -143,7 +144,7 @@ void Exports::copyMatrixAsLatex()
 void Exports::copyViewAsImage()
 {
     window_->renderNow();
-    QApplication::clipboard()->setImage(window_->worldViewImage());
+    QApplication::clipboard()->setImage(window_->shownViews()->image());
     window_->statusBar()->showMessage(tr("Copied the view as an image"), 4000);
 }
 

@@ -18,7 +18,7 @@
 #include "LessonDocument.h"
 #include "LessonPanel.h"
 #include "MainWindow.h"
-#include "StoryboardView.h"
+#include "StageViews.h"
 #include "PresentMode.h"
 #include "Stepper.h"
 #include "Waiting.h"
@@ -202,13 +202,10 @@ void LessonFlow::showLessonStep()
         if (stepper->isAnimating())
             stepper->goToStage(stepper->target(), false);
         // What the step hides is not drawn, what it highlights is drawn wider; the picture stays at its stage.
-        ScenePainter* painter = window_->painter();
         window_->drawScene();
         if (!step.panel.empty())
             window_->showPanel(QString::fromStdString(step.panel));
-        painter->resetView();
-        painter->orbit(step.yaw, step.pitch, step.zoom);
-        window_->storyboard()->orbit(step.yaw, step.pitch, step.zoom);
+        window_->orbitViews(step.yaw, step.pitch, step.zoom);
         stepper->goToStage(stepper->stage(), false);
     }
     const bool revealed = !step.question || lesson_->isRevealed(k);
@@ -237,8 +234,7 @@ LessonStep LessonFlow::stepFromView() const
                           : std::filesystem::path(QFileInfo(document->filePath()).absoluteFilePath().toStdString());
     const int stage = window_->stepper()->target();
     step.stage = stage;
-    const ScenePainter::Orbit orbit =
-        window_->storyboardShown() ? window_->storyboard()->orbitAngles() : window_->painter()->orbitAngles();
+    const ScenePainter::Orbit orbit = window_->shownViews()->orbitAngles();
     // Readable numbers in the file: a tenth of a degree, a thousandth of the zoom.
     using L = ViewLimits;
     step.yaw = std::clamp(std::round(orbit.yaw * 10) / 10, -L::kYawDegrees, L::kYawDegrees);

@@ -13,7 +13,6 @@
 #include <QScrollArea>
 #include <QScrollBar>
 #include <QSettings>
-#include <QSplitter>
 #include <QStackedWidget>
 #include <QStatusBar>
 #include <QStyle>
@@ -22,17 +21,11 @@
 #include <QUndoStack>
 #include <QVBoxLayout>
 
-#include <QVTKOpenGLNativeWidget.h>
-#include <vtkGenericOpenGLRenderWindow.h>
-#include <vtkRenderWindowInteractor.h>
-#include <vtkRenderer.h>
-#include <vtkRendererCollection.h>
 
 #include "AccuracyPanel.h"
 #include "ActionRegistry.h"
 #include "Autosave.h"
 #include "ClassicalDialog.h"
-#include "ClickStyle.h"
 #include "CodePanel.h"
 #include "DepthPanel.h"
 #include "EffectsMenu.h"
@@ -46,6 +39,7 @@
 #include "ParameterPanel.h"
 #include "PresentMode.h"
 #include "SceneFiles.h"
+#include "StagePair.h"
 #include "StagePanel.h"
 #include "Stepper.h"
 #include "StoryboardView.h"
@@ -59,7 +53,7 @@ MainWindow::MainWindow(QWidget* parent)
     setObjectName("ViewPipeMainWindow");
     setAcceptDrops(true);
     buildViews();
-    stepper_ = new Stepper(document_, painter_.get(), this);
+    stepper_ = new Stepper(document_, pair_->painter(), this);
     sceneFiles_ = new SceneFiles(this, document_);
     lessonFlow_ = new LessonFlow(this);
     exports_ = new Exports(this);
@@ -70,10 +64,7 @@ MainWindow::MainWindow(QWidget* parent)
     buildMenus();
 
     // Only the world view moves; the projected view is the same picture at every stage.
-    connect(stepper_, &Stepper::frameChanged, this, [this] {
-        worldWindow_->Render();
-        worldWidget_->update();
-    });
+    connect(stepper_, &Stepper::frameChanged, pair_, &StagePair::renderWorldView);
     // The captions and matrices name the step under way, then the stage at rest; the stage panel
     // follows the stepper itself.
     connect(stepper_, &Stepper::stepStarted, this, [this] {
@@ -118,50 +109,42 @@ void MainWindow::fitToScreen()
 
 void MainWindow::buildViews()
 {
-    auto makeView = [](QVTKOpenGLNativeWidget*& widget, vtkGenericOpenGLRenderWindow*& window) {
-        widget = new QVTKOpenGLNativeWidget;
-        auto renderWindow = vtkSmartPointer<vtkGenericOpenGLRenderWindow>::New();
-        widget->setRenderWindow(renderWindow);
-        renderWindow->AddRenderer(vtkSmartPointer<vtkRenderer>::New());
-        window = renderWindow;
-    };
-    makeView(worldWidget_, worldWindow_);
-    makeView(projectedWidget_, projectedWindow_);
-    worldWidget_->setObjectName("worldView");
-    projectedWidget_->setObjectName("projectedView");
-    worldWidget_->setToolTip(tr("The world view: every element through the stages' matrices so far. "
-                                "Drag to turn, wheel to zoom, click a vertex to trace it"));
-    projectedWidget_->setToolTip(tr("What the camera sees: the scene projected onto the view plane"));
-    worldWidget_->setMinimumSize(260, 260);
-    projectedWidget_->setMinimumSize(160, 160);
-
-    // A click picks a vertex to trace; a camera move is kept by later framing.
-    auto style = vtkSmartPointer<ClickStyle>::New();
-    style->onClick = [this](int x, int y) { pickAt(x, y); };
-    style->onCameraMoved = [this] { painter_->rememberUserCamera(); };
-    worldWindow_->GetInteractor()->SetInteractorStyle(style);
-    // The projected view is a fixed picture: no camera interaction.
-    projectedWindow_->GetInteractor()->SetInteractorStyle(nullptr);
-
     // Every view draws a mesh from one copy of its poly data.
     const auto meshes = std::make_shared<MeshDetails>();
-    painter_ = std::make_unique<ScenePainter>(worldWindow_->GetRenderers()->GetFirstRenderer(),
-                                              projectedWindow_->GetRenderers()->GetFirstRenderer(), meshes);
-
-    auto* splitter = new QSplitter(Qt::Horizontal);
-    splitter->addWidget(worldWidget_);
-    splitter->addWidget(projectedWidget_);
-    splitter->setStretchFactor(0, 5);
-    splitter->setStretchFactor(1, 3);
-    splitter->setSizes({500, 300});
+    pair_ = new StagePair(meshes);
     storyboard_ = new StoryboardView(meshes);
-    connect(storyboard_, &StoryboardView::vertexPicked, this, &MainWindow::traceVertex);
     views_ = new QStackedWidget;
-    views_->addWidget(splitter);
-    views_->addWidget(storyboard_);
+    for (StageViews* layout : {static_cast<StageViews*>(pair_), static_cast<StageViews*>(storyboard_)}) {
+        views_->addWidget(layout);
+        connect(layout, &StageViews::vertexPicked, this, &MainWindow::traceVertex);
+    }
     setCentralWidget(views_);
     // From the start: a bar appearing with the first message (or after presenting) would shrink the views.
     statusBar();
+}
+
+std::vector<StageViews*> MainWindow::layouts() const
+{
+    std::vector<StageViews*> all;
+    for (int k = 0; k < views_->count(); ++k)
+        all.push_back(static_cast<StageViews*>(views_->widget(k)));
+    return all;
+}
+
+StageViews* MainWindow::shownViews() const
+{
+    return static_cast<StageViews*>(views_->currentWidget());
+}
+
+void MainWindow::orbitViews(double yaw, double pitch, double zoom)
+{
+    for (StageViews* layout : layouts())
+        layout->orbit(yaw, pitch, zoom);
+}
+
+ScenePainter* MainWindow::painter()
+{
+    return pair_->painter();
 }
 
 void MainWindow::buildDocks()
@@ -268,9 +251,8 @@ void MainWindow::addActions()
     actions_->addToggle("view.storyboard", tr("&Storyboard"), [this](bool on) { setStoryboardShown(on); },
                         QKeySequence(Qt::Key_S));
     actions_->add("view.reset", tr("&Reset View"), [this] {
-        painter_->resetView();
-        if (storyboardShown())
-            storyboard_->resetView();
+        for (StageViews* layout : layouts())
+            layout->resetView();
         renderNow();
     }, QKeySequence(Qt::Key_R));
     actions_->add("view.classical", tr("&Classical Projection…"), [this] { chooseClassicalProjection(); },
@@ -295,14 +277,14 @@ void MainWindow::addActions()
                                                   text, [this, world, key, place = place](bool on) {
                 if (!on)
                     return;
-                world ? painter_->setLegendPlace(place) : painter_->setProjectedLegendPlace(place);
+                world ? painter()->setLegendPlace(place) : painter()->setProjectedLegendPlace(place);
                 QSettings().setValue(key, legendPlaceName(place));
                 renderNow();
             });
             places->addAction(action);
             if (place == kept) {
                 action->setChecked(true);
-                world ? painter_->setLegendPlace(place) : painter_->setProjectedLegendPlace(place);
+                world ? painter()->setLegendPlace(place) : painter()->setProjectedLegendPlace(place);
             }
         }
     }
@@ -379,7 +361,8 @@ void MainWindow::showOpenedScene()
     traceVertex(std::nullopt);
     accuracy_->clear();
     refreshWidgets();
-    painter_->resetView();
+    for (StageViews* layout : layouts())
+        layout->resetView();
     stepper_->goToStage(0, false);
 }
 
@@ -392,10 +375,8 @@ void MainWindow::onDocumentChanged()
 void MainWindow::drawScene()
 {
     shown_ = withoutHidden(lessonFlow_->asShown(document_->evaluated()), hidden_);
-    painter_->setScene(shown_);
-    painter_->markTraced(traced_);
-    if (storyboardShown()) // an edit redraws every stage; hidden, it waits until shown
-        storyboard_->setScene(shown_);
+    for (StageViews* layout : layouts())
+        layout->setScene(shown_);
 }
 
 void MainWindow::setHidden(const std::set<std::string>& hidden)
@@ -403,8 +384,8 @@ void MainWindow::setHidden(const std::set<std::string>& hidden)
     hidden_ = hidden;
     for (const std::string& name : hideNames())
         actions_->action("view.hide." + name)->setChecked(hidden_.count(name) > 0);
-    painter_->setTicksAndNotesShown(!hidden_.count("ticks"), !hidden_.count("notes"));
-    storyboard_->setTicksShown(!hidden_.count("ticks"));
+    for (StageViews* layout : layouts())
+        layout->setTicksAndNotesShown(!hidden_.count("ticks"), !hidden_.count("notes"));
     if (shown_)
         drawScene();
     stepper_->restart(); // the stage shown again, at rest, on the new props
@@ -417,7 +398,7 @@ void MainWindow::refreshWidgets()
     parameters_->setCamera(document_->scene().camera, document_->scene().typedExpressions);
     code_->setCamera(document_->scene().camera);
     effectsMenu_->follow();
-    depth_->showDepth(document_->pipeline(), document_->evaluated()->outcomes.depth, painter_->theme());
+    depth_->showDepth(document_->pipeline(), document_->evaluated()->outcomes.depth, painter()->theme());
     stagePanel_->setStages(document_->pipeline());
     stepper_->restart();
     updateTitle();
@@ -468,8 +449,8 @@ void MainWindow::updateTrace()
 void MainWindow::updateCaptions()
 {
     if (hidden_.count("caption"))
-        return painter_->setCaptions("", "");
-    painter_->setCaptions(lessonFlow_->hidesAnswers()
+        return painter()->setCaptions("", "");
+    painter()->setCaptions(lessonFlow_->hidesAnswers()
                               ? std::string()
                               : stageCaption(*document_->evaluated(), std::size_t(stepper_->shownStage()), StageText::Caption),
                           tr("What the camera sees").toStdString());
@@ -480,13 +461,7 @@ void MainWindow::renderNow()
     renderWanted_ = renderHolds_ > 0;
     if (renderWanted_)
         return;
-    if (storyboardShown()) // in place of the two views: they are not drawn while hidden
-        return storyboard_->renderNow();
-    worldWindow_->Render();
-    if (projectedWidget_->isVisible())
-        projectedWindow_->Render();
-    worldWidget_->update();
-    projectedWidget_->update();
+    shownViews()->renderNow(); // the views hidden are drawn once shown
 }
 
 MainWindow::RenderHold::RenderHold(MainWindow& window) : window_(window)
@@ -500,15 +475,10 @@ MainWindow::RenderHold::~RenderHold()
         window_.renderNow();
 }
 
-QImage MainWindow::worldViewImage()
-{
-    return worldWidget_->grabFramebuffer();
-}
-
 void MainWindow::setTheme(Theme theme)
 {
-    painter_->setTheme(theme);
-    storyboard_->setTheme(theme);
+    for (StageViews* layout : layouts())
+        layout->setTheme(theme);
     accuracy_->setTheme(theme);
     depth_->showDepth(document_->pipeline(), document_->evaluated()->outcomes.depth, theme);
     applyTheme(theme);
@@ -525,9 +495,8 @@ void MainWindow::setFontSize(int points, bool remember)
     QFont font = QApplication::font();
     font.setPointSize(fontSize_);
     QApplication::setFont(font);
-    // Where the text leaves too little room, the caption and legend may shrink back to the default size.
-    painter_->setFontSize(int(std::lround(fontSize_ * 1.6)), int(std::lround(kDefaultFontSize * 1.6)));
-    storyboard_->setTextScale(double(fontSize_) / kDefaultFontSize);
+    for (StageViews* layout : layouts())
+        layout->setTextScale(double(fontSize_) / kDefaultFontSize);
     if (remember && !presentMode_->isPresenting())
         QSettings().setValue("fontSize", fontSize_);
     // Once the widgets have taken the new font: the tabs' size hints follow it.
@@ -549,7 +518,7 @@ void MainWindow::showPanel(const QString& name)
 
 void MainWindow::setProjectedViewVisible(bool visible)
 {
-    projectedWidget_->setVisible(visible);
+    pair_->setProjectedViewVisible(visible);
     actions_->action("view.projected")->setChecked(visible);
     renderNow();
 }
@@ -565,12 +534,9 @@ void MainWindow::setStoryboardShown(bool shown)
         return;
     if (shown && !shown_)
         shown = false; // no scene yet
-    if (shown) {
-        storyboard_->setScene(shown_);
-        storyboard_->setTraced(traced_);
+    if (shown)
         storyboard_->setCurrentStage(stepper_->shownStage());
-    }
-    views_->setCurrentWidget(shown ? static_cast<QWidget*>(storyboard_) : views_->widget(0));
+    views_->setCurrentWidget(shown ? static_cast<StageViews*>(storyboard_) : pair_);
     renderNow();
 }
 
@@ -650,17 +616,11 @@ void MainWindow::chooseClassicalProjection()
     }
 }
 
-void MainWindow::pickAt(int x, int y)
-{
-    traceVertex(painter_->pickVertex(x, y));
-}
-
 void MainWindow::traceVertex(const std::optional<Vec3<double>>& point)
 {
     traced_ = point;
-    painter_->markTraced(traced_);
-    if (storyboardShown())
-        storyboard_->setTraced(traced_);
+    for (StageViews* layout : layouts())
+        layout->setTraced(traced_);
     updateTrace();
     renderNow();
 }

@@ -12,13 +12,12 @@
 #include <memory>
 #include <optional>
 #include <set>
+#include <vector>
 
 #include "Document.h"
 #include "painter/ScenePainter.h"
 
 class QStackedWidget;
-class QVTKOpenGLNativeWidget;
-class vtkGenericOpenGLRenderWindow;
 
 namespace viewpipe::gui {
 
@@ -34,7 +33,9 @@ class MatrixPanel;
 class ParameterPanel;
 class PresentMode;
 class SceneFiles;
+class StagePair;
 class StagePanel;
+class StageViews;
 class Stepper;
 class StoryboardView;
 
@@ -62,7 +63,7 @@ public:
     AccuracyPanel* accuracy() { return accuracy_; }
     DepthPanel* depth() { return depth_; }
     LessonPanel* lessonPanel();
-    ScenePainter* painter() { return painter_.get(); }
+    ScenePainter* painter();
 
     // The scene just loaded into the document shown: widgets, view and stage anew;
     // nothing of the scene before (its traced vertex, its measurements) stays.
@@ -84,8 +85,10 @@ public:
     private:
         MainWindow& window_;
     };
-    // The world view as it is on screen.
-    QImage worldViewImage();
+    // The views shown: the world and projected views, or the storyboard.
+    StageViews* shownViews() const;
+    // Every layout framed as at first, then turned and zoomed (a lesson step's turn).
+    void orbitViews(double yaw, double pitch, double zoom);
 
     // Draws the document's scene in every view, without what the lesson step shown hides and View > Leave Out names.
     void drawScene();
@@ -153,16 +156,13 @@ private:
     // The traced point's rows, as far as a lesson's step lets them show (none while a question waits).
     void updateTrace();
     void updateTitle();
-    void pickAt(int x, int y);
 
     Document* document_;
     ActionRegistry* actions_;
-    std::unique_ptr<ScenePainter> painter_;
-    QVTKOpenGLNativeWidget* worldWidget_ = nullptr;
-    QVTKOpenGLNativeWidget* projectedWidget_ = nullptr;
-    vtkGenericOpenGLRenderWindow* worldWindow_ = nullptr;
-    vtkGenericOpenGLRenderWindow* projectedWindow_ = nullptr;
-    QStackedWidget* views_ = nullptr; // the two views, or the storyboard
+    // Every layout of stage views; one is shown.
+    std::vector<StageViews*> layouts() const;
+    QStackedWidget* views_ = nullptr;
+    StagePair* pair_ = nullptr; // the world and projected views
     StoryboardView* storyboard_ = nullptr;
     Stepper* stepper_ = nullptr;
     SceneFiles* sceneFiles_ = nullptr;

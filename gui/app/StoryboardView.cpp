@@ -2,6 +2,7 @@
 
 #include <QPainter>
 #include <QResizeEvent>
+#include <QShowEvent>
 
 #include <QVTKOpenGLNativeWidget.h>
 #include <vtkGenericOpenGLRenderWindow.h>
@@ -31,7 +32,7 @@ struct StoryboardView::Cell {
 };
 
 StoryboardView::StoryboardView(std::shared_ptr<MeshDetails> meshes, QWidget* parent)
-    : QWidget(parent), meshes_(std::move(meshes))
+    : StageViews(parent), meshes_(std::move(meshes))
 {
     setObjectName("storyboard");
     setMinimumSize(320, 240);
@@ -52,6 +53,11 @@ Vec3<double> StoryboardView::traced() const
 
 void StoryboardView::setScene(std::shared_ptr<const EvaluatedScene> scene)
 {
+    if (!isVisible()) { // drawn once shown
+        waiting_ = std::move(scene);
+        return;
+    }
+    waiting_.reset();
     const bool sameStages = scene_ && scene_->pipeline.stages.size() == scene->pipeline.stages.size();
     scene_ = std::move(scene);
     cellScene_ = withoutEffectsNote(scene_);
@@ -93,7 +99,7 @@ void StoryboardView::buildCells()
 
 void StoryboardView::layOut()
 {
-    if (!scene_)
+    if (!scene_ || !isVisible())
         return;
     std::vector<int> stages;
     for (const auto& cell : cells_)
@@ -160,9 +166,9 @@ ScenePainter::Orbit StoryboardView::orbitAngles() const
     return cells_.empty() ? ScenePainter::Orbit{} : cells_.front()->painter->orbitAngles();
 }
 
-void StoryboardView::setTicksShown(bool shown)
+void StoryboardView::setTicksAndNotesShown(bool ticks, bool)
 {
-    ticksShown_ = shown;
+    ticksShown_ = ticks;
     layOut();
 }
 
@@ -208,10 +214,25 @@ const ScenePainter& StoryboardView::cellPainter(int k) const
     return *cells_.at(std::size_t(k))->painter;
 }
 
+QImage StoryboardView::image()
+{
+    renderNow();
+    return grab().toImage();
+}
+
 void StoryboardView::resizeEvent(QResizeEvent* event)
 {
     QWidget::resizeEvent(event);
     layOut();
+}
+
+void StoryboardView::showEvent(QShowEvent* event)
+{
+    QWidget::showEvent(event);
+    if (waiting_)
+        setScene(std::move(waiting_));
+    else
+        layOut(); // what changed while hidden
 }
 
 void StoryboardView::paintEvent(QPaintEvent*)

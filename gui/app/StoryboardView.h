@@ -5,23 +5,22 @@
 // (a painter at its stage at rest, styled as the export styles a cell), the
 // headers and footers (storyboardOverlay) painted around them. The cells
 // draw the scene's meshes from one copy of their poly data; turning one turns
-// them all; a click on a vertex traces it in every cell.
-
-#include <QWidget>
+// them all; a click on a vertex traces it in every cell. Hidden, it draws
+// nothing: what it is given waits until it is shown.
 
 #include <memory>
 #include <optional>
 #include <vector>
 
+#include "StageViews.h"
 #include "painter/MeshDetail.h"
-#include "painter/ScenePainter.h"
 #include "viewpipe/report/storyboard.hpp"
 
 class QVTKOpenGLNativeWidget;
 
 namespace viewpipe::gui {
 
-class StoryboardView : public QWidget {
+class StoryboardView : public StageViews {
     Q_OBJECT
 public:
     // The cells draw meshes from `meshes`, shared with the window's other views.
@@ -29,23 +28,24 @@ public:
     ~StoryboardView() override;
 
     // Every stage of `scene`, each cell drawn anew.
-    void setScene(std::shared_ptr<const EvaluatedScene> scene);
+    void setScene(std::shared_ptr<const EvaluatedScene> scene) override;
     // The point every cell traces: the user's, or the storyboard's own (storyboardTracedPoint).
-    void setTraced(const std::optional<Vec3<double>>& point);
+    void setTraced(const std::optional<Vec3<double>>& point) override;
     // The stage the stepper shows, outlined.
     void setCurrentStage(int stage);
-    void setTheme(Theme theme);
-    // The text's size as the window's Larger and Smaller Text set it: 1 is 100 %.
-    void setTextScale(double scale);
+    void setTheme(Theme theme) override;
+    void setTextScale(double scale) override;
+    // A cell shows no notes: its header names the stage.
+    void setTicksAndNotesShown(bool ticks, bool notes) override;
     // Every cell framed as at first, turned as at first.
-    void resetView();
-    // Every cell turned and zoomed as ScenePainter::orbit turns a view from its first viewpoint.
-    void orbit(double yaw, double pitch, double zoom);
+    void resetView() override;
+    // Every cell framed as at first, then turned and zoomed alike.
+    void orbit(double yaw, double pitch, double zoom) override;
     // The cells' turn (each cell's is the same).
-    ScenePainter::Orbit orbitAngles() const;
-    // Whether the cells draw the fixed axes' ticks and numbers (View > Leave Out > ticks).
-    void setTicksShown(bool shown);
-    void renderNow();
+    ScenePainter::Orbit orbitAngles() const override;
+    void renderNow() override;
+    // The cells with their headers, footers and arrows.
+    QImage image() override;
 
     int cellCount() const { return int(cells_.size()); }
     int cellStage(int k) const;
@@ -57,13 +57,10 @@ public:
     // The point the cells trace.
     Vec3<double> traced() const;
 
-signals:
-    // A vertex clicked in a cell (world coordinates), or none where a click found none.
-    void vertexPicked(const std::optional<Vec3<double>>& point);
-
 protected:
     void paintEvent(QPaintEvent* event) override;
     void resizeEvent(QResizeEvent* event) override;
+    void showEvent(QShowEvent* event) override;
 
 private:
     struct Cell;
@@ -77,6 +74,7 @@ private:
     std::vector<std::unique_ptr<Cell>> cells_;
     std::shared_ptr<MeshDetails> meshes_;
     std::shared_ptr<const EvaluatedScene> scene_, cellScene_;
+    std::shared_ptr<const EvaluatedScene> waiting_; // given while hidden
     StageFramings framings_;
     StoryboardLayout layout_;
     Figure overlay_;

@@ -2,6 +2,8 @@
 // by keys and the mouse as a person drives it; one copy of a mesh however
 // many views draw it.
 
+#include <QAction>
+#include <QClipboard>
 #include <QFile>
 #include <QLineEdit>
 #include <QRegularExpression>
@@ -148,6 +150,32 @@ private slots:
         QVERIFY(w.traced());
         QCOMPARE(*w.traced(), vertex);
         QCOMPARE(board.traced(), vertex);
+    }
+
+    // Edit > Copy Image copies what is shown: with the storyboard, every cell as drawn with its headers
+    // (it copied the world view hidden behind it); with the two views, the world view.
+    void copyImageCopiesTheStoryboardShown()
+    {
+        MainWindow& w = *window_;
+        w.setStoryboardShown(true);
+        StoryboardView& board = *w.storyboard();
+        QTRY_VERIFY(board.cellWidget(3)->isVisible());
+        w.actions()->action("edit.copyImage")->trigger();
+        const QImage copied = QApplication::clipboard()->image();
+        const double ratio = board.devicePixelRatioF();
+        QCOMPARE(copied.size(), (QSizeF(board.size()) * ratio).toSize());
+        for (int k = 0; k < board.cellCount(); ++k) { // each cell's picture where the cell is
+            const QRect cell = board.cellWidget(k)->geometry();
+            const QImage part = copied.copy(QRectF(QPointF(cell.topLeft()) * ratio, QSizeF(cell.size()) * ratio).toRect());
+            QVERIFY2(drawnShare(part) > 0.1, qPrintable(QString("stage %1 is nearly blank in the copy").arg(k)));
+            const QImage picture = cellPicture(w, k).convertToFormat(QImage::Format_RGB32);
+            QVERIFY2(part.convertToFormat(QImage::Format_RGB32).scaled(picture.size()) == picture,
+                     qPrintable(QString("stage %1 is not its cell's picture").arg(k)));
+        }
+        QTest::keyClick(&w, Qt::Key_S);
+        QTRY_VERIFY(w.findChild<QVTKOpenGLNativeWidget*>("worldView")->isVisible());
+        w.actions()->action("edit.copyImage")->trigger();
+        QCOMPARE(QApplication::clipboard()->image().size(), w.findChild<QVTKOpenGLNativeWidget*>("worldView")->grabFramebuffer().size());
     }
 
     // Turning one cell turns them all, and each keeps its own stage's framing.
