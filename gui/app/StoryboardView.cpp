@@ -66,8 +66,10 @@ void StoryboardView::setScene(std::shared_ptr<const EvaluatedScene> scene)
         buildCells();
     for (auto& cell : cells_) {
         cell->painter->setScene(cellScene_);
-        if (!sameStages) // new cells look from the world view's first viewpoint, as the exported cells do
+        if (!sameStages) { // new cells turned as the cells were (a lesson step's turn may come before its scene)
             cell->painter->resetView();
+            cell->painter->orbit(turn_.yaw, turn_.pitch, turn_.zoom);
+        }
     }
     layOut();
 }
@@ -136,7 +138,7 @@ void StoryboardView::renderNow()
 void StoryboardView::turnAllAs(int k)
 {
     const ScenePainter& moved = *cells_[std::size_t(k)]->painter;
-    const ScenePainter::Orbit turned = moved.orbitAngles();
+    const ScenePainter::Orbit turned = turn_ = moved.orbitAngles();
     for (auto& cell : cells_)
         if (cell->painter.get() != &moved) {
             cell->painter->resetView();
@@ -147,6 +149,7 @@ void StoryboardView::turnAllAs(int k)
 
 void StoryboardView::resetView()
 {
+    turn_ = {};
     for (auto& cell : cells_)
         cell->painter->resetView();
     renderNow();
@@ -154,6 +157,7 @@ void StoryboardView::resetView()
 
 void StoryboardView::orbit(double yaw, double pitch, double zoom)
 {
+    turn_ = {yaw, pitch, zoom};
     for (auto& cell : cells_) {
         cell->painter->resetView();
         cell->painter->orbit(yaw, pitch, zoom);
@@ -163,7 +167,7 @@ void StoryboardView::orbit(double yaw, double pitch, double zoom)
 
 ScenePainter::Orbit StoryboardView::orbitAngles() const
 {
-    return cells_.empty() ? ScenePainter::Orbit{} : cells_.front()->painter->orbitAngles();
+    return cells_.empty() ? turn_ : cells_.front()->painter->orbitAngles();
 }
 
 void StoryboardView::setTicksAndNotesShown(bool ticks, bool)

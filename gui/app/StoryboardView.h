@@ -83,6 +83,7 @@ private:
     double textScale_ = 1;
     bool ticksShown_ = true;
     int currentStage_ = -1;
+    ScenePainter::Orbit turn_; // every cell's, from the first viewpoint
 };
 
 } // namespace viewpipe::gui

@@ -314,6 +314,35 @@ private slots:
         QTRY_VERIFY(!w.storyboardShown());
     }
 
+    // A storyboard step turned, on a scene of more stages than the one before: every cell is turned as the
+    // step says (the cells made for the new scene came unturned).
+    void aLessonStepTurnsTheStoryboardOfAnotherScene()
+    {
+        MainWindow& w = *window_;
+        QTemporaryDir dir;
+        const QString lesson = dir.filePath("turned.json");
+        const QString opengl = QString(viewpipe::build::dataDir) + "/scenes/opengl-perspective.json";
+        QFile file(lesson);
+        QVERIFY(file.open(QIODevice::WriteOnly));
+        file.write(QString(R"({"title": "t", "steps": [{"scene": "%1", "caption": "c"},
+            {"scene": "%2", "caption": "d", "layout": "storyboard", "camera": {"yaw": 30, "pitch": -20, "zoom": 1.5}}]})")
+                       .arg(kHouse, opengl)
+                       .toUtf8());
+        file.close();
+        QVERIFY(w.lessonFlow()->openLesson(lesson));
+        const int houseCells = int(w.document()->pipeline().stages.size()) + 1;
+        QTest::keyClick(&w, Qt::Key_PageDown);
+        QTRY_VERIFY(w.storyboardShown());
+        StoryboardView& board = *w.storyboard();
+        QTRY_VERIFY(board.cellWidget(0)->isVisible());
+        QVERIFY(board.cellCount() != houseCells);
+        for (int k = 0; k < board.cellCount(); ++k) {
+            const ScenePainter::Orbit turn = board.cellPainter(k).orbitAngles();
+            QVERIFY2(std::abs(turn.yaw - 30) < 1e-6 && std::abs(turn.pitch + 20) < 1e-6 && std::abs(turn.zoom - 1.5) < 1e-6,
+                     qPrintable(QString("stage %1 turned %2, %3, zoom %4").arg(k).arg(turn.yaw).arg(turn.pitch).arg(turn.zoom)));
+        }
+    }
+
     // A mesh is one copy of poly data however many views draw it: the world view, the
     // projected view and every cell of the storyboard draw the letter F from the same data.
     void everyViewDrawsAMeshFromOneCopy()
