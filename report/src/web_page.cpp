@@ -130,6 +130,18 @@ json sceneWithSource(const EvaluatedScene& scene, const WebPageViews& views)
     return data;
 }
 
+// A lesson's data sealed: its answers, explanations, captions and the stage names that answer its questions
+// are no text in the page's source for a student to read or search. A seal, not a secret: the page opens it
+// with the key beside it (begin.js).
+json sealed(const json& data)
+{
+    const std::string key = "ViewPipe lesson";
+    std::string bytes = data.dump();
+    for (std::size_t k = 0; k < bytes.size(); ++k)
+        bytes[k] = char(bytes[k] ^ key[k % key.size()]);
+    return {{"seal", key}, {"sealed", base64(bytes.data(), bytes.size())}};
+}
+
 std::string page(const std::string& title, const json& data, const WebAssets& assets)
 {
     std::string escaped;
@@ -189,7 +201,7 @@ std::string lessonPage(const Lesson& lesson, const std::vector<int>& stepScenes,
     json sceneList = json::array();
     for (const LessonScene& s : scenes)
         sceneList.push_back(sceneWithSource(*s.scene, s.views));
-    return page(lesson.title, {{"lesson", {{"title", lesson.title}, {"steps", steps}}}, {"scenes", sceneList}}, assets);
+    return page(lesson.title, sealed({{"lesson", {{"title", lesson.title}, {"steps", steps}}}, {"scenes", sceneList}}), assets);
 }
 
 } // namespace viewpipe

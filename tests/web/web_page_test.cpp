@@ -1310,7 +1310,7 @@ std::vector<std::string> answerShown(const viewpipe::Question& q)
 }
 
 // The page's text as a person or a screen reader meets it, one entry a text node or an element of one line
-// (a table row), and every aria-label and aria-description; never a script's (its data holds the answers).
+// (a table row), and every aria-label and aria-description; never a script's (its data, sealed, holds the answers).
 std::vector<std::string> pageTexts(Browser& browser)
 {
     return json::parse(browser.evaluate(R"(JSON.stringify((() => {
@@ -1345,7 +1345,8 @@ bool holds(const std::vector<std::string>& texts, const std::vector<std::string>
 }
 
 // Every built-in lesson, step by step in its page: before a step's question is answered nothing on the page
-// (but its scripts) shows that answer or a later question's; once it is shown (Show Answer), no later one's.
+// shows that answer or a later question's; once it is shown (Show Answer), no later one's. Its source holds
+// no caption, explanation or answer as text (a student found them all with View Source).
 // A which_stage question shows its matrix as the core writes it, exactly where it reads so: the house from its
 // corner (VPN (1, 0, 1), VUP the y axis) has R's rows u = (1, 0, -1)/sqrt(2), v = (0, 1, 0), n = (1, 0, 1)/sqrt(2).
 TEST(LessonPage, AWhichStageMatrixIsTheCoresExactOne)
@@ -1388,6 +1389,29 @@ TEST(LessonPage, NoAnswerIsOnThePageBeforeItsQuestionIsClosed)
         const Finished run = viewpipe({"lesson", "export", QString::fromStdString(file.path().string()), "--out",
                                        QString::fromStdString((dir / name).string()), "--format", "html", "--quiet"});
         ASSERT_EQ(run.exitCode, 0) << run.output;
+        // Nor in its source, which a student may read (View Source) or search: no caption, explanation or answer.
+        {
+            std::ifstream file(dir / name / "lesson.html");
+            const std::string source((std::istreambuf_iterator<char>(file)), std::istreambuf_iterator<char>());
+            int searched = 0;
+            const auto expectNotIn = [&](const std::string& text, const std::string& what, std::size_t shortest = 8) {
+                if (text.size() < shortest) // too short to be the step's own
+                    return;
+                const std::string escaped = json(text).dump();
+                EXPECT_EQ(source.find(escaped.substr(1, escaped.size() - 2)), std::string::npos) << what << ": " << text;
+                ++searched;
+            };
+            for (std::size_t k = 0; k < lesson.steps.size(); ++k) {
+                const viewpipe::LessonStep& step = lesson.steps[k];
+                expectNotIn(step.caption, "step " + std::to_string(k + 1) + "'s caption");
+                if (step.question) {
+                    expectNotIn(step.question->explanation, "step " + std::to_string(k + 1) + "'s explanation");
+                    for (const std::string& answer : answerShown(*step.question))
+                        expectNotIn(answer, "step " + std::to_string(k + 1) + "'s answer", 4); // a number cut to 4 digits
+                }
+            }
+            EXPECT_GE(searched, 3);
+        }
         Browser browser(dir / (name + "-profile"));
         browser.page("Page.navigate", {{"url", "file://" + (dir / name / "lesson.html").string()}});
         ASSERT_TRUE(browser.waitFor("document.body.dataset.ready === '1' && document.body.dataset.core === '1'"));

@@ -7,7 +7,7 @@
 // handles input.
 (function () {
   'use strict';
-  const page = JSON.parse(document.getElementById('scene-data').textContent);
+  const page = opened(JSON.parse(document.getElementById('scene-data').textContent));
   const lesson = page.lesson || null;
   let data = page.scenes[0]; // the scene shown
   let stages = data.stages;
@@ -20,6 +20,14 @@
     const bytes = new Uint8Array(text.length);
     for (let k = 0; k < text.length; ++k) bytes[k] = text.charCodeAt(k);
     return bytes.buffer;
+  }
+  // A lesson's data comes sealed (web_page.cpp): no answer is text in the page's source.
+  function opened(data) {
+    if (!data.sealed) return data;
+    const key = new TextEncoder().encode(data.seal);
+    const bytes = new Uint8Array(bytesOf(data.sealed));
+    for (let k = 0; k < bytes.length; ++k) bytes[k] ^= key[k % key.length];
+    return JSON.parse(new TextDecoder().decode(bytes));
   }
   const floatsOf = (base64) => new Float32Array(bytesOf(base64));
   const matrixOf = (rows) => new THREE.Matrix4().set(...rows);
