@@ -118,7 +118,7 @@ void addExportCommand(CLI::App& app)
         ->check(CLI::IsMember({"together", "per-stage", "fixed"}))
         ->capture_default_str();
     std::string hidden;
-    for (const std::string& name : gui::hideNames())
+    for (const std::string& name : hideNames())
         hidden += (hidden.empty() ? "" : ", ") + name;
     command->add_option("--hide", options->hide, "What the pictures leave out, comma-separated: " + hidden)
         ->delimiter(',');

@@ -1,6 +1,7 @@
 #include "viewpipe/lesson.hpp"
 
 #include <algorithm>
+#include <cctype>
 #include <cmath>
 #include <map>
 #include <set>
@@ -492,6 +493,46 @@ std::shared_ptr<const EvaluatedScene> shownAtStep(const std::shared_ptr<const Ev
         shown->projectedLegend.clear();
     }
     return shown;
+}
+
+std::vector<std::string> hideNames()
+{
+    std::vector<std::string> names;
+    for (const auto& [element, name] : lessonElementNames())
+        names.emplace_back(name);
+    names.insert(names.end(), {"labels", "legend", "caption", "ticks", "notes"});
+    return names;
+}
+
+std::string hideTitle(const std::string& name)
+{
+    std::string title = name;
+    std::replace(title.begin(), title.end(), '_', ' ');
+    if (title.size() == 3) // PRP, DOP
+        std::transform(title.begin(), title.end(), title.begin(), [](unsigned char c) { return char(std::toupper(c)); });
+    return title;
+}
+
+std::shared_ptr<const EvaluatedScene> withoutHidden(const std::shared_ptr<const EvaluatedScene>& scene,
+                                                    const std::set<std::string>& hidden)
+{
+    LessonStep shown;
+    for (const auto& [element, name] : lessonElementNames())
+        if (hidden.count(name))
+            shown.hidden.insert(element);
+    shown.labelsHidden = hidden.count("labels") > 0;
+    shown.legendHidden = hidden.count("legend") > 0;
+    std::shared_ptr<const EvaluatedScene> without = shownAtStep(scene, shown);
+    return hidden.count("notes") ? withoutEffectsNote(without) : without;
+}
+
+std::shared_ptr<const EvaluatedScene> withoutEffectsNote(const std::shared_ptr<const EvaluatedScene>& scene)
+{
+    if (scene->effectsNote.empty())
+        return scene;
+    auto noteless = std::make_shared<EvaluatedScene>(*scene);
+    noteless->effectsNote.clear();
+    return noteless;
 }
 
 int askingStage(const LessonStep& step)

@@ -97,11 +97,8 @@ ExportDialog::ExportDialog(int stageCount, Theme theme, QWidget* parent) : QDial
     textScale_->setToolTip(tr("Text size: at 100 %, labels 2.4 % of the picture's width (8 pt in a 12 cm column)"));
     form->addRow(tr("Text size"), textScale_);
     legend_ = new QComboBox;
-    legend_->addItem(tr("where it costs the subject least"), int(LegendPlace::Best));
-    legend_->addItem(tr("beside the stage"), int(LegendPlace::Beside));
-    legend_->addItem(tr("below the stage"), int(LegendPlace::Below));
-    legend_->addItem(tr("inside, in a corner the subject leaves free"), int(LegendPlace::Inside));
-    legend_->addItem(tr("none"), int(LegendPlace::None));
+    for (const LegendPlace place : legendPlaces())
+        legend_->addItem(legendPlaceTitle(place), int(place));
     legend_->setToolTip(tr("Where the legend goes"));
     form->addRow(tr("Legend"), legend_);
     zoom_ = new QDoubleSpinBox;
@@ -159,8 +156,7 @@ ExportDialog::ExportDialog(int stageCount, Theme theme, QWidget* parent) : QDial
 
 QString hideText(const std::string& name)
 {
-    const QString text = QString::fromStdString(name).replace('_', ' ');
-    return text.size() == 3 ? text.toUpper() : text; // PRP, DOP
+    return QString::fromStdString(viewpipe::hideTitle(name));
 }
 
 void ExportDialog::startFrom(const std::set<std::string>& hidden, bool storyboard)

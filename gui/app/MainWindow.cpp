@@ -343,7 +343,7 @@ void MainWindow::buildMenus()
         leaveOut->addAction(actions_->action("view.hide." + name));
     for (const char* which : {"world", "projected"}) {
         QMenu* legend = view->addMenu(std::string(which) == "world" ? tr("&World View Legend") : tr("&Camera View Legend"));
-        for (const LegendPlace place : {LegendPlace::Best, LegendPlace::Beside, LegendPlace::Below, LegendPlace::Inside, LegendPlace::None})
+        for (const LegendPlace place : legendPlaces())
             legend->addAction(actions_->action(std::string("view.") + which + "Legend." + legendPlaceName(place)));
     }
 

@@ -13,6 +13,7 @@
 #include "export/Offscreen.h"
 #include "export/VectorFigure.h"
 #include "painter/VtkGeometry.h"
+#include "viewpipe/lesson.hpp"
 #include "viewpipe/report/world_view.hpp"
 
 namespace viewpipe::gui {

@@ -353,28 +353,6 @@ void writeStoryboardFiles(const std::shared_ptr<const EvaluatedScene>& evaluated
 
 } // namespace
 
-std::shared_ptr<const EvaluatedScene> withoutHidden(const std::shared_ptr<const EvaluatedScene>& scene,
-                                                    const std::set<std::string>& hidden)
-{
-    LessonStep shown;
-    for (const auto& [element, name] : lessonElementNames())
-        if (hidden.count(name))
-            shown.hidden.insert(element);
-    shown.labelsHidden = hidden.count("labels") > 0;
-    shown.legendHidden = hidden.count("legend") > 0;
-    std::shared_ptr<const EvaluatedScene> without = shownAtStep(scene, shown);
-    return hidden.count("notes") ? withoutEffectsNote(without) : without;
-}
-
-std::vector<std::string> hideNames()
-{
-    std::vector<std::string> names;
-    for (const auto& [element, name] : lessonElementNames())
-        names.emplace_back(name);
-    names.insert(names.end(), {"labels", "legend", "caption", "ticks", "notes"});
-    return names;
-}
-
 void exportWebPage(const std::shared_ptr<const EvaluatedScene>& scene, const fs::path& file, Theme theme,
                    const ExportProgress& progress, const std::atomic<bool>& cancel)
 {

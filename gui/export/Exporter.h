@@ -56,13 +56,6 @@ struct ExportOptions {
     std::filesystem::path presets;
 };
 
-// The names --hide takes, in the order the help lists them.
-std::vector<std::string> hideNames();
-// The scene as the pictures show it, without the elements, labels, legend and effects' note `hidden`
-// names (hideNames; caption and ticks are the painter's to leave out).
-std::shared_ptr<const EvaluatedScene> withoutHidden(const std::shared_ptr<const EvaluatedScene>& scene,
-                                                    const std::set<std::string>& hidden);
-
 // A format `export` writes, as --format names it.
 struct ExportFormat {
     std::string name;

@@ -43,13 +43,4 @@ void styleStoryboardCell(ScenePainter& painter, double labelSize, bool ticks, co
     painter.markTraced(traced);
 }
 
-std::shared_ptr<const EvaluatedScene> withoutEffectsNote(const std::shared_ptr<const EvaluatedScene>& scene)
-{
-    if (scene->effectsNote.empty())
-        return scene;
-    auto noteless = std::make_shared<EvaluatedScene>(*scene);
-    noteless->effectsNote.clear();
-    return noteless;
-}
-
 } // namespace viewpipe::gui

@@ -33,7 +33,5 @@ StageShown showStageAtRest(const OffscreenPainter& offscreen, const EvaluatedSce
 // pixels high and never shrunk, no legend, caption or note of labels left out
 // (the storyboard's headers and footers speak for the cells), `traced` marked.
 void styleStoryboardCell(ScenePainter& painter, double labelSize, bool ticks, const Vec3<double>& traced);
-// The scene a storyboard's cells draw: without the effects' note, which no cell repeats.
-std::shared_ptr<const EvaluatedScene> withoutEffectsNote(const std::shared_ptr<const EvaluatedScene>& scene);
 
 } // namespace viewpipe::gui

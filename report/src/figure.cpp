@@ -354,6 +354,25 @@ bool boxMeetsPolygon(const Box2& box, const std::vector<Vec2d>& polygon)
 
 } // namespace
 
+const std::vector<LegendPlace>& legendPlaces()
+{
+    static const std::vector<LegendPlace> places = {LegendPlace::Best, LegendPlace::Beside, LegendPlace::Below,
+                                                    LegendPlace::Inside, LegendPlace::None};
+    return places;
+}
+
+const char* legendPlaceTitle(LegendPlace place)
+{
+    switch (place) {
+    case LegendPlace::Best: return "where it costs the subject least";
+    case LegendPlace::Beside: return "beside the stage";
+    case LegendPlace::Below: return "below the stage";
+    case LegendPlace::Inside: return "inside, in a corner the subject leaves free";
+    case LegendPlace::None: return "none";
+    }
+    return "";
+}
+
 const char* legendPlaceName(LegendPlace place)
 {
     switch (place) {
@@ -368,7 +387,7 @@ const char* legendPlaceName(LegendPlace place)
 
 std::optional<LegendPlace> legendPlaceNamed(const std::string& name)
 {
-    for (const LegendPlace place : {LegendPlace::Best, LegendPlace::Beside, LegendPlace::Below, LegendPlace::Inside, LegendPlace::None})
+    for (const LegendPlace place : legendPlaces())
         if (name == legendPlaceName(place))
             return place;
     return std::nullopt;

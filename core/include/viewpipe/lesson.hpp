@@ -86,6 +86,19 @@ LessonStep stepShownFrom(const std::string& text);
 // changes nothing. Every picture of the step draws this.
 std::shared_ptr<const EvaluatedScene> shownAtStep(const std::shared_ptr<const EvaluatedScene>& scene, const LessonStep& step);
 
+// What a reader may leave out of the pictures (export --hide, View > Leave Out, the page's toggles): the
+// elements by the names a step's `hide` takes, "labels", "legend", "caption", "ticks" (the grey axes'
+// ticks and numbers) and "notes" (the effects' note and the notice of labels left out for room), in
+// the order the help lists them; and each one's name for people ("world axes", "PRP").
+std::vector<std::string> hideNames();
+std::string hideTitle(const std::string& name);
+// The scene as the pictures show it, without the elements, labels, legend and effects' note `hidden`
+// names (hideNames; the caption and ticks are left out where the picture is drawn).
+std::shared_ptr<const EvaluatedScene> withoutHidden(const std::shared_ptr<const EvaluatedScene>& scene,
+                                                    const std::set<std::string>& hidden);
+// The scene without the effects' note (a storyboard's cells, which no cell repeats, and --hide notes).
+std::shared_ptr<const EvaluatedScene> withoutEffectsNote(const std::shared_ptr<const EvaluatedScene>& scene);
+
 struct Lesson {
     std::string title;
     std::vector<LessonStep> steps;

@@ -69,8 +69,11 @@ Label tracedLabel(const Vec3<double>& point);
 // right with the stage above it; inside the stage's room in a corner the
 // subject leaves free; or nowhere.
 enum class LegendPlace { Best, Beside, Below, Inside, None };
-// The names --legend takes ("best", "beside", "below", "inside", "none").
+// Every place, in the order the choices list them; the names --legend takes ("best", "beside", "below",
+// "inside", "none"); and each place for people ("beside the stage").
+const std::vector<LegendPlace>& legendPlaces();
 const char* legendPlaceName(LegendPlace place);
+const char* legendPlaceTitle(LegendPlace place);
 std::optional<LegendPlace> legendPlaceNamed(const std::string& name);
 
 // Where a picture is seen from and how it is drawn.
