@@ -8,8 +8,9 @@
 
 #include <exception>
 #include <filesystem>
-#include <optional>
 #include <fstream>
+#include <optional>
+#include <set>
 #include <stdexcept>
 #include <string>
 
@@ -102,7 +103,8 @@ FontMeasure pageMeasure(const emscripten::val& measure)
     });
 }
 
-// The page's own options: its data's width, height, fontSize, minFontSize, lineScale, framing and dark.
+// The page's own options: its data's width, height, fontSize, minFontSize, lineScale, framing and dark; and the
+// reader's choices, where made: "hidden" (names of hideNames) and "legend" (a name of legendPlaceName).
 WebViewOptions viewOptions(const std::string& options)
 {
     const nlohmann::json given = nlohmann::json::parse(options);
@@ -114,21 +116,32 @@ WebViewOptions viewOptions(const std::string& options)
     view.lineScale = given.at("lineScale");
     view.framing = framingModeNamed(given.at("framing")).value_or(FramingMode::Together);
     view.theme = given.at("dark") ? Theme::Dark : Theme::Light;
+    if (given.contains("hidden"))
+        view.hidden = given["hidden"].get<std::set<std::string>>();
+    if (given.contains("legend"))
+        view.legend = legendPlaceNamed(given["legend"]).value_or(LegendPlace::Best);
     return view;
 }
 
-// A scene's text evaluated, kept for the calls that follow with the same text (turning the view asks for
-// labels many times a second); `fresh`: evaluated anew all the same (its meshes may have changed).
-std::shared_ptr<const EvaluatedScene> evaluatedOnce(const std::string& sceneText, bool fresh)
+// A scene's text evaluated and drawn without what the reader leaves out (withoutHidden, as export --hide),
+// kept for the calls that follow with the same text and choices (turning the view asks for labels many
+// times a second); `fresh`: evaluated anew all the same (its meshes may have changed).
+std::shared_ptr<const EvaluatedScene> evaluatedOnce(const std::string& sceneText, const std::set<std::string>& hidden,
+                                                    bool fresh)
 {
     static std::string text;
-    static std::shared_ptr<const EvaluatedScene> evaluated;
+    static std::set<std::string> leftOut;
+    static std::shared_ptr<const EvaluatedScene> evaluated, shown;
     if (fresh || !evaluated || text != sceneText) {
-        evaluated = nullptr; // a refused scene keeps none
+        evaluated = shown = nullptr; // a refused scene keeps none
         evaluated = evaluateScene(parseScene(sceneText, kSceneFolder));
         text = sceneText;
     }
-    return evaluated;
+    if (!shown || leftOut != hidden) {
+        shown = withoutHidden(evaluated, hidden);
+        leftOut = hidden;
+    }
+    return shown;
 }
 
 // A scene's JSON as the page shows it, with the page's `options` (viewOptions): `stage` made at rest, the
@@ -136,8 +149,9 @@ std::shared_ptr<const EvaluatedScene> evaluatedOnce(const std::string& sceneText
 Evaluation evaluate(const std::string& sceneText, const std::string& options, const emscripten::val& measure, int stage)
 {
     return guarded<Evaluation>([&] {
-        const auto evaluated = evaluatedOnce(sceneText, true);
-        const WebPageViews views = webPageViews(*evaluated, viewOptions(options), pageMeasure(measure), {}, stage);
+        const WebViewOptions view = viewOptions(options);
+        const auto evaluated = evaluatedOnce(sceneText, view.hidden, true);
+        const WebPageViews views = webPageViews(*evaluated, view, pageMeasure(measure), {}, stage);
         return Evaluation{webPageData(*evaluated, views), pipelineText(*evaluated), ""};
     });
 }
@@ -146,10 +160,11 @@ Evaluation evaluate(const std::string& sceneText, const std::string& options, co
 Outcome stageView(const std::string& sceneText, const std::string& options, int stage, const emscripten::val& measure)
 {
     return guarded([&] {
-        const auto evaluated = evaluatedOnce(sceneText, false);
+        const WebViewOptions view = viewOptions(options);
+        const auto evaluated = evaluatedOnce(sceneText, view.hidden, false);
         if (stage < 0 || stage > int(evaluated->pipeline.stages.size()))
             throw std::invalid_argument("stageView: no stage " + std::to_string(stage));
-        return Outcome{webStageView(*evaluated, stage, viewOptions(options), pageMeasure(measure)), ""};
+        return Outcome{webStageView(*evaluated, stage, view, pageMeasure(measure)), ""};
     });
 }
 
@@ -157,10 +172,11 @@ Outcome stageView(const std::string& sceneText, const std::string& options, int 
 Outcome transition(const std::string& sceneText, const std::string& options, int from, const emscripten::val& measure)
 {
     return guarded([&] {
-        const auto evaluated = evaluatedOnce(sceneText, false);
+        const WebViewOptions view = viewOptions(options);
+        const auto evaluated = evaluatedOnce(sceneText, view.hidden, false);
         if (from < 0 || from >= int(evaluated->pipeline.stages.size()))
             throw std::invalid_argument("transition: no step from stage " + std::to_string(from));
-        return Outcome{webTransition(*evaluated, from, viewOptions(options), pageMeasure(measure)), ""};
+        return Outcome{webTransition(*evaluated, from, view, pageMeasure(measure)), ""};
     });
 }
 
@@ -179,14 +195,15 @@ Outcome stageThrough(const char* what, const std::string& sceneText, const std::
                      const std::string& camera, const emscripten::val& measure, const std::string& shown, Draw draw)
 {
     return guarded([&] {
-        const auto evaluated = shownAs(evaluatedOnce(sceneText, false), shown);
+        const WebViewOptions view = viewOptions(options);
+        const auto evaluated = shownAs(evaluatedOnce(sceneText, view.hidden, false), shown);
         const std::vector<double> rows = nlohmann::json::parse(camera);
         if (rows.size() != 16 || stage < 0 || stage > int(evaluated->pipeline.stages.size()))
             throw std::invalid_argument(std::string(what) + ": a stage and 16 numbers");
         Mat4<double> clip;
         for (int k = 0; k < 16; ++k)
             clip(k / 4, k % 4) = rows[std::size_t(k)];
-        return Outcome{draw(*evaluated, stage, clip, viewOptions(options), pageMeasure(measure)), ""};
+        return Outcome{draw(*evaluated, stage, clip, view, pageMeasure(measure)), ""};
     });
 }
 
@@ -210,7 +227,8 @@ Outcome storyboard(const std::string& sceneText, const std::string& options, con
                    const std::string& traced, const std::string& cameras, const emscripten::val& measure)
 {
     return guarded([&] {
-        const auto evaluated = evaluatedOnce(sceneText, false);
+        const WebViewOptions view = viewOptions(options);
+        const auto evaluated = evaluatedOnce(sceneText, view.hidden, false);
         const nlohmann::json size = nlohmann::json::parse(room), point = nlohmann::json::parse(traced),
                              turned = nlohmann::json::parse(cameras);
         std::optional<Vec3<double>> tracedPoint;
@@ -224,8 +242,8 @@ Outcome storyboard(const std::string& sceneText, const std::string& options, con
             for (int k = 0; k < 16; ++k)
                 clip(k / 4, k % 4) = rows[std::size_t(k)];
         }
-        return Outcome{webStoryboard(*evaluated, size.at("width"), size.at("height"), tracedPoint, clips,
-                                     viewOptions(options), pageMeasure(measure)),
+        return Outcome{webStoryboard(*evaluated, size.at("width"), size.at("height"), tracedPoint, clips, view,
+                                     pageMeasure(measure)),
                        ""};
     });
 }

@@ -1202,7 +1202,7 @@ Figure drawFigure(const StageShown& stage, const FigureView& view, const LabelMe
     std::vector<const Label*> labels;
     for (const Label& label : stage.scene->labels)
         labels.push_back(&label);
-    const FrameMarks frame = frameMarks(view.frameExtent);
+    const FrameMarks frame = frameMarks(view.frameExtent, view.ticks);
     for (const Label& label : frame.labels)
         labels.push_back(&label);
     const std::optional<Label> traced = stage.traced ? std::optional<Label>(tracedLabel(*stage.traced)) : std::nullopt;

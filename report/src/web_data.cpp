@@ -129,11 +129,17 @@ json placedLabelsJson(const std::vector<PlacedLabel>& placed, Theme theme)
     return labels;
 }
 
+// Whether the reader keeps `name` (hideNames) in the picture.
+bool shows(const WebViewOptions& o, const char* name)
+{
+    return o.hidden.count(name) == 0;
+}
+
 // Stage k's caption, legend and note laid out as the PNG lays them out.
 PictureLayout stageLayout(const EvaluatedScene& scene, int k, const WorldMoment& moment, const WebViewOptions& o,
                           const FontMeasure& measure)
 {
-    const std::string caption = stageCaption(scene, std::size_t(k), StageText::Heading);
+    const std::string caption = shows(o, "caption") ? stageCaption(scene, std::size_t(k), StageText::Heading) : "";
     return layoutPicture(o.width, o.height,
                          stagePictureText(stageShown(scene, moment), caption, o.fontSize, o.minFontSize,
                                           subjectOutline(WorldCamera{}, moment.framing), // from the exports' viewpoint
@@ -154,6 +160,8 @@ Figure stageFigure(const EvaluatedScene& scene, const WorldMoment& moment, const
     view.textSize = o.fontSize;
     view.minFontSize = o.minFontSize;
     view.lineScale = o.lineScale;
+    view.ticks = shows(o, "ticks");
+    view.notes = shows(o, "notes");
     return drawFigure(stageShown(scene, moment), view, labelMeasure(measure, view.fontSize), textBoxes(layout));
 }
 
@@ -224,7 +232,7 @@ json sceneData(const EvaluatedScene& scene, const WebPageViews& views)
     json stageList = json::array();
     for (std::size_t k = 0; k < views.stages.size(); ++k) {
         const WebStage& s = views.stages[k];
-        const FrameMarks marks = frameMarks(s.frameExtent);
+        const FrameMarks marks = frameMarks(s.frameExtent, shows(options, "ticks"));
         const std::string list = stageText(stages, k, StageText::ListEntry);
         const std::string claim = k < scene.stageClaims.size() ? scene.stageClaims[k] : "";
         json entry = {{"list", list},
@@ -291,6 +299,13 @@ json sceneData(const EvaluatedScene& scene, const WebPageViews& views)
     projected["zFighting"] = ring;
     projected["zFightingColor"] = color(elementColor(Element::ZFighting, theme));
 
+    // What the reader may leave out and where the legend may go, as the CLI and the app offer them.
+    json hideChoices = json::array(), legendChoices = json::array();
+    for (const std::string& name : hideNames())
+        hideChoices.push_back({{"name", name}, {"title", hideTitle(name)}});
+    for (const LegendPlace place : legendPlaces())
+        legendChoices.push_back({{"name", legendPlaceName(place)}, {"title", legendPlaceTitle(place)}});
+
     const json data = {{"title", scene.scene.name},
                        {"width", options.width},
                        {"height", options.height},
@@ -317,7 +332,9 @@ json sceneData(const EvaluatedScene& scene, const WebPageViews& views)
                        {"vertices", floats(vertices)},
                        {"legend", legendJson(scene.worldLegend, theme)},
                        {"note", scene.effectsNote},
-                       {"projected", projected}};
+                       {"projected", projected},
+                       {"hideChoices", hideChoices},
+                       {"legendChoices", legendChoices}};
     return data;
 }
 
@@ -544,6 +561,7 @@ std::string webStoryboard(const EvaluatedScene& scene, int width, int height, co
         view.frameExtent = frameExtent(moment.framing);
         view.fontSize = view.textSize = view.minFontSize = layout.labelSize;
         view.lineScale = o.lineScale;
+        view.ticks = shows(o, "ticks");
         const Figure figure = drawFigure(shown, view, labelMeasure(measure, layout.labelSize), {});
         json entry = {{"stage", cell.stage},         {"header", boxJson(cell.header)},
                       {"picture", boxJson(cell.picture)}, {"footer", boxJson(cell.footer)},

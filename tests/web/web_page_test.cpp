@@ -35,7 +35,9 @@
 #include <vector>
 
 #include "build_paths.h"
+#include "viewpipe/evaluated_scene.hpp"
 #include "viewpipe/lesson.hpp"
+#include "viewpipe/scene.hpp"
 
 extern char** environ;
 
@@ -1109,6 +1111,132 @@ TEST_F(WebPage, ShowsEveryStageAtOnceAsTheCoreLaysThemOut)
     browser.evaluate("location.hash = 'layout=stages'");
     ASSERT_TRUE(browser.waitFor("document.getElementById('storyboard').hidden && "
                                 "getComputedStyle(document.getElementById('world')).display !== 'none'"));
+    for (const std::string& problem : browser.problems())
+        ADD_FAILURE() << problem;
+}
+
+// What is drawn is the reader's, as export's --hide, --legend and --zoom: a toggle a name the core lists, each
+// labelled and reached by the keyboard; the core draws the scene without what is left out (its display list:
+// the house's, less its projectors, counted by the core here); the link keeps the choices.
+TEST_F(WebPage, TheReaderChoosesWhatIsDrawnAndTheLinkKeepsIt)
+{
+    const fs::path page = *dir_ / "house" / "scene.html";
+    Browser browser(*dir_ / "profile-choices");
+    browser.page("Page.navigate", {{"url", "file://" + page.string() + "#stage=3"}});
+    ASSERT_TRUE(browser.waitFor("document.body.dataset.ready === '1' && document.body.dataset.core === '1'"));
+    const auto house = viewpipe::evaluateScene(viewpipe::loadScene(kData + "/scenes/house.json"));
+    const long all = long(house->primitives.size());
+    const long projectors = std::count_if(house->primitives.begin(), house->primitives.end(),
+                                          [](const viewpipe::Primitive& p) { return p.element == viewpipe::Element::Projectors; });
+    ASSERT_GT(projectors, 0);
+    EXPECT_EQ(browser.evaluate("window.viewpipe.primitives()").get<long>(), all);
+
+    // A toggle a name, as the CLI's --hide lists them, each in its label.
+    json names = json::array();
+    for (const std::string& name : viewpipe::hideNames())
+        names.push_back({name, viewpipe::hideTitle(name)});
+    EXPECT_EQ(json::parse(browser.evaluate("JSON.stringify([...document.querySelectorAll('#leave-out input[type=checkbox]')]"
+                                           ".map((box) => [box.value, box.closest('label').textContent.trim()]))")
+                              .get<std::string>()),
+              names);
+    const auto legendTexts = [&] {
+        return browser.evaluate("document.getElementById('legend').hidden ? 'hidden' : document.getElementById('legend').textContent")
+            .get<std::string>();
+    };
+    ASSERT_NE(legendTexts().find("projectors"), std::string::npos);
+    const std::string drawn = "document.getElementById('drawn')";
+    browser.evaluate(drawn + ".open = true");
+
+    // Projectors left out with the keyboard: the core's list without them, the legend's line gone, the link says so.
+    browser.evaluate("document.querySelector('#leave-out input[value=projectors]').focus()");
+    browser.press(" ", 32);
+    ASSERT_TRUE(browser.waitFor("location.hash.includes('hide=projectors')"));
+    EXPECT_EQ(browser.evaluate("window.viewpipe.primitives()").get<long>(), all - projectors);
+    EXPECT_EQ(legendTexts().find("projectors"), std::string::npos) << legendTexts();
+    EXPECT_NE(legendTexts().find("window"), std::string::npos) << legendTexts();
+
+    // The legend below the stage (the core's layout): its box in the lower part of the view.
+    const auto legendBox = [&] {
+        return json::parse(browser.evaluate("JSON.stringify((r => [r.left, r.top, r.right, r.bottom])"
+                                            "(document.getElementById('legend').getBoundingClientRect()))")
+                               .get<std::string>());
+    };
+    const json beside = legendBox();
+    browser.evaluate("(s => { s.value = 'below'; s.dispatchEvent(new Event('change')); })(document.getElementById('legend-place'))");
+    ASSERT_TRUE(browser.waitFor("location.hash.includes('legend=below')"));
+    const json below = legendBox();
+    const json world = json::parse(browser.evaluate("JSON.stringify((r => [r.top, r.bottom])"
+                                                    "(document.getElementById('world').getBoundingClientRect()))").get<std::string>());
+    EXPECT_NE(below, beside);
+    EXPECT_GT(below[1].get<double>(), (world[0].get<double>() + world[1].get<double>()) / 2) << below << " in " << world;
+
+    // The caption, the ticks' numbers and the legend left out.
+    const std::string ticks = "window.viewpipe.restLabels().filter((label) => label.minor).length";
+    EXPECT_GT(browser.evaluate(ticks).get<int>(), 0);
+    EXPECT_NE(browser.evaluate("document.getElementById('caption').textContent").get<std::string>(), "");
+    for (const char* name : {"caption", "ticks", "legend"})
+        browser.evaluate(std::string("document.querySelector('#leave-out input[value=") + name + "]').click()");
+    ASSERT_TRUE(browser.waitFor("location.hash.includes('hide=caption%2Clegend%2Cprojectors%2Cticks')"))
+        << browser.evaluate("location.hash");
+    EXPECT_EQ(browser.evaluate(ticks).get<int>(), 0);
+    EXPECT_EQ(browser.evaluate("document.getElementById('caption').textContent"), "");
+    EXPECT_EQ(legendTexts(), "hidden");
+
+    // The link opened anew: the same choices made, the same drawn.
+    const std::string link = browser.evaluate("location.href");
+    browser.page("Page.navigate", {{"url", "about:blank"}});
+    browser.page("Page.navigate", {{"url", link}});
+    ASSERT_TRUE(browser.waitFor("document.body.dataset.ready === '1' && document.body.dataset.core === '1' && "
+                                "window.viewpipe.primitives() < " + std::to_string(all)));
+    EXPECT_EQ(browser.evaluate("window.viewpipe.primitives()").get<long>(), all - projectors);
+    EXPECT_EQ(browser.evaluate("[...document.querySelectorAll('#leave-out input:checked')].map((box) => box.value).join()"),
+              "projectors,legend,caption,ticks");
+    EXPECT_EQ(browser.evaluate("document.getElementById('legend-place').value"), "below");
+    EXPECT_EQ(legendTexts(), "hidden");
+    EXPECT_EQ(browser.evaluate(ticks).get<int>(), 0);
+    // Everything back: the whole list again.
+    for (const char* name : {"projectors", "legend", "caption", "ticks"})
+        browser.evaluate(std::string("document.querySelector('#leave-out input[value=") + name + "]').click()");
+    ASSERT_TRUE(browser.waitFor("!location.hash.includes('hide=')"));
+    EXPECT_EQ(browser.evaluate("window.viewpipe.primitives()").get<long>(), all);
+    for (const std::string& problem : browser.problems())
+        ADD_FAILURE() << problem;
+}
+
+// The zoom (the field, as export --zoom) is about the subject: about the focal point the core framed it on, where
+// the text leaves it room, not about the view's center. Every point's picture moves away from that one point
+// twice as far at twice the zoom.
+TEST_F(WebPage, ZoomsAboutTheSubject)
+{
+    const fs::path page = *dir_ / "house" / "scene.html";
+    Browser browser(*dir_ / "profile-zoom");
+    browser.page("Page.navigate", {{"url", "file://" + page.string() + "#stage=3"}});
+    ASSERT_TRUE(browser.waitFor("document.body.dataset.ready === '1' && document.body.dataset.core === '1'"));
+    const auto pixels = [&] {
+        return json::parse(browser.evaluate("JSON.stringify([[0, 0, 54], [16, 10, 30], [8, 16, 54]].map((p) => window.viewpipe.pixelOf(p)))")
+                               .get<std::string>());
+    };
+    const json before = pixels();
+    browser.evaluate("document.getElementById('drawn').open = true");
+    browser.evaluate("(z => { z.value = '2'; z.dispatchEvent(new Event('change')); })(document.getElementById('zoom'))");
+    ASSERT_TRUE(browser.waitFor("location.hash.includes('zoom=2.000')"));
+    const json after = pixels();
+    // The point a zoom of 2 keeps: f = 2 a - a', the same for every point.
+    std::vector<std::array<double, 2>> fixed;
+    for (std::size_t k = 0; k < before.size(); ++k)
+        fixed.push_back({2 * before[k]["x"].get<double>() - after[k]["x"].get<double>(),
+                         2 * before[k]["y"].get<double>() - after[k]["y"].get<double>()});
+    for (std::size_t k = 1; k < fixed.size(); ++k)
+        for (int c = 0; c < 2; ++c)
+            EXPECT_NEAR(fixed[k][std::size_t(c)], fixed[0][std::size_t(c)], 1.0) << "point " << k;
+    // Not the view's center: the legend and caption take its left, the subject is framed right of them.
+    const json view = json::parse(browser.evaluate("JSON.stringify((r => [(r.left + r.right) / 2, (r.top + r.bottom) / 2])"
+                                                   "(document.getElementById('world').getBoundingClientRect()))").get<std::string>());
+    EXPECT_GT(std::hypot(fixed[0][0] - view[0].get<double>(), fixed[0][1] - view[1].get<double>()), 20.0)
+        << fixed[0][0] << ", " << fixed[0][1] << " against the view's center " << view;
+    EXPECT_EQ(browser.evaluate("document.getElementById('zoom').value"), "2");
+    browser.press("-", 189);
+    ASSERT_TRUE(browser.waitFor("document.getElementById('zoom').value === '1.6'"));
     for (const std::string& problem : browser.problems())
         ADD_FAILURE() << problem;
 }

@@ -24,7 +24,7 @@
       showCode();
       edits.entries = [{ page: data, pipeline, text: data.scene, files: data.files }];
       edits.at = 0;
-      openLink();
+      if (!openLink() && choicesKey() !== defaultChoices) drawChoices(); // a link's choices: the core draws them
       showEdits();
       if (filesBeforeCore) openFiles(filesBeforeCore);
     }

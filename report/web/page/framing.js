@@ -32,10 +32,15 @@
     const orbit = new THREE.Matrix4().makeTranslation(focal.x, focal.y, focal.z).multiply(turn)
       .multiply(new THREE.Matrix4().makeTranslation(-focal.x, -focal.y, -focal.z));
     const s = fitScale(size, picture);
-    // z scaled down: nothing in front of the eye is clipped by near and far planes while orbiting.
-    const fit = new THREE.Matrix4().makeScale(picture.width * s / size.width * state.zoom,
-                                              picture.height * s / size.height * state.zoom, 0.02);
-    return { view: orbit.multiply(view), projection: fit.multiply(matrixOf(frame.projection)) };
+    // Zoomed about the subject, as export --zoom: about the focal point, which the core's framing centres in
+    // the room the picture's text leaves it (not the picture's center). z scaled down: nothing in front of the
+    // eye is clipped by near and far planes while orbiting.
+    const projection = matrixOf(frame.projection);
+    const subject = focal.clone().applyMatrix4(projection), zoom = state.zoom;
+    const ax = picture.width * s / size.width, ay = picture.height * s / size.height;
+    const fit = new THREE.Matrix4().set(ax * zoom, 0, 0, (1 - zoom) * ax * subject.x, 0, ay * zoom, 0, (1 - zoom) * ay * subject.y,
+                                        0, 0, 0.02, 0, 0, 0, 0, 1);
+    return { view: orbit.multiply(view), projection: fit.multiply(projection) };
   }
 
   // The view as the user turned it, for the core: the stage's camera in the export's picture (stage coordinates ->

@@ -8,6 +8,8 @@
       const rect = worldCanvas.getBoundingClientRect();
       return at && { x: rect.left + at.x, y: rect.top + at.y };
     },
+    // How many primitives the page draws: the core's display list, without what the reader leaves out.
+    primitives: () => data.primitives.length,
     // The labels the core places for the view as the user has turned it (export pixels), and the stage's at rest.
     turnedLabels: () => labelsTurned(),
     restLabels: () => stageAt(state.stage).labels,

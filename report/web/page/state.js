@@ -1,6 +1,7 @@
-  // page/state.js: what is shown (stage, step, orbit, traced vertex), read from and written to the link's fragment.
+  // page/state.js: what is shown (stage, step, orbit, traced vertex, what is drawn), read from and written to the link's fragment.
   // ---- State ------------------------------------------------------------------
-  const state = { stage: 0, step: 0, yaw: 0, pitch: 0, zoom: 1, figure: false, traced: null, layout: 'stages' };
+  const state = { stage: 0, step: 0, yaw: 0, pitch: 0, zoom: 1, figure: false, traced: null, layout: 'stages',
+                  hidden: [], legend: 'best' }; // hidden and legend: the names export's --hide and --legend take
   let shown = null; // the frame drawn: {frame, atRest, ghost}
   let animation = null;
   let playing = null;
@@ -22,6 +23,10 @@
     state.figure = values.has('figure');
     // Every stage at once shows every stage's name and numbers: not in a lesson, whose questions ask for them.
     state.layout = !lesson && values.get('layout') === 'storyboard' ? 'storyboard' : 'stages';
+    // What is drawn, by the names the core offers (a lesson's steps say it themselves).
+    const offered = (choices, name) => !lesson && choices.some((choice) => choice.name === name);
+    state.hidden = (values.get('hide') || '').split(',').filter((name) => offered(data.hideChoices, name)).sort();
+    state.legend = offered(data.legendChoices, values.get('legend')) ? values.get('legend') : 'best';
     body.classList.toggle('figure', state.figure);
     pendingLink = values.get('scene'); // for the core, once it is loaded
   }
@@ -35,9 +40,12 @@
     if (state.zoom !== 1) values.set('zoom', state.zoom.toFixed(3));
     if (state.figure) values.set('figure', '');
     if (state.layout === 'storyboard') values.set('layout', 'storyboard');
+    if (state.hidden.length) values.set('hide', state.hidden.join(','));
+    if (state.legend !== 'best') values.set('legend', state.legend);
     const linked = linkedSceneText();
     if (linked) values.set('scene', linked);
     history.replaceState(null, '', '#' + values.toString().replace(/=$|=(?=&)/g, ''));
+    showChoices();
   }
   // The view turned within the core's limits (the app's and the lesson files').
   function keepViewInLimits() {

@@ -37,7 +37,7 @@
                                       measureRuns);
       return outcome.error ? null : JSON.parse(outcome.text);
     };
-    const key = `${room.width} ${room.height} ${traced} ${data.scene}`;
+    const key = `${room.width} ${room.height} ${traced} ${choicesKey()} ${data.scene}`;
     if (board.key !== key) board = { key, rest: ask('null'), turnedKey: '', turned: null, built: null };
     const rest = board.rest;
     if (!rest || !userMoved()) return { rest, labels: rest && rest.cells.map((cell) => cell.labels) };

@@ -12,6 +12,7 @@
 #include <functional>
 #include <memory>
 #include <optional>
+#include <set>
 #include <string>
 #include <vector>
 
@@ -51,6 +52,9 @@ struct WebViewOptions {
     Theme theme = Theme::Light;
     FramingMode framing = FramingMode::Together;
     LegendPlace legend = LegendPlace::Best;
+    // What the reader leaves out (hideNames): the scene drawn is withoutHidden's; here the caption, the
+    // ticks and the notice of labels left out, which the picture's layout and labels leave out.
+    std::set<std::string> hidden;
 };
 
 struct WebPageViews {
