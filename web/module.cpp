@@ -222,9 +222,10 @@ Outcome stageFigure(const std::string& sceneText, const std::string& options, in
 }
 
 // Every stage at once in the page's room (webStoryboard): `room` is {"width", "height"}, `traced` [x, y, z]
-// or null, `cameras` null (each cell at rest) or one camera a stage (16 numbers, row by row, as stageThrough's).
+// or null, `cameras` null (each cell at rest) or one camera a stage (16 numbers, row by row, as stageThrough's);
+// `shapes`: each cell's lines and faces too (the storyboard saved as SVG).
 Outcome storyboard(const std::string& sceneText, const std::string& options, const std::string& room,
-                   const std::string& traced, const std::string& cameras, const emscripten::val& measure)
+                   const std::string& traced, const std::string& cameras, const emscripten::val& measure, bool shapes)
 {
     return guarded([&] {
         const WebViewOptions view = viewOptions(options);
@@ -243,7 +244,7 @@ Outcome storyboard(const std::string& sceneText, const std::string& options, con
                 clip(k / 4, k % 4) = rows[std::size_t(k)];
         }
         return Outcome{webStoryboard(*evaluated, size.at("width"), size.at("height"), tracedPoint, clips, view,
-                                     pageMeasure(measure)),
+                                     pageMeasure(measure), shapes),
                        ""};
     });
 }

@@ -528,7 +528,8 @@ std::string webStageFigure(const EvaluatedScene& scene, int stage, const Mat4<do
 }
 
 std::string webStoryboard(const EvaluatedScene& scene, int width, int height, const std::optional<Vec3<double>>& traced,
-                          const std::vector<Mat4<double>>& cameras, const WebViewOptions& o, const FontMeasure& measure)
+                          const std::vector<Mat4<double>>& cameras, const WebViewOptions& o, const FontMeasure& measure,
+                          bool shapes)
 {
     std::vector<int> stages;
     for (int k = 0; k <= int(scene.pipeline.stages.size()); ++k)
@@ -562,10 +563,17 @@ std::string webStoryboard(const EvaluatedScene& scene, int width, int height, co
         view.fontSize = view.textSize = view.minFontSize = layout.labelSize;
         view.lineScale = o.lineScale;
         view.ticks = shows(o, "ticks");
-        const Figure figure = drawFigure(shown, view, labelMeasure(measure, layout.labelSize), {});
+        Figure figure = drawFigure(shown, view, labelMeasure(measure, layout.labelSize), {});
         json entry = {{"stage", cell.stage},         {"header", boxJson(cell.header)},
                       {"picture", boxJson(cell.picture)}, {"footer", boxJson(cell.footer)},
                       {"rest", frameJson(rest)},     {"labels", placedLabelsJson(figure.labels, o.theme)}};
+        if (shapes) { // drawn on nothing of its neighbours', as the exported storyboard's cells
+            cutShapesTo(figure, {{0, 0}, {double(w), double(h)}});
+            json drawn = json::array();
+            for (const FigureShape& s : figure.shapes)
+                drawn.push_back(shapeJson(s, o.theme));
+            entry["shapes"] = drawn;
+        }
         if (moment.ghost)
             entry["ghost"] = matrix(*moment.ghost);
         cells.push_back(entry);
@@ -576,7 +584,7 @@ std::string webStoryboard(const EvaluatedScene& scene, int width, int height, co
         arrows.push_back(shapeJson(s, o.theme));
     json texts = json::array(); // each cell's header, then its footer
     for (const PlacedLabel& l : overlay.labels)
-        texts.push_back({{"text", l.text}, {"spoken", mathSpokenText(l.text)}, {"box", boxJson(l.box)}, {"minor", l.minor},
+        texts.push_back({{"text", l.text}, {"runs", runsJson(l.text)}, {"spoken", mathSpokenText(l.text)}, {"box", boxJson(l.box)}, {"minor", l.minor},
                          {"color", color(elementColor(l.element, o.theme))}});
     return json{{"columns", layout.columns},
                 {"labelSize", layout.labelSize},

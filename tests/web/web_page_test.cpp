@@ -1241,6 +1241,64 @@ TEST_F(WebPage, ZoomsAboutTheSubject)
         ADD_FAILURE() << problem;
 }
 
+// In every stage at once, a click in a cell traces the vertex it picks (the core's pickVertex, as in the world view
+// and the app): every cell's footer gives its coordinates in that stage's space. What is shown is what is saved:
+// the storyboard as PNG (the room's size) and as SVG (a group a cell, the core's shapes and texts).
+TEST_F(WebPage, AClickInTheStoryboardTracesInEveryCellAndTheStoryboardIsSaved)
+{
+    const fs::path folder = *dir_ / "house";
+    Browser browser(*dir_ / "profile-storyboard-trace", 1280, 720);
+    browser.page("Page.navigate", {{"url", "file://" + (folder / "scene.html").string() + "#layout=storyboard"}});
+    ASSERT_TRUE(browser.waitFor("document.body.dataset.core === '1' && document.querySelectorAll('#storyboard .cell').length === 6"));
+    const auto footer = [&](int k) {
+        return browser.evaluate("document.querySelector(`.cell[data-stage='" + std::to_string(k) + "'] .footer`).textContent")
+            .get<std::string>();
+    };
+    ASSERT_EQ(footer(0), "traced (0, 0, 54)");
+    // The house's top corner at the back, (8, 16, 30), clicked where stage 4's cell draws it; T(-PRP) takes it to (0, 10, -54).
+    const json at = browser.evaluate("JSON.stringify(window.viewpipe.pixelOf([8, 16, 30], 4))");
+    ASSERT_TRUE(at.is_string()) << at;
+    const json pixel = json::parse(at.get<std::string>());
+    for (const char* type : {"mousePressed", "mouseReleased"})
+        browser.page("Input.dispatchMouseEvent", {{"type", type}, {"x", pixel["x"]}, {"y", pixel["y"]},
+                                                  {"button", "left"}, {"clickCount", 1}});
+    ASSERT_TRUE(browser.waitFor("document.querySelector(`.cell[data-stage='0'] .footer`).textContent.includes('16')"));
+    EXPECT_EQ(footer(0), "traced (8, 16, 30)");
+    EXPECT_EQ(footer(3), "traced (0, 10, \u221254)");
+    EXPECT_NE(browser.evaluate("document.getElementById('trace').textContent").get<std::string>().find("16"), std::string::npos)
+        << "the trace table has it too";
+
+    // Saved as shown: the buttons say so, the files are the storyboard's.
+    EXPECT_EQ(browser.evaluate("document.getElementById('save-svg').textContent"), "Storyboard as SVG");
+    browser.call("Browser.setDownloadBehavior", {{"behavior", "allow"}, {"downloadPath", folder.string()}});
+    browser.evaluate("document.getElementById('save-png').click()");
+    ASSERT_TRUE(waitForFile(folder / "foley-s-house-storyboard.png")) << "the storyboard's PNG is downloaded";
+    const QImage png(QString::fromStdString((folder / "foley-s-house-storyboard.png").string()));
+    const json room = json::parse(browser.evaluate("JSON.stringify((r => [Math.floor(r.width), Math.floor(r.height)])"
+                                                   "(document.getElementById('storyboard').getBoundingClientRect()))").get<std::string>());
+    EXPECT_EQ(png.width(), room[0].get<int>());
+    EXPECT_EQ(png.height(), room[1].get<int>());
+    // Each cell's picture where the page shows it.
+    const json cell = json::parse(browser.evaluate("JSON.stringify((s => (r => [r.left - s.left, r.top - s.top, r.width, r.height])"
+                                                   "(document.querySelector(`.cell[data-stage='5'] canvas`).getBoundingClientRect()))"
+                                                   "(document.getElementById('storyboard').getBoundingClientRect()))").get<std::string>());
+    const std::vector<bool> ink = drawn(png.copy(cell[0].get<int>(), cell[1].get<int>(), cell[2].get<int>(), cell[3].get<int>()));
+    EXPECT_GT(std::count(ink.begin(), ink.end(), true), 500) << "stage 5's cell is in the PNG";
+    browser.evaluate("document.getElementById('save-svg').click()");
+    ASSERT_TRUE(waitForFile(folder / "foley-s-house-storyboard.svg")) << "the storyboard's SVG is downloaded";
+    EXPECT_FALSE(fs::exists(folder / "foley-s-house-stage-0.svg")) << "not the hidden world view";
+    browser.page("Page.navigate", {{"url", "file://" + (folder / "foley-s-house-storyboard.svg").string()}});
+    ASSERT_TRUE(browser.waitFor("document.readyState === 'complete'"));
+    EXPECT_EQ(browser.evaluate("document.documentElement.localName + ' ' + !document.querySelector('parsererror')"), "svg true");
+    EXPECT_EQ(browser.evaluate("document.querySelectorAll('svg > g').length"), 6);
+    EXPECT_EQ(browser.evaluate("[...document.querySelectorAll('svg > g')].every((g) => g.querySelectorAll('polygon, polyline').length > 5)"),
+              true);
+    const std::string texts = browser.evaluate("[...document.querySelectorAll('svg > text')].map((t) => t.textContent).join('')");
+    EXPECT_NE(texts.find("traced (8, 16, 30)"), std::string::npos) << texts;
+    for (const std::string& problem : browser.problems())
+        ADD_FAILURE() << problem;
+}
+
 // `lesson export` of dir/lesson.json into dir/out, and its page opened in `browser`, ready.
 ::testing::AssertionResult openExportedLesson(const fs::path& dir, Browser& browser)
 {

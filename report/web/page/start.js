@@ -1,11 +1,15 @@
   // page/start.js: window.viewpipe for scripts and the browser tests; then the start: the link read, the scene or lesson shown.
   // For scripts (and the browser tests): where a world point is drawn now, in client pixels.
+  // With `stage`, in that stage's cell of the storyboard shown.
   window.viewpipe = {
-    pixelOf(point) {
-      const size = sizeOf(worldCanvas);
-      const { view, projection } = cameraMatrices(shown.frame, size);
-      const at = project(projection.multiply(view).multiply(matrixOf(shown.frame.shown)), point, size);
-      const rect = worldCanvas.getBoundingClientRect();
+    pixelOf(point, stage) {
+      const k = stage === undefined || !board.built ? -1 : board.rest.cells.findIndex((cell) => cell.stage === stage);
+      const cell = k < 0 ? null : board.rest.cells[k];
+      const canvas = cell ? board.built[k].canvas : worldCanvas;
+      const size = cell ? pictureSize(cell) : sizeOf(worldCanvas), frame = cell ? cell.rest : shown.frame;
+      const { view, projection } = cameraMatrices(frame, size, cell ? size : data);
+      const at = project(projection.multiply(view).multiply(matrixOf(frame.shown)), point, size);
+      const rect = canvas.getBoundingClientRect();
       return at && { x: rect.left + at.x, y: rect.top + at.y };
     },
     // How many primitives the page draws: the core's display list, without what the reader leaves out.

@@ -1,4 +1,4 @@
-  // page/storyboard.js: every stage at once (#layout=storyboard): the core's storyboard, each cell drawn by drawView.
+  // page/storyboard.js: every stage at once (#layout=storyboard): the core's storyboard, each cell drawn by drawView; a click traces.
   // ---- The storyboard -------------------------------------------------------------
   const storyboardSection = document.getElementById('storyboard');
   const storyboardArrows = document.getElementById('storyboard-arrows');
@@ -17,6 +17,11 @@
     body.classList.toggle('storyboard', on);
     storyboardSection.hidden = !on;
     layoutButton.setAttribute('aria-pressed', String(on));
+    // The buttons save what is shown.
+    document.getElementById('save-buttons').setAttribute('aria-label', on ? 'Save every stage at once as shown' :
+                                                         'Save the world view as shown');
+    document.getElementById('save-png').textContent = on ? 'Storyboard as PNG' : 'View as PNG';
+    document.getElementById('save-svg').textContent = on ? 'Storyboard as SVG' : 'View as SVG';
     if (on) drawStoryboard();
     else { drawWorld(); drawProjected(); }
   }
@@ -27,24 +32,31 @@
   }
   layoutButton.addEventListener('click', toggleLayout);
 
+  const storyboardRoom = () => {
+    const box = storyboardSection.getBoundingClientRect();
+    return { width: Math.floor(box.width), height: Math.floor(box.height) };
+  };
   const pictureSize = (cell) => ({ width: cell.picture[2] - cell.picture[0], height: cell.picture[3] - cell.picture[1] });
+  // The core's storyboard for `room` through `cameras` (null: each cell at rest); `shapes`: each cell's lines and faces too.
+  function askStoryboard(room, cameras, shapes) {
+    const outcome = core.storyboard(data.scene, JSON.stringify(viewOptions()), JSON.stringify(room),
+                                    JSON.stringify(state.traced), cameras, measureRuns, shapes);
+    return outcome.error ? null : JSON.parse(outcome.text);
+  }
+  // The cameras of the view as the user turned it, one a cell, for the core; null at rest.
+  const turnedCameras = (rest) => !userMoved() ? 'null' : JSON.stringify(rest.cells.map((cell) => {
+    const { view, projection } = cameraMatrices(cell.rest, pictureSize(cell), pictureSize(cell));
+    return rowsOf(projection.multiply(view));
+  }));
   // The core's storyboard for `room` at rest, and each cell's labels for the view as the user turned it (placed
   // anew by the core through each cell's camera; null where it cannot).
   function storyboardOf(room) {
-    const traced = JSON.stringify(state.traced);
-    const ask = (cameras) => {
-      const outcome = core.storyboard(data.scene, JSON.stringify(viewOptions()), JSON.stringify(room), traced, cameras,
-                                      measureRuns);
-      return outcome.error ? null : JSON.parse(outcome.text);
-    };
-    const key = `${room.width} ${room.height} ${traced} ${choicesKey()} ${data.scene}`;
+    const ask = (cameras) => askStoryboard(room, cameras, false);
+    const key = `${room.width} ${room.height} ${JSON.stringify(state.traced)} ${choicesKey()} ${data.scene}`;
     if (board.key !== key) board = { key, rest: ask('null'), turnedKey: '', turned: null, built: null };
     const rest = board.rest;
     if (!rest || !userMoved()) return { rest, labels: rest && rest.cells.map((cell) => cell.labels) };
-    const cameras = JSON.stringify(rest.cells.map((cell) => {
-      const { view, projection } = cameraMatrices(cell.rest, pictureSize(cell), pictureSize(cell));
-      return rowsOf(projection.multiply(view));
-    }));
+    const cameras = turnedCameras(rest);
     if (board.turnedKey !== cameras) Object.assign(board, { turnedKey: cameras, turned: ask(cameras) });
     return { rest, labels: rest.cells.map((cell, k) => board.turned ? board.turned.cells[k].labels : null) };
   }
@@ -98,8 +110,7 @@
 
   function drawStoryboard() {
     if (!storyboardShown()) return;
-    const box = storyboardSection.getBoundingClientRect();
-    const room = { width: Math.floor(box.width), height: Math.floor(box.height) };
+    const room = storyboardRoom();
     const why = coreFailed || (data.filesLeftOut ? "The storyboard is drawn by ViewPipe's core, which cannot read " +
                 'the meshes this page left out.' : !core ? "The storyboard is drawn by ViewPipe's core, which is loading." : '');
     const { rest, labels } = why ? {} : storyboardOf(room);
@@ -124,18 +135,31 @@
     body.dataset.storyboardDrawn = String((Number(body.dataset.storyboardDrawn) || 0) + 1); // for the browser tests
   }
 
-  // Dragging any cell turns every one, the wheel zooms them all.
+  // Dragging any cell turns every one, the wheel zooms them all; a click traces the vertex it picks in every cell.
   let boardDrag = null;
   storyboardSection.addEventListener('pointerdown', (event) => {
-    boardDrag = { x: event.clientX, y: event.clientY, yaw: state.yaw, pitch: state.pitch };
+    boardDrag = { x: event.clientX, y: event.clientY, yaw: state.yaw, pitch: state.pitch, moved: false };
     storyboardSection.setPointerCapture(event.pointerId);
   });
   storyboardSection.addEventListener('pointermove', (event) => {
     if (!boardDrag) return;
     const dx = event.clientX - boardDrag.x, dy = event.clientY - boardDrag.y;
-    if (Math.hypot(dx, dy) > 3) changeView({ yaw: boardDrag.yaw + dx * 0.4, pitch: boardDrag.pitch + dy * 0.4 });
+    if (Math.hypot(dx, dy) > 3) boardDrag.moved = true;
+    if (boardDrag.moved) changeView({ yaw: boardDrag.yaw + dx * 0.4, pitch: boardDrag.pitch + dy * 0.4 });
   });
-  storyboardSection.addEventListener('pointerup', () => { boardDrag = null; });
+  storyboardSection.addEventListener('pointerup', (event) => {
+    const clicked = boardDrag && !boardDrag.moved;
+    boardDrag = null;
+    if (!clicked || !board.built) return;
+    const inside = ({ canvas }) => {
+      const r = canvas.getBoundingClientRect();
+      return event.clientX >= r.left && event.clientX < r.right && event.clientY >= r.top && event.clientY < r.bottom;
+    };
+    const k = board.built.findIndex(inside);
+    if (k < 0) return;
+    const cell = board.rest.cells[k], size = pictureSize(cell);
+    trace(event, board.built[k].canvas, cell.rest, size, size);
+  });
   storyboardSection.addEventListener('wheel', (event) => {
     event.preventDefault();
     changeView({ zoom: state.zoom * Math.pow(1.1, -Math.sign(event.deltaY)) });

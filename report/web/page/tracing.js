@@ -1,14 +1,14 @@
   // page/tracing.js: a vertex traced through the stages: the one a click picks (the core's, as the app picks), or the next one with T.
   let vertices = new Float32Array(0);
-  function trace(event) {
-    if (!shown || !core) return; // the core picks: it loads a moment after the first picture
-    const rect = worldCanvas.getBoundingClientRect();
-    const size = sizeOf(worldCanvas);
-    const { view, projection } = cameraMatrices(shown.frame, size);
-    const clipFromWorld = projection.multiply(view).multiply(matrixOf(shown.frame.shown));
+  // In the world view, or in `canvas` where `frame` is drawn at `size` for `picture` (a storyboard's cell).
+  function trace(event, canvas = worldCanvas, frame = shown && shown.frame, size = sizeOf(worldCanvas), picture = data) {
+    if (!frame || !core) return; // the core picks: it loads a moment after the first picture
+    const rect = canvas.getBoundingClientRect();
+    const { view, projection } = cameraMatrices(frame, size, picture);
+    const clipFromWorld = projection.multiply(view).multiply(matrixOf(frame.shown));
     const outcome = core.pickVertex(vertices, JSON.stringify(rowsOf(clipFromWorld)), JSON.stringify([size.width, size.height]),
                                     JSON.stringify([event.clientX - rect.left, event.clientY - rect.top]),
-                                    JSON.stringify([innerWidth, innerHeight]), JSON.stringify(shown.frame.cut || null));
+                                    JSON.stringify([innerWidth, innerHeight]), JSON.stringify(frame.cut || null));
     setTraced(outcome.error ? null : JSON.parse(outcome.text));
   }
 

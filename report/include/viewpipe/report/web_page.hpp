@@ -111,9 +111,11 @@ std::string webStageFigure(const EvaluatedScene& scene, int stage, const Mat4<do
 // there (seen through `cameras[k]`, stage -> clip coordinates, where the page turned the view), the traced
 // point (`traced`, else storyboardTracedPoint) and the overlay: the arrows, headers and footers. The text
 // is the storyboard's size for `options`' text scale (its fontSize beside exportLabelSize at its width).
+// With `shapes`, each cell's lines and faces too (drawFigure's, cut to its picture), in its picture's
+// pixels: the storyboard as one figure, which the page saves as SVG.
 std::string webStoryboard(const EvaluatedScene& scene, int width, int height, const std::optional<Vec3<double>>& traced,
                           const std::vector<Mat4<double>>& cameras, const WebViewOptions& options,
-                          const FontMeasure& measure);
+                          const FontMeasure& measure, bool shapes = false);
 
 // A scene as the page draws it, as JSON: what the page's core makes anew on every edit.
 std::string webPageData(const EvaluatedScene& scene, const WebPageViews& views);
