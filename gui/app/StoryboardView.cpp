@@ -107,7 +107,7 @@ void StoryboardView::layOut()
     std::vector<int> stages;
     for (const auto& cell : cells_)
         stages.push_back(cell->stage);
-    layout_ = layoutStoryboard(stages, width(), height(), labelSize());
+    layout_ = layoutStoryboard(*scene_, stages, traced(), width(), height(), labelSize(), figureFontMeasure());
     overlay_ = layout_.cells.empty() ? Figure{} : storyboardOverlay(*scene_, layout_, traced(), figureFontMeasure(), 1);
     for (std::size_t k = 0; k < cells_.size(); ++k) {
         Cell& cell = *cells_[k];
@@ -119,7 +119,7 @@ void StoryboardView::layOut()
         cell.widget->setGeometry(int(box.min.x()), int(box.min.y()), int(box.max.x() - box.min.x()),
                                  int(box.max.y() - box.min.y()));
         cell.widget->show();
-        styleStoryboardCell(*cell.painter, labelSize(), ticksShown_, traced());
+        styleStoryboardCell(*cell.painter, layout_.labelSize, ticksShown_, traced());
         cell.painter->showMoment(stageAtRest(*cellScene_, cell.stage, framings_));
         cell.widget->update(); // drawn in its next paint, or by the window's renderNow: once
     }

@@ -140,13 +140,16 @@ int pageSteps(const EvaluatedScene& scene)
     return int(scene.pipeline.stages.size()) + 2;
 }
 
-// The scene as one self-contained web page, its views recorded at the options' size.
-std::string scenePage(const std::shared_ptr<const EvaluatedScene>& evaluated, const ExportOptions& options, Steps& step)
+// The scene as one self-contained web page, its views recorded at the options' size, drawn without what
+// --hide names at first (the reader may bring it back: the page's core has the scene whole).
+std::string scenePage(const std::shared_ptr<const EvaluatedScene>& scene, const ExportOptions& options, Steps& step)
 {
-    const WebPageViews views = recordWebViews(evaluated, options.width, options.height, options.scale, options.theme,
-                                              options.framing, std::ref(step), options.textScale / 100.0);
+    const auto shown = withoutHidden(scene, options.hidden);
+    const WebPageViews views = recordWebViews(shown, options.width, options.height, options.scale, options.theme,
+                                              options.framing, std::ref(step), options.textScale / 100.0, options.hidden,
+                                              options.legend);
     step("scene.html");
-    return viewpipe::webPage(*evaluated, views, loadWebAssets("/usr/share/javascript", {}, options.presets));
+    return viewpipe::webPage(*shown, views, loadWebAssets("/usr/share/javascript", {}, options.presets));
 }
 
 const std::vector<Format>& formatTable()
@@ -318,7 +321,8 @@ void writeStoryboardFiles(const std::shared_ptr<const EvaluatedScene>& evaluated
 {
     const int width = options.width * options.scale, height = options.height * options.scale;
     const double labelSize = storyboardLabelSize(width, options.textScale / 100.0);
-    const StoryboardLayout layout = layoutStoryboard(chosen, width, height, labelSize);
+    const Vec3<double> traced = storyboardTracedPoint(*evaluated);
+    const StoryboardLayout layout = layoutStoryboard(*evaluated, chosen, traced, width, height, labelSize, figureFontMeasure());
     if (layout.cells.empty())
         throw InputError("--size", "leaves no room for a storyboard of " + std::to_string(chosen.size()) + " pictures");
     const Box2& cell = layout.cells.front().picture;
@@ -326,8 +330,7 @@ void writeStoryboardFiles(const std::shared_ptr<const EvaluatedScene>& evaluated
     OffscreenPainter offscreen(cellScene, int(cell.max.x() - cell.min.x()), int(cell.max.y() - cell.min.y()), 1,
                                options.theme, false);
     ScenePainter& painter = *offscreen.painter;
-    const Vec3<double> traced = storyboardTracedPoint(*evaluated);
-    styleStoryboardCell(painter, labelSize, !options.hidden.count("ticks"), traced);
+    styleStoryboardCell(painter, layout.labelSize, !options.hidden.count("ticks"), traced);
     painter.setLineScale(options.scale);
     painter.orbit(0, 0, options.zoom);
     const StageFramings framing = stageFramings(*cellScene, options.framing);
@@ -467,7 +470,7 @@ std::vector<int> parseStages(const std::string& text, int stageCount)
 
 WebPageViews recordWebViews(const std::shared_ptr<const EvaluatedScene>& evaluated, int width, int height, int scale,
                             Theme theme, FramingMode framing, const std::function<void(const std::string&)>& step,
-                            double textScale)
+                            double textScale, const std::set<std::string>& hidden, LegendPlace legend)
 {
     validatePictureSize(width, height, scale);
     WebViewOptions options;
@@ -479,6 +482,8 @@ WebPageViews recordWebViews(const std::shared_ptr<const EvaluatedScene>& evaluat
     options.lineScale = scale;
     options.theme = theme;
     options.framing = framing;
+    options.hidden = hidden;
+    options.legend = legend;
     const int n = int(evaluated->pipeline.stages.size());
     return webPageViews(*evaluated, options, figureFontMeasure(), [&](int k) {
         step("web page: stage " + std::to_string(k) + " of " + std::to_string(n));

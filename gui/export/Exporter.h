@@ -85,10 +85,12 @@ void exportWebPage(const std::shared_ptr<const EvaluatedScene>& scene, const std
 // every stage at rest as its picture of that size, scale and framing shows
 // it, and the app's transitions frame by frame, text measured in the
 // pictures' font. Throws InputError for a bad size or
-// scale; `step` hears of each stage. `textScale` as OffscreenPainter's.
+// scale; `step` hears of each stage. `textScale` as OffscreenPainter's; `hidden` and `legend` as export's
+// --hide and --legend (the scene already without what `hidden` names), the page's choices at first.
 WebPageViews recordWebViews(const std::shared_ptr<const EvaluatedScene>& scene, int width, int height, int scale,
                             Theme theme, FramingMode framing, const std::function<void(const std::string&)>& step,
-                            double textScale = 1);
+                            double textScale = 1, const std::set<std::string>& hidden = {},
+                            LegendPlace legend = LegendPlace::Best);
 
 // The CAD layout of seed 001 for a scene's objects, as one PNG: the top view
 // above the front view, the (right) side view beside it, and the isometric

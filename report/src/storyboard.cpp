@@ -69,6 +69,16 @@ StoryboardLayout layoutStoryboard(const std::vector<int>& stages, int width, int
 
 namespace {
 
+// The header of a stage's cell: its number and matrix.
+std::string headerText(const EvaluatedScene& scene, int stage)
+{
+    return stage == 0 ? "0. World"
+                      : std::to_string(stage) + ". $" + stageSymbolMath(scene.pipeline.stages[std::size_t(stage - 1)].kind) + "$";
+}
+
+// An arrow's length before a header, and the room after it, in label sizes.
+constexpr double kArrowLength = 1.6, kAfterArrow = 0.3;
+
 // Sutherland–Hodgman: the part of a convex or concave polygon on the inner side of one edge of a box.
 std::vector<Vec2<double>> clipPolygon(const std::vector<Vec2<double>>& polygon, int axis, double bound, bool below)
 {
@@ -172,6 +182,23 @@ std::string tracedCoordinates(const EvaluatedScene& scene, const Vec3<double>& w
     return text + ")";
 }
 
+StoryboardLayout layoutStoryboard(const EvaluatedScene& scene, const std::vector<int>& stages, const Vec3<double>& traced,
+                                  int width, int height, double labelSize, const FontMeasure& measure)
+{
+    // The text smaller, never under its size at 100 %, until the widest header (with its arrow) and footer fit.
+    const double floor = std::min(labelSize, storyboardLabelSize(width, 1));
+    for (double size = labelSize;; size = std::max(floor, 0.95 * size)) {
+        StoryboardLayout layout = layoutStoryboard(stages, width, height, size);
+        double widest = 0;
+        for (const int k : stages)
+            widest = std::max({widest, (kArrowLength + kAfterArrow) * size + measure(headerText(scene, k), size, true).x(),
+                               measure(tracedCoordinates(scene, traced, k), smallTextSize(size), false).x()});
+        const bool fits = layout.cells.empty() || widest <= layout.cells.front().footer.max.x() - layout.cells.front().footer.min.x();
+        if (fits || size == floor)
+            return layout;
+    }
+}
+
 Figure storyboardOverlay(const EvaluatedScene& scene, const StoryboardLayout& layout, const Vec3<double>& traced,
                          const FontMeasure& measure, double lineScale)
 {
@@ -195,19 +222,15 @@ Figure storyboardOverlay(const EvaluatedScene& scene, const StoryboardLayout& la
             // Across the gap where the picture before is in the same row.
             const bool rowStart = i % std::size_t(layout.columns) == 0;
             const double from = rowStart ? cell.header.min.x() : cell.header.min.x() - 0.8 * gap,
-                         tip = from + 1.6 * size, head = 0.45 * size;
+                         tip = from + kArrowLength * size, head = 0.45 * size;
             const double width = lineWidthOf(Element::Frame, false) * overlay.lineScale; // as TikZ's style draws it
             overlay.shapes.push_back({Element::Frame, false, 1, width, {{from, middle}, {tip - head, middle}}, 0});
             overlay.shapes.push_back({Element::Frame, true, 1, 0,
                                       {{tip, middle}, {tip - head, middle - 0.45 * head}, {tip - head, middle + 0.45 * head}},
                                       0});
-            textLeft = tip + 0.3 * size;
+            textLeft = tip + kAfterArrow * size;
         }
-        const std::string stage =
-            cell.stage == 0 ? "0. World"
-                            : std::to_string(cell.stage) + ". $" +
-                                  stageSymbolMath(scene.pipeline.stages[std::size_t(cell.stage - 1)].kind) + "$";
-        label(Element::Objects, stage, {textLeft, middle}, false);
+        label(Element::Objects, headerText(scene, cell.stage), {textLeft, middle}, false);
         // Named where the footer has room for the name, the coordinates alone where it has not.
         const std::string coordinates = tracedCoordinates(scene, traced, cell.stage), named = "traced " + coordinates;
         const bool roomForName = measure(named, small, false).x() <= cell.footer.max.x() - cell.footer.min.x();

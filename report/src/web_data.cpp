@@ -334,6 +334,8 @@ json sceneData(const EvaluatedScene& scene, const WebPageViews& views)
                        {"note", scene.effectsNote},
                        {"projected", projected},
                        {"hideChoices", hideChoices},
+                       // The choices the page was made with (export's --hide and --legend): the reader's at first.
+                       {"chosen", {{"hidden", options.hidden}, {"legend", legendPlaceName(options.legend)}}},
                        {"legendChoices", legendChoices}};
     return data;
 }
@@ -535,8 +537,9 @@ std::string webStoryboard(const EvaluatedScene& scene, int width, int height, co
     for (int k = 0; k <= int(scene.pipeline.stages.size()); ++k)
         stages.push_back(k);
     const double textScale = o.fontSize / exportLabelSize(o.width, 1);
-    const StoryboardLayout layout = layoutStoryboard(stages, width, height, storyboardLabelSize(width, textScale));
     const Vec3<double> point = traced ? *traced : storyboardTracedPoint(scene);
+    const StoryboardLayout layout =
+        layoutStoryboard(scene, stages, point, width, height, storyboardLabelSize(width, textScale), measure);
     const StageFramings framings = stageFramings(scene, o.framing);
     json cells = json::array();
     for (const StoryboardCell& cell : layout.cells) {

@@ -151,8 +151,9 @@ TEST(Lesson, AnOpenQuestionHoldsTheStagesBeforeItsAnswer)
             EXPECT_FALSE(asking.stageTexts) << entry.path();
             EXPECT_EQ(asking.lastStage, askingStage(step));
             const Question& q = *step.question;
-            if (q.kind == QuestionKind::Where || q.kind == QuestionKind::SignW || q.kind == QuestionKind::WhichStage)
+            if (q.kind == QuestionKind::Where || q.kind == QuestionKind::SignW || q.kind == QuestionKind::WhichStage) {
                 EXPECT_LT(asking.lastStage, q.stage) << entry.path() << ": the stage asked about is held back";
+            }
         }
     }
     EXPECT_GT(questions, 30);

@@ -167,6 +167,48 @@ TEST(Storyboard, ShapesAreCutToTheCell)
         EXPECT_TRUE(p.x() >= 0 && p.x() <= 50 && p.y() >= 0 && p.y() <= 50) << p.transpose();
 }
 
+// Text as wide as its characters (not its bytes: a minus sign is one) at 0.6 of its size.
+FontMeasure glyphMeasure()
+{
+    return [](const std::string& text, double pixels, bool) {
+        const std::string plain = mathPlainText(text);
+        const auto glyphs = std::count_if(plain.begin(), plain.end(), [](char c) { return (c & 0xC0) != 0x80; });
+        return Vec2<double>(0.6 * pixels * double(glyphs), pixels);
+    };
+}
+
+// No header or footer is cut at a projector's text size (the house's S_per footer lost its z at 200 %
+// in 1280x720): the text is set smaller where the cells are too narrow for it, never under its size at 100 %.
+TEST(Storyboard, NoHeaderOrFooterIsCutAtLargeText)
+{
+    const auto house = builtIn("house.json");
+    const std::vector<int> stages = allStages(*house);
+    const Vec3<double> traced = storyboardTracedPoint(*house);
+    const auto cut = [&](const StoryboardLayout& layout) {
+        const Figure overlay = storyboardOverlay(*house, layout, traced, glyphMeasure(), 1);
+        std::string cutTexts; // each text past its cell's right edge
+        for (std::size_t k = 0; k < layout.cells.size(); ++k)
+            for (const std::size_t text : {2 * k, 2 * k + 1})
+                if (overlay.labels[text].box.max.x() > layout.cells[k].footer.max.x() + 0.5)
+                    cutTexts += " \"" + overlay.labels[text].text + "\"";
+        return cutTexts;
+    };
+    for (const auto& [width, height] : {std::pair{1280, 720}, std::pair{800, 450}, std::pair{1920, 1080}})
+        for (const double textScale : {1.0, 2.0}) {
+            const double label = storyboardLabelSize(width, textScale);
+            const StoryboardLayout layout = layoutStoryboard(*house, stages, traced, width, height, label, glyphMeasure());
+            ASSERT_EQ(layout.cells.size(), stages.size()) << width << "x" << height << " at " << textScale;
+            EXPECT_LE(layout.labelSize, label);
+            EXPECT_GE(layout.labelSize, storyboardLabelSize(width, 1));
+            if (textScale == 1) { // where it fits as asked, as asked
+                EXPECT_EQ(layout.labelSize, label);
+            }
+            EXPECT_EQ(cut(layout), "") << width << "x" << height << " at " << textScale << ": " << layout.columns << " columns";
+        }
+    // Laid out for the pictures alone, three columns cut the footers at 200 %.
+    EXPECT_NE(cut(layoutStoryboard(stages, 1280, 720, storyboardLabelSize(1280, 2))), "");
+}
+
 // The page's storyboard (webStoryboard, which the page's core hands it) is this one: the same cells, headers and
 // footers; each cell's labels placed inside its own picture, none over another; the point traced the page's.
 TEST(Storyboard, ThePagesIsTheSameLayoutWithEachCellsLabelsPlacedInIt)

@@ -140,14 +140,16 @@ TEST(WorldView, AFramingHoldsEveryFramedElementOfItsStage)
                 const auto q = projectPoint(shown.matrixOf(p), world);
                 if (q && shown.shows(world)) {
                     EXPECT_TRUE(moment.framing.drawn.contains(*q)) << "stage " << k << ": " << world.transpose();
-                    if (framedElement(p.element))
+                    if (framedElement(p.element)) {
                         EXPECT_TRUE(moment.framing.box.contains(*q)) << "stage " << k << ": " << world.transpose();
+                    }
                 }
             }
         }
         for (const Marker& marker : scene->markers)
-            if (const auto q = projectPoint(moment.drawn, marker.point); q && shown.shows(marker.point))
+            if (const auto q = projectPoint(moment.drawn, marker.point); q && shown.shows(marker.point)) {
                 EXPECT_TRUE(moment.framing.box.contains(*q)) << "stage " << k << ": " << marker.point.transpose();
+            }
     }
 }
 

@@ -1203,6 +1203,43 @@ TEST_F(WebPage, TheReaderChoosesWhatIsDrawnAndTheLinkKeepsIt)
         ADD_FAILURE() << problem;
 }
 
+// A page made with export's --hide and --legend starts from those choices, its controls saying so; a reader's
+// first choice keeps them (it brought back what the export left out), and taking one back draws it again.
+TEST_F(WebPage, APageMadeWithChoicesStartsFromThem)
+{
+    const fs::path out = *dir_ / "house-chosen";
+    const Finished run = viewpipe({"export", QString::fromStdString(kData + "/scenes/house.json"), "--out", QString::fromStdString(out.string()),
+                                   "--format", "html", "--hide", "projectors", "--legend", "below", "--quiet"});
+    ASSERT_EQ(run.exitCode, 0) << run.output;
+    Browser browser(*dir_ / "profile-chosen");
+    browser.page("Page.navigate", {{"url", "file://" + (out / "scene.html").string() + "#stage=3"}});
+    ASSERT_TRUE(browser.waitFor("document.body.dataset.ready === '1' && document.body.dataset.core === '1'"));
+    const auto house = viewpipe::evaluateScene(viewpipe::loadScene(kData + "/scenes/house.json"));
+    const long all = long(house->primitives.size());
+    const long projectors = std::count_if(house->primitives.begin(), house->primitives.end(),
+                                          [](const viewpipe::Primitive& p) { return p.element == viewpipe::Element::Projectors; });
+    const std::string checked = "[...document.querySelectorAll('#leave-out input:checked')].map((box) => box.value).join()";
+    EXPECT_EQ(browser.evaluate("window.viewpipe.primitives()").get<long>(), all - projectors);
+    EXPECT_EQ(browser.evaluate(checked), "projectors");
+    EXPECT_EQ(browser.evaluate("document.getElementById('legend-place').value"), "below");
+    // Another choice: the projectors stay out.
+    browser.evaluate("document.querySelector('#leave-out input[value=ticks]').click()");
+    ASSERT_TRUE(browser.waitFor("location.hash.includes('hide=projectors%2Cticks')")) << browser.evaluate("location.hash");
+    EXPECT_EQ(browser.evaluate("window.viewpipe.primitives()").get<long>(), all - projectors);
+    // Both taken back: the projectors drawn, and the link says nothing is left out, opened anew too.
+    for (const char* name : {"projectors", "ticks"})
+        browser.evaluate(std::string("document.querySelector('#leave-out input[value=") + name + "]').click()");
+    ASSERT_TRUE(browser.waitFor("window.viewpipe.primitives() === " + std::to_string(all)));
+    const std::string link = browser.evaluate("location.href");
+    browser.page("Page.navigate", {{"url", "about:blank"}});
+    browser.page("Page.navigate", {{"url", link}});
+    ASSERT_TRUE(browser.waitFor("document.body.dataset.ready === '1' && document.body.dataset.core === '1' && "
+                                "window.viewpipe.primitives() === " + std::to_string(all)));
+    EXPECT_EQ(browser.evaluate(checked), "");
+    for (const std::string& problem : browser.problems())
+        ADD_FAILURE() << problem;
+}
+
 // The zoom (the field, as export --zoom) is about the subject: about the focal point the core framed it on, where
 // the text leaves it room, not about the view's center. Every point's picture moves away from that one point
 // twice as far at twice the zoom.

@@ -36,7 +36,7 @@
     if (document.activeElement !== zoomField) zoomField.value = String(Number(state.zoom.toFixed(3)));
   }
   const choicesKey = () => JSON.stringify([state.hidden, state.legend]);
-  const defaultChoices = choicesKey(); // nothing left out, the legend where it costs least
+  const defaultChoices = JSON.stringify([madeWith.hidden, madeWith.legend]);
   function choose(change) {
     Object.assign(state, change);
     writeFragment();

@@ -2,6 +2,8 @@
   // ---- State ------------------------------------------------------------------
   const state = { stage: 0, step: 0, yaw: 0, pitch: 0, zoom: 1, figure: false, traced: null, layout: 'stages',
                   hidden: [], legend: 'best' }; // hidden and legend: the names export's --hide and --legend take
+  // What the page was made with (export's --hide and --legend): what is drawn at first, and where a link says nothing.
+  const madeWith = { hidden: data.chosen.hidden, legend: data.chosen.legend };
   let shown = null; // the frame drawn: {frame, atRest, ghost}
   let animation = null;
   let playing = null;
@@ -25,8 +27,9 @@
     state.layout = !lesson && values.get('layout') === 'storyboard' ? 'storyboard' : 'stages';
     // What is drawn, by the names the core offers (a lesson's steps say it themselves).
     const offered = (choices, name) => !lesson && choices.some((choice) => choice.name === name);
-    state.hidden = (values.get('hide') || '').split(',').filter((name) => offered(data.hideChoices, name)).sort();
-    state.legend = offered(data.legendChoices, values.get('legend')) ? values.get('legend') : 'best';
+    state.hidden = values.has('hide')
+      ? values.get('hide').split(',').filter((name) => offered(data.hideChoices, name)).sort() : [...madeWith.hidden];
+    state.legend = offered(data.legendChoices, values.get('legend')) ? values.get('legend') : madeWith.legend;
     body.classList.toggle('figure', state.figure);
     pendingLink = values.get('scene'); // for the core, once it is loaded
   }
@@ -40,8 +43,8 @@
     if (state.zoom !== 1) values.set('zoom', state.zoom.toFixed(3));
     if (state.figure) values.set('figure', '');
     if (state.layout === 'storyboard') values.set('layout', 'storyboard');
-    if (state.hidden.length) values.set('hide', state.hidden.join(','));
-    if (state.legend !== 'best') values.set('legend', state.legend);
+    if (state.hidden.join(',') !== madeWith.hidden.join(',')) values.set('hide', state.hidden.join(','));
+    if (state.legend !== madeWith.legend) values.set('legend', state.legend);
     const linked = linkedSceneText();
     if (linked) values.set('scene', linked);
     history.replaceState(null, '', '#' + values.toString().replace(/=$|=(?=&)/g, ''));

@@ -34,6 +34,11 @@ struct StoryboardLayout {
     std::vector<StoryboardCell> cells;
 };
 StoryboardLayout layoutStoryboard(const std::vector<int>& stages, int width, int height, double labelSize);
+// The same for a scene's `stages` tracing `traced`, its text (layout.labelSize) smaller than `labelSize`
+// where a cell would cut its widest header (with its arrow) or footer (the traced point's coordinates),
+// never under the size at 100 % (storyboardLabelSize(width, 1)); text measured by `measure`.
+StoryboardLayout layoutStoryboard(const EvaluatedScene& scene, const std::vector<int>& stages, const Vec3<double>& traced,
+                                  int width, int height, double labelSize, const FontMeasure& measure);
 
 // A figure's lines and faces cut to a box (its picture): a storyboard's cell draws nothing on its
 // neighbours in any format, SVG too, where Qt writes no clip region.
