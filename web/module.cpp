@@ -13,14 +13,17 @@
 #include <set>
 #include <stdexcept>
 #include <string>
+#include <utility>
 
 #include "viewpipe/camera_choices.hpp"
+#include "viewpipe/effects.hpp"
 #include "viewpipe/error.hpp"
 #include "viewpipe/evaluated_scene.hpp"
 #include "viewpipe/lesson.hpp"
 #include "viewpipe/math_text.hpp"
 #include "viewpipe/report/code.hpp"
 #include "viewpipe/report/report.hpp"
+#include "viewpipe/report/trace_table.hpp"
 #include "viewpipe/report/web_page.hpp"
 #include "viewpipe/report/world_view.hpp"
 #include "viewpipe/scene.hpp"
@@ -278,12 +281,45 @@ Outcome pickVertexAt(const emscripten::val& vertices, const std::string& drawn, 
     });
 }
 
+// A scene's text read without its objects, for what its camera and effects decide: the meshes may not be
+// in the module's files (a page may leave them out).
+Scene cameraScene(const std::string& sceneText)
+{
+    nlohmann::json scene = nlohmann::json::parse(sceneText);
+    scene.erase("objects");
+    return parseScene(scene.dump(), kSceneFolder);
+}
+
 // A lesson's question (`question` as the lesson file holds it) about `sceneText`.
 Question questionAbout(const std::string& sceneText, const std::string& question)
 {
-    nlohmann::json scene = nlohmann::json::parse(sceneText);
-    scene.erase("objects"); // the answer is the camera's: meshes left out of the page do not matter
-    return parseQuestion(question, parseScene(scene.dump(), kSceneFolder));
+    return parseQuestion(question, cameraScene(sceneText));
+}
+
+// A vertex traced through the stages, as the app's Matrices panel shows it (report::traceTable, the
+// pipeline computed exactly too): `point` [x, y, z], rows up to stage `lastRow`. {"rows": [{"stage",
+// "cells"}], "verdict"}, texts with math between dollars, and "spoken": the point as a screen reader says it.
+Outcome traceTable(const std::string& sceneText, const std::string& point, int lastRow)
+{
+    return guarded([&] {
+        static std::string text; // the pipelines of the scene last traced: a click or a step traces again
+        static std::optional<std::pair<Pipeline<double>, Pipeline<Exact>>> pipelines;
+        if (!pipelines || text != sceneText) {
+            pipelines.reset();
+            const Scene scene = cameraScene(sceneText);
+            pipelines.emplace(buildPipeline(scene.camera, scene.effects), exactPipeline(scene));
+            text = sceneText;
+        }
+        const nlohmann::json at = nlohmann::json::parse(point);
+        const report::TraceTable table =
+            report::traceTable(pipelines->first, &pipelines->second, Vec3<double>(at.at(0), at.at(1), at.at(2)), lastRow);
+        nlohmann::json rows = nlohmann::json::array();
+        for (const report::TraceTable::Row& row : table.rows)
+            rows.push_back({{"stage", row.stage}, {"cells", row.cells}});
+        const std::array<std::string, 4>& world = table.rows.front().cells;
+        const std::string spoken = mathSpokenText("(" + world[0] + ", " + world[1] + ", " + world[2] + ")");
+        return Outcome{nlohmann::json{{"rows", rows}, {"verdict", table.verdict}, {"spoken", spoken}}.dump(), ""};
+    });
 }
 
 // A student's answer to `q` as the page gives it: the kind's field, {"where":
@@ -468,14 +504,9 @@ Outcome withCameraChoice(const std::string& sceneText, const std::string& field,
 
 // The scene camera's numbers typed as exact expressions, {"view.prp[2]": "20*sqrt(2)"}
 // (Scene::typedExpressions): the fields whose JSON holds text for a number.
-// Read without the objects: their meshes may not be in the module's files.
 Outcome typedExpressionsOf(const std::string& sceneText)
 {
-    return guarded([&] {
-        nlohmann::json scene = nlohmann::json::parse(sceneText);
-        scene.erase("objects");
-        return Outcome{nlohmann::json(parseScene(scene.dump(), kSceneFolder).typedExpressions).dump(), ""};
-    });
+    return guarded([&] { return Outcome{nlohmann::json(cameraScene(sceneText).typedExpressions).dump(), ""}; });
 }
 
 } // namespace
@@ -497,6 +528,7 @@ EMSCRIPTEN_BINDINGS(viewpipe)
     emscripten::function("placeLabels", &placeLabels);
     emscripten::function("stageFigure", &stageFigure);
     emscripten::function("pickVertex", &pickVertexAt);
+    emscripten::function("traceTable", &traceTable);
     emscripten::function("storyboard", &storyboard);
     emscripten::function("checkAnswer", &checkAnswer);
     emscripten::function("lessonResults", &lessonResults);

@@ -6,17 +6,11 @@
 #include <QVBoxLayout>
 
 #include "viewpipe/exact.hpp"
-#include "viewpipe/format.hpp"
 #include "viewpipe/report/stage_symbols.hpp"
+#include "viewpipe/report/trace_table.hpp"
 
 namespace viewpipe::gui {
 namespace {
-
-// As the pictures set numbers: a minus sign, not a hyphen.
-QString number(double x)
-{
-    return QString::fromStdString(formatSignificant(x, 5)).replace('-', QChar(0x2212));
-}
 
 // A space of the panel's font before a column's text: the cells' pixel padding
 // stays 3 px when the text grows, and "0" "−20" at 200 % read as "0−20".
@@ -44,18 +38,12 @@ QString table(const QString& caption, const std::array<QString, 16>& cells, cons
     return html + "</table>";
 }
 
-// x as the textbook writes it where its exact value reads so, else 5 digits.
-QString number(double x, const Exact* exact)
-{
-    return exact && exact->readsExactly() ? mathHtml("$" + exact->latex() + "$") : number(x);
-}
-
 std::array<QString, 16> numbers(const Mat4<double>& m, const Mat4<Exact>* exact = nullptr)
 {
     std::array<QString, 16> cells;
     for (int r = 0; r < 4; ++r)
         for (int c = 0; c < 4; ++c)
-            cells[std::size_t(r * 4 + c)] = number(m(r, c), exact ? &(*exact)(r, c) : nullptr);
+            cells[std::size_t(r * 4 + c)] = mathHtml(report::tableCell(m(r, c), exact ? &(*exact)(r, c) : nullptr));
     return cells;
 }
 
@@ -145,35 +133,15 @@ void MatrixPanel::showTrace(const Pipeline<double>& pipeline, const Pipeline<Exa
         trace_->setText(tr("Click a vertex of an object to trace it through the stages."));
         return;
     }
-    const PointTrace<double> t = tracePoint(pipeline, *point);
-    // The vertex as its file writes it (0.1 is one tenth), traced exactly.
-    const Vec4<Exact> world(fromDecimal<Exact>(point->x()), fromDecimal<Exact>(point->y()),
-                            fromDecimal<Exact>(point->z()), Exact(1));
-    std::optional<PointTrace<Exact>> e;
-    if (exact)
-        e = tracePoint(*exact, Vec3<Exact>(world.head<3>()));
-    auto row = [](const QString& name, const Vec4<double>& p, const Vec4<Exact>* q, bool current) {
-        QString cells = QString("<tr%1><td>%2</td>").arg(current ? " style='font-weight:bold'" : "", name);
-        for (int k = 0; k < 4; ++k)
-            cells += "<td align='right'>" + kColumnGap + number(p[k], q ? &(*q)[k] : nullptr) + "</td>";
-        return cells + "</tr>";
-    };
+    const report::TraceTable t = report::traceTable(pipeline, exact, *point, lastRow);
     QString html = tr("<b>Traced vertex</b> (x, y, z, w):<table cellspacing='0' cellpadding='2'>");
-    html += row(tr("world"), point->homogeneous(), e ? &world : nullptr, stage == 0);
-    for (std::size_t k = 0; k < pipeline.stages.size() && int(k) < lastRow; ++k)
-        html += row(mathHtml("$" + stageSymbolMath(pipeline.stages[k].kind) + "$"), t.afterStage[k],
-                    e ? &e->afterStage[k] : nullptr, int(k) + 1 == stage);
-    html += "</table>";
-    if (lastRow < int(pipeline.stages.size()))
-        return trace_->setText(html);
-    if (t.divided)
-        html += tr("After the divide: (%1, %2, %3); ")
-                    .arg(number(t.divided->x(), e && e->divided ? &e->divided->x() : nullptr),
-                         number(t.divided->y(), e && e->divided ? &e->divided->y() : nullptr),
-                         number(t.divided->z(), e && e->divided ? &e->divided->z() : nullptr));
-    const bool inside = e ? e->inside : t.inside; // decided exactly where the exact pipeline is at hand
-    html += inside ? tr("inside the canonical volume.") : tr("outside the canonical volume.");
-    trace_->setText(html);
+    for (std::size_t k = 0; k < t.rows.size(); ++k) {
+        html += QString("<tr%1><td>%2</td>").arg(int(k) == stage ? " style='font-weight:bold'" : "", mathHtml(t.rows[k].stage));
+        for (const std::string& cell : t.rows[k].cells)
+            html += "<td align='right'>" + kColumnGap + mathHtml(cell) + "</td>";
+        html += "</tr>";
+    }
+    trace_->setText(html + "</table>" + mathHtml(t.verdict));
 }
 
 void MatrixPanel::showWaiting(const QString& why)

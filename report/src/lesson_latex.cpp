@@ -19,7 +19,7 @@ namespace {
 
 constexpr int kDigits = 4; // the matrices' decimals, as the app shows them
 
-// As the web page writes numbers: six significant digits, nothing below 1e-12.
+// A lesson's point as it states it: six significant digits, nothing below 1e-12.
 std::string number(double x)
 {
     return std::abs(x) < 1e-12 ? "0" : formatSignificant(x, 6);

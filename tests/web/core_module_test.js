@@ -208,6 +208,22 @@ require(path.resolve(modulePath))().then((core) => {
       { step: 4, kind: 'where', answer: null, correct: false, revealed: true }] });
   });
 
+  // The trace table as the app's Matrices panel writes it (report::traceTable), the page's: the house's
+  // corner (0, 0, 54) after T(-PRP) is (-8, -6, -30), exact; a coordinate that does not read exactly in five
+  // digits with a minus sign. The scene's meshes need not be at hand (a page may leave them out).
+  check('the trace table, as the app writes it', () => {
+    const scene = JSON.stringify({ ...house, objects: [{ type: 'mesh', path: 'not-here.obj' }] });
+    const table = JSON.parse(core.traceTable(scene, JSON.stringify([0, 0, 54]), 5).text);
+    assert.strictEqual(table.rows.length, 6);
+    assert.deepStrictEqual(table.rows[3], { stage: '$T(-\\mathit{PRP})$', cells: ['$-8$', '$-6$', '$-30$', '$1$'] });
+    assert.match(table.verdict, /^After the divide: \(.*\); inside the canonical volume\.$/);
+    assert.strictEqual(table.spoken, '(0, 0, 54)');
+    const third = JSON.parse(core.traceTable(scene, JSON.stringify([-1 / 3, 0, 54]), 3).text);
+    assert.strictEqual(third.rows.length, 4);
+    assert.deepStrictEqual(third.rows[3].cells, ['\u22128.3333', '$-6$', '$-30$', '$1$']);
+    assert.strictEqual(third.verdict, '');
+  });
+
   // The page's fields that hold an exact expression, by the core's field path; none for a scene of numbers.
   check('the expressions typed, by field path', () => {
     const typed = (view) => core.typedExpressions(JSON.stringify({ ...house, view: { ...house.view, ...view } }));

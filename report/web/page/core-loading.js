@@ -29,6 +29,7 @@
       if (filesBeforeCore) openFiles(filesBeforeCore);
     }
     body.dataset.core = '1';
+    if (state.traced) showPanels(); // the trace, which the core writes
     if (storyboardShown()) drawStoryboard(); // the core draws it
   });
 

@@ -32,9 +32,6 @@
       element.textContent = latex;
     }
   }
-  function format(x) {
-    return Math.abs(x) < 1e-12 ? '0' : Number(x.toPrecision(6)).toString();
-  }
   // The stages' names, left out while a question is open (a name may be its answer).
   function showStageList() {
     if (asking()) return void (list.textContent = '');
@@ -47,26 +44,34 @@
       list.appendChild(item);
     });
   }
+  // The traced vertex after each stage, as the core writes it for the app's Matrices panel: the core's table
+  // ({rows, verdict, spoken}), or null.
   function showTrace() {
     const element = document.getElementById('trace');
     if (!state.traced) {
       element.innerHTML = '<p>Click a vertex of an object (or press T) to trace it through the stages.</p>';
-      return;
+      return null;
     }
+    element.textContent = coreFailed || (!core ? "The trace is computed by ViewPipe's core, which is loading." : '');
+    if (!core) return null;
+    // In a lesson, rows up to the stage shown: a later row may be a later question's answer.
+    const outcome = core.traceTable(data.scene, JSON.stringify(state.traced), lesson ? state.stage : last);
+    if (outcome.error) {
+      element.textContent = outcome.error;
+      return null;
+    }
+    const traced = JSON.parse(outcome.text);
     const table = document.createElement('table');
     table.innerHTML = '<caption>The traced vertex after each stage</caption><tr><th>stage</th><th>x</th><th>y</th><th>z</th><th>w</th></tr>';
-    let p = new THREE.Vector4(...state.traced, 1);
-    // In a lesson, rows up to the stage shown: a later row may be a later question's answer.
-    stages.slice(0, lesson ? state.stage + 1 : stages.length).forEach((stage, k) => {
-      if (k > 0) p = stage.divides ? (p.w !== 0 ? p.clone().divideScalar(p.w) : p) : p.clone().applyMatrix4(matrixOf(stage.matrix));
+    traced.rows.forEach((entry, k) => {
       const row = table.insertRow();
-      const cell = row.insertCell();
-      if (k === 0) cell.textContent = 'world';
-      else setRichText(cell, `$${stage.symbolMath}$`);
-      for (const value of [p.x, p.y, p.z, p.w]) row.insertCell().textContent = format(value);
+      for (const text of [entry.stage, ...entry.cells]) setRichText(row.insertCell(), text);
       if (k === state.stage) row.style.fontWeight = 'bold';
     });
-    element.replaceChildren(table);
+    const verdict = document.createElement('p');
+    setRichText(verdict, traced.verdict);
+    element.replaceChildren(table, verdict);
+    return traced;
   }
   // Each view's accessible name: the stage and what the view shows; no stage while a question is open (a name may
   // be its answer). The overlays' labels are the same picture's: left out of the names' tree.

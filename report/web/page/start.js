@@ -17,6 +17,7 @@
     // The labels the core places for the view as the user has turned it (export pixels), and the stage's at rest.
     turnedLabels: () => labelsTurned(),
     restLabels: () => stageAt(state.stage).labels,
+    traced: () => state.traced, // the vertex traced, [x, y, z] or null
   };
 
   readFragment();

@@ -27,9 +27,9 @@
   }
   function setTraced(point) {
     state.traced = point;
-    showTrace();
+    const traced = showTrace();
     drawShown();
     if (point) document.getElementById('live').textContent =
-      `Traced the vertex (${point.map(format).join(', ')}): its coordinates after each stage are in the table.`;
+      `Traced the vertex${traced ? ' ' + traced.spoken : ''}: its coordinates after each stage are in the table.`;
   }
 
