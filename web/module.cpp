@@ -479,6 +479,13 @@ Outcome withPastedCode(const std::string& sceneText, const std::string& pasted)
     });
 }
 
+// The scene with a field of the page's Scene panel set to the text typed (withTypedField: a decimal in a
+// number's field is that number, other text stays text for parseScene to read): its JSON anew, or why not.
+Outcome withTypedFieldOf(const std::string& sceneText, const std::string& path, const std::string& typed, bool number)
+{
+    return guarded([&] { return Outcome{withTypedField(sceneText, path, typed, number), ""}; });
+}
+
 // The scene camera's settings picked from a list, as the app's Parameters
 // list them (cameraChoices): [{"field", "title", "options", "chosen"}].
 Outcome cameraChoicesOf(const std::string& sceneText)
@@ -536,6 +543,7 @@ EMSCRIPTEN_BINDINGS(viewpipe)
     emscripten::function("cameraCode", &cameraCode);
     emscripten::function("withCodeNumber", &withCodeNumber);
     emscripten::function("withPastedCode", &withPastedCode);
+    emscripten::function("withTypedField", &withTypedFieldOf);
     emscripten::function("steppedValue", &viewpipe::code::steppedValue);
     emscripten::function("cameraChoices", &cameraChoicesOf);
     emscripten::function("withCameraChoice", &withCameraChoice);

@@ -2,6 +2,7 @@
 
 #include "file_paths.hpp"
 #include "json_fields.hpp"
+#include "parse_number.hpp"
 
 #include "viewpipe/exact.hpp"
 #include "viewpipe/format.hpp"
@@ -892,6 +893,22 @@ std::vector<Preset> presetScenes(const std::filesystem::path& scenes)
 std::string sceneToJson(const Scene& scene)
 {
     return written(sceneTree(scene));
+}
+
+std::string withTypedField(const std::string& sceneText, const std::string& path, const std::string& typed, bool number)
+{
+    Written tree = Written::parse(sceneText);
+    Written* value = valueAt(tree, path);
+    if (!value)
+        throw InputError(path, "is not a field of the scene");
+    const std::size_t first = typed.find_first_not_of(" \t\n\r"), last = typed.find_last_not_of(" \t\n\r");
+    const std::string text = first == std::string::npos ? "" : typed.substr(first, last - first + 1);
+    const std::optional<double> decimal = number ? parseDouble(text) : std::nullopt;
+    if (decimal && std::isfinite(*decimal))
+        *value = *decimal;
+    else
+        *value = text;
+    return written(tree);
 }
 
 std::map<std::string, std::string> heldExpressions(const Scene& scene)

@@ -209,5 +209,29 @@ TEST(Scene, SavingChangesOnlyTheValuesEdited)
     std::filesystem::remove_all(dir);
 }
 
+// A field typed into the web page's Scene panel: a decimal as people type it is that number in a number's field,
+// any other text stays text (an expression the scene reads, or a refusal it names); the scene written as
+// sceneToJson writes scenes, its keys in their order.
+TEST(Scene, AFieldTypedIsANumberOnlyWhereItIsADecimal)
+{
+    const std::string house = withView(kHouseView);
+    const auto prp = [](const std::string& text) { return parseScene(text, kData).camera; };
+    const std::string moved = withTypedField(house, "view.prp[0]", " +20. ", true);
+    EXPECT_NE(moved.find(R"("prp": [20, 6, 84])"), std::string::npos) << moved;
+    EXPECT_LT(moved.find(R"("name")"), moved.find(R"("view")")) << moved;
+    EXPECT_TRUE(prp(moved) == prp(withView(R"({"projection": "perspective", "vrp": [0, 0, 0], "vpn": [0, 0, 1],
+        "vup": [0, 1, 0], "prp": [20, 6, 84], "window": [-50, 50, -50, 50], "front": 60, "back": 25})")));
+    for (const auto& [typed, written] : {std::pair<std::string, std::string>{".5", "0.5"}, {"007", "7"}, {"1e3", "1000"},
+                                         {"-2.50", "-2.5"}}) {
+        EXPECT_NE(withTypedField(house, "view.front", typed, true).find(R"("front": )" + written + ","), std::string::npos)
+            << typed;
+    }
+    // Text that is no decimal, or a number's text in a text field: text, as typed.
+    EXPECT_NE(withTypedField(house, "view.prp[1]", "20*sqrt(2)", true).find(R"x("prp": [8, "20*sqrt(2)", 84])x"), std::string::npos);
+    EXPECT_NE(withTypedField(house, "view.front", "inf", true).find(R"("front": "inf")"), std::string::npos);
+    EXPECT_NE(withTypedField(house, "view.projection", "5", false).find(R"("projection": "5")"), std::string::npos);
+    expectRefused([&] { withTypedField(house, "view.nothing", "1", true); }, "view.nothing", "is not a field");
+}
+
 } // namespace
 } // namespace viewpipe

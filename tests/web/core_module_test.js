@@ -224,6 +224,17 @@ require(path.resolve(modulePath))().then((core) => {
     assert.strictEqual(third.verdict, '');
   });
 
+  // A field typed into the page's Scene panel, put into the scene by the core (withTypedField, as scene_test checks
+  // it natively): a decimal in a number's field is that number, other text stays text.
+  check('a field typed, as the core puts it in', () => {
+    const text = JSON.stringify(house);
+    const typed = (path, value, number) => core.withTypedField(text, path, value, number);
+    assert.deepStrictEqual(JSON.parse(typed('view.prp[0]', '+20.', true).text).view.prp, [20, 6, 84]);
+    assert.deepStrictEqual(JSON.parse(typed('view.prp[1]', '1e3', true).text).view.prp, [8, 1000, 84]);
+    assert.deepStrictEqual(JSON.parse(typed('view.prp[1]', '20*sqrt(2)', true).text).view.prp, [8, '20*sqrt(2)', 84]);
+    assert.strictEqual(typed('view.nothing', '1', true).error, 'view.nothing: is not a field of the scene');
+  });
+
   // The page's fields that hold an exact expression, by the core's field path; none for a scene of numbers.
   check('the expressions typed, by field path', () => {
     const typed = (view) => core.typedExpressions(JSON.stringify({ ...house, view: { ...house.view, ...view } }));

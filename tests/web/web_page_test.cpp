@@ -567,6 +567,11 @@ TEST_F(WebPage, EditsTheSceneWithTheCoreRefusesBesideTheFieldUndoesAndLinksIt)
     EXPECT_EQ(browser.evaluate(json).get<std::string>() + "\n", expected.output);
     EXPECT_EQ(browser.evaluate("document.body.dataset.stage"), "3");
     EXPECT_EQ(browser.evaluate("document.querySelector(`input[aria-label='view.prp[0]']`).value"), "20");
+    // The scene the page holds (its link's) is the core's, the field put in as typed (withTypedField).
+    ASSERT_TRUE(browser.waitFor("location.hash.includes('scene=')"));
+    EXPECT_EQ(browser.evaluate("(() => { const m = /scene=([^&]*)/.exec(location.hash); return new TextDecoder().decode("
+                               "Uint8Array.from(atob(m[1].replace(/-/g, '+').replace(/_/g, '/')), (c) => c.charCodeAt(0))); })()"),
+              viewpipe::withTypedField(house.str(), "view.prp[0]", "+20.", true));
     const QImage moved3 = worldView(browser);
     EXPECT_NE(moved3, house3) << "the picture of stage 3 is drawn anew";
 

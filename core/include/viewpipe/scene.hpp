@@ -82,6 +82,13 @@ std::map<std::string, std::string> heldExpressions(const Scene& scene);
 // The same, to be read from `folder`: a mesh path relative to it where the two
 // share a folder below the root, else absolute.
 std::string sceneToJson(const Scene& scene, const std::filesystem::path& folder);
+// A scene's text with the field at `path` ("view.prp[0]") set to the text typed
+// into a form (the web page's Scene panel), written as sceneToJson writes
+// scenes. In a number's field (`number`) a decimal ("+20.", ".5", "1e3",
+// parseDouble) is that number and any other text stays text, an exact
+// expression for parseScene to read or refuse; elsewhere the text stays text.
+// Throws InputError(path) where the scene has no such field.
+std::string withTypedField(const std::string& sceneText, const std::string& path, const std::string& typed, bool number);
 // Writes to a temporary file beside the target, then renames: a failed save
 // leaves the previous file untouched.
 void saveScene(const Scene& scene, const std::filesystem::path& file);

@@ -102,26 +102,20 @@
     add(fields, scene[root], [root]);
   }
 
-  // A field's edit: its typed text put into the scene as written (a JSON number stays that number, digit for
-  // digit; other text goes as text, for the core to say what it needs: in a number's field an exact expression
-  // such as 20*sqrt(2) or √2/2, which the core reads and the scene keeps as typed), the scene evaluated.
-  // A number as people type it (+5, .5, 5., 007), as JSON writes it, its digits kept; else null.
-  function jsonNumberOf(typed) {
-    const parts = /^([+-]?)([0-9]*)(?:\.([0-9]*))?([eE][+-]?[0-9]+)?$/.exec(typed);
-    if (!parts || !(parts[2] || parts[3])) return null;
-    const whole = parts[2].replace(/^0+(?=[0-9])/, '') || '0';
-    return (parts[1] === '-' ? '-' : '') + whole + (parts[3] ? '.' + parts[3] : '') + (parts[4] || '');
-  }
+  // A field's edit: the scene with the text typed put in by the core (in a number's field a decimal is that
+  // number, other text goes as text for the core to read, such as 20*sqrt(2) or √2/2, which the scene keeps as
+  // typed, or to refuse), the scene evaluated.
   function editField(input) {
-    const scene = JSON.parse(data.scene);
-    const path = JSON.parse(input.dataset.path);
-    const typed = input.value.trim();
-    let holder = scene;
-    for (const part of path.slice(0, -1)) holder = holder[part];
-    const marker = '\u0000typed\u0000';
-    const number = input.dataset.kind === 'number' ? jsonNumberOf(typed) : null;
-    holder[path[path.length - 1]] = number !== null ? marker : typed;
-    changeScene(JSON.stringify(scene, null, 2).replace(JSON.stringify(marker), number) + '\n', input);
+    if (!core) return;
+    const outcome = core.withTypedField(data.scene, pathText(JSON.parse(input.dataset.path)), input.value,
+                                        input.dataset.kind === 'number');
+    if (outcome.error) {
+      clearRefusals();
+      showRefusal(outcome.error, input);
+      showEdits();
+      return;
+    }
+    changeScene(outcome.text, input);
   }
 
   function clearRefusals() {
