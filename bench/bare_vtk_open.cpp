@@ -51,8 +51,8 @@ int main(int argc, char** argv)
             renderer->AddActor(actor);
         }
         if (view == 0) {
-            WorldCamera camera;
-            frameOn(camera, stageFraming(*house, 0), ViewFit{widths[view], height, {}, 1, Vec3<double>::Zero()});
+            report::WorldCamera camera;
+            report::frameOn(camera, report::stageFraming(*house, 0), report::ViewFit{widths[view], height, {}, 1, Vec3<double>::Zero()});
             gui::setVtkCamera(renderer->GetActiveCamera(), camera);
         } else { // from the PRP at the window's center, the window's width across (the house's VRC is world)
             const auto& spec = std::get<foley::ViewSpec<double>>(scene.camera);

@@ -65,7 +65,7 @@ void BareVtk(benchmark::State& state)
     renderer->UseFXAAOn();
     window->AddRenderer(renderer);
     gui::ScenePainter painter(renderer, nullptr); // only builds the same props
-    painter.setTheme(Theme::Light);
+    painter.setTheme(report::Theme::Light);
     painter.setScene(evaluateScene(house()));
     window->Render();
     painter.resetView();

@@ -20,7 +20,7 @@ namespace viewpipe {
 namespace {
 
 // Each line's runs as wide as 0.6 of the size a byte, one size high: page_bench.mjs measures so too.
-const FontMeasure fixedWidth = lineByLine([](const std::vector<MathRun>& runs, double pixels, bool) {
+const report::FontMeasure fixedWidth = report::lineByLine([](const std::vector<MathRun>& runs, double pixels, bool) {
     std::size_t bytes = 0;
     for (const MathRun& run : runs)
         bytes += run.text.size();
@@ -38,11 +38,11 @@ std::string houseText()
 void nativeEvaluate(benchmark::State& state)
 {
     const std::string text = houseText();
-    const WebViewOptions options; // the page's: 1280 x 720, 20-pixel labels
+    const report::WebViewOptions options; // the page's: 1280 x 720, 20-pixel labels
     for (auto _ : state) {
         const auto evaluated = evaluateScene(parseScene(text, std::string(viewpipe::build::dataDir) + "/scenes"));
         const std::string pipeline = report::pipelineJson(evaluated->scene, report::PrecisionChoice{}, evaluated->outcomes).dump();
-        const std::string page = webPageData(*evaluated, webPageViews(*evaluated, options, fixedWidth, {}, 0));
+        const std::string page = report::webPageData(*evaluated, report::webPageViews(*evaluated, options, fixedWidth, {}, 0));
         benchmark::DoNotOptimize(pipeline.size() + page.size());
     }
 }
@@ -61,9 +61,9 @@ BENCHMARK(nativeSceneOnly)->Name("PageEvaluate/native/house_scene")->Unit(benchm
 void nativeViewsOnly(benchmark::State& state)
 {
     const auto evaluated = evaluateScene(parseScene(houseText(), std::string(viewpipe::build::dataDir) + "/scenes"));
-    const WebViewOptions options;
+    const report::WebViewOptions options;
     for (auto _ : state)
-        benchmark::DoNotOptimize(webPageViews(*evaluated, options, fixedWidth));
+        benchmark::DoNotOptimize(report::webPageViews(*evaluated, options, fixedWidth));
 }
 BENCHMARK(nativeViewsOnly)->Name("PageEvaluate/native/house_views")->Unit(benchmark::kMillisecond);
 

@@ -129,7 +129,7 @@ public:
 
 private:
     AppView& view_;
-    std::optional<StageMotion> transition_;
+    std::optional<report::StageMotion> transition_;
     int step_ = 0, frame_ = 0;
 };
 
@@ -158,7 +158,7 @@ void appAtRest(benchmark::State& state, const std::string& name)
     int stage = 0;
     for (auto _ : state) {
         state.PauseTiming();
-        w.painter.showMoment(stageAtRest(*w.scene, stage));
+        w.painter.showMoment(report::stageAtRest(*w.scene, stage));
         stage = (stage + 1) % int(stages.size());
         state.ResumeTiming();
         w.window->Render();
@@ -297,11 +297,11 @@ void jumpFiveStages(benchmark::State& state, const std::string& name)
     AppView w(name);
     for (auto _ : state) {
         state.PauseTiming();
-        w.painter.showMoment(stageAtRest(*w.scene, 5));
+        w.painter.showMoment(report::stageAtRest(*w.scene, 5));
         w.window->Render();
         state.ResumeTiming();
         for (int stage = 5; stage > 0; --stage) {
-            w.painter.showMoment(StageMotion(*w.scene, stage, stage - 1).at(1));
+            w.painter.showMoment(report::StageMotion(*w.scene, stage, stage - 1).at(1));
             w.window->Render();
         }
     }

@@ -9,7 +9,7 @@ namespace viewpipe::commands {
 void writeBenchPlot(const BenchResult& result, const std::string& file)
 {
     const gui::VirtualDisplay display;
-    gui::writeAccuracyPlot(result, file, Theme::Light);
+    gui::writeAccuracyPlot(result, file, report::Theme::Light);
 }
 
 } // namespace viewpipe::commands

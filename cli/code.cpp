@@ -28,24 +28,24 @@ Json numberJson(double value)
     return std::isinf(value) ? Json("infinity") : Json(value);
 }
 
-Json codeJson(code::Dialect dialect, const code::CameraCode& written)
+Json codeJson(report::Dialect dialect, const report::CameraCode& written)
 {
     Json numbers = Json::array();
-    for (const code::CodeNumber& number : written.numbers)
+    for (const report::CodeNumber& number : written.numbers)
         numbers.push_back({{"offset", number.offset},
                            {"length", number.length},
                            {"field", number.field},
                            {"value", numberJson(number.value)},
                            {"tooltip", number.tooltip}});
-    return {{"dialect", code::dialectName(dialect)}, {"code", written.text}, {"numbers", numbers}};
+    return {{"dialect", report::dialectName(dialect)}, {"code", written.text}, {"numbers", numbers}};
 }
 
 int runCode(const CodeOptions& options)
 {
     return guarded(options.scene, "viewpipe: internal error", [&] {
-        const code::Dialect dialect = code::dialectNamed(options.dialect, "--dialect");
+        const report::Dialect dialect = report::dialectNamed(options.dialect, "--dialect");
         const Scene scene = loadScene(options.scene);
-        const code::CameraCode written = code::cameraCode(lookAtCamera(scene, "the code dialects"), dialect);
+        const report::CameraCode written = report::cameraCode(lookAtCamera(scene, "the code dialects"), dialect);
         if (options.json)
             std::cout << codeJson(dialect, written).dump() << "\n";
         else
@@ -60,8 +60,8 @@ void addCodeCommand(CLI::App& app)
 {
     auto options = std::make_shared<CodeOptions>();
     std::vector<std::string> dialects;
-    for (const code::Dialect dialect : code::kDialects)
-        dialects.push_back(code::dialectName(dialect));
+    for (const report::Dialect dialect : report::kDialects)
+        dialects.push_back(report::dialectName(dialect));
     CLI::App* command = app.add_subcommand("code", "Print the code that gives a scene's camera in a library's calls");
     command->add_option("SCENE", options->scene, "Scene file (JSON) with a \"camera\"")->required();
     command->add_option("--dialect", options->dialect, "The library whose calls are written")

@@ -39,14 +39,14 @@ int runExport(const ExportCommandOptions& options)
         o.scale = options.scale;
         o.textScale = options.textScale;
         o.stages = gui::parseStages(options.stages, int(scene->pipeline.stages.size()));
-        o.theme = options.theme == "dark" ? Theme::Dark : Theme::Light;
+        o.theme = options.theme == "dark" ? report::Theme::Dark : report::Theme::Light;
         o.transparent = options.transparent;
         o.formats = gui::parseFormats(options.formats);
         o.animate = options.animate;
         o.fps = options.fps;
         o.digits = options.digits;
-        o.framing = *framingModeNamed(options.framing);
-        o.legend = *legendPlaceNamed(options.legend);
+        o.framing = *report::framingModeNamed(options.framing);
+        o.legend = *report::legendPlaceNamed(options.legend);
         o.hidden.insert(options.hide.begin(), options.hide.end());
         o.zoom = options.zoom;
         o.storyboard = options.layout == "storyboard";
@@ -94,7 +94,7 @@ void addExportCommand(CLI::App& app)
     command->add_option("--scale", options->scale, "Pixels per unit of size, 1 to 4 (2 for high-DPI)")
         ->capture_default_str();
     command->add_option("--text-scale", options->textScale,
-                        "Text size in percent, " + std::to_string(kMinTextScale) + " to " + std::to_string(kMaxTextScale) +
+                        "Text size in percent, " + std::to_string(report::kMinTextScale) + " to " + std::to_string(report::kMaxTextScale) +
                             " (labels at least 2.4 % of the width at 100)")
         ->capture_default_str();
     command->add_option("--stages", options->stages, "all, or a list such as 0,2,4-5")->capture_default_str();

@@ -28,7 +28,7 @@ int runExport(const LessonOptions& options)
         o.out = options.out;
         o.formats = gui::parseLessonFormats(options.format);
         std::tie(o.width, o.height) = parseSize(options.size, "--size");
-        o.theme = options.theme == "dark" ? Theme::Dark : Theme::Light;
+        o.theme = options.theme == "dark" ? report::Theme::Dark : report::Theme::Light;
         const EvaluatedLesson evaluated = evaluateLesson(lesson);
         const gui::VirtualDisplay display;
         const auto files = gui::exportLesson(lesson, evaluated, o, [&](const std::string& what) {

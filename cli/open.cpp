@@ -26,7 +26,7 @@ int runOpen(int argc, char** argv, OpenCommandOptions& options)
                 throw InputError("--size", "must be WxH with 200 <= W <= 8192 and 150 <= H <= 8192");
         }
         if (options.textScale != -1) {
-            checkTextScale(options.textScale, "--text-scale");
+            report::checkTextScale(options.textScale, "--text-scale");
             open.textScale = options.textScale;
         }
         if (!options.theme.empty())
@@ -48,8 +48,8 @@ void addOpenCommand(CLI::App& app, int argc, char** argv)
     command->add_option("--size", options->size,
                         "Window size WxH (default: 1600x950 for a screenshot, else fitted to the screen)");
     command->add_option("--text-scale", options->textScale,
-                        "Text size in percent of the default, as View > Larger Text sets it (" + std::to_string(kMinTextScale) +
-                            " to " + std::to_string(kMaxTextScale) + ")");
+                        "Text size in percent of the default, as View > Larger Text sets it (" + std::to_string(report::kMinTextScale) +
+                            " to " + std::to_string(report::kMaxTextScale) + ")");
     command->add_option("--theme", options->theme, "dark or light")->check(CLI::IsMember({"dark", "light"}));
     command->add_option("--panel", open.panel, "Dock in front: stages, matrices, parameters, code (below the parameters), accuracy (measured) or depth")
         ->check(CLI::IsMember({"stages", "matrices", "parameters", "code", "accuracy", "depth"}));

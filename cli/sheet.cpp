@@ -19,7 +19,7 @@ int runSheet(const SheetOptions& options)
         const auto [width, height] = parseSize(options.size, "--size");
         const gui::VirtualDisplay display;
         gui::exportSheet(*evaluateScene(scene), options.out, width, height,
-                         options.theme == "dark" ? Theme::Dark : Theme::Light);
+                         options.theme == "dark" ? report::Theme::Dark : report::Theme::Light);
         return 0;
     });
 }

@@ -90,9 +90,9 @@ Outcome pipelineJson(const std::string& sceneText)
 
 // The page's font, measured by the page: `measure(runs, pixels, bold)` gives
 // [width, height] of one line of the core's math runs, [text, italic, level] each.
-FontMeasure pageMeasure(const emscripten::val& measure)
+report::FontMeasure pageMeasure(const emscripten::val& measure)
 {
-    return lineByLine([measure](const std::vector<MathRun>& runs, double pixels, bool bold) {
+    return report::lineByLine([measure](const std::vector<MathRun>& runs, double pixels, bool bold) {
         emscripten::val line = emscripten::val::array();
         for (const MathRun& run : runs) {
             emscripten::val entry = emscripten::val::array();
@@ -108,21 +108,21 @@ FontMeasure pageMeasure(const emscripten::val& measure)
 
 // The page's own options: its data's width, height, fontSize, minFontSize, lineScale, framing and dark; and the
 // reader's choices, where made: "hidden" (names of hideNames) and "legend" (a name of legendPlaceName).
-WebViewOptions viewOptions(const std::string& options)
+report::WebViewOptions viewOptions(const std::string& options)
 {
     const nlohmann::json given = nlohmann::json::parse(options);
-    WebViewOptions view;
+    report::WebViewOptions view;
     view.width = given.at("width");
     view.height = given.at("height");
     view.fontSize = given.at("fontSize");
     view.minFontSize = given.at("minFontSize");
     view.lineScale = given.at("lineScale");
-    view.framing = framingModeNamed(given.at("framing")).value_or(FramingMode::Together);
-    view.theme = given.at("dark") ? Theme::Dark : Theme::Light;
+    view.framing = report::framingModeNamed(given.at("framing")).value_or(report::FramingMode::Together);
+    view.theme = given.at("dark") ? report::Theme::Dark : report::Theme::Light;
     if (given.contains("hidden"))
         view.hidden = given["hidden"].get<std::set<std::string>>();
     if (given.contains("legend"))
-        view.legend = legendPlaceNamed(given["legend"]).value_or(LegendPlace::Best);
+        view.legend = report::legendPlaceNamed(given["legend"]).value_or(report::LegendPlace::Best);
     return view;
 }
 
@@ -152,9 +152,9 @@ std::shared_ptr<const EvaluatedScene> evaluatedOnce(const std::string& sceneText
 Evaluation evaluate(const std::string& sceneText, const std::string& options, const emscripten::val& measure, int stage)
 {
     return guarded<Evaluation>([&] {
-        const WebViewOptions view = viewOptions(options);
+        const report::WebViewOptions view = viewOptions(options);
         const auto evaluated = evaluatedOnce(sceneText, view.hidden, true);
-        const WebPageViews views = webPageViews(*evaluated, view, pageMeasure(measure), {}, stage);
+        const report::WebPageViews views = webPageViews(*evaluated, view, pageMeasure(measure), {}, stage);
         return Evaluation{webPageData(*evaluated, views), pipelineText(*evaluated), ""};
     });
 }
@@ -163,7 +163,7 @@ Evaluation evaluate(const std::string& sceneText, const std::string& options, co
 Outcome stageView(const std::string& sceneText, const std::string& options, int stage, const emscripten::val& measure)
 {
     return guarded([&] {
-        const WebViewOptions view = viewOptions(options);
+        const report::WebViewOptions view = viewOptions(options);
         const auto evaluated = evaluatedOnce(sceneText, view.hidden, false);
         if (stage < 0 || stage > int(evaluated->pipeline.stages.size()))
             throw std::invalid_argument("stageView: no stage " + std::to_string(stage));
@@ -175,7 +175,7 @@ Outcome stageView(const std::string& sceneText, const std::string& options, int 
 Outcome transition(const std::string& sceneText, const std::string& options, int from, const emscripten::val& measure)
 {
     return guarded([&] {
-        const WebViewOptions view = viewOptions(options);
+        const report::WebViewOptions view = viewOptions(options);
         const auto evaluated = evaluatedOnce(sceneText, view.hidden, false);
         if (from < 0 || from >= int(evaluated->pipeline.stages.size()))
             throw std::invalid_argument("transition: no step from stage " + std::to_string(from));
@@ -198,7 +198,7 @@ Outcome stageThrough(const char* what, const std::string& sceneText, const std::
                      const std::string& camera, const emscripten::val& measure, const std::string& shown, Draw draw)
 {
     return guarded([&] {
-        const WebViewOptions view = viewOptions(options);
+        const report::WebViewOptions view = viewOptions(options);
         const auto evaluated = shownAs(evaluatedOnce(sceneText, view.hidden, false), shown);
         const std::vector<double> rows = nlohmann::json::parse(camera);
         if (rows.size() != 16 || stage < 0 || stage > int(evaluated->pipeline.stages.size()))
@@ -214,14 +214,14 @@ Outcome stageThrough(const char* what, const std::string& sceneText, const std::
 Outcome placeLabels(const std::string& sceneText, const std::string& options, int stage, const std::string& camera,
                     const emscripten::val& measure, const std::string& shown)
 {
-    return stageThrough("placeLabels", sceneText, options, stage, camera, measure, shown, webStageLabels);
+    return stageThrough("placeLabels", sceneText, options, stage, camera, measure, shown, report::webStageLabels);
 }
 
 // The whole flat figure, as the SVG export draws it: the page's SVG of the view shown.
 Outcome stageFigure(const std::string& sceneText, const std::string& options, int stage, const std::string& camera,
                     const emscripten::val& measure, const std::string& shown)
 {
-    return stageThrough("stageFigure", sceneText, options, stage, camera, measure, shown, webStageFigure);
+    return stageThrough("stageFigure", sceneText, options, stage, camera, measure, shown, report::webStageFigure);
 }
 
 // Every stage at once in the page's room (webStoryboard): `room` is {"width", "height"}, `traced` [x, y, z]
@@ -231,7 +231,7 @@ Outcome storyboard(const std::string& sceneText, const std::string& options, con
                    const std::string& traced, const std::string& cameras, const emscripten::val& measure, bool shapes)
 {
     return guarded([&] {
-        const WebViewOptions view = viewOptions(options);
+        const report::WebViewOptions view = viewOptions(options);
         const auto evaluated = evaluatedOnce(sceneText, view.hidden, false);
         const nlohmann::json size = nlohmann::json::parse(room), point = nlohmann::json::parse(traced),
                              turned = nlohmann::json::parse(cameras);
@@ -275,7 +275,7 @@ Outcome pickVertexAt(const emscripten::val& vertices, const std::string& drawn, 
         if (!plane.is_null())
             kept = Vec4<double>(plane.at(0), plane.at(1), plane.at(2), plane.at(3));
         const std::optional<Vec3<double>> picked =
-            pickVertex(points, clip, Vec2<double>(view.at(0), view.at(1)), Vec2<double>(click.at(0), click.at(1)),
+            report::pickVertex(points, clip, Vec2<double>(view.at(0), view.at(1)), Vec2<double>(click.at(0), click.at(1)),
                        Vec2<double>(whole.at(0), whole.at(1)), kept);
         return Outcome{picked ? nlohmann::json{picked->x(), picked->y(), picked->z()}.dump() : "null", ""};
     });
@@ -437,10 +437,10 @@ Outcome cameraCode(const std::string& sceneText, const std::string& dialect)
 {
     return guarded([&] {
         const Scene scene = parseScene(sceneText, kSceneFolder);
-        const code::CameraCode written =
-            code::cameraCode(lookAtCamera(scene, "the code dialects"), code::dialectNamed(dialect, "dialect"));
+        const report::CameraCode written =
+            report::cameraCode(lookAtCamera(scene, "the code dialects"), report::dialectNamed(dialect, "dialect"));
         nlohmann::json numbers = nlohmann::json::array();
-        for (const code::CodeNumber& n : written.numbers)
+        for (const report::CodeNumber& n : written.numbers)
             numbers.push_back({{"start", utf16Offset(written.text, n.offset)},
                                {"end", utf16Offset(written.text, n.offset + n.length)},
                                {"field", n.field},
@@ -454,18 +454,18 @@ Outcome cameraCode(const std::string& sceneText, const std::string& dialect)
 std::string codeDialects()
 {
     nlohmann::json dialects = nlohmann::json::array();
-    for (const code::Dialect d : code::kDialects)
-        dialects.push_back({{"name", code::dialectName(d)}, {"title", code::dialectTitle(d)}});
+    for (const report::Dialect d : report::kDialects)
+        dialects.push_back({{"name", report::dialectName(d)}, {"title", report::dialectTitle(d)}});
     return dialects.dump();
 }
 
-// The scene with one of its code's numbers set (code::withField) or with
-// pasted code applied (code::applyCode): its JSON anew, or why not.
+// The scene with one of its code's numbers set (report::withField) or with
+// pasted code applied (report::applyCode): its JSON anew, or why not.
 Outcome withCodeNumber(const std::string& sceneText, const std::string& field, double value)
 {
     return guarded([&] {
         Scene scene = parseScene(sceneText, kSceneFolder);
-        scene.camera = code::withField(lookAtCamera(scene, "the code dialects"), field, value);
+        scene.camera = report::withField(lookAtCamera(scene, "the code dialects"), field, value);
         return Outcome{sceneToJson(scene, kSceneFolder), ""};
     });
 }
@@ -474,7 +474,7 @@ Outcome withPastedCode(const std::string& sceneText, const std::string& pasted)
 {
     return guarded([&] {
         Scene scene = parseScene(sceneText, kSceneFolder);
-        scene.camera = code::applyCode(lookAtCamera(scene, "the code dialects"), pasted);
+        scene.camera = report::applyCode(lookAtCamera(scene, "the code dialects"), pasted);
         return Outcome{sceneToJson(scene, kSceneFolder), ""};
     });
 }
@@ -544,7 +544,7 @@ EMSCRIPTEN_BINDINGS(viewpipe)
     emscripten::function("withCodeNumber", &withCodeNumber);
     emscripten::function("withPastedCode", &withPastedCode);
     emscripten::function("withTypedField", &withTypedFieldOf);
-    emscripten::function("steppedValue", &viewpipe::code::steppedValue);
+    emscripten::function("steppedValue", &viewpipe::report::steppedValue);
     emscripten::function("cameraChoices", &cameraChoicesOf);
     emscripten::function("withCameraChoice", &withCameraChoice);
     emscripten::function("typedExpressions", &typedExpressionsOf);

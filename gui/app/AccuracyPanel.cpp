@@ -187,7 +187,7 @@ void AccuracyPanel::drawResult()
 
 void AccuracyPanel::paintBackground()
 {
-    const double bg = theme_ == Theme::Dark ? 0.11 : 1.0;
+    const double bg = theme_ == report::Theme::Dark ? 0.11 : 1.0;
     view_->GetRenderer()->SetBackground(bg, bg, bg);
 }
 
@@ -198,7 +198,7 @@ void AccuracyPanel::renderCharts()
     chartWidget_->update();
 }
 
-void AccuracyPanel::setTheme(Theme theme)
+void AccuracyPanel::setTheme(report::Theme theme)
 {
     theme_ = theme;
     if (last_)

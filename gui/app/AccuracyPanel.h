@@ -35,7 +35,7 @@ public:
     // Measures a scene in the background; a running measurement is abandoned.
     void measure(const EvaluatedScene& scene, std::size_t vertices = 1000000);
     bool isRunning() const { return running_; }
-    void setTheme(Theme theme);
+    void setTheme(report::Theme theme);
     // Forgets the results and abandons a running measurement: they belong to the previous scene.
     void clear();
     bool hasResult() const { return last_ != nullptr; }
@@ -65,7 +65,7 @@ private:
     std::thread worker_;
     std::shared_ptr<std::atomic<bool>> cancel_;
     bool running_ = false;
-    Theme theme_ = Theme::Dark;
+    report::Theme theme_ = report::Theme::Dark;
     std::unique_ptr<BenchResult> last_;
     std::function<std::shared_ptr<const EvaluatedScene>()> sceneSource_;
 

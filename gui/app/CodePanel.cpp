@@ -102,7 +102,7 @@ CodeView::CodeView(QWidget* parent) : QWidget(parent)
     setAccessibleName(tr("The camera as code"));
 }
 
-void CodeView::setCode(const code::CameraCode& code)
+void CodeView::setCode(const report::CameraCode& code)
 {
     code_ = code;
     if (selected_ && *selected_ >= code_.numbers.size())
@@ -143,7 +143,7 @@ QRect CodeView::numberRect(std::size_t index) const
 {
     if (index >= code_.numbers.size())
         return {};
-    const code::CodeNumber& n = code_.numbers[index];
+    const report::CodeNumber& n = code_.numbers[index];
     const TextLayout layout(font(), code_.text, width() - 2 * kMargin);
     const std::size_t line = layout.lineOf(n.offset);
     const TextLayout::Line& l = layout.lines[line];
@@ -205,7 +205,7 @@ void CodeView::step(std::size_t index, int steps, int gesture)
     const double from = drag_ ? drag_->startValue : code_.numbers[index].value;
     if (!std::isfinite(from))
         return; // an infinite far plane is typed, not dragged
-    emit numberChanged(index, code::steppedValue(from, steps), gesture);
+    emit numberChanged(index, report::steppedValue(from, steps), gesture);
 }
 
 void CodeView::select(std::size_t index)
@@ -339,8 +339,8 @@ CodePanel::CodePanel(QWidget* parent) : QWidget(parent)
     auto* top = new QHBoxLayout;
     dialects_ = new QComboBox;
     dialects_->setObjectName("codeDialect");
-    for (const code::Dialect d : code::kDialects)
-        dialects_->addItem(QString::fromStdString(code::dialectTitle(d)));
+    for (const report::Dialect d : report::kDialects)
+        dialects_->addItem(QString::fromStdString(report::dialectTitle(d)));
     dialects_->setToolTip(tr("The library whose calls write the camera"));
     fitComboToItsRow(dialects_);
     auto* copy = new QPushButton(tr("&Copy"));
@@ -377,7 +377,7 @@ CodePanel::CodePanel(QWidget* parent) : QWidget(parent)
     layout->addWidget(apply, 0, Qt::AlignRight);
     layout->addStretch(1);
 
-    const int saved = QSettings().value("codeDialect", int(code::Dialect::Glm)).toInt();
+    const int saved = QSettings().value("codeDialect", int(report::Dialect::Glm)).toInt();
     dialects_->setCurrentIndex(std::clamp(saved, 0, dialects_->count() - 1));
     connect(dialects_, QOverload<int>::of(&QComboBox::currentIndexChanged), this, [this](int index) {
         QSettings().setValue("codeDialect", index);
@@ -398,9 +398,9 @@ CodePanel::CodePanel(QWidget* parent) : QWidget(parent)
     });
 }
 
-void CodePanel::setDialect(code::Dialect dialect)
+void CodePanel::setDialect(report::Dialect dialect)
 {
-    dialects_->setCurrentIndex(int(dialect)); // in the order of code::kDialects
+    dialects_->setCurrentIndex(int(dialect)); // in the order of report::kDialects
 }
 
 void CodePanel::setCamera(const CameraSpec<double>& camera)
@@ -421,7 +421,7 @@ void CodePanel::regenerate()
                         : tr("This scene's camera is a Foley view (VRP, VPN, VUP, PRP): no graphics API writes it "
                              "as code. Open a scene with a look-at camera, such as the presets under Graphics "
                              "APIs."));
-    code_ = code ? code::cameraCode(*camera_, code::kDialects[dialects_->currentIndex()]) : code::CameraCode{};
+    code_ = code ? report::cameraCode(*camera_, report::kDialects[dialects_->currentIndex()]) : report::CameraCode{};
     view_->setCode(code_);
 
 }
@@ -434,7 +434,7 @@ void CodePanel::setNumber(std::size_t index, double value, int gesture)
     if (sameBits(value, code_.numbers[index].value))
         return; // the value it has: no edit
     try {
-        const gl::Camera<double> candidate = code::withField(*camera_, field, value);
+        const gl::Camera<double> candidate = report::withField(*camera_, field, value);
         clearError();
         emit cameraEdited(candidate, QString::fromStdString(field), gesture);
     } catch (const InputError& e) {
@@ -447,7 +447,7 @@ void CodePanel::applyCode(const QString& text)
     if (!camera_)
         return;
     try {
-        const gl::Camera<double> candidate = code::applyCode(*camera_, text.toStdString());
+        const gl::Camera<double> candidate = report::applyCode(*camera_, text.toStdString());
         clearError();
         emit cameraEdited(candidate, tr("pasted code"), -1);
     } catch (const InputError& e) {

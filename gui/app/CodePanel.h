@@ -36,7 +36,7 @@ public:
     // For tests and scripting.
     CodeView* codeView() const { return view_; }
     QPlainTextEdit* pasteBox() const { return paste_; }
-    void setDialect(code::Dialect dialect);
+    void setDialect(report::Dialect dialect);
     // Sets the camera from code, as pasting it does.
     void applyCode(const QString& text);
 
@@ -54,7 +54,7 @@ private:
     QLabel* note_ = nullptr;
     QLabel* error_ = nullptr;
     std::optional<gl::Camera<double>> camera_;
-    code::CameraCode code_;
+    report::CameraCode code_;
 };
 
 // The code, drawn in a fixed-pitch font with its numbers marked.
@@ -62,8 +62,8 @@ class CodeView : public QWidget {
     Q_OBJECT
 public:
     explicit CodeView(QWidget* parent = nullptr);
-    void setCode(const code::CameraCode& code);
-    const code::CameraCode& code() const { return code_; }
+    void setCode(const report::CameraCode& code);
+    const report::CameraCode& code() const { return code_; }
 
     // Where number `index` is drawn, in widget coordinates; empty if there is none.
     QRect numberRect(std::size_t index) const;
@@ -100,7 +100,7 @@ private:
     bool eventFilter(QObject* watched, QEvent* event) override;
     void step(std::size_t index, int steps, int gesture);
 
-    code::CameraCode code_;
+    report::CameraCode code_;
     std::optional<std::size_t> selected_;
     std::optional<std::size_t> hovered_;
     struct Drag {

@@ -32,7 +32,7 @@ DepthPanel::DepthPanel(QWidget* parent) : QWidget(parent)
     view_->GetScene()->AddItem(chart_);
     layout->addWidget(summary_);
     layout->addWidget(chartWidget_, 1);
-    showDepth({}, std::nullopt, Theme::Dark);
+    showDepth({}, std::nullopt, report::Theme::Dark);
 }
 
 QString DepthPanel::summary() const
@@ -40,9 +40,9 @@ QString DepthPanel::summary() const
     return summary_->text();
 }
 
-void DepthPanel::showDepth(const Pipeline<double>& pipeline, const std::optional<DepthOutcome>& depth, Theme theme)
+void DepthPanel::showDepth(const Pipeline<double>& pipeline, const std::optional<DepthOutcome>& depth, report::Theme theme)
 {
-    const double bg = theme == Theme::Dark ? 0.11 : 1.0;
+    const double bg = theme == report::Theme::Dark ? 0.11 : 1.0;
     view_->GetRenderer()->SetBackground(bg, bg, bg);
     chartWidget_->setVisible(depth.has_value());
     if (!depth) {
@@ -63,7 +63,7 @@ void DepthPanel::showDepth(const Pipeline<double>& pipeline, const std::optional
     else if (depth->zFighting.empty())
         text += tr(" No faces z-fight: the buffer orders every overlap.");
     else {
-        const Rgb c = elementColor(Element::ZFighting, theme);
+        const report::Rgb c = report::elementColor(Element::ZFighting, theme);
         const QString color = QColor::fromRgbF(c.r, c.g, c.b).name();
         text += QString(" <span style='color:%1'>%2</span>")
                     .arg(color, depth->zFighting.size() == 1 ? tr("1 pair of faces z-fights")

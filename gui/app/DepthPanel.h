@@ -25,7 +25,7 @@ class DepthPanel : public QWidget {
 public:
     explicit DepthPanel(QWidget* parent = nullptr);
 
-    void showDepth(const Pipeline<double>& pipeline, const std::optional<DepthOutcome>& depth, Theme theme);
+    void showDepth(const Pipeline<double>& pipeline, const std::optional<DepthOutcome>& depth, report::Theme theme);
     QString summary() const;
 
 private:

@@ -29,7 +29,7 @@ QString ExportDialog::defaultFolder()
     return QDir::homePath() + "/ViewPipe";
 }
 
-ExportDialog::ExportDialog(int stageCount, Theme theme, QWidget* parent) : QDialog(parent), stageCount_(stageCount)
+ExportDialog::ExportDialog(int stageCount, report::Theme theme, QWidget* parent) : QDialog(parent), stageCount_(stageCount)
 {
     setWindowTitle(tr("Export Stages"));
     auto* form = new QFormLayout(this);
@@ -71,13 +71,13 @@ ExportDialog::ExportDialog(int stageCount, Theme theme, QWidget* parent) : QDial
     form->addRow(tr("Stages"), stages_);
     theme_ = new QComboBox;
     theme_->addItems({tr("light"), tr("dark")});
-    theme_->setCurrentIndex(theme == Theme::Dark ? 1 : 0);
+    theme_->setCurrentIndex(theme == report::Theme::Dark ? 1 : 0);
     theme_->setToolTip(tr("Light for slides and print, dark for the screen"));
     form->addRow(tr("Theme"), theme_);
     framing_ = new QComboBox;
-    framing_->addItem(tr("with the stage before where the step keeps sizes"), int(FramingMode::Together));
-    framing_->addItem(tr("each stage framed on its own"), int(FramingMode::PerStage));
-    framing_->addItem(tr("one framing for all stages"), int(FramingMode::Fixed));
+    framing_->addItem(tr("with the stage before where the step keeps sizes"), int(report::FramingMode::Together));
+    framing_->addItem(tr("each stage framed on its own"), int(report::FramingMode::PerStage));
+    framing_->addItem(tr("one framing for all stages"), int(report::FramingMode::Fixed));
     framing_->setToolTip(tr("With the stage before, a translation or rotation shows where it moved the scene "
                             "from; on its own, each stage as large as it goes; one framing for all keeps sizes "
                             "comparable from stage to stage"));
@@ -97,7 +97,7 @@ ExportDialog::ExportDialog(int stageCount, Theme theme, QWidget* parent) : QDial
     textScale_->setToolTip(tr("Text size: at 100 %, labels 2.4 % of the picture's width (8 pt in a 12 cm column)"));
     form->addRow(tr("Text size"), textScale_);
     legend_ = new QComboBox;
-    for (const LegendPlace place : legendPlaces())
+    for (const report::LegendPlace place : report::legendPlaces())
         legend_->addItem(legendPlaceTitle(place), int(place));
     legend_->setToolTip(tr("Where the legend goes"));
     form->addRow(tr("Legend"), legend_);
@@ -175,12 +175,12 @@ ExportOptions ExportDialog::options() const
     o.height = height_->value();
     o.scale = scale_->value();
     o.stages = parseStages(stages_->text().trimmed().toStdString(), stageCount_);
-    o.theme = theme_->currentIndex() == 1 ? Theme::Dark : Theme::Light;
-    o.framing = FramingMode(framing_->currentData().toInt());
+    o.theme = theme_->currentIndex() == 1 ? report::Theme::Dark : report::Theme::Light;
+    o.framing = report::FramingMode(framing_->currentData().toInt());
     o.storyboard = layout_->currentData().toBool();
     o.transparent = transparent_->isChecked();
     o.textScale = textScale_->value();
-    o.legend = LegendPlace(legend_->currentData().toInt());
+    o.legend = report::LegendPlace(legend_->currentData().toInt());
     o.zoom = zoom_->value();
     for (const auto& [name, box] : hide_)
         if (box->isChecked())

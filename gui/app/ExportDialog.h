@@ -20,7 +20,7 @@ namespace viewpipe::gui {
 class ExportDialog : public QDialog {
     Q_OBJECT
 public:
-    ExportDialog(int stageCount, Theme theme, QWidget* parent = nullptr);
+    ExportDialog(int stageCount, report::Theme theme, QWidget* parent = nullptr);
 
     // The options as entered; throws InputError for a bad stage list.
     ExportOptions options() const;

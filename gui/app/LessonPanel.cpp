@@ -344,7 +344,7 @@ void LessonPanel::refreshStep()
         return;
     const Question& q = *step.question;
     prompt_->setText(mathHtml(q.prompt));
-    QString about = mathHtml(questionContext(step));
+    QString about = mathHtml(report::questionContext(step));
     if (q.kind == QuestionKind::WhichStage)
         about = matrixTable(tr("The matrix"),
                             buildPipeline(step.scene.camera, step.scene.effects).stages.at(std::size_t(q.stage - 1)).matrix);
@@ -365,7 +365,7 @@ void LessonPanel::refreshStep()
         return;
     }
     const std::optional<Answer>& answer = lesson_->answer(k);
-    const QString answerHtml = mathHtml(answerText(step));
+    const QString answerHtml = mathHtml(report::answerText(step));
     QString said = !answer                 ? tr("The answer: %1.").arg(answerHtml)
                    : isRight(q, *answer) ? tr("<b>Right.</b> The answer: %1.").arg(answerHtml)
                                          : tr("<b>Not quite:</b> the answer is %1.").arg(answerHtml);
@@ -442,8 +442,8 @@ void LessonPanel::buildInputs()
     case QuestionKind::Choice: {
         QStringList texts, spoken;
         for (std::size_t k = 0; k < q.choices.size(); ++k) {
-            texts << mathHtml(choiceLetter(k) + " " + q.choices[k]);
-            spoken << QString::fromStdString(mathSpokenText(choiceLetter(k) + " " + q.choices[k]));
+            texts << mathHtml(report::choiceLetter(k) + " " + q.choices[k]);
+            spoken << QString::fromStdString(mathSpokenText(report::choiceLetter(k) + " " + q.choices[k]));
         }
         radios(texts, spoken);
         break;

@@ -258,8 +258,8 @@ void MainWindow::addActions()
     actions_->add("view.classical", tr("&Classical Projection…"), [this] { chooseClassicalProjection(); },
                   QKeySequence(Qt::CTRL | Qt::Key_K));
     auto* themes = new QActionGroup(this);
-    for (auto [id, text, theme] : {std::tuple{"view.darkTheme", tr("&Dark Theme (screen)"), Theme::Dark},
-                                   std::tuple{"view.lightTheme", tr("&Light Theme (slides, print)"), Theme::Light}})
+    for (auto [id, text, theme] : {std::tuple{"view.darkTheme", tr("&Dark Theme (screen)"), report::Theme::Dark},
+                                   std::tuple{"view.lightTheme", tr("&Light Theme (slides, print)"), report::Theme::Light}})
         themes->addAction(actions_->addToggle(id, text, [this, theme = theme](bool) { setTheme(theme); }));
     actions_->action("view.darkTheme")->setChecked(true);
     actions_->add("view.present", tr("&Present"), [this] { presentMode_->setPresenting(!presentMode_->isPresenting()); },
@@ -268,10 +268,10 @@ void MainWindow::addActions()
     for (const char* view : {"world", "projected"}) {
         auto* places = new QActionGroup(this);
         const QString key = QString(view) + "Legend";
-        const LegendPlace kept = legendPlaceNamed(QSettings().value(key, "best").toString().toStdString()).value_or(LegendPlace::Best);
-        for (const auto& [place, text] : {std::pair{LegendPlace::Best, tr("Where It Costs Least")}, std::pair{LegendPlace::Beside, tr("Beside")},
-                                          std::pair{LegendPlace::Below, tr("Below")}, std::pair{LegendPlace::Inside, tr("Inside, in a Free Corner")},
-                                          std::pair{LegendPlace::None, tr("Hidden")}}) {
+        const report::LegendPlace kept = report::legendPlaceNamed(QSettings().value(key, "best").toString().toStdString()).value_or(report::LegendPlace::Best);
+        for (const auto& [place, text] : {std::pair{report::LegendPlace::Best, tr("Where It Costs Least")}, std::pair{report::LegendPlace::Beside, tr("Beside")},
+                                          std::pair{report::LegendPlace::Below, tr("Below")}, std::pair{report::LegendPlace::Inside, tr("Inside, in a Free Corner")},
+                                          std::pair{report::LegendPlace::None, tr("Hidden")}}) {
             const bool world = std::string(view) == "world";
             QAction* action = actions_->addToggle(std::string("view.") + view + "Legend." + legendPlaceName(place),
                                                   text, [this, world, key, place = place](bool on) {
@@ -343,7 +343,7 @@ void MainWindow::buildMenus()
         leaveOut->addAction(actions_->action("view.hide." + name));
     for (const char* which : {"world", "projected"}) {
         QMenu* legend = view->addMenu(std::string(which) == "world" ? tr("&World View Legend") : tr("&Camera View Legend"));
-        for (const LegendPlace place : legendPlaces())
+        for (const report::LegendPlace place : report::legendPlaces())
             legend->addAction(actions_->action(std::string("view.") + which + "Legend." + legendPlaceName(place)));
     }
 
@@ -475,23 +475,23 @@ MainWindow::RenderHold::~RenderHold()
         window_.renderNow();
 }
 
-void MainWindow::setTheme(Theme theme)
+void MainWindow::setTheme(report::Theme theme)
 {
     for (StageViews* layout : layouts())
         layout->setTheme(theme);
     accuracy_->setTheme(theme);
     depth_->showDepth(document_->pipeline(), document_->evaluated()->outcomes.depth, theme);
     applyTheme(theme);
-    actions_->action(theme == Theme::Light ? "view.lightTheme" : "view.darkTheme")->setChecked(true);
+    actions_->action(theme == report::Theme::Light ? "view.lightTheme" : "view.darkTheme")->setChecked(true);
     if (!presentMode_->isPresenting()) // the projector's look is not the user's setting
-        QSettings().setValue("theme", theme == Theme::Light ? "light" : "dark");
+        QSettings().setValue("theme", theme == report::Theme::Light ? "light" : "dark");
     renderNow();
 }
 
 void MainWindow::setFontSize(int points, bool remember)
 {
     // The range `open --text-scale` and the exports take.
-    fontSize_ = std::clamp(points, (kDefaultFontSize * kMinTextScale + 99) / 100, kDefaultFontSize * kMaxTextScale / 100);
+    fontSize_ = std::clamp(points, (kDefaultFontSize * report::kMinTextScale + 99) / 100, kDefaultFontSize * report::kMaxTextScale / 100);
     QFont font = QApplication::font();
     font.setPointSize(fontSize_);
     QApplication::setFont(font);

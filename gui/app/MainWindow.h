@@ -103,7 +103,7 @@ public:
     // View > Classical Projection: a class of seed 001 for the scene's objects, one undoable edit.
     void chooseClassicalProjection();
 
-    void setTheme(Theme theme);
+    void setTheme(report::Theme theme);
     // The text's size in points; 100 % of `open --text-scale` is kDefaultFontSize.
     static constexpr int kDefaultFontSize = 11;
     // `remember`: kept in the user's settings for the next start.

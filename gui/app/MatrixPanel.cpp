@@ -102,7 +102,7 @@ void MatrixPanel::showStage(const Pipeline<double>& pipeline, const Pipeline<Exa
                 std::abs(now(r, c) - before(r, c)) > 1e-12 * std::max(1.0, std::abs(before(r, c)));
     const QString symbol = mathHtml("$" + stageSymbolMath(s.kind) + "$");
     QString html;
-    const SymbolicForm symbolic = symbolicMatrix(s.kind);
+    const report::SymbolicForm symbolic = report::symbolicMatrix(s.kind);
     if (!symbolic.cells[0].empty()) {
         std::array<QString, 16> cells;
         for (std::size_t k = 0; k < cells.size(); ++k)

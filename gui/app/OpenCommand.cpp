@@ -72,7 +72,7 @@ int runOpen(int argc, char** argv, const OpenOptions& options)
     QSettings settings;
     const QString themeName =
         options.theme ? QString::fromStdString(*options.theme) : (screenshot ? "dark" : settings.value("theme", "dark").toString());
-    const Theme theme = themeName == "light" ? Theme::Light : Theme::Dark;
+    const report::Theme theme = themeName == "light" ? report::Theme::Light : report::Theme::Dark;
 
     MainWindow window;
     window.setPopupsEnabled(!screenshot); // a screenshot run reports in the status bar and its exit code

@@ -61,7 +61,7 @@ void PresentMode::enter(QScreen* screen)
             dock->hide();
     window_->menuBar()->hide();
     window_->statusBar()->hide();
-    window_->setTheme(Theme::Light); // black on white carries best on a projector
+    window_->setTheme(report::Theme::Light); // black on white carries best on a projector
     window_->setFontSize(std::max(window_->fontSize() * 3 / 2, 16));
     QWindow* handle = window_->windowHandle();
     if (screen && handle)

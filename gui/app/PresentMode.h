@@ -48,7 +48,7 @@ private:
     struct Before {
         QByteArray docks, geometry;
         Qt::WindowStates states;
-        Theme theme;
+        report::Theme theme;
         int fontSize;
         QFont appFont; // the widgets' (before any Larger Text, the system's)
     };

@@ -77,7 +77,7 @@ void StagePair::setTraced(const std::optional<Vec3<double>>& point)
     painter_->markTraced(traced_);
 }
 
-void StagePair::setTheme(Theme theme)
+void StagePair::setTheme(report::Theme theme)
 {
     painter_->setTheme(theme);
 }

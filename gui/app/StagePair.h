@@ -23,7 +23,7 @@ public:
 
     void setScene(std::shared_ptr<const EvaluatedScene> scene) override;
     void setTraced(const std::optional<Vec3<double>>& point) override;
-    void setTheme(Theme theme) override;
+    void setTheme(report::Theme theme) override;
     void setTextScale(double scale) override;
     void setTicksAndNotesShown(bool ticks, bool notes) override;
     void resetView() override;

@@ -24,7 +24,7 @@ public:
     virtual void setScene(std::shared_ptr<const EvaluatedScene> scene) = 0;
     // The vertex every view marks and follows, or none.
     virtual void setTraced(const std::optional<Vec3<double>>& point) = 0;
-    virtual void setTheme(Theme theme) = 0;
+    virtual void setTheme(report::Theme theme) = 0;
     // The text's size as the window's Larger and Smaller Text set it: 1 is 100 %.
     virtual void setTextScale(double scale) = 0;
     // View > Leave Out's ticks (the fixed axes' ticks and numbers) and notes (of labels left out for room).

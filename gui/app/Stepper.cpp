@@ -13,7 +13,7 @@ namespace viewpipe::gui {
 
 Stepper::Stepper(const Document* document, ScenePainter* painter, QObject* parent)
     : QObject(parent), document_(document), painter_(painter), animation_(new QVariantAnimation(this)),
-      stepMilliseconds_(kStepMilliseconds)
+      stepMilliseconds_(report::kStepMilliseconds)
 {
     steady_.start();
     animation_->setStartValue(0.0);
@@ -77,7 +77,7 @@ void Stepper::goToStage(int stage, bool animate)
         emit moved();
         return;
     }
-    stepMilliseconds_ = std::abs(target_ - stage_) > 1 ? kSkipMilliseconds : kStepMilliseconds;
+    stepMilliseconds_ = std::abs(target_ - stage_) > 1 ? report::kSkipMilliseconds : report::kStepMilliseconds;
     if (!isAnimating() && target_ != stage_)
         startStep(false);
     emit moved();
@@ -90,7 +90,7 @@ void Stepper::play()
     if (lastStage() == 0)
         return;
     target_ = lastStage();
-    stepMilliseconds_ = kStepMilliseconds;
+    stepMilliseconds_ = report::kStepMilliseconds;
     playing_ = true;
     startStep(false);
     emit moved();
@@ -150,7 +150,7 @@ void Stepper::startStep(bool follows)
 void Stepper::rest()
 {
     painter_->setMoving(false);
-    painter_->showMoment(stageAtRest(*document_->evaluated(), stage_));
+    painter_->showMoment(report::stageAtRest(*document_->evaluated(), stage_));
     emit rested();
 }
 

@@ -73,7 +73,7 @@ private:
     std::optional<int> lastStage_;
     int stepMilliseconds_;
     bool playing_ = false;
-    std::optional<StageMotion> transition_;
+    std::optional<report::StageMotion> transition_;
     QElapsedTimer steady_;
     std::function<qint64()> clock_; // none: steady_
     qint64 stepEnds_ = 0; // on clock_: when the running step is due to end

@@ -44,12 +44,12 @@ StoryboardView::~StoryboardView() = default;
 
 double StoryboardView::labelSize() const
 {
-    return storyboardLabelSize(width(), textScale_);
+    return report::storyboardLabelSize(width(), textScale_);
 }
 
 Vec3<double> StoryboardView::traced() const
 {
-    return traced_ ? *traced_ : storyboardTracedPoint(*scene_);
+    return traced_ ? *traced_ : report::storyboardTracedPoint(*scene_);
 }
 
 void StoryboardView::setScene(std::shared_ptr<const EvaluatedScene> scene)
@@ -62,7 +62,7 @@ void StoryboardView::setScene(std::shared_ptr<const EvaluatedScene> scene)
     const bool sameStages = scene_ && scene_->pipeline.stages.size() == scene->pipeline.stages.size();
     scene_ = std::move(scene);
     cellScene_ = withoutEffectsNote(scene_);
-    framings_ = stageFramings(*cellScene_, FramingMode::Together);
+    framings_ = report::stageFramings(*cellScene_, report::FramingMode::Together);
     if (!sameStages)
         buildCells();
     for (auto& cell : cells_) {
@@ -107,15 +107,15 @@ void StoryboardView::layOut()
     std::vector<int> stages;
     for (const auto& cell : cells_)
         stages.push_back(cell->stage);
-    layout_ = layoutStoryboard(*scene_, stages, traced(), width(), height(), labelSize(), figureFontMeasure());
-    overlay_ = layout_.cells.empty() ? Figure{} : storyboardOverlay(*scene_, layout_, traced(), figureFontMeasure(), 1);
+    layout_ = report::layoutStoryboard(*scene_, stages, traced(), width(), height(), labelSize(), figureFontMeasure());
+    overlay_ = layout_.cells.empty() ? report::Figure{} : storyboardOverlay(*scene_, layout_, traced(), figureFontMeasure(), 1);
     for (std::size_t k = 0; k < cells_.size(); ++k) {
         Cell& cell = *cells_[k];
         if (k >= layout_.cells.size()) { // no room for it
             cell.widget->hide();
             continue;
         }
-        const Box2& box = layout_.cells[k].picture;
+        const report::Box2& box = layout_.cells[k].picture;
         cell.widget->setGeometry(int(box.min.x()), int(box.min.y()), int(box.max.x() - box.min.x()),
                                  int(box.max.y() - box.min.y()));
         cell.widget->show();
@@ -189,7 +189,7 @@ void StoryboardView::setCurrentStage(int stage)
     update();
 }
 
-void StoryboardView::setTheme(Theme theme)
+void StoryboardView::setTheme(report::Theme theme)
 {
     theme_ = theme;
     for (auto& cell : cells_)
@@ -244,13 +244,13 @@ void StoryboardView::paintEvent(QPaintEvent*)
 {
     QPainter painter(this);
     painter.setRenderHint(QPainter::Antialiasing);
-    const Rgb back = backgroundColor(theme_, false);
+    const report::Rgb back = report::backgroundColor(theme_, false);
     painter.fillRect(rect(), QColor::fromRgbF(back.r, back.g, back.b));
     paintFigure(painter, overlay_, theme_);
     for (std::size_t k = 0; k < layout_.cells.size() && k < cells_.size(); ++k)
         if (cells_[k]->stage == currentStage_) { // the stage the stepper is at: outlined
-            const Box2& box = layout_.cells[k].picture;
-            const Rgb c = elementColor(Element::Objects, theme_);
+            const report::Box2& box = layout_.cells[k].picture;
+            const report::Rgb c = report::elementColor(Element::Objects, theme_);
             painter.setPen(QPen(QColor::fromRgbF(c.r, c.g, c.b), 2));
             painter.setBrush(Qt::NoBrush);
             painter.drawRect(QRectF(box.min.x() - 2, box.min.y() - 2, box.max.x() - box.min.x() + 4,

@@ -33,7 +33,7 @@ public:
     void setTraced(const std::optional<Vec3<double>>& point) override;
     // The stage the stepper shows, outlined.
     void setCurrentStage(int stage);
-    void setTheme(Theme theme) override;
+    void setTheme(report::Theme theme) override;
     void setTextScale(double scale) override;
     // A cell shows no notes: its header names the stage.
     void setTicksAndNotesShown(bool ticks, bool notes) override;
@@ -51,7 +51,7 @@ public:
     int cellStage(int k) const;
     QVTKOpenGLNativeWidget* cellWidget(int k) const;
     const ScenePainter& cellPainter(int k) const;
-    const StoryboardLayout& layout() const { return layout_; }
+    const report::StoryboardLayout& layout() const { return layout_; }
     // The scene the cells draw (a lesson step's, without what it hides).
     const std::shared_ptr<const EvaluatedScene>& scene() const { return scene_; }
     // The point the cells trace.
@@ -75,11 +75,11 @@ private:
     std::shared_ptr<MeshDetails> meshes_;
     std::shared_ptr<const EvaluatedScene> scene_, cellScene_;
     std::shared_ptr<const EvaluatedScene> waiting_; // given while hidden
-    StageFramings framings_;
-    StoryboardLayout layout_;
-    Figure overlay_;
+    report::StageFramings framings_;
+    report::StoryboardLayout layout_;
+    report::Figure overlay_;
     std::optional<Vec3<double>> traced_;
-    Theme theme_ = Theme::Dark;
+    report::Theme theme_ = report::Theme::Dark;
     double textScale_ = 1;
     bool ticksShown_ = true;
     int currentStage_ = -1;

@@ -8,10 +8,10 @@
 
 namespace viewpipe::gui {
 
-void applyTheme(Theme theme)
+void applyTheme(report::Theme theme)
 {
     QApplication::setStyle(QStyleFactory::create("Fusion"));
-    if (theme == Theme::Light) {
+    if (theme == report::Theme::Light) {
         QApplication::setPalette(QApplication::style()->standardPalette());
         return;
     }

@@ -5,6 +5,6 @@
 namespace viewpipe::gui {
 
 // Qt's side of a theme: a dark palette for the screen, the light default for slides.
-void applyTheme(Theme theme);
+void applyTheme(report::Theme theme);
 
 } // namespace viewpipe::gui

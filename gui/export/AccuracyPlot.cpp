@@ -28,7 +28,7 @@ const int kMarkers[] = {vtkPlotPoints::CIRCLE, vtkPlotPoints::SQUARE, vtkPlotPoi
 
 // `narrow`: a panel beside the views, where the legend and the labels take
 // room from the plot.
-void addPanel(vtkChartXY* chart, const BenchResult& result, bool vertices, Theme theme, bool narrow)
+void addPanel(vtkChartXY* chart, const BenchResult& result, bool vertices, report::Theme theme, bool narrow)
 {
     styleChart(chart, vertices ? "Pushing vertices" : "Building N", theme);
     // Each chart lays out its own axes' titles and labels inside its cell,
@@ -76,7 +76,7 @@ void addPanel(vtkChartXY* chart, const BenchResult& result, bool vertices, Theme
 
 } // namespace
 
-void drawAccuracyCharts(vtkChartMatrix* charts, const BenchResult& result, Theme theme, bool stacked)
+void drawAccuracyCharts(vtkChartMatrix* charts, const BenchResult& result, report::Theme theme, bool stacked)
 {
     // vtkChartMatrix counts rows from the bottom: the vertex panel goes on top when stacked.
     charts->SetSize(stacked ? vtkVector2i(1, 2) : vtkVector2i(2, 1));
@@ -88,7 +88,7 @@ void drawAccuracyCharts(vtkChartMatrix* charts, const BenchResult& result, Theme
              false, theme, stacked);
 }
 
-void writeAccuracyPlot(const BenchResult& result, const std::filesystem::path& file, Theme theme)
+void writeAccuracyPlot(const BenchResult& result, const std::filesystem::path& file, report::Theme theme)
 {
     writeChartPng(
         [&](vtkContextView* view) {

@@ -16,9 +16,9 @@ namespace viewpipe::gui {
 
 // Fills a chart matrix (made by the caller, shown by a context view): the
 // two panels side by side, or stacked for a narrow panel.
-void drawAccuracyCharts(vtkChartMatrix* charts, const BenchResult& result, Theme theme, bool stacked);
+void drawAccuracyCharts(vtkChartMatrix* charts, const BenchResult& result, report::Theme theme, bool stacked);
 
 // Renders the charts offscreen to a PNG (needs a display; see VirtualDisplay).
-void writeAccuracyPlot(const BenchResult& result, const std::filesystem::path& file, Theme theme);
+void writeAccuracyPlot(const BenchResult& result, const std::filesystem::path& file, report::Theme theme);
 
 } // namespace viewpipe::gui

@@ -45,7 +45,7 @@ std::string powerOfTen(int e)
 
 ChartText chartTextFor(int width, double textScale)
 {
-    const double label = exportLabelSize(width, textScale), small = smallTextSize(label);
+    const double label = report::exportLabelSize(width, textScale), small = report::smallTextSize(label);
     return {1.1 * label, label, small, small};
 }
 
@@ -77,7 +77,7 @@ ChartText fitChartText(int width, int height, double textScale, const ChartWords
     return measured(floor / 100.0).first;
 }
 
-void styleLinearAxis(vtkAxis* axis, const std::string& title, Theme theme, double low, double high, double length,
+void styleLinearAxis(vtkAxis* axis, const std::string& title, report::Theme theme, double low, double high, double length,
                      const ChartText& text)
 {
     styleAxis(axis, title, theme, text);
@@ -113,20 +113,20 @@ void styleLinearAxis(vtkAxis* axis, const std::string& title, Theme theme, doubl
         }
 }
 
-void styleAxis(vtkAxis* axis, const std::string& title, Theme theme, const ChartText& text)
+void styleAxis(vtkAxis* axis, const std::string& title, report::Theme theme, const ChartText& text)
 {
     axis->SetTitle(title);
     useFigureFont(axis->GetTitleProperties(), true);
     useFigureFont(axis->GetLabelProperties(), false); // a font with superscripts (powerOfTen)
     axis->GetTitleProperties()->SetFontSize(int(std::lround(text.axisTitle)));
     axis->GetLabelProperties()->SetFontSize(int(std::lround(text.labels)));
-    const double c = theme == Theme::Dark ? 0.9 : 0.1;
+    const double c = theme == report::Theme::Dark ? 0.9 : 0.1;
     axis->GetTitleProperties()->SetColor(c, c, c);
     axis->GetLabelProperties()->SetColor(c, c, c);
     axis->GetPen()->SetColorF(c, c, c);
 }
 
-void styleLogAxis(vtkAxis* axis, const std::string& title, Theme theme, double low, double high, int maxLabels,
+void styleLogAxis(vtkAxis* axis, const std::string& title, report::Theme theme, double low, double high, int maxLabels,
                   const ChartText& text)
 {
     styleAxis(axis, title, theme, text);
@@ -150,9 +150,9 @@ void styleLogAxis(vtkAxis* axis, const std::string& title, Theme theme, double l
     axis->SetCustomTickPositions(ticks, labels);
 }
 
-void styleChart(vtkChart* chart, const std::string& title, Theme theme, const ChartText& text)
+void styleChart(vtkChart* chart, const std::string& title, report::Theme theme, const ChartText& text)
 {
-    const bool dark = theme == Theme::Dark;
+    const bool dark = theme == report::Theme::Dark;
     chart->SetTitle(title);
     useFigureFont(chart->GetTitleProperties(), false);
     useFigureFont(chart->GetLegend()->GetLabelProperties(), false);
@@ -165,13 +165,13 @@ void styleChart(vtkChart* chart, const std::string& title, Theme theme, const Ch
     chart->GetLegend()->GetBrush()->SetColor(legend, legend, legend, 230);
 }
 
-void writeChartPng(const std::function<void(vtkContextView*)>& draw, int width, int height, Theme theme,
+void writeChartPng(const std::function<void(vtkContextView*)>& draw, int width, int height, report::Theme theme,
                    const std::filesystem::path& file, const std::string& field)
 {
     vtkNew<vtkContextView> view;
     view->GetRenderWindow()->SetOffScreenRendering(1);
     view->GetRenderWindow()->SetSize(width, height);
-    const double bg = theme == Theme::Dark ? 0.11 : 1.0;
+    const double bg = theme == report::Theme::Dark ? 0.11 : 1.0;
     view->GetRenderer()->SetBackground(bg, bg, bg);
     draw(view);
     view->GetRenderWindow()->Render();

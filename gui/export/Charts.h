@@ -44,23 +44,23 @@ ChartText fitChartText(int width, int height, double textScale, const ChartWords
 // a short axis, where they would run together). The room beyond `low` and
 // `high`, a decade or an eighth of their span, keeps a 14 px marker there
 // whole on a plot about 80 px long or more, however many decades it spans.
-void styleLogAxis(vtkAxis* axis, const std::string& title, Theme theme, double low, double high, int maxLabels = 12,
+void styleLogAxis(vtkAxis* axis, const std::string& title, report::Theme theme, double low, double high, int maxLabels = 12,
                   const ChartText& text = {});
 
 // A linear axis: title and labels in the theme's colors.
-void styleAxis(vtkAxis* axis, const std::string& title, Theme theme, const ChartText& text = {});
+void styleAxis(vtkAxis* axis, const std::string& title, report::Theme theme, const ChartText& text = {});
 // A linear axis from `low` to `high` labelled at round steps (1, 2 or 5 times
 // a power of ten), as many as fit along `length` pixels with room between them.
-void styleLinearAxis(vtkAxis* axis, const std::string& title, Theme theme, double low, double high, double length,
+void styleLinearAxis(vtkAxis* axis, const std::string& title, report::Theme theme, double low, double high, double length,
                      const ChartText& text);
 
 // The chart's title and legend in the theme's colors.
-void styleChart(vtkChart* chart, const std::string& title, Theme theme, const ChartText& text = {});
+void styleChart(vtkChart* chart, const std::string& title, report::Theme theme, const ChartText& text = {});
 
 // Renders what `draw` puts into an offscreen context view of the given size
 // and writes it as a PNG, atomically (temporary file, then rename); throws
 // InputError naming `field` when it cannot be written. Needs a display.
-void writeChartPng(const std::function<void(vtkContextView*)>& draw, int width, int height, Theme theme,
+void writeChartPng(const std::function<void(vtkContextView*)>& draw, int width, int height, report::Theme theme,
                    const std::filesystem::path& file, const std::string& field);
 
 } // namespace viewpipe::gui

@@ -69,7 +69,7 @@ ChartWords depthChartWords(const Pipeline<double>& pipeline, const DepthOptions&
 
 } // namespace
 
-void drawDepthChart(vtkChartXY* chart, const Pipeline<double>& pipeline, const DepthOptions& options, Theme theme,
+void drawDepthChart(vtkChartXY* chart, const Pipeline<double>& pipeline, const DepthOptions& options, report::Theme theme,
                     const ChartText& text)
 {
     chart->ClearPlots();
@@ -124,14 +124,14 @@ void drawDepthChart(vtkChartXY* chart, const Pipeline<double>& pipeline, const D
     styleLogAxis(chart->GetAxis(vtkAxis::LEFT), words.leftTitle, theme, low, high, leftLabels, text);
 }
 
-void drawDepthChart(vtkChartXY* chart, const Pipeline<double>& pipeline, const DepthOptions& options, Theme theme,
+void drawDepthChart(vtkChartXY* chart, const Pipeline<double>& pipeline, const DepthOptions& options, report::Theme theme,
                     int width, int height, double textScale)
 {
     drawDepthChart(chart, pipeline, options, theme, fitChartText(width, height, textScale, depthChartWords(pipeline, options)));
 }
 
 void writeDepthPlot(const Pipeline<double>& pipeline, const DepthOptions& options, const std::filesystem::path& file,
-                    Theme theme, int width, int height, double textScale)
+                    report::Theme theme, int width, int height, double textScale)
 {
     writeChartPng(
         [&](vtkContextView* view) {

@@ -17,13 +17,13 @@ namespace viewpipe::gui {
 // The chart with the app panel's text sizes (`text` as given), or as an
 // export draws it (text fitted to the picture, fitChartText: as many
 // numbers on the axes as fit).
-void drawDepthChart(vtkChartXY* chart, const Pipeline<double>& pipeline, const DepthOptions& options, Theme theme,
+void drawDepthChart(vtkChartXY* chart, const Pipeline<double>& pipeline, const DepthOptions& options, report::Theme theme,
                     const ChartText& text = {});
-void drawDepthChart(vtkChartXY* chart, const Pipeline<double>& pipeline, const DepthOptions& options, Theme theme,
+void drawDepthChart(vtkChartXY* chart, const Pipeline<double>& pipeline, const DepthOptions& options, report::Theme theme,
                     int width, int height, double textScale);
 
 // Renders the export's chart offscreen to a PNG, atomically (needs a display).
 void writeDepthPlot(const Pipeline<double>& pipeline, const DepthOptions& options, const std::filesystem::path& file,
-                    Theme theme, int width, int height, double textScale);
+                    report::Theme theme, int width, int height, double textScale);
 
 } // namespace viewpipe::gui

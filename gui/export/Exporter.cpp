@@ -117,9 +117,9 @@ struct SceneOutput {
 
 // A storyboard's files are drawn from: its figures and the painter's picture of each cell.
 struct StoryboardPictures {
-    Storyboard storyboard;
+    report::Storyboard storyboard;
     std::vector<std::string> cellPngs;
-    Theme theme;
+    report::Theme theme;
 };
 
 // An export format: a file for each stage (its name the stage's and `suffix`),
@@ -145,11 +145,11 @@ int pageSteps(const EvaluatedScene& scene)
 std::string scenePage(const std::shared_ptr<const EvaluatedScene>& scene, const ExportOptions& options, Steps& step)
 {
     const auto shown = withoutHidden(scene, options.hidden);
-    const WebPageViews views = recordWebViews(shown, options.width, options.height, options.scale, options.theme,
+    const report::WebPageViews views = recordWebViews(shown, options.width, options.height, options.scale, options.theme,
                                               options.framing, std::ref(step), options.textScale / 100.0, options.hidden,
                                               options.legend);
     step("scene.html");
-    return viewpipe::webPage(*shown, views, loadWebAssets("/usr/share/javascript", {}, options.presets));
+    return viewpipe::report::webPage(*shown, views, report::loadWebAssets("/usr/share/javascript", {}, options.presets));
 }
 
 const std::vector<Format>& formatTable()
@@ -169,18 +169,18 @@ const std::vector<Format>& formatTable()
         // "-tikz.tex": pdflatex makes "-tikz.pdf" of it, not the PDF format's file.
         {{"tikz", "a TikZ figure of each stage, and figures.tex showing them all"}, "-tikz.tex",
          [](const StagePicture& p, const fs::path& file) {
-             writeFileAtomically(file, tikzFigure(flatFigure(p.vector), p.vector.theme));
+             writeFileAtomically(file, report::tikzFigure(flatFigure(p.vector), p.vector.theme));
          },
          [](SceneOutput& out) {
              out.step("figures.tex");
              std::vector<std::pair<std::string, std::string>> figures;
              for (const auto& [base, k] : out.figures) // numbered by the document, not by the stage
                  figures.emplace_back(base + "-tikz", stageCaption(*out.evaluated, std::size_t(k), StageText::Figure));
-             writeFileAtomically(out.folder / "figures.tex", tikzFiguresDocument(figures));
+             writeFileAtomically(out.folder / "figures.tex", report::tikzFiguresDocument(figures));
          },
          [](const EvaluatedScene&) { return 1; },
          [](const StoryboardPictures& p, const fs::path& file) {
-             writeFileAtomically(file, tikzStoryboard(p.storyboard, p.theme));
+             writeFileAtomically(file, report::tikzStoryboard(p.storyboard, p.theme));
          }},
         {{"html", "one self-contained web page of the scene, scene.html"}, "", {},
          [](SceneOutput& out) { writeFileAtomically(out.folder / "scene.html", scenePage(out.evaluated, out.options, out.step)); },
@@ -238,7 +238,7 @@ std::string pictureCaption(const EvaluatedScene& scene, int k, const ExportOptio
 
 // animation.mp4: the app's transitions, with the same motion and framing, each stage held.
 void writeAnimation(OffscreenPainter& offscreen, const EvaluatedScene& evaluated, const ExportOptions& options,
-                    const StageFramings& framing, const fs::path& folder, Steps& step,
+                    const report::StageFramings& framing, const fs::path& folder, Steps& step,
                     const std::atomic<bool>& cancel)
 {
     const int n = int(evaluated.pipeline.stages.size()), total = animationFrames(n, options.fps);
@@ -256,7 +256,7 @@ void writeAnimation(OffscreenPainter& offscreen, const EvaluatedScene& evaluated
         const std::string caption = pictureCaption(evaluated, k, options);
         offscreen.painter->setCaptions(caption, "");
         if (k > 0) {
-            const StageMotion motion(evaluated, k - 1, k, framing);
+            const report::StageMotion motion(evaluated, k - 1, k, framing);
             for (int f = 1; f <= options.fps; ++f) {
                 offscreen.painter->showMoment(motion.at(double(f) / options.fps));
                 emit();
@@ -283,7 +283,7 @@ void writeAnimation(OffscreenPainter& offscreen, const EvaluatedScene& evaluated
 void validate(const ExportOptions& o)
 {
     validatePictureSize(o.width, o.height, o.scale);
-    checkTextScale(o.textScale, "--text-scale");
+    report::checkTextScale(o.textScale, "--text-scale");
     if (o.fps < 1 || o.fps > 120)
         throw InputError("--fps", "must be 1 to 120");
     if (o.digits < 1 || o.digits > 17)
@@ -320,12 +320,12 @@ void writeStoryboardFiles(const std::shared_ptr<const EvaluatedScene>& evaluated
                           const fs::path& folder, Steps& step)
 {
     const int width = options.width * options.scale, height = options.height * options.scale;
-    const double labelSize = storyboardLabelSize(width, options.textScale / 100.0);
-    const Vec3<double> traced = storyboardTracedPoint(*evaluated);
-    const StoryboardLayout layout = layoutStoryboard(*evaluated, chosen, traced, width, height, labelSize, figureFontMeasure());
+    const double labelSize = report::storyboardLabelSize(width, options.textScale / 100.0);
+    const Vec3<double> traced = report::storyboardTracedPoint(*evaluated);
+    const report::StoryboardLayout layout = report::layoutStoryboard(*evaluated, chosen, traced, width, height, labelSize, figureFontMeasure());
     if (layout.cells.empty())
         throw InputError("--size", "leaves no room for a storyboard of " + std::to_string(chosen.size()) + " pictures");
-    const Box2& cell = layout.cells.front().picture;
+    const report::Box2& cell = layout.cells.front().picture;
     const auto cellScene = withoutEffectsNote(evaluated);
     OffscreenPainter offscreen(cellScene, int(cell.max.x() - cell.min.x()), int(cell.max.y() - cell.min.y()), 1,
                                options.theme, false);
@@ -333,16 +333,16 @@ void writeStoryboardFiles(const std::shared_ptr<const EvaluatedScene>& evaluated
     styleStoryboardCell(painter, layout.labelSize, !options.hidden.count("ticks"), traced);
     painter.setLineScale(options.scale);
     painter.orbit(0, 0, options.zoom);
-    const StageFramings framing = stageFramings(*cellScene, options.framing);
-    StoryboardPictures pictures{{layout, {}, storyboardOverlay(*evaluated, layout, traced, figureFontMeasure(), options.scale),
+    const report::StageFramings framing = stageFramings(*cellScene, options.framing);
+    StoryboardPictures pictures{{layout, {}, report::storyboardOverlay(*evaluated, layout, traced, figureFontMeasure(), options.scale),
                                  evaluated->scene.name.empty() ? "Storyboard" : evaluated->scene.name + ": every stage"},
                                 {}, options.theme};
     for (const int k : chosen) {
         step("storyboard: stage " + std::to_string(k));
-        StageShown shown = showStageAtRest(offscreen, *cellScene, k, "", framing);
+        report::StageShown shown = showStageAtRest(offscreen, *cellScene, k, "", framing);
         shown.traced = traced;
-        Figure figure = flatFigure(VectorFigure{&shown, painter.figureView(), "", painter.placedLabels(), options.theme});
-        cutShapesTo(figure, {{0, 0}, {double(figure.width), double(figure.height)}});
+        report::Figure figure = flatFigure(VectorFigure{&shown, painter.figureView(), "", painter.placedLabels(), options.theme});
+        report::cutShapesTo(figure, {{0, 0}, {double(figure.width), double(figure.height)}});
         pictures.storyboard.cells.push_back(std::move(figure));
         pictures.cellPngs.push_back(windowPng(offscreen.window, false));
     }
@@ -356,7 +356,7 @@ void writeStoryboardFiles(const std::shared_ptr<const EvaluatedScene>& evaluated
 
 } // namespace
 
-void exportWebPage(const std::shared_ptr<const EvaluatedScene>& scene, const fs::path& file, Theme theme,
+void exportWebPage(const std::shared_ptr<const EvaluatedScene>& scene, const fs::path& file, report::Theme theme,
                    const ExportProgress& progress, const std::atomic<bool>& cancel)
 {
     ExportOptions options;
@@ -371,7 +371,7 @@ void exportWebPage(const std::shared_ptr<const EvaluatedScene>& scene, const fs:
     }
 }
 
-void exportSheet(const EvaluatedScene& scene, const fs::path& file, int width, int height, Theme theme)
+void exportSheet(const EvaluatedScene& scene, const fs::path& file, int width, int height, report::Theme theme)
 {
     if (width < 128 || height < 128 || width > 8192 || height > 8192)
         throw InputError("--size", "must be WxH with 128 <= W, H <= 8192");
@@ -390,8 +390,8 @@ void exportSheet(const EvaluatedScene& scene, const fs::path& file, int width, i
     vtkNew<vtkRenderWindow> window;
     window->SetOffScreenRendering(1);
     window->SetSize(width, height);
-    const double background = theme == Theme::Dark ? 0.11 : 1.0;
-    const Rgb ink = elementColor(Element::Objects, theme);
+    const double background = theme == report::Theme::Dark ? 0.11 : 1.0;
+    const report::Rgb ink = report::elementColor(Element::Objects, theme);
     // One scale for the four views, as a drawing has: lengths compare across them.
     std::vector<foley::ViewSpec<double>> views;
     double scale = 0;
@@ -468,24 +468,24 @@ std::vector<int> parseStages(const std::string& text, int stageCount)
     return stages;
 }
 
-WebPageViews recordWebViews(const std::shared_ptr<const EvaluatedScene>& evaluated, int width, int height, int scale,
-                            Theme theme, FramingMode framing, const std::function<void(const std::string&)>& step,
-                            double textScale, const std::set<std::string>& hidden, LegendPlace legend)
+report::WebPageViews recordWebViews(const std::shared_ptr<const EvaluatedScene>& evaluated, int width, int height, int scale,
+                            report::Theme theme, report::FramingMode framing, const std::function<void(const std::string&)>& step,
+                            double textScale, const std::set<std::string>& hidden, report::LegendPlace legend)
 {
     validatePictureSize(width, height, scale);
-    WebViewOptions options;
+    report::WebViewOptions options;
     options.width = width * scale;
     options.height = height * scale;
     // In whole pixels, as the painter sets its text (OffscreenPainter).
-    options.fontSize = int(exportLabelSize(options.width, textScale));
-    options.minFontSize = int(exportLabelSize(options.width, 1));
+    options.fontSize = int(report::exportLabelSize(options.width, textScale));
+    options.minFontSize = int(report::exportLabelSize(options.width, 1));
     options.lineScale = scale;
     options.theme = theme;
     options.framing = framing;
     options.hidden = hidden;
     options.legend = legend;
     const int n = int(evaluated->pipeline.stages.size());
-    return webPageViews(*evaluated, options, figureFontMeasure(), [&](int k) {
+    return report::webPageViews(*evaluated, options, figureFontMeasure(), [&](int k) {
         step("web page: stage " + std::to_string(k) + " of " + std::to_string(n));
     });
 }
@@ -530,12 +530,12 @@ std::vector<fs::path> exportStages(const std::shared_ptr<const EvaluatedScene>& 
         offscreen.painter->setLegendPlace(options.legend);
         offscreen.painter->setTicksAndNotesShown(!options.hidden.count("ticks"), !options.hidden.count("notes"));
         offscreen.painter->orbit(0, 0, options.zoom);
-        const StageFramings framing = stageFramings(*evaluated, options.framing);
+        const report::StageFramings framing = report::stageFramings(*evaluated, options.framing);
         SceneOutput output{scene, options, {}, staging.path(), step}; // the page draws the scene whole
         for (int k : chosen) {
             const std::string base = stageFileBase(evaluated->pipeline, k);
             const std::string caption = pictureCaption(*evaluated, k, options);
-            const StageShown shown = showStageAtRest(offscreen, *evaluated, k, caption, framing);
+            const report::StageShown shown = showStageAtRest(offscreen, *evaluated, k, caption, framing);
             const StagePicture picture{offscreen.window, options.transparent,
                                        VectorFigure{&shown, offscreen.painter->figureView(), caption,
                                                     offscreen.painter->placedLabels(), options.theme}};

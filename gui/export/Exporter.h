@@ -31,7 +31,7 @@ struct ExportOptions {
     int scale = 1;               // pixels per size unit: 2 for high-DPI slides
     int textScale = 100;         // percent of the text's size (exportLabelSize)
     std::vector<int> stages;     // empty: all, 0 (the world) to n
-    Theme theme = Theme::Light;
+    report::Theme theme = report::Theme::Light;
     bool transparent = false;
     std::set<std::string> formats = {"png"}; // names of exportFormats()
     bool animate = false;
@@ -43,12 +43,12 @@ struct ExportOptions {
     // scene about 35 times at S_per), and one framing for all would leave those
     // pictures nearly empty. Fixed uses one framing that holds every stage,
     // for side-by-side comparison of sizes; per-stage frames each on its own.
-    FramingMode framing = FramingMode::Together;
+    report::FramingMode framing = report::FramingMode::Together;
     // What the pictures leave out (--hide): the elements by the names a lesson step's `hide` takes,
     // "labels", "legend", "caption", "ticks" (the grey axes' ticks and numbers) and "notes" (the effects'
     // note and the notice of labels left out for room).
     std::set<std::string> hidden;
-    LegendPlace legend = LegendPlace::Best;
+    report::LegendPlace legend = report::LegendPlace::Best;
     double zoom = 1; // the subject this many times larger than framed, about its center
     // Every stage at once (--layout storyboard): one storyboard file per format instead of a file per stage.
     bool storyboard = false;
@@ -78,7 +78,7 @@ std::vector<std::filesystem::path> exportStages(const std::shared_ptr<const Eval
 
 // The scene as one self-contained web page at `file` (export's html format),
 // written atomically; throws as exportStages does.
-void exportWebPage(const std::shared_ptr<const EvaluatedScene>& scene, const std::filesystem::path& file, Theme theme,
+void exportWebPage(const std::shared_ptr<const EvaluatedScene>& scene, const std::filesystem::path& file, report::Theme theme,
                    const ExportProgress& progress, const std::atomic<bool>& cancel);
 
 // What the web page of a scene draws (webPageViews, report/web_page.hpp):
@@ -87,16 +87,16 @@ void exportWebPage(const std::shared_ptr<const EvaluatedScene>& scene, const std
 // pictures' font. Throws InputError for a bad size or
 // scale; `step` hears of each stage. `textScale` as OffscreenPainter's; `hidden` and `legend` as export's
 // --hide and --legend (the scene already without what `hidden` names), the page's choices at first.
-WebPageViews recordWebViews(const std::shared_ptr<const EvaluatedScene>& scene, int width, int height, int scale,
-                            Theme theme, FramingMode framing, const std::function<void(const std::string&)>& step,
+report::WebPageViews recordWebViews(const std::shared_ptr<const EvaluatedScene>& scene, int width, int height, int scale,
+                            report::Theme theme, report::FramingMode framing, const std::function<void(const std::string&)>& step,
                             double textScale = 1, const std::set<std::string>& hidden = {},
-                            LegendPlace legend = LegendPlace::Best);
+                            report::LegendPlace legend = report::LegendPlace::Best);
 
 // The CAD layout of seed 001 for a scene's objects, as one PNG: the top view
 // above the front view, the (right) side view beside it, and the isometric
 // view in the remaining corner. Written atomically; throws InputError for a
 // bad size, a scene without objects or an unwritable file.
-void exportSheet(const EvaluatedScene& scene, const std::filesystem::path& file, int width, int height, Theme theme);
+void exportSheet(const EvaluatedScene& scene, const std::filesystem::path& file, int width, int height, report::Theme theme);
 
 // What a render window shows, as a PNG (with alpha when `transparent`);
 // throws std::runtime_error when it cannot be written.

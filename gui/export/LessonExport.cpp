@@ -23,12 +23,12 @@ namespace {
 // The figures' text against the pictures' at their size: a page sets them at
 // kHandoutFigureWidth of its text (lesson_latex.hpp); a slide at 0.63 of its
 // 152 mm beside the step's text, where 1.25 sets labels of 2.4 % of the width at 8 pt.
-constexpr double kPaperFontScale = kHandoutFigureTextScale, kSlideFontScale = 1.25;
+constexpr double kPaperFontScale = report::kHandoutFigureTextScale, kSlideFontScale = 1.25;
 
 // Step `step`'s view of `stage` as a PDF figure: its camera, its stage, the
 // stage named only when the step does not hide it.
 void writeStepFigure(const OffscreenPainter& offscreen, const std::shared_ptr<const EvaluatedScene>& scene,
-                     const LessonStep& step, int stage, bool named, const std::optional<Vec3<double>>& traced, Theme theme,
+                     const LessonStep& step, int stage, bool named, const std::optional<Vec3<double>>& traced, report::Theme theme,
                      const fs::path& file)
 {
     ScenePainter& painter = *offscreen.painter;
@@ -37,7 +37,7 @@ void writeStepFigure(const OffscreenPainter& offscreen, const std::shared_ptr<co
     painter.orbit(step.yaw, step.pitch, step.zoom);
     painter.markTraced(traced); // placed with the rest
     const std::string caption = named ? stageCaption(*scene, std::size_t(stage), StageText::Heading) : std::string();
-    StageShown shown = showStageAtRest(offscreen, *scene, stage, caption, {});
+    report::StageShown shown = showStageAtRest(offscreen, *scene, stage, caption, {});
     shown.traced = traced;
     writeVectorFigure({&shown, painter.figureView(), caption, painter.placedLabels(), theme}, "pdf", file);
 }
@@ -72,8 +72,8 @@ std::string fieldAt(const fs::path& document, int line)
     std::ifstream in(document);
     std::string text, field = "title";
     for (int k = 1; k <= line && std::getline(in, text); ++k)
-        if (text.rfind(kStepMark, 0) == 0)
-            field = "steps" + text.substr(std::string(kStepMark).size());
+        if (text.rfind(report::kStepMark, 0) == 0)
+            field = "steps" + text.substr(std::string(report::kStepMark).size());
     return field;
 }
 
@@ -106,12 +106,12 @@ void compile(const fs::path& folder, const std::string& document)
 // The steps' figures, written into `folder`: on paper (the handout, the problem sheet) and, with
 // `forSlides`, for the slides.
 struct StepFigures {
-    std::vector<LessonFigures> paper, slides;
+    std::vector<report::LessonFigures> paper, slides;
 };
 StepFigures writeStepFigures(const Lesson& lesson, const EvaluatedLesson& evaluated, const LessonExportOptions& options,
                              const fs::path& folder, bool forSlides, const std::function<void(const std::string&)>& step)
 {
-    StepFigures made{std::vector<LessonFigures>(lesson.steps.size()), std::vector<LessonFigures>(lesson.steps.size())};
+    StepFigures made{std::vector<report::LessonFigures>(lesson.steps.size()), std::vector<report::LessonFigures>(lesson.steps.size())};
     for (std::size_t s = 0; s < evaluated.shown.size(); ++s) {
         const auto& scene = evaluated.shown[s];
         const OffscreenPainter paper(scene, options.width, options.height, 1, options.theme, false, kPaperFontScale);
@@ -125,7 +125,7 @@ StepFigures writeStepFigures(const Lesson& lesson, const EvaluatedLesson& evalua
             step("figures of step " + std::to_string(k + 1) + " of " + std::to_string(lesson.steps.size()));
             char name[32];
             std::snprintf(name, sizeof name, "step-%02zu", k + 1);
-            auto figures = [&](const OffscreenPainter& offscreen, const std::string& prefix, LessonFigures& files) {
+            auto figures = [&](const OffscreenPainter& offscreen, const std::string& prefix, report::LessonFigures& files) {
                 files.revealed = prefix + name + ".pdf";
                 writeStepFigure(offscreen, scene, lessonStep, revealedStage(lessonStep), true, tracedAt(lessonStep, true),
                                 options.theme, folder / files.revealed);
@@ -147,14 +147,14 @@ StepFigures writeStepFigures(const Lesson& lesson, const EvaluatedLesson& evalua
 void writeLessonPage(const Lesson& lesson, const EvaluatedLesson& evaluated, const LessonExportOptions& options,
                      const fs::path& folder, const std::function<void(const std::string&)>& step)
 {
-    std::vector<LessonScene> scenes;
+    std::vector<report::LessonScene> scenes;
     for (const auto& scene : evaluated.shown) {
         step("recording " + scene->scene.name);
-        scenes.push_back({scene, recordWebViews(scene, options.width, options.height, 1, options.theme, FramingMode::Together,
+        scenes.push_back({scene, recordWebViews(scene, options.width, options.height, 1, options.theme, report::FramingMode::Together,
                                                 [](const std::string&) {})});
     }
     step("lesson.html");
-    writeFileAtomically(folder / "lesson.html", lessonPage(lesson, evaluated.stepShown, scenes, loadWebAssets()));
+    writeFileAtomically(folder / "lesson.html", report::lessonPage(lesson, evaluated.stepShown, scenes, report::loadWebAssets()));
 }
 
 } // namespace
@@ -191,16 +191,16 @@ std::vector<fs::path> exportLesson(const Lesson& lesson, const EvaluatedLesson& 
         pdf || sheet ? writeStepFigures(lesson, evaluated, options, staging.path(), pdf, step) : StepFigures{};
     if (pdf) {
         step("handout.pdf");
-        writeFileAtomically(staging.path() / "handout.tex", lessonHandoutLatex(lesson, figures.paper));
+        writeFileAtomically(staging.path() / "handout.tex", report::lessonHandoutLatex(lesson, figures.paper));
         compile(staging.path(), "handout");
         step("slides.pdf");
-        writeFileAtomically(staging.path() / "slides.tex", lessonSlidesLatex(lesson, figures.slides));
+        writeFileAtomically(staging.path() / "slides.tex", report::lessonSlidesLatex(lesson, figures.slides));
         compile(staging.path(), "slides");
         files.insert(files.end(), {"handout.pdf", "slides.pdf"});
     }
     if (sheet) {
         step("sheet.pdf");
-        writeFileAtomically(staging.path() / "sheet.tex", lessonSheetLatex(lesson, figures.paper));
+        writeFileAtomically(staging.path() / "sheet.tex", report::lessonSheetLatex(lesson, figures.paper));
         compile(staging.path(), "sheet");
         files.push_back("sheet.pdf");
     }

@@ -20,7 +20,7 @@ struct LessonExportOptions {
     std::filesystem::path out;
     std::set<std::string> formats = {"html"}; // html: lesson.html; pdf: handout.pdf and slides.pdf; sheet: sheet.pdf
     int width = 1280, height = 720;           // the pictures' (the PDF's figures too)
-    Theme theme = Theme::Light;
+    report::Theme theme = report::Theme::Light;
 };
 
 // "pdf,html": a comma-separated list of html, pdf and sheet; throws InputError naming --format.

@@ -4,7 +4,7 @@
 namespace viewpipe::gui {
 
 OffscreenPainter::OffscreenPainter(const std::shared_ptr<const EvaluatedScene>& scene, int width, int height, int scale,
-                                   Theme theme, bool transparent, double textScale)
+                                   report::Theme theme, bool transparent, double textScale)
 {
     window->SetOffScreenRendering(1);
     window->SetSize(width * scale, height * scale);
@@ -14,7 +14,7 @@ OffscreenPainter::OffscreenPainter(const std::shared_ptr<const EvaluatedScene>& 
     window->AddRenderer(renderer);
     painter = std::make_unique<ScenePainter>(renderer, nullptr);
     painter->setTheme(theme);
-    painter->setFontSize(int(exportLabelSize(width * scale, textScale)), int(exportLabelSize(width * scale, 1)));
+    painter->setFontSize(int(report::exportLabelSize(width * scale, textScale)), int(report::exportLabelSize(width * scale, 1)));
     painter->setLineScale(scale);
     painter->setScene(scene);
     if (transparent)
@@ -23,21 +23,21 @@ OffscreenPainter::OffscreenPainter(const std::shared_ptr<const EvaluatedScene>& 
     painter->resetView();
 }
 
-StageShown showStageAtRest(const OffscreenPainter& offscreen, const EvaluatedScene& scene, int k,
-                           const std::string& caption, const StageFramings& framings)
+report::StageShown showStageAtRest(const OffscreenPainter& offscreen, const EvaluatedScene& scene, int k,
+                           const std::string& caption, const report::StageFramings& framings)
 {
-    const WorldMoment moment = stageAtRest(scene, k, framings);
+    const report::WorldMoment moment = report::stageAtRest(scene, k, framings);
     ScenePainter& painter = *offscreen.painter;
     painter.setCaptions(caption, "");
     painter.showMoment(moment);
     offscreen.window->Render();
-    return stageShown(scene, moment);
+    return report::stageShown(scene, moment);
 }
 
 void styleStoryboardCell(ScenePainter& painter, double labelSize, bool ticks, const Vec3<double>& traced)
 {
     painter.setFontSize(int(labelSize), int(labelSize));
-    painter.setLegendPlace(LegendPlace::None);
+    painter.setLegendPlace(report::LegendPlace::None);
     painter.setTicksAndNotesShown(ticks, false);
     painter.setCaptions("", "");
     painter.markTraced(traced);

@@ -17,7 +17,7 @@ namespace viewpipe::gui {
 // export draws: text sized by the picture's width (exportLabelSize; textScale
 // enlarges it, 1 is 100 %), lines by `scale`.
 struct OffscreenPainter {
-    OffscreenPainter(const std::shared_ptr<const EvaluatedScene>& scene, int width, int height, int scale, Theme theme,
+    OffscreenPainter(const std::shared_ptr<const EvaluatedScene>& scene, int width, int height, int scale, report::Theme theme,
                      bool transparent, double textScale = 1);
     vtkNew<vtkRenderWindow> window;
     vtkNew<vtkRenderer> renderer;
@@ -26,8 +26,8 @@ struct OffscreenPainter {
 
 // Stage k at rest as its picture shows it (the ghost of the stage before,
 // the caption, its framing or the fixed one), rendered; the stage as shown.
-StageShown showStageAtRest(const OffscreenPainter& offscreen, const EvaluatedScene& scene, int k,
-                           const std::string& caption, const StageFramings& framings);
+report::StageShown showStageAtRest(const OffscreenPainter& offscreen, const EvaluatedScene& scene, int k,
+                           const std::string& caption, const report::StageFramings& framings);
 
 // A storyboard's cell, in the app and every export alike: labels `labelSize`
 // pixels high and never shrunk, no legend, caption or note of labels left out

@@ -52,12 +52,12 @@ void ensureGuiApplication()
     static std::unique_ptr<QGuiApplication> application = std::make_unique<QGuiApplication>(argc, argv);
 }
 
-QColor qtColor(const Rgb& c, double opacity = 1)
+QColor qtColor(const report::Rgb& c, double opacity = 1)
 {
     return QColor::fromRgbF(c.r, c.g, c.b, opacity);
 }
 
-QRectF rectOf(const Box2& box)
+QRectF rectOf(const report::Box2& box)
 {
     return QRectF(box.min.x(), box.min.y(), box.max.x() - box.min.x(), box.max.y() - box.min.y());
 }
@@ -96,41 +96,41 @@ void drawMathText(QPainter& painter, QPointF at, const std::string& text, const 
 
 // The legend's entries, and where the caption, the legend and the note go: as in the PNG.
 struct Layout {
-    PictureLayout picture;
+    report::PictureLayout picture;
     std::vector<const LegendEntry*> entries; // empty where the legend is left out
 };
 
 Layout layoutOf(const VectorFigure& f)
 {
     Layout layout;
-    const FigureView& v = f.view;
-    const PictureText text = stagePictureText(*f.stage, f.caption, v.textSize, v.minFontSize, v.subject, v.subjectShown, v.legendPlace);
-    layout.picture = layoutPicture(v.width, v.height, text, figureFontMeasure());
+    const report::FigureView& v = f.view;
+    const report::PictureText text = report::stagePictureText(*f.stage, f.caption, v.textSize, v.minFontSize, v.subject, v.subjectShown, v.legendPlace);
+    layout.picture = report::layoutPicture(v.width, v.height, text, figureFontMeasure());
     if (!layout.picture.legend.isEmpty())
         layout.entries = text.legend;
     return layout;
 }
 
-void drawLegend(QPainter& painter, const Figure& figure, Theme theme)
+void drawLegend(QPainter& painter, const report::Figure& figure, report::Theme theme)
 {
     if (figure.legend.empty())
         return;
-    const Box2& box = figure.layout.legend;
-    const LegendLayout& rows = figure.layout.legendRows;
+    const report::Box2& box = figure.layout.legend;
+    const report::LegendLayout& rows = figure.layout.legendRows;
     const QRectF frame = rectOf(box);
-    painter.setPen(QPen(qtColor(elementColor(Element::Frame, theme)), 1));
+    painter.setPen(QPen(qtColor(report::elementColor(Element::Frame, theme)), 1));
     painter.setBrush(Qt::NoBrush); // on its backdrop
     painter.drawRect(frame);
     painter.setFont(font(rows.textSize, false));
     const double h = rows.rowHeight;
     for (std::size_t k = 0; k < figure.legend.size(); ++k) {
         const LegendEntry& entry = *figure.legend[k];
-        const LegendRow at = legendRow(figure.layout, k);
+        const report::LegendRow at = report::legendRow(figure.layout, k);
         const double top = at.row.min.y(), text = at.textHeight, slotRight = at.textLeft;
         const QPointF middle(at.swatchCenter.x(), at.swatchCenter.y());
         const QRectF swatch(middle.x() - 0.75 * text, middle.y() - 0.2 * text, 1.5 * text, 0.4 * text);
         const bool face = entry.swatch == LegendEntry::Swatch::Face;
-        const QColor c = qtColor(styledColor(entry.element, face, theme), entry.opacity);
+        const QColor c = qtColor(report::styledColor(entry.element, face, theme), entry.opacity);
         painter.setPen(Qt::NoPen);
         auto stripes = [&](const auto& colors) {
             const double w = swatch.width() / double(colors.size());
@@ -146,10 +146,10 @@ void drawLegend(QPainter& painter, const Figure& figure, Theme theme)
             painter.setBrush(c);
             painter.drawEllipse(middle, 0.2 * text, 0.2 * text);
             break;
-        case LegendEntry::Swatch::Bands: stripes(kBandRamp); break;
-        case LegendEntry::Swatch::Pixels: stripes(kRasterPalette); break;
+        case LegendEntry::Swatch::Bands: stripes(report::kBandRamp); break;
+        case LegendEntry::Swatch::Pixels: stripes(report::kRasterPalette); break;
         }
-        painter.setPen(qtColor(elementColor(Element::Objects, theme)));
+        painter.setPen(qtColor(report::elementColor(Element::Objects, theme)));
         const QFontMetricsF metrics(painter.font());
         drawMathText(painter, QPointF(slotRight, top + h / 2 + (metrics.ascent() - metrics.descent()) / 2), entry.text,
                      painter.font());
@@ -158,13 +158,13 @@ void drawLegend(QPainter& painter, const Figure& figure, Theme theme)
 
 } // namespace
 
-void paintFigure(QPainter& painter, const Figure& figure, Theme theme)
+void paintFigure(QPainter& painter, const report::Figure& figure, report::Theme theme)
 {
-    for (const FigureShape& s : figure.shapes) {
+    for (const report::FigureShape& s : figure.shapes) {
         QPolygonF polygon;
         for (const Vec2<double>& p : s.points)
             polygon << QPointF(p.x(), p.y());
-        const QColor c = qtColor(s.color.value_or(styledColor(s.element, s.surface, theme)), s.opacity);
+        const QColor c = qtColor(s.color.value_or(report::styledColor(s.element, s.surface, theme)), s.opacity);
         if (s.surface) {
             painter.setPen(Qt::NoPen);
             painter.setBrush(c);
@@ -175,26 +175,26 @@ void paintFigure(QPainter& painter, const Figure& figure, Theme theme)
             painter.drawPolyline(polygon);
         }
     }
-    const PictureLayout& p = figure.layout;
-    for (const Box2& box : textBackdrops(p, figure.height))
-        painter.fillRect(rectOf(box), qtColor(backgroundColor(theme, false)));
-    const QFont labelFont = font(figure.fontSize, true), minorFont = font(smallTextSize(figure.fontSize), false);
-    for (const PlacedLabel& l : figure.labels) {
+    const report::PictureLayout& p = figure.layout;
+    for (const report::Box2& box : report::textBackdrops(p, figure.height))
+        painter.fillRect(rectOf(box), qtColor(report::backgroundColor(theme, false)));
+    const QFont labelFont = font(figure.fontSize, true), minorFont = font(report::smallTextSize(figure.fontSize), false);
+    for (const report::PlacedLabel& l : figure.labels) {
         painter.setFont(l.minor ? minorFont : labelFont);
         const QFontMetricsF metrics(painter.font());
-        const QColor c = qtColor(elementColor(l.element, theme));
+        const QColor c = qtColor(report::elementColor(l.element, theme));
         if (l.leader) {
             const Vec2<double> end = l.box.nearest(l.anchor);
             painter.setPen(QPen(c, 1.5 * figure.lineScale));
             painter.drawLine(QPointF(l.anchor.x(), l.anchor.y()), QPointF(end.x(), end.y()));
         }
-        painter.fillRect(rectOf(l.box), qtColor(backgroundColor(theme, false), kLabelBackdropOpacity));
+        painter.fillRect(rectOf(l.box), qtColor(report::backgroundColor(theme, false), report::kLabelBackdropOpacity));
         painter.setPen(c);
         // The box is the text's from the lowest descender up, as VTK measures it.
         drawMathText(painter, QPointF(l.box.min.x(), l.box.max.y() - metrics.descent()), l.text, painter.font());
     }
-    painter.setPen(qtColor(elementColor(Element::Objects, theme)));
-    auto drawLines = [&](const std::vector<std::string>& lines, const QFont& qfont, const Box2& box, double line) {
+    painter.setPen(qtColor(report::elementColor(Element::Objects, theme)));
+    auto drawLines = [&](const std::vector<std::string>& lines, const QFont& qfont, const report::Box2& box, double line) {
         if (lines.empty())
             return;
         painter.setFont(qfont);
@@ -213,7 +213,7 @@ namespace {
 
 // Writes `file` atomically: a page of `width` by `height` on the theme's background, drawn by `draw`, as
 // SVG, PDF or PNG (by `format`); throws std::runtime_error when it cannot.
-void writePage(const std::filesystem::path& file, int width, int height, Theme theme, const std::string& format,
+void writePage(const std::filesystem::path& file, int width, int height, report::Theme theme, const std::string& format,
                const std::string& title, const std::function<void(QPainter&)>& draw)
 {
     QBuffer buffer;
@@ -246,7 +246,7 @@ void writePage(const std::filesystem::path& file, int width, int height, Theme t
         throw std::runtime_error("cannot draw " + file.string());
     painter.setRenderHint(QPainter::Antialiasing);
     const QRectF page(0, 0, width, height);
-    painter.fillRect(page, qtColor(backgroundColor(theme, false)));
+    painter.fillRect(page, qtColor(report::backgroundColor(theme, false)));
     painter.setClipRect(page);
     draw(painter);
     painter.end();
@@ -264,11 +264,11 @@ void writePage(const std::filesystem::path& file, int width, int height, Theme t
 
 } // namespace
 
-Figure flatFigure(const VectorFigure& f)
+report::Figure flatFigure(const VectorFigure& f)
 {
     ensureGuiApplication();
     const Layout layout = layoutOf(f);
-    Figure figure = drawFigure(*f.stage, f.view, f.labels);
+    report::Figure figure = report::drawFigure(*f.stage, f.view, f.labels);
     figure.layout = layout.picture;
     figure.legend = layout.entries;
     return figure;
@@ -277,19 +277,19 @@ Figure flatFigure(const VectorFigure& f)
 void writeVectorFigure(const VectorFigure& f, const std::string& format, const std::filesystem::path& file)
 {
     ensureGuiApplication();
-    const Figure figure = flatFigure(f);
+    const report::Figure figure = flatFigure(f);
     writePage(file, figure.width, figure.height, f.theme, format, f.caption,
               [&](QPainter& painter) { paintFigure(painter, figure, f.theme); });
 }
 
-void writeStoryboard(const Storyboard& storyboard, Theme theme, const std::string& format, const std::filesystem::path& file,
+void writeStoryboard(const report::Storyboard& storyboard, report::Theme theme, const std::string& format, const std::filesystem::path& file,
                      const std::vector<std::string>& cellPngs)
 {
     ensureGuiApplication();
-    const StoryboardLayout& layout = storyboard.layout;
+    const report::StoryboardLayout& layout = storyboard.layout;
     writePage(file, layout.width, layout.height, theme, format, storyboard.title, [&](QPainter& painter) {
         for (std::size_t k = 0; k < layout.cells.size(); ++k) {
-            const Box2& box = layout.cells[k].picture;
+            const report::Box2& box = layout.cells[k].picture;
             painter.save();
             painter.translate(box.min.x(), box.min.y());
             painter.setClipRect(QRectF(0, 0, box.max.x() - box.min.x(), box.max.y() - box.min.y()));

@@ -19,20 +19,20 @@ class QPainter;
 namespace viewpipe::gui {
 
 struct VectorFigure {
-    const StageShown* stage;
-    FigureView view;
+    const report::StageShown* stage;
+    report::FigureView view;
     std::string caption;
-    SceneLabels labels; // where the PNG's painter placed them: every format places them alike
-    Theme theme = Theme::Light;
+    report::SceneLabels labels; // where the PNG's painter placed them: every format places them alike
+    report::Theme theme = report::Theme::Light;
 };
 
 // The figure, with its caption, legend and note laid out as the PNG has them
 // (their boxes kept clear of labels).
-Figure flatFigure(const VectorFigure& figure);
+report::Figure flatFigure(const VectorFigure& figure);
 
 // A figure's shapes, labels and text in its own pixels, over what `painter` has drawn already
 // (the app's storyboard paints its overlay so, as the files do).
-void paintFigure(QPainter& painter, const Figure& figure, Theme theme);
+void paintFigure(QPainter& painter, const report::Figure& figure, report::Theme theme);
 
 // Writes `file` atomically as SVG or PDF (by `format`); throws std::runtime_error when it cannot.
 void writeVectorFigure(const VectorFigure& figure, const std::string& format, const std::filesystem::path& file);
@@ -40,7 +40,7 @@ void writeVectorFigure(const VectorFigure& figure, const std::string& format, co
 // Writes a storyboard atomically as SVG, PDF or PNG (by `format`): each cell's
 // figure in its box, or for a PNG the painter's picture of it (`cellPngs`,
 // PNG bytes in the cells' order), then the overlay.
-void writeStoryboard(const Storyboard& storyboard, Theme theme, const std::string& format,
+void writeStoryboard(const report::Storyboard& storyboard, report::Theme theme, const std::string& format,
                      const std::filesystem::path& file, const std::vector<std::string>& cellPngs = {});
 
 } // namespace viewpipe::gui

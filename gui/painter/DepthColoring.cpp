@@ -58,10 +58,10 @@ vtkSmartPointer<vtkLookupTable> bandColors(const DepthBands& bands)
     table->SetNumberOfTableValues(bands.count);
     table->SetTableRange(bands.first, bands.first + bands.count * bands.levelsPerBand);
     for (int k = 0; k < bands.count; ++k) {
-        const Rgb c = bandColor(bands, k);
+        const report::Rgb c = report::bandColor(bands, k);
         table->SetTableValue(k, c.r, c.g, c.b, 1.0);
     }
-    table->SetNanColor(kNoBandColor.r, kNoBandColor.g, kNoBandColor.b, kNoBandOpacity);
+    table->SetNanColor(report::kNoBandColor.r, report::kNoBandColor.g, report::kNoBandColor.b, report::kNoBandOpacity);
     return table;
 }
 

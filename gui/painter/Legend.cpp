@@ -25,7 +25,7 @@ namespace {
 // scales all alike.
 constexpr double kSymbolWidth = 3;
 
-vtkSmartPointer<vtkPolyData> legendSymbol(const std::vector<std::pair<std::vector<Vec2<double>>, Rgb>>& polygons)
+vtkSmartPointer<vtkPolyData> legendSymbol(const std::vector<std::pair<std::vector<Vec2<double>>, report::Rgb>>& polygons)
 {
     auto points = vtkSmartPointer<vtkPoints>::New();
     points->InsertNextPoint(-kSymbolWidth / 2, -0.5, 0);
@@ -38,7 +38,7 @@ vtkSmartPointer<vtkPolyData> legendSymbol(const std::vector<std::pair<std::vecto
         for (const Vec2<double>& q : corners)
             ids.push_back(points->InsertNextPoint(q.x(), q.y(), 0));
         cells->InsertNextCell(vtkIdType(ids.size()), ids.data());
-        colors->InsertNextTypedTuple(toBytes(c).data());
+        colors->InsertNextTypedTuple(report::toBytes(c).data());
     }
     auto data = vtkSmartPointer<vtkPolyData>::New();
     data->SetPoints(points);
@@ -48,9 +48,9 @@ vtkSmartPointer<vtkPolyData> legendSymbol(const std::vector<std::pair<std::vecto
 }
 
 // Side by side stripes of the given colors, as tall as `halfHeight` above and below the middle.
-vtkSmartPointer<vtkPolyData> stripes(const std::vector<Rgb>& colors, double halfHeight)
+vtkSmartPointer<vtkPolyData> stripes(const std::vector<report::Rgb>& colors, double halfHeight)
 {
-    std::vector<std::pair<std::vector<Vec2<double>>, Rgb>> polygons;
+    std::vector<std::pair<std::vector<Vec2<double>>, report::Rgb>> polygons;
     const double width = kSymbolWidth / double(colors.size());
     for (std::size_t k = 0; k < colors.size(); ++k) {
         const double left = -kSymbolWidth / 2 + double(k) * width;
@@ -61,7 +61,7 @@ vtkSmartPointer<vtkPolyData> stripes(const std::vector<Rgb>& colors, double half
     return legendSymbol(polygons);
 }
 
-vtkSmartPointer<vtkPolyData> dot(const Rgb& color)
+vtkSmartPointer<vtkPolyData> dot(const report::Rgb& color)
 {
     std::vector<Vec2<double>> circle;
     for (int k = 0; k < 16; ++k)
@@ -69,7 +69,7 @@ vtkSmartPointer<vtkPolyData> dot(const Rgb& color)
     return legendSymbol({{circle, color}});
 }
 
-Rgb blend(const Rgb& color, const double* background, double opacity)
+report::Rgb blend(const report::Rgb& color, const double* background, double opacity)
 {
     return {opacity * color.r + (1 - opacity) * background[0], opacity * color.g + (1 - opacity) * background[1],
             opacity * color.b + (1 - opacity) * background[2]};
@@ -94,16 +94,16 @@ vtkSmartPointer<vtkLegendBoxActor> newLegend(bool top)
 }
 
 void fillLegend(vtkLegendBoxActor* legend, vtkRenderer* renderer, const std::vector<const LegendEntry*>& shown,
-                Theme theme, double labelSize, bool top)
+                report::Theme theme, double labelSize, bool top)
 {
     vtkRenderWindow* window = renderer->GetRenderWindow();
     const int dpi = window ? window->GetDPI() : 72;
-    const LegendLayout rows = legendLayout(shown, labelSize, figureFontMeasure(dpi));
+    const report::LegendLayout rows = report::legendLayout(shown, labelSize, figureFontMeasure(dpi));
     legend->SetNumberOfEntries(int(shown.size()));
     legend->SetVisibility(!shown.empty());
     const double* back = renderer->GetBackground();
     legend->SetBackgroundColor(back[0], back[1], back[2]);
-    const Rgb border = elementColor(Element::Frame, theme), ink = elementColor(Element::Objects, theme);
+    const report::Rgb border = report::elementColor(Element::Frame, theme), ink = report::elementColor(Element::Objects, theme);
     legend->GetProperty()->SetColor(border.r, border.g, border.b);
     vtkTextProperty* text = legend->GetEntryTextProperty();
     useFigureFont(text, false);
@@ -114,14 +114,14 @@ void fillLegend(vtkLegendBoxActor* legend, vtkRenderer* renderer, const std::vec
     using Swatch = LegendEntry::Swatch;
     for (std::size_t k = 0; k < shown.size(); ++k) {
         const LegendEntry& entry = *shown[k];
-        const Rgb c = blend(styledColor(entry.element, entry.swatch == Swatch::Face, theme), back, entry.opacity);
+        const report::Rgb c = blend(report::styledColor(entry.element, entry.swatch == Swatch::Face, theme), back, entry.opacity);
         vtkSmartPointer<vtkPolyData> symbol;
         if (entry.swatch == Swatch::Dot)
             symbol = dot(c);
         else if (entry.swatch == Swatch::Bands)
-            symbol = stripes({kBandRamp.begin(), kBandRamp.end()}, 0.4);
+            symbol = stripes({report::kBandRamp.begin(), report::kBandRamp.end()}, 0.4);
         else if (entry.swatch == Swatch::Pixels)
-            symbol = stripes({kRasterPalette.begin(), kRasterPalette.end()}, 0.4);
+            symbol = stripes({report::kRasterPalette.begin(), report::kRasterPalette.end()}, 0.4);
         else
             symbol = stripes({c}, entry.swatch == Swatch::Line ? 0.12 : 0.4);
         legend->SetEntrySymbol(int(k), symbol);
@@ -135,7 +135,7 @@ void fillLegend(vtkLegendBoxActor* legend, vtkRenderer* renderer, const std::vec
     legend->GetPositionCoordinate()->SetValue(-rows.size.x() - margin, top ? -rows.size.y() - 1.6 * labelSize : margin);
 }
 
-FontMeasure viewFontMeasure(vtkRenderer* renderer)
+report::FontMeasure viewFontMeasure(vtkRenderer* renderer)
 {
     vtkRenderWindow* window = renderer->GetRenderWindow();
     const int dpi = window ? window->GetDPI() : 72;
@@ -153,8 +153,8 @@ void setCaptionText(vtkTextActor* caption, const std::vector<std::string>& lines
         caption->GetTextProperty()->SetFontSize(int(std::lround(pixels)));
 }
 
-void placeLegend(vtkLegendBoxActor* legend, vtkRenderer* renderer, const PictureLayout& layout,
-                 const std::vector<const LegendEntry*>& entries, Theme theme, double& filledSize)
+void placeLegend(vtkLegendBoxActor* legend, vtkRenderer* renderer, const report::PictureLayout& layout,
+                 const std::vector<const LegendEntry*>& entries, report::Theme theme, double& filledSize)
 {
     if (layout.legend.isEmpty()) {
         legend->SetVisibility(false);

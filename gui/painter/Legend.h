@@ -22,10 +22,10 @@ vtkSmartPointer<vtkLegendBoxActor> newLegend(bool top);
 // Fills a legend with its entries beside pictures' labels of `labelSize`
 // pixels (legendLayout), sized to its text.
 void fillLegend(vtkLegendBoxActor* legend, vtkRenderer* renderer, const std::vector<const LegendEntry*>& entries,
-                Theme theme, double labelSize, bool top);
+                report::Theme theme, double labelSize, bool top);
 
 // Text measured as a view draws it (the figure font at the view's DPI).
-FontMeasure viewFontMeasure(vtkRenderer* renderer);
+report::FontMeasure viewFontMeasure(vtkRenderer* renderer);
 
 // A caption actor's lines and size as the picture's layout has them.
 void setCaptionText(vtkTextActor* caption, const std::vector<std::string>& lines, double pixels);
@@ -33,7 +33,7 @@ void setCaptionText(vtkTextActor* caption, const std::vector<std::string>& lines
 // A view's legend where the layout puts it (filled anew when the layout's
 // size differs from `filledSize`, which it then records), or hidden where
 // the layout left it out.
-void placeLegend(vtkLegendBoxActor* legend, vtkRenderer* renderer, const PictureLayout& layout,
-                 const std::vector<const LegendEntry*>& entries, Theme theme, double& filledSize);
+void placeLegend(vtkLegendBoxActor* legend, vtkRenderer* renderer, const report::PictureLayout& layout,
+                 const std::vector<const LegendEntry*>& entries, report::Theme theme, double& filledSize);
 
 } // namespace viewpipe::gui

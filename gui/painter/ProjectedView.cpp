@@ -89,7 +89,7 @@ ProjectedView::ProjectedView(vtkRenderer* renderer)
         if (!c)
             return;
         // The window at the picture's shape on screen, whole, in the room the caption and legend leave.
-        const Box2 room = static_cast<ProjectedView*>(view)->layOutText();
+        const report::Box2 room = static_cast<ProjectedView*>(view)->layOutText();
         const int* size = renderer->GetSize();
         if (room.isEmpty())
             return; // no viewport yet
@@ -124,7 +124,7 @@ ProjectedView::ProjectedView(vtkRenderer* renderer)
             }
             const vtkIdType ids[4] = {first, first + 1, first + 2, first + 3};
             cells->InsertNextCell(4, ids);
-            colors->InsertNextTypedTuple(toBytes(kRasterPalette[std::size_t(object) % kRasterPalette.size()]).data());
+            colors->InsertNextTypedTuple(report::toBytes(report::kRasterPalette[std::size_t(object) % report::kRasterPalette.size()]).data());
         }
         auto grid = vtkSmartPointer<vtkPolyData>::New();
         grid->SetPoints(points);
@@ -199,12 +199,12 @@ void ProjectedView::setScene(const EvaluatedScene& scene,
     legendFontSize_ = 0;
 }
 
-void ProjectedView::applyStyle(Theme theme, int fontSize, int minFontSize)
+void ProjectedView::applyStyle(report::Theme theme, int fontSize, int minFontSize)
 {
-    const Rgb back = backgroundColor(theme, true);
+    const report::Rgb back = report::backgroundColor(theme, true);
     renderer_->SetBackground(back.r, back.g, back.b);
     for (const StyledActor& a : actors_) {
-        const Rgb c = styledColor(a.element, a.surface, theme);
+        const report::Rgb c = report::styledColor(a.element, a.surface, theme);
         a.actor->GetProperty()->SetColor(c.r, c.g, c.b);
         a.actor->GetProperty()->SetLineWidth(a.element == Element::ZFighting ? 3 : 2);
     }
@@ -212,9 +212,9 @@ void ProjectedView::applyStyle(Theme theme, int fontSize, int minFontSize)
     fontSize_ = fontSize;
     minFontSize_ = minFontSize;
     legendFontSize_ = 0; // filled anew in the theme's colors
-    const Rgb ink = elementColor(Element::Objects, theme);
+    const report::Rgb ink = report::elementColor(Element::Objects, theme);
     caption_->GetTextProperty()->SetColor(ink.r, ink.g, ink.b);
-    const Rgb vanishing = elementColor(Element::Vanishing, theme), fights = elementColor(Element::ZFighting, theme);
+    const report::Rgb vanishing = report::elementColor(Element::Vanishing, theme), fights = report::elementColor(Element::ZFighting, theme);
     vanishing_->GetProperty()->SetColor(vanishing.r, vanishing.g, vanishing.b);
     vanishing_->GetProperty()->SetOpacity(0.85);
     vanishing_->GetProperty()->SetLineWidth(1.5);
@@ -233,24 +233,24 @@ void ProjectedView::setTextVisible(bool visible)
     caption_->SetVisibility(visible);
 }
 
-void ProjectedView::setLegendPlace(LegendPlace place)
+void ProjectedView::setLegendPlace(report::LegendPlace place)
 {
     legendPlace_ = place;
 }
 
-Box2 ProjectedView::layOutText()
+report::Box2 ProjectedView::layOutText()
 {
     const int* size = renderer_->GetSize();
-    PictureText text;
+    report::PictureText text;
     text.fontSize = fontSize_;
     text.minFontSize = std::min(fontSize_, minFontSize_);
     text.caption = captionText_;
-    text.legend = legendShown(entries_, false);
+    text.legend = report::legendShown(entries_, false);
     text.legendPlace = legendPlace_;
-    const PictureLayout& layout = layoutCache_.layout(size[0], size[1], text, viewFontMeasure(renderer_));
+    const report::PictureLayout& layout = layoutCache_.layout(size[0], size[1], text, viewFontMeasure(renderer_));
     setCaptionText(caption_, layout.captionLines, layout.captionSize);
     placeLegend(legend_, renderer_, layout, text.legend, theme_, legendFontSize_);
-    return textVisible_ && !layout.scene.isEmpty() ? layout.scene : Box2{Vec2<double>::Zero(), Vec2<double>(size[0], size[1])};
+    return textVisible_ && !layout.scene.isEmpty() ? layout.scene : report::Box2{Vec2<double>::Zero(), Vec2<double>(size[0], size[1])};
 }
 
 } // namespace viewpipe::gui

@@ -38,11 +38,11 @@ public:
                   const std::function<vtkSmartPointer<vtkPolyData>(const std::shared_ptr<const PolygonMesh>&)>& dataOf,
                   const std::vector<vtkSmartPointer<vtkPolyData>>& depthColored);
     // Text `fontSize` pixels high, the caption and legend shrinking to `minFontSize` where room runs out.
-    void applyStyle(Theme theme, int fontSize, int minFontSize);
+    void applyStyle(report::Theme theme, int fontSize, int minFontSize);
     void setCaption(const std::string& text);
     void setTextVisible(bool visible);
     // Where its legend goes (layoutPicture).
-    void setLegendPlace(LegendPlace place);
+    void setLegendPlace(report::LegendPlace place);
 
 private:
     struct StyledActor {
@@ -53,7 +53,7 @@ private:
     struct Picture; // what the renderer's start callback lays out for the viewport's shape
     void clear();
     // The caption and legend laid out (layoutPicture) for the viewport; the room they leave the picture, in pixels.
-    Box2 layOutText();
+    report::Box2 layOutText();
 
     vtkRenderer* renderer_;
     vtkSmartPointer<vtkTextActor> caption_;
@@ -65,11 +65,11 @@ private:
     std::unique_ptr<Picture> picture_;
     std::vector<StyledActor> actors_;
     std::vector<LegendEntry> entries_;
-    Theme theme_ = Theme::Dark;
+    report::Theme theme_ = report::Theme::Dark;
     int fontSize_ = 18, minFontSize_ = 18;
     double legendFontSize_ = 0; // the size the legend was last filled for; 0: to be filled
-    LegendPlace legendPlace_ = LegendPlace::Best;
-    PictureLayoutCache layoutCache_;
+    report::LegendPlace legendPlace_ = report::LegendPlace::Best;
+    report::PictureLayoutCache layoutCache_;
     std::string captionText_;
     bool textVisible_ = true;
 };

@@ -42,20 +42,20 @@ namespace {
 constexpr double kStillUpdateRate = 1;
 
 // Lines in a view's pixels (y up), one color each.
-vtkSmartPointer<vtkPolyData> coloredLines2D(const std::vector<Segment2>& lines, const std::vector<Rgb>& colors)
+vtkSmartPointer<vtkPolyData> coloredLines2D(const std::vector<Segment2>& lines, const std::vector<report::Rgb>& colors)
 {
     vtkSmartPointer<vtkPolyData> data = linesData(lines);
     auto scalars = vtkSmartPointer<vtkUnsignedCharArray>::New();
     scalars->SetNumberOfComponents(3);
-    for (const Rgb& c : colors)
-        scalars->InsertNextTypedTuple(toBytes(c).data());
+    for (const report::Rgb& c : colors)
+        scalars->InsertNextTypedTuple(report::toBytes(c).data());
     data->GetCellData()->SetScalars(scalars);
     return data;
 }
 
 // Filled polygons given in the view's pixels (y down), each in its color, for a 2D actor (y up).
 vtkSmartPointer<vtkPolyData> polygonsData2D(const std::vector<std::vector<Vec2<double>>>& polygons,
-                                            const std::vector<Rgb>& colors, int height)
+                                            const std::vector<report::Rgb>& colors, int height)
 {
     auto points = vtkSmartPointer<vtkPoints>::New();
     auto cells = vtkSmartPointer<vtkCellArray>::New();
@@ -66,7 +66,7 @@ vtkSmartPointer<vtkPolyData> polygonsData2D(const std::vector<std::vector<Vec2<d
         for (const Vec2<double>& p : polygons[k])
             ids.push_back(points->InsertNextPoint(p.x(), height - p.y(), 0));
         cells->InsertNextCell(vtkIdType(ids.size()), ids.data());
-        scalars->InsertNextTypedTuple(toBytes(colors[k]).data());
+        scalars->InsertNextTypedTuple(report::toBytes(colors[k]).data());
     }
     auto data = vtkSmartPointer<vtkPolyData>::New();
     data->SetPoints(points);
@@ -91,7 +91,7 @@ vtkSmartPointer<vtkActor2D> overlayActor(double lineWidth)
 
 } // namespace
 
-void addObjectActors(const std::vector<vtkRenderer*>& renderers, const EvaluatedScene& scene, Theme theme)
+void addObjectActors(const std::vector<vtkRenderer*>& renderers, const EvaluatedScene& scene, report::Theme theme)
 {
     for (std::size_t o = 0; o < scene.meshes.size(); ++o) {
         const vtkSmartPointer<vtkPolyData> faces = facesData(scene.meshes[o], Coordinates::Drawn);
@@ -104,7 +104,7 @@ void addObjectActors(const std::vector<vtkRenderer*>& renderers, const Evaluated
                 vtkProperty* p = actor->GetProperty();
                 p->SetOpacity(surface ? 0.35 : 1.0);
                 p->SetLineWidth(2);
-                const Rgb c = styledColor(Element::Objects, surface, theme);
+                const report::Rgb c = report::styledColor(Element::Objects, surface, theme);
                 p->SetColor(c.r, c.g, c.b);
                 renderer->AddActor(actor);
             }
@@ -215,13 +215,13 @@ void ScenePainter::addLabel(const viewpipe::Label& text)
 
 void ScenePainter::styleLabel(Label& label) const
 {
-    const Rgb c = elementColor(label.label->element, theme_);
+    const report::Rgb c = report::elementColor(label.label->element, theme_);
     vtkTextProperty* text = label.actor->GetTextProperty();
     text->SetColor(c.r, c.g, c.b);
-    const Rgb back = backgroundColor(theme_, false);
+    const report::Rgb back = report::backgroundColor(theme_, false);
     text->SetBackgroundColor(back.r, back.g, back.b);
-    text->SetBackgroundOpacity(kLabelBackdropOpacity);
-    text->SetFontSize(label.label->minor ? int(smallTextSize(labelSize_)) : labelSize_);
+    text->SetBackgroundOpacity(report::kLabelBackdropOpacity);
+    text->SetFontSize(label.label->minor ? int(report::smallTextSize(labelSize_)) : labelSize_);
     useFigureFont(text, !label.label->minor); // the font file too: tick numbers were drawn bold, measured regular
 }
 
@@ -266,7 +266,7 @@ void ScenePainter::setScene(std::shared_ptr<const EvaluatedScene> scene)
                 for (vtkMapper* mapper : layers_.back().mappers())
                     mapper->SetRelativeCoincidentTopologyLineOffsetParameters(0, -2);
         }
-        if (StageShown::ghosted(p)) {
+        if (report::StageShown::ghosted(p)) {
             Layer ghost{&p, unlitActor(static_cast<vtkPolyDataMapper*>(layers_.back().actor->GetMapper())->GetInput()), {}};
             ghost.actor->SetPickable(false);
             ghost.actor->SetUseBounds(false);
@@ -317,7 +317,7 @@ void ScenePainter::setGhost(const std::optional<Mat4<double>>& ghost)
 
 bool ScenePainter::shows(const Vec3<double>& world) const
 {
-    return StageShown(*scene_, shownMatrix_, canonicalOpacity_).shows(world);
+    return report::StageShown(*scene_, shownMatrix_, canonicalOpacity_).shows(world);
 }
 
 void ScenePainter::setMoving(bool moving)
@@ -337,13 +337,13 @@ void ScenePainter::beforeFrame()
     placeLabels();
 }
 
-void ScenePainter::drawMarkers(const std::vector<FigureShape>& shapes)
+void ScenePainter::drawMarkers(const std::vector<report::FigureShape>& shapes)
 {
     std::vector<std::vector<Vec2<double>>> polygons;
-    std::vector<Rgb> colors;
-    for (const FigureShape& shape : shapes) {
+    std::vector<report::Rgb> colors;
+    for (const report::FigureShape& shape : shapes) {
         polygons.push_back(shape.points);
-        colors.push_back(elementColor(shape.element, theme_));
+        colors.push_back(report::elementColor(shape.element, theme_));
     }
     static_cast<vtkPolyDataMapper2D*>(markers_->GetMapper())->SetInputData(polygonsData2D(polygons, colors, world_->GetSize()[1]));
 }
@@ -351,30 +351,30 @@ void ScenePainter::drawMarkers(const std::vector<FigureShape>& shapes)
 void ScenePainter::drawBackdrops()
 {
     std::vector<std::vector<Vec2<double>>> polygons;
-    for (const Box2& b : textBackdrops(textBoxes_[0], textBoxes_[1], textBoxes_[2], world_->GetSize()[1]))
+    for (const report::Box2& b : report::textBackdrops(textBoxes_[0], textBoxes_[1], textBoxes_[2], world_->GetSize()[1]))
         polygons.push_back({b.min, Vec2<double>(b.max.x(), b.min.y()), b.max, Vec2<double>(b.min.x(), b.max.y())});
-    const std::vector<Rgb> colors(polygons.size(), backgroundColor(theme_, false));
+    const std::vector<report::Rgb> colors(polygons.size(), report::backgroundColor(theme_, false));
     static_cast<vtkPolyDataMapper2D*>(backdrops_->GetMapper())->SetInputData(polygonsData2D(polygons, colors, world_->GetSize()[1]));
 }
 
 void ScenePainter::fitCaptions()
 {
     const int* size = world_->GetSize();
-    PictureText text;
+    report::PictureText text;
     text.fontSize = fontSize_;
     text.minFontSize = minFontSize();
     text.caption = worldCaptionText_;
     text.note = effectsCaption_->GetVisibility() ? effectsNote_ : "";
     if (scene_)
-        text.legend = legendShown(scene_->worldLegend, canonicalOpacity_ > 0);
+        text.legend = report::legendShown(scene_->worldLegend, canonicalOpacity_ > 0);
     text.subject = subject_;
     text.shown = subjectShown_;
     text.legendPlace = legendPlace_;
-    const PictureLayout& layout = layoutCache_.layout(size[0], size[1], text, viewFontMeasure(world_));
+    const report::PictureLayout& layout = layoutCache_.layout(size[0], size[1], text, viewFontMeasure(world_));
     setCaptionText(worldCaption_, layout.captionLines, layout.captionSize);
     setCaptionText(effectsCaption_, layout.noteLines, layout.noteSize);
     placeLegend(legend_, world_, layout, text.legend, theme_, legendFontSize_);
-    if (const int labels = int(labelSizeIn(layout, fontSize_)); labels != labelSize_) {
+    if (const int labels = int(report::labelSizeIn(layout, fontSize_)); labels != labelSize_) {
         labelSize_ = labels;
         styleLabels();
         if (projected_) // side by side, the two views' titles at one size (presenting, they jumped from one to twice it)
@@ -382,7 +382,7 @@ void ScenePainter::fitCaptions()
     }
     textBoxes_ = textBoxesShown(); // measured once a frame, for the backdrops and the labels' placement
     drawBackdrops();
-    const Box2 area = textVisible_ ? layout.scene : Box2{Vec2<double>::Zero(), Vec2<double>(size[0], size[1])};
+    const report::Box2 area = textVisible_ ? layout.scene : report::Box2{Vec2<double>::Zero(), Vec2<double>(size[0], size[1])};
     if ((area.min - sceneArea_.min).norm() + (area.max - sceneArea_.max).norm() > 0.5) {
         sceneArea_ = area;
         if (framed_.radius > 0)
@@ -390,14 +390,14 @@ void ScenePainter::fitCaptions()
     }
 }
 
-FigureView ScenePainter::figureView() const
+report::FigureView ScenePainter::figureView() const
 {
-    FigureView view;
+    report::FigureView view;
     view.camera =
         fromVtk(world_->GetActiveCamera()->GetCompositeProjectionTransformMatrix(world_->GetTiledAspectRatio(), -1, 1));
     view.width = world_->GetSize()[0];
     view.height = world_->GetSize()[1];
-    view.frameExtent = frameExtent(framed_);
+    view.frameExtent = report::frameExtent(framed_);
     view.fontSize = labelSize_;
     view.textSize = fontSize_;
     view.minFontSize = minFontSize();
@@ -410,14 +410,14 @@ FigureView ScenePainter::figureView() const
     return view;
 }
 
-std::array<Box2, 3> ScenePainter::textBoxesShown() const
+std::array<report::Box2, 3> ScenePainter::textBoxesShown() const
 {
     // Viewport coordinates (y up) to the view's pixels (y down).
     const int height = world_->GetSize()[1];
     auto box = [&](const double* corners) {
-        return Box2{Vec2<double>(corners[0], height - corners[3]), Vec2<double>(corners[1], height - corners[2])};
+        return report::Box2{Vec2<double>(corners[0], height - corners[3]), Vec2<double>(corners[1], height - corners[2])};
     };
-    std::array<Box2, 3> boxes;
+    std::array<report::Box2, 3> boxes;
     for (int k = 0; k < 2; ++k) {
         vtkTextActor* caption = k == 0 ? worldCaption_.Get() : effectsCaption_.Get();
         if (caption->GetVisibility() && caption->GetInput() && *caption->GetInput()) {
@@ -442,8 +442,8 @@ std::array<Box2, 3> ScenePainter::textBoxesShown() const
 void ScenePainter::placeLabels()
 {
     std::vector<Segment2> leaders;
-    std::vector<Rgb> leaderColors;
-    std::vector<FigureShape> markerShown;
+    std::vector<report::Rgb> leaderColors;
+    std::vector<report::FigureShape> markerShown;
     for (Label& label : labels_)
         label.actor->SetVisibility(false);
     for (Label& label : frameLabels_)
@@ -454,9 +454,9 @@ void ScenePainter::placeLabels()
         std::vector<Marker> markers = scene_->markers;
         if (tracedMarker_)
             markers.push_back(*tracedMarker_);
-        const FigureView view = figureView();
-        const StageShown stage(*scene_, shownMatrix_, canonicalOpacity_);
-        markerShown = markerShapes(stage, view, markers);
+        const report::FigureView view = figureView();
+        const report::StageShown stage(*scene_, shownMatrix_, canonicalOpacity_);
+        markerShown = report::markerShapes(stage, view, markers);
         if (textVisible_)
             placeLabelsOf(stage, view, markers, leaders, leaderColors);
     }
@@ -464,8 +464,8 @@ void ScenePainter::placeLabels()
     static_cast<vtkPolyDataMapper2D*>(leaders_->GetMapper())->SetInputData(coloredLines2D(leaders, leaderColors));
 }
 
-void ScenePainter::placeLabelsOf(const StageShown& stage, const FigureView& view, const std::vector<Marker>& markers,
-                                 std::vector<Segment2>& leaders, std::vector<Rgb>& leaderColors)
+void ScenePainter::placeLabelsOf(const report::StageShown& stage, const report::FigureView& view, const std::vector<Marker>& markers,
+                                 std::vector<Segment2>& leaders, std::vector<report::Rgb>& leaderColors)
 {
     std::vector<Label*> all; // the scene's, the traced vertex's, then the frame's
     for (Label& label : labels_)
@@ -477,14 +477,14 @@ void ScenePainter::placeLabelsOf(const StageShown& stage, const FigureView& view
         texts.push_back(label->label);
     vtkRenderWindow* window = world_->GetRenderWindow();
     const int dpi = window ? window->GetDPI() : 72;
-    const LabelMeasure measure = labelMeasure(figureFontMeasure(dpi), labelSize_); // as the labels are set (styleLabel)
+    const report::LabelMeasure measure = report::labelMeasure(figureFontMeasure(dpi), labelSize_); // as the labels are set (styleLabel)
     // Viewport pixels are y up, the placement's y down.
     auto up = [&](const Vec2<double>& p) { return Vec2<double>(p.x(), view.height - p.y()); };
-    std::vector<Box2> reserved;
-    for (const Box2& box : textBoxes_)
+    std::vector<report::Box2> reserved;
+    for (const report::Box2& box : textBoxes_)
         if (!box.isEmpty())
             reserved.push_back(box);
-    placed_ = placeSceneLabels(stage, view, texts, markers, measure, reserved);
+    placed_ = report::placeSceneLabels(stage, view, texts, markers, measure, reserved);
     if (placed_.leftOut) {
         leftOut_.actor->SetInput(placed_.leftOut->text.c_str());
         leftOut_.actor->SetPosition(placed_.leftOut->box.min.x(), view.height - placed_.leftOut->box.max.y());
@@ -494,12 +494,12 @@ void ScenePainter::placeLabelsOf(const StageShown& stage, const FigureView& view
     for (std::size_t k = 0; k < all.size(); ++k) {
         if (!placed[k])
             continue;
-        const PlacedLabel& p = *placed[k];
+        const report::PlacedLabel& p = *placed[k];
         all[k]->actor->SetVisibility(true);
         all[k]->actor->SetPosition(p.box.min.x(), view.height - p.box.max.y()); // the text's lower left corner
         if (p.leader) {
             leaders.push_back({up(p.anchor), up(p.box.nearest(p.anchor))});
-            leaderColors.push_back(elementColor(p.element, theme_));
+            leaderColors.push_back(report::elementColor(p.element, theme_));
         }
     }
 }
@@ -528,17 +528,17 @@ void ScenePainter::cutNear(const Mat4<double>& cumulative)
     }
 }
 
-void ScenePainter::showMoment(const WorldMoment& moment)
+void ScenePainter::showMoment(const report::WorldMoment& moment)
 {
     show(moment.drawn, moment.canonicalOpacity);
     setGhost(moment.ghost);
     frameOn(moment.framing);
 }
 
-WorldCamera ScenePainter::camera() const
+report::WorldCamera ScenePainter::camera() const
 {
     vtkCamera* vtk = world_->GetActiveCamera();
-    WorldCamera camera;
+    report::WorldCamera camera;
     vtk->GetPosition(camera.position.data());
     vtk->GetFocalPoint(camera.focalPoint.data());
     vtk->GetViewUp(camera.viewUp.data());
@@ -548,12 +548,12 @@ WorldCamera ScenePainter::camera() const
     return camera;
 }
 
-void ScenePainter::setCamera(const WorldCamera& camera)
+void ScenePainter::setCamera(const report::WorldCamera& camera)
 {
     setVtkCamera(world_->GetActiveCamera(), camera);
 }
 
-void setVtkCamera(vtkCamera* vtk, const WorldCamera& camera)
+void setVtkCamera(vtkCamera* vtk, const report::WorldCamera& camera)
 {
     vtk->SetFocalPoint(camera.focalPoint.data());
     vtk->SetPosition(camera.position.data());
@@ -563,16 +563,16 @@ void setVtkCamera(vtkCamera* vtk, const WorldCamera& camera)
     vtk->SetClippingRange(camera.nearPlane, camera.farPlane);
 }
 
-ViewFit ScenePainter::viewFit() const
+report::ViewFit ScenePainter::viewFit() const
 {
     const int* size = world_->GetSize();
     return {size[0], size[1], sceneArea_, userZoom_, userPan_};
 }
 
-void ScenePainter::frameOn(const Framing& framing)
+void ScenePainter::frameOn(const report::Framing& framing)
 {
-    WorldCamera camera = this->camera();
-    viewpipe::frameOn(camera, framing, viewFit());
+    report::WorldCamera camera = this->camera();
+    viewpipe::report::frameOn(camera, framing, viewFit());
     setCamera(camera);
     framed_ = framing;
     // At rest, or moving under one framing (while framings blend the text stays put); made anew only for
@@ -585,11 +585,11 @@ void ScenePainter::frameOn(const Framing& framing)
                                             camera.viewUp.z()};
     if (framing.blended.empty() && outlined != outlined_) {
         outlined_ = outlined;
-        subject_ = subjectOutline(camera, framing);
-        subjectShown_ = subjectOutline(camera, framing, true);
+        subject_ = report::subjectOutline(camera, framing);
+        subjectShown_ = report::subjectOutline(camera, framing, true);
     }
     // The fixed axes run across everything framed, with their ticks and labels.
-    const FrameMarks marks = frameMarks(frameExtent(framing), ticksShown_);
+    const report::FrameMarks marks = report::frameMarks(report::frameExtent(framing), ticksShown_);
     static_cast<vtkPolyDataMapper*>(frameAxes_->GetMapper())->SetInputData(linesData(marks.lines));
     const bool sameTexts = marks.labels.size() == frameLabelTexts_.size() &&
                            std::equal(marks.labels.begin(), marks.labels.end(), frameLabelTexts_.begin(),
@@ -609,15 +609,15 @@ void ScenePainter::frameOn(const Framing& framing)
 
 void ScenePainter::fitClippingRange()
 {
-    WorldCamera camera = this->camera();
-    viewpipe::fitClippingRange(camera, framed_);
+    report::WorldCamera camera = this->camera();
+    viewpipe::report::fitClippingRange(camera, framed_);
     world_->GetActiveCamera()->SetClippingRange(camera.nearPlane, camera.farPlane);
 }
 
 void ScenePainter::rememberUserCamera()
 {
-    const WorldCamera camera = this->camera();
-    const CameraAim aim = fitAim(camera, framed_, viewFit());
+    const report::WorldCamera camera = this->camera();
+    const report::CameraAim aim = report::fitAim(camera, framed_, viewFit());
     userZoom_ = camera.distance() / aim.distance;
     userPan_ = (camera.focalPoint - aim.focalPoint) / framed_.radius;
 }
@@ -639,7 +639,7 @@ void ScenePainter::orbit(double yaw, double pitch, double zoom)
 ScenePainter::Orbit ScenePainter::orbitAngles() const
 {
     // The direction of view in the default eye's axes is (cos p sin y, -sin p, -cos p cos y).
-    const WorldCamera standard;
+    const report::WorldCamera standard;
     const Vec3<double> back = standard.position.normalized();
     const Vec3<double> right = standard.viewUp.cross(back).normalized();
     const Vec3<double> up = back.cross(right);
@@ -649,7 +649,7 @@ ScenePainter::Orbit ScenePainter::orbitAngles() const
     return {std::atan2(eye.x(), -eye.z()) * degrees, std::asin(std::clamp(-eye.y(), -1.0, 1.0)) * degrees, 1 / userZoom_};
 }
 
-void ScenePainter::setLegendPlace(LegendPlace place)
+void ScenePainter::setLegendPlace(report::LegendPlace place)
 {
     legendPlace_ = place;
 }
@@ -661,7 +661,7 @@ void ScenePainter::setTicksAndNotesShown(bool ticks, bool notes)
     frameOn(framed_); // the axes' marks anew
 }
 
-void ScenePainter::setProjectedLegendPlace(LegendPlace place)
+void ScenePainter::setProjectedLegendPlace(report::LegendPlace place)
 {
     if (projected_)
         projected_->setLegendPlace(place);
@@ -669,7 +669,7 @@ void ScenePainter::setProjectedLegendPlace(LegendPlace place)
 
 void ScenePainter::resetView()
 {
-    setCamera(WorldCamera{});
+    setCamera(report::WorldCamera{});
     userZoom_ = 1;
     userPan_.setZero();
     frameOn(framed_); // the stage's framing at rest (the step's while it moves), as the view first showed it
@@ -688,7 +688,7 @@ std::optional<Vec3<double>> ScenePainter::pickVertex(int displayX, int displayY)
     const int* window = world_->GetRenderWindow()->GetSize();
     // VTK's display pixels run up from the window's bottom; the view's, down from its top.
     const Vec2<double> at(displayX - origin[0], size[1] - (displayY - origin[1]));
-    return viewpipe::pickVertex(scene_->objectVertices(), drawn, Vec2<double>(size[0], size[1]), at,
+    return viewpipe::report::pickVertex(scene_->objectVertices(), drawn, Vec2<double>(size[0], size[1]), at,
                                 Vec2<double>(window[0], window[1]), cutting_ ? scene_->nearCut : std::nullopt);
 }
 
@@ -720,8 +720,8 @@ void ScenePainter::markTraced(const std::optional<Vec3<double>>& point)
     tracedMarker_.reset();
     tracedLabel_.reset();
     if (point && scene_) {
-        tracedMarker_ = tracedMarker(*point);
-        tracedLabel_ = std::make_unique<viewpipe::Label>(tracedLabel(*point));
+        tracedMarker_ = report::tracedMarker(*point);
+        tracedLabel_ = std::make_unique<viewpipe::Label>(report::tracedLabel(*point));
         addLabel(*tracedLabel_);
         applyStyle();
     }
@@ -732,7 +732,7 @@ std::string ScenePainter::worldCaption() const
     return worldCaptionText_;
 }
 
-void ScenePainter::setTheme(Theme theme)
+void ScenePainter::setTheme(report::Theme theme)
 {
     theme_ = theme;
     applyStyle();
@@ -753,31 +753,31 @@ void ScenePainter::setFontSize(int points, int minPoints)
 
 void ScenePainter::applyStyle()
 {
-    const Rgb back = backgroundColor(theme_, false);
+    const report::Rgb back = report::backgroundColor(theme_, false);
     world_->SetBackground(back.r, back.g, back.b);
     for (Layer& layer : layers_) {
         const Primitive& p = *layer.primitive;
         const bool surface = p.kind == PrimitiveKind::Faces;
-        const Rgb c = styledColor(p.element, surface, theme_);
+        const report::Rgb c = report::styledColor(p.element, surface, theme_);
         vtkProperty* property = layer.actor->GetProperty();
         property->SetColor(c.r, c.g, c.b);
         property->SetOpacity(p.canonical ? canonicalOpacity_ : p.opacity);
-        property->SetLineWidth(lineScale_ * lineWidthOf(p));
+        property->SetLineWidth(lineScale_ * report::lineWidthOf(p));
     }
     for (Layer& ghost : ghosts_) {
-        const Rgb c = elementColor(ghost.primitive->element, theme_);
+        const report::Rgb c = report::elementColor(ghost.primitive->element, theme_);
         ghost.actor->GetProperty()->SetColor(c.r, c.g, c.b);
-        ghost.actor->GetProperty()->SetOpacity(kGhostOpacity);
-        ghost.actor->GetProperty()->SetLineWidth(lineScale_ * lineWidthOf(ghost.primitive->element, false));
+        ghost.actor->GetProperty()->SetOpacity(report::kGhostOpacity);
+        ghost.actor->GetProperty()->SetLineWidth(lineScale_ * report::lineWidthOf(ghost.primitive->element, false));
     }
     styleLabels();
-    const Rgb ink = elementColor(Element::Objects, theme_);
+    const report::Rgb ink = report::elementColor(Element::Objects, theme_);
     worldCaption_->GetTextProperty()->SetColor(ink.r, ink.g, ink.b);
     worldCaption_->GetTextProperty()->SetFontSize(fontSize_);
     effectsCaption_->GetTextProperty()->SetColor(ink.r, ink.g, ink.b);
-    effectsCaption_->GetTextProperty()->SetFontSize(int(smallTextSize(fontSize_)));
+    effectsCaption_->GetTextProperty()->SetFontSize(int(report::smallTextSize(fontSize_)));
     effectsCaption_->SetVisibility(textVisible_ && scene_ && !scene_->effectsNote.empty());
-    const Rgb frame = elementColor(Element::Frame, theme_);
+    const report::Rgb frame = report::elementColor(Element::Frame, theme_);
     frameAxes_->GetProperty()->SetColor(frame.r, frame.g, frame.b);
     frameAxes_->GetProperty()->SetLineWidth(1.5 * lineScale_);
     legendFontSize_ = 0; // filled anew in the theme's colors

@@ -39,10 +39,10 @@ class ProjectedView;
 
 // The scene's objects alone (faces and edges, as the painter styles them),
 // added to each renderer; for pictures that need no set-up around them.
-void addObjectActors(const std::vector<vtkRenderer*>& renderers, const EvaluatedScene& scene, Theme theme);
+void addObjectActors(const std::vector<vtkRenderer*>& renderers, const EvaluatedScene& scene, report::Theme theme);
 
 // Points a VTK camera as the world view's camera says.
-void setVtkCamera(vtkCamera* vtk, const WorldCamera& camera);
+void setVtkCamera(vtkCamera* vtk, const report::WorldCamera& camera);
 
 class ScenePainter {
 public:
@@ -81,24 +81,24 @@ public:
     // Marks the vertex being traced (world coordinates) in the world view, or none.
     void markTraced(const std::optional<Vec3<double>>& point);
 
-    void setTheme(Theme theme);
+    void setTheme(report::Theme theme);
     // Labels and captions `points` pixels high; where room runs out, the
     // caption and legend may shrink to `minPoints` (0: they never do).
     void setFontSize(int points, int minPoints = 0);
     // Line widths are multiplied by this (2 for a picture at twice the pixels).
     void setLineScale(double scale);
-    Theme theme() const { return theme_; }
+    report::Theme theme() const { return theme_; }
 
     // Shows a moment of the world view (world_view.hpp): its matrix, ghost and framing.
-    void showMoment(const WorldMoment& moment);
+    void showMoment(const report::WorldMoment& moment);
     // Aims the world view's camera at a framing, keeping the user's
     // direction, zoom and pan; resetView() restores the default viewpoint,
     // zoom and pan on the framing shown.
-    void frameOn(const Framing& framing);
+    void frameOn(const report::Framing& framing);
     void resetView();
     // Where the world view's legend goes, and the projected view's (the picture's layout: layoutPicture).
-    void setLegendPlace(LegendPlace place);
-    void setProjectedLegendPlace(LegendPlace place);
+    void setLegendPlace(report::LegendPlace place);
+    void setProjectedLegendPlace(report::LegendPlace place);
     // Whether the fixed axes' ticks and numbers are drawn, and the notice of labels left out for room.
     void setTicksAndNotesShown(bool ticks, bool notes);
     // Turns the world view's camera about its focal point, in degrees (yaw
@@ -119,9 +119,9 @@ public:
     std::optional<Vec3<double>> pickVertex(int displayX, int displayY) const;
 
     // How the world view sees the stage shown, for figures drawn as it is.
-    FigureView figureView() const;
+    report::FigureView figureView() const;
     // Where the last frame placed the labels (none while text is hidden): figures drawn as it is place them there.
-    const SceneLabels& placedLabels() const { return placed_; }
+    const report::SceneLabels& placedLabels() const { return placed_; }
 
 private:
     struct Layer {
@@ -144,13 +144,13 @@ private:
     // Places every label with the one placement step the figures use, for the camera of the coming frame.
     void placeLabels();
     // Where the caption, the note and the legend are, in the view's pixels (empty where not shown).
-    std::array<Box2, 3> textBoxesShown() const;
+    std::array<report::Box2, 3> textBoxesShown() const;
     // The text's backdrops (textBackdrops) around textBoxes_: what runs behind the text stops at them.
     void drawBackdrops();
     void beforeFrame();
-    void placeLabelsOf(const StageShown& stage, const FigureView& view, const std::vector<Marker>& markers,
-                       std::vector<Segment2>& leaders, std::vector<Rgb>& leaderColors);
-    void drawMarkers(const std::vector<FigureShape>& shapes);
+    void placeLabelsOf(const report::StageShown& stage, const report::FigureView& view, const std::vector<Marker>& markers,
+                       std::vector<Segment2>& leaders, std::vector<report::Rgb>& leaderColors);
+    void drawMarkers(const std::vector<report::FigureShape>& shapes);
     // Breaks the captions into lines that fit the view's width.
     void fitCaptions();
     // Whether a world point is drawn at the stage shown: it has an image and is not cut away.
@@ -159,9 +159,9 @@ private:
     void cutNear(const Mat4<double>& cumulative);
     // The near and far planes around everything framed, before each frame (prop bounds mean nothing under a projective matrix).
     void fitClippingRange();
-    WorldCamera camera() const;
-    void setCamera(const WorldCamera& camera);
-    ViewFit viewFit() const;
+    report::WorldCamera camera() const;
+    void setCamera(const report::WorldCamera& camera);
+    report::ViewFit viewFit() const;
     const std::shared_ptr<MeshDetail>& meshDetail(const std::shared_ptr<const PolygonMesh>& mesh);
 
     vtkRenderer* world_;
@@ -189,11 +189,11 @@ private:
     // "left out for room: ...", set as a tick number (placeSceneLabels).
     viewpipe::Label leftOutText_{Element::Frame, "", Vec3<double>::Zero(), true, true};
     Label leftOut_;
-    SceneLabels placed_;
+    report::SceneLabels placed_;
     // The traced vertex's marker and label (not part of the scene).
     std::optional<Marker> tracedMarker_;
     std::unique_ptr<viewpipe::Label> tracedLabel_;
-    Theme theme_ = Theme::Dark;
+    report::Theme theme_ = report::Theme::Dark;
     int fontSize_ = 18;
     int labelSize_ = 18;  // fontSize_, or the caption's size where the view sets it smaller (labelSizeIn)
     int minFontSize_ = 0; // 0: as fontSize_
@@ -206,14 +206,14 @@ private:
     // The user's view relative to the automatic framing.
     double userZoom_ = 1;
     Vec3<double> userPan_ = Vec3<double>::Zero();
-    Framing framed_; // the last framing
+    report::Framing framed_; // the last framing
     // Where frameOn fits the stage (layoutPicture's scene area), in pixels, y down; empty: the whole view.
-    Box2 sceneArea_;
-    std::array<Box2, 3> textBoxes_; // textBoxesShown() as the last fitCaptions() measured it
-    PictureLayoutCache layoutCache_;
+    report::Box2 sceneArea_;
+    std::array<report::Box2, 3> textBoxes_; // textBoxesShown() as the last fitCaptions() measured it
+    report::PictureLayoutCache layoutCache_;
     std::vector<Vec2<double>> subject_, subjectShown_; // the framed subject's outline, for the text's layout (subjectOutline)
     std::array<double, 14> outlined_{}; // the framing's box and sizes and the camera's direction and up they are of
-    LegendPlace legendPlace_ = LegendPlace::Best;
+    report::LegendPlace legendPlace_ = report::LegendPlace::Best;
     bool ticksShown_ = true, notesShown_ = true;
     Mat4<double> shownMatrix_ = Mat4<double>::Identity();
 };

@@ -175,7 +175,7 @@ Vec2<double> figureTextSize(const std::string& text, double fontSize, bool bold,
     return size;
 }
 
-FontMeasure figureFontMeasure(int dpi)
+report::FontMeasure figureFontMeasure(int dpi)
 {
     return [dpi](const std::string& text, double pixels, bool bold) { return figureTextSize(text, pixels, bold, dpi); };
 }

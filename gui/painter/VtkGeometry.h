@@ -39,6 +39,6 @@ Vec2<double> textSize(vtkTextProperty* font, const std::string& text, int dpi);
 // The same for the pictures' font at a size, at 72 dots per inch: what every figure measures its texts with.
 Vec2<double> figureTextSize(const std::string& text, double fontSize, bool bold, int dpi = 72);
 // figureTextSize as the layouts take it.
-FontMeasure figureFontMeasure(int dpi = 72);
+report::FontMeasure figureFontMeasure(int dpi = 72);
 
 } // namespace viewpipe::gui

@@ -16,7 +16,7 @@
 #include "viewpipe/error.hpp"
 #include "viewpipe/format.hpp"
 
-namespace viewpipe::code
+namespace viewpipe::report
 {
 namespace
 {
@@ -1260,4 +1260,4 @@ gl::Camera<double> applyCode(const gl::Camera<double>& camera, const std::string
     return out;
 }
 
-} // namespace viewpipe::code
+} // namespace viewpipe::report

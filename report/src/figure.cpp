@@ -12,7 +12,7 @@
 #include <sstream>
 #include <tuple>
 
-namespace viewpipe {
+namespace viewpipe::report {
 namespace {
 
 using Vec2d = Vec2<double>;
@@ -1211,4 +1211,4 @@ Figure drawFigure(const StageShown& stage, const FigureView& view, const LabelMe
     return drawFigure(stage, view, placeSceneLabels(stage, view, labels, stageMarkers(stage), measure, reserved));
 }
 
-} // namespace viewpipe
+} // namespace viewpipe::report

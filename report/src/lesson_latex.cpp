@@ -14,7 +14,7 @@
 #include "viewpipe/report/latex.hpp"
 #include "viewpipe/report/tikz.hpp"
 
-namespace viewpipe {
+namespace viewpipe::report {
 namespace {
 
 constexpr int kDigits = 4; // the matrices' decimals, as the app shows them
@@ -36,7 +36,7 @@ std::string questionPoint(const Question& q)
     const Vec3<Exact> exact = exactPoint(q);
     std::string out;
     for (int i = 0; i < 3; ++i)
-        out += (i ? ", " : "") + (q.pointTyped[std::size_t(i)].empty() ? number(q.point[i]) : report::exactLatex(exact[i], 6));
+        out += (i ? ", " : "") + (q.pointTyped[std::size_t(i)].empty() ? number(q.point[i]) : exactLatex(exact[i], 6));
     return "$(" + out + ")$";
 }
 
@@ -89,7 +89,7 @@ std::string questionLatex(const LessonStep& step, int number, const std::string&
     case QuestionKind::Inside: out << boxes({"inside the view volume", "clipped away"}); break;
     case QuestionKind::SignW: out << "$w$ is " << boxes({"positive", "zero", "negative"}); break;
     case QuestionKind::WhichStage:
-        out << fitted(report::stageMatrixLatex(step.scene, q.stage, kDigits));
+        out << fitted(stageMatrixLatex(step.scene, q.stage, kDigits));
         for (int k : offeredChoices(q))
             options.push_back(symbol(q.choices[std::size_t(k)]));
         out << boxes(options);
@@ -117,7 +117,7 @@ std::string questionLatex(const LessonStep& step, int number, const std::string&
 std::string matrixLatex(const LessonStep& step)
 {
     const int stage = revealedStage(step);
-    return stage > 0 ? fitted(report::stageLatex(step.scene, stage, kDigits, step.entries)) : std::string();
+    return stage > 0 ? fitted(stageLatex(step.scene, stage, kDigits, step.entries)) : std::string();
 }
 
 std::string answerParagraphs(const LessonStep& step)
@@ -243,8 +243,8 @@ std::string answerText(const LessonStep& step)
         if (!q.exact)
             return decimal;
         const std::vector<Exact>& e = *q.exact;
-        const std::string exact = "$(" + report::exactLatex(e[0], 6) + ", " + report::exactLatex(e[1], 6) + ", " +
-                                  report::exactLatex(e[2], 6) + ")$";
+        const std::string exact = "$(" + exactLatex(e[0], 6) + ", " + exactLatex(e[1], 6) + ", " +
+                                  exactLatex(e[2], 6) + ")$";
         return exact + (exact == decimal ? "" : " ($\\approx " + decimal.substr(1, decimal.size() - 2) + "$)");
     }
     case QuestionKind::Inside: return q.inside ? "inside the view volume" : "clipped away";
@@ -258,7 +258,7 @@ std::string answerText(const LessonStep& step)
     }
     case QuestionKind::Entry: {
         const std::string decimal = number(q.entry);
-        const std::string exact = q.exact ? report::exactLatex(q.exact->front(), 6) : decimal;
+        const std::string exact = q.exact ? exactLatex(q.exact->front(), 6) : decimal;
         return "$" + exact + "$" + (exact == decimal ? "" : " ($" + decimal + "$)");
     }
     case QuestionKind::Choice: return choiceLetter(std::size_t(q.correct)) + " " + q.choices[std::size_t(q.correct)];
@@ -339,13 +339,13 @@ std::string lessonSheetLatex(const Lesson& lesson, const std::vector<LessonFigur
             const int last = q.kind == QuestionKind::Inside ? stages : q.stage;
             std::string line;
             for (int s = 1; s <= last; ++s) {
-                line += (line.empty() ? "" : " \\qquad ") + report::stageLatex(step.scene, s, kDigits);
+                line += (line.empty() ? "" : " \\qquad ") + stageLatex(step.scene, s, kDigits);
                 if (s % 3 == 0 || s == last) {
                     body += fitted(line);
                     line.clear();
                 }
             }
-            const std::vector<std::string> points = report::tracedLatex(step.scene, exactPoint(q), last, kDigits);
+            const std::vector<std::string> points = tracedLatex(step.scene, exactPoint(q), last, kDigits);
             const std::vector<Stage<double>> named = buildPipeline(step.scene.camera, step.scene.effects).stages;
             std::string rows;
             for (std::size_t s = 0; s < points.size(); ++s)
@@ -354,9 +354,9 @@ std::string lessonSheetLatex(const Lesson& lesson, const std::vector<LessonFigur
                     "}\\let\\frac\\dfrac\\begin{tabular}{@{}l@{\\quad}l@{}}\n" + rows;
             body += "\\end{tabular}}\\par\n";
         } else if (q.kind == QuestionKind::Entry) {
-            body += fitted(report::stageLatex(step.scene, q.stage, kDigits, {{q.row, q.column}}));
+            body += fitted(stageLatex(step.scene, q.stage, kDigits, {{q.row, q.column}}));
         } else if (q.kind == QuestionKind::WhichStage) {
-            body += fitted(report::stageLatex(step.scene, q.stage, kDigits));
+            body += fitted(stageLatex(step.scene, q.stage, kDigits));
         }
         out << stepMark(k) << unbroken(body + answerParagraphs(step));
     }
@@ -395,4 +395,4 @@ std::string lessonSlidesLatex(const Lesson& lesson, const std::vector<LessonFigu
     return out.str();
 }
 
-} // namespace viewpipe
+} // namespace viewpipe::report

@@ -2,7 +2,7 @@
 
 #include "viewpipe/math_text.hpp"
 
-namespace viewpipe {
+namespace viewpipe::report {
 namespace {
 
 std::array<std::string, 16> translation(const std::string& x, const std::string& y, const std::string& z)
@@ -106,4 +106,4 @@ std::string symbolicLatex(StageKind kind)
     return stageSymbolMath(kind) + " = \\begin{bmatrix}\n" + rows + "\\end{bmatrix}";
 }
 
-} // namespace viewpipe
+} // namespace viewpipe::report

@@ -8,7 +8,7 @@
 #include "viewpipe/format.hpp"
 #include "viewpipe/report/style.hpp"
 
-namespace viewpipe {
+namespace viewpipe::report {
 
 double storyboardLabelSize(int widthPixels, double textScale)
 {
@@ -240,4 +240,4 @@ Figure storyboardOverlay(const EvaluatedScene& scene, const StoryboardLayout& la
     return overlay;
 }
 
-} // namespace viewpipe
+} // namespace viewpipe::report

@@ -5,7 +5,7 @@
 #include <algorithm>
 #include <cmath>
 
-namespace viewpipe {
+namespace viewpipe::report {
 
 const std::array<Rgb, 5> kBandRamp = {
     {{0.99, 0.91, 0.15}, {0.37, 0.79, 0.38}, {0.13, 0.57, 0.55}, {0.23, 0.32, 0.55}, {0.27, 0.00, 0.33}}};
@@ -95,4 +95,4 @@ Rgb backgroundColor(Theme theme, bool projectedView)
     return dark ? Rgb{0.11, 0.12, 0.14} : Rgb{1.0, 1.0, 1.0};
 }
 
-} // namespace viewpipe
+} // namespace viewpipe::report

@@ -14,7 +14,7 @@
 #include <sstream>
 #include <vector>
 
-namespace viewpipe {
+namespace viewpipe::report {
 namespace {
 
 constexpr double kWidthCm = 16;
@@ -387,4 +387,4 @@ std::string tikzFiguresDocument(const std::vector<std::pair<std::string, std::st
     return tex.str();
 }
 
-} // namespace viewpipe
+} // namespace viewpipe::report

@@ -8,7 +8,7 @@
 #include "viewpipe/report/storyboard.hpp"
 #include "viewpipe/report/world_view.hpp"
 
-namespace viewpipe {
+namespace viewpipe::report {
 namespace {
 
 using nlohmann::json;
@@ -228,7 +228,7 @@ json sceneData(const EvaluatedScene& scene, const WebPageViews& views)
     const WebViewOptions& options = views.options;
     const Theme theme = options.theme;
     const std::vector<Stage<double>>& stages = scene.pipeline.stages;
-    const std::vector<report::StageLatex> latex = report::stagesLatex(scene.scene, 4);
+    const std::vector<StageLatex> latex = stagesLatex(scene.scene, 4);
     json stageList = json::array();
     for (std::size_t k = 0; k < views.stages.size(); ++k) {
         const WebStage& s = views.stages[k];
@@ -604,4 +604,4 @@ std::string webPageData(const EvaluatedScene& scene, const WebPageViews& views)
     return sceneData(scene, views).dump();
 }
 
-} // namespace viewpipe
+} // namespace viewpipe::report

@@ -9,7 +9,7 @@
 
 #include "viewpipe/report/web_page.hpp"
 
-namespace viewpipe {
+namespace viewpipe::report {
 
 std::string base64(const void* data, std::size_t size);
 // A scene as the page draws it: its primitives, labels and markers, each
@@ -20,4 +20,4 @@ nlohmann::json questionData(const Question& question);
 // JSON to go inside <script>: no text in it can end the element.
 std::string scriptJson(const nlohmann::json& data);
 
-} // namespace viewpipe
+} // namespace viewpipe::report

@@ -16,7 +16,7 @@
 #include "web_data.hpp"
 #include "web_template.hpp" // generated from report/web: kPageHtml, kPageCss, kPageJs
 
-namespace viewpipe {
+namespace viewpipe::report {
 namespace {
 
 using nlohmann::json;
@@ -186,7 +186,7 @@ std::string lessonPage(const Lesson& lesson, const std::vector<int>& stepScenes,
         entry["shown"] = json::parse(stepShownJson(step));
         if (!step.entries.empty()) { // the stage's equation with those entries marked, as the page's own shows it
             entry["latexStage"] = revealedStage(step);
-            entry["latex"] = report::stageLatex(step.scene, revealedStage(step), 4, step.entries);
+            entry["latex"] = stageLatex(step.scene, revealedStage(step), 4, step.entries);
         }
         if (step.question) {
             entry["question"] = questionData(*step.question);
@@ -194,7 +194,7 @@ std::string lessonPage(const Lesson& lesson, const std::vector<int>& stepScenes,
             entry["question"]["answerPlain"] = mathSpokenText(answerText(step));
             entry["question"]["offered"] = offeredChoices(*step.question);
             if (step.question->kind == QuestionKind::WhichStage) // its matrix without its name, as the handout shows it
-                entry["question"]["matrixLatex"] = report::stageMatrixLatex(step.scene, step.question->stage, 4);
+                entry["question"]["matrixLatex"] = stageMatrixLatex(step.scene, step.question->stage, 4);
         }
         steps.push_back(entry);
     }
@@ -204,4 +204,4 @@ std::string lessonPage(const Lesson& lesson, const std::vector<int>& stepScenes,
     return page(lesson.title, sealed({{"lesson", {{"title", lesson.title}, {"steps", steps}}}, {"scenes", sceneList}}), assets);
 }
 
-} // namespace viewpipe
+} // namespace viewpipe::report

@@ -5,7 +5,7 @@
 
 #include "viewpipe/animation.hpp"
 
-namespace viewpipe {
+namespace viewpipe::report {
 namespace {
 
 // Primitives up to this many points are framed point by point; larger ones by their box's corners
@@ -409,4 +409,4 @@ void fitClippingRange(WorldCamera& camera, const Framing& framing)
     camera.farPlane = farthest;
 }
 
-} // namespace viewpipe
+} // namespace viewpipe::report

@@ -610,7 +610,7 @@ private slots:
         file.close();
         QVERIFY(QFile::resize(page, 0));
         std::atomic<bool> cancel{false};
-        exportWebPage(w.document()->evaluated(), page.toStdString(), Theme::Light,
+        exportWebPage(w.document()->evaluated(), page.toStdString(), report::Theme::Light,
                       [&cancel](int, int, const std::string& what) { cancel = what == "scene.html"; }, cancel);
         QVERIFY(cancel);
         QCOMPARE(QFileInfo(page).size(), 0);
@@ -621,7 +621,7 @@ private slots:
         MainWindow& w = *window_;
         w.stepper()->goToStage(0, false);
         const int fontBefore = QApplication::font().pointSize();
-        const Theme themeBefore = w.painter()->theme();
+        const report::Theme themeBefore = w.painter()->theme();
         QTest::keyClick(&w, Qt::Key_F5);
         QVERIFY(w.presentMode()->isPresenting());
         QTRY_VERIFY(w.isFullScreen());
@@ -629,7 +629,7 @@ private slots:
         QVERIFY(!w.menuBar()->isVisible());
         for (QDockWidget* dock : w.findChildren<QDockWidget*>())
             QVERIFY2(!dock->isVisible(), qPrintable(dock->objectName()));
-        QCOMPARE(w.painter()->theme(), Theme::Light);
+        QCOMPARE(w.painter()->theme(), report::Theme::Light);
         QVERIFY(QApplication::font().pointSize() >= std::max(16, fontBefore));
         // The world view fills the screen and its caption fits in it.
         auto* world = w.findChild<QVTKOpenGLNativeWidget*>("worldView");
@@ -707,11 +707,11 @@ private slots:
         auto* charts = w.accuracy()->findChild<QVTKOpenGLNativeWidget*>();
         QVERIFY(charts);
         QTRY_VERIFY(charts->isVisible() && charts->height() > 100);
-        for (const Theme theme : {Theme::Dark, Theme::Light, Theme::Dark}) {
+        for (const report::Theme theme : {report::Theme::Dark, report::Theme::Light, report::Theme::Dark}) {
             w.setTheme(theme);
             const QImage image = charts->grabFramebuffer();
             const int lightness = image.pixelColor(image.width() / 2, image.height() / 2).lightness();
-            QVERIFY2(theme == Theme::Dark ? lightness < 60 : lightness > 200, qPrintable(QString::number(lightness)));
+            QVERIFY2(theme == report::Theme::Dark ? lightness < 60 : lightness > 200, qPrintable(QString::number(lightness)));
         }
     }
 

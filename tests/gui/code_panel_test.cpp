@@ -64,7 +64,7 @@ private slots:
         QVERIFY(window_);
         window_->showPanel("code");
         panel_ = window_->codePanel();
-        panel_->setDialect(code::Dialect::OpenGL);
+        panel_->setDialect(report::Dialect::OpenGL);
         view_ = panel_->codeView();
         QTRY_VERIFY(view_->isVisible());
     }
@@ -73,7 +73,7 @@ private slots:
 
     void longLinesWrapAndEveryNumberShows()
     {
-        for (const code::Dialect dialect : code::kDialects) {
+        for (const report::Dialect dialect : report::kDialects) {
             panel_->setDialect(dialect);
             QVERIFY(view_->isVisible());
             // Once laid out (the panel's layout follows the view's height for its width in a posted event).
@@ -82,7 +82,7 @@ private slots:
             for (std::size_t k = 0; k < view_->code().numbers.size(); ++k)
                 QVERIFY2(view_->rect().contains(view_->numberRect(k)),
                          qPrintable(QString("%1: number %2 outside a %3 px wide view")
-                                        .arg(QString::fromStdString(code::dialectTitle(dialect)))
+                                        .arg(QString::fromStdString(report::dialectTitle(dialect)))
                                         .arg(k)
                                         .arg(view_->width())));
         }
@@ -104,7 +104,7 @@ private slots:
         }
         QTest::mouseRelease(view_, Qt::LeftButton, {}, start + QPoint(50, 0));
         // 40 moves by 0.1 a pixel: 50 pixels make 45, exactly, and the picture followed on the way.
-        QCOMPARE(code::stepFor(40), 0.1);
+        QCOMPARE(report::stepFor(40), 0.1);
         QCOMPARE(fovyOf(w), 45.0);
         QCOMPARE(w.document()->undoStack()->count(), 1);
         QVERIFY(QString::fromStdString(view_->code().text).contains("gluPerspective(45, 1.5, 30, 110)"));
@@ -195,7 +195,7 @@ private slots:
 
     void copyPutsTheCodeShownOnTheClipboard()
     {
-        for (const code::Dialect dialect : code::kDialects) {
+        for (const report::Dialect dialect : report::kDialects) {
             panel_->setDialect(dialect);
             QApplication::clipboard()->clear();
             QTest::mouseClick(panel_->findChild<QPushButton*>("codeCopy"), Qt::LeftButton);
@@ -228,7 +228,7 @@ private slots:
         QCOMPARE(projection->currentText(), QString("perspective (field of view)"));
         // The code follows the camera.
         w.showPanel("code");
-        panel_->setDialect(code::Dialect::Glm);
+        panel_->setDialect(report::Dialect::Glm);
         QVERIFY(QString::fromStdString(view_->code().text).contains("perspectiveRH_ZO"));
         w.document()->undoStack()->undo();
         QCOMPARE(cameraOf(w).api, gl::Api::OpenGL);

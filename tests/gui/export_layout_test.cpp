@@ -247,12 +247,12 @@ TEST_P(ExportLayoutAt, EveryTextReadsInsideThePictureAndApart)
             continue;
         const auto scene = evaluateScene(loadScene(entry.path()));
         const auto& stages = scene->pipeline.stages;
-        const OffscreenPainter offscreen(scene, shown.width, shown.height, 1, Theme::Light, false, shown.percent / 100.0);
-        const double label = kLabelWidthShare * shown.width, small = kSmallWidthShare * shown.width;
+        const OffscreenPainter offscreen(scene, shown.width, shown.height, 1, report::Theme::Light, false, shown.percent / 100.0);
+        const double label = report::kLabelWidthShare * shown.width, small = report::kSmallWidthShare * shown.width;
         for (std::size_t k = 0; k <= stages.size(); ++k) {
             const std::string at = where(entry.path(), int(k), shown);
             const std::string caption = stageCaption(*scene, k, StageText::Heading);
-            const StageShown stage = showStageAtRest(offscreen, *scene, int(k), caption, {});
+            const report::StageShown stage = showStageAtRest(offscreen, *scene, int(k), caption, {});
 
             // The PNG: the painter's actors, y up.
             const DrawnTexts drawn = drawnTexts(offscreen.renderer);
@@ -273,7 +273,7 @@ TEST_P(ExportLayoutAt, EveryTextReadsInsideThePictureAndApart)
 
             // The SVG, y down.
             const fs::path svg = out / "figure.svg";
-            writeVectorFigure({&stage, offscreen.painter->figureView(), caption, offscreen.painter->placedLabels(), Theme::Light}, "svg", svg);
+            writeVectorFigure({&stage, offscreen.painter->figureView(), caption, offscreen.painter->placedLabels(), report::Theme::Light}, "svg", svg);
             boxes.clear();
             for (const SvgText& t : svgTexts(svg)) {
                 if (t.continues) { // one box for the whole text
@@ -296,7 +296,7 @@ TEST_P(ExportLayoutAt, EveryTextReadsInsideThePictureAndApart)
             // writer on another device: checked where text is tightest, the small size at 200 %.
             if (shown.width <= 800 && shown.percent == 200) {
                 const fs::path pdf = out / "figure.pdf";
-                writeVectorFigure({&stage, offscreen.painter->figureView(), caption, offscreen.painter->placedLabels(), Theme::Light}, "pdf", pdf);
+                writeVectorFigure({&stage, offscreen.painter->figureView(), caption, offscreen.painter->placedLabels(), report::Theme::Light}, "pdf", pdf);
                 std::array<double, 2> page{};
                 const auto words = pdfWords(pdf, page);
                 EXPECT_EQ(page, (std::array<double, 2>{double(shown.width), double(shown.height)})) << at << "PDF";
@@ -343,17 +343,17 @@ TEST_P(ExportLayoutAt, EveryFormatPlacesTheSameLabels)
         if (entry.path().extension() != ".json")
             continue;
         const auto scene = evaluateScene(loadScene(entry.path()));
-        const OffscreenPainter offscreen(scene, shown.width, shown.height, 1, Theme::Light, false, shown.percent / 100.0);
+        const OffscreenPainter offscreen(scene, shown.width, shown.height, 1, report::Theme::Light, false, shown.percent / 100.0);
         for (std::size_t k = 0; k <= scene->pipeline.stages.size(); ++k) {
             const std::string at = where(entry.path(), int(k), shown);
             const std::string caption = stageCaption(*scene, k, StageText::Heading);
-            const StageShown stage = showStageAtRest(offscreen, *scene, int(k), caption, {});
-            const VectorFigure vector{&stage, offscreen.painter->figureView(), caption, offscreen.painter->placedLabels(), Theme::Light};
+            const report::StageShown stage = showStageAtRest(offscreen, *scene, int(k), caption, {});
+            const VectorFigure vector{&stage, offscreen.painter->figureView(), caption, offscreen.painter->placedLabels(), report::Theme::Light};
             // What a label may read: the scene's and the fixed axes' (a caption's line or a legend's entry may read the same).
             std::set<std::string> names;
             for (const Label& label : scene->labels)
                 names.insert(shownText(label.text));
-            for (const Label& label : frameMarks(vector.view.frameExtent).labels)
+            for (const Label& label : report::frameMarks(vector.view.frameExtent).labels)
                 names.insert(shownText(label.text));
             auto isLabel = [&](const std::string& text) { return names.count(text) || isLeftOutNotice(text); };
 
@@ -362,7 +362,7 @@ TEST_P(ExportLayoutAt, EveryFormatPlacesTheSameLabels)
             for (const DrawnText& t : drawn.texts)
                 if (isLabel(shownText(t.text)))
                     png.insert(shownText(t.text));
-            const Figure figure = flatFigure(vector);
+            const report::Figure figure = flatFigure(vector);
             // The caption, note and legend laid out as the PNG has them: its lines, and its legend's box (y up there).
             for (const std::vector<std::string>* lines : {&figure.layout.captionLines, &figure.layout.noteLines}) {
                 std::string joined;
@@ -375,24 +375,24 @@ TEST_P(ExportLayoutAt, EveryFormatPlacesTheSameLabels)
             ASSERT_EQ(drawn.legend.has_value(), !figure.layout.legend.isEmpty()) << at;
             if (drawn.legend) {
                 const std::array<double, 4>& l = *drawn.legend;
-                const Box2& box = figure.layout.legend;
+                const report::Box2& box = figure.layout.legend;
                 const std::array<double, 4> expected = {box.min.x(), box.max.x(), shown.height - box.max.y(), shown.height - box.min.y()};
                 for (std::size_t c = 0; c < 4; ++c)
                     EXPECT_NEAR(l[c], expected[c], 1) << at << "the legend's box";
             }
-            for (const PlacedLabel& label : figure.labels)
+            for (const report::PlacedLabel& label : figure.labels)
                 tikz.insert(shownText(label.text));
             const fs::path file = out / "figure.svg";
             writeVectorFigure(vector, "svg", file);
             std::vector<SvgText> texts = svgTexts(file);
-            const std::vector<Box2> text = textBoxes(figure.layout);
+            const std::vector<report::Box2> text = report::textBoxes(figure.layout);
             for (std::size_t i = 0; i < texts.size();) {
                 std::string joined = texts[i].text;
                 const Vec2<double> start(texts[i].box[0], texts[i].box[2]);
                 for (++i; i < texts.size() && texts[i].continues; ++i)
                     joined += texts[i].text;
                 joined.erase(std::remove(joined.begin(), joined.end(), ' '), joined.end());
-                const bool inText = std::any_of(text.begin(), text.end(), [&](const Box2& box) { return box.contains({start, start}); });
+                const bool inText = std::any_of(text.begin(), text.end(), [&](const report::Box2& box) { return box.contains({start, start}); });
                 if (!inText && isLabel(joined))
                     svg.insert(joined);
             }
@@ -425,7 +425,7 @@ TEST_P(ExportLayoutAt, TheDepthChartReadsInsideThePictureAndApart)
     view->GetRenderWindow()->SetSize(shown.width, shown.height);
     vtkNew<vtkChartXY> chart;
     view->GetScene()->AddItem(chart);
-    drawDepthChart(chart, scene->pipeline, scene->outcomes.depth->options, Theme::Light, shown.width, shown.height,
+    drawDepthChart(chart, scene->pipeline, scene->outcomes.depth->options, report::Theme::Light, shown.width, shown.height,
                    shown.percent / 100.0);
     view->Render();
 
@@ -489,20 +489,20 @@ TEST(ExportLayout, ThePageSeesEveryStageAsThePictureDoes)
 {
     for (const std::string name : {"house.json", "opengl-perspective.json", "clipping-eye-plane.json"}) {
         const auto scene = evaluateScene(loadScene(fs::path(viewpipe::build::dataDir) / "scenes" / name));
-        const WebPageViews views = recordWebViews(scene, 1280, 720, 1, Theme::Light, FramingMode::Together, [](const std::string&) {});
-        const OffscreenPainter offscreen(scene, 1280, 720, 1, Theme::Light, false);
+        const report::WebPageViews views = recordWebViews(scene, 1280, 720, 1, report::Theme::Light, report::FramingMode::Together, [](const std::string&) {});
+        const OffscreenPainter offscreen(scene, 1280, 720, 1, report::Theme::Light, false);
         vtkCamera* camera = offscreen.renderer->GetActiveCamera();
         for (std::size_t k = 0; k < views.stages.size(); ++k) {
             const std::string at = name + " stage " + std::to_string(k) + ": ";
             const std::string caption = stageCaption(*scene, k, StageText::Heading);
-            const StageShown shown = showStageAtRest(offscreen, *scene, int(k), caption, {});
-            const WebFrame& rest = views.stages[k].rest;
+            const report::StageShown shown = showStageAtRest(offscreen, *scene, int(k), caption, {});
+            const report::WebFrame& rest = views.stages[k].rest;
             const Mat4<double> view = fromVtk(camera->GetViewTransformMatrix());
             const Mat4<double> projection = fromVtk(camera->GetProjectionTransformMatrix(1280.0 / 720, -1, 1));
             EXPECT_LT((rest.view - view).cwiseAbs().maxCoeff(), 1e-12 * view.cwiseAbs().maxCoeff()) << at << "\n" << rest.view << "\n\n" << view;
             EXPECT_LT((rest.projection - projection).cwiseAbs().maxCoeff(), 1e-9 * projection.cwiseAbs().maxCoeff())
                 << at << "\n" << rest.projection << "\n\n" << projection;
-            const Figure figure = flatFigure({&shown, offscreen.painter->figureView(), caption, offscreen.painter->placedLabels(), Theme::Light});
+            const report::Figure figure = flatFigure({&shown, offscreen.painter->figureView(), caption, offscreen.painter->placedLabels(), report::Theme::Light});
             ASSERT_EQ(views.stages[k].labels.size(), figure.labels.size()) << at;
             for (std::size_t l = 0; l < figure.labels.size(); ++l) {
                 EXPECT_EQ(views.stages[k].labels[l].text, figure.labels[l].text) << at;
@@ -520,11 +520,11 @@ TEST(ExportLayout, LabelsPlaceAlikeThroughCamerasARoundingApart)
 {
     for (const std::string name : {"house.json", "opengl-perspective.json", "clipping-eye-plane.json"}) {
         const auto scene = evaluateScene(loadScene(fs::path(viewpipe::build::dataDir) / "scenes" / name));
-        const WebPageViews views = recordWebViews(scene, 1280, 720, 1, Theme::Light, FramingMode::Together, [](const std::string&) {});
+        const report::WebPageViews views = recordWebViews(scene, 1280, 720, 1, report::Theme::Light, report::FramingMode::Together, [](const std::string&) {});
         for (std::size_t k = 0; k < views.stages.size(); ++k) {
             const Mat4<double> camera = views.stages[k].rest.projection * views.stages[k].rest.view;
             auto placed = [&](const Mat4<double>& through) {
-                return nlohmann::json::parse(webStageLabels(*scene, int(k), through, views.options, figureFontMeasure()));
+                return nlohmann::json::parse(report::webStageLabels(*scene, int(k), through, views.options, figureFontMeasure()));
             };
             const nlohmann::json labels = placed(camera);
             for (const double rounding : {-4.0, -1.0, 1.0, 4.0}) { // units of 2^-52
@@ -552,8 +552,8 @@ TEST(ExportLayout, NothingRunsBehindTheCaptionOrTheNote)
     constexpr int width = 1280, height = 720;
     for (const std::string name : {"clipping-eye-plane.json", "house.json", "opengl-perspective.json"}) {
         const auto scene = evaluateScene(loadScene(fs::path(viewpipe::build::dataDir) / "scenes" / name));
-        const OffscreenPainter offscreen(scene, width, height, 1, Theme::Light, false);
-        const Rgb paper = backgroundColor(Theme::Light, false);
+        const OffscreenPainter offscreen(scene, width, height, 1, report::Theme::Light, false);
+        const report::Rgb paper = report::backgroundColor(report::Theme::Light, false);
         for (std::size_t k = 0; k <= scene->pipeline.stages.size(); ++k) {
             const std::string caption = stageCaption(*scene, k, StageText::Heading);
             showStageAtRest(offscreen, *scene, int(k), caption, {});
@@ -615,7 +615,7 @@ TEST(ExportLayout, TheCanonicalOutlineCoversTheVolumesEdgesItLiesOn)
 {
     for (const std::string name : {"house.json", "opengl-perspective.json", "house-parallel-oblique.json"}) {
         const auto scene = evaluateScene(loadScene(fs::path(viewpipe::build::dataDir) / "scenes" / name));
-        const OffscreenPainter offscreen(scene, 1280, 720, 1, Theme::Light, false);
+        const OffscreenPainter offscreen(scene, 1280, 720, 1, report::Theme::Light, false);
         const int last = int(scene->pipeline.stages.size());
         showStageAtRest(offscreen, *scene, last, stageCaption(*scene, std::size_t(last), StageText::Heading), {});
         vtkNew<vtkWindowToImageFilter> grab;
@@ -658,7 +658,7 @@ TEST(ExportLayout, TheCanonicalOutlineCoversTheVolumesEdgesItLiesOn)
 
 // How much of a picture the subject covers, as a reader sees it: the box about the objects, the view
 // volume and the view's points (VRP, PRP, CW) drawn, inside the picture, over the picture's area.
-double subjectShare(const StageShown& stage, const FigureView& view)
+double subjectShare(const report::StageShown& stage, const report::FigureView& view)
 {
     Eigen::AlignedBox<double, 2> box;
     auto extend = [&](const Mat4<double>& m, const Vec3<double>& world) {
@@ -698,21 +698,21 @@ TEST(ExportLayout, TheSubjectFillsThePicture)
                                             "apis/direct3d", "apis/vulkan-reversed-infinite", "clipping-eye-plane",
                                             "depth-corridor", "letter-f"};
     const std::map<std::string, double> cramped = {{"apis/vulkan-reversed-infinite 5", 0.09}};
-    std::map<FramingMode, std::vector<double>> shares;
+    std::map<report::FramingMode, std::vector<double>> shares;
     for (const std::string& name : names) {
         const auto scene = evaluateScene(loadScene(fs::path(viewpipe::build::dataDir) / "scenes" / (name + ".json")));
         for (const auto& [width, height] : {std::pair{1280, 720}, std::pair{800, 450}}) {
-            const OffscreenPainter offscreen(scene, width, height, 1, Theme::Light, false);
-            for (const FramingMode mode : {FramingMode::Together, FramingMode::PerStage}) {
-                const StageFramings framings = stageFramings(*scene, mode);
+            const OffscreenPainter offscreen(scene, width, height, 1, report::Theme::Light, false);
+            for (const report::FramingMode mode : {report::FramingMode::Together, report::FramingMode::PerStage}) {
+                const report::StageFramings framings = report::stageFramings(*scene, mode);
                 for (std::size_t k = 0; k <= scene->pipeline.stages.size(); ++k) {
                     const std::string caption = stageCaption(*scene, k, StageText::Heading);
-                    const StageShown stage = showStageAtRest(offscreen, *scene, int(k), caption, framings);
+                    const report::StageShown stage = showStageAtRest(offscreen, *scene, int(k), caption, framings);
                     const double share = subjectShare(stage, offscreen.painter->figureView());
                     shares[mode].push_back(share);
                     const std::string at = name + " " + std::to_string(k);
-                    const double least = cramped.count(at) ? cramped.at(at) : mode == FramingMode::Together ? 0.08 : 0.15;
-                    EXPECT_GE(share, least) << at << " at " << width << "x" << height << " framed " << framingModeName(mode);
+                    const double least = cramped.count(at) ? cramped.at(at) : mode == report::FramingMode::Together ? 0.08 : 0.15;
+                    EXPECT_GE(share, least) << at << " at " << width << "x" << height << " framed " << report::framingModeName(mode);
                 }
             }
         }
@@ -722,7 +722,7 @@ TEST(ExportLayout, TheSubjectFillsThePicture)
         return v[v.size() / 2];
     };
     auto least = [](const std::vector<double>& v) { return *std::min_element(v.begin(), v.end()); };
-    const std::vector<double>&together = shares[FramingMode::Together], &alone = shares[FramingMode::PerStage];
+    const std::vector<double>&together = shares[report::FramingMode::Together], &alone = shares[report::FramingMode::PerStage];
     std::printf("subject share framed together: median %.1f %%, least %.1f %%; each on its own: median %.1f %%, least %.1f %%\n",
                 100 * median(together), 100 * least(together), 100 * median(alone), 100 * least(alone));
     EXPECT_EQ(together.size(), 2 * 54u); // 54 stages
@@ -758,12 +758,12 @@ TEST(ExportLayout, TheStoryboardShowsEveryStageAtOnce)
         std::vector<int> stages;
         for (int k = 0; k <= int(scene->pipeline.stages.size()); ++k)
             stages.push_back(k);
-        const StoryboardLayout layout = layoutStoryboard(stages, 1280, 720, storyboardLabelSize(1280, 1));
+        const report::StoryboardLayout layout = report::layoutStoryboard(stages, 1280, 720, report::storyboardLabelSize(1280, 1));
         const QImage png(QString::fromStdString((out / "storyboard.png").string()));
         ASSERT_EQ(png.size(), QSize(1280, 720));
         const QRgb background = png.pixel(0, 0);
         std::vector<std::vector<QRgb>> cells;
-        for (const StoryboardCell& cell : layout.cells) {
+        for (const report::StoryboardCell& cell : layout.cells) {
             std::vector<QRgb> pixels;
             int drawn = 0;
             for (int y = int(cell.picture.min.y()); y < int(cell.picture.max.y()); ++y)
@@ -808,13 +808,13 @@ TEST(ExportLayout, TheStoryboardShowsEveryStageAtOnce)
 TEST(ExportLayout, ThePagesStepsEndAtTheStagesAtRest)
 {
     for (const std::string name : {"house.json", "clipping-eye-plane.json"})
-        for (const FramingMode mode : {FramingMode::Together, FramingMode::PerStage, FramingMode::Fixed}) {
+        for (const report::FramingMode mode : {report::FramingMode::Together, report::FramingMode::PerStage, report::FramingMode::Fixed}) {
             const auto scene = evaluateScene(loadScene(fs::path(viewpipe::build::dataDir) / "scenes" / name));
-            const WebPageViews views = recordWebViews(scene, 1280, 720, 1, Theme::Light, mode, [](const std::string&) {});
+            const report::WebPageViews views = recordWebViews(scene, 1280, 720, 1, report::Theme::Light, mode, [](const std::string&) {});
             ASSERT_EQ(views.transitions.size() + 1, views.stages.size());
             for (std::size_t k = 0; k < views.transitions.size(); ++k) {
-                const std::string at = name + " " + framingModeName(mode) + " step to " + std::to_string(k + 1);
-                const WebFrame &last = views.transitions[k].back(), &rest = views.stages[k + 1].rest;
+                const std::string at = name + " " + report::framingModeName(mode) + " step to " + std::to_string(k + 1);
+                const report::WebFrame &last = views.transitions[k].back(), &rest = views.stages[k + 1].rest;
                 EXPECT_LT((last.view - rest.view).cwiseAbs().maxCoeff(), 1e-12 * rest.view.cwiseAbs().maxCoeff()) << at;
                 EXPECT_LT((last.projection - rest.projection).cwiseAbs().maxCoeff(), 1e-12 * rest.projection.cwiseAbs().maxCoeff())
                     << at << "\n" << last.projection << "\n\n" << rest.projection;
@@ -828,7 +828,7 @@ TEST(ExportLayout, ThePagesStepsEndAtTheStagesAtRest)
 TEST(ExportLayout, LogAxisNumbersArePowersOfTen)
 {
     vtkNew<vtkAxis> axis;
-    styleLogAxis(axis, "error", Theme::Light, 2e-16, 3e2, 40, chartTextFor(1280, 1));
+    styleLogAxis(axis, "error", report::Theme::Light, 2e-16, 3e2, 40, chartTextFor(1280, 1));
     std::vector<std::string> labels;
     for (vtkIdType k = 0; k < axis->GetTickLabels()->GetNumberOfValues(); ++k)
         labels.push_back(axis->GetTickLabels()->GetValue(k));
@@ -867,7 +867,7 @@ TEST(ExportLayout, AccuracyMarkersLieWholeInsideThePlots)
         view->GetRenderWindow()->SetSize(width, height);
         vtkNew<vtkChartMatrix> charts;
         view->GetScene()->AddItem(charts);
-        drawAccuracyCharts(charts, result, Theme::Light, stacked);
+        drawAccuracyCharts(charts, result, report::Theme::Light, stacked);
         view->Render();
         for (const vtkVector2i cell : {vtkVector2i(0, 0), stacked ? vtkVector2i(0, 1) : vtkVector2i(1, 0)}) {
             auto* chart = vtkChartXY::SafeDownCast(charts->GetChart(cell));

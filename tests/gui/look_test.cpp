@@ -64,7 +64,7 @@ namespace {
 const QString kScenes = QString(viewpipe::build::dataDir) + "/scenes";
 
 // The largest difference of one channel, 0 to 1.
-double difference(const Rgb& a, const Rgb& b)
+double difference(const report::Rgb& a, const report::Rgb& b)
 {
     return std::max({std::abs(a.r - b.r), std::abs(a.g - b.g), std::abs(a.b - b.b)});
 }
@@ -100,14 +100,14 @@ QImage viewImage(MainWindow& window, const char* view)
 }
 
 // Whether a pixel is within a few levels of a color (lines drawn opaque keep theirs exactly).
-bool near(QRgb c, const Rgb& color)
+bool near(QRgb c, const report::Rgb& color)
 {
     const int r = int(std::lround(255 * color.r)), g = int(std::lround(255 * color.g)), b = int(std::lround(255 * color.b));
     return std::max({std::abs(qRed(c) - r), std::abs(qGreen(c) - g), std::abs(qBlue(c) - b)}) <= 24;
 }
 
 // Pixels of a view near a color; with `unlike`, only those where that picture's are not.
-int pixelsOf(const QImage& image, const Rgb& color, const QImage* unlike = nullptr)
+int pixelsOf(const QImage& image, const report::Rgb& color, const QImage* unlike = nullptr)
 {
     int count = 0;
     for (int y = 0; y < image.height(); ++y)
@@ -116,7 +116,7 @@ int pixelsOf(const QImage& image, const Rgb& color, const QImage* unlike = nullp
     return count;
 }
 
-int pixelsOf(MainWindow& window, const char* view, const Rgb& color)
+int pixelsOf(MainWindow& window, const char* view, const report::Rgb& color)
 {
     return pixelsOf(viewImage(window, view), color);
 }
@@ -133,16 +133,16 @@ private slots:
 
     void meaningsHaveTheirOwnColors()
     {
-        for (const Theme theme : {Theme::Dark, Theme::Light}) {
-            const Rgb dop = elementColor(Element::Dop, theme);
-            const Rgb vanishing = elementColor(Element::Vanishing, theme);
-            const Rgb fighting = elementColor(Element::ZFighting, theme);
+        for (const report::Theme theme : {report::Theme::Dark, report::Theme::Light}) {
+            const report::Rgb dop = report::elementColor(Element::Dop, theme);
+            const report::Rgb vanishing = report::elementColor(Element::Vanishing, theme);
+            const report::Rgb fighting = report::elementColor(Element::ZFighting, theme);
             QVERIFY(difference(dop, vanishing) > 0.25);
             QVERIFY(difference(dop, fighting) > 0.25);
             QVERIFY(difference(vanishing, fighting) > 0.25);
             for (const bool projected : {false, true}) {
-                const Rgb background = backgroundColor(theme, projected);
-                for (const Rgb& c : {dop, vanishing, fighting})
+                const report::Rgb background = report::backgroundColor(theme, projected);
+                for (const report::Rgb& c : {dop, vanishing, fighting})
                     QVERIFY(difference(c, background) > 0.3);
             }
         }
@@ -178,9 +178,9 @@ private slots:
         window.resize(1600, 950);
         window.show();
         QVERIFY(QTest::qWaitForWindowExposed(&window));
-        for (const Theme theme : {Theme::Dark, Theme::Light}) {
+        for (const report::Theme theme : {report::Theme::Dark, report::Theme::Light}) {
             window.setTheme(theme);
-            const Rgb fighting = elementColor(Element::ZFighting, theme);
+            const report::Rgb fighting = report::elementColor(Element::ZFighting, theme);
             QVERIFY(window.sceneFiles()->openScene(kScenes + "/depth-corridor.json"));
             QVERIFY2(pixelsOf(window, "worldView", fighting) > 30, "the world view shows no z-fighting color");
             QVERIFY2(pixelsOf(window, "projectedView", fighting) > 30, "the projected view shows no z-fighting color");
@@ -225,9 +225,9 @@ private slots:
         window.resize(1600, 950);
         window.show();
         QVERIFY(QTest::qWaitForWindowExposed(&window));
-        window.setTheme(Theme::Light); // the canonical outline is black, the edges not quite
+        window.setTheme(report::Theme::Light); // the canonical outline is black, the edges not quite
         window.painter()->setTextVisible(false);
-        const Rgb edges = elementColor(Element::Objects, Theme::Light);
+        const report::Rgb edges = report::elementColor(Element::Objects, report::Theme::Light);
         QVERIFY(window.sceneFiles()->openScene(withHouse));
         const auto stages = window.document()->pipeline().stages;
         const PolygonMesh house = houseMesh();
@@ -338,7 +338,7 @@ private slots:
     {
         const QString program = QCoreApplication::applicationDirPath();
         {
-            ExportDialog dialog(5, Theme::Dark);
+            ExportDialog dialog(5, report::Theme::Dark);
             const QString folder = QString::fromStdString(dialog.options().out.string());
             QVERIFY2(!folder.startsWith(program), qPrintable(folder));
             QVERIFY2(!folder.startsWith(QDir::currentPath()), qPrintable(folder));
@@ -350,11 +350,11 @@ private slots:
         }
         QTemporaryDir chosen;
         {
-            ExportDialog dialog(5, Theme::Dark);
+            ExportDialog dialog(5, report::Theme::Dark);
             dialog.findChild<QLineEdit*>("exportFolder")->setText(chosen.path());
             dialog.accept();
         }
-        ExportDialog again(5, Theme::Dark);
+        ExportDialog again(5, report::Theme::Dark);
         QCOMPARE(QString::fromStdString(again.options().out.string()), chosen.path());
     }
 
@@ -502,7 +502,7 @@ private slots:
     // what is chosen is what export is asked for.
     void exportDialogOffersEveryFormatAndOption()
     {
-        ExportDialog dialog(5, Theme::Light);
+        ExportDialog dialog(5, report::Theme::Light);
         for (const ExportFormat& format : exportFormats()) {
             auto* box = dialog.findChild<QCheckBox*>(QString::fromStdString("format-" + format.name));
             QVERIFY2(box, format.name.c_str());
@@ -519,8 +519,8 @@ private slots:
         QCOMPARE(o.textScale, 100);
         QCOMPARE(o.digits, 4);
         QCOMPARE(o.zoom, 1.0);
-        QVERIFY(o.legend == LegendPlace::Best);
-        QVERIFY(o.framing == FramingMode::Together);
+        QVERIFY(o.legend == report::LegendPlace::Best);
+        QVERIFY(o.framing == report::FramingMode::Together);
         QVERIFY(!o.storyboard);
         auto* layout = dialog.findChild<QComboBox*>("layout");
         QVERIFY(layout);
@@ -553,7 +553,7 @@ private slots:
 
     void everyControlSaysWhatItIs()
     {
-        ExportDialog dialog(5, Theme::Dark);
+        ExportDialog dialog(5, report::Theme::Dark);
         MatrixPanel panel;
         for (QWidget* parent : {static_cast<QWidget*>(&dialog), static_cast<QWidget*>(&panel)})
             for (QWidget* control : parent->findChildren<QWidget*>())

@@ -43,11 +43,11 @@ bool legendCoversTheSubject(MainWindow& window, std::string& where)
     const DrawnTexts drawn = drawnTexts(renderer(window, "worldView"));
     if (!drawn.legend)
         return false;
-    const viewpipe::FigureView view = window.painter()->figureView();
+    const viewpipe::report::FigureView view = window.painter()->figureView();
     const auto [x0, x1, y0, y1] = *drawn.legend; // viewport pixels, y up
-    const viewpipe::Box2 legend{{x0, view.height - y1}, {x1, view.height - y0}};
+    const viewpipe::report::Box2 legend{{x0, view.height - y1}, {x1, view.height - y0}};
     const auto& scene = *window.document()->evaluated();
-    const viewpipe::StageShown stage = viewpipe::stageShown(scene, viewpipe::stageAtRest(scene, window.stepper()->stage()));
+    const viewpipe::report::StageShown stage = viewpipe::report::stageShown(scene, viewpipe::report::stageAtRest(scene, window.stepper()->stage()));
     using viewpipe::Element;
     for (const viewpipe::Primitive& p : scene.primitives) {
         if (!stage.draws(p) || !(p.element == Element::Objects || p.element == Element::Volume ||

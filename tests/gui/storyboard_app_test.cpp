@@ -59,8 +59,8 @@ double drawnShare(const QImage& image)
 QPoint drawnAt(MainWindow& window, int k, const Vec3<double>& world)
 {
     const EvaluatedScene& scene = *window.document()->evaluated();
-    const FigureView view = window.storyboard()->cellPainter(k).figureView();
-    const Mat4<double> drawn = stageAtRest(scene, k, stageFramings(scene, FramingMode::Together)).drawn;
+    const report::FigureView view = window.storyboard()->cellPainter(k).figureView();
+    const Mat4<double> drawn = report::stageAtRest(scene, k, report::stageFramings(scene, report::FramingMode::Together)).drawn;
     const Vec4<double> clip = view.camera * drawn * world.homogeneous();
     const Vec3<double> ndc = clip.head<3>() / clip.w();
     return QPoint(int(std::lround((ndc.x() + 1) / 2 * view.width)), int(std::lround((1 - ndc.y()) / 2 * view.height)));

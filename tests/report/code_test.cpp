@@ -33,12 +33,11 @@
 #include "viewpipe/format.hpp"
 #include "viewpipe/report/code.hpp"
 
-namespace viewpipe
+namespace viewpipe::report
 {
 namespace
 {
 
-using code::Dialect;
 using Camera = gl::Camera<double>;
 
 enum class Kind { Perspective, Frustum, Ortho, InfinitePerspective, InfiniteFrustum };
@@ -96,11 +95,11 @@ void expectMatrixNear(const Mat4<double>& actual, const Mat4<double>& expected, 
 
 TEST(CodeDialects, NamesRoundTripAndUnknownNamesAreRefused)
 {
-    for (const Dialect dialect : code::kDialects)
-        EXPECT_EQ(code::dialectNamed(code::dialectName(dialect), "--dialect"), dialect);
-    EXPECT_EQ(code::dialectTitle(Dialect::ThreeJs), "three.js");
+    for (const Dialect dialect : kDialects)
+        EXPECT_EQ(dialectNamed(dialectName(dialect), "--dialect"), dialect);
+    EXPECT_EQ(dialectTitle(Dialect::ThreeJs), "three.js");
     try {
-        code::dialectNamed("vulkan", "--dialect");
+        dialectNamed("vulkan", "--dialect");
         FAIL() << "accepted an unknown dialect";
     } catch (const InputError& e) {
         EXPECT_EQ(e.field(), "--dialect");
@@ -110,14 +109,14 @@ TEST(CodeDialects, NamesRoundTripAndUnknownNamesAreRefused)
 
 TEST(CodeNumbers, EveryNumberReadsBackAsItsFieldsValue)
 {
-    for (const Dialect dialect : code::kDialects)
+    for (const Dialect dialect : kDialects)
         for (const Camera& camera : allCameras()) {
-            SCOPED_TRACE(code::dialectName(dialect) + ": " + describe(camera));
-            const code::CameraCode code = code::cameraCode(camera, dialect);
+            SCOPED_TRACE(dialectName(dialect) + ": " + describe(camera));
+            const CameraCode code = cameraCode(camera, dialect);
             ASSERT_FALSE(code.text.empty());
             std::map<std::string, int> seen;
             std::size_t previousEnd = 0;
-            for (const code::CodeNumber& number : code.numbers) {
+            for (const CodeNumber& number : code.numbers) {
                 ASSERT_LE(number.offset + number.length, code.text.size());
                 EXPECT_GE(number.offset, previousEnd) << "numbers out of order or overlapping";
                 previousEnd = number.offset + number.length;
@@ -127,7 +126,7 @@ TEST(CodeNumbers, EveryNumberReadsBackAsItsFieldsValue)
                 EXPECT_EQ(*end, '\0') << "\"" << digits << "\" is more than a number";
                 EXPECT_FALSE(number.tooltip.empty()) << number.field;
                 // A valid path: setting the field to its own value changes nothing.
-                const Camera same = code::withField(camera, number.field, number.value);
+                const Camera same = withField(camera, number.field, number.value);
                 EXPECT_EQ(gl::projectionMatrix(same), gl::projectionMatrix(camera)) << number.field;
                 EXPECT_EQ(gl::viewMatrix(same), gl::viewMatrix(camera)) << number.field;
                 ++seen[number.field];
@@ -143,7 +142,7 @@ TEST(CodeNumbers, EveryNumberReadsBackAsItsFieldsValue)
 
 TEST(CodeNumbers, KnownTextForALegacyOpenGLCamera)
 {
-    const code::CameraCode code = code::cameraCode(
+    const CameraCode code = cameraCode(
         cameraOf(Kind::Perspective, gl::Api::OpenGL, gl::Handedness::Right, gl::DepthMode::Standard), Dialect::OpenGL);
     EXPECT_NE(code.text.find("gluPerspective(40, 1.5, 0.1, 100);"), std::string::npos) << code.text;
     EXPECT_NE(code.text.find("gluLookAt(3, 2, 5, 0, 0.5, 0, 0, 1, 0);"), std::string::npos) << code.text;
@@ -157,10 +156,10 @@ TEST(CodeNumbers, KnownTextForALegacyOpenGLCamera)
 TEST(CodeNumbers, DegreesStayDegreesInsideRadiansConversions)
 {
     const Camera camera = cameraOf(Kind::Perspective, gl::Api::Vulkan, gl::Handedness::Right, gl::DepthMode::Standard);
-    EXPECT_NE(code::cameraCode(camera, Dialect::Glm).text.find("glm::radians(40.0f)"), std::string::npos);
-    EXPECT_NE(code::cameraCode(camera, Dialect::DirectXMath).text.find("XMConvertToRadians(40.0f)"), std::string::npos);
-    EXPECT_NE(code::cameraCode(camera, Dialect::WgpuMatrix).text.find("40 * Math.PI / 180"), std::string::npos);
-    EXPECT_NE(code::cameraCode(camera, Dialect::ThreeJs).text.find("PerspectiveCamera(40, 1.5, 0.1, 100)"),
+    EXPECT_NE(cameraCode(camera, Dialect::Glm).text.find("glm::radians(40.0f)"), std::string::npos);
+    EXPECT_NE(cameraCode(camera, Dialect::DirectXMath).text.find("XMConvertToRadians(40.0f)"), std::string::npos);
+    EXPECT_NE(cameraCode(camera, Dialect::WgpuMatrix).text.find("40 * Math.PI / 180"), std::string::npos);
+    EXPECT_NE(cameraCode(camera, Dialect::ThreeJs).text.find("PerspectiveCamera(40, 1.5, 0.1, 100)"),
               std::string::npos);
 }
 
@@ -169,10 +168,10 @@ TEST(CodeNumbers, DegreesStayDegreesInsideRadiansConversions)
 // infinite far written out as a matrix sets only the look-at).
 TEST(CodeRoundTrip, PastedCodeReproducesTheCamerasMatrices)
 {
-    for (const Dialect dialect : code::kDialects)
+    for (const Dialect dialect : kDialects)
         for (const Camera& camera : allCameras()) {
-            const std::string text = code::cameraCode(camera, dialect).text;
-            SCOPED_TRACE(code::dialectName(dialect) + ": " + describe(camera) + "\n" + text);
+            const std::string text = cameraCode(camera, dialect).text;
+            SCOPED_TRACE(dialectName(dialect) + ": " + describe(camera) + "\n" + text);
             Camera other = camera;
             other.lookAt = {{-1, 4, 2}, {1, 1, 1}, {0, 0, 1}};
             other.projection = std::holds_alternative<gl::Ortho<double>>(camera.projection)
@@ -188,7 +187,7 @@ TEST(CodeRoundTrip, PastedCodeReproducesTheCamerasMatrices)
             const bool pasteable =
                 !infinite || (perspective && dialect == Dialect::Glm) ||
                 (dialect == Dialect::WgpuMatrix && (perspective || camera.depth == gl::DepthMode::Reversed));
-            const Camera pasted = code::applyCode(other, text);
+            const Camera pasted = applyCode(other, text);
             expectMatrixNear(gl::viewMatrix(pasted), gl::viewMatrix(camera), 1e-14);
             if (pasteable)
                 expectMatrixNear(gl::projectionMatrix(pasted), gl::projectionMatrix(camera), 1e-14);
@@ -262,7 +261,7 @@ TEST(CodeCompiled, GlmCodeGivesTheCamerasMatrices)
     const std::vector<Camera> cameras = allCameras();
     std::string includes, cases, calls;
     for (std::size_t i = 0; i < cameras.size(); ++i) {
-        const auto [caseIncludes, body] = splitIncludes(code::cameraCode(cameras[i], Dialect::Glm).text);
+        const auto [caseIncludes, body] = splitIncludes(cameraCode(cameras[i], Dialect::Glm).text);
         includes = caseIncludes;
         cases += "void case" + std::to_string(i) + "()\n{\n" + body + "print(view);\nprint(proj);\n}\n";
         calls += "case" + std::to_string(i) + "();\n";
@@ -275,7 +274,7 @@ TEST(CodeCompiled, GlmCodeGivesTheCamerasMatrices)
     const std::vector<Mat4<double>> printed = compileAndRun("glm", program);
     ASSERT_EQ(printed.size(), 2 * cameras.size());
     for (std::size_t i = 0; i < cameras.size(); ++i) {
-        SCOPED_TRACE(describe(cameras[i]) + "\n" + code::cameraCode(cameras[i], Dialect::Glm).text);
+        SCOPED_TRACE(describe(cameras[i]) + "\n" + cameraCode(cameras[i], Dialect::Glm).text);
         expectMatrixNear(printed[2 * i], gl::viewMatrix(cameras[i]), 1e-5);
         expectMatrixNear(printed[2 * i + 1], gl::projectionMatrix(cameras[i]), 1e-5);
     }
@@ -362,7 +361,7 @@ TEST(CodeCompiled, LegacyOpenGLCodeGivesTheCamerasMatrices)
     const std::vector<Camera> cameras = allCameras();
     std::string cases, calls;
     for (std::size_t i = 0; i < cameras.size(); ++i) {
-        cases += "void case" + std::to_string(i) + "()\n{\n" + code::cameraCode(cameras[i], Dialect::OpenGL).text +
+        cases += "void case" + std::to_string(i) + "()\n{\n" + cameraCode(cameras[i], Dialect::OpenGL).text +
                  "print(GL_MODELVIEW);\nprint(GL_PROJECTION);\n}\n";
         calls += "case" + std::to_string(i) + "();\n";
     }
@@ -370,7 +369,7 @@ TEST(CodeCompiled, LegacyOpenGLCodeGivesTheCamerasMatrices)
         compileAndRun("opengl", kLegacyOpenGL + cases + "int main()\n{\n" + calls + "}\n");
     ASSERT_EQ(printed.size(), 2 * cameras.size());
     for (std::size_t i = 0; i < cameras.size(); ++i) {
-        SCOPED_TRACE(describe(cameras[i]) + "\n" + code::cameraCode(cameras[i], Dialect::OpenGL).text);
+        SCOPED_TRACE(describe(cameras[i]) + "\n" + cameraCode(cameras[i], Dialect::OpenGL).text);
         expectMatrixNear(printed[2 * i], gl::viewMatrix(cameras[i]), 1e-13);
         expectMatrixNear(printed[2 * i + 1], gl::projectionMatrix(cameras[i]), 1e-13);
     }
@@ -396,29 +395,29 @@ TEST(CodeRefusals, WithFieldNamesTheFieldOfABadValue)
         cameraOf(Kind::Perspective, gl::Api::OpenGL, gl::Handedness::Right, gl::DepthMode::Standard);
     const Camera ortho = cameraOf(Kind::Ortho, gl::Api::OpenGL, gl::Handedness::Right, gl::DepthMode::Standard);
     const std::string fovy = "camera.projection.fovy_deg";
-    expectRefused([&] { code::withField(perspective, fovy, 0); }, fovy, "between 0 and 180");
-    expectRefused([&] { code::withField(perspective, "camera.projection.aspect", -1); }, "camera.projection.aspect",
+    expectRefused([&] { withField(perspective, fovy, 0); }, fovy, "between 0 and 180");
+    expectRefused([&] { withField(perspective, "camera.projection.aspect", -1); }, "camera.projection.aspect",
                   "greater than 0");
-    expectRefused([&] { code::withField(perspective, "camera.projection.near", 0); }, "camera.projection.near",
+    expectRefused([&] { withField(perspective, "camera.projection.near", 0); }, "camera.projection.near",
                   "greater than 0");
     // The core names far when near meets it; the error still names the field set.
-    expectRefused([&] { code::withField(ortho, "camera.projection.near", 20); }, "camera.projection.near",
+    expectRefused([&] { withField(ortho, "camera.projection.near", 20); }, "camera.projection.near",
                   "empty volume");
-    expectRefused([&] { code::withField(perspective, "camera.projection.left", 1); }, "camera.projection.left",
+    expectRefused([&] { withField(perspective, "camera.projection.left", 1); }, "camera.projection.left",
                   "perspective");
-    expectRefused([&] { code::withField(perspective, "camera.look_at.up[1]", 0); }, "camera.look_at.up[1]", "");
-    expectRefused([&] { code::withField(perspective, "camera.look_at.eye[3]", 1); }, "camera.look_at.eye[3]",
+    expectRefused([&] { withField(perspective, "camera.look_at.up[1]", 0); }, "camera.look_at.up[1]", "");
+    expectRefused([&] { withField(perspective, "camera.look_at.eye[3]", 1); }, "camera.look_at.eye[3]",
                   "not a camera number");
-    expectRefused([&] { code::withField(perspective, fovy, std::nan("")); }, fovy, "");
-    const Camera moved = code::withField(perspective, fovy, 60);
+    expectRefused([&] { withField(perspective, fovy, std::nan("")); }, fovy, "");
+    const Camera moved = withField(perspective, fovy, 60);
     EXPECT_EQ(std::get<gl::Perspective<double>>(moved.projection).fovyDegrees, 60);
-    EXPECT_EQ(code::withField(perspective, "camera.look_at.up[2]", 0.25).lookAt.up.z(), 0.25);
+    EXPECT_EQ(withField(perspective, "camera.look_at.up[2]", 0.25).lookAt.up.z(), 0.25);
 }
 
 TEST(CodeRefusals, ApplyCodeNamesTheCallAndItsArgument)
 {
     const Camera camera = cameraOf(Kind::Perspective, gl::Api::OpenGL, gl::Handedness::Right, gl::DepthMode::Standard);
-    const auto paste = [&](const std::string& text) { return [&camera, text] { code::applyCode(camera, text); }; };
+    const auto paste = [&](const std::string& text) { return [&camera, text] { applyCode(camera, text); }; };
     expectRefused(paste("int main() { return 0; }"), "code", "no camera call recognized");
     expectRefused(paste("// gluPerspective(45, 1.5, 0.1, 100);"), "code", "no camera call recognized");
     expectRefused(paste("gluPerspective(0, 1.5, 0.1, 100);"), "code", "gluPerspective argument 1 (fovy_deg)");
@@ -443,7 +442,7 @@ TEST(CodeApply, KnownCallsSetKnownValues)
 {
     const Camera camera = cameraOf(Kind::Ortho, gl::Api::Vulkan, gl::Handedness::Right, gl::DepthMode::Standard);
 
-    const Camera glu = code::applyCode(camera, "gluPerspective(45, 1.333, 0.1, 100);");
+    const Camera glu = applyCode(camera, "gluPerspective(45, 1.333, 0.1, 100);");
     const auto& p = std::get<gl::Perspective<double>>(glu.projection);
     EXPECT_EQ(p.fovyDegrees, 45);
     EXPECT_EQ(p.aspect, 1.333);
@@ -454,7 +453,7 @@ TEST(CodeApply, KnownCallsSetKnownValues)
 
     // XM_PIDIV4 is 45 degrees exactly; the LH suffix sets the handedness, the API stays.
     const Camera dx =
-        code::applyCode(camera, "XMMATRIX proj = XMMatrixPerspectiveFovLH(XM_PIDIV4, 16.f/9.f, 0.1f, 100.f);");
+        applyCode(camera, "XMMATRIX proj = XMMatrixPerspectiveFovLH(XM_PIDIV4, 16.f/9.f, 0.1f, 100.f);");
     const auto& q = std::get<gl::Perspective<double>>(dx.projection);
     EXPECT_EQ(q.fovyDegrees, 45);
     EXPECT_DOUBLE_EQ(q.aspect, 16.0 / 9.0);
@@ -462,32 +461,32 @@ TEST(CodeApply, KnownCallsSetKnownValues)
     EXPECT_EQ(dx.api, gl::Api::Vulkan);
 
     EXPECT_EQ(std::get<gl::Perspective<double>>(
-                  code::applyCode(camera, "glm::perspective(glm::radians(60.0f), 1.5f, 0.1f, 10.0f)").projection)
+                  applyCode(camera, "glm::perspective(glm::radians(60.0f), 1.5f, 0.1f, 10.0f)").projection)
                   .fovyDegrees,
               60);
     EXPECT_EQ(std::get<gl::Perspective<double>>(
-                  code::applyCode(camera, "glm::perspective(glm::pi<float>() / 3.0f, 1.5f, 0.1f, 10.0f)").projection)
+                  applyCode(camera, "glm::perspective(glm::pi<float>() / 3.0f, 1.5f, 0.1f, 10.0f)").projection)
                   .fovyDegrees,
               60);
     EXPECT_NEAR(std::get<gl::Perspective<double>>(
-                    code::applyCode(camera, "mat4.perspective(0.785398, 1.5, 0.1, 10)").projection)
+                    applyCode(camera, "mat4.perspective(0.785398, 1.5, 0.1, 10)").projection)
                     .fovyDegrees,
                 45, 1e-4);
 
     // Near and far exchanged: the reversed-depth idiom.
-    const Camera swapped = code::applyCode(camera, "gluPerspective(45, 1.5, 100, 0.1);");
+    const Camera swapped = applyCode(camera, "gluPerspective(45, 1.5, 100, 0.1);");
     EXPECT_EQ(swapped.depth, gl::DepthMode::Reversed);
     EXPECT_EQ(std::get<gl::Perspective<double>>(swapped.projection).zNear, 0.1);
     EXPECT_EQ(std::get<gl::Perspective<double>>(swapped.projection).zFar, 100);
 
     // wgpu-matrix's reversed perspective: far defaults to infinity.
-    const Camera wgpu = code::applyCode(camera, "const proj = mat4.perspectiveReverseZ(Math.PI / 4, 1.5, 0.1);");
+    const Camera wgpu = applyCode(camera, "const proj = mat4.perspectiveReverseZ(Math.PI / 4, 1.5, 0.1);");
     EXPECT_EQ(wgpu.depth, gl::DepthMode::Reversed);
     EXPECT_EQ(std::get<gl::Perspective<double>>(wgpu.projection).fovyDegrees, 45);
     EXPECT_TRUE(std::isinf(std::get<gl::Perspective<double>>(wgpu.projection).zFar));
 
     // three.js: left, right, top, bottom; the camera's pose in three calls.
-    const Camera three = code::applyCode(camera, "const camera = new THREE.OrthographicCamera(-2, 2, 1, -1, 0.5, 10);\n"
+    const Camera three = applyCode(camera, "const camera = new THREE.OrthographicCamera(-2, 2, 1, -1, 0.5, 10);\n"
                                                  "camera.position.set(1, 2, 3);\ncamera.up.set(0, 0, 1);\n"
                                                  "camera.lookAt(new THREE.Vector3(0, 0, 0));");
     const auto& box = std::get<gl::Ortho<double>>(three.projection);
@@ -498,15 +497,15 @@ TEST(CodeApply, KnownCallsSetKnownValues)
     EXPECT_EQ(three.lookAt.center, Vec3<double>(0, 0, 0));
 
     // The look-at call's suffix decides the handedness, over the projection call's.
-    EXPECT_EQ(code::applyCode(camera, "glm::perspectiveRH_ZO(1.0f, 1.5f, 0.1f, 100.0f);\n"
+    EXPECT_EQ(applyCode(camera, "glm::perspectiveRH_ZO(1.0f, 1.5f, 0.1f, 100.0f);\n"
                                       "glm::lookAtLH(glm::vec3(1, 2, 3), glm::vec3(0, 0, 0), glm::vec3(0, 1, 0));")
                   .handedness,
               gl::Handedness::Left);
-    EXPECT_EQ(code::applyCode(camera, "glm::perspectiveLH_ZO(1.0f, 1.5f, 0.1f, 100.0f);").handedness,
+    EXPECT_EQ(applyCode(camera, "glm::perspectiveLH_ZO(1.0f, 1.5f, 0.1f, 100.0f);").handedness,
               gl::Handedness::Left);
 
     // A look-at alone keeps the projection.
-    const Camera look = code::applyCode(camera, "XMMatrixLookAtRH(XMVectorSet(1, 2, 3, 1), XMVectorSet(0, 0, 0, 1), "
+    const Camera look = applyCode(camera, "XMMatrixLookAtRH(XMVectorSet(1, 2, 3, 1), XMVectorSet(0, 0, 0, 1), "
                                                 "XMVectorSet(0, 1, 0, 0));");
     EXPECT_EQ(look.lookAt.eye, Vec3<double>(1, 2, 3));
     EXPECT_EQ(gl::projectionMatrix(look), gl::projectionMatrix(camera));
@@ -515,13 +514,13 @@ TEST(CodeApply, KnownCallsSetKnownValues)
 // A drag's steps, the app's and the page's: a two-hundredth of the size as a power of ten, whole steps exactly.
 TEST(CameraCode, ANumberStepsByAPowerOfTenExactly)
 {
-    EXPECT_EQ(code::stepFor(40), 0.1);
-    EXPECT_EQ(code::steppedValue(40, 50), 45);
-    EXPECT_EQ(code::steppedValue(40, 3), 40.3); // not 40.300000000000004
-    EXPECT_EQ(code::steppedValue(0.5, -1), 0.499);
-    EXPECT_EQ(code::steppedValue(1000, 1), 1001);
-    EXPECT_EQ(code::steppedValue(std::numeric_limits<double>::infinity(), 5), std::numeric_limits<double>::infinity());
+    EXPECT_EQ(stepFor(40), 0.1);
+    EXPECT_EQ(steppedValue(40, 50), 45);
+    EXPECT_EQ(steppedValue(40, 3), 40.3); // not 40.300000000000004
+    EXPECT_EQ(steppedValue(0.5, -1), 0.499);
+    EXPECT_EQ(steppedValue(1000, 1), 1001);
+    EXPECT_EQ(steppedValue(std::numeric_limits<double>::infinity(), 5), std::numeric_limits<double>::infinity());
 }
 
 } // namespace
-} // namespace viewpipe
+} // namespace viewpipe::report

@@ -17,7 +17,7 @@
 #include "viewpipe/report/tikz.hpp"
 #include "viewpipe/report/world_view.hpp"
 
-namespace viewpipe {
+namespace viewpipe::report {
 namespace {
 
 namespace fs = std::filesystem;
@@ -746,4 +746,4 @@ TEST(Tikz, FiguresDocumentSetsOneFigureAPageOnA4)
 }
 
 } // namespace
-} // namespace viewpipe
+} // namespace viewpipe::report

@@ -192,7 +192,7 @@ TEST(Latex, LessonAnswersAreStatedExactly)
     const auto answer = [](const std::string& scene, const std::string& question) {
         const Lesson lesson = parseLesson(R"({"title": "t", "steps": [{"scene": )" + scene +
                                               R"(, "caption": "c", "question": )" + question + "}]}", kScenes);
-        return answerText(lesson.steps[0]);
+        return report::answerText(lesson.steps[0]);
     };
     const std::string corner = "\"house-corner.json\"";
     EXPECT_EQ(answer(corner, R"({"kind": "entry", "prompt": "p", "stage": 2, "row": 1, "column": 1})"),
@@ -214,9 +214,9 @@ TEST(Latex, AQuestionsPointIsStatedAndTracedExactly)
         "projection": {"type": "perspective", "fovy_deg": 60, "aspect": 1, "near": 1, "far": 10}}}, "caption": "c",
         "question": {"kind": "where", "prompt": "p", "point": ["3*sqrt(3)", "√3", -9], "after": 4}}]})j", kScenes);
     const LessonStep& step = lesson.steps[0];
-    EXPECT_NE(questionContext(step).find("The point $(3\\sqrt{3}, \\sqrt{3}, -9)$."), std::string::npos)
-        << questionContext(step);
-    EXPECT_EQ(answerText(step), "$(1, \\frac{1}{3}, \\frac{79}{81})$ ($\\approx (1, 0.333333, 0.975309)$)");
+    EXPECT_NE(report::questionContext(step).find("The point $(3\\sqrt{3}, \\sqrt{3}, -9)$."), std::string::npos)
+        << report::questionContext(step);
+    EXPECT_EQ(report::answerText(step), "$(1, \\frac{1}{3}, \\frac{79}{81})$ ($\\approx (1, 0.333333, 0.975309)$)");
     const std::vector<std::string> traced = report::tracedLatex(step.scene, exactPoint(*step.question), 4, 4);
     ASSERT_EQ(traced.size(), 5u);
     EXPECT_EQ(traced[0], "(3\\sqrt{3}, \\sqrt{3}, -9, 1)");
@@ -468,9 +468,9 @@ TEST(Format, ShortestRoundTrip)
 }
 
 // Step k's figure files, named after it: "step-K-asking.pdf" and "step-K.pdf".
-std::vector<LessonFigures> figureFiles(const Lesson& lesson)
+std::vector<report::LessonFigures> figureFiles(const Lesson& lesson)
 {
-    std::vector<LessonFigures> figures;
+    std::vector<report::LessonFigures> figures;
     for (std::size_t k = 0; k < lesson.steps.size(); ++k)
         figures.push_back({"step-" + std::to_string(k) + "-asking.pdf", "step-" + std::to_string(k) + ".pdf"});
     return figures;
@@ -482,12 +482,12 @@ std::vector<LessonFigures> figureFiles(const Lesson& lesson)
 TEST(LessonLatex, HandoutFiguresKeepTheirLabelsReadable)
 {
     const Lesson lesson = loadLesson(std::string(viewpipe::build::dataDir) + "/lessons/foley-nper.json");
-    const std::vector<LessonFigures> figures = figureFiles(lesson);
-    const std::string handout = lessonHandoutLatex(lesson, figures);
+    const std::vector<report::LessonFigures> figures = figureFiles(lesson);
+    const std::string handout = report::lessonHandoutLatex(lesson, figures);
     ASSERT_NE(handout.find("Answer key"), std::string::npos);
     // Every figure at that width, in a minipage of its own beside the step's text.
     const std::string set =
-        "\\begin{minipage}[t]{" + formatShortest(kHandoutFigureWidth) + "\\linewidth}\\vspace{0pt}\\includegraphics[width=\\linewidth]{";
+        "\\begin{minipage}[t]{" + formatShortest(report::kHandoutFigureWidth) + "\\linewidth}\\vspace{0pt}\\includegraphics[width=\\linewidth]{";
     const auto count = [&handout](const std::string& what) {
         std::size_t n = 0;
         for (std::size_t at = handout.find(what); at != std::string::npos; at = handout.find(what, at + 1))
@@ -501,7 +501,7 @@ TEST(LessonLatex, HandoutFiguresKeepTheirLabelsReadable)
     });
     ASSERT_GT(questions, 0);
     EXPECT_EQ(figuresSet, lesson.steps.size() + std::size_t(questions)) << "each step, and each answer in the key";
-    const double labelPoints = 0.024 * 17 / 2.54 * 72 * kHandoutFigureWidth * kHandoutFigureTextScale;
+    const double labelPoints = 0.024 * 17 / 2.54 * 72 * report::kHandoutFigureWidth * report::kHandoutFigureTextScale;
     EXPECT_GE(labelPoints, 9.5);
 }
 
@@ -510,8 +510,8 @@ TEST(LessonLatex, HandoutFiguresKeepTheirLabelsReadable)
 TEST(LessonLatex, TheProblemSheetAsksThenSolvesExactly)
 {
     const Lesson lesson = loadLesson(std::string(viewpipe::build::dataDir) + "/lessons/foley-nper.json");
-    const std::vector<LessonFigures> figures = figureFiles(lesson);
-    const std::string sheet = lessonSheetLatex(lesson, figures);
+    const std::vector<report::LessonFigures> figures = figureFiles(lesson);
+    const std::string sheet = report::lessonSheetLatex(lesson, figures);
     const std::size_t solutions = sheet.find("\\section*{Solutions}");
     ASSERT_NE(solutions, std::string::npos);
     const std::string problems = sheet.substr(0, solutions), solved = sheet.substr(solutions);

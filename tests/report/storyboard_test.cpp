@@ -19,7 +19,7 @@
 
 #include <nlohmann/json.hpp>
 
-namespace viewpipe {
+namespace viewpipe::report {
 namespace {
 
 namespace fs = std::filesystem;
@@ -304,4 +304,4 @@ TEST(Storyboard, TikzDrawsEveryCellInItsBoxThenTheOverlay)
 }
 
 } // namespace
-} // namespace viewpipe
+} // namespace viewpipe::report

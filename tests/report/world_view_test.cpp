@@ -14,7 +14,7 @@
 #include "viewpipe/gl.hpp"
 #include "viewpipe/report/world_view.hpp"
 
-namespace viewpipe {
+namespace viewpipe::report {
 namespace {
 
 namespace fs = std::filesystem;
@@ -286,4 +286,4 @@ TEST(PickVertex, NearestWithinAHundredthOfTheWindowThenNearestInDepth)
 }
 
 } // namespace
-} // namespace viewpipe
+} // namespace viewpipe::report

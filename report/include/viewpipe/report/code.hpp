@@ -10,7 +10,7 @@
 
 #include "viewpipe/gl.hpp"
 
-namespace viewpipe::code {
+namespace viewpipe::report {
 
 enum class Dialect { OpenGL, Glm, DirectXMath, ThreeJs, WgpuMatrix };
 
@@ -59,4 +59,4 @@ gl::Camera<double> withField(const gl::Camera<double>& camera, const std::string
 // Throws InputError("code", ...) when nothing is recognized or a value is bad.
 gl::Camera<double> applyCode(const gl::Camera<double>& camera, const std::string& code);
 
-} // namespace viewpipe::code
+} // namespace viewpipe::report

@@ -17,7 +17,7 @@
 #include "viewpipe/math_text.hpp"
 #include "viewpipe/report/style.hpp"
 
-namespace viewpipe {
+namespace viewpipe::report {
 
 // A rectangle in picture coordinates: pixels, origin top-left, y down.
 struct Box2 {
@@ -321,4 +321,4 @@ double lineWidthOf(const Primitive& primitive);
 // How much of its color a ghost's line keeps.
 constexpr double kGhostOpacity = 0.3;
 
-} // namespace viewpipe
+} // namespace viewpipe::report

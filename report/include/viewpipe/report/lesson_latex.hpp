@@ -11,7 +11,7 @@
 
 #include "viewpipe/lesson.hpp"
 
-namespace viewpipe {
+namespace viewpipe::report {
 
 // A step's figure files: the view while its question is open (empty without
 // a question) and the view once answered.
@@ -50,4 +50,4 @@ std::string questionContext(const LessonStep& step);
 // A choice's letter, "(a)" for the first.
 std::string choiceLetter(std::size_t k);
 
-} // namespace viewpipe
+} // namespace viewpipe::report

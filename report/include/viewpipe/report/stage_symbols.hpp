@@ -10,7 +10,7 @@
 
 #include "viewpipe/stage_kind.hpp"
 
-namespace viewpipe {
+namespace viewpipe::report {
 
 struct SymbolicForm {
     std::array<std::string, 16> cells;
@@ -24,4 +24,4 @@ SymbolicForm symbolicMatrix(StageKind kind);
 // empty where the form is.
 std::string symbolicLatex(StageKind kind);
 
-} // namespace viewpipe
+} // namespace viewpipe::report

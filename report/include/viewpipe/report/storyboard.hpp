@@ -13,7 +13,7 @@
 
 #include "viewpipe/report/figure.hpp"
 
-namespace viewpipe {
+namespace viewpipe::report {
 
 // Labels and headers take this share of the storyboard's width (8 pt of 16 cm),
 // tick numbers, legends and footers smallTextSize of it (6 pt).
@@ -65,4 +65,4 @@ struct Storyboard {
     std::string title; // the document's (accessible) name
 };
 
-} // namespace viewpipe
+} // namespace viewpipe::report

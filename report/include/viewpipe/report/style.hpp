@@ -10,7 +10,7 @@
 
 #include "viewpipe/evaluated_scene.hpp"
 
-namespace viewpipe {
+namespace viewpipe::report {
 
 enum class Theme { Dark, Light };
 
@@ -60,4 +60,4 @@ constexpr double kNoBandOpacity = 0.25;
 // The raster effect's pixels, one color per object.
 extern const std::array<Rgb, 4> kRasterPalette;
 
-} // namespace viewpipe
+} // namespace viewpipe::report

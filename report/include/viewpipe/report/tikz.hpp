@@ -16,7 +16,7 @@
 #include "viewpipe/report/storyboard.hpp"
 #include "viewpipe/report/style.hpp"
 
-namespace viewpipe {
+namespace viewpipe::report {
 
 // A figure as a standalone document; 16 cm wide.
 std::string tikzFigure(const Figure& figure, Theme theme);
@@ -34,4 +34,4 @@ std::string texEscaped(const std::string& text);
 // text escaped, the math as written (the subset is LaTeX).
 std::string texRichText(const std::string& text);
 
-} // namespace viewpipe
+} // namespace viewpipe::report

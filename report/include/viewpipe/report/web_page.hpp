@@ -21,7 +21,7 @@
 #include "viewpipe/report/style.hpp"
 #include "viewpipe/report/world_view.hpp"
 
-namespace viewpipe {
+namespace viewpipe::report {
 
 // One frame of the world view: its camera and what it draws.
 struct WebFrame {
@@ -132,4 +132,4 @@ struct LessonScene {
 std::string lessonPage(const Lesson& lesson, const std::vector<int>& stepScenes, const std::vector<LessonScene>& scenes,
                        const WebAssets& assets);
 
-} // namespace viewpipe
+} // namespace viewpipe::report

@@ -12,7 +12,7 @@
 
 #include "viewpipe/report/figure.hpp"
 
-namespace viewpipe {
+namespace viewpipe::report {
 
 // What the world view frames: the stage's subject (objects, view volume,
 // the view's points and axes: framedElement), every point of it, the box
@@ -167,4 +167,4 @@ std::vector<Vec2<double>> subjectOutline(const WorldCamera& camera, const Framin
 // Where the fixed axes run for a framing: through the origin, a little beyond everything framed.
 Eigen::AlignedBox<double, 3> frameExtent(const Framing& framing);
 
-} // namespace viewpipe
+} // namespace viewpipe::report
