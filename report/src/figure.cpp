@@ -974,16 +974,24 @@ SceneLabels placeSceneLabels(const StageShown& stage, const FigureView& view, co
         const Box2 inside{Vec2d::Constant(kEdge), Vec2d(view.width, view.height) - Vec2d::Constant(kEdge)};
         auto sizeOf = [&](const std::string& text) { return measure(Label{Element::Frame, text, Vec3d::Zero(), true, true}); };
         auto corner = [&](const Vec2d& size) -> std::optional<Box2> {
-            double bottom = inside.max.y(), below = inside.min.y();
-            for (const Box2& other : reserved) {
-                if (other.max.y() >= 0.9 * view.height)
-                    bottom = std::min(bottom, other.min.y() - kEdge);
+            double below = inside.min.y();
+            for (const Box2& other : reserved)
                 if (other.min.y() <= 0.1 * view.height)
                     below = std::max(below, other.max.y() + kEdge);
-            }
+            // Right above what is reserved at the bottom between x0 and x1 (a legend in a column at the left
+            // reaches the bottom too, but not under a notice at the right).
+            auto bottomBetween = [&](double x0, double x1) {
+                double bottom = inside.max.y();
+                for (const Box2& other : reserved)
+                    if (other.max.y() >= 0.9 * view.height && other.max.x() > x0 && other.min.x() < x1)
+                        bottom = std::min(bottom, other.min.y() - kEdge);
+                return bottom;
+            };
+            const double right = bottomBetween(inside.max.x() - size.x(), inside.max.x()),
+                         left = bottomBetween(inside.min.x(), inside.min.x() + size.x());
             for (const Box2& at : {Box2{inside.max - size, inside.max},
-                                   Box2{Vec2d(inside.max.x() - size.x(), bottom - size.y()), Vec2d(inside.max.x(), bottom)},
-                                   Box2{Vec2d(inside.min.x(), bottom - size.y()), Vec2d(inside.min.x() + size.x(), bottom)},
+                                   Box2{Vec2d(inside.max.x() - size.x(), right - size.y()), Vec2d(inside.max.x(), right)},
+                                   Box2{Vec2d(inside.min.x(), left - size.y()), Vec2d(inside.min.x() + size.x(), left)},
                                    Box2{Vec2d(inside.min.x(), below), Vec2d(inside.min.x(), below) + size}})
                 if (inside.contains(at) &&
                     std::none_of(reserved.begin(), reserved.end(), [&](const Box2& other) { return at.overlaps(other.grown(kEdge)); }))

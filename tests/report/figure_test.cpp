@@ -440,6 +440,23 @@ TEST(Figure, LeftOutLabelsAreCountedAndLeadersKeepOffReservedBoxes)
     EXPECT_LE(said, missing);
 }
 
+// Beside a column of caption and legend that reaches the bottom, the notice stands right above the
+// effects' note at the stage's foot (it stood above the legend's top, in the middle of the stage).
+TEST(Figure, TheLeftOutNoticeStandsRightAboveWhatIsUnderIt)
+{
+    const Box2 caption{Vec2<double>(10, 10), Vec2<double>(120, 100)}, legend{Vec2<double>(10, 110), Vec2<double>(120, 262)},
+        note{Vec2<double>(130, 235), Vec2<double>(470, 262)};
+    std::vector<bool> minor;
+    const SceneLabels placed = crowdedHouseLabels(480, 270, {caption, legend, note}, minor);
+    ASSERT_TRUE(placed.leftOut);
+    const Box2& notice = placed.leftOut->box;
+    EXPECT_EQ(placed.leftOut->text.rfind("left out for room: ", 0), 0u) << placed.leftOut->text;
+    for (const Box2& box : {caption, legend, note})
+        EXPECT_FALSE(notice.overlaps(box));
+    EXPECT_LE(notice.max.y(), note.min.y());
+    EXPECT_GE(notice.max.y(), note.min.y() - 10) << "at y " << notice.max.y() << ", not right above the note";
+}
+
 // Where the notice's sentence is wider than the picture (a narrow view), it says the same briefly.
 TEST(Figure, TheLeftOutNoticeShortensWhereTheSentenceFindsNoRoom)
 {
