@@ -131,7 +131,7 @@ ScenePainter::ScenePainter(vtkRenderer* world, vtkRenderer* projected, std::shar
     worldCaption_->SetPickable(false);
     world_->AddActor2D(worldCaption_);
     effectsCaption_->GetPositionCoordinate()->SetCoordinateSystemToNormalizedViewport();
-    effectsCaption_->SetPosition(0.02, 0.02);
+    effectsCaption_->GetTextProperty()->SetVerticalJustificationToTop();
     effectsCaption_->SetPickable(false);
     useFigureFont(effectsCaption_->GetTextProperty(), false);
     world_->AddActor2D(effectsCaption_);
@@ -373,6 +373,8 @@ void ScenePainter::fitCaptions()
     const report::PictureLayout& layout = layoutCache_.layout(size[0], size[1], text, viewFontMeasure(world_));
     setCaptionText(worldCaption_, layout.captionLines, layout.captionSize);
     setCaptionText(effectsCaption_, layout.noteLines, layout.noteSize);
+    if (!layout.noteLines.empty()) // from its top, as the caption: the box the labels keep clear of is the layout's
+        effectsCaption_->SetPosition(layout.note.min.x() / size[0], 1 - layout.note.min.y() / size[1]);
     placeLegend(legend_, world_, layout, text.legend, theme_, legendFontSize_);
     if (const int labels = int(report::labelSizeIn(layout, fontSize_)); labels != labelSize_) {
         labelSize_ = labels;

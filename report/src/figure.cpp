@@ -397,7 +397,7 @@ PictureLayout layoutPicture(int width, int height, const PictureText& text, cons
 {
     PictureLayout layout;
     const double left = 0.02 * width, margin = std::max(4.0, text.fontSize / 2);
-    auto place = [&](const std::string& t, double size, bool bold, double room, double& line, bool fromBottom) {
+    auto place = [&](const std::string& t, double size, bool bold, double x, double room, double& line, bool fromBottom) {
         const TextMeasure at = [&](const std::string& s) { return measure(s, size, bold); };
         std::vector<std::string> lines = t.empty() ? std::vector<std::string>{} : wrapLines(t, room, at);
         std::string joined;
@@ -406,7 +406,7 @@ PictureLayout layoutPicture(int width, int height, const PictureText& text, cons
         const Vec2<double> extent = lines.empty() ? Vec2<double>::Zero() : at(joined); // as drawn, all lines
         line = lines.size() > 1 ? (extent.y() - at("Ag").y()) / double(lines.size() - 1) : 0;
         const double top = fromBottom ? 0.98 * height - extent.y() : 0.04 * height;
-        return std::pair{lines, Box2{Vec2<double>(left, top), Vec2<double>(left + extent.x(), top + extent.y())}};
+        return std::pair{lines, Box2{Vec2<double>(x, top), Vec2<double>(x + extent.x(), top + extent.y())}};
     };
     auto roomy = [&](const Box2& scene) {
         return scene.max.x() - scene.min.x() >= 0.4 * width && scene.max.y() - scene.min.y() >= 0.4 * height;
@@ -447,33 +447,40 @@ PictureLayout layoutPicture(int width, int height, const PictureText& text, cons
         subjectKnown ? std::vector<LegendPlace>{LegendPlace::Beside, LegendPlace::Below, LegendPlace::Inside}
                      : std::vector<LegendPlace>{LegendPlace::Beside, LegendPlace::Below};
     std::vector<LegendPlace> places = text.legendPlace == LegendPlace::Best ? anywhere : std::vector<LegendPlace>{text.legendPlace};
-    // At one size, the legend put at `where` (beside: in a column with the caption, where `column`): the
+    // Beside, the legend may stand in a column with the caption, the note at the column's foot or at the stage's.
+    enum class Column { None, NoteInColumn, NoteUnderStage };
+    // At one size, the legend put at `where` (beside: in a column with the caption, where `column` says): the
     // layout, or none where it does not fit.
-    auto arrange = [&](double size, LegendPlace where, bool column, const LegendLayout& rows, double bottom) -> std::optional<PictureLayout> {
+    auto arrange = [&](double size, LegendPlace where, Column column, const LegendLayout& rows, double bottom) -> std::optional<PictureLayout> {
         PictureLayout l = layout;
         l.legendRows = rows;
         l.legend = {};
         const Vec2d legendSize = rows.size;
         const double legendLeft = width - margin - legendSize.x();
-        if (where == LegendPlace::Beside && column) {
+        if (where == LegendPlace::Beside && column != Column::None) {
             // The caption, the legend under it and the note at their foot in a column at the left as wide
             // as the legend, the stage right of them at the picture's whole height: where the subject is
-            // tall, it draws larger there.
-            const double room = std::max(legendSize.x(), 0.3 * width);
-            std::tie(l.captionLines, l.caption) = place(text.caption, size, true, room, l.captionLine, false);
-            std::tie(l.noteLines, l.note) = place(text.note, l.noteSize, false, room, l.noteLine, true);
+            // tall, it draws larger there. Where the caption is long, the note may stand at the stage's foot
+            // instead, leaving the column its height.
+            const double room = std::max(legendSize.x(), 0.3 * width), stageLeft = left + room + margin;
+            const bool noteUnderStage = column == Column::NoteUnderStage;
+            std::tie(l.captionLines, l.caption) = place(text.caption, size, true, left, room, l.captionLine, false);
+            std::tie(l.noteLines, l.note) = noteUnderStage
+                                                ? place(text.note, l.noteSize, false, stageLeft, 0.98 * width - stageLeft, l.noteLine, true)
+                                                : place(text.note, l.noteSize, false, left, room, l.noteLine, true);
+            const double noteTop = l.noteLines.empty() ? height : l.note.min.y();
             const Vec2d top(left, l.caption.max.y() + 0.6 * size);
             l.legend = {top, top + legendSize};
-            l.scene = {Vec2d(left + room + margin, margin), Vec2d(width, height - margin)};
-            const double foot = (l.noteLines.empty() ? height : l.note.min.y()) - margin;
+            l.scene = {Vec2d(stageLeft, margin), Vec2d(width, (noteUnderStage ? noteTop : height) - margin)};
+            const double foot = (noteUnderStage ? height : noteTop) - margin;
             return l.legend.max.y() <= foot && roomy(l.scene) ? std::optional<PictureLayout>(l) : std::nullopt;
         }
         // The caption beside a legend at the top right where that leaves it half the width and two lines at most.
         bool captionBeside = where == LegendPlace::Beside && legendLeft - margin - left >= 0.5 * width;
         std::tie(l.captionLines, l.caption) =
-            place(text.caption, size, true, captionBeside ? legendLeft - margin - left : 0.96 * width, l.captionLine, false);
+            place(text.caption, size, true, left, captionBeside ? legendLeft - margin - left : 0.96 * width, l.captionLine, false);
         if (captionBeside && l.captionLines.size() > 2) {
-            std::tie(l.captionLines, l.caption) = place(text.caption, size, true, 0.96 * width, l.captionLine, false);
+            std::tie(l.captionLines, l.caption) = place(text.caption, size, true, left, 0.96 * width, l.captionLine, false);
             captionBeside = false;
         }
         const Box2 full{Vec2d(0, l.caption.max.y() + margin), Vec2d(width, bottom)};
@@ -523,13 +530,13 @@ PictureLayout layoutPicture(int width, int height, const PictureText& text, cons
             const double size = sizes[k];
             layout.captionSize = size;
             layout.noteSize = smallTextSize(size); // the note no larger than the caption's lines
-            std::tie(layout.noteLines, layout.note) = place(text.note, layout.noteSize, false, 0.96 * width, layout.noteLine, true);
+            std::tie(layout.noteLines, layout.note) = place(text.note, layout.noteSize, false, left, 0.96 * width, layout.noteLine, true);
             const double bottom = (layout.noteLines.empty() ? height : layout.note.min.y()) - margin;
             const LegendLayout rows = legendLayout(withLegend ? text.legend : std::vector<const LegendEntry*>{}, size, measure);
             std::optional<PictureLayout> best;
             for (const LegendPlace where : withLegend ? places : std::vector<LegendPlace>{LegendPlace::None})
-                for (const bool column : {false, true})
-                    if (!column || (subjectKnown && where == LegendPlace::Beside))
+                for (const Column column : {Column::None, Column::NoteInColumn, Column::NoteUnderStage})
+                    if (column == Column::None || (subjectKnown && where == LegendPlace::Beside))
                         if (std::optional<PictureLayout> l = arrange(size, where, column, rows, bottom);
                             l && (!best || scaleIn(l->scene) > scaleIn(best->scene)))
                             best = std::move(l);

@@ -155,11 +155,11 @@ struct PictureText {
 // it, or all of it with the legend inside in a corner the subject leaves free
 // (Inside, where asked: the top right corner if none is). Beside, where the
 // subject's outline is known and it draws larger so, the caption, the legend
-// and the note stand in a column at the left and the stage right of them at
-// the picture's whole height (the caption then needs no 30 %). Best takes the
-// place where the subject draws largest (beside or below where its outline is
-// not known: the larger room); a place asked for where the legend does not
-// fit, the best of those where it does.
+// and the note stand in a column at the left (the note at the stage's foot where
+// the column lacks room) and the stage right of them at the picture's whole
+// height (the caption then needs no 30 %). Best takes the place where the subject
+// draws largest (beside or below where its outline is not known: the larger
+// room); a place asked for where the legend does not fit, the best of those where it does.
 struct PictureLayout {
     std::vector<std::string> captionLines, noteLines;
     Box2 caption, legend, note, scene;
