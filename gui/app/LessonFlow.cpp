@@ -48,9 +48,22 @@ int LessonFlow::lastTracedStage(int stage) const
     return lesson_->isOpen() ? std::min(stage, shows().lastStage) : window_->stepper()->stageCount();
 }
 
+namespace {
+
+// What a step sets up in the view besides its scene: what it hides and highlights, its turn, panel and layout.
+std::string stepView(const LessonStep& step)
+{
+    return stepShownJson(step) + " " + std::to_string(step.yaw) + " " + std::to_string(step.pitch) + " " +
+           std::to_string(step.zoom) + " " + step.panel + (step.storyboard ? " storyboard" : "");
+}
+
+} // namespace
+
 std::shared_ptr<const EvaluatedScene> LessonFlow::asShown(const std::shared_ptr<const EvaluatedScene>& scene) const
 {
-    const bool stepShown = lesson_->isOpen() && shownStep_ == lesson_->step() && shownOpening_ == lesson_->openings();
+    // The step's scene, as edited since: not another scene opened while the lesson is open.
+    const bool stepShown = lesson_->isOpen() && shownStep_ == lesson_->step() && shownOpening_ == lesson_->openings() &&
+                           window_->document()->filePath() == shownFile_;
     return stepShown ? shownAtStep(scene, lesson_->currentStep()) : scene;
 }
 
@@ -157,6 +170,9 @@ void LessonFlow::showLessonStep()
         shownStep_ = -1;
         stepper->setLastStage(std::nullopt);
         dock->hide();
+        drawnLook_.clear();
+        window_->drawScene(); // whole again: the last step's hide and highlights go with the lesson
+        stepper->restart();
         window_->showStageDetails();
         return;
     }
@@ -174,7 +190,8 @@ void LessonFlow::showLessonStep()
     // Another lesson, another step, or an edit that changed this step's scene: the step's view is set up.
     // An edit of the texts, an answer or a reveal keeps the view, and what the user changed in it.
     const bool sameLesson = lesson_->openings() == shownOpening_;
-    const bool newStep = !keepView_ && (!sameLesson || k != shownStep_ || !(step.scene == shownStepScene_));
+    const bool newStep = !keepView_ && (!sameLesson || k != shownStep_ || !(step.scene == shownStepScene_) ||
+                                        stepView(step) != shownStepView_);
     keepView_ = false;
     Document* document = window_->document();
     const bool sceneConfirmed = std::exchange(sceneDiscardConfirmed_, false);
@@ -198,14 +215,20 @@ void LessonFlow::showLessonStep()
     shownGeneration_ = lesson_->generation();
     shownOpening_ = lesson_->openings();
     shownStepScene_ = step.scene;
-    if (newStep) {
+    shownStepView_ = stepView(step);
+    shownFile_ = document->filePath();
+    const bool lookChanged = stepShownJson(step) != drawnLook_;
+    if (newStep || lookChanged) {
         if (stepper->isAnimating())
             stepper->goToStage(stepper->target(), false);
         // What the step hides is not drawn, what it highlights is drawn wider; the picture stays at its stage.
+        drawnLook_ = stepShownJson(step);
         window_->drawScene();
-        if (!step.panel.empty())
-            window_->showPanel(QString::fromStdString(step.panel));
-        window_->orbitViews(step.yaw, step.pitch, step.zoom);
+        if (newStep) {
+            if (!step.panel.empty())
+                window_->showPanel(QString::fromStdString(step.panel));
+            window_->orbitViews(step.yaw, step.pitch, step.zoom);
+        }
         stepper->goToStage(stepper->stage(), false);
     }
     const bool revealed = !step.question || lesson_->isRevealed(k);

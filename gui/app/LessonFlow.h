@@ -80,6 +80,9 @@ private:
     int shownGeneration_ = -1; // of the lesson it was in
     int shownOpening_ = -1;    // the lesson it was in (LessonDocument::openings)
     Scene shownStepScene_;     // its scene as the lesson had it
+    std::string shownStepView_; // what it set up in the view besides its scene (stepView)
+    QString shownFile_;        // the document's file it was shown on
+    std::string drawnLook_;    // what the views leave out and highlight for it (stepShownJson)
     bool sceneDiscardConfirmed_ = false; // openLesson asked before the lesson replaced the scene
     bool keepView_ = false;    // the step about to be shown is the view on screen
 };

@@ -145,9 +145,10 @@ int pageSteps(const EvaluatedScene& scene)
 std::string scenePage(const std::shared_ptr<const EvaluatedScene>& scene, const ExportOptions& options, Steps& step)
 {
     const auto shown = withoutHidden(scene, options.hidden);
-    const report::WebPageViews views = recordWebViews(shown, options.width, options.height, options.scale, options.theme,
-                                              options.framing, std::ref(step), options.textScale / 100.0, options.hidden,
-                                              options.legend);
+    report::WebPageViews views = recordWebViews(shown, options.width, options.height, options.scale, options.theme,
+                                                options.framing, std::ref(step), options.textScale / 100.0, options.hidden,
+                                                options.legend);
+    views.options.zoom = options.zoom; // the page zooms its recorded views itself
     step("scene.html");
     return viewpipe::report::webPage(*shown, views, report::loadWebAssets("/usr/share/javascript", {}, options.presets));
 }

@@ -334,8 +334,8 @@ json sceneData(const EvaluatedScene& scene, const WebPageViews& views)
                        {"note", scene.effectsNote},
                        {"projected", projected},
                        {"hideChoices", hideChoices},
-                       // The choices the page was made with (export's --hide and --legend): the reader's at first.
-                       {"chosen", {{"hidden", options.hidden}, {"legend", legendPlaceName(options.legend)}}},
+                       // The choices the page was made with (export's --hide, --legend and --zoom): the reader's at first.
+                       {"chosen", {{"hidden", options.hidden}, {"legend", legendPlaceName(options.legend)}, {"zoom", options.zoom}}},
                        {"legendChoices", legendChoices}};
     return data;
 }

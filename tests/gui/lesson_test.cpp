@@ -309,37 +309,49 @@ private slots:
     }
 
     // What a step hides stays hidden through an edit of the camera (an edit drew the whole scene again,
-    // the projectors a step left out among it), and comes back once the lesson is closed.
-    void aStepsHideHoldsThroughAnEdit()
+    // the projectors a step left out among it); it goes with the step: a step removed, another scene
+    // opened, the lesson closed.
+    void aStepsHideHoldsThroughAnEditAndGoesWithTheStep()
     {
         MainWindow& w = *window_;
         QTemporaryDir folder;
         QFile file(folder.filePath("hidden.json"));
         QVERIFY(file.open(QIODevice::WriteOnly));
-        file.write(QString(R"({"title": "Hidden", "steps": [{"scene": "%1", "stage": 2, "caption": "c", "hide": ["projectors", "labels"]}]})")
+        file.write(QString(R"({"title": "Hidden", "steps": [{"scene": "%1", "stage": 2, "caption": "c", "hide": ["projectors", "labels"]},
+                                                            {"scene": "%1", "stage": 2, "caption": "d"}]})")
                        .arg(kHouse)
                        .toUtf8());
         file.close();
-        QVERIFY(w.lessonFlow()->openLesson(file.fileName()));
-        QTRY_VERIFY(settled(w));
         auto projectors = [](const EvaluatedScene& scene) {
             return std::count_if(scene.primitives.begin(), scene.primitives.end(),
                                  [](const Primitive& p) { return p.element == Element::Projectors; });
         };
+        auto hidden = [&] { return projectors(*w.shownScene()) == 0 && w.shownScene()->labels.empty(); };
+        auto whole = [&] { return projectors(*w.shownScene()) > 0 && !w.shownScene()->labels.empty(); };
+        QVERIFY(w.lessonFlow()->openLesson(file.fileName()));
+        QTRY_VERIFY(settled(w));
         QVERIFY(projectors(*w.document()->evaluated()) > 0);
-        QCOMPARE(projectors(*w.shownScene()), 0);
-        QVERIFY(w.shownScene()->labels.empty());
+        QVERIFY(hidden());
+        // The step removed: the next, on the same scene, hides nothing; undone, the hide is back.
+        w.lessonFlow()->lesson()->removeStep(0);
+        QTRY_VERIFY(whole());
+        w.lessonFlow()->lesson()->undoStack()->undo();
+        QTRY_VERIFY(hidden());
         auto view = std::get<foley::ViewSpec<double>>(w.document()->scene().camera);
         view.back = 20;
         w.document()->setCamera(view, "Edit view.back");
         QCOMPARE(std::get<foley::ViewSpec<double>>(w.document()->scene().camera).back, 20.0);
-        QCOMPARE(projectors(*w.shownScene()), 0);
-        QVERIFY(w.shownScene()->labels.empty());
+        QVERIFY(hidden());
+        w.document()->undoStack()->setClean(); // no question about the edit below
+        // Another scene opened while the lesson is open is drawn whole.
+        QVERIFY(w.sceneFiles()->openScene(QString(viewpipe::build::dataDir) + "/scenes/house-corner.json"));
+        QVERIFY(whole());
+        // The step's own scene file again: the step's, its hide holds.
+        QVERIFY(w.sceneFiles()->openScene(kHouse));
+        QVERIFY(hidden());
+        // The lesson closed: whole at once.
         w.lessonFlow()->lesson()->close();
-        view.back = 15;
-        w.document()->setCamera(view, "Edit view.back");
-        QVERIFY(projectors(*w.shownScene()) > 0);
-        QVERIFY(!w.shownScene()->labels.empty());
+        QVERIFY(whole());
     }
 
     void aLessonIsMadeFromTheViewsOnScreen()

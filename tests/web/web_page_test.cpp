@@ -1211,13 +1211,13 @@ TEST_F(WebPage, TheReaderChoosesWhatIsDrawnAndTheLinkKeepsIt)
         ADD_FAILURE() << problem;
 }
 
-// A page made with export's --hide and --legend starts from those choices, its controls saying so; a reader's
+// A page made with export's --hide, --legend and --zoom starts from those choices, its controls saying so; a reader's
 // first choice keeps them (it brought back what the export left out), and taking one back draws it again.
 TEST_F(WebPage, APageMadeWithChoicesStartsFromThem)
 {
     const fs::path out = *dir_ / "house-chosen";
     const Finished run = viewpipe({"export", QString::fromStdString(kData + "/scenes/house.json"), "--out", QString::fromStdString(out.string()),
-                                   "--format", "html", "--hide", "projectors", "--legend", "below", "--quiet"});
+                                   "--format", "html", "--hide", "projectors", "--legend", "below", "--zoom", "1.5", "--quiet"});
     ASSERT_EQ(run.exitCode, 0) << run.output;
     Browser browser(*dir_ / "profile-chosen");
     browser.page("Page.navigate", {{"url", "file://" + (out / "scene.html").string() + "#stage=3"}});
@@ -1230,6 +1230,8 @@ TEST_F(WebPage, APageMadeWithChoicesStartsFromThem)
     EXPECT_EQ(browser.evaluate("window.viewpipe.primitives()").get<long>(), all - projectors);
     EXPECT_EQ(browser.evaluate(checked), "projectors");
     EXPECT_EQ(browser.evaluate("document.getElementById('legend-place').value"), "below");
+    EXPECT_EQ(browser.evaluate("document.getElementById('zoom').value"), "1.5");
+    EXPECT_FALSE(browser.evaluate("location.hash.includes('zoom')").get<bool>());
     // Another choice: the projectors stay out.
     browser.evaluate("document.querySelector('#leave-out input[value=ticks]').click()");
     ASSERT_TRUE(browser.waitFor("location.hash.includes('hide=projectors%2Cticks')")) << browser.evaluate("location.hash");

@@ -2,8 +2,8 @@
   // ---- State ------------------------------------------------------------------
   const state = { stage: 0, step: 0, yaw: 0, pitch: 0, zoom: 1, figure: false, traced: null, layout: 'stages',
                   hidden: [], legend: 'best' }; // hidden and legend: the names export's --hide and --legend take
-  // What the page was made with (export's --hide and --legend): what is drawn at first, and where a link says nothing.
-  const madeWith = { hidden: data.chosen.hidden, legend: data.chosen.legend };
+  // What the page was made with (export's --hide, --legend and --zoom): what is drawn at first, and where a link says nothing.
+  const madeWith = { hidden: data.chosen.hidden, legend: data.chosen.legend, zoom: data.chosen.zoom };
   let shown = null; // the frame drawn: {frame, atRest, ghost}
   let animation = null;
   let playing = null;
@@ -20,7 +20,7 @@
     state.step = lesson ? Math.min(lesson.steps.length - 1, Math.max(0, Math.round(number('step', 1) - 1))) : 0;
     state.yaw = number('yaw', 0);
     state.pitch = number('pitch', 0);
-    state.zoom = number('zoom', 1);
+    state.zoom = number('zoom', madeWith.zoom);
     keepViewInLimits();
     state.figure = values.has('figure');
     // Every stage at once shows every stage's name and numbers: not in a lesson, whose questions ask for them.
@@ -40,7 +40,7 @@
     else values.set('stage', state.stage);
     if (state.yaw) values.set('yaw', state.yaw.toFixed(1));
     if (state.pitch) values.set('pitch', state.pitch.toFixed(1));
-    if (state.zoom !== 1) values.set('zoom', state.zoom.toFixed(3));
+    if (state.zoom !== madeWith.zoom) values.set('zoom', state.zoom.toFixed(3));
     if (state.figure) values.set('figure', '');
     if (state.layout === 'storyboard') values.set('layout', 'storyboard');
     if (state.hidden.join(',') !== madeWith.hidden.join(',')) values.set('hide', state.hidden.join(','));

@@ -55,6 +55,7 @@ struct WebViewOptions {
     // What the reader leaves out (hideNames): the scene drawn is withoutHidden's; here the caption, the
     // ticks and the notice of labels left out, which the picture's layout and labels leave out.
     std::set<std::string> hidden;
+    double zoom = 1; // about the subject (export's --zoom): the reader's at first, as hidden and legend
 };
 
 struct WebPageViews {
