@@ -1359,6 +1359,43 @@ TEST_F(WebPage, AClickInTheStoryboardTracesInEveryCellAndTheStoryboardIsSaved)
     return ::testing::AssertionSuccess();
 }
 
+// A vertex traced while a question waits fills no trace: at the last stage the core's table ends with its
+// verdict, an inside question's answer (it was in the page, hidden only by the style of the panel).
+TEST(LessonPage, AVertexTracedWhileAQuestionWaitsShowsNoTrace)
+{
+    const fs::path dir = fs::temp_directory_path() / ("viewpipe-web-waiting-trace-" + std::to_string(::getpid()));
+    fs::remove_all(dir);
+    fs::create_directories(dir);
+    {
+        std::ofstream lesson(dir / "lesson.json");
+        lesson << R"({"title": "Inside", "steps": [{"scene": ")" << kData << R"(/scenes/house.json", "stage": 5, "caption": "c",
+            "question": {"kind": "inside", "prompt": "Is the front corner inside?", "point": [0, 0, 54]}}]})";
+    }
+    {
+        Browser browser(dir / "profile");
+        ASSERT_TRUE(openExportedLesson(dir, browser));
+        ASSERT_TRUE(browser.waitFor("document.body.dataset.core === '1' && document.body.dataset.stage === '5'"));
+        const auto click = [&](const std::string& point) {
+            const json at = browser.evaluate("JSON.stringify(window.viewpipe.pixelOf(" + point + "))");
+            ASSERT_TRUE(at.is_string()) << at;
+            const json pixel = json::parse(at.get<std::string>());
+            for (const char* type : {"mousePressed", "mouseReleased"})
+                browser.page("Input.dispatchMouseEvent", {{"type", type}, {"x", pixel["x"]}, {"y", pixel["y"]},
+                                                          {"button", "left"}, {"clickCount", 1}});
+        };
+        click("[0, 0, 54]");
+        ASSERT_TRUE(browser.waitFor("JSON.stringify(window.viewpipe.traced()) === '[0,0,54]'"));
+        EXPECT_EQ(browser.evaluate("document.getElementById('trace').textContent"), "");
+        // Answered: the trace and its verdict.
+        browser.evaluate("document.querySelector('#question .show-answer').click()");
+        ASSERT_TRUE(browser.waitFor("document.getElementById('trace').textContent.includes('inside the canonical volume')"));
+        for (const std::string& problem : browser.problems())
+            ADD_FAILURE() << problem;
+    }
+    std::error_code ignored;
+    fs::remove_all(dir, ignored);
+}
+
 TEST(LessonPage, QuestionsAreAnsweredCheckedAndRevealed)
 {
     const fs::path dir = fs::temp_directory_path() / ("viewpipe-web-lesson-" + std::to_string(::getpid()));

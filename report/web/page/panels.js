@@ -48,6 +48,7 @@
   // ({rows, verdict, spoken}), or null.
   function showTrace() {
     const element = document.getElementById('trace');
+    if (asking()) return void (element.textContent = ''); // the trace follows the answer (its verdict may be it)
     if (!state.traced) {
       element.innerHTML = '<p>Click a vertex of an object (or press T) to trace it through the stages.</p>';
       return null;
