@@ -217,12 +217,12 @@ void LessonFlow::showLessonStep()
     shownStepScene_ = step.scene;
     shownStepView_ = stepView(step);
     shownFile_ = document->filePath();
-    const bool lookChanged = stepShownJson(step) != drawnLook_;
-    if (newStep || lookChanged) {
+    const std::string look = stepShownJson(step);
+    if (newStep || look != drawnLook_) {
         if (stepper->isAnimating())
             stepper->goToStage(stepper->target(), false);
         // What the step hides is not drawn, what it highlights is drawn wider; the picture stays at its stage.
-        drawnLook_ = stepShownJson(step);
+        drawnLook_ = look;
         window_->drawScene();
         if (newStep) {
             if (!step.panel.empty())

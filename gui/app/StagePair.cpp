@@ -120,6 +120,8 @@ void StagePair::renderNow()
 
 void StagePair::renderWorldView()
 {
+    if (!isVisible()) // behind the storyboard: drawn once shown
+        return;
     worldWindow_->Render();
     worldWidget_->update();
 }

@@ -279,6 +279,19 @@ bool waitForFile(const fs::path& file, double seconds = 30)
     return false;
 }
 
+// A click where the page draws a world point ("[x, y, z]", or "[x, y, z], K" in the storyboard's cell of stage K).
+::testing::AssertionResult clickOn(Browser& browser, const std::string& point)
+{
+    const json at = browser.evaluate("JSON.stringify(window.viewpipe.pixelOf(" + point + "))");
+    if (!at.is_string())
+        return ::testing::AssertionFailure() << point << " is not drawn: " << at;
+    const json pixel = json::parse(at.get<std::string>());
+    for (const char* type : {"mousePressed", "mouseReleased"})
+        browser.page("Input.dispatchMouseEvent", {{"type", type}, {"x", pixel["x"]}, {"y", pixel["y"]},
+                                                  {"button", "left"}, {"clickCount", 1}});
+    return ::testing::AssertionSuccess();
+}
+
 // Pixels that are not the (white) background.
 std::vector<bool> drawn(const QImage& image)
 {
@@ -464,12 +477,7 @@ TEST_F(WebPage, LinksToAMomentTracesAVertexAndTypesetsTheMatrices)
     browser.press("0", 48); // the view back
 
     // A click on a vertex traces it: a corner of the house's front, clicked where the page draws it.
-    const json at = browser.evaluate("JSON.stringify(window.viewpipe.pixelOf([0, 0, 54]))");
-    ASSERT_TRUE(at.is_string());
-    const json pixel = json::parse(at.get<std::string>());
-    for (const char* type : {"mousePressed", "mouseReleased"})
-        browser.page("Input.dispatchMouseEvent", {{"type", type}, {"x", pixel["x"]}, {"y", pixel["y"]},
-                                                  {"button", "left"}, {"clickCount", 1}});
+    ASSERT_TRUE(clickOn(browser, "[0, 0, 54]"));
     ASSERT_TRUE(browser.waitFor("document.querySelectorAll('#trace tr').length === 7"));
     // After T(-PRP), the PRP being (8, 6, 84) in VRC = world here, the corner is at (-8, -6, -30).
     EXPECT_EQ(browser.evaluate("document.querySelectorAll('#trace tr')[4].cells[0].querySelector('annotation').textContent"),
@@ -1303,12 +1311,7 @@ TEST_F(WebPage, AClickInTheStoryboardTracesInEveryCellAndTheStoryboardIsSaved)
     };
     ASSERT_EQ(footer(0), "traced (0, 0, 54)");
     // The house's top corner at the back, (8, 16, 30), clicked where stage 4's cell draws it; T(-PRP) takes it to (0, 10, -54).
-    const json at = browser.evaluate("JSON.stringify(window.viewpipe.pixelOf([8, 16, 30], 4))");
-    ASSERT_TRUE(at.is_string()) << at;
-    const json pixel = json::parse(at.get<std::string>());
-    for (const char* type : {"mousePressed", "mouseReleased"})
-        browser.page("Input.dispatchMouseEvent", {{"type", type}, {"x", pixel["x"]}, {"y", pixel["y"]},
-                                                  {"button", "left"}, {"clickCount", 1}});
+    ASSERT_TRUE(clickOn(browser, "[8, 16, 30], 4"));
     ASSERT_TRUE(browser.waitFor("document.querySelector(`.cell[data-stage='0'] .footer`).textContent.includes('16')"));
     EXPECT_EQ(footer(0), "traced (8, 16, 30)");
     EXPECT_EQ(footer(3), "traced (0, 10, \u221254)");
@@ -1375,15 +1378,7 @@ TEST(LessonPage, AVertexTracedWhileAQuestionWaitsShowsNoTrace)
         Browser browser(dir / "profile");
         ASSERT_TRUE(openExportedLesson(dir, browser));
         ASSERT_TRUE(browser.waitFor("document.body.dataset.core === '1' && document.body.dataset.stage === '5'"));
-        const auto click = [&](const std::string& point) {
-            const json at = browser.evaluate("JSON.stringify(window.viewpipe.pixelOf(" + point + "))");
-            ASSERT_TRUE(at.is_string()) << at;
-            const json pixel = json::parse(at.get<std::string>());
-            for (const char* type : {"mousePressed", "mouseReleased"})
-                browser.page("Input.dispatchMouseEvent", {{"type", type}, {"x", pixel["x"]}, {"y", pixel["y"]},
-                                                          {"button", "left"}, {"clickCount", 1}});
-        };
-        click("[0, 0, 54]");
+        ASSERT_TRUE(clickOn(browser, "[0, 0, 54]"));
         ASSERT_TRUE(browser.waitFor("JSON.stringify(window.viewpipe.traced()) === '[0,0,54]'"));
         EXPECT_EQ(browser.evaluate("document.getElementById('trace').textContent"), "");
         // Answered: the trace and its verdict.
