@@ -30,8 +30,7 @@ extern "C" void onInterrupt(int)
 
 int runExport(const ExportCommandOptions& options)
 {
-    // The leading newline ends the progress bar's line.
-    return guarded("\n" + options.scene, "\nviewpipe export", [&] {
+    return guarded(options.scene, "viewpipe export", [&] {
         const std::shared_ptr<const EvaluatedScene> scene = evaluateScene(loadScene(options.scene));
         gui::ExportOptions o;
         o.out = options.out;
@@ -56,20 +55,33 @@ int runExport(const ExportCommandOptions& options)
         std::signal(SIGTERM, onInterrupt);
         const gui::VirtualDisplay display;
         const bool bar = !options.quiet;
-        const auto files = gui::exportStages(
-            scene, o,
-            [bar](int done, int total, const std::string& what) {
-                if (!bar)
-                    return;
-                const int width = 30, filled = width * done / total;
-                std::fprintf(stderr, "\r[%s%s] %3d%%  %-50.50s", std::string(std::size_t(filled), '#').c_str(),
-                             std::string(std::size_t(width - filled), ' ').c_str(), 100 * done / total,
-                             what.c_str());
-                std::fflush(stderr);
-            },
-            interrupted);
-        if (bar)
-            std::fprintf(stderr, "\n");
+        // A message after the bar starts on a line of its own; one before it, on the first line.
+        bool barLineOpen = false;
+        const auto endBarLine = [&barLineOpen] {
+            if (barLineOpen)
+                std::fputc('\n', stderr);
+            barLineOpen = false;
+        };
+        std::vector<std::filesystem::path> files;
+        try {
+            files = gui::exportStages(
+                scene, o,
+                [bar, &barLineOpen](int done, int total, const std::string& what) {
+                    if (!bar)
+                        return;
+                    barLineOpen = true;
+                    const int width = 30, filled = width * done / total;
+                    std::fprintf(stderr, "\r[%s%s] %3d%%  %-50.50s", std::string(std::size_t(filled), '#').c_str(),
+                                 std::string(std::size_t(width - filled), ' ').c_str(), 100 * done / total,
+                                 what.c_str());
+                    std::fflush(stderr);
+                },
+                interrupted);
+        } catch (...) {
+            endBarLine();
+            throw;
+        }
+        endBarLine();
         if (interrupted) {
             std::cerr << "viewpipe export: interrupted; nothing was written\n";
             return 130;
