@@ -6,7 +6,6 @@
 #include <QFileInfo>
 #include <QProgressDialog>
 #include <QRegularExpression>
-#include <QStatusBar>
 
 #include <atomic>
 
@@ -15,8 +14,9 @@
 #include "Document.h"
 #include "ExportDialog.h"
 #include "LessonFlow.h"
-#include "MainWindow.h"
+#include "Messages.h"
 #include "StageViews.h"
+#include "ViewDeck.h"
 #include "Stepper.h"
 #include "viewpipe/report/latex.hpp"
 
@@ -37,7 +37,12 @@ ExportProgress progressIn(QProgressDialog& dialog, std::atomic<bool>& cancel)
 
 } // namespace
 
-Exports::Exports(MainWindow* window) : QObject(window), window_(window) {}
+Exports::Exports(Document* document, const Stepper* stepper, ViewDeck* views, const LessonFlow* lesson,
+                 Messages& messages, QWidget* dialogParent)
+    : QObject(dialogParent), document_(document), stepper_(stepper), views_(views), lesson_(lesson), messages_(messages),
+      dialogParent_(dialogParent)
+{
+}
 
 void Exports::addActions(ActionRegistry& actions)
 {
@@ -53,27 +58,27 @@ void Exports::addActions(ActionRegistry& actions)
 
 void Exports::chooseAndExportStages()
 {
-    ExportDialog dialog(window_->stepper()->stageCount(), window_->painter()->theme(), window_);
-    dialog.startFrom(window_->hidden(), window_->storyboardShown());
+    ExportDialog dialog(stepper_->stageCount(), views_->theme(), dialogParent_);
+    dialog.startFrom(views_->hidden(), views_->storyboardShown());
     if (dialog.exec() != QDialog::Accepted)
         return;
     try {
         const auto files = exportStages(dialog.options());
         if (!files.empty())
-            window_->statusBar()->showMessage(tr("Exported %1 files to %2")
-                                                  .arg(files.size())
-                                                  .arg(QString::fromStdString(files.front().parent_path().string())),
-                                              8000);
+            messages_.showNote(tr("Exported %1 files to %2")
+                                   .arg(files.size())
+                                   .arg(QString::fromStdString(files.front().parent_path().string())),
+                               8000);
     } catch (const InputError& e) {
-        window_->showMessage(QString::fromStdString(e.what()));
+        messages_.showMessage(QString::fromStdString(e.what()));
     }
 }
 
 void Exports::chooseAndExportWebPage()
 {
-    QString name = QString::fromStdString(window_->document()->scene().name).toLower();
+    QString name = QString::fromStdString(document_->scene().name).toLower();
     name = name.replace(QRegularExpression("[^a-z0-9]+"), "-").remove(QRegularExpression("^-+|-+$"));
-    const QString path = chooseFileToSave(window_, tr("Export as a web page"), (name.isEmpty() ? "scene" : name) + ".html",
+    const QString path = chooseFileToSave(dialogParent_, tr("Export as a web page"), (name.isEmpty() ? "scene" : name) + ".html",
                                           tr("Web pages (*.html)"));
     if (!path.isEmpty())
         exportWebPage(path);
@@ -81,71 +86,71 @@ void Exports::chooseAndExportWebPage()
 
 void Exports::chooseAndExportSheet()
 {
-    const QString path = chooseFileToSave(window_, tr("Export the CAD sheet"), "sheet.png", tr("PNG images (*.png)"));
+    const QString path = chooseFileToSave(dialogParent_, tr("Export the CAD sheet"), "sheet.png", tr("PNG images (*.png)"));
     if (path.isEmpty())
         return;
     try {
-        exportSheet(*window_->document()->evaluated(), path.toStdString(), 1600, 1200, window_->painter()->theme());
-        window_->statusBar()->showMessage(tr("Exported %1").arg(path), 6000);
+        exportSheet(*document_->evaluated(), path.toStdString(), 1600, 1200, views_->theme());
+        messages_.showNote(tr("Exported %1").arg(path), 6000);
     } catch (const InputError& e) {
-        window_->showMessage(QString::fromStdString(e.what()));
+        messages_.showMessage(QString::fromStdString(e.what()));
     }
 }
 
 std::vector<std::filesystem::path> Exports::exportStages(const ExportOptions& options)
 {
-    QProgressDialog progress(tr("Exporting stages…"), tr("Cancel"), 0, 100, window_);
+    QProgressDialog progress(tr("Exporting stages…"), tr("Cancel"), 0, 100, dialogParent_);
     progress.setWindowModality(Qt::WindowModal);
     progress.setMinimumDuration(0);
     std::atomic<bool> cancel{false};
     try {
-        auto files = gui::exportStages(window_->document()->evaluated(), options, progressIn(progress, cancel), cancel);
+        auto files = gui::exportStages(document_->evaluated(), options, progressIn(progress, cancel), cancel);
         progress.setValue(progress.maximum());
         return files;
     } catch (const InputError&) {
         throw;
     } catch (const std::exception& e) {
-        window_->showMessage(tr("Export failed; nothing was written: %1").arg(e.what()));
+        messages_.showMessage(tr("Export failed; nothing was written: %1").arg(e.what()));
         return {};
     }
 }
 
 void Exports::exportWebPage(const QString& path)
 {
-    QProgressDialog progress(tr("Exporting the web page…"), tr("Cancel"), 0, 100, window_);
+    QProgressDialog progress(tr("Exporting the web page…"), tr("Cancel"), 0, 100, dialogParent_);
     progress.setWindowModality(Qt::WindowModal);
     progress.setMinimumDuration(0);
     std::atomic<bool> cancel{false};
     try {
         QDir().mkpath(QFileInfo(path).absolutePath());
-        gui::exportWebPage(window_->document()->evaluated(), path.toStdString(), window_->painter()->theme(),
+        gui::exportWebPage(document_->evaluated(), path.toStdString(), views_->theme(),
                            progressIn(progress, cancel), cancel);
         progress.setValue(progress.maximum());
         if (!cancel)
-            window_->statusBar()->showMessage(tr("Exported %1: open it in any browser").arg(path), 8000);
+            messages_.showNote(tr("Exported %1: open it in any browser").arg(path), 8000);
     } catch (const std::exception& e) {
-        window_->showMessage(tr("Export failed; nothing was written: %1").arg(e.what()));
+        messages_.showMessage(tr("Export failed; nothing was written: %1").arg(e.what()));
     }
 }
 
 void Exports::copyMatrixAsLatex()
 {
-    if (window_->lessonFlow()->hidesAnswers()) {
-        window_->showMessage(tr("The matrices follow the answer to the lesson's question."));
+    if (lesson_->hidesAnswers()) {
+        messages_.showMessage(tr("The matrices follow the answer to the lesson's question."));
         return;
     }
-    const Scene& scene = window_->document()->scene();
-    const int stage = window_->stepper()->stage();
+    const Scene& scene = document_->scene();
+    const int stage = stepper_->stage();
     const std::string latex = stage == 0 ? report::matricesLatex(scene, 4) : report::stageLatex(scene, stage, 4);
     QApplication::clipboard()->setText(QString::fromStdString(latex));
-    window_->statusBar()->showMessage(tr("Copied the matrix as LaTeX"), 4000);
+    messages_.showNote(tr("Copied the matrix as LaTeX"), 4000);
 }
 
 void Exports::copyViewAsImage()
 {
-    window_->renderNow();
-    QApplication::clipboard()->setImage(window_->shownViews()->image());
-    window_->statusBar()->showMessage(tr("Copied the view as an image"), 4000);
+    views_->renderNow();
+    QApplication::clipboard()->setImage(views_->shown()->image());
+    messages_.showNote(tr("Copied the view as an image"), 4000);
 }
 
 } // namespace viewpipe::gui

@@ -11,17 +11,26 @@
 #include <filesystem>
 #include <vector>
 
+class QWidget;
+
 #include "export/Exporter.h"
 
 namespace viewpipe::gui {
 
 class ActionRegistry;
-class MainWindow;
+class Document;
+class LessonFlow;
+class Messages;
+class Stepper;
+class ViewDeck;
 
 class Exports : public QObject {
     Q_OBJECT
 public:
-    explicit Exports(MainWindow* window);
+    // The document's scene at the stepper's stage, as `views` show it; dialogs and progress over
+    // `dialogParent`, which owns the role.
+    Exports(Document* document, const Stepper* stepper, ViewDeck* views, const LessonFlow* lesson, Messages& messages,
+            QWidget* dialogParent);
 
     // Exports with a progress dialog that can cancel; returns the files written
     // (none when cancelled or failed, with the reason shown). Options the
@@ -42,7 +51,12 @@ private:
     void chooseAndExportWebPage();
     void chooseAndExportSheet();
 
-    MainWindow* window_;
+    Document* document_;
+    const Stepper* stepper_;
+    ViewDeck* views_;
+    const LessonFlow* lesson_;
+    Messages& messages_;
+    QWidget* dialogParent_;
 };
 
 } // namespace viewpipe::gui

@@ -1,13 +1,11 @@
 #include "LessonFlow.h"
 
 #include <QDir>
-#include <QDockWidget>
 #include <QFileDialog>
 #include <QFileInfo>
 #include <QMenu>
 #include <QMessageBox>
 #include <QSignalBlocker>
-#include <QStatusBar>
 
 #include <cmath>
 #include <utility>
@@ -17,21 +15,24 @@
 #include "Document.h"
 #include "LessonDocument.h"
 #include "LessonPanel.h"
-#include "MainWindow.h"
+#include "Messages.h"
+#include "SceneFiles.h"
 #include "StageViews.h"
-#include "PresentMode.h"
 #include "Stepper.h"
+#include "ViewDeck.h"
 #include "Waiting.h"
 #include "export/LessonExport.h"
 #include "viewpipe/stage.hpp"
 
 namespace viewpipe::gui {
 
-LessonFlow::LessonFlow(MainWindow* window)
-    : QObject(window), window_(window), lesson_(new LessonDocument(this)), panel_(new LessonPanel(lesson_))
+LessonFlow::LessonFlow(Document* document, Stepper* stepper, ViewDeck* views, SceneFiles* sceneFiles, Messages& messages,
+                       QWidget* dialogParent)
+    : QObject(dialogParent), document_(document), stepper_(stepper), views_(views), sceneFiles_(sceneFiles),
+      messages_(messages), dialogParent_(dialogParent), lesson_(new LessonDocument(this)), panel_(new LessonPanel(lesson_))
 {
-    lesson_->setWorkRunner([window](const QString& what, const std::function<void()>& work) {
-        waitShowingProgress(window, what, work);
+    lesson_->setWorkRunner([dialogParent](const QString& what, const std::function<void()>& work) {
+        waitShowingProgress(dialogParent, what, work);
     });
     connect(lesson_, &LessonDocument::stepChanged, this, &LessonFlow::showLessonStep);
     connect(panel_, &LessonPanel::addStepRequested, this, &LessonFlow::addLessonStepFromView);
@@ -45,7 +46,7 @@ bool LessonFlow::hidesAnswers() const
 
 int LessonFlow::lastTracedStage(int stage) const
 {
-    return lesson_->isOpen() ? std::min(stage, shows().lastStage) : window_->stepper()->stageCount();
+    return lesson_->isOpen() ? std::min(stage, shows().lastStage) : stepper_->stageCount();
 }
 
 namespace {
@@ -63,14 +64,14 @@ std::shared_ptr<const EvaluatedScene> LessonFlow::asShown(const std::shared_ptr<
 {
     // The step's scene, as edited since: not another scene opened while the lesson is open.
     const bool stepShown = lesson_->isOpen() && shownStep_ == lesson_->step() && shownOpening_ == lesson_->openings() &&
-                           window_->document()->filePath() == shownFile_;
+                           document_->filePath() == shownFile_;
     return stepShown ? shownAtStep(scene, lesson_->currentStep()) : scene;
 }
 
 StepShows LessonFlow::shows() const
 {
     const int k = lesson_->step();
-    return stepShows(lesson_->currentStep(), lesson_->isRevealed(k), window_->stepper()->stageCount());
+    return stepShows(lesson_->currentStep(), lesson_->isRevealed(k), stepper_->stageCount());
 }
 
 std::vector<std::array<int, 2>> LessonFlow::highlightedEntries(int stage) const
@@ -85,7 +86,7 @@ void LessonFlow::addActions(ActionRegistry& actions)
     actions.add("lesson.open", tr("&Open Lesson…"), [this] {
         if (!confirmDiscardLesson())
             return;
-        const QString path = QFileDialog::getOpenFileName(window_, tr("Open lesson"), lessonsDirectory(), tr("Lessons (*.json)"));
+        const QString path = QFileDialog::getOpenFileName(dialogParent_, tr("Open lesson"), lessonsDirectory(), tr("Lessons (*.json)"));
         if (!path.isEmpty())
             openLesson(path);
     }, QKeySequence(Qt::CTRL | Qt::Key_L));
@@ -99,7 +100,7 @@ void LessonFlow::addActions(ActionRegistry& actions)
     actions.add("lesson.saveAnswers", tr("Save My &Answers…"), [this] { chooseAndSaveResults(); });
     actions.add("lesson.pack", tr("&Pack Lesson…"), [this] {
         if (lesson_->isOpen() && panel_->applyPendingEdits())
-            packLesson(QFileDialog::getExistingDirectory(window_, tr("Pack the lesson into"), dialogPath()));
+            packLesson(QFileDialog::getExistingDirectory(dialogParent_, tr("Pack the lesson into"), dialogPath()));
     });
     actions.add("lesson.close", tr("&Close Lesson"), [this] {
         if (confirmDiscardLesson())
@@ -137,7 +138,7 @@ bool LessonFlow::openLesson(const QString& path)
     try {
         return openLesson(loadLesson(path.toStdString()), path);
     } catch (const InputError& e) {
-        window_->showMessage(tr("Cannot open the lesson %1: %2").arg(path, QString::fromStdString(e.what())));
+        messages_.showMessage(tr("Cannot open the lesson %1: %2").arg(path, QString::fromStdString(e.what())));
         return false;
     }
 }
@@ -145,18 +146,18 @@ bool LessonFlow::openLesson(const QString& path)
 bool LessonFlow::openLesson(Lesson lesson, const QString& path)
 {
     // Asked before the lesson replaces the one open: Cancel leaves both the lesson and the scene as they are.
-    if (!(lesson.steps.front().scene == window_->document()->scene()) && !window_->confirmDiscard())
+    if (!(lesson.steps.front().scene == document_->scene()) && !sceneFiles_->confirmDiscard())
         return false;
     try {
         // Every step's scene is evaluated now (its meshes read, off the GUI thread): a step that cannot
         // be shown stops nothing later.
         EvaluatedLesson evaluated;
-        waitShowingProgress(window_, tr("Opening %1…").arg(path.isEmpty() ? tr("the lesson") : QFileInfo(path).fileName()),
+        waitShowingProgress(dialogParent_, tr("Opening %1…").arg(path.isEmpty() ? tr("the lesson") : QFileInfo(path).fileName()),
                             [&] { evaluated = lesson_->evaluate(lesson); });
         sceneDiscardConfirmed_ = true;
         lesson_->open(std::move(lesson), std::move(evaluated), path);
     } catch (const InputError& e) {
-        window_->showMessage(tr("Cannot open the lesson %1: %2").arg(path, QString::fromStdString(e.what())));
+        messages_.showMessage(tr("Cannot open the lesson %1: %2").arg(path, QString::fromStdString(e.what())));
         return false;
     }
     return true;
@@ -164,27 +165,17 @@ bool LessonFlow::openLesson(Lesson lesson, const QString& path)
 
 void LessonFlow::showLessonStep()
 {
-    auto* dock = window_->findChild<QDockWidget*>("lessonDock");
-    Stepper* stepper = window_->stepper();
     if (!lesson_->isOpen()) {
         shownStep_ = -1;
-        stepper->setLastStage(std::nullopt);
-        dock->hide();
+        stepper_->setLastStage(std::nullopt);
+        emit lessonShown(false);
         drawnLook_.clear();
-        window_->drawScene(); // whole again: the last step's hide and highlights go with the lesson
-        stepper->restart();
-        window_->showStageDetails();
+        views_->drawScene(); // whole again: the last step's hide and highlights go with the lesson
+        stepper_->restart();
+        emit stepShown();
         return;
     }
-    if (!dock->isVisible() && !window_->presentMode()->isPresenting()) {
-        dock->show();
-        // The lesson's text and questions get the room; the stage list needs little.
-        const int height = window_->height();
-        window_->resizeDocks({window_->findChild<QDockWidget*>("stagesDock"), dock}, {height / 3, 2 * height / 3},
-                             Qt::Vertical);
-    }
-    dock->show();
-    dock->raise();
+    emit lessonShown(true);
     const int k = lesson_->step();
     const LessonStep& step = lesson_->currentStep();
     // Another lesson, another step, or an edit that changed this step's scene: the step's view is set up.
@@ -193,10 +184,9 @@ void LessonFlow::showLessonStep()
     const bool newStep = !keepView_ && (!sameLesson || k != shownStep_ || !(step.scene == shownStepScene_) ||
                                         stepView(step) != shownStepView_);
     keepView_ = false;
-    Document* document = window_->document();
     const bool sceneConfirmed = std::exchange(sceneDiscardConfirmed_, false);
-    bool sameScene = !newStep || step.scene == document->scene();
-    if (!sameScene && !sceneConfirmed && !window_->confirmDiscard()) {
+    bool sameScene = !newStep || step.scene == document_->scene();
+    if (!sameScene && !sceneConfirmed && !sceneFiles_->confirmDiscard()) {
         // Cancel changes nothing: a step moved to goes back to the step shown; after an edit of the
         // lesson the view stays as the user left it (openLesson asked before a lesson replaced another).
         if (sameLesson && shownGeneration_ == lesson_->generation() && shownStep_ != k)
@@ -206,67 +196,66 @@ void LessonFlow::showLessonStep()
     if (!sameScene) { // the step's scene as the lesson evaluated it
         const QString file = QString::fromStdString(step.scene.file.string());
         {
-            const QSignalBlocker drawn(document);
-            document->load(lesson_->stepScene(k), file);
+            const QSignalBlocker drawn(document_);
+            document_->load(lesson_->stepScene(k), file);
         }
-        window_->showOpenedScene();
+        emit sceneOpened();
     }
     shownStep_ = k;
     shownGeneration_ = lesson_->generation();
     shownOpening_ = lesson_->openings();
     shownStepScene_ = step.scene;
     shownStepView_ = stepView(step);
-    shownFile_ = document->filePath();
+    shownFile_ = document_->filePath();
     const std::string look = stepShownJson(step);
     if (newStep || look != drawnLook_) {
-        if (stepper->isAnimating())
-            stepper->goToStage(stepper->target(), false);
+        if (stepper_->isAnimating())
+            stepper_->goToStage(stepper_->target(), false);
         // What the step hides is not drawn, what it highlights is drawn wider; the picture stays at its stage.
         drawnLook_ = look;
-        window_->drawScene();
+        views_->drawScene();
         if (newStep) {
             if (!step.panel.empty())
-                window_->showPanel(QString::fromStdString(step.panel));
-            window_->orbitViews(step.yaw, step.pitch, step.zoom);
+                emit panelWanted(QString::fromStdString(step.panel));
+            views_->orbit(step.yaw, step.pitch, step.zoom);
         }
-        stepper->goToStage(stepper->stage(), false);
+        stepper_->goToStage(stepper_->stage(), false);
     }
     const bool revealed = !step.question || lesson_->isRevealed(k);
     // A storyboard step shows every stage once its question is answered (the storyboard would answer it).
     // On the step's arrival and its answer's, not on each edit of it (the user's S stays).
     if (newStep || (revealed && !shownRevealed_))
-        window_->setStoryboardShown(step.storyboard && revealed);
+        views_->setStoryboardShown(step.storyboard && revealed);
     shownRevealed_ = revealed;
-    window_->traceVertex(tracedAt(step, revealed)); // the point asked about, followed through the stages once answered
+    views_->traceVertex(tracedAt(step, revealed)); // the point asked about, followed through the stages once answered
     const int stage = revealed ? revealedStage(step) : askingStage(step);
     // The answer comes with the transition to the stage asked about; a step to the next stage plays it too.
-    stepper->setLastStage(std::nullopt);
-    stepper->goToStage(stage, sameScene && (!newStep || std::abs(stage - stepper->target()) == 1));
-    stepper->setLastStage(shows().lastStage);
-    window_->showStageDetails();
+    stepper_->setLastStage(std::nullopt);
+    stepper_->goToStage(stage, sameScene && (!newStep || std::abs(stage - stepper_->target()) == 1));
+    stepper_->setLastStage(shows().lastStage);
+    emit stepShown();
 }
 
 LessonStep LessonFlow::stepFromView() const
 {
-    const Document* document = window_->document();
     LessonStep step;
-    step.scene = document->scene();
+    step.scene = document_->scene();
     // A scene with unsaved changes goes into the lesson itself, not as its file.
-    step.scene.file = document->isModified() || document->filePath().isEmpty()
+    step.scene.file = document_->isModified() || document_->filePath().isEmpty()
                           ? std::filesystem::path()
-                          : std::filesystem::path(QFileInfo(document->filePath()).absoluteFilePath().toStdString());
-    const int stage = window_->stepper()->target();
+                          : std::filesystem::path(QFileInfo(document_->filePath()).absoluteFilePath().toStdString());
+    const int stage = stepper_->target();
     step.stage = stage;
-    const ScenePainter::Orbit orbit = window_->shownViews()->orbitAngles();
+    const ScenePainter::Orbit orbit = views_->shown()->orbitAngles();
     // Readable numbers in the file: a tenth of a degree, a thousandth of the zoom.
     using L = ViewLimits;
     step.yaw = std::clamp(std::round(orbit.yaw * 10) / 10, -L::kYawDegrees, L::kYawDegrees);
     step.pitch = std::clamp(std::round(orbit.pitch * 10) / 10, -L::kPitchDegrees, L::kPitchDegrees);
     step.zoom = std::clamp(std::round(orbit.zoom * 1000) / 1000, L::kMinZoom, L::kMaxZoom);
     // The stage's name, for the author to go on from; not the picture's notes on framing and ghosts.
-    step.caption = stageText(document->pipeline().stages, std::size_t(stage), StageText::Caption);
-    step.trace = window_->traced();
-    step.storyboard = window_->storyboardShown();
+    step.caption = stageText(document_->pipeline().stages, std::size_t(stage), StageText::Caption);
+    step.trace = views_->traced();
+    step.storyboard = views_->storyboardShown();
     return step;
 }
 
@@ -277,7 +266,7 @@ void LessonFlow::newLessonFromView()
         lesson_->create(tr("A new lesson").toStdString(), stepFromView());
         panel_->openEditor();
     } catch (const InputError& e) {
-        window_->showMessage(tr("Cannot make a lesson of this view: %1").arg(QString::fromStdString(e.what())));
+        messages_.showMessage(tr("Cannot make a lesson of this view: %1").arg(QString::fromStdString(e.what())));
     }
     keepView_ = false;
 }
@@ -290,7 +279,7 @@ void LessonFlow::addLessonStepFromView()
         keepView_ = true; // the new step's view is the one on screen
         lesson_->insertStep(lesson_->step() + 1, stepFromView());
     } catch (const InputError& e) {
-        window_->showMessage(tr("Cannot add the step: %1").arg(QString::fromStdString(e.what())));
+        messages_.showMessage(tr("Cannot add the step: %1").arg(QString::fromStdString(e.what())));
     }
     keepView_ = false;
 }
@@ -301,9 +290,9 @@ bool LessonFlow::saveLesson(const QString& path)
         lesson_->save(path);
         const auto outside = filesOutside(lesson_->lesson(), QFileInfo(path).absolutePath().toStdString());
         if (outside.empty())
-            window_->statusBar()->showMessage(tr("Saved %1").arg(path), 5000);
+            messages_.showNote(tr("Saved %1").arg(path), 5000);
         else // the lesson works here; elsewhere only with these files
-            window_->statusBar()->showMessage(
+            messages_.showNote(
                 tr("Saved %1. It uses %2 from outside its folder, such as %3: to take it to another machine, "
                    "File ▸ Pack Lesson… gathers them with it")
                     .arg(path, outside.size() == 1 ? tr("1 file") : tr("%1 files").arg(outside.size()),
@@ -311,7 +300,7 @@ bool LessonFlow::saveLesson(const QString& path)
                 15000);
         return true;
     } catch (const InputError& e) {
-        window_->showMessage(tr("Cannot save the lesson: %1").arg(QString::fromStdString(e.what())));
+        messages_.showMessage(tr("Cannot save the lesson: %1").arg(QString::fromStdString(e.what())));
         return false;
     }
 }
@@ -323,7 +312,7 @@ bool LessonFlow::saveLessonAs(bool askForName)
     QString path = lesson_->filePath();
     // A built-in lesson is a copy's starting point, not a file to overwrite.
     if (askForName || path.isEmpty() || isBuiltInFile(path))
-        path = chooseFileToSave(window_, tr("Save lesson"), path.isEmpty() ? "lesson.json" : path, tr("Lessons (*.json)"));
+        path = chooseFileToSave(dialogParent_, tr("Save lesson"), path.isEmpty() ? "lesson.json" : path, tr("Lessons (*.json)"));
     return !path.isEmpty() && saveLesson(path);
 }
 
@@ -334,15 +323,15 @@ bool LessonFlow::packLesson(const QString& folder)
     rememberDialogFolder(folder + "/");
     const QString name = lesson_->filePath().isEmpty() ? "lesson.json" : QFileInfo(lesson_->filePath()).fileName();
     if (isBuiltInFile(folder + "/" + name)) {
-        window_->showMessage(tr("Cannot pack the lesson into ViewPipe's own folder %1: choose one of yours").arg(folder));
+        messages_.showMessage(tr("Cannot pack the lesson into ViewPipe's own folder %1: choose one of yours").arg(folder));
         return false;
     }
     try {
         packLessonInto(lesson_->lesson(), name.toStdString(), folder.toStdString());
-        window_->statusBar()->showMessage(tr("Packed %1 with its scenes and meshes into %2").arg(name, folder), 5000);
+        messages_.showNote(tr("Packed %1 with its scenes and meshes into %2").arg(name, folder), 5000);
         return true;
     } catch (const std::exception& e) { // a refusal, or the file system's
-        window_->showMessage(tr("Cannot pack the lesson: %1").arg(QString::fromStdString(e.what())));
+        messages_.showMessage(tr("Cannot pack the lesson: %1").arg(QString::fromStdString(e.what())));
         return false;
     }
 }
@@ -351,32 +340,32 @@ bool LessonFlow::saveLessonResults(const QString& path)
 {
     try {
         lesson_->saveResults(path);
-        window_->statusBar()->showMessage(tr("Saved your answers to %1").arg(path), 5000);
+        messages_.showNote(tr("Saved your answers to %1").arg(path), 5000);
         return true;
     } catch (const InputError& e) {
-        window_->showMessage(tr("Cannot save the answers: %1").arg(QString::fromStdString(e.what())));
+        messages_.showMessage(tr("Cannot save the answers: %1").arg(QString::fromStdString(e.what())));
         return false;
     }
 }
 
 bool LessonFlow::chooseAndSaveResults()
 {
-    const QString path = chooseFileToSave(window_, tr("Save my answers"), "lesson-results.json", tr("Results (*.json)"));
+    const QString path = chooseFileToSave(dialogParent_, tr("Save my answers"), "lesson-results.json", tr("Results (*.json)"));
     return !path.isEmpty() && saveLessonResults(path);
 }
 
 bool LessonFlow::confirmDiscardLesson()
 {
     if (!panel_->applyPendingEdits()) {
-        const auto answer = QMessageBox::question(window_, tr("Edits not applied"),
-                                                  tr("%1\n\nDiscard the step's edits?").arg(window_->lastMessage()),
+        const auto answer = QMessageBox::question(dialogParent_, tr("Edits not applied"),
+                                                  tr("%1\n\nDiscard the step's edits?").arg(messages_.lastMessage()),
                                                   QMessageBox::Discard | QMessageBox::Cancel);
         if (answer != QMessageBox::Discard)
             return false;
         panel_->discardPendingEdits();
     }
     if (lesson_->hasUnsavedAnswers()) {
-        const auto answer = QMessageBox::question(window_, tr("Unsaved answers"),
+        const auto answer = QMessageBox::question(dialogParent_, tr("Unsaved answers"),
                                                   tr("Your answers to the lesson's questions are not saved. Save them first?"),
                                                   QMessageBox::Save | QMessageBox::Discard | QMessageBox::Cancel);
         if (answer == QMessageBox::Cancel)
@@ -386,7 +375,7 @@ bool LessonFlow::confirmDiscardLesson()
     }
     if (!lesson_->isModified())
         return true;
-    const auto answer = QMessageBox::question(window_, tr("Unsaved lesson"),
+    const auto answer = QMessageBox::question(dialogParent_, tr("Unsaved lesson"),
                                               tr("The lesson has unsaved changes. Save them first?"),
                                               QMessageBox::Save | QMessageBox::Discard | QMessageBox::Cancel);
     if (answer == QMessageBox::Save)
@@ -397,7 +386,7 @@ bool LessonFlow::confirmDiscardLesson()
 void LessonFlow::advance(int by)
 {
     if (!lesson_->isOpen())
-        return window_->stepper()->stepBy(by);
+        return stepper_->stepBy(by);
     if (!panel_->applyPendingEdits())
         return;
     if (by > 0 && lesson_->isAsking())

@@ -15,18 +15,27 @@
 #include "viewpipe/lesson.hpp"
 
 class QMenu;
+class QWidget;
 
 namespace viewpipe::gui {
 
 class ActionRegistry;
+class Document;
 class LessonDocument;
 class LessonPanel;
-class MainWindow;
+class Messages;
+class SceneFiles;
+class Stepper;
+class ViewDeck;
 
 class LessonFlow : public QObject {
     Q_OBJECT
 public:
-    explicit LessonFlow(MainWindow* window);
+    // A step's scene goes into `document`, its stage to `stepper`, its turn, layout and traced point to
+    // `views`; `sceneFiles` asks about the scene's unsaved changes; dialogs and progress over `dialogParent`,
+    // which owns the role.
+    LessonFlow(Document* document, Stepper* stepper, ViewDeck* views, SceneFiles* sceneFiles, Messages& messages,
+               QWidget* dialogParent);
 
     LessonDocument* lesson() { return lesson_; }
     LessonPanel* panel() { return panel_; }
@@ -62,6 +71,16 @@ public:
     void addActions(ActionRegistry& actions);
     void fillMenu(QMenu* menu, const ActionRegistry& actions);
 
+signals:
+    // A lesson is open and shows a step (true), or closed (false): its dock comes or goes.
+    void lessonShown(bool open);
+    // A step's scene was loaded into the document without drawing it: the window shows it anew.
+    void sceneOpened();
+    // The step shown asks for a panel ("matrices", "code", …) to the front.
+    void panelWanted(const QString& name);
+    // A step is set up, or the lesson closed: the stage's details (names, matrices, captions) follow.
+    void stepShown();
+
 private:
     void showLessonStep();
     // What the step shown lets the window show (the core's rule).
@@ -72,7 +91,12 @@ private:
     // Save My Answers: false when cancelled or refused.
     bool chooseAndSaveResults();
 
-    MainWindow* window_;
+    Document* document_;
+    Stepper* stepper_;
+    ViewDeck* views_;
+    SceneFiles* sceneFiles_;
+    Messages& messages_;
+    QWidget* dialogParent_;
     LessonDocument* lesson_;
     LessonPanel* panel_;
     int shownStep_ = -1;       // the step whose view is set up

@@ -13,7 +13,6 @@
 #include <QScrollArea>
 #include <QScrollBar>
 #include <QSettings>
-#include <QStackedWidget>
 #include <QStatusBar>
 #include <QStyle>
 #include <QTabBar>
@@ -44,6 +43,7 @@
 #include "Stepper.h"
 #include "StoryboardView.h"
 #include "Theme.h"
+#include "ViewDeck.h"
 
 namespace viewpipe::gui {
 
@@ -53,18 +53,20 @@ MainWindow::MainWindow(QWidget* parent)
     setObjectName("ViewPipeMainWindow");
     setAcceptDrops(true);
     buildViews();
-    stepper_ = new Stepper(document_, pair_->painter(), this);
-    sceneFiles_ = new SceneFiles(this, document_);
-    lessonFlow_ = new LessonFlow(this);
-    exports_ = new Exports(this);
-    presentMode_ = new PresentMode(this);
+    stepper_ = new Stepper(document_, painter(), this);
+    sceneFiles_ = new SceneFiles(document_, *this, this);
+    lessonFlow_ = new LessonFlow(document_, stepper_, views_, sceneFiles_, *this, this);
+    // The views draw the document's scene as the lesson step shown leaves it.
+    views_->setSceneSource([this] { return lessonFlow_->asShown(document_->evaluated()); });
+    exports_ = new Exports(document_, stepper_, views_, lessonFlow_, *this, this);
+    presentMode_ = new PresentMode(this, *this, views_, lessonPanel());
     effectsMenu_ = new EffectsMenu(document_, this);
     buildDocks();
     addActions();
     buildMenus();
 
     // Only the world view moves; the projected view is the same picture at every stage.
-    connect(stepper_, &Stepper::frameChanged, pair_, &StagePair::renderWorldView);
+    connect(stepper_, &Stepper::frameChanged, views_->pair(), &StagePair::renderWorldView);
     // The captions and matrices name the step under way, then the stage at rest; the stage panel
     // follows the stepper itself.
     connect(stepper_, &Stepper::stepStarted, this, [this] {
@@ -72,7 +74,18 @@ MainWindow::MainWindow(QWidget* parent)
         updateMatrices();
     });
     connect(stepper_, &Stepper::rested, this, &MainWindow::showStageDetails);
-    connect(stepper_, &Stepper::rested, this, [this] { storyboard_->setCurrentStage(stepper_->shownStage()); });
+    connect(stepper_, &Stepper::rested, this, [this] { views_->storyboard()->setCurrentStage(stepper_->shownStage()); });
+    connect(views_, &ViewDeck::currentChanged, this, [this] {
+        if (views_->storyboardShown())
+            views_->storyboard()->setCurrentStage(stepper_->shownStage());
+        actions_->action("view.storyboard")->setChecked(views_->storyboardShown());
+    });
+    connect(views_, &ViewDeck::tracedChanged, this, &MainWindow::updateTrace);
+    connect(sceneFiles_, &SceneFiles::sceneOpened, this, &MainWindow::showOpenedScene);
+    connect(lessonFlow_, &LessonFlow::sceneOpened, this, &MainWindow::showOpenedScene);
+    connect(lessonFlow_, &LessonFlow::stepShown, this, &MainWindow::showStageDetails);
+    connect(lessonFlow_, &LessonFlow::panelWanted, this, &MainWindow::showPanel);
+    connect(lessonFlow_, &LessonFlow::lessonShown, this, &MainWindow::showLessonDock);
     connect(presentMode_, &PresentMode::stepRequested, lessonFlow_, &LessonFlow::advance);
     connect(effectsMenu_, &EffectsMenu::message, this, &MainWindow::showMessage);
     connect(document_, &Document::changed, this, &MainWindow::onDocumentChanged);
@@ -109,42 +122,15 @@ void MainWindow::fitToScreen()
 
 void MainWindow::buildViews()
 {
-    // Every view draws a mesh from one copy of its poly data.
-    const auto meshes = std::make_shared<MeshDetails>();
-    pair_ = new StagePair(meshes);
-    storyboard_ = new StoryboardView(meshes);
-    views_ = new QStackedWidget;
-    for (StageViews* layout : {static_cast<StageViews*>(pair_), static_cast<StageViews*>(storyboard_)}) {
-        views_->addWidget(layout);
-        connect(layout, &StageViews::vertexPicked, this, &MainWindow::traceVertex);
-    }
+    views_ = new ViewDeck;
     setCentralWidget(views_);
     // From the start: a bar appearing with the first message (or after presenting) would shrink the views.
     statusBar();
 }
 
-std::vector<StageViews*> MainWindow::layouts() const
-{
-    std::vector<StageViews*> all;
-    for (int k = 0; k < views_->count(); ++k)
-        all.push_back(static_cast<StageViews*>(views_->widget(k)));
-    return all;
-}
-
-StageViews* MainWindow::shownViews() const
-{
-    return static_cast<StageViews*>(views_->currentWidget());
-}
-
-void MainWindow::orbitViews(double yaw, double pitch, double zoom)
-{
-    for (StageViews* layout : layouts())
-        layout->orbit(yaw, pitch, zoom);
-}
-
 ScenePainter* MainWindow::painter()
 {
-    return pair_->painter();
+    return views_->pair()->painter();
 }
 
 void MainWindow::buildDocks()
@@ -251,8 +237,7 @@ void MainWindow::addActions()
     actions_->addToggle("view.storyboard", tr("&Storyboard"), [this](bool on) { setStoryboardShown(on); },
                         QKeySequence(Qt::Key_S));
     actions_->add("view.reset", tr("&Reset View"), [this] {
-        for (StageViews* layout : layouts())
-            layout->resetView();
+        views_->resetView();
         renderNow();
     }, QKeySequence(Qt::Key_R));
     actions_->add("view.classical", tr("&Classical Projection…"), [this] { chooseClassicalProjection(); },
@@ -291,7 +276,7 @@ void MainWindow::addActions()
     // View > Leave Out: what export --hide names, left out of every view.
     for (const std::string& name : hideNames())
         actions_->addToggle("view.hide." + name, hideText(name), [this, name](bool on) {
-            std::set<std::string> hidden = hidden_;
+            std::set<std::string> hidden = views_->hidden();
             on ? void(hidden.insert(name)) : void(hidden.erase(name));
             setHidden(hidden);
         });
@@ -355,39 +340,41 @@ void MainWindow::buildMenus()
 
 void MainWindow::showOpenedScene()
 {
-    const RenderHold once(*this);
-    drawScene();
+    const ViewDeck::RenderHold once(*views_);
+    views_->drawScene();
     sceneFiles_->autosave()->saveNow(); // the previous scene's unsaved edits are not this one's to recover
-    traceVertex(std::nullopt);
+    views_->traceVertex(std::nullopt);
     accuracy_->clear();
     refreshWidgets();
-    for (StageViews* layout : layouts())
-        layout->resetView();
+    views_->resetView();
     stepper_->goToStage(0, false);
+}
+
+void MainWindow::showLessonDock(bool open)
+{
+    auto* dock = findChild<QDockWidget*>("lessonDock");
+    if (!open)
+        return dock->hide();
+    if (!dock->isVisible() && !presentMode_->isPresenting()) {
+        dock->show();
+        // The lesson's text and questions get the room; the stage list needs little.
+        resizeDocks({findChild<QDockWidget*>("stagesDock"), dock}, {height() / 3, 2 * height() / 3}, Qt::Vertical);
+    }
+    dock->show();
+    dock->raise();
 }
 
 void MainWindow::onDocumentChanged()
 {
-    drawScene();
+    views_->drawScene();
     refreshWidgets();
-}
-
-void MainWindow::drawScene()
-{
-    shown_ = withoutHidden(lessonFlow_->asShown(document_->evaluated()), hidden_);
-    for (StageViews* layout : layouts())
-        layout->setScene(shown_);
 }
 
 void MainWindow::setHidden(const std::set<std::string>& hidden)
 {
-    hidden_ = hidden;
     for (const std::string& name : hideNames())
-        actions_->action("view.hide." + name)->setChecked(hidden_.count(name) > 0);
-    for (StageViews* layout : layouts())
-        layout->setTicksAndNotesShown(!hidden_.count("ticks"), !hidden_.count("notes"));
-    if (shown_)
-        drawScene();
+        actions_->action("view.hide." + name)->setChecked(hidden.count(name) > 0);
+    views_->setHidden(hidden);
     stepper_->restart(); // the stage shown again, at rest, on the new props
     updateCaptions();
     renderNow();
@@ -428,7 +415,7 @@ void MainWindow::updateMatrices()
     // A question waits: the stages' names and matrices would answer it.
     const bool waiting = lessonFlow_->hidesAnswers();
     stagePanel_->setAnswersHidden(waiting);
-    if (waiting && storyboardShown())
+    if (waiting && views_->storyboardShown())
         setStoryboardShown(false);
     if (waiting)
         return matrices_->showWaiting(tr("<i>The matrices follow the answer to the lesson's question.</i>"));
@@ -442,13 +429,13 @@ void MainWindow::updateTrace()
     if (lessonFlow_->hidesAnswers()) // a question waits: the trace follows its answer
         return;
     const int stage = stepper_->shownStage();
-    matrices_->showTrace(document_->pipeline(), document_->exactPipeline(), traced_, stage,
+    matrices_->showTrace(document_->pipeline(), document_->exactPipeline(), views_->traced(), stage,
                          lessonFlow_->lastTracedStage(stage));
 }
 
 void MainWindow::updateCaptions()
 {
-    if (hidden_.count("caption"))
+    if (views_->hidden().count("caption"))
         return painter()->setCaptions("", "");
     painter()->setCaptions(lessonFlow_->hidesAnswers()
                               ? std::string()
@@ -458,27 +445,17 @@ void MainWindow::updateCaptions()
 
 void MainWindow::renderNow()
 {
-    renderWanted_ = renderHolds_ > 0;
-    if (renderWanted_)
-        return;
-    shownViews()->renderNow(); // the views hidden are drawn once shown
+    views_->renderNow();
 }
 
-MainWindow::RenderHold::RenderHold(MainWindow& window) : window_(window)
+report::Theme MainWindow::theme() const
 {
-    ++window_.renderHolds_;
-}
-
-MainWindow::RenderHold::~RenderHold()
-{
-    if (--window_.renderHolds_ == 0 && window_.renderWanted_)
-        window_.renderNow();
+    return views_->theme();
 }
 
 void MainWindow::setTheme(report::Theme theme)
 {
-    for (StageViews* layout : layouts())
-        layout->setTheme(theme);
+    views_->setTheme(theme);
     accuracy_->setTheme(theme);
     depth_->showDepth(document_->pipeline(), document_->evaluated()->outcomes.depth, theme);
     applyTheme(theme);
@@ -495,8 +472,7 @@ void MainWindow::setFontSize(int points, bool remember)
     QFont font = QApplication::font();
     font.setPointSize(fontSize_);
     QApplication::setFont(font);
-    for (StageViews* layout : layouts())
-        layout->setTextScale(double(fontSize_) / kDefaultFontSize);
+    views_->setTextScale(double(fontSize_) / kDefaultFontSize);
     if (remember && !presentMode_->isPresenting())
         QSettings().setValue("fontSize", fontSize_);
     // Once the widgets have taken the new font: the tabs' size hints follow it.
@@ -518,7 +494,7 @@ void MainWindow::showPanel(const QString& name)
 
 void MainWindow::setProjectedViewVisible(bool visible)
 {
-    pair_->setProjectedViewVisible(visible);
+    views_->pair()->setProjectedViewVisible(visible);
     actions_->action("view.projected")->setChecked(visible);
     renderNow();
 }
@@ -529,20 +505,8 @@ void MainWindow::setStoryboardShown(bool shown)
         shown = false;
         showMessage(tr("The storyboard follows the answer to the lesson's question: it names every stage"));
     }
-    actions_->action("view.storyboard")->setChecked(shown);
-    if (shown == storyboardShown())
-        return;
-    if (shown && !shown_)
-        shown = false; // no scene yet
-    if (shown)
-        storyboard_->setCurrentStage(stepper_->shownStage());
-    views_->setCurrentWidget(shown ? static_cast<StageViews*>(storyboard_) : pair_);
-    renderNow();
-}
-
-bool MainWindow::storyboardShown() const
-{
-    return views_->currentWidget() == storyboard_;
+    views_->setStoryboardShown(shown);
+    actions_->action("view.storyboard")->setChecked(views_->storyboardShown()); // also where refused
 }
 
 void MainWindow::updateTitle()
@@ -570,9 +534,9 @@ void MainWindow::showMessage(const QString& text)
     box->open();
 }
 
-bool MainWindow::confirmDiscard()
+void MainWindow::showNote(const QString& text, int milliseconds)
 {
-    return sceneFiles_->confirmDiscard();
+    statusBar()->showMessage(text, milliseconds);
 }
 
 void MainWindow::closeEvent(QCloseEvent* event)
@@ -614,15 +578,6 @@ void MainWindow::chooseClassicalProjection()
     } catch (const InputError& e) {
         showMessage(QString::fromStdString(e.what()));
     }
-}
-
-void MainWindow::traceVertex(const std::optional<Vec3<double>>& point)
-{
-    traced_ = point;
-    for (StageViews* layout : layouts())
-        layout->setTraced(traced_);
-    updateTrace();
-    renderNow();
 }
 
 } // namespace viewpipe::gui

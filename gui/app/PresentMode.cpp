@@ -2,6 +2,7 @@
 
 #include <QApplication>
 #include <QDockWidget>
+#include <QMainWindow>
 #include <QMenuBar>
 #include <QScreen>
 #include <QShortcut>
@@ -9,11 +10,13 @@
 #include <QWindow>
 
 #include "LessonPanel.h"
-#include "MainWindow.h"
+#include "Look.h"
+#include "ViewDeck.h"
 
 namespace viewpipe::gui {
 
-PresentMode::PresentMode(MainWindow* window) : QObject(window), window_(window), blackout_(new QWidget(window))
+PresentMode::PresentMode(QMainWindow* window, Look& look, ViewDeck* views, LessonPanel* lessonPanel)
+    : QObject(window), window_(window), look_(look), views_(views), lessonPanel_(lessonPanel), blackout_(new QWidget(window))
 {
     blackout_->setObjectName("blackout");
     blackout_->setStyleSheet("background: black");
@@ -41,7 +44,7 @@ void PresentMode::setPresenting(bool on, QScreen* screen)
 {
     if (on == isPresenting())
         return;
-    const MainWindow::RenderHold once(*window_);
+    const ViewDeck::RenderHold once(*views_);
     if (on)
         enter(screen);
     else
@@ -49,20 +52,20 @@ void PresentMode::setPresenting(bool on, QScreen* screen)
     for (QShortcut* shortcut : keys_)
         shortcut->setEnabled(on);
     // A class sees the lesson, not its editing.
-    window_->lessonPanel()->setEditorAvailable(!on);
+    lessonPanel_->setEditorAvailable(!on);
 }
 
 void PresentMode::enter(QScreen* screen)
 {
-    before_ = Before{window_->saveState(),        window_->saveGeometry(), window_->windowState(),
-                     window_->painter()->theme(), window_->fontSize(),     QApplication::font()};
+    before_ = Before{window_->saveState(), window_->saveGeometry(), window_->windowState(),
+                     look_.theme(),        look_.fontSize(),        QApplication::font()};
     for (QDockWidget* dock : window_->findChildren<QDockWidget*>())
         if (dock->objectName() != "lessonDock") // a lesson's caption and questions stay in view
             dock->hide();
     window_->menuBar()->hide();
     window_->statusBar()->hide();
-    window_->setTheme(report::Theme::Light); // black on white carries best on a projector
-    window_->setFontSize(std::max(window_->fontSize() * 3 / 2, 16));
+    look_.setTheme(report::Theme::Light); // black on white carries best on a projector
+    look_.setFontSize(std::max(look_.fontSize() * 3 / 2, 16));
     QWindow* handle = window_->windowHandle();
     if (screen && handle)
         handle->setScreen(screen);
@@ -79,8 +82,8 @@ void PresentMode::leave()
     blackout_->hide();
     window_->menuBar()->show();
     window_->statusBar()->show();
-    window_->setTheme(before.theme);
-    window_->setFontSize(before.fontSize);
+    look_.setTheme(before.theme);
+    look_.setFontSize(before.fontSize);
     QApplication::setFont(before.appFont);
     window_->setWindowState(before.states);
     window_->restoreGeometry(before.geometry);

@@ -15,18 +15,23 @@
 
 #include "Theme.h"
 
+class QMainWindow;
 class QScreen;
 class QShortcut;
 class QWidget;
 
 namespace viewpipe::gui {
 
-class MainWindow;
+class LessonPanel;
+class Look;
+class ViewDeck;
 
 class PresentMode : public QObject {
     Q_OBJECT
 public:
-    explicit PresentMode(MainWindow* window);
+    // Presents `window` (its docks, menus and geometry) in the projector's `look`; `views` are drawn once
+    // per change; `lessonPanel` offers no editing while presenting.
+    PresentMode(QMainWindow* window, Look& look, ViewDeck* views, LessonPanel* lessonPanel);
 
     // On `screen`, the window's own by default.
     void setPresenting(bool on, QScreen* screen = nullptr);
@@ -43,7 +48,10 @@ private:
     void enter(QScreen* screen);
     void leave();
 
-    MainWindow* window_;
+    QMainWindow* window_;
+    Look& look_;
+    ViewDeck* views_;
+    LessonPanel* lessonPanel_;
     // What presenting changed, to be restored.
     struct Before {
         QByteArray docks, geometry;

@@ -7,7 +7,6 @@
 #include <QScopeGuard>
 #include <QSettings>
 #include <QSignalBlocker>
-#include <QStatusBar>
 
 #include <algorithm>
 #include <map>
@@ -16,7 +15,7 @@
 #include "AppPaths.h"
 #include "Autosave.h"
 #include "Document.h"
-#include "MainWindow.h"
+#include "Messages.h"
 #include "Waiting.h"
 
 namespace viewpipe::gui {
@@ -26,8 +25,9 @@ constexpr int kMaxRecent = 8;
 
 } // namespace
 
-SceneFiles::SceneFiles(MainWindow* window, Document* document)
-    : QObject(window), window_(window), document_(document), autosave_(new Autosave(document, this))
+SceneFiles::SceneFiles(Document* document, Messages& messages, QWidget* dialogParent)
+    : QObject(dialogParent), document_(document), messages_(messages), dialogParent_(dialogParent),
+      autosave_(new Autosave(document, this))
 {
 }
 
@@ -36,14 +36,14 @@ void SceneFiles::addActions(ActionRegistry& actions)
     actions.add("file.open", tr("&Open…"), [this] {
         if (!confirmDiscard())
             return;
-        const QString path = chooseFileToOpen(window_, tr("Open scene"), tr("Scenes (*.json)"));
+        const QString path = chooseFileToOpen(dialogParent_, tr("Open scene"), tr("Scenes (*.json)"));
         if (!path.isEmpty())
             openScene(path);
     }, QKeySequence::Open);
     actions.add("file.save", tr("&Save"), [this] { saveSceneAs(); }, QKeySequence::Save);
     actions.add("file.saveAs", tr("Save &As…"), [this] { saveSceneAs(true); }, QKeySequence::SaveAs);
     actions.add("file.importMesh", tr("&Import Mesh…"), [this] {
-        const QString path = chooseFileToOpen(window_, tr("Import mesh"), tr("Meshes (*.obj *.ply *.stl)"));
+        const QString path = chooseFileToOpen(dialogParent_, tr("Import mesh"), tr("Meshes (*.obj *.ply *.stl)"));
         if (!path.isEmpty())
             importMesh(path);
     });
@@ -63,7 +63,7 @@ bool SceneFiles::openScene(const QString& path)
     try {
         scene = loadScene(path.toStdString());
     } catch (const InputError& e) {
-        window_->showMessage(tr("Cannot open %1: %2").arg(path, QString::fromStdString(e.what())));
+        messages_.showMessage(tr("Cannot open %1: %2").arg(path, QString::fromStdString(e.what())));
         return false;
     }
     return openScene(scene, path);
@@ -72,7 +72,7 @@ bool SceneFiles::openScene(const QString& path)
 bool SceneFiles::refusedWhileOpening(const QString& path)
 {
     if (opening_)
-        window_->statusBar()->showMessage(tr("%1 not opened: another file is being read").arg(QFileInfo(path).fileName()), 4000);
+        messages_.showNote(tr("%1 not opened: another file is being read").arg(QFileInfo(path).fileName()), 4000);
     return opening_;
 }
 
@@ -87,17 +87,17 @@ bool SceneFiles::openScene(const Scene& scene, const QString& path, bool remembe
         std::shared_ptr<const EvaluatedScene> evaluated;
         const auto evaluate = [&] { evaluated = document_->evaluate(scene); };
         if (std::any_of(scene.objects.begin(), scene.objects.end(), [](const SceneObject& o) { return o.type == ObjectType::Mesh; }))
-            waitShowingProgress(window_, tr("Opening %1…").arg(path.isEmpty() ? tr("the scene") : QFileInfo(path).fileName()),
+            waitShowingProgress(dialogParent_, tr("Opening %1…").arg(path.isEmpty() ? tr("the scene") : QFileInfo(path).fileName()),
                                 evaluate);
         else
             evaluate();
         const QSignalBlocker drawn(document_); // the picture is made once, when shown
         document_->load(std::move(evaluated), path);
     } catch (const InputError& e) { // a scene the core refuses is not opened
-        window_->showMessage(tr("Cannot open %1: %2").arg(path, QString::fromStdString(e.what())));
+        messages_.showMessage(tr("Cannot open %1: %2").arg(path, QString::fromStdString(e.what())));
         return false;
     }
-    window_->showOpenedScene();
+    emit sceneOpened();
     if (remember && !path.isEmpty())
         addRecent(QFileInfo(path).absoluteFilePath());
     return true;
@@ -107,7 +107,7 @@ bool SceneFiles::saveSceneAs(bool askForName)
 {
     QString path = document_->filePath();
     if (askForName || path.isEmpty() || isBuiltInFile(path)) // a preset is a starting point, not a file to overwrite
-        path = chooseFileToSave(window_, tr("Save scene"), path.isEmpty() ? "scene.json" : path, tr("Scenes (*.json)"));
+        path = chooseFileToSave(dialogParent_, tr("Save scene"), path.isEmpty() ? "scene.json" : path, tr("Scenes (*.json)"));
     return !path.isEmpty() && saveScene(path);
 }
 
@@ -116,10 +116,10 @@ bool SceneFiles::saveScene(const QString& path)
     try {
         document_->save(path);
         addRecent(QFileInfo(path).absoluteFilePath());
-        window_->statusBar()->showMessage(tr("Saved %1").arg(path), 4000);
+        messages_.showNote(tr("Saved %1").arg(path), 4000);
         return true;
     } catch (const std::exception& e) {
-        window_->showMessage(tr("Cannot save: %1").arg(QString::fromStdString(e.what())));
+        messages_.showMessage(tr("Cannot save: %1").arg(QString::fromStdString(e.what())));
         return false;
     }
 }
@@ -133,7 +133,7 @@ bool SceneFiles::offerRecovery()
     const QString name = newest.sourcePath.isEmpty() ? tr("an untitled scene") : newest.sourcePath;
     QMessageBox question(QMessageBox::Question, tr("Recover unsaved changes"),
                          tr("ViewPipe ended unexpectedly while %1 had unsaved changes. Recover them?").arg(name),
-                         QMessageBox::Yes | QMessageBox::No, window_);
+                         QMessageBox::Yes | QMessageBox::No, dialogParent_);
     question.setObjectName("recoveryQuestion");
     question.button(QMessageBox::Yes)->setText(tr("Recover"));
     question.button(QMessageBox::No)->setText(tr("Discard"));
@@ -156,7 +156,7 @@ bool SceneFiles::offerRecovery()
         Autosave::discard(newest);
         return true;
     } catch (const std::exception& e) {
-        window_->showMessage(tr("Cannot recover %1: %2").arg(name, QString::fromStdString(e.what())));
+        messages_.showMessage(tr("Cannot recover %1: %2").arg(name, QString::fromStdString(e.what())));
         return false;
     }
 }
@@ -165,7 +165,7 @@ bool SceneFiles::confirmDiscard()
 {
     if (!document_->isModified())
         return true;
-    const auto answer = QMessageBox::question(window_, tr("Unsaved changes"),
+    const auto answer = QMessageBox::question(dialogParent_, tr("Unsaved changes"),
                                               tr("The scene has unsaved changes. Save them first?"),
                                               QMessageBox::Save | QMessageBox::Discard | QMessageBox::Cancel);
     if (answer == QMessageBox::Save)
@@ -193,13 +193,13 @@ bool SceneFiles::importMesh(const QString& path)
     try {
         // Read off the GUI thread, announced, as opening a scene with meshes.
         std::shared_ptr<const EvaluatedScene> evaluated;
-        waitShowingProgress(window_, tr("Importing %1…").arg(name), [&, next = withMesh()] { evaluated = document_->evaluate(next); });
+        waitShowingProgress(dialogParent_, tr("Importing %1…").arg(name), [&, next = withMesh()] { evaluated = document_->evaluate(next); });
         if (document_->evaluated() != base) // edited meanwhile (a field left by the dialog's focus): kept, the mesh read
             evaluated = document_->evaluate(withMesh());
         document_->edit(std::move(evaluated), tr("Import %1").arg(name));
         return true;
     } catch (const InputError& e) {
-        window_->showMessage(tr("Cannot import %1: %2").arg(path, QString::fromStdString(e.reason())));
+        messages_.showMessage(tr("Cannot import %1: %2").arg(path, QString::fromStdString(e.reason())));
         return false;
     }
 }

@@ -11,18 +11,20 @@
 #include "viewpipe/scene.hpp"
 
 class QMenu;
+class QWidget;
 
 namespace viewpipe::gui {
 
 class ActionRegistry;
 class Autosave;
 class Document;
-class MainWindow;
+class Messages;
 
 class SceneFiles : public QObject {
     Q_OBJECT
 public:
-    SceneFiles(MainWindow* window, Document* document);
+    // Dialogs and progress are shown over `dialogParent`, which owns the role.
+    SceneFiles(Document* document, Messages& messages, QWidget* dialogParent);
 
     Autosave* autosave() { return autosave_; }
 
@@ -47,6 +49,10 @@ public:
     void addActions(ActionRegistry& actions);
     void setMenus(QMenu* presets, QMenu* recent);
 
+signals:
+    // A scene was loaded into the document without drawing it (opened, recovered): the window shows it anew.
+    void sceneOpened();
+
 private:
     // While a scene opens or a mesh is imported (read off the GUI thread,
     // the window waiting), a drop, another open or import is refused, said
@@ -56,8 +62,9 @@ private:
     void rebuildRecentMenu();
     void rebuildPresetMenu();
 
-    MainWindow* window_;
     Document* document_;
+    Messages& messages_;
+    QWidget* dialogParent_;
     Autosave* autosave_;
     QMenu* presetMenu_ = nullptr;
     QMenu* recentMenu_ = nullptr;

@@ -37,6 +37,7 @@
 #include "app/SceneFiles.h"
 #include "app/StagePanel.h"
 #include "app/Stepper.h"
+#include "app/ViewDeck.h"
 
 // A window of the given size, shown and active, with `scene` open; null (and
 // the test failed) when any of that did not happen.

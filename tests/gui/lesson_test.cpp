@@ -326,8 +326,8 @@ private slots:
             return std::count_if(scene.primitives.begin(), scene.primitives.end(),
                                  [](const Primitive& p) { return p.element == Element::Projectors; });
         };
-        auto hidden = [&] { return projectors(*w.shownScene()) == 0 && w.shownScene()->labels.empty(); };
-        auto whole = [&] { return projectors(*w.shownScene()) > 0 && !w.shownScene()->labels.empty(); };
+        auto hidden = [&] { return projectors(*w.views()->shownScene()) == 0 && w.views()->shownScene()->labels.empty(); };
+        auto whole = [&] { return projectors(*w.views()->shownScene()) > 0 && !w.views()->shownScene()->labels.empty(); };
         QVERIFY(w.lessonFlow()->openLesson(file.fileName()));
         QTRY_VERIFY(settled(w));
         QVERIFY(projectors(*w.document()->evaluated()) > 0);

@@ -263,12 +263,12 @@ private slots:
                 document->goTo(k);
                 settle(w);
                 if (lesson.steps[std::size_t(k)].question) {
-                    const QString early = givenAway(lesson, std::size_t(k), shownTexts(w), w.traced());
+                    const QString early = givenAway(lesson, std::size_t(k), shownTexts(w), w.views()->traced());
                     QVERIFY2(early.isEmpty(), qPrintable(where + ", asking: " + early));
                     // An inside question's point is not marked: where it lies against the volume is the answer.
                     const Question& asked = *lesson.steps[std::size_t(k)].question;
                     if (asked.kind == QuestionKind::Inside)
-                        QVERIFY2(w.traced() != asked.point, qPrintable(where));
+                        QVERIFY2(w.views()->traced() != asked.point, qPrintable(where));
                     // The stepper holds: ▶, the slider and Play go no further than the stage the step waits at.
                     const int holds = w.stepper()->target();
                     QCOMPARE(holds, askingStage(lesson.steps[std::size_t(k)]));
@@ -281,13 +281,13 @@ private slots:
                     QCOMPARE(w.stepper()->target(), holds);
                     settle(w);
                     QCOMPARE(w.stepper()->shownStage(), holds);
-                    const QString pressed = givenAway(lesson, std::size_t(k), shownTexts(w), w.traced());
+                    const QString pressed = givenAway(lesson, std::size_t(k), shownTexts(w), w.views()->traced());
                     QVERIFY2(pressed.isEmpty(), qPrintable(where + ", asking, after ▶ and Play: " + pressed));
                     document->reveal();
                     settle(w);
                     ++looks;
                 }
-                const QString later = givenAway(lesson, std::size_t(k) + 1, shownTexts(w), w.traced());
+                const QString later = givenAway(lesson, std::size_t(k) + 1, shownTexts(w), w.views()->traced());
                 QVERIFY2(later.isEmpty(), qPrintable(where + ", answered: " + later));
                 ++looks;
             }
@@ -305,7 +305,7 @@ private slots:
         w.lessonFlow()->lesson()->goTo(6); // step 7: where is (16, 10, 30) after S_per?
         w.lessonFlow()->lesson()->reveal();
         settle(w);
-        QVERIFY(!givenAway(lesson, 6, shownTexts(w), w.traced()).isEmpty());
+        QVERIFY(!givenAway(lesson, 6, shownTexts(w), w.views()->traced()).isEmpty());
     }
 
     // The reported loss: a scene edit, then a title typed in the lesson's editor.

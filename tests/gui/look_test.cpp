@@ -445,11 +445,11 @@ private slots:
         const QStringList before = texts();
         QVERIFY2(before.contains("PRP") && before.contains("VRP"), qPrintable(before.join(" | ")));
         window->actions()->action("view.hide.labels")->trigger();
-        QVERIFY(window->hidden().count("labels"));
+        QVERIFY(window->views()->hidden().count("labels"));
         const QStringList without = texts();
         QVERIFY2(!without.contains("PRP") && !without.contains("VRP"), qPrintable(without.join(" | ")));
         const auto primitives = [&](Element element) {
-            const EvaluatedScene& drawn = *window->storyboard()->scene();
+            const EvaluatedScene& drawn = *window->views()->storyboard()->scene();
             return std::count_if(drawn.primitives.begin(), drawn.primitives.end(), [&](const Primitive& p) { return p.element == element; });
         };
         window->actions()->action("view.hide.world_axes")->trigger();
@@ -461,7 +461,7 @@ private slots:
         QCOMPARE(window->painter()->worldCaption(), std::string());
         for (const char* name : {"labels", "world_axes", "caption"})
             window->actions()->action(std::string("view.hide.") + name)->trigger();
-        QVERIFY(window->hidden().empty());
+        QVERIFY(window->views()->hidden().empty());
         const QStringList after = texts();
         QVERIFY2(after == before, qPrintable(before.join(" | ") + "\n" + after.join(" | ")));
         QVERIFY(!window->painter()->worldCaption().empty());

@@ -207,7 +207,7 @@ private slots:
         w.accuracy()->measure(*w.document()->evaluated(), 2000);
         QVERIFY(done.wait(120000));
         const QImage untraced = worldPicture(w);
-        w.traceVertex(Vec3<double>(16, 10, 54));
+        w.views()->traceVertex(Vec3<double>(16, 10, 54));
         QVERIFY(w.matrices()->traceText().contains("Traced vertex"));
         QVERIFY2(worldPicture(w) != untraced, "the traced vertex is marked in the world view");
         w.stepper()->goToStage(3, false);

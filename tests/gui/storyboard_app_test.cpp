@@ -41,7 +41,7 @@ const QString kFoley = QString(viewpipe::build::dataDir) + "/lessons/foley-nper.
 QImage cellPicture(MainWindow& window, int k)
 {
     window.renderNow();
-    return window.storyboard()->cellWidget(k)->grabFramebuffer();
+    return window.views()->storyboard()->cellWidget(k)->grabFramebuffer();
 }
 
 // The share of a picture's pixels that are not its background (its corner's color).
@@ -59,7 +59,7 @@ double drawnShare(const QImage& image)
 QPoint drawnAt(MainWindow& window, int k, const Vec3<double>& world)
 {
     const EvaluatedScene& scene = *window.document()->evaluated();
-    const report::FigureView view = window.storyboard()->cellPainter(k).figureView();
+    const report::FigureView view = window.views()->storyboard()->cellPainter(k).figureView();
     const Mat4<double> drawn = report::stageAtRest(scene, k, report::stageFramings(scene, report::FramingMode::Together)).drawn;
     const Vec4<double> clip = view.camera * drawn * world.homogeneous();
     const Vec3<double> ndc = clip.head<3>() / clip.w();
@@ -104,9 +104,9 @@ private slots:
     {
         MainWindow& w = *window_;
         QTest::keyClick(&w, Qt::Key_S);
-        QVERIFY(w.storyboardShown());
+        QVERIFY(w.views()->storyboardShown());
         QVERIFY(w.actions()->action("view.storyboard")->isChecked());
-        StoryboardView& board = *w.storyboard();
+        StoryboardView& board = *w.views()->storyboard();
         QTRY_VERIFY(board.isVisible());
         QVERIFY(!w.findChild<QVTKOpenGLNativeWidget*>("worldView")->isVisible());
         const int stages = int(w.document()->pipeline().stages.size());
@@ -132,7 +132,7 @@ private slots:
         QTest::keyClick(&w, Qt::Key_Right);
         QTRY_COMPARE(w.stepper()->shownStage(), 1);
         QTest::keyClick(&w, Qt::Key_S);
-        QVERIFY(!w.storyboardShown());
+        QVERIFY(!w.views()->storyboardShown());
         QTRY_VERIFY(w.findChild<QVTKOpenGLNativeWidget*>("worldView")->isVisible());
     }
 
@@ -141,14 +141,14 @@ private slots:
     {
         MainWindow& w = *window_;
         w.setStoryboardShown(true);
-        StoryboardView& board = *w.storyboard();
+        StoryboardView& board = *w.views()->storyboard();
         QTRY_VERIFY(board.cellWidget(3)->isVisible());
         w.renderNow();
         const Vec3<double> vertex(16, 10, 30);
         QVERIFY(board.traced() != vertex);
         QTest::mouseClick(board.cellWidget(3), Qt::LeftButton, {}, drawnAt(w, 3, vertex));
-        QVERIFY(w.traced());
-        QCOMPARE(*w.traced(), vertex);
+        QVERIFY(w.views()->traced());
+        QCOMPARE(*w.views()->traced(), vertex);
         QCOMPARE(board.traced(), vertex);
     }
 
@@ -158,7 +158,7 @@ private slots:
     {
         MainWindow& w = *window_;
         w.setStoryboardShown(true);
-        StoryboardView& board = *w.storyboard();
+        StoryboardView& board = *w.views()->storyboard();
         QTRY_VERIFY(board.cellWidget(3)->isVisible());
         w.actions()->action("edit.copyImage")->trigger();
         const QImage copied = QApplication::clipboard()->image();
@@ -183,7 +183,7 @@ private slots:
     {
         MainWindow& w = *window_;
         w.setStoryboardShown(true);
-        StoryboardView& board = *w.storyboard();
+        StoryboardView& board = *w.views()->storyboard();
         QTRY_VERIFY(board.cellWidget(1)->isVisible());
         w.renderNow();
         const QImage before = cellPicture(w, 4);
@@ -212,7 +212,7 @@ private slots:
     {
         MainWindow& w = *window_;
         w.setStoryboardShown(true);
-        StoryboardView& board = *w.storyboard();
+        StoryboardView& board = *w.views()->storyboard();
         QTRY_VERIFY(board.cellWidget(2)->isVisible());
         w.renderNow();
         QWidget* cell = board.cellWidget(2);
@@ -236,7 +236,7 @@ private slots:
     {
         MainWindow& w = *window_;
         w.setStoryboardShown(true);
-        StoryboardView& board = *w.storyboard();
+        StoryboardView& board = *w.views()->storyboard();
         QTRY_VERIFY(board.cellWidget(3)->isVisible());
         auto tickNumbers = [&] {
             w.renderNow();
@@ -257,7 +257,7 @@ private slots:
     {
         MainWindow& w = *window_;
         w.setStoryboardShown(true);
-        StoryboardView& board = *w.storyboard();
+        StoryboardView& board = *w.views()->storyboard();
         QTRY_VERIFY(board.cellWidget(0)->isVisible());
         std::vector<QImage> before;
         for (int k = 0; k < board.cellCount(); ++k)
@@ -276,12 +276,12 @@ private slots:
     {
         MainWindow& w = *window_;
         w.setStoryboardShown(true);
-        QVERIFY(w.storyboardShown());
+        QVERIFY(w.views()->storyboardShown());
         QVERIFY(w.lessonFlow()->openLesson(kFoley));
         QVERIFY(w.lessonFlow()->hidesAnswers());
-        QVERIFY(!w.storyboardShown());
+        QVERIFY(!w.views()->storyboardShown());
         QTest::keyClick(&w, Qt::Key_S);
-        QVERIFY(!w.storyboardShown());
+        QVERIFY(!w.views()->storyboardShown());
         QVERIFY(!w.actions()->action("view.storyboard")->isChecked());
         QVERIFY2(w.lastMessage().contains("storyboard"), qPrintable(w.lastMessage()));
     }
@@ -300,18 +300,18 @@ private slots:
         file.write(QString(R"({"title": "t", "steps": [%1, {"scene": "%2", "caption": "d"}]})").arg(step, kHouse).toUtf8());
         file.close();
         QVERIFY(w.lessonFlow()->openLesson(lesson));
-        QVERIFY(!w.storyboardShown());
+        QVERIFY(!w.views()->storyboardShown());
         w.lessonFlow()->lesson()->reveal();
-        QTRY_VERIFY(w.storyboardShown());
+        QTRY_VERIFY(w.views()->storyboardShown());
         // The step's hide holds in every cell: the projectors the scene has are not drawn.
         auto projectors = [](const EvaluatedScene& scene) {
             return std::count_if(scene.primitives.begin(), scene.primitives.end(),
                                  [](const Primitive& p) { return p.element == Element::Projectors; });
         };
         QVERIFY(projectors(*w.document()->evaluated()) > 0);
-        QCOMPARE(projectors(*w.storyboard()->scene()), 0);
+        QCOMPARE(projectors(*w.views()->storyboard()->scene()), 0);
         QTest::keyClick(&w, Qt::Key_PageDown);
-        QTRY_VERIFY(!w.storyboardShown());
+        QTRY_VERIFY(!w.views()->storyboardShown());
     }
 
     // A storyboard step turned, on a scene of more stages than the one before: every cell is turned as the
@@ -332,8 +332,8 @@ private slots:
         QVERIFY(w.lessonFlow()->openLesson(lesson));
         const int houseCells = int(w.document()->pipeline().stages.size()) + 1;
         QTest::keyClick(&w, Qt::Key_PageDown);
-        QTRY_VERIFY(w.storyboardShown());
-        StoryboardView& board = *w.storyboard();
+        QTRY_VERIFY(w.views()->storyboardShown());
+        StoryboardView& board = *w.views()->storyboard();
         QTRY_VERIFY(board.cellWidget(0)->isVisible());
         QVERIFY(board.cellCount() != houseCells);
         for (int k = 0; k < board.cellCount(); ++k) {
@@ -350,7 +350,7 @@ private slots:
         MainWindow& w = *window_;
         QVERIFY(w.sceneFiles()->openScene(kLetterF));
         w.setStoryboardShown(true);
-        StoryboardView& board = *w.storyboard();
+        StoryboardView& board = *w.views()->storyboard();
         QVERIFY(board.cellCount() > 3);
         const PolygonMesh& mesh = *w.document()->evaluated()->meshes.front();
         std::vector<vtkRenderer*> renderers;
