@@ -4,7 +4,9 @@
 # as `viewpipe open SCENE --screenshot` (the window built, every stage's
 # props made, one frame drawn). Beside it, like for like, a bare VTK viewer
 # (bare_vtk_open: VTK's reader, the mesh drawn in two windows the size of the
-# app's two views) above its own house. Needs GNU time (Debian package `time`)
+# app's two views) above its own house. Then, for 10^6 triangles, the window
+# against `open --present` and `--layout storyboard` (issue 47: the same
+# scene in larger or more views). Needs GNU time (Debian package `time`)
 # and a display (run under xvfb-run -a -s "-screen 0 1920x1080x24").
 #   bench/peak_memory.sh [BUILD_DIR]   (default: build)
 set -eu
@@ -36,4 +38,12 @@ for triangles in 100000 1000000 3000000; do
     above=$((total - base))
     bareAbove=$(($(peak "$bare" "$dir/sheet.ply") - bareBase))
     printf '%-12s %10d %10d %14d %18d %22d\n' "$triangles" "$mb" "$total" "$above" $((above * 1048576 / triangles)) "$bareAbove"
+    if [ "$triangles" = 1000000 ]; then
+        window=$total
+        present=$(peak "$viewpipe" open "$dir/scene.json" --screenshot "$dir/shot.png" --present)
+        storyboard=$(peak "$viewpipe" open "$dir/scene.json" --screenshot "$dir/shot.png" --layout storyboard)
+    fi
 done
+echo
+awk -v w="$window" -v p="$present" -v s="$storyboard" 'BEGIN {
+    printf "10^6 triangles: window %d MB, --present %d MB (%.2fx), --layout storyboard %d MB (%.2fx)\n", w, p, p / w, s, s / w }'
