@@ -151,6 +151,7 @@ void MainWindow::buildDocks()
     dock(tr("Stages"), "stagesDock", stagePanel_, Qt::LeftDockWidgetArea);
     matrices_ = new MatrixPanel;
     QDockWidget* matrixDock = dock(tr("Matrices"), "matricesDock", matrices_, Qt::RightDockWidgetArea);
+    connect(matrixDock, &QDockWidget::visibilityChanged, this, &MainWindow::updateRoomWhileAsking);
     // The camera's numbers, and below them the same camera as code: two ways to edit one camera, one tab.
     parameters_ = new ParameterPanel;
     code_ = new CodePanel;
@@ -196,12 +197,15 @@ void MainWindow::fitDocksToText()
     // A dock is as wide as its content where the screen has room (its scroll area would cut it, not
     // shrink it); with large text on a small screen, each at most a quarter of the screen, the content
     // scrolling sideways, so that the window fits the screen and the views keep their share.
+    // While the matrices step aside for a question, the panels behind them ask no room either.
     const int screenWidth = screen() ? screen()->availableGeometry().width() : 1280;
     for (QDockWidget* dock : findChildren<QDockWidget*>())
         if (auto* scroll = qobject_cast<QScrollArea*>(dock->widget()))
-            scroll->setMinimumWidth(std::min(screenWidth / 4,
-                                             scroll->widget()->minimumSizeHint().width() +
-                                                 scroll->verticalScrollBar()->sizeHint().width() + 2 * scroll->frameWidth()));
+            scroll->setMinimumWidth(matricesAside_ && dockWidgetArea(dock) == Qt::RightDockWidgetArea
+                                        ? 0
+                                        : std::min(screenWidth / 4, scroll->widget()->minimumSizeHint().width() +
+                                                                        scroll->verticalScrollBar()->sizeHint().width() +
+                                                                        2 * scroll->frameWidth()));
     const QFontMetrics metrics(QApplication::font());
     const int em = metrics.averageCharWidth();
     QDockWidget* stages = findChild<QDockWidget*>("stagesDock");
@@ -213,7 +217,8 @@ void MainWindow::fitDocksToText()
     for (const QTabBar* bar : findChildren<QTabBar*>(QString(), Qt::FindDirectChildrenOnly))
         tabs = std::max(tabs, bar->sizeHint().width() + 2 * em);
     const int left = std::max({1, stages->minimumSizeHint().width(), std::min(docks * 40 / 100, docks - tabs)});
-    const int right = std::max(1, docks - left);
+    // While a question waits, the matrices are a note whose lines are some 16 characters long.
+    const int right = matricesAside_ ? 16 * em : std::max(1, docks - left);
     resizeDocks({stages, findChild<QDockWidget*>("matricesDock")}, {left, right},
                 Qt::Horizontal);
 }
@@ -415,6 +420,7 @@ void MainWindow::updateMatrices()
     // A question waits: the stages' names and matrices would answer it.
     const bool waiting = lessonFlow_->hidesAnswers();
     stagePanel_->setAnswersHidden(waiting);
+    updateRoomWhileAsking();
     if (waiting && views_->storyboardShown())
         setStoryboardShown(false);
     if (waiting)
@@ -422,6 +428,17 @@ void MainWindow::updateMatrices()
     const int stage = stepper_->shownStage();
     matrices_->showStage(document_->pipeline(), document_->exactPipeline(), stage, lessonFlow_->highlightedEntries(stage));
     updateTrace();
+}
+
+void MainWindow::updateRoomWhileAsking()
+{
+    // Another panel in front (the parameters, say) is the student's to use: it keeps its room.
+    // (A dock behind another's tab stays "visible": what is seen of it tells.)
+    const bool aside = lessonFlow_->hidesAnswers() && !findChild<QDockWidget*>("matricesDock")->visibleRegion().isEmpty();
+    if (aside == matricesAside_)
+        return;
+    matricesAside_ = aside;
+    QTimer::singleShot(0, this, &MainWindow::fitDocksToText); // once the lesson's dock has taken its room
 }
 
 void MainWindow::updateTrace()

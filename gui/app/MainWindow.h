@@ -123,6 +123,8 @@ private:
     void updateCaptions();
     // The stage panel and the matrices: the stage's, or a note while a lesson's question waits.
     void updateMatrices();
+    // While a question waits, the matrices in front (a note) give the views their room; the answer gives it back.
+    void updateRoomWhileAsking();
     // The traced point's rows, as far as a lesson's step lets them show (none while a question waits).
     void updateTrace();
     void updateTitle();
@@ -147,6 +149,7 @@ private:
     int fontSize_ = kDefaultFontSize;
     bool popups_ = true;
     QString lastMessage_;
+    bool matricesAside_ = false;
 };
 
 } // namespace viewpipe::gui

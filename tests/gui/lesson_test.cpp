@@ -276,6 +276,48 @@ private slots:
         QVERIFY(w.findChild<QDockWidget*>("stagesDock")->isVisible());
     }
 
+    // At a projector's size, a question's matrices (only a note while it waits) leave the views their room
+    // (found: the note took 377 of 1280 px, the views 420); the answer gives the matrices their width back.
+    // A panel the student chose in front keeps its width.
+    void aQuestionLeavesTheViewsTheMatricesRoom()
+    {
+        MainWindow& w = *window_;
+        w.setFontSize(MainWindow::kDefaultFontSize * 3 / 2, false);
+        auto* matrices = w.findChild<QDockWidget*>("matricesDock");
+        QTRY_VERIFY(matrices->isVisible());
+        const auto stable = [](const std::function<int()>& width) { // the dock layout settles over a few events
+            for (int last = -1, k = 0; k < 20 && width() != last; ++k) {
+                last = width();
+                QTest::qWait(50);
+            }
+            return width();
+        };
+        const int before = stable([matrices] { return matrices->width(); });
+        const int viewsBefore = w.centralWidget()->width();
+        QVERIFY(w.lessonFlow()->openLesson(kFoley));
+        w.lessonFlow()->lesson()->goTo(2); // step 3 asks for R's rows
+        QTRY_VERIFY(settled(w));
+        QVERIFY(w.lessonFlow()->lesson()->isAsking());
+        QTRY_VERIFY2(matrices->width() < before / 2, qPrintable(QString("%1 px while asking, %2 before").arg(matrices->width()).arg(before)));
+        // The lesson's dock takes some of the room the matrices leave; the views the rest.
+        QTRY_VERIFY2(w.centralWidget()->width() > viewsBefore + before / 4,
+                     qPrintable(QString("views %1 px, before the lesson %2").arg(w.centralWidget()->width()).arg(viewsBefore)));
+        QVERIFY(w.matrices()->stageText().contains("follow the answer")); // the note reads whole: it wraps
+        auto* note = matrices->findChild<QScrollArea*>();
+        QCOMPARE(note->horizontalScrollBar()->maximum(), 0);
+        w.lessonFlow()->lesson()->reveal();
+        QTRY_VERIFY(settled(w));
+        QTRY_VERIFY2(matrices->width() >= before, qPrintable(QString("%1 px after the answer, %2 before").arg(matrices->width()).arg(before)));
+        // The parameters in front while the next question waits: they keep their width.
+        w.showPanel("parameters");
+        auto* parameters = w.findChild<QDockWidget*>("parametersDock");
+        const int parametersWidth = stable([parameters] { return parameters->width(); });
+        w.lessonFlow()->lesson()->goTo(3);
+        QTRY_VERIFY(settled(w));
+        QVERIFY(w.lessonFlow()->lesson()->isAsking());
+        QCOMPARE(stable([parameters] { return parameters->width(); }), parametersWidth);
+    }
+
     // Stepping through a lesson whose steps show two scenes: a step whose scene is not the one open opens it as the
     // lesson evaluated it when it was opened (the app evaluates nothing while stepping).
     void aLessonsScenesAreEvaluatedWhenItOpens()
