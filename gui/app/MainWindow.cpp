@@ -104,7 +104,11 @@ MainWindow::MainWindow(QWidget* parent)
     fitToScreen();
 }
 
-MainWindow::~MainWindow() = default;
+MainWindow::~MainWindow()
+{
+    // Hidden as the window goes, the dock would call a window already half gone.
+    disconnect(findChild<QDockWidget*>("matricesDock"), nullptr, this, nullptr);
+}
 
 LessonPanel* MainWindow::lessonPanel()
 {
@@ -197,17 +201,8 @@ void MainWindow::fitDocksToText()
     // A dock is as wide as its content where the screen has room (its scroll area would cut it, not
     // shrink it); with large text on a small screen, each at most a quarter of the screen, the content
     // scrolling sideways, so that the window fits the screen and the views keep their share.
-    // While the matrices step aside for a question, the panels behind them ask no room either.
-    const int screenWidth = screen() ? screen()->availableGeometry().width() : 1280;
-    for (QDockWidget* dock : findChildren<QDockWidget*>())
-        if (auto* scroll = qobject_cast<QScrollArea*>(dock->widget()))
-            scroll->setMinimumWidth(matricesAside_ && dockWidgetArea(dock) == Qt::RightDockWidgetArea
-                                        ? 0
-                                        : std::min(screenWidth / 4, scroll->widget()->minimumSizeHint().width() +
-                                                                        scroll->verticalScrollBar()->sizeHint().width() +
-                                                                        2 * scroll->frameWidth()));
-    const QFontMetrics metrics(QApplication::font());
-    const int em = metrics.averageCharWidth();
+    fitDockMinimumWidths();
+    const int em = QFontMetrics(QApplication::font()).averageCharWidth();
     QDockWidget* stages = findChild<QDockWidget*>("stagesDock");
     const int separators = 2 * style()->pixelMetric(QStyle::PM_DockWidgetSeparatorExtent, nullptr, this);
     const int docks = std::min(em * (40 + 60), width() * 60 / 100 - separators);
@@ -217,10 +212,36 @@ void MainWindow::fitDocksToText()
     for (const QTabBar* bar : findChildren<QTabBar*>(QString(), Qt::FindDirectChildrenOnly))
         tabs = std::max(tabs, bar->sizeHint().width() + 2 * em);
     const int left = std::max({1, stages->minimumSizeHint().width(), std::min(docks * 40 / 100, docks - tabs)});
-    // While a question waits, the matrices are a note whose lines are some 16 characters long.
-    const int right = matricesAside_ ? 16 * em : std::max(1, docks - left);
+    int right = std::max(1, docks - left);
+    if (matricesAside_) { // the room the answer gives back
+        matricesWidth_ = right;
+        right = asideMatricesWidth();
+    }
     resizeDocks({stages, findChild<QDockWidget*>("matricesDock")}, {left, right},
                 Qt::Horizontal);
+}
+
+void MainWindow::fitDockMinimumWidths()
+{
+    // While the matrices step aside for a question, the panels tabbed with them ask no room either.
+    auto* matrices = findChild<QDockWidget*>("matricesDock");
+    QList<QDockWidget*> aside;
+    if (matricesAside_)
+        aside = tabifiedDockWidgets(matrices) << matrices;
+    const int screenWidth = screen() ? screen()->availableGeometry().width() : 1280;
+    for (QDockWidget* dock : findChildren<QDockWidget*>())
+        if (auto* scroll = qobject_cast<QScrollArea*>(dock->widget()))
+            scroll->setMinimumWidth(aside.contains(dock)
+                                        ? 0
+                                        : std::min(screenWidth / 4, scroll->widget()->minimumSizeHint().width() +
+                                                                        scroll->verticalScrollBar()->sizeHint().width() +
+                                                                        2 * scroll->frameWidth()));
+}
+
+int MainWindow::asideMatricesWidth()
+{
+    // While a question waits, the matrices are a note whose lines are some 16 characters long.
+    return 16 * QFontMetrics(QApplication::font()).averageCharWidth();
 }
 
 void MainWindow::addActions()
@@ -434,11 +455,20 @@ void MainWindow::updateRoomWhileAsking()
 {
     // Another panel in front (the parameters, say) is the student's to use: it keeps its room.
     // (A dock behind another's tab stays "visible": what is seen of it tells.)
-    const bool aside = lessonFlow_->hidesAnswers() && !findChild<QDockWidget*>("matricesDock")->visibleRegion().isEmpty();
+    // Moved elsewhere by the user, they stay as they are.
+    auto* matrices = findChild<QDockWidget*>("matricesDock");
+    const bool aside = lessonFlow_->hidesAnswers() && !matrices->isFloating() &&
+                       dockWidgetArea(matrices) == Qt::RightDockWidgetArea && !matrices->visibleRegion().isEmpty();
     if (aside == matricesAside_)
         return;
     matricesAside_ = aside;
-    QTimer::singleShot(0, this, &MainWindow::fitDocksToText); // once the lesson's dock has taken its room
+    if (aside)
+        matricesWidth_ = matrices->width();
+    fitDockMinimumWidths();
+    // Once the lesson's dock and the minimums have taken their room; the other docks keep the widths the user gave.
+    QTimer::singleShot(0, this, [this, matrices] {
+        resizeDocks({matrices}, {matricesAside_ ? asideMatricesWidth() : matricesWidth_}, Qt::Horizontal);
+    });
 }
 
 void MainWindow::updateTrace()

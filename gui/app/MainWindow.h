@@ -125,6 +125,8 @@ private:
     void updateMatrices();
     // While a question waits, the matrices in front (a note) give the views their room; the answer gives it back.
     void updateRoomWhileAsking();
+    void fitDockMinimumWidths();
+    static int asideMatricesWidth();
     // The traced point's rows, as far as a lesson's step lets them show (none while a question waits).
     void updateTrace();
     void updateTitle();
@@ -150,6 +152,7 @@ private:
     bool popups_ = true;
     QString lastMessage_;
     bool matricesAside_ = false;
+    int matricesWidth_ = 0; // while they step aside, the matrices' width the answer gives back
 };
 
 } // namespace viewpipe::gui

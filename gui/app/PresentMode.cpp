@@ -83,7 +83,7 @@ void PresentMode::leave()
     window_->menuBar()->show();
     window_->statusBar()->show();
     look_.setTheme(before.theme);
-    look_.setFontSize(before.fontSize);
+    look_.setFontSize(before.fontSize, false); // as it was, not kept: it may be one run's (open --text-scale)
     QApplication::setFont(before.appFont);
     window_->setWindowState(before.states);
     window_->restoreGeometry(before.geometry);

@@ -21,6 +21,7 @@
 #include <QSurfaceFormat>
 #include <QTemporaryDir>
 #include <QVTKOpenGLNativeWidget.h>
+#include <QSettings>
 #include <QtTest>
 
 #include <atomic>
@@ -620,6 +621,8 @@ private slots:
     {
         MainWindow& w = *window_;
         w.stepper()->goToStage(0, false);
+        QSettings().setValue("fontSize", MainWindow::kDefaultFontSize);
+        w.setFontSize(MainWindow::kDefaultFontSize + 2, false); // one run's size (open --text-scale)
         const int fontBefore = QApplication::font().pointSize();
         const report::Theme themeBefore = w.painter()->theme();
         QTest::keyClick(&w, Qt::Key_F5);
@@ -660,6 +663,7 @@ private slots:
         QVERIFY(w.menuBar()->isVisible());
         QTRY_VERIFY(w.findChild<QDockWidget*>("stagesDock")->isVisible());
         QCOMPARE(QApplication::font().pointSize(), fontBefore);
+        QCOMPARE(QSettings().value("fontSize").toInt(), MainWindow::kDefaultFontSize); // found: the run's size kept
         QCOMPARE(w.painter()->theme(), themeBefore);
         // Outside present mode B and Space are the keys they always were.
         QTest::keyClick(&w, Qt::Key_B);

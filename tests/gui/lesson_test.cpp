@@ -293,26 +293,38 @@ private slots:
             return width();
         };
         const int before = stable([matrices] { return matrices->width(); });
-        const int viewsBefore = w.centralWidget()->width();
         QVERIFY(w.lessonFlow()->openLesson(kFoley));
         w.lessonFlow()->lesson()->goTo(2); // step 3 asks for R's rows
         QTRY_VERIFY(settled(w));
         QVERIFY(w.lessonFlow()->lesson()->isAsking());
         QTRY_VERIFY2(matrices->width() < before / 2, qPrintable(QString("%1 px while asking, %2 before").arg(matrices->width()).arg(before)));
-        // The lesson's dock takes some of the room the matrices leave; the views the rest.
-        QTRY_VERIFY2(w.centralWidget()->width() > viewsBefore + before / 4,
-                     qPrintable(QString("views %1 px, before the lesson %2").arg(w.centralWidget()->width()).arg(viewsBefore)));
+        const int asking = stable([matrices] { return matrices->width(); });
+        const int viewsAsking = w.centralWidget()->width();
         QVERIFY(w.matrices()->stageText().contains("follow the answer")); // the note reads whole: it wraps
         auto* note = matrices->findChild<QScrollArea*>();
         QCOMPARE(note->horizontalScrollBar()->maximum(), 0);
         w.lessonFlow()->lesson()->reveal();
         QTRY_VERIFY(settled(w));
-        QTRY_VERIFY2(matrices->width() >= before, qPrintable(QString("%1 px after the answer, %2 before").arg(matrices->width()).arg(before)));
+        QTRY_VERIFY2(matrices->width() > 2 * asking, qPrintable(QString("%1 px after the answer, %2 while asking").arg(matrices->width()).arg(asking)));
+        // The room the matrices left went to the views.
+        const int answered = stable([matrices] { return matrices->width(); });
+        QVERIFY2(viewsAsking - w.centralWidget()->width() >= (answered - asking) * 3 / 4,
+                 qPrintable(QString("views %1 px while asking, %2 after, the matrices %3 and %4")
+                                .arg(viewsAsking).arg(w.centralWidget()->width()).arg(asking).arg(answered)));
+        // A width the user gave the matrices is the one the answer gives back (found: the default's).
+        w.resizeDocks({matrices}, {matrices->width() + 40}, Qt::Horizontal);
+        const int chosen = stable([matrices] { return matrices->width(); });
+        w.lessonFlow()->lesson()->goTo(3);
+        QTRY_VERIFY(settled(w));
+        QVERIFY(w.lessonFlow()->lesson()->isAsking());
+        QTRY_VERIFY(matrices->width() < chosen / 2);
+        w.lessonFlow()->lesson()->reveal();
+        QTRY_COMPARE(matrices->width(), chosen);
         // The parameters in front while the next question waits: they keep their width.
         w.showPanel("parameters");
         auto* parameters = w.findChild<QDockWidget*>("parametersDock");
         const int parametersWidth = stable([parameters] { return parameters->width(); });
-        w.lessonFlow()->lesson()->goTo(3);
+        w.lessonFlow()->lesson()->goTo(4);
         QTRY_VERIFY(settled(w));
         QVERIFY(w.lessonFlow()->lesson()->isAsking());
         QCOMPARE(stable([parameters] { return parameters->width(); }), parametersWidth);
