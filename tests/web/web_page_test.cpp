@@ -827,16 +827,25 @@ TEST_F(WebPage, TheCameraAsCodeIsDraggedSteppedAndPasted)
                                                   ".getBoundingClientRect(); return [r.x + r.width / 2, r.y + r.height / 2]; })())")
                                      .get<std::string>());
     const double x = box[0], y = box[1];
+    const std::string fovyField = "document.querySelector(`input[aria-label='camera.projection.fovy_deg']`)";
+    browser.evaluate("window.fovyField = " + fovyField);
     browser.page("Input.dispatchMouseEvent", {{"type", "mousePressed"}, {"x", x}, {"y", y}, {"button", "left"}, {"clickCount", 1}});
     for (int dx = 10; dx <= 50; dx += 10) {
         browser.page("Input.dispatchMouseEvent", {{"type", "mouseMoved"}, {"x", x + dx}, {"y", y}, {"button", "left"}, {"buttons", 1}});
         browser.evaluate("new Promise((done) => requestAnimationFrame(() => requestAnimationFrame(done)))");
     }
+    // The link is written once the drag ends, not at every move: until then it names the page's own scene.
+    EXPECT_EQ(browser.evaluate("location.hash.includes('scene=')"), false) << browser.evaluate("location.hash");
     browser.page("Input.dispatchMouseEvent", {{"type", "mouseReleased"}, {"x", x + 50}, {"y", y}, {"button", "left"}, {"clickCount", 1}});
     const std::string at45 = withFovy("45");
     ASSERT_TRUE(browser.waitFor(json + " + '\\n' === " + nlohmann::json(at45).dump()));
     EXPECT_NE(browser.evaluate(codeText).get<std::string>().find("gluPerspective(45, 1.5, 30, 110)"), std::string::npos);
-    EXPECT_EQ(browser.evaluate("document.querySelector(`input[aria-label='camera.projection.fovy_deg']`).value"), "45");
+    EXPECT_EQ(browser.evaluate(fovyField + ".value"), "45");
+    EXPECT_EQ(browser.evaluate("window.fovyField === " + fovyField), true) << "the Scene panel's rows are kept, their values set";
+    // The link written after the drag holds the value dragged to.
+    EXPECT_EQ(browser.evaluate("JSON.parse(new TextDecoder().decode(Uint8Array.from(atob(new URLSearchParams(location.hash.slice(1))"
+                               ".get('scene').replace(/-/g, '+').replace(/_/g, '/')), (c) => c.charCodeAt(0)))).camera.projection.fovy_deg"),
+              45);
     browser.evaluate("document.activeElement.blur()");
     pressWithControl(browser, "z", 90);
     const std::string at40 = viewpipe({"pipeline", QString::fromStdString(kData + "/scenes/opengl-perspective.json"), "--json"}).output;

@@ -18,27 +18,36 @@
     for (const id of ['camera-code', 'code-paste', 'apply-code']) document.getElementById(id).hidden = foley;
     document.querySelector('#code-editor .dialect').hidden = foley;
     document.querySelector('label[for=code-paste]').hidden = foley;
-    codeView.textContent = '';
+    const before = code;
     code = foley ? null : JSON.parse(outcome.text);
+    // The same code with other numbers (one dragged, or typed in the Scene panel): only the numbers set anew.
+    const same = code && before && JSON.stringify(codeBetween(code)) === JSON.stringify(codeBetween(before));
+    if (!same) codeView.textContent = '';
     if (!code) return;
-    let at = 0;
+    const spans = same ? codeView.querySelectorAll('.code-number') : [];
+    const between = codeBetween(code);
     code.numbers.forEach((number, k) => {
-      codeView.append(code.text.slice(at, number.start));
-      const span = document.createElement('span');
-      span.className = 'code-number';
-      span.textContent = code.text.slice(number.start, number.end);
+      if (!same) codeView.append(between[k]);
+      const span = same ? spans[k] : document.createElement('span');
+      const text = code.text.slice(number.start, number.end);
+      if (span.textContent !== text) span.textContent = text;
       span.title = number.tooltip;
+      span.setAttribute('aria-label', number.tooltip);
+      span.setAttribute('aria-valuenow', number.value);
+      if (same) return;
+      span.className = 'code-number';
       span.dataset.index = k;
       span.tabIndex = 0;
       span.setAttribute('role', 'spinbutton');
-      span.setAttribute('aria-label', number.tooltip);
-      span.setAttribute('aria-valuenow', number.value);
       codeView.appendChild(span);
-      at = number.end;
     });
-    codeView.append(code.text.slice(at));
+    if (!same) codeView.append(between[code.numbers.length]);
     if (focusIndex !== undefined) codeView.querySelector(`[data-index='${focusIndex}']`).focus();
   }
+  // The code's text around its numbers: before each, then after the last.
+  const codeBetween = (written) => [...written.numbers.map((number, k) => written.text.slice(k ? written.numbers[k - 1].end : 0,
+                                                                                              number.start)),
+                                    written.text.slice(written.numbers.length ? written.numbers[written.numbers.length - 1].end : 0)];
   function refuseCode(error) {
     codeError.textContent = error;
     codeError.hidden = !error;
@@ -62,26 +71,33 @@
     event.preventDefault();
     codeView.setPointerCapture(event.pointerId);
     codeDrag = { index, x: event.clientX, value: code.numbers[index].value, gesture: ++gestures, pending: null, frame: 0 };
+    linkHeld = true;
   });
   codeView.addEventListener('pointermove', (event) => {
     if (!codeDrag) return;
-    // A step a pixel; one evaluation a frame, of the last position.
+    // A step a pixel; one evaluation a frame: a move at once, drawn in its frame as a turn of the view is; moves
+    // after it in the same frame wait for the next, which evaluates the last.
     codeDrag.pending = core.steppedValue(codeDrag.value, Math.round(event.clientX - codeDrag.x));
-    if (codeDrag.frame) return;
-    codeDrag.frame = requestAnimationFrame(() => {
-      const drag = codeDrag;
-      if (!drag) return;
-      drag.frame = 0;
-      setCodeNumber(drag.index, drag.pending, drag.gesture);
-    });
+    if (!codeDrag.frame) evaluateDragged(codeDrag);
   });
+  function evaluateDragged(drag) {
+    const value = drag.pending;
+    drag.pending = null;
+    setCodeNumber(drag.index, value, drag.gesture);
+    drag.frame = requestAnimationFrame(() => {
+      drag.frame = 0;
+      if (codeDrag === drag && drag.pending !== null) evaluateDragged(drag);
+    });
+  }
   const endDrag = () => {
     if (!codeDrag) return;
     const drag = codeDrag;
     codeDrag = null;
     cancelAnimationFrame(drag.frame);
     if (drag.pending !== null) setCodeNumber(drag.index, drag.pending, drag.gesture);
+    linkHeld = false;
     showCode(drag.index);
+    writeFragment();
   };
   codeView.addEventListener('pointerup', endDrag);
   codeView.addEventListener('pointercancel', endDrag);

@@ -16,10 +16,11 @@
         dialectPicker.add(new Option(dialect.title, dialect.name));
       // With the camera's choices, which the core lists; a field being typed in keeps its text and focus.
       const typing = fields.contains(document.activeElement) ? document.activeElement : null;
+      const text = typing && typing.value; // buildFields may set the same field in place
       buildFields();
       if (typing) {
         const again = fields.querySelector(`[data-path='${typing.dataset.path}']:not(.field)`);
-        if (again) { again.value = typing.value; again.focus(); }
+        if (again) { again.value = text; again.focus(); }
       }
       showCode();
       edits.entries = [{ page: data, pipeline, text: data.scene, files: data.files }];

@@ -29,13 +29,42 @@
     row.appendChild(refusal);
     return row;
   }
+  let fieldsShape = ''; // the rows built (paths, kinds, choices): an edit that keeps them sets their values in place
+  let fieldChoices = new Map(); // each choice's field: the core's choice for the scene shown
+  const fieldText = (value) => typeof value === 'string' ? value : JSON.stringify(value);
   function buildFields() {
-    fields.textContent = '';
     const scene = JSON.parse(data.scene);
     const root = scene.camera ? 'camera' : 'view';
     // The settings picked from a list (the API, the projection's type, ...), as the core lists them: a choice
     // is the scene with the core's change (switching glFrustum to gluPerspective rewrites its numbers).
     const choices = core ? JSON.parse(core.cameraChoices(data.scene).text || '[]') : [];
+    fieldChoices = new Map(choices.map((choice) => [choice.field, choice]));
+    const chosen = new Set(choices.map((choice) => choice.field));
+    // The numbers typed as exact expressions ("20*sqrt(2)"), text in the scene's JSON, as the core read them.
+    const typed = core ? JSON.parse(core.typedExpressions(data.scene).text || '{}') : {};
+    const isNumber = (value, path) => typeof value === 'number' || pathText(path) in typed;
+    const numbers = (value, path) => Array.isArray(value) && value.every((v, k) => isNumber(v, [...path, k]));
+    const group = (value, path) => value !== null && typeof value === 'object' && !numbers(value, path);
+    const items = (value, path) => numbers(value, path) ? value.map((v, k) => [v, [...path, k]]) : [[value, path]];
+    const kindOf = (item, path) => isNumber(item, path) ? 'number' : typeof item;
+    // Each row's path and its inputs' kinds: the same rows (a number dragged, a field edited) are kept, their
+    // values set, for the page lays out again only what changed.
+    const shapeOf = (value, path) => chosen.has(pathText(path)) ? null : group(value, path)
+      ? Object.entries(value).map(([key, inner]) => [key, shapeOf(inner, [...path, Array.isArray(value) ? Number(key) : key])])
+      : items(value, path).map(([item, itemPath]) => [kindOf(item, itemPath), typeof item]);
+    const shape = JSON.stringify([root, choices.map((choice) => [choice.field, choice.title, choice.options]),
+                                  shapeOf(scene[root], [root])]);
+    if (shape === fieldsShape) {
+      for (const choice of choices)
+        fields.querySelector(`select[data-path='${JSON.stringify(choice.field.split('.'))}']`).selectedIndex = choice.chosen;
+      for (const input of fields.querySelectorAll('input')) {
+        const text = fieldText(JSON.parse(input.dataset.path).reduce((value, part) => value[part], scene));
+        if (input.value !== text || input.defaultValue !== text) input.value = input.defaultValue = text;
+      }
+      return;
+    }
+    fieldsShape = shape;
+    fields.textContent = '';
     for (const choice of choices) {
       const path = choice.field.split('.');
       const row = fieldRow(path, choice.title);
@@ -49,7 +78,7 @@
         const outcome = core.withCameraChoice(data.scene, choice.field, select.selectedIndex);
         if (outcome.error) {
           clearRefusals();
-          select.selectedIndex = choice.chosen; // the camera's own, kept
+          select.selectedIndex = fieldChoices.get(choice.field).chosen; // the camera's own, kept
           showRefusal(outcome.error, select);
           showEdits();
         } else {
@@ -59,36 +88,30 @@
       row.insertBefore(select, row.querySelector('.field-error'));
       fields.appendChild(row);
     }
-    const chosen = new Set(choices.map((choice) => choice.field));
-    // The numbers typed as exact expressions ("20*sqrt(2)"), text in the scene's JSON, as the core read them.
-    const typed = core ? JSON.parse(core.typedExpressions(data.scene).text || '{}') : {};
-    const isNumber = (value, path) => typeof value === 'number' || pathText(path) in typed;
     // One row per number, list of numbers or text; objects as groups.
     const add = (parent, value, path) => {
       if (chosen.has(pathText(path))) return;
-      const numbers = Array.isArray(value) && value.every((v, k) => isNumber(v, [...path, k]));
-      if (value !== null && typeof value === 'object' && !numbers) {
-        const group = document.createElement('fieldset');
+      if (group(value, path)) {
+        const set = document.createElement('fieldset');
         const title = document.createElement('legend');
         title.textContent = path[path.length - 1];
-        group.appendChild(title);
-        for (const [key, inner] of Object.entries(value)) add(group, inner, [...path, Array.isArray(value) ? Number(key) : key]);
-        parent.appendChild(group);
+        set.appendChild(title);
+        for (const [key, inner] of Object.entries(value)) add(set, inner, [...path, Array.isArray(value) ? Number(key) : key]);
+        parent.appendChild(set);
         return;
       }
       const row = fieldRow(path, path[path.length - 1]);
       const label = row.querySelector('label');
       const refusal = row.querySelector('.field-error');
-      const items = numbers ? value.map((v, k) => [v, [...path, k]]) : [[value, path]];
-      for (const [item, itemPath] of items) {
+      for (const [item, itemPath] of items(value, path)) {
         const input = document.createElement('input');
         input.type = 'text';
         input.spellcheck = false;
         input.autocomplete = 'off';
         if (typeof item === 'number') input.inputMode = 'decimal';
-        input.value = input.defaultValue = typeof item === 'string' ? item : JSON.stringify(item);
+        input.value = input.defaultValue = fieldText(item);
         input.dataset.path = JSON.stringify(itemPath);
-        input.dataset.kind = isNumber(item, itemPath) ? 'number' : typeof item;
+        input.dataset.kind = kindOf(item, itemPath);
         input.setAttribute('aria-label', pathText(itemPath));
         input.addEventListener('change', () => editField(input));
         if (!label.htmlFor) {

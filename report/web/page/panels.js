@@ -2,46 +2,60 @@
   // ---- Panels -------------------------------------------------------------------
   const list = document.getElementById('stage-list');
   function buildPanels() {
-    list.textContent = '';
     legend(document.getElementById('legend'), data.legend);
     legend(document.getElementById('projected-legend'), data.projected.legend);
     setRichText(document.getElementById('note'), data.note);
     vertices = floatsOf(data.vertices);
   }
+  // A panel built from `from` by `build`, unless it shows that already (an edit that leaves a panel as it was
+  // would have the page lay it out again): what each element was built from, and its first and last nodes then.
+  const builtFrom = new WeakMap();
+  function buildOnce(element, from, build) {
+    const key = JSON.stringify(from), built = builtFrom.get(element);
+    if (built && built.key === key && built.first === element.firstChild && built.last === element.lastChild && built.first) return;
+    build();
+    builtFrom.set(element, { key, first: element.firstChild, last: element.lastChild });
+  }
   function legend(element, entries) {
-    element.textContent = '';
-    for (const entry of entries) {
-      const row = document.createElement('div');
-      const swatch = document.createElement('i');
-      if (entry.swatch === 'line') swatch.style.borderBottom = `3px solid ${cssColor(entry.color, entry.opacity)}`;
-      else if (entry.swatch === 'dot') Object.assign(swatch.style, { width: '0.7em', borderRadius: '50%', background: cssColor(entry.color) });
-      else swatch.style.background = cssColor(entry.color, Math.max(0.35, entry.opacity));
-      const text = document.createElement('span');
-      setRichText(text, entry.text);
-      row.append(swatch, text);
-      if (entry.canonical) row.dataset.canonical = '1';
-      element.appendChild(row);
-    }
-    element.hidden = entries.length === 0;
+    buildOnce(element, entries, () => {
+      element.textContent = '';
+      for (const entry of entries) {
+        const row = document.createElement('div');
+        const swatch = document.createElement('i');
+        if (entry.swatch === 'line') swatch.style.borderBottom = `3px solid ${cssColor(entry.color, entry.opacity)}`;
+        else if (entry.swatch === 'dot') Object.assign(swatch.style, { width: '0.7em', borderRadius: '50%', background: cssColor(entry.color) });
+        else swatch.style.background = cssColor(entry.color, Math.max(0.35, entry.opacity));
+        const text = document.createElement('span');
+        setRichText(text, entry.text);
+        row.append(swatch, text);
+        if (entry.canonical) row.dataset.canonical = '1';
+        element.appendChild(row);
+      }
+      element.hidden = entries.length === 0;
+    });
   }
 
   function typeset(element, latex) {
-    try {
-      katex.render(latex, element, { displayMode: true, throwOnError: true });
-    } catch (error) {
-      element.textContent = latex;
-    }
+    buildOnce(element, latex, () => {
+      try {
+        katex.render(latex, element, { displayMode: true, throwOnError: true });
+      } catch (error) {
+        element.textContent = latex;
+      }
+    });
   }
   // The stages' names, left out while a question is open (a name may be its answer).
   function showStageList() {
     if (asking()) return void (list.textContent = '');
-    if (list.childElementCount) return;
-    stages.forEach((stage, k) => {
-      const item = document.createElement('li');
-      setRichText(item, stage.list);
-      item.tabIndex = -1;
-      item.addEventListener('click', () => goTo(k, false));
-      list.appendChild(item);
+    buildOnce(list, stages.map((stage) => stage.list), () => {
+      list.textContent = '';
+      stages.forEach((stage, k) => {
+        const item = document.createElement('li');
+        setRichText(item, stage.list);
+        item.tabIndex = -1;
+        item.addEventListener('click', () => goTo(k, false));
+        list.appendChild(item);
+      });
     });
   }
   // The traced vertex after each stage, as the core writes it for the app's Matrices panel: the core's table
@@ -96,15 +110,17 @@
       if (k === state.stage) item.setAttribute('aria-current', 'step');
       else item.removeAttribute('aria-current');
     });
-    setRichText(document.getElementById('matrix-title'), stage.list);
+    const title = document.getElementById('matrix-title');
+    buildOnce(title, stage.list, () => setRichText(title, stage.list));
     if (state.stage === 0) {
       document.getElementById('matrix').textContent = 'The world: no matrix yet.';
       document.getElementById('symbolic').textContent = '';
       document.getElementById('cumulative').textContent = '';
     } else {
       const symbolic = document.getElementById('symbolic');
-      symbolic.textContent = '';
-      if (stage.symbolic) {
+      buildOnce(symbolic, stage.symbolic || null, () => {
+        symbolic.textContent = '';
+        if (!stage.symbolic) return;
         const matrix = document.createElement('div');
         matrix.className = 'symbolic';
         typeset(matrix, stage.symbolic.latex);
@@ -115,7 +131,7 @@
           setRichText(line, note);
           symbolic.appendChild(line);
         }
-      }
+      });
       // A lesson step's own form of its stage's matrix: the entries it highlights marked.
       const step = lesson && lesson.steps[state.step];
       const own = step && step.latex && step.latexStage === state.stage && step.scene === shownScene;

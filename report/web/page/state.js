@@ -8,6 +8,7 @@
   let animation = null;
   let playing = null;
   let linkedStage = 0;
+  let linkHeld = false; // while a number is dragged: the link (the scene in base64, ~6 ms an edit) is written once it ends
 
   function readFragment() {
     const values = new URLSearchParams(location.hash.slice(1));
@@ -34,6 +35,7 @@
     pendingLink = values.get('scene'); // for the core, once it is loaded
   }
   function writeFragment() {
+    if (linkHeld) return;
     const values = new URLSearchParams();
     // A lesson's moment is its step (its stage would name a which_stage answer).
     if (lesson) values.set('step', state.step + 1);
