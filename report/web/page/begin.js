@@ -29,6 +29,13 @@
     for (let k = 0; k < bytes.length; ++k) bytes[k] ^= key[k % key.length];
     return JSON.parse(new TextDecoder().decode(bytes));
   }
+  // Text and hidden set where they differ: the same set again would have the page lay it out again.
+  function setText(element, text) {
+    if (element.textContent !== text) element.textContent = text;
+  }
+  function setHidden(element, hidden) {
+    if (element.hidden !== hidden) element.hidden = hidden;
+  }
   const floatsOf = (base64) => new Float32Array(bytesOf(base64));
   const matrixOf = (rows) => new THREE.Matrix4().set(...rows);
   const cssColor = (c, alpha = 1) =>

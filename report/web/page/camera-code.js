@@ -12,17 +12,17 @@
     if (!core || lesson) return;
     const outcome = core.cameraCode(data.scene, dialectPicker.value);
     const foley = !!outcome.error;
-    document.getElementById('code-note').textContent = foley
+    setText(document.getElementById('code-note'), foley
       ? "This scene's camera is a Foley view (VRP, VPN, VUP, PRP): no graphics API writes it as code."
-      : 'Drag a marked number left or right, or select it and press ↑ or ↓: each change is one undoable edit.';
-    for (const id of ['camera-code', 'code-paste', 'apply-code']) document.getElementById(id).hidden = foley;
-    document.querySelector('#code-editor .dialect').hidden = foley;
-    document.querySelector('label[for=code-paste]').hidden = foley;
+      : 'Drag a marked number left or right, or select it and press ↑ or ↓: each change is one undoable edit.');
+    for (const id of ['camera-code', 'code-paste', 'apply-code']) setHidden(document.getElementById(id), foley);
+    setHidden(document.querySelector('#code-editor .dialect'), foley);
+    setHidden(document.querySelector('label[for=code-paste]'), foley);
     const before = code;
     code = foley ? null : JSON.parse(outcome.text);
     // The same code with other numbers (one dragged, or typed in the Scene panel): only the numbers set anew.
     const same = code && before && JSON.stringify(codeBetween(code)) === JSON.stringify(codeBetween(before));
-    if (!same) codeView.textContent = '';
+    if (!same && codeView.firstChild) codeView.textContent = '';
     if (!code) return;
     const spans = same ? codeView.querySelectorAll('.code-number') : [];
     const between = codeBetween(code);

@@ -4,12 +4,12 @@
   // The scene's numbers as the CLI prints them (`viewpipe pipeline SCENE --json`), or why the core refuses the scene.
   function showOutcome(outcome) {
     if (!outcome.error && !lesson) { // a lesson's later answers are among its numbers
-      document.getElementById('json-left-out').textContent = data.filesLeftOut;
-      document.getElementById('pipeline-json').textContent = outcome.pipeline;
+      setText(document.getElementById('json-left-out'), data.filesLeftOut);
+      setText(document.getElementById('pipeline-json'), outcome.pipeline);
     }
     const error = document.getElementById('scene-error');
-    error.textContent = outcome.error;
-    error.hidden = !outcome.error;
+    setText(error, outcome.error);
+    setHidden(error, !outcome.error);
   }
   // The meshes a scene names, into the core's file system under their names.
   function putFiles(files) {

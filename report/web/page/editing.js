@@ -142,9 +142,9 @@
   }
 
   function clearRefusals() {
-    document.getElementById('editor-error').hidden = true;
+    setHidden(document.getElementById('editor-error'), true);
     fields.querySelectorAll('.field').forEach((row) => {
-      row.querySelector('.field-error').hidden = true;
+      setHidden(row.querySelector('.field-error'), true);
       row.querySelectorAll('input, select').forEach((input) => {
         input.removeAttribute('aria-invalid');
         input.removeAttribute('aria-describedby');
@@ -216,7 +216,7 @@
     clearRefusals();
     const index = shownScene;
     page.scenes[index] = entry.page;
-    document.getElementById('title').textContent = entry.page.title;
+    setText(document.getElementById('title'), entry.page.title);
     document.title = `${entry.page.title} · ViewPipe`;
     shownScene = -1;
     useScene(index, true);
@@ -228,6 +228,7 @@
     showEdits();
     state.stage = -1;
     goTo(Math.min(stage, last), false);
+    drawProjected();
   }
   function undo() {
     // A refused value is undone first, alone: the fields show the scene shown again.
@@ -253,8 +254,8 @@
   function showEdits() {
     document.getElementById('undo').disabled = edits.at <= 0 && !refused();
     document.getElementById('redo').disabled = edits.at >= edits.entries.length - 1;
-    document.getElementById('link-note').textContent = Object.keys(data.files).length || data.filesLeftOut
-      ? 'This scene names mesh files, too large for a link: save it instead.' : '';
+    setText(document.getElementById('link-note'), Object.keys(data.files).length || data.filesLeftOut
+      ? 'This scene names mesh files, too large for a link: save it instead.' : '');
   }
   document.getElementById('undo').addEventListener('click', undo);
   document.getElementById('redo').addEventListener('click', redo);

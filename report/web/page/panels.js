@@ -4,7 +4,6 @@
   function buildPanels() {
     legend(document.getElementById('legend'), data.legend);
     legend(document.getElementById('projected-legend'), data.projected.legend);
-    setRichText(document.getElementById('note'), data.note);
     vertices = floatsOf(data.vertices);
   }
   // A panel built from `from` by `build`, unless it shows that already (an edit that leaves a panel as it was
@@ -64,7 +63,9 @@
     const element = document.getElementById('trace');
     if (asking()) return void (element.textContent = ''); // the trace follows the answer (its verdict may be it)
     if (!state.traced) {
-      element.innerHTML = '<p>Click a vertex of an object (or press T) to trace it through the stages.</p>';
+      buildOnce(element, null, () => {
+        element.innerHTML = '<p>Click a vertex of an object (or press T) to trace it through the stages.</p>';
+      });
       return null;
     }
     element.textContent = coreFailed || (!core ? "The trace is computed by ViewPipe's core, which is loading." : '');

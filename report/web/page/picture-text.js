@@ -10,29 +10,39 @@
     const { x, y } = pictureToView(size);
     const setBox = (element, box) => Object.assign(element.style, {
       left: `${x(box[0])}px`, top: `${y(box[1])}px`, right: 'auto', bottom: 'auto', maxWidth: 'none', margin: '0' });
-    const setText = (element, part) => {
+    const setPart = (element, part) => {
       setBox(element, part.box);
-      element.textContent = '';
-      part.lines.forEach((line, k) => {
-        if (k) element.append('\n');
-        const span = document.createElement('span');
-        setRichText(span, line);
-        element.appendChild(span);
+      buildOnce(element, part.lines, () => {
+        element.textContent = '';
+        part.lines.forEach((line, k) => {
+          if (k) element.append('\n');
+          const span = document.createElement('span');
+          setRichText(span, line);
+          element.appendChild(span);
+        });
       });
       Object.assign(element.style, { fontSize: `${part.size * s}px`, lineHeight: `${(part.line || 1.25 * part.size) * s}px` });
     };
     const caption = document.getElementById('caption');
-    caption.parentNode.querySelectorAll('.backdrop').forEach((backdrop) => backdrop.remove());
-    layout.backdrops.forEach((box) => { // under the text, over what runs behind it; from the picture's edge to the view's
+    // Under the text, over what runs behind it; from the picture's edge to the view's. Made anew where they moved.
+    const backdrops = layout.backdrops.map((box) => {
       const left = box[0] <= 0 ? 0 : x(box[0]), top = box[1] <= 0 ? 0 : y(box[1]);
       const bottom = box[3] >= data.height ? size.height : y(box[3]);
-      const backdrop = document.createElement('div');
-      backdrop.className = 'backdrop';
-      Object.assign(backdrop.style, { left: `${left}px`, top: `${top}px`, width: `${x(box[2]) - left}px`, height: `${bottom - top}px` });
-      caption.before(backdrop);
+      return { left: `${left}px`, top: `${top}px`, width: `${x(box[2]) - left}px`, height: `${bottom - top}px` };
     });
-    setText(caption, asking() ? { ...layout.caption, lines: [] } : layout.caption); // the stage's name and claim
-    setText(document.getElementById('note'), layout.note);
+    const placed = [...caption.parentNode.querySelectorAll('.backdrop')];
+    if (JSON.stringify(placed.map((backdrop) => backdrop.dataset.box)) !== JSON.stringify(backdrops.map((box) => JSON.stringify(box)))) {
+      placed.forEach((backdrop) => backdrop.remove());
+      for (const box of backdrops) {
+        const backdrop = document.createElement('div');
+        backdrop.className = 'backdrop';
+        backdrop.dataset.box = JSON.stringify(box);
+        Object.assign(backdrop.style, box);
+        caption.before(backdrop);
+      }
+    }
+    setPart(caption, asking() ? { ...layout.caption, lines: [] } : layout.caption); // the stage's name and claim
+    setPart(document.getElementById('note'), layout.note);
     const legend = document.getElementById('legend');
     legend.hidden = !layout.legend;
     if (!layout.legend) return;

@@ -12,8 +12,8 @@
     state.traced = null;
     buildViews();
     buildPanels();
+    if (fromEdit) return; // drawn once the edit's panels are set (one layout)
     drawProjected();
-    if (fromEdit) return;
     evaluateScene();
     if (!lesson) buildFields();
     showCode();
