@@ -45,9 +45,10 @@
     if (focusIndex !== undefined) codeView.querySelector(`[data-index='${focusIndex}']`).focus();
   }
   // The code's text around its numbers: before each, then after the last.
-  const codeBetween = (written) => [...written.numbers.map((number, k) => written.text.slice(k ? written.numbers[k - 1].end : 0,
-                                                                                              number.start)),
-                                    written.text.slice(written.numbers.length ? written.numbers[written.numbers.length - 1].end : 0)];
+  function codeBetween(written) {
+    const ends = [0, ...written.numbers.map((number) => number.end)];
+    return [...written.numbers.map((number, k) => written.text.slice(ends[k], number.start)), written.text.slice(ends[ends.length - 1])];
+  }
   function refuseCode(error) {
     codeError.textContent = error;
     codeError.hidden = !error;

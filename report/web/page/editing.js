@@ -47,8 +47,8 @@
     const group = (value, path) => value !== null && typeof value === 'object' && !numbers(value, path);
     const items = (value, path) => numbers(value, path) ? value.map((v, k) => [v, [...path, k]]) : [[value, path]];
     const kindOf = (item, path) => isNumber(item, path) ? 'number' : typeof item;
-    // Each row's path and its inputs' kinds: the same rows (a number dragged, a field edited) are kept, their
-    // values set, for the page lays out again only what changed.
+    // Each row's path and its inputs' kinds: the same rows (a number dragged, a field edited) are kept and their
+    // values set, so that the page lays out again only what changed.
     const shapeOf = (value, path) => chosen.has(pathText(path)) ? null : group(value, path)
       ? Object.entries(value).map(([key, inner]) => [key, shapeOf(inner, [...path, Array.isArray(value) ? Number(key) : key])])
       : items(value, path).map(([item, itemPath]) => [kindOf(item, itemPath), typeof item]);
