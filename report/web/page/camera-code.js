@@ -76,20 +76,16 @@
   });
   codeView.addEventListener('pointermove', (event) => {
     if (!codeDrag) return;
-    // A step a pixel; one evaluation a frame: a move at once, drawn in its frame as a turn of the view is; moves
-    // after it in the same frame wait for the next, which evaluates the last.
+    // A step a pixel; one evaluation a frame, of the last position.
     codeDrag.pending = core.steppedValue(codeDrag.value, Math.round(event.clientX - codeDrag.x));
-    if (!codeDrag.frame) evaluateDragged(codeDrag);
-  });
-  function evaluateDragged(drag) {
-    const value = drag.pending;
-    drag.pending = null;
-    setCodeNumber(drag.index, value, drag.gesture);
-    drag.frame = requestAnimationFrame(() => {
+    if (codeDrag.frame) return;
+    codeDrag.frame = requestAnimationFrame(() => {
+      const drag = codeDrag;
+      if (!drag) return;
       drag.frame = 0;
-      if (codeDrag === drag && drag.pending !== null) evaluateDragged(drag);
+      setCodeNumber(drag.index, drag.pending, drag.gesture);
     });
-  }
+  });
   const endDrag = () => {
     if (!codeDrag) return;
     const drag = codeDrag;
