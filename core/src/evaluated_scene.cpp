@@ -955,10 +955,15 @@ std::optional<Mat4<double>> shownGhost(const EvaluatedScene& scene, int k)
     return both.diagonal().norm() <= kFarther * own.diagonal().norm() ? ghost : std::nullopt;
 }
 
+bool inFrontOfEye(const Vec4<double>& h)
+{
+    return h.w() > h.head<3>().cwiseAbs().maxCoeff() / kDrawnReach && h.allFinite();
+}
+
 std::optional<Vec3<double>> projectPoint(const Mat4<double>& m, const Vec3<double>& p)
 {
     const Vec4<double> h = m * p.homogeneous();
-    if (!(h.w() > h.head<3>().cwiseAbs().maxCoeff() / kDrawnReach) || !h.allFinite())
+    if (!inFrontOfEye(h))
         return std::nullopt;
     return Vec3<double>(h.head<3>() / h.w());
 }

@@ -177,12 +177,13 @@ void solveQuestion(Question& q, const Json& j, const std::string& path, const Sc
     switch (q.kind) {
     case QuestionKind::Where: {
         const Vec4<double> p = trace.afterStage[std::size_t(q.stage - 1)];
-        if (!(std::abs(p.w()) > 1e-12))
-            throw InputError(child(path, "point"), "has w = 0 after stage " + std::to_string(q.stage) +
-                                                       ": it lands nowhere (at infinity)");
-        q.where = p.head<3>() / p.w();
-        if (!q.where.allFinite())
+        if (!p.allFinite())
             throw InputError(child(path, "point"), "has no finite image after stage " + std::to_string(q.stage));
+        // An image in front of the eye or behind it (a false image, still an answer), as the pictures judge it.
+        if (!inFrontOfEye(p) && !inFrontOfEye(-p))
+            throw InputError(child(path, "point"), "has w = 0 (or too near it to be drawn) after stage " +
+                                                       std::to_string(q.stage) + ": it lands nowhere (at infinity)");
+        q.where = p.head<3>() / p.w();
         if (exactTrace) {
             const Vec4<Exact>& e = exactTrace->afterStage[std::size_t(q.stage - 1)];
             if (e.w().sign() != 0)

@@ -625,7 +625,7 @@ const Mat4<double>& StageShown::matrixOf(const Primitive& primitive) const
 std::optional<Vec3<double>> FigureView::pixel(const Vec3<double>& stagePoint) const
 {
     const Vec4d c = camera * stagePoint.homogeneous();
-    if (!(c.w() > 0) || !c.allFinite())
+    if (!inFrontOfEye(c))
         return std::nullopt;
     const Vec3d ndc = c.head<3>() / c.w();
     return Vec3d((ndc.x() + 1) / 2 * width, (1 - ndc.y()) / 2 * height, ndc.z());

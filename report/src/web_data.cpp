@@ -314,6 +314,7 @@ json sceneData(const EvaluatedScene& scene, const WebPageViews& views)
                        {"lineScale", options.lineScale},
                        {"framing", framingModeName(options.framing)},
                        {"stepMilliseconds", kStepMilliseconds},
+                       {"drawnReach", kDrawnReach}, // the core's inFrontOfEye, the page's too
                        {"viewLimits", {{"pitch", ViewLimits::kPitchDegrees}, {"zoom", {ViewLimits::kMinZoom, ViewLimits::kMaxZoom}}}},
                        {"smallFontSize", smallTextSize(options.fontSize)},
                        {"scripts", {{"scale", kScriptScale}, {"drop", kSubscriptDrop}, {"rise", kSuperscriptRise}}},

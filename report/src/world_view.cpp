@@ -381,7 +381,7 @@ std::optional<Vec3<double>> pickVertex(const std::vector<Vec3<double>>& vertices
         if (cut && cut->dot(p.homogeneous()) < 0)
             continue; // cut away: not drawn
         const Vec4<double> h = drawn * p.homogeneous();
-        if (!(h.w() > 0))
+        if (!inFrontOfEye(h))
             continue;
         const Vec3<double> ndc = h.head<3>() / h.w();
         if (std::abs(ndc.z()) > 1)

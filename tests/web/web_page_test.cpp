@@ -1305,6 +1305,31 @@ TEST_F(WebPage, ZoomsAboutTheSubject)
         ADD_FAILURE() << problem;
 }
 
+// Whether a point is drawn, in front of the eye: the page judges it by the core's rule (inFrontOfEye, its reach from
+// the page's data), at the rule's edge too. Hand-checked: with x = 1 the least w drawn is 1 / kDrawnReach = 1e-9.
+TEST_F(WebPage, JudgesInFrontOfTheEyeAsTheCoreDoes)
+{
+    const fs::path page = *dir_ / "house" / "scene.html";
+    Browser browser(*dir_ / "profile-in-front");
+    browser.page("Page.navigate", {{"url", "file://" + page.string()}});
+    ASSERT_TRUE(browser.waitFor("document.body.dataset.ready === '1'"));
+    const struct {
+        std::array<double, 4> h; // x, y, z, w
+        bool inFront;
+    } cases[] = {{{1, 0, 0, 1e-9 * (1 + 1e-6)}, true},  {{1, 0, 0, 1e-9 * (1 - 1e-6)}, false},
+                 {{0, -1, 0, 1.000001e-9}, true},       {{1, 0, 0, 1e-12}, false},
+                 {{2, 3, -4, 1}, true},                 {{2, 3, -4, -1}, false},
+                 {{0, 0, 0, 0}, false},                 {{0, 0, 5e8, 0.5}, false}}; // at the reach itself: not drawn
+    for (const auto& c : cases) {
+        const std::string point = json(c.h).dump();
+        const bool page = browser.evaluate("window.viewpipe.inFrontOfEye(" + point + ")").get<bool>();
+        EXPECT_EQ(viewpipe::inFrontOfEye(viewpipe::Vec4<double>(c.h[0], c.h[1], c.h[2], c.h[3])), c.inFront) << point;
+        EXPECT_EQ(page, c.inFront) << point;
+    }
+    for (const std::string& problem : browser.problems())
+        ADD_FAILURE() << problem;
+}
+
 // In every stage at once, a click in a cell traces the vertex it picks (the core's pickVertex, as in the world view
 // and the app): every cell's footer gives its coordinates in that stage's space. What is shown is what is saved:
 // the storyboard as PNG (the room's size) and as SVG (a group a cell, the core's shapes and texts).

@@ -182,8 +182,13 @@ double pictureAspect(const EvaluatedScene& scene);
 // a stage before the divide.
 constexpr double kDrawnReach = 1e9;
 
+// Whether a point before the divide has an image the pictures draw: in front of the eye, w above its
+// largest coordinate over kDrawnReach (so not on the eye plane nor beyond the reach), and finite. The one
+// rule of the app, the exports and the page (whose data carries kDrawnReach as "drawnReach").
+bool inFrontOfEye(const Vec4<double>& h);
+
 // A point through a cumulative matrix and the divide; nothing when it has no
-// image (behind the eye, on the eye plane, beyond kDrawnReach, or not finite).
+// image (not inFrontOfEye).
 std::optional<Vec3<double>> projectPoint(const Mat4<double>& m, const Vec3<double>& p);
 
 // A matrix divides when w is not 1 everywhere.

@@ -76,9 +76,12 @@
     return turned.labels;
   }
 
+  // The core's inFrontOfEye, on the core's reach: whether a point before the divide has an image the pictures draw.
+  const inFrontOfEye = (p) => p.w > Math.max(Math.abs(p.x), Math.abs(p.y), Math.abs(p.z)) / data.drawnReach &&
+    [p.x, p.y, p.z, p.w].every(Number.isFinite);
   function project(clipFromPoint, point, size) {
     const p = new THREE.Vector4(point[0], point[1], point[2], 1).applyMatrix4(clipFromPoint);
-    if (!(p.w > 1e-12)) return null;
+    if (!inFrontOfEye(p)) return null;
     return { x: (p.x / p.w + 1) / 2 * size.width, y: (1 - p.y / p.w) / 2 * size.height };
   }
   const kept = (cut, point) => !cut || cut[0] * point[0] + cut[1] * point[1] + cut[2] * point[2] + cut[3] >= 0;

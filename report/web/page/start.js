@@ -18,6 +18,7 @@
     turnedLabels: () => labelsTurned(),
     restLabels: () => stageAt(state.stage).labels,
     traced: () => state.traced, // the vertex traced, [x, y, z] or null
+    inFrontOfEye: (h) => inFrontOfEye(new THREE.Vector4(...h)), // the page's judgement of a point [x, y, z, w]
   };
 
   readFragment();
