@@ -58,6 +58,15 @@ template <class Result = Outcome, class Body> Result guarded(Body&& body)
     return refused;
 }
 
+// A matrix from the 16 numbers the page gives, row by row.
+Mat4<double> matrixOfRows(const std::vector<double>& rows)
+{
+    Mat4<double> m;
+    for (int k = 0; k < 16; ++k)
+        m(k / 4, k % 4) = rows[std::size_t(k)];
+    return m;
+}
+
 // Where a scene's files are, in the module's own file system: mesh paths
 // resolve against it as they resolve against a scene file's folder.
 const std::filesystem::path kSceneFolder = "/scene";
@@ -203,10 +212,7 @@ Outcome stageThrough(const char* what, const std::string& sceneText, const std::
         const std::vector<double> rows = nlohmann::json::parse(camera);
         if (rows.size() != 16 || stage < 0 || stage > int(evaluated->pipeline.stages.size()))
             throw std::invalid_argument(std::string(what) + ": a stage and 16 numbers");
-        Mat4<double> clip;
-        for (int k = 0; k < 16; ++k)
-            clip(k / 4, k % 4) = rows[std::size_t(k)];
-        return Outcome{draw(*evaluated, stage, clip, view, pageMeasure(measure)), ""};
+        return Outcome{draw(*evaluated, stage, matrixOfRows(rows), view, pageMeasure(measure)), ""};
     });
 }
 
@@ -242,9 +248,7 @@ Outcome storyboard(const std::string& sceneText, const std::string& options, con
         for (const nlohmann::json& rows : turned.is_null() ? nlohmann::json::array() : turned) {
             if (rows.size() != 16)
                 throw std::invalid_argument("storyboard: 16 numbers a camera");
-            Mat4<double>& clip = clips.emplace_back();
-            for (int k = 0; k < 16; ++k)
-                clip(k / 4, k % 4) = rows[std::size_t(k)];
+            clips.push_back(matrixOfRows(rows.get<std::vector<double>>()));
         }
         return Outcome{webStoryboard(*evaluated, size.at("width"), size.at("height"), tracedPoint, clips, view,
                                      pageMeasure(measure), shapes),
@@ -268,9 +272,7 @@ Outcome pickVertexAt(const emscripten::val& vertices, const std::string& drawn, 
                              whole = nlohmann::json::parse(window), plane = nlohmann::json::parse(cut);
         if (rows.size() != 16)
             throw std::invalid_argument("pickVertex: 16 numbers");
-        Mat4<double> clip;
-        for (int k = 0; k < 16; ++k)
-            clip(k / 4, k % 4) = rows[std::size_t(k)];
+        const Mat4<double> clip = matrixOfRows(rows);
         std::optional<Vec4<double>> kept;
         if (!plane.is_null())
             kept = Vec4<double>(plane.at(0), plane.at(1), plane.at(2), plane.at(3));
@@ -279,6 +281,27 @@ Outcome pickVertexAt(const emscripten::val& vertices, const std::string& drawn, 
                        Vec2<double>(whole.at(0), whole.at(1)), kept);
         return Outcome{picked ? nlohmann::json{picked->x(), picked->y(), picked->z()}.dump() : "null", ""};
     });
+}
+
+// The world view as the reader turned it (report::turnedCamera): `view` and `projection` 16 numbers each, row by
+// row, `focal` [x, y, z]; the turned view's rows then the projection's, 32 numbers (null for other sizes). Asked
+// for each frame drawn: numbers in and out, no text.
+emscripten::val turnedCameraOf(const emscripten::val& view, const emscripten::val& projection, const emscripten::val& focal,
+                               double yawDegrees, double pitchDegrees, double zoom)
+{
+    const std::vector<double> viewRows = emscripten::convertJSArrayToNumberVector<double>(view),
+                              projectionRows = emscripten::convertJSArrayToNumberVector<double>(projection),
+                              point = emscripten::convertJSArrayToNumberVector<double>(focal);
+    if (viewRows.size() != 16 || projectionRows.size() != 16 || point.size() != 3)
+        return emscripten::val::null();
+    const report::TurnedCamera turned = report::turnedCamera(matrixOfRows(viewRows), matrixOfRows(projectionRows),
+                                                             Vec3<double>(point[0], point[1], point[2]), yawDegrees,
+                                                             pitchDegrees, zoom);
+    std::vector<double> rows;
+    for (const Mat4<double>* m : {&turned.view, &turned.projection})
+        for (int k = 0; k < 16; ++k)
+            rows.push_back((*m)(k / 4, k % 4));
+    return emscripten::val::array(rows);
 }
 
 // A scene's text read without its objects, for what its camera and effects decide: the meshes may not be
@@ -535,6 +558,7 @@ EMSCRIPTEN_BINDINGS(viewpipe)
     emscripten::function("placeLabels", &placeLabels);
     emscripten::function("stageFigure", &stageFigure);
     emscripten::function("pickVertex", &pickVertexAt);
+    emscripten::function("turnedCamera", &turnedCameraOf);
     emscripten::function("traceTable", &traceTable);
     emscripten::function("storyboard", &storyboard);
     emscripten::function("checkAnswer", &checkAnswer);

@@ -371,6 +371,23 @@ Eigen::AlignedBox<double, 3> frameExtent(const Framing& framing)
     return {extent.min() - Vec3<double>::Constant(beyond), extent.max() + Vec3<double>::Constant(beyond)};
 }
 
+TurnedCamera turnedCamera(const Mat4<double>& view, const Mat4<double>& projection, const Vec3<double>& focalPoint,
+                          double yawDegrees, double pitchDegrees, double zoom)
+{
+    const Vec3<double> focal = (view * focalPoint.homogeneous()).head<3>();
+    const Eigen::Affine3d orbit = Eigen::Translation3d(focal) * Eigen::AngleAxisd(pitchDegrees * kPi / 180, Vec3<double>::UnitX()) *
+                                  Eigen::AngleAxisd(yawDegrees * kPi / 180, Vec3<double>::UnitY()) *
+                                  Eigen::Translation3d(-focal);
+    const Vec4<double> subject = projection * focal.homogeneous();
+    Mat4<double> zoomed = Mat4<double>::Identity();
+    for (int axis = 0; axis < 2; ++axis) {
+        zoomed(axis, axis) = zoom;
+        zoomed(axis, 3) = (1 - zoom) * subject(axis) / subject.w();
+    }
+    zoomed(2, 2) = kTurnedDepthScale;
+    return {orbit.matrix() * view, zoomed * projection};
+}
+
 std::optional<Vec3<double>> pickVertex(const std::vector<Vec3<double>>& vertices, const Mat4<double>& drawn,
                                        const Vec2<double>& size, const Vec2<double>& at, const Vec2<double>& window,
                                        const std::optional<Vec4<double>>& cut)

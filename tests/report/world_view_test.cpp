@@ -265,6 +265,34 @@ TEST(WorldView, AStepWithFixedFramingHoldsItsCamera)
     }
 }
 
+// The page's turn, hand-checked: a camera at the origin looking down -z (view the identity, projection
+// gluPerspective's of 90 degrees, aspect 1, near 1, far 3: x, y, -z - 2 and -z), its focal point (2, 0, -10),
+// drawn at x = 2 / 10 = 0.2 in the picture. Yaw turns about the eye's y, then pitch about its x; a zoom keeps the
+// focal point where it is drawn and scales the rest about it.
+TEST(TurnedCamera, TurnsAboutTheFocalPointAndZoomsAboutWhereItIsDrawn)
+{
+    Mat4<double> projection;
+    projection << 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, -1, -2, 0, 0, -1, 0;
+    const Vec3<double> focal(2, 0, -10);
+    const auto eye = [&](double yaw, double pitch, const Vec3<double>& p) {
+        return Vec3<double>((turnedCamera(Mat4<double>::Identity(), projection, focal, yaw, pitch, 1).view *
+                             p.homogeneous()).head<3>());
+    };
+    EXPECT_LT((eye(90, 0, {3, 0, -10}) - Vec3<double>(2, 0, -11)).norm(), 1e-12) << "+x turned a quarter about y: -z";
+    EXPECT_LT((eye(0, 90, {2, 1, -10}) - Vec3<double>(2, 0, -9)).norm(), 1e-12) << "+y turned a quarter about x: +z";
+    EXPECT_LT((eye(90, 90, {3, 0, -10}) - Vec3<double>(2, 1, -10)).norm(), 1e-12) << "yaw first: +x to -z, then to +y";
+    EXPECT_LT((eye(30, -20, focal) - focal).norm(), 1e-12) << "the focal point stays";
+
+    const TurnedCamera zoomed = turnedCamera(Mat4<double>::Identity(), projection, focal, 0, 0, 2);
+    const auto drawn = [&](const Vec3<double>& p) {
+        const Vec4<double> h = zoomed.projection * zoomed.view * p.homogeneous();
+        return Vec3<double>(h.head<3>() / h.w());
+    };
+    EXPECT_LT((drawn(focal) - Vec3<double>(0.2, 0, 0.8 * kTurnedDepthScale)).norm(), 1e-12) << "kept where it was drawn";
+    EXPECT_LT((drawn({0, 0, -10}) - Vec3<double>(2 * 0 - 0.2, 0, 0.8 * kTurnedDepthScale)).norm(), 1e-12)
+        << "at 0, twice as far from 0.2";
+}
+
 // A click picks as the app and the page pick: with the identity as the camera, a vertex at (x, y, z) is drawn at
 // pixel ((x + 1) / 2 * 200, (1 - y) / 2 * 100) of a 200 x 100 view; the window's diagonal is 1000 pixels, so a
 // vertex counts within 10 of the click.

@@ -37,6 +37,7 @@
 #include "build_paths.h"
 #include "viewpipe/evaluated_scene.hpp"
 #include "viewpipe/lesson.hpp"
+#include "viewpipe/report/world_view.hpp"
 #include "viewpipe/scene.hpp"
 
 extern char** environ;
@@ -1325,6 +1326,58 @@ TEST_F(WebPage, JudgesInFrontOfTheEyeAsTheCoreDoes)
         const bool page = browser.evaluate("window.viewpipe.inFrontOfEye(" + point + ")").get<bool>();
         EXPECT_EQ(viewpipe::inFrontOfEye(viewpipe::Vec4<double>(c.h[0], c.h[1], c.h[2], c.h[3])), c.inFront) << point;
         EXPECT_EQ(page, c.inFront) << point;
+    }
+    for (const std::string& problem : browser.problems())
+        ADD_FAILURE() << problem;
+}
+
+// The view turned and zoomed by the reader is the core's turnedCamera, fitted to the view: a point's pixel on the page
+// is where the core's matrices put it, for several turns.
+TEST_F(WebPage, TurnsTheViewAsTheCoreTurnsIt)
+{
+    const fs::path page = *dir_ / "house" / "scene.html";
+    Browser browser(*dir_ / "profile-turned");
+    browser.page("Page.navigate", {{"url", "file://" + page.string() + "#stage=3"}});
+    ASSERT_TRUE(browser.waitFor("document.body.dataset.ready === '1' && document.body.dataset.core === '1'"));
+    const auto matrix = [](const json& rows) {
+        viewpipe::Mat4<double> m;
+        for (int k = 0; k < 16; ++k)
+            m(k / 4, k % 4) = rows[std::size_t(k)].get<double>();
+        return m;
+    };
+    const json frame = json::parse(browser.evaluate("JSON.stringify(window.viewpipe.frame())").get<std::string>());
+    const json view = json::parse(browser.evaluate("JSON.stringify(document.getElementById('world-canvas')"
+                                                   ".parentElement.getBoundingClientRect())").get<std::string>());
+    const double width = std::round(view["width"].get<double>()), height = std::round(view["height"].get<double>());
+    const double s = std::min(width / kWidth, height / kHeight); // the export's picture fitted whole
+    viewpipe::Mat4<double> fit = viewpipe::Mat4<double>::Identity();
+    fit(0, 0) = kWidth * s / width;
+    fit(1, 1) = kHeight * s / height;
+    const struct {
+        double yaw, pitch, zoom;
+    } turns[] = {{20, -10, 1.5}, {-120, 60, 0.7}, {0, 0, 1}, {175, 89, 3}};
+    const std::vector<viewpipe::Vec3<double>> points = {viewpipe::Vec3<double>(0, 0, 54), viewpipe::Vec3<double>(16, 10, 30),
+                                                        viewpipe::Vec3<double>(8, 16, 54)};
+    for (const auto& turn : turns) {
+        std::ostringstream fragment;
+        fragment << "#stage=3&yaw=" << turn.yaw << "&pitch=" << turn.pitch << "&zoom=" << turn.zoom;
+        browser.evaluate("location.hash = '" + fragment.str() + "&read'");
+        ASSERT_TRUE(browser.waitFor("!location.hash.includes('read')")); // the page writes its link anew once read
+        const viewpipe::report::TurnedCamera turned =
+            viewpipe::report::turnedCamera(matrix(frame["view"]), matrix(frame["projection"]),
+                                           viewpipe::Vec3<double>(frame["focal"][0], frame["focal"][1], frame["focal"][2]), turn.yaw, turn.pitch, turn.zoom);
+        const viewpipe::Mat4<double> drawn = fit * turned.projection * turned.view * matrix(frame["shown"]);
+        for (const viewpipe::Vec3<double>& p : points) {
+            const viewpipe::Vec4<double> h = drawn * p.homogeneous();
+            const json pixel = json::parse(browser.evaluate("JSON.stringify(window.viewpipe.pixelOf([" + std::to_string(p.x()) + ", " +
+                                                            std::to_string(p.y()) + ", " + std::to_string(p.z()) + "]))")
+                                               .get<std::string>());
+            ASSERT_TRUE(pixel.is_object()) << fragment.str() << " " << p.transpose();
+            EXPECT_NEAR(pixel["x"].get<double>() - view["left"].get<double>(), (h.x() / h.w() + 1) / 2 * width, 1e-6)
+                << fragment.str() << " " << p.transpose();
+            EXPECT_NEAR(pixel["y"].get<double>() - view["top"].get<double>(), (1 - h.y() / h.w()) / 2 * height, 1e-6)
+                << fragment.str() << " " << p.transpose();
+        }
     }
     for (const std::string& problem : browser.problems())
         ADD_FAILURE() << problem;

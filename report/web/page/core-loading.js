@@ -31,6 +31,6 @@
     }
     body.dataset.core = '1';
     if (state.traced) showPanels(); // the trace, which the core writes
-    if (storyboardShown()) drawStoryboard(); // the core draws it
+    drawShown(); // the storyboard, which the core draws; the world view, which it turns as the reader asks
   });
 

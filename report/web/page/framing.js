@@ -23,24 +23,15 @@
     return { x: (v) => (v - picture.width / 2) * s + size.width / 2, y: (v) => (v - picture.height / 2) * s + size.height / 2 };
   }
 
-  // The frame's camera with the user's orbit (about the focal point, in eye axes) and zoom.
+  // The frame's camera as the reader turned and zoomed it (the core's turnedCamera), the picture fitted into the
+  // view whole, centred. Until the core has loaded (or where it could not), the frame's own camera: at rest.
   function cameraMatrices(frame, size, picture = data) {
-    const view = matrixOf(frame.view);
-    const focal = new THREE.Vector3(...frame.focal).applyMatrix4(view);
-    const turn = new THREE.Matrix4().makeRotationX(state.pitch * Math.PI / 180)
-      .multiply(new THREE.Matrix4().makeRotationY(state.yaw * Math.PI / 180));
-    const orbit = new THREE.Matrix4().makeTranslation(focal.x, focal.y, focal.z).multiply(turn)
-      .multiply(new THREE.Matrix4().makeTranslation(-focal.x, -focal.y, -focal.z));
+    const turned = core && core.turnedCamera(frame.view, frame.projection, frame.focal, state.yaw, state.pitch, state.zoom);
+    const view = matrixOf(turned ? turned.slice(0, 16) : frame.view);
+    const projection = matrixOf(turned ? turned.slice(16) : frame.projection);
     const s = fitScale(size, picture);
-    // Zoomed about the subject, as export --zoom: about the focal point, which the core's framing centres in
-    // the room the picture's text leaves it (not the picture's center). z scaled down: nothing in front of the
-    // eye is clipped by near and far planes while orbiting.
-    const projection = matrixOf(frame.projection);
-    const subject = focal.clone().applyMatrix4(projection), zoom = state.zoom;
-    const ax = picture.width * s / size.width, ay = picture.height * s / size.height;
-    const fit = new THREE.Matrix4().set(ax * zoom, 0, 0, (1 - zoom) * ax * subject.x, 0, ay * zoom, 0, (1 - zoom) * ay * subject.y,
-                                        0, 0, 0.02, 0, 0, 0, 0, 1);
-    return { view: orbit.multiply(view), projection: fit.multiply(projection) };
+    const fit = new THREE.Matrix4().makeScale(picture.width * s / size.width, picture.height * s / size.height, 1);
+    return { view, projection: fit.multiply(projection) };
   }
 
   // The view as the user turned it, for the core: the stage's camera in the export's picture (stage coordinates ->

@@ -18,6 +18,7 @@
     turnedLabels: () => labelsTurned(),
     restLabels: () => stageAt(state.stage).labels,
     traced: () => state.traced, // the vertex traced, [x, y, z] or null
+    frame: () => shown.frame, // the frame drawn: its camera at rest (view, projection, focal) and stage matrix (shown)
     inFrontOfEye: (h) => inFrontOfEye(new THREE.Vector4(...h)), // the page's judgement of a point [x, y, z, w]
   };
 

@@ -152,6 +152,18 @@ void frameOn(WorldCamera& camera, const Framing& framing, const ViewFit& fit);
 // The near and far planes around everything framed and the fixed axes.
 void fitClippingRange(WorldCamera& camera, const Framing& framing);
 
+// The world view as the page's reader turned it: the camera (`view`: stage -> eye, `projection`: eye -> clip
+// coordinates of the picture) turned by yaw and pitch, in degrees, about the focal point in the eye's axes
+// (RotX(pitch) RotY(yaw)), and zoomed by `zoom` about where the focal point is in the picture (as export
+// --zoom: the framing centres the subject there, in the room the picture's text leaves). Depth is scaled by
+// kTurnedDepthScale, so nothing in front of the eye meets the near and far planes while turning.
+constexpr double kTurnedDepthScale = 0.02;
+struct TurnedCamera {
+    Mat4<double> view, projection;
+};
+TurnedCamera turnedCamera(const Mat4<double>& view, const Mat4<double>& projection, const Vec3<double>& focalPoint,
+                          double yawDegrees, double pitchDegrees, double zoom);
+
 // The vertex a click picks: of `vertices` drawn through `drawn` (world -> clip coordinates) in a view of
 // `size` pixels, the nearest to `at` (the view's pixels, y down) within kPickShare of the window's diagonal
 // (`window`, pixels), and of those as near the nearest in depth; none cut away (kept where
