@@ -85,6 +85,12 @@ Outcome putFile(const std::string& path, const std::string& bytes)
     });
 }
 
+// The mesh paths a scene's text names (meshPathsNamed), as a JSON list: where mesh files opened with it go.
+std::string meshPaths(const std::string& sceneText)
+{
+    return nlohmann::json(meshPathsNamed(sceneText)).dump();
+}
+
 std::string pipelineText(const EvaluatedScene& evaluated)
 {
     const report::PrecisionChoice precision; // double, as the CLI's default
@@ -551,6 +557,7 @@ EMSCRIPTEN_BINDINGS(viewpipe)
         .field("pipeline", &Evaluation::pipeline)
         .field("error", &Evaluation::error);
     emscripten::function("putFile", &putFile);
+    emscripten::function("meshPaths", &meshPaths);
     emscripten::function("pipelineJson", &pipelineJson);
     emscripten::function("evaluate", &evaluate);
     emscripten::function("stageView", &stageView);

@@ -404,9 +404,6 @@ SceneObject readObject(const Json& j, const std::string& path, const std::filesy
         object.path = readString(j["path"], path + ".path");
         meshFormatOf(object.path, path + ".path");
         object.resolvedPath = baseDir / object.path;
-        if (!std::ifstream(object.resolvedPath))
-            throw InputError(path + ".path", "cannot read \"" + object.resolvedPath.string() + "\": " +
-                                                 std::strerror(errno));
     } else {
         throw InputError(path + ".type", "must be \"house\", \"box\" or \"mesh\" (got \"" + type + "\")");
     }
@@ -772,8 +769,12 @@ Scene parseScene(const std::string& text, const std::filesystem::path& baseDir)
         const Json& objects = root["objects"];
         if (!objects.is_array())
             throw InputError("objects", "must be an array (got " + found(objects) + ")");
-        for (std::size_t i = 0; i < objects.size(); ++i)
-            scene.objects.push_back(readObject(objects[i], element("objects", i), baseDir));
+        for (std::size_t i = 0; i < objects.size(); ++i) {
+            const SceneObject& object = scene.objects.emplace_back(readObject(objects[i], element("objects", i), baseDir));
+            if (object.type == ObjectType::Mesh && !std::ifstream(object.resolvedPath))
+                throw InputError(element("objects", i) + ".path",
+                                 "cannot read \"" + object.resolvedPath.string() + "\": " + std::strerror(errno));
+        }
     }
     if (root.contains("effects")) {
         const Json& effects = root["effects"];
@@ -783,6 +784,29 @@ Scene parseScene(const std::string& text, const std::filesystem::path& baseDir)
             readEffect(effects[i], element("effects", i), scene.effects);
     }
     return scene;
+}
+
+std::vector<std::string> meshPathsNamed(const std::string& text)
+{
+    std::vector<std::string> paths;
+    Json root;
+    try {
+        root = parseJson(text);
+    } catch (const InputError&) {
+        return paths;
+    }
+    if (!root.is_object() || !root.contains("objects") || !root["objects"].is_array())
+        return paths;
+    const Json& objects = root["objects"];
+    for (std::size_t i = 0; i < objects.size(); ++i) {
+        try {
+            const SceneObject object = readObject(objects[i], element("objects", i), {});
+            if (object.type == ObjectType::Mesh)
+                paths.push_back(object.path);
+        } catch (const InputError&) {
+        }
+    }
+    return paths;
 }
 
 namespace {

@@ -53,6 +53,20 @@ TEST(Scene, OpenGlCamera)
     EXPECT_EQ(scene.objects[0].type, ObjectType::Box);
 }
 
+// The page puts mesh files opened with a scene where the scene looks for them, before they are there: the
+// mesh paths as written, of each mesh object as parseScene reads it, no file looked for.
+TEST(Scene, ListsTheMeshPathsItNamesWithoutTheirFiles)
+{
+    const std::string scene = withView(kHouseView, R"(, "objects": [{"type": "mesh", "path": "../meshes/letter-f.obj"},
+        {"type": "house"}, {"type": "mesh", "path": "not/there.ply"}, {"type": "mesh", "path": "notes.txt"},
+        {"type": "mesh"}, {"type": "mesh", "path": "../meshes/letter-f.obj"}])");
+    EXPECT_EQ(meshPathsNamed(scene),
+              (std::vector<std::string>{"../meshes/letter-f.obj", "not/there.ply", "../meshes/letter-f.obj"}))
+        << "not a mesh file's name, nor a mesh without a path";
+    EXPECT_TRUE(meshPathsNamed("{").empty());
+    EXPECT_TRUE(meshPathsNamed(R"({"objects": {"type": "mesh", "path": "a.obj"}})").empty()) << "objects not a list";
+}
+
 TEST(Scene, RefusesWithTheFieldPath)
 {
     refused("{", "1:2", "unexpected end of input");

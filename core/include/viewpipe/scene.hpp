@@ -65,6 +65,10 @@ Pipeline<Exact> exactPipeline(const Scene& scene);
 // must name a readable .obj, .ply or .stl file.
 Scene parseScene(const std::string& text, const std::filesystem::path& baseDir);
 Scene loadScene(const std::filesystem::path& file);
+// The mesh paths a scene's text names, as written, each mesh object read as parseScene reads it but its file
+// not looked for (those that do not read are left out; none where the text is no JSON): where the page puts
+// mesh files opened with the scene.
+std::vector<std::string> meshPathsNamed(const std::string& text);
 
 // The scenes offered as presets (the app's File > Presets, the page's
 // Presets list): the scene files of `scenes` and of its classical/ and apis/

@@ -23,12 +23,7 @@
     // The scene opened, or the one shown with the meshes; each mesh goes where the scene looks for a file of its
     // name (such as ../meshes/letter-f.obj), replacing what was there, else under its name, added to the scene shown.
     let text = scene ? await scene.text() : data.scene;
-    let named = [];
-    try {
-      named = (JSON.parse(text).objects || []).filter((o) => o && o.type === 'mesh').map((o) => String(o.path));
-    } catch (error) {
-      // not a scene: the core says why as it reads it
-    }
+    const named = JSON.parse(core.meshPaths(text)); // none where it is no scene: the core says why as it reads it
     const wherever = (name) => named.filter((where) => where.split(/[\\/]/).pop() === name);
     const kept = {};
     for (const mesh of meshes) {
