@@ -50,6 +50,9 @@ int runExport(const ExportCommandOptions& options)
         o.zoom = options.zoom;
         o.storyboard = options.layout == "storyboard";
         o.presets = scenesDirectory();
+        o.notice = [bar = !options.quiet](const std::string& what) {
+            std::cerr << (bar ? "\n" : "") << "viewpipe export: " << what << "\n"; // the newline ends the bar's line
+        };
 
         std::signal(SIGINT, onInterrupt);
         std::signal(SIGTERM, onInterrupt);

@@ -537,6 +537,13 @@ std::vector<fs::path> exportStages(const std::shared_ptr<const EvaluatedScene>& 
             const std::string base = stageFileBase(evaluated->pipeline, k);
             const std::string caption = pictureCaption(*evaluated, k, options);
             const report::StageShown shown = showStageAtRest(offscreen, *evaluated, k, caption, framing);
+            if (const report::LegendPlace at = offscreen.painter->pictureLayout().legendAt;
+                options.notice && !options.hidden.count("legend") && options.legend != report::LegendPlace::Best &&
+                options.legend != report::LegendPlace::None && at != options.legend)
+                options.notice("stage " + std::to_string(k) + ": no room for the legend " +
+                               report::legendPlaceTitle(options.legend) + "; " +
+                               (at == report::LegendPlace::None ? std::string("left out")
+                                                                : std::string("it stands ") + report::legendPlaceTitle(at)));
             const StagePicture picture{offscreen.window, options.transparent,
                                        VectorFigure{&shown, offscreen.painter->figureView(), caption,
                                                     offscreen.painter->placedLabels(), options.theme}};

@@ -54,6 +54,8 @@ struct ExportOptions {
     bool storyboard = false;
     // The scenes folder whose presets (presetScenes) the web page offers; empty: none.
     std::filesystem::path presets;
+    // Told what a picture could not do as asked (a legend with no room where asked), for the reader to know.
+    std::function<void(const std::string&)> notice;
 };
 
 // A format `export` writes, as --format names it.

@@ -104,7 +104,8 @@ Layout layoutOf(const VectorFigure& f)
 {
     Layout layout;
     const report::FigureView& v = f.view;
-    const report::PictureText text = report::stagePictureText(*f.stage, f.caption, v.textSize, v.minFontSize, v.subject, v.subjectShown, v.legendPlace);
+    report::PictureText text = report::stagePictureText(*f.stage, f.caption, v.textSize, v.minFontSize, v.subject, v.subjectShown, v.legendPlace);
+    text.zoom = v.zoom;
     layout.picture = report::layoutPicture(v.width, v.height, text, figureFontMeasure());
     if (!layout.picture.legend.isEmpty())
         layout.entries = text.legend;

@@ -123,7 +123,8 @@ ScenePainter::ScenePainter(vtkRenderer* world, vtkRenderer* projected, std::shar
     vtkMapper::SetResolveCoincidentTopologyToPolygonOffset();
     if (projected)
         projected_ = std::make_unique<ProjectedView>(projected);
-    world_->AddActor2D(backdrops_); // first: under the text
+    world_->AddActor2D(markers_); // under the text's backdrops: a dot the legend stands over is hidden by it
+    world_->AddActor2D(backdrops_); // under the text
     worldCaption_->GetPositionCoordinate()->SetCoordinateSystemToNormalizedViewport();
     worldCaption_->SetPosition(0.02, 0.96);
     worldCaption_->GetTextProperty()->SetVerticalJustificationToTop();
@@ -139,7 +140,6 @@ ScenePainter::ScenePainter(vtkRenderer* world, vtkRenderer* projected, std::shar
     frameAxes_->SetUseBounds(false);
     world_->AddActor(frameAxes_);
     world_->AddActor2D(legend_);
-    world_->AddActor2D(markers_);
     world_->AddActor2D(leaders_);
     leftOut_ = newLabel(leftOutText_);
     leftOut_.actor->SetVisibility(false);
@@ -370,6 +370,7 @@ void ScenePainter::fitCaptions()
     text.subject = subject_;
     text.shown = subjectShown_;
     text.legendPlace = legendPlace_;
+    text.zoom = 1 / userZoom_;
     const report::PictureLayout& layout = layoutCache_.layout(size[0], size[1], text, viewFontMeasure(world_));
     setCaptionText(worldCaption_, layout.captionLines, layout.captionSize);
     setCaptionText(effectsCaption_, layout.noteLines, layout.noteSize);
@@ -408,6 +409,7 @@ report::FigureView ScenePainter::figureView() const
     view.notes = notesShown_;
     view.subjectShown = subjectShown_;
     view.legendPlace = legendPlace_;
+    view.zoom = 1 / userZoom_;
     view.lineScale = lineScale_;
     return view;
 }

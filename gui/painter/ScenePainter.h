@@ -122,6 +122,8 @@ public:
     report::FigureView figureView() const;
     // Where the last frame placed the labels (none while text is hidden): figures drawn as it is place them there.
     const report::SceneLabels& placedLabels() const { return placed_; }
+    // Where the last frame put its caption, legend and note.
+    const report::PictureLayout& pictureLayout() const { return layoutCache_.last(); }
 
 private:
     struct Layer {

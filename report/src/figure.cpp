@@ -427,7 +427,7 @@ PictureLayout layoutPicture(int width, int height, const PictureText& text, cons
     // way to the nearer edges), grown by a little for the camera's perspective, which the outline (seen
     // from afar) leaves out.
     auto subjectIn = [&](const Box2& room) {
-        const double scale = 0.95 * scaleIn(room), grow = 0.04 * (room.max - room.min).minCoeff();
+        const double scale = 0.95 * text.zoom * scaleIn(room), grow = 0.04 * (room.max - room.min).minCoeff();
         const Vec2d center = (room.min + room.max) / 2;
         std::vector<Vec2d> drawn;
         for (const Vec2d& p : text.shown.empty() ? text.subject : text.shown) {
@@ -455,6 +455,7 @@ PictureLayout layoutPicture(int width, int height, const PictureText& text, cons
         PictureLayout l = layout;
         l.legendRows = rows;
         l.legend = {};
+        l.legendAt = where;
         const Vec2d legendSize = rows.size;
         const double legendLeft = width - margin - legendSize.x();
         if (where == LegendPlace::Beside && column != Column::None) {
@@ -512,10 +513,8 @@ PictureLayout layoutPicture(int width, int height, const PictureText& text, cons
                     break;
                 }
             }
-            if (l.legend.isEmpty() && text.legendPlace != LegendPlace::Inside)
-                return std::nullopt; // no corner free: not inside
-            if (l.legend.isEmpty()) // asked for: the top right corner all the same
-                l.legend = {Vec2d(inner.max.x() - legendSize.x(), inner.min.y()), Vec2d(inner.max.x(), inner.min.y() + legendSize.y())};
+            if (l.legend.isEmpty())
+                return std::nullopt; // no corner free: not inside, even where asked (it covered the subject)
             break;
         }
         }
@@ -572,7 +571,7 @@ const PictureLayout& PictureLayoutCache::layout(int width, int height, const Pic
     for (const LegendEntry* entry : text.legend)
         legend.push_back(entry->text);
     auto key = std::make_tuple(width, height, text.fontSize, text.minFontSize, text.caption, text.note, std::move(legend),
-                               text.subject, text.shown, text.legendPlace);
+                               text.subject, text.shown, text.legendPlace, text.zoom);
     if (key_ != key) {
         layout_ = layoutPicture(width, height, text, measure);
         key_ = std::move(key);

@@ -609,6 +609,61 @@ TEST(ExportLayout, NothingRunsBehindTheCaptionOrTheNote)
     }
 }
 
+// Zoomed in twice (export --legend inside --zoom 2), no corner is free: the legend stood over the view
+// volume and the window's center dot over the legend (found by a lecturer). At every stage of the house,
+// wherever the legend is asked, it stands outside the room the stage is framed in, no marker's dot shows
+// through it, and the export says where the legend went instead of inside.
+TEST(ExportLayout, AZoomedSubjectIsNeitherCoveredByTheLegendNorDrawnOverIt)
+{
+    const auto scene = evaluateScene(loadScene(fs::path(viewpipe::build::dataDir) / "scenes/house.json"));
+    int underLegend = 0;
+    for (const report::LegendPlace place : {report::LegendPlace::Inside, report::LegendPlace::Beside, report::LegendPlace::Below}) {
+        const OffscreenPainter offscreen(scene, 1280, 720, 1, report::Theme::Light, false);
+        offscreen.painter->setLegendPlace(place);
+        offscreen.painter->orbit(0, 0, 2);
+        for (int k = 0; k <= int(scene->pipeline.stages.size()); ++k) {
+            const std::string at = std::string(report::legendPlaceName(place)) + " stage " + std::to_string(k) + ": ";
+            const report::StageShown stage = showStageAtRest(offscreen, *scene, k, stageCaption(*scene, std::size_t(k), StageText::Heading), {});
+            const report::PictureLayout& layout = offscreen.painter->pictureLayout();
+            ASSERT_FALSE(layout.legend.isEmpty()) << at;
+            EXPECT_FALSE(layout.scene.overlaps(layout.legend)) << at << "the legend stands in the stage's room";
+            vtkNew<vtkWindowToImageFilter> grab;
+            grab->SetInput(offscreen.window);
+            grab->SetInputBufferTypeToRGB();
+            grab->Update();
+            vtkImageData* image = grab->GetOutput();
+            for (const report::FigureShape& dot : report::markerShapes(stage, offscreen.painter->figureView(), scene->markers)) {
+                Vec2<double> center = Vec2<double>::Zero();
+                for (const Vec2<double>& p : dot.points)
+                    center += p / double(dot.points.size());
+                if (!layout.legend.grown(-2).contains(report::Box2{center, center}))
+                    continue;
+                ++underLegend;
+                const auto* pixel = static_cast<const unsigned char*>(
+                    image->GetScalarPointer(int(center.x()), 720 - 1 - int(center.y()), 0));
+                const report::Rgb color = report::elementColor(dot.element, report::Theme::Light);
+                EXPECT_GT(std::abs(pixel[0] / 255.0 - color.r) + std::abs(pixel[1] / 255.0 - color.g) + std::abs(pixel[2] / 255.0 - color.b), 0.3)
+                    << at << "a dot (element " << int(dot.element) << ") drawn over the legend at " << center.transpose();
+            }
+        }
+    }
+    EXPECT_GT(underLegend, 0) << "some dot of the zoomed house lies under its legend";
+
+    const fs::path out = fs::temp_directory_path() / ("viewpipe-zoomed-legend-" + std::to_string(::getpid()));
+    ExportOptions options;
+    options.out = out;
+    options.legend = report::LegendPlace::Inside;
+    options.zoom = 2;
+    std::vector<std::string> notices;
+    options.notice = [&](const std::string& what) { notices.push_back(what); };
+    const std::atomic<bool> cancel{false};
+    exportStages(scene, options, {}, cancel);
+    fs::remove_all(out);
+    ASSERT_FALSE(notices.empty());
+    EXPECT_NE(notices.back().find("no room for the legend inside, in a corner the subject leaves free; it stands "),
+              std::string::npos) << notices.back();
+}
+
 // At the last stage the canonical outline lies on the view volume's edges: drawn over them along
 // their whole length, not stitched with them pixel by pixel (both are lines at the same depths).
 TEST(ExportLayout, TheCanonicalOutlineCoversTheVolumesEdgesItLiesOn)

@@ -338,6 +338,28 @@ TEST(PictureLayout, TheLegendGoesWhereItCostsTheSubjectLeast)
         EXPECT_EQ(legendPlaceNamed(legendPlaceName(place)), place);
 }
 
+// Zoomed in (export --zoom 2), the subject fills the corners: a legend asked inside covered it (found by a
+// lecturer: top right over the view volume). It stands outside the stage's room instead, and says where.
+TEST(PictureLayout, ALegendAskedInsideWithNoCornerFreeStandsOutsideTheStage)
+{
+    const auto scene = evaluateScene(loadScene(fs::path(viewpipe::build::dataDir) / "scenes/house.json"));
+    PictureText text;
+    text.caption = "5. S_per - scale so that the view volume becomes the canonical perspective volume";
+    text.legend = legendShown(scene->worldLegend, true);
+    text.legendPlace = LegendPlace::Inside;
+    // Framed on a wide box, a small diamond at its middle drawn: every corner free at zoom 1.
+    text.subject = {{0, 0}, {2, 0}, {2, 1}, {0, 1}};
+    text.shown = {{1, 0.28}, {1.45, 0.5}, {1, 0.72}, {0.55, 0.5}};
+    const PictureLayout framed = layoutPicture(1280, 720, text, textMeasure);
+    EXPECT_EQ(framed.legendAt, LegendPlace::Inside);
+    EXPECT_TRUE(framed.scene.contains(framed.legend));
+    text.zoom = 2;
+    const PictureLayout zoomed = layoutPicture(1280, 720, text, textMeasure);
+    ASSERT_FALSE(zoomed.legend.isEmpty());
+    EXPECT_NE(zoomed.legendAt, LegendPlace::Inside);
+    EXPECT_FALSE(zoomed.scene.overlaps(zoomed.legend)) << "the stage is framed clear of the legend";
+}
+
 // Labels follow the caption down where a narrow picture sets it smaller, never below the floor
 // (minFontSize), never above the size asked.
 TEST(PictureLayout, LabelsNoLargerThanTheCaption)

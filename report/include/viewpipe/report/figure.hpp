@@ -90,6 +90,7 @@ struct FigureView {
     // What its text was laid out for (PictureText): the subject's outline, and where the legend was asked to go.
     std::vector<Vec2<double>> subject, subjectShown;
     LegendPlace legendPlace = LegendPlace::Best;
+    double zoom = 1; // the subject this many times larger than framed (export --zoom, the reader's zoom)
     double lineScale = 1;
     // Pixels a world point is drawn at, and its depth (smaller: nearer); nothing when it has no image.
     std::optional<Vec3<double>> pixel(const Vec3<double>& stagePoint) const;
@@ -140,6 +141,9 @@ struct PictureText {
     // shows (stages framed together frame where the others go too), which a legend inside keeps clear of.
     std::vector<Vec2<double>> subject, shown;
     LegendPlace legendPlace = LegendPlace::Best;
+    // How many times larger than framed the subject draws: zoomed in, it fills the corners a legend inside
+    // would take.
+    double zoom = 1;
 };
 
 // Where a picture's caption (top left), legend (top right) and effects note
@@ -153,7 +157,7 @@ struct PictureText {
 // `scene` is where the stage is framed, between the caption and the note,
 // where the legend leaves room (PictureText::legendPlace): left of it, above
 // it, or all of it with the legend inside in a corner the subject leaves free
-// (Inside, where asked: the top right corner if none is). Beside, where the
+// (where none is, a legend asked inside goes where it fits best outside the stage's room). Beside, where the
 // subject's outline is known and it draws larger so, the caption, the legend
 // and the note stand in a column at the left (the note at the stage's foot where
 // the column lacks room) and the stage right of them at the picture's whole
@@ -166,6 +170,7 @@ struct PictureLayout {
     double captionLine = 0, noteLine = 0; // from one line's baseline to the next
     double captionSize = 0, noteSize = 0;   // pixels
     LegendLayout legendRows;                // zero size: no legend
+    LegendPlace legendAt = LegendPlace::None; // where the legend went (Beside, Below or Inside; None: left out)
 };
 PictureLayout layoutPicture(int width, int height, const PictureText& text, const FontMeasure& measure);
 // The labels' size in a picture laid out as `layout`, asked `fontSize`: no
@@ -190,10 +195,11 @@ std::vector<Box2> textBackdrops(const PictureLayout& layout, int height);
 class PictureLayoutCache {
 public:
     const PictureLayout& layout(int width, int height, const PictureText& text, const FontMeasure& measure);
+    const PictureLayout& last() const { return layout_; }
 
 private:
     std::optional<std::tuple<int, int, double, double, std::string, std::string, std::vector<std::string>,
-                             std::vector<Vec2<double>>, std::vector<Vec2<double>>, LegendPlace>>
+                             std::vector<Vec2<double>>, std::vector<Vec2<double>>, LegendPlace, double>>
         key_;
     PictureLayout layout_;
 };
