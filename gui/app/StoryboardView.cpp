@@ -119,7 +119,7 @@ void StoryboardView::layOut()
         cell.widget->setGeometry(int(box.min.x()), int(box.min.y()), int(box.max.x() - box.min.x()),
                                  int(box.max.y() - box.min.y()));
         cell.widget->show();
-        styleStoryboardCell(*cell.painter, layout_.labelSize, ticksShown_, traced());
+        styleStoryboardCell(*cell.painter, layout_.labelSize, ticksShown_, false, traced());
         cell.painter->showMoment(stageAtRest(*cellScene_, cell.stage, framings_));
         cell.widget->update(); // drawn in its next paint, or by the window's renderNow: once
     }

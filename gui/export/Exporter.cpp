@@ -315,7 +315,7 @@ void validate(const ExportOptions& o)
 
 
 // Every chosen stage at once, one file per format: each cell drawn by a painter of the cell's size with the
-// storyboard's text size, no legend or notes of its own, the traced point marked.
+// storyboard's text size, no legend of its own, the traced point marked.
 void writeStoryboardFiles(const std::shared_ptr<const EvaluatedScene>& evaluated, const ExportOptions& options,
                           const std::vector<int>& chosen, const std::vector<const Format*>& formats,
                           const fs::path& folder, Steps& step)
@@ -331,7 +331,7 @@ void writeStoryboardFiles(const std::shared_ptr<const EvaluatedScene>& evaluated
     OffscreenPainter offscreen(cellScene, int(cell.max.x() - cell.min.x()), int(cell.max.y() - cell.min.y()), 1,
                                options.theme, false);
     ScenePainter& painter = *offscreen.painter;
-    styleStoryboardCell(painter, layout.labelSize, !options.hidden.count("ticks"), traced);
+    styleStoryboardCell(painter, layout.labelSize, !options.hidden.count("ticks"), !options.hidden.count("notes"), traced);
     painter.setLineScale(options.scale);
     painter.orbit(0, 0, options.zoom);
     const report::StageFramings framing = stageFramings(*cellScene, options.framing);

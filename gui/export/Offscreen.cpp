@@ -34,11 +34,11 @@ report::StageShown showStageAtRest(const OffscreenPainter& offscreen, const Eval
     return report::stageShown(scene, moment);
 }
 
-void styleStoryboardCell(ScenePainter& painter, double labelSize, bool ticks, const Vec3<double>& traced)
+void styleStoryboardCell(ScenePainter& painter, double labelSize, bool ticks, bool notes, const Vec3<double>& traced)
 {
     painter.setFontSize(int(labelSize), int(labelSize));
     painter.setLegendPlace(report::LegendPlace::None);
-    painter.setTicksAndNotesShown(ticks, false);
+    painter.setTicksAndNotesShown(ticks, notes);
     painter.setCaptions("", "");
     painter.markTraced(traced);
 }

@@ -30,8 +30,9 @@ report::StageShown showStageAtRest(const OffscreenPainter& offscreen, const Eval
                            const std::string& caption, const report::StageFramings& framings);
 
 // A storyboard's cell, in the app and every export alike: labels `labelSize`
-// pixels high and never shrunk, no legend, caption or note of labels left out
-// (the storyboard's headers and footers speak for the cells), `traced` marked.
-void styleStoryboardCell(ScenePainter& painter, double labelSize, bool ticks, const Vec3<double>& traced);
+// pixels high and never shrunk, no legend or caption (the storyboard's headers
+// and footers speak for the cells), the notice of labels left out for room where
+// `notes` (an exported storyboard says what it leaves out, as a stage's picture does), `traced` marked.
+void styleStoryboardCell(ScenePainter& painter, double labelSize, bool ticks, bool notes, const Vec3<double>& traced);
 
 } // namespace viewpipe::gui

@@ -854,6 +854,34 @@ TEST(ExportLayout, TheStoryboardShowsEveryStageAtOnce)
     }
 }
 
+// A storyboard's cells are small: labels are left out for room, and the storyboard said nothing of it
+// (a stage's picture alone says "left out for room: ..."; found by a lecturer). Every cell of the house's
+// leaves tick numbers out, and each says so in its corner (the SVG draws what the PNG's painter placed);
+// --hide notes leaves the notices out.
+TEST(ExportLayout, TheStoryboardSaysWhatItsCellsLeaveOut)
+{
+    const auto scene = evaluateScene(loadScene(fs::path(viewpipe::build::dataDir) / "scenes/house.json"));
+    for (const bool notes : {true, false}) {
+        const fs::path out = fs::temp_directory_path() / ("viewpipe-storyboard-notes-" + std::to_string(::getpid()));
+        fs::remove_all(out);
+        ExportOptions options;
+        options.out = out;
+        options.formats = {"svg"};
+        options.storyboard = true;
+        if (!notes)
+            options.hidden = {"notes"};
+        const std::atomic<bool> cancel{false};
+        exportStages(scene, options, {}, cancel);
+        std::ifstream svgFile(out / "storyboard.svg");
+        const std::string svg((std::istreambuf_iterator<char>(svgFile)), std::istreambuf_iterator<char>());
+        fs::remove_all(out);
+        std::size_t said = 0;
+        for (std::size_t at = svg.find(">left out"); at != std::string::npos; at = svg.find(">left out", at + 1))
+            ++said;
+        EXPECT_EQ(said, notes ? scene->pipeline.stages.size() + 1 : 0) << (notes ? "a notice a cell" : "--hide notes");
+    }
+}
+
 // A step on the page ends where the stage it reaches rests: no snap when its
 // caption and legend take their place, however the stages are framed.
 TEST(ExportLayout, ThePagesStepsEndAtTheStagesAtRest)
