@@ -145,7 +145,9 @@ bool lay(vtkTextProperty* tprop, const char* str, int dpi, Layout& out)
     }
     out.ascent = firstAbove;
     out.descent = lastBelow;
-    out.height = out.ascent + out.descent + int(out.lines.size() - 1) * out.lineStep;
+    // The baseline's row and the ascent's top row both count, as FreeType's box has them: one row short, the
+    // top row of every glyph was cut ("front (F)" read "tront (⊢)" at 12 px).
+    out.height = out.ascent + out.descent + 1 + int(out.lines.size() - 1) * out.lineStep;
     return out.width > 0;
 }
 

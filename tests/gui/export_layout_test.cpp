@@ -21,6 +21,7 @@
 #include <filesystem>
 #include <fstream>
 #include <functional>
+#include <limits>
 #include <map>
 #include <optional>
 #include <set>
@@ -42,6 +43,7 @@
 #include <vtkContextView.h>
 #include <vtkFloatArray.h>
 #include <vtkTextProperty.h>
+#include <vtkTextRenderer.h>
 #include <vtkCamera.h>
 #include <vtkStringArray.h>
 #include <vtkNew.h>
@@ -664,6 +666,40 @@ TEST(ExportLayout, AZoomedSubjectIsNeitherCoveredByTheLegendNorDrawnOverIt)
               std::string::npos) << notices.back();
 }
 
+// Rows of a text's image that hold ink: the highest and the lowest (y up), as VTK's text renderer draws it.
+std::pair<int, int> inkedRows(const std::string& text, int pixels, bool bold)
+{
+    vtkNew<vtkTextProperty> font;
+    useFigureFont(font, bold);
+    font->SetFontSize(pixels);
+    vtkNew<vtkImageData> image;
+    int dims[2] = {0, 0};
+    EXPECT_TRUE(vtkTextRenderer::GetInstance()->RenderString(font, text, image, dims, 72)) << text;
+    int extent[6];
+    image->GetExtent(extent);
+    int top = std::numeric_limits<int>::min(), bottom = std::numeric_limits<int>::max();
+    for (int y = extent[2]; y <= extent[3]; ++y)
+        for (int x = extent[0]; x <= extent[1]; ++x)
+            if (static_cast<const unsigned char*>(image->GetScalarPointer(x, y, 0))[3] > 20) {
+                top = std::max(top, y);
+                bottom = std::min(bottom, y);
+            }
+    return {top, bottom};
+}
+
+// Labels with math are set run by run (MathTextRenderer): at 12 px "front (F)" read "tront (⊢)", the top
+// row of every glyph cut (f's hook, F's bar). Set as math or plainly by FreeType, a text's ink is as tall,
+// at every size a label takes, bold and not.
+TEST(ExportLayout, MathTextKeepsTheGlyphsWhole)
+{
+    for (const int pixels : {9, 10, 12, 14, 17, 20, 24, 31})
+        for (const bool bold : {true, false}) {
+            const auto [plainTop, plainBottom] = inkedRows("front (F)", pixels, bold);
+            const auto [mathTop, mathBottom] = inkedRows("front ($F$)", pixels, bold);
+            EXPECT_EQ(mathTop - mathBottom, plainTop - plainBottom) << pixels << " px " << (bold ? "bold" : "plain");
+        }
+}
+
 // At the last stage the canonical outline lies on the view volume's edges: drawn over them along
 // their whole length, not stitched with them pixel by pixel (both are lines at the same depths).
 TEST(ExportLayout, TheCanonicalOutlineCoversTheVolumesEdgesItLiesOn)
@@ -999,3 +1035,4 @@ int main(int argc, char** argv)
 #endif
     return failed;
 }
+
