@@ -122,7 +122,8 @@ report::FontMeasure pageMeasure(const emscripten::val& measure)
 }
 
 // The page's own options: its data's width, height, fontSize, minFontSize, lineScale, framing and dark; and the
-// reader's choices, where made: "hidden" (names of hideNames) and "legend" (a name of legendPlaceName).
+// reader's choices, where made: "hidden" (names of hideNames) and "legend" (a name of legendPlaceName); "zoom",
+// the page's made-with zoom its text is laid out for.
 report::WebViewOptions viewOptions(const std::string& options)
 {
     const nlohmann::json given = nlohmann::json::parse(options);
@@ -138,6 +139,8 @@ report::WebViewOptions viewOptions(const std::string& options)
         view.hidden = given["hidden"].get<std::set<std::string>>();
     if (given.contains("legend"))
         view.legend = report::legendPlaceNamed(given["legend"]).value_or(report::LegendPlace::Best);
+    if (given.contains("zoom"))
+        view.zoom = given["zoom"];
     return view;
 }
 

@@ -114,7 +114,7 @@ void addObjectActors(const std::vector<vtkRenderer*>& renderers, const Evaluated
 ScenePainter::ScenePainter(vtkRenderer* world, vtkRenderer* projected, std::shared_ptr<MeshDetails> meshes)
     : world_(world), meshDetails_(std::move(meshes)), worldCaption_(vtkSmartPointer<vtkTextActor>::New()),
       effectsCaption_(vtkSmartPointer<vtkTextActor>::New()), frameAxes_(unlitActor(linesData(std::vector<Segment2>{}))),
-      leaders_(overlayActor(1.5)), markers_(overlayActor(1)), backdrops_(overlayActor(1)), legend_(newLegend(true)), clippingRange_(vtkSmartPointer<vtkCallbackCommand>::New()),
+      leaders_(overlayActor(1.5)), markers_(overlayActor(1)), tracedMarkers_(overlayActor(1)), backdrops_(overlayActor(1)), legend_(newLegend(true)), clippingRange_(vtkSmartPointer<vtkCallbackCommand>::New()),
       nearCut_(vtkSmartPointer<vtkPlane>::New())
 {
     // Coinciding lines and faces are told apart by depth offsets, not by the order they are drawn in
@@ -140,6 +140,7 @@ ScenePainter::ScenePainter(vtkRenderer* world, vtkRenderer* projected, std::shar
     frameAxes_->SetUseBounds(false);
     world_->AddActor(frameAxes_);
     world_->AddActor2D(legend_);
+    world_->AddActor2D(tracedMarkers_); // over the text: the vertex traced stays in sight where its label points
     world_->AddActor2D(leaders_);
     leftOut_ = newLabel(leftOutText_);
     leftOut_.actor->SetVisibility(false);
@@ -339,13 +340,17 @@ void ScenePainter::beforeFrame()
 
 void ScenePainter::drawMarkers(const std::vector<report::FigureShape>& shapes)
 {
-    std::vector<std::vector<Vec2<double>>> polygons;
-    std::vector<report::Rgb> colors;
-    for (const report::FigureShape& shape : shapes) {
-        polygons.push_back(shape.points);
-        colors.push_back(report::elementColor(shape.element, theme_));
+    for (const bool traced : {false, true}) {
+        std::vector<std::vector<Vec2<double>>> polygons;
+        std::vector<report::Rgb> colors;
+        for (const report::FigureShape& shape : shapes)
+            if ((shape.element == Element::Traced) == traced) {
+                polygons.push_back(shape.points);
+                colors.push_back(report::elementColor(shape.element, theme_));
+            }
+        static_cast<vtkPolyDataMapper2D*>((traced ? tracedMarkers_ : markers_)->GetMapper())
+            ->SetInputData(polygonsData2D(polygons, colors, world_->GetSize()[1]));
     }
-    static_cast<vtkPolyDataMapper2D*>(markers_->GetMapper())->SetInputData(polygonsData2D(polygons, colors, world_->GetSize()[1]));
 }
 
 void ScenePainter::drawBackdrops()
@@ -370,7 +375,7 @@ void ScenePainter::fitCaptions()
     text.subject = subject_;
     text.shown = subjectShown_;
     text.legendPlace = legendPlace_;
-    text.zoom = 1 / userZoom_;
+    text.zoom = layoutZoom_;
     const report::PictureLayout& layout = layoutCache_.layout(size[0], size[1], text, viewFontMeasure(world_));
     setCaptionText(worldCaption_, layout.captionLines, layout.captionSize);
     setCaptionText(effectsCaption_, layout.noteLines, layout.noteSize);
@@ -409,7 +414,7 @@ report::FigureView ScenePainter::figureView() const
     view.notes = notesShown_;
     view.subjectShown = subjectShown_;
     view.legendPlace = legendPlace_;
-    view.zoom = 1 / userZoom_;
+    view.zoom = layoutZoom_;
     view.lineScale = lineScale_;
     return view;
 }
@@ -638,6 +643,7 @@ void ScenePainter::orbit(double yaw, double pitch, double zoom)
     frameOn(framed_); // fitted anew from the new direction (a fit depends on it), as much zoomed and panned
     camera->Dolly(zoom);
     rememberUserCamera();
+    layoutZoom_ = 1 / userZoom_;
 }
 
 ScenePainter::Orbit ScenePainter::orbitAngles() const
@@ -675,6 +681,7 @@ void ScenePainter::resetView()
 {
     setCamera(report::WorldCamera{});
     userZoom_ = 1;
+    layoutZoom_ = 1;
     userPan_.setZero();
     frameOn(framed_); // the stage's framing at rest (the step's while it moves), as the view first showed it
 }

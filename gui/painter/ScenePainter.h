@@ -176,6 +176,7 @@ private:
     vtkSmartPointer<vtkActor> frameAxes_;
     vtkSmartPointer<vtkActor2D> leaders_; // lines from labels moved away to their anchors
     vtkSmartPointer<vtkActor2D> markers_; // the points marked, one size on screen
+    vtkSmartPointer<vtkActor2D> tracedMarkers_; // the vertex traced, over the text
     vtkSmartPointer<vtkActor2D> backdrops_;
     vtkSmartPointer<vtkLegendBoxActor> legend_;
     vtkSmartPointer<vtkCallbackCommand> clippingRange_;
@@ -207,6 +208,8 @@ private:
     bool moving_ = false;
     // The user's view relative to the automatic framing.
     double userZoom_ = 1;
+    // The zoom the text's layout allows for: a lesson step's or an export's (orbit); the wheel's moves no text.
+    double layoutZoom_ = 1;
     Vec3<double> userPan_ = Vec3<double>::Zero();
     report::Framing framed_; // the last framing
     // Where frameOn fits the stage (layoutPicture's scene area), in pixels, y down; empty: the whole view.

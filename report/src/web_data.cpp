@@ -140,11 +140,11 @@ PictureLayout stageLayout(const EvaluatedScene& scene, int k, const WorldMoment&
                           const FontMeasure& measure)
 {
     const std::string caption = shows(o, "caption") ? stageCaption(scene, std::size_t(k), StageText::Heading) : "";
-    return layoutPicture(o.width, o.height,
-                         stagePictureText(stageShown(scene, moment), caption, o.fontSize, o.minFontSize,
-                                          subjectOutline(WorldCamera{}, moment.framing), // from the exports' viewpoint
-                                          subjectOutline(WorldCamera{}, moment.framing, true), o.legend),
-                         measure);
+    PictureText text = stagePictureText(stageShown(scene, moment), caption, o.fontSize, o.minFontSize,
+                                        subjectOutline(WorldCamera{}, moment.framing), // from the exports' viewpoint
+                                        subjectOutline(WorldCamera{}, moment.framing, true), o.legend);
+    text.zoom = o.zoom; // the export's: the reader's zoom moves no text, as the app's wheel
+    return layoutPicture(o.width, o.height, text, measure);
 }
 
 // Stage k's flat figure through `camera`, its labels placed around its text.

@@ -15,6 +15,7 @@
 #include "viewpipe/report/figure.hpp"
 #include "viewpipe/report/style.hpp"
 #include "viewpipe/report/tikz.hpp"
+#include "viewpipe/report/web_page.hpp"
 #include "viewpipe/report/world_view.hpp"
 
 namespace viewpipe::report {
@@ -358,6 +359,27 @@ TEST(PictureLayout, ALegendAskedInsideWithNoCornerFreeStandsOutsideTheStage)
     ASSERT_FALSE(zoomed.legend.isEmpty());
     EXPECT_NE(zoomed.legendAt, LegendPlace::Inside);
     EXPECT_FALSE(zoomed.scene.overlaps(zoomed.legend)) << "the stage is framed clear of the legend";
+}
+
+// The page lays out its text for the zoom it was exported at, as the PNG (found: its legend inside, over the
+// subject the page drew at zoom 2, where the PNG's stood beside it).
+TEST(PictureLayout, ThePagesLegendStandsWhereTheZoomedExportsDoes)
+{
+    const auto scene = evaluateScene(loadScene(fs::path(viewpipe::build::dataDir) / "scenes/house.json"));
+    WebViewOptions options;
+    options.legend = LegendPlace::Inside;
+    int insideAtRest = 0;
+    for (const WebStage& stage : webPageViews(*scene, options, textMeasure).stages)
+        insideAtRest += stage.layout.legendAt == LegendPlace::Inside;
+    EXPECT_GT(insideAtRest, 0);
+    options.zoom = 2;
+    const WebPageViews zoomed = webPageViews(*scene, options, textMeasure);
+    for (std::size_t k = 0; k < zoomed.stages.size(); ++k) {
+        const PictureLayout& layout = zoomed.stages[k].layout;
+        ASSERT_FALSE(layout.legend.isEmpty()) << k;
+        EXPECT_NE(layout.legendAt, LegendPlace::Inside) << k;
+        EXPECT_FALSE(layout.scene.overlaps(layout.legend)) << k;
+    }
 }
 
 // Labels follow the caption down where a narrow picture sets it smaller, never below the floor

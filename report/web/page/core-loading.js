@@ -2,7 +2,7 @@
   let coreFailed = ''; // why the core did not load, if it did not
   ViewPipeCore().catch((error) => {
     coreFailed = `ViewPipe's core could not start in this browser (${error && error.message ? error.message : error}): ` +
-      'the stages are shown as exported, but nothing can be changed or checked.';
+      'the stages are shown at rest, neither turned nor zoomed, and nothing can be changed or checked.';
     const shown = document.getElementById('scene-error');
     shown.textContent = coreFailed;
     shown.hidden = false;

@@ -46,7 +46,7 @@
   // The page's picture as the core lays it out, with what the reader leaves out and where the legend goes.
   const viewOptions = () => ({ width: data.width, height: data.height, fontSize: data.fontSize, minFontSize: data.minFontSize,
                                lineScale: data.lineScale, framing: data.framing, dark: data.dark,
-                               hidden: state.hidden, legend: state.legend });
+                               hidden: state.hidden, legend: state.legend, zoom: madeWith.zoom });
   // Only the stage shown is made at rest; the others and each step's frames are asked for when shown.
   function evaluateText(text, files, filesLeftOut) {
     const outcome = core.evaluate(text, JSON.stringify(viewOptions()), measureRuns, Math.max(0, state.stage));

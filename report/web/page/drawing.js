@@ -8,7 +8,7 @@
     const { frame, atRest, ghost } = shown;
     drawView({ renderer: world, overlay: worldOverlay, size, picture: data, fonts: data, frame, atRest, ghost,
                stage: state.stage, traced: state.traced,
-               labels: !atRest ? null : userMoved() ? labelsTurned() : stageAt(state.stage).labels });
+               labels: !atRest ? null : core && userMoved() ? labelsTurned() : stageAt(state.stage).labels });
   }
 
   // One picture of the world: `frame` drawn by `renderer` at `size` (the picture `picture` was framed for,
@@ -25,7 +25,7 @@
     const ghostMatrix = ghost ? matrixOf(ghost) : null;
     const cut = frame.cut ? new THREE.Vector4(...frame.cut) : noCut;
     const ratio = window.devicePixelRatio || 1;
-    const widthScale = Math.max(1, fitScale(size, picture) * state.zoom) * ratio;
+    const widthScale = Math.max(1, fitScale(size, picture) * (core ? state.zoom : 1)) * ratio; // the core zooms
     for (const { object: thin, wide, primitive, ghost: isGhost } of items) {
       for (const object of [thin, wide]) {
         if (!object) continue;

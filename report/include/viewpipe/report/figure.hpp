@@ -90,7 +90,7 @@ struct FigureView {
     // What its text was laid out for (PictureText): the subject's outline, and where the legend was asked to go.
     std::vector<Vec2<double>> subject, subjectShown;
     LegendPlace legendPlace = LegendPlace::Best;
-    double zoom = 1; // the subject this many times larger than framed (export --zoom, the reader's zoom)
+    double zoom = 1; // the subject this many times larger than framed (export --zoom, a lesson step's; not the wheel's)
     double lineScale = 1;
     // Pixels a world point is drawn at, and its depth (smaller: nearer); nothing when it has no image.
     std::optional<Vec3<double>> pixel(const Vec3<double>& stagePoint) const;
