@@ -229,11 +229,14 @@ void MainWindow::fitDockMinimumWidths()
     if (matricesAside_)
         aside = tabifiedDockWidgets(matrices) << matrices;
     const int screenWidth = screen() ? screen()->availableGeometry().width() : 1280;
+    // Presenting, the lesson is the one dock: it may take two fifths of the screen (found: its question cut
+    // at a quarter of a 1280 px projector).
+    const int most = presentMode_->isPresenting() ? screenWidth * 2 / 5 : screenWidth / 4;
     for (QDockWidget* dock : findChildren<QDockWidget*>())
         if (auto* scroll = qobject_cast<QScrollArea*>(dock->widget()))
             scroll->setMinimumWidth(aside.contains(dock)
                                         ? 0
-                                        : std::min(screenWidth / 4, scroll->widget()->minimumSizeHint().width() +
+                                        : std::min(most, scroll->widget()->minimumSizeHint().width() +
                                                                         scroll->verticalScrollBar()->sizeHint().width() +
                                                                         2 * scroll->frameWidth()));
 }

@@ -21,6 +21,8 @@
 #include <vtkRendererCollection.h>
 
 #include "build_paths.h"
+#include "app/LessonDocument.h"
+#include "app/LessonFlow.h"
 #include "app_window.h"
 #include "drawn_texts.h"
 #include "viewpipe/report/world_view.hpp"
@@ -149,6 +151,26 @@ private slots:
                      qPrintable(QString("camera coordinate %1: %2 after presenting, %3 shown afresh").arg(k).arg(shown[k]).arg(fresh[k])));
         const std::string trouble = textTrouble(renderer(*window, "worldView"));
         QVERIFY2(trouble.empty(), trouble.c_str());
+        closeWindow(window);
+    }
+
+    // A lesson presented on the 1280x720 projector with text at 150 %: the question reads whole, its fields in
+    // sight (found: the lesson's dock a quarter of the screen, "Where is the hou…", the z field off it).
+    void aLessonPresentedReadsWhole()
+    {
+        auto window = openWindow(kScenes + "/house.json", {1280, 720});
+        QVERIFY(window);
+        window->setFontSize(MainWindow::kDefaultFontSize * 3 / 2, false);
+        QVERIFY(window->lessonFlow()->openLesson(QString(viewpipe::build::dataDir) + "/lessons/foley-nper.json"));
+        window->lessonFlow()->lesson()->goTo(6); // step 7: where is (16, 10, 30) after S_per?
+        QTest::keyClick(window.get(), Qt::Key_F5);
+        QTRY_VERIFY(window->presentMode()->isPresenting());
+        QTRY_COMPARE(window->size(), QSize(1280, 720));
+        settle(*window);
+        auto* scroll = qobject_cast<QScrollArea*>(window->findChild<QDockWidget*>("lessonDock")->widget());
+        QTRY_COMPARE(scroll->horizontalScrollBar()->maximum(), 0);
+        QVERIFY2(100 * window->centralWidget()->width() >= 55 * window->width(),
+                 qPrintable(QString("the views %1 px of %2").arg(window->centralWidget()->width()).arg(window->width())));
         closeWindow(window);
     }
 
