@@ -381,8 +381,10 @@ ObjectsShown addObjects(Builder& add, const EvaluatedScene& out)
 // The canonical volume's planes, named on their faces (math): x = -z ... z = z_min for
 // Foley's perspective volume, x = 1 ... z = 0 for its parallel one (also a
 // perspective view's after M, with Divide), and the cube of normalized device
-// coordinates for OpenGL; and two of its corners.
-void addCanonicalLabels(Builder& add, const Pipeline<double>& pipeline, const ViewSetup<double>& setup)
+// coordinates for OpenGL; and two of its corners (Foley's front ones at z_min as the textbook writes it,
+// exactly where it reads so: 24/59, not 0.407).
+void addCanonicalLabels(Builder& add, const Pipeline<double>& pipeline, const ViewSetup<double>& setup,
+                        const std::optional<Exact>& exactZmin)
 {
     const bool foley = pipeline.convention == Convention::Foley;
     const bool perspective = setup.perspectiveCanonical;
@@ -408,17 +410,22 @@ void addCanonicalLabels(Builder& add, const Pipeline<double>& pipeline, const Vi
         {plane("z", c[4].z(), "far"), center({4, 5, 6, 7})}};
     for (const auto& [text, anchor] : planes)
         add.label(Element::Canonical, text, anchor, true);
+    const bool exactFront = perspective && foley && pipeline.zmin && exactZmin && exactZmin->readsExactly();
+    auto coordinate = [&](double value) {
+        if (exactFront && std::abs(value) == std::abs(*pipeline.zmin))
+            return (value == *pipeline.zmin ? *exactZmin : -*exactZmin).latex();
+        return formatSignificant(value, 3);
+    };
     // Two opposite corners with their coordinates: the front face's upper right, the back face's lower left.
     for (const std::size_t k : {std::size_t(2), std::size_t(4)})
         add.label(Element::Canonical,
-                  "$(" + formatSignificant(c[k].x(), 3) + ", " + formatSignificant(c[k].y(), 3) + ", " +
-                      formatSignificant(c[k].z(), 3) + ")$",
-                  c[k], true);
+                  "$(" + coordinate(c[k].x()) + ", " + coordinate(c[k].y()) + ", " + coordinate(c[k].z()) + ")$", c[k],
+                  true);
 }
 
 // The viewing set-up: the world and view axes, VRP, PRP, the window and CW,
 // the DOP, the view volume with its planes, the projectors, the canonical volume.
-void addSetUp(Builder& add, const EvaluatedScene& out, bool farCut)
+void addSetUp(Builder& add, const EvaluatedScene& out, bool farCut, const std::optional<Exact>& exactZmin)
 {
     const ViewSetup<double>& setup = out.setup;
     const double axis = 0.15 * out.size;
@@ -486,7 +493,7 @@ void addSetUp(Builder& add, const EvaluatedScene& out, bool farCut)
     }
     add.lines(Element::Projectors, projectors, 0.7);
     add.lines(Element::Canonical, boxEdges(setup.canonical), 1.0).canonical = true; // drawn where it is
-    addCanonicalLabels(add, out.pipeline, setup);
+    addCanonicalLabels(add, out.pipeline, setup, exactZmin);
 }
 
 // The legends name what this scene shows, each view its own.
@@ -835,7 +842,7 @@ std::shared_ptr<const EvaluatedScene> evaluate(const Scene& scene, MeshCache* ca
 
     Builder add(out);
     const ObjectsShown shown = addObjects(add, out);
-    addSetUp(add, out, farCut);
+    addSetUp(add, out, farCut, exact ? exact->zmin : std::nullopt);
     out.vanishingLines = vanishingLines(drawn, out.pipeline, shown.builtInEdges); // x and y do not depend on the far plane
     out.zFightingRing = ringAround(shown.fighting, screenClipMatrix(out.pipeline));
     out.effectsNote = describeEffects(scene.effects, out.outcomes, out.pipeline, out.bands);

@@ -298,7 +298,8 @@ TEST(EvaluatedScene, CanonicalVolumeIsLabelled)
     expectNear(at.at("$z = -1$"), Vec3<double>(0, 0, -1));
     expectNear(at.at("$z = z_{\\min}$"), Vec3<double>(0, 0, zmin));
     expectNear(at.at("$x = -z$"), Vec3<double>((-zmin + 1) / 2, 0, (zmin - 1) / 2));
-    expectNear(at.at("$(0.407, 0.407, -0.407)$"), Vec3<double>(-zmin, -zmin, zmin)); // math: real minus signs
+    // The front corner as the textbook writes it (found: 0.407); math: real minus signs.
+    expectNear(at.at("$(\\frac{24}{59}, \\frac{24}{59}, -\\frac{24}{59})$"), Vec3<double>(-zmin, -zmin, zmin));
     expectNear(at.at("$(-1, -1, -1)$"), Vec3<double>(-1, -1, -1));
 }
 
@@ -341,3 +342,4 @@ TEST(EvaluatedScene, PointsAreMarkedWhereTheyAre)
 
 } // namespace
 } // namespace viewpipe
+
