@@ -332,7 +332,6 @@ json sceneData(const EvaluatedScene& scene, const WebPageViews& views)
                        {"markers", markers},
                        {"vertices", floats(vertices)},
                        {"legend", legendJson(scene.worldLegend, theme)},
-                       {"note", scene.effectsNote},
                        {"projected", projected},
                        {"hideChoices", hideChoices},
                        // The choices the page was made with (export's --hide, --legend and --zoom): the reader's at first.
