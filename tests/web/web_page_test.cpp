@@ -161,6 +161,12 @@ public:
         }
         return false;
     }
+    // Opens `url` and waits until the page has drawn and its core has loaded; false after 30 s.
+    bool openWithCore(const std::string& url)
+    {
+        page("Page.navigate", {{"url", url}});
+        return waitFor("document.body.dataset.ready === '1' && document.body.dataset.core === '1'");
+    }
     // `modifiers`: DevTools' bits (8: Shift).
     void press(const std::string& key, int keyCode, int modifiers = 0)
     {
@@ -960,8 +966,7 @@ TEST_F(WebPage, OnHalfALaptopScreenFoldsItsPanelsNamesItsViewsAndSavesTheView)
                                    QString::fromStdString(folder.string()), "--format", "html", "--quiet"});
     ASSERT_EQ(run.exitCode, 0) << run.output;
     Browser browser(*dir_ / "profile-laptop", 800, 600);
-    browser.page("Page.navigate", {{"url", "file://" + (folder / "scene.html").string() + "#stage=3"}});
-    ASSERT_TRUE(browser.waitFor("document.body.dataset.ready === '1' && document.body.dataset.core === '1'"));
+    ASSERT_TRUE(browser.openWithCore("file://" + (folder / "scene.html").string() + "#stage=3"));
     const auto box = [&](const std::string& selector) {
         return json::parse(browser.evaluate("JSON.stringify((r => ({left: r.left, top: r.top, width: r.width, bottom: r.bottom}))"
                                             "(document.querySelector('" + selector + "').getBoundingClientRect()))")
@@ -1148,8 +1153,7 @@ TEST_F(WebPage, TheReaderChoosesWhatIsDrawnAndTheLinkKeepsIt)
 {
     const fs::path page = *dir_ / "house" / "scene.html";
     Browser browser(*dir_ / "profile-choices");
-    browser.page("Page.navigate", {{"url", "file://" + page.string() + "#stage=3"}});
-    ASSERT_TRUE(browser.waitFor("document.body.dataset.ready === '1' && document.body.dataset.core === '1'"));
+    ASSERT_TRUE(browser.openWithCore("file://" + page.string() + "#stage=3"));
     const auto house = viewpipe::evaluateScene(viewpipe::loadScene(kData + "/scenes/house.json"));
     const long all = long(house->primitives.size());
     const long projectors = std::count_if(house->primitives.begin(), house->primitives.end(),
@@ -1238,8 +1242,7 @@ TEST_F(WebPage, APageMadeWithChoicesStartsFromThem)
                                    "--format", "html", "--hide", "projectors", "--legend", "below", "--zoom", "1.5", "--quiet"});
     ASSERT_EQ(run.exitCode, 0) << run.output;
     Browser browser(*dir_ / "profile-chosen");
-    browser.page("Page.navigate", {{"url", "file://" + (out / "scene.html").string() + "#stage=3"}});
-    ASSERT_TRUE(browser.waitFor("document.body.dataset.ready === '1' && document.body.dataset.core === '1'"));
+    ASSERT_TRUE(browser.openWithCore("file://" + (out / "scene.html").string() + "#stage=3"));
     const auto house = viewpipe::evaluateScene(viewpipe::loadScene(kData + "/scenes/house.json"));
     const long all = long(house->primitives.size());
     const long projectors = std::count_if(house->primitives.begin(), house->primitives.end(),
@@ -1275,8 +1278,7 @@ TEST_F(WebPage, ZoomsAboutTheSubject)
 {
     const fs::path page = *dir_ / "house" / "scene.html";
     Browser browser(*dir_ / "profile-zoom");
-    browser.page("Page.navigate", {{"url", "file://" + page.string() + "#stage=3"}});
-    ASSERT_TRUE(browser.waitFor("document.body.dataset.ready === '1' && document.body.dataset.core === '1'"));
+    ASSERT_TRUE(browser.openWithCore("file://" + page.string() + "#stage=3"));
     const auto pixels = [&] {
         return json::parse(browser.evaluate("JSON.stringify([[0, 0, 54], [16, 10, 30], [8, 16, 54]].map((p) => window.viewpipe.pixelOf(p)))")
                                .get<std::string>());
@@ -1337,8 +1339,7 @@ TEST_F(WebPage, TurnsTheViewAsTheCoreTurnsIt)
 {
     const fs::path page = *dir_ / "house" / "scene.html";
     Browser browser(*dir_ / "profile-turned");
-    browser.page("Page.navigate", {{"url", "file://" + page.string() + "#stage=3"}});
-    ASSERT_TRUE(browser.waitFor("document.body.dataset.ready === '1' && document.body.dataset.core === '1'"));
+    ASSERT_TRUE(browser.openWithCore("file://" + page.string() + "#stage=3"));
     const auto matrix = [](const json& rows) {
         viewpipe::Mat4<double> m;
         for (int k = 0; k < 16; ++k)
@@ -1765,8 +1766,7 @@ TEST(LessonPage, NoAnswerIsOnThePageBeforeItsQuestionIsClosed)
             EXPECT_GE(searched, 3);
         }
         Browser browser(dir / (name + "-profile"));
-        browser.page("Page.navigate", {{"url", "file://" + (dir / name / "lesson.html").string()}});
-        ASSERT_TRUE(browser.waitFor("document.body.dataset.ready === '1' && document.body.dataset.core === '1'"));
+        ASSERT_TRUE(browser.openWithCore("file://" + (dir / name / "lesson.html").string()));
         const int steps = int(lesson.steps.size());
         std::vector<std::vector<std::string>> answers(lesson.steps.size());
         for (int k = 0; k < steps; ++k)
